@@ -1,0 +1,62 @@
+// What to mesh: the geometry and mesh sections of a scene, already validated
+// by workflows/scene. Lengths in metres. The tunnel opening's bounding box is
+// centred on the origin; the rock domain is centred on `domain_center`.
+#pragma once
+
+#include <map>
+#include <string>
+
+namespace rockfdem::mesh {
+
+enum class ModelKind { kTunnel, kUcs, kBrazilian, kMshFile };
+enum class TunnelShape { kCircular, kHorseshoe, kArched, kRectangular };
+
+struct TunnelSpec {
+  TunnelShape shape = TunnelShape::kHorseshoe;
+  double radius = 0;            ///< circular
+  double span = 11.3;           ///< horseshoe, arched, rectangular: width of the opening
+  double height = 8.8;          ///< horseshoe, arched, rectangular: floor to crown
+  double rise = 0;              ///< arched: rise of the arch above the walls (0 < rise <= span/2)
+  double lining_thickness = 0;  ///< 0: no lining ring
+  double fracture_zone = 0;     ///< crack elements allowed within this distance outside the opening; 0: none
+};
+
+struct DomainSpec {
+  double width = 100;   ///< rock domain width
+  double height = 100;  ///< rock domain height
+  double center_x = 0;  ///< domain centre relative to the opening's centre
+  double center_y = 0;
+};
+
+struct SpecimenSpec {
+  double width = 0.05;     ///< UCS specimen width
+  double height = 0.1;     ///< UCS specimen height
+  double diameter = 0.05;  ///< Brazilian disc diameter
+  double load_arc_deg = 10;///< Brazilian disc: angle of each loading arc
+};
+
+struct MshFileSpec {
+  std::string path;                          ///< user's .msh file
+  std::map<std::string, int> zone_groups;    ///< 2D physical group name -> Zone
+  std::map<std::string, int> edge_groups;    ///< 1D physical group name -> EdgeTag
+  std::string fracture_group;                ///< 2D physical group where cracks are allowed ("" = all rock)
+};
+
+struct MeshSizeSpec {
+  double size_near = 0.5;       ///< element size at the tunnel boundary (specimens: everywhere)
+  double size_far = 5.0;        ///< element size at the outer boundary
+  double grading_distance = 0;  ///< distance from the tunnel over which size grows; 0: automatic
+  int algorithm = 6;            ///< gmsh Mesh.Algorithm (6 = Frontal-Delaunay)
+  int threads = 0;              ///< gmsh General.NumThreads (0 = OpenMP default)
+};
+
+struct MeshSpec {
+  ModelKind kind = ModelKind::kTunnel;
+  TunnelSpec tunnel;
+  DomainSpec domain;
+  SpecimenSpec specimen;
+  MshFileSpec msh;
+  MeshSizeSpec size;
+};
+
+}  // namespace rockfdem::mesh
