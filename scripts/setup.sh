@@ -1,0 +1,20 @@
+#!/usr/bin/env bash
+# The two set-up commands of the README:
+#   bash scripts/setup.sh run    install what is missing, build (Release), run the default tunnel
+#   bash scripts/setup.sh test   install what is missing, build (Release), run the whole test suite
+set -euo pipefail
+cd "$(dirname "$0")/.."
+
+mode=${1:-}
+case "$mode" in run|test) ;; *) echo "usage: bash scripts/setup.sh run|test" >&2; exit 2 ;; esac
+
+bash scripts/install-deps.sh
+build=${ROCKFDEM_BUILD_DIR:-build}
+cmake -S . -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release >/dev/null
+cmake --build "$build" -j "$(nproc)"
+
+if [ "$mode" = run ]; then
+  "$build/bin/rockfdem" run -o out/default
+else
+  ctest --test-dir "$build" --output-on-failure -j "$(nproc)"
+fi

@@ -1,0 +1,118 @@
+// The command line as users meet it: exit codes, messages on stderr, and
+// no output directory left behind by a refused scene.
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+
+#include <array>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+
+#include "rockfdem/workflows/cli.hpp"
+#include "rockfdem/error.hpp"
+
+namespace fs = std::filesystem;
+
+namespace {
+
+struct Result {
+  int code = -1;
+  std::string output;
+};
+
+Result run(const std::string& args) {
+  Result r;
+  const std::string cmd = std::string(ROCKFDEM_BINARY) + " " + args + " 2>&1";
+  FILE* pipe = popen(cmd.c_str(), "r");
+  std::array<char, 4096> buf{};
+  while (std::fgets(buf.data(), buf.size(), pipe)) r.output += buf.data();
+  const int status = pclose(pipe);
+  r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  return r;
+}
+
+fs::path scratch(const std::string& name) {
+  fs::path p = fs::temp_directory_path() / ("rockfdem-cli-" + name + "-" + std::to_string(getpid()));
+  fs::remove_all(p);
+  return p;
+}
+
+const std::string kTestDir = ROCKFDEM_TEST_DIR;
+
+}  // namespace
+
+TEST(Cli, help_and_version_exit_zero) {
+  EXPECT_EQ(run("--help").code, 0);
+  const Result v = run("--version");
+  EXPECT_EQ(v.code, 0);
+  EXPECT_NE(v.output.find("rockfdem 0."), std::string::npos);
+}
+
+TEST(Cli, unknown_command_and_option_exit_two) {
+  EXPECT_EQ(run("simulate x.toml").code, 2);
+  const Result r = run("mesh " + kTestDir + "/good_circular.toml --frobnicate");
+  EXPECT_EQ(r.code, 2);
+  EXPECT_NE(r.output.find("frobnicate"), std::string::npos) << r.output;
+  EXPECT_EQ(run("check " + kTestDir + "/good_circular.toml -j -3").code, 2);
+}
+
+// Each malformed scene: exit 2, one line naming the key, no directory made.
+TEST(Cli, malformed_scenes_exit_two_and_leave_nothing) {
+  int n = 0;
+  for (const auto& entry : fs::directory_iterator(kTestDir + "/bad_scenes")) {
+    std::ifstream in(entry.path());
+    std::string first;
+    std::getline(in, first);
+    const std::string expect = first.substr(10);
+    const fs::path out = scratch("bad");
+    const Result r = run("mesh " + entry.path().string() + " -o " + out.string());
+    EXPECT_EQ(r.code, 2) << entry.path() << ": " << r.output;
+    EXPECT_NE(r.output.find(expect), std::string::npos) << entry.path() << ": " << r.output;
+    EXPECT_EQ(std::count(r.output.begin(), r.output.end(), '\n'), 1) << r.output;
+    EXPECT_FALSE(fs::exists(out)) << entry.path();
+    ++n;
+  }
+  EXPECT_GE(n, 15);
+}
+
+TEST(Cli, set_override_is_validated_like_the_file) {
+  const fs::path out = scratch("set");
+  const Result r = run("mesh " + kTestDir + "/good_circular.toml --set mesh.size_near=0 -o " +
+                       out.string());
+  EXPECT_EQ(r.code, 2);
+  EXPECT_NE(r.output.find("--set key 'mesh.size_near'"), std::string::npos) << r.output;
+  EXPECT_FALSE(fs::exists(out));
+}
+
+TEST(Cli, check_prints_estimates_and_writes_nothing) {
+  const Result r = run("check " + kTestDir + "/good_circular.toml");
+  EXPECT_EQ(r.code, 0) << r.output;
+  EXPECT_NE(r.output.find("triangles (estimate)"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("stable time step"), std::string::npos) << r.output;
+}
+
+TEST(Cli, mesh_writes_msh_vtu_and_summary) {
+  const fs::path out = scratch("mesh");
+  const Result r = run("mesh " + kTestDir + "/good_circular.toml -q -j 2 -o " + out.string());
+  ASSERT_EQ(r.code, 0) << r.output;
+  EXPECT_TRUE(fs::exists(out / "mesh.msh"));
+  EXPECT_TRUE(fs::exists(out / "mesh.vtu"));
+  std::ifstream in(out / "summary.json");
+  const nlohmann::json j = nlohmann::json::parse(in);
+  EXPECT_GT(j["counts"]["triangles"].get<int>(), 500);
+  EXPECT_EQ(j["threads"].get<int>(), 2);
+  for (const char* key : {"rockfdem_version", "scene", "counts", "steps", "dt", "simulated_time",
+                          "timings", "throughput", "skipped", "broken", "monitors", "insitu",
+                          "state_hash"})
+    EXPECT_TRUE(j.contains(key)) << key;
+  // No temporary files are left beside the outputs.
+  for (const auto& e : fs::directory_iterator(out))
+    EXPECT_EQ(e.path().filename().string().find(".tmp"), std::string::npos) << e.path();
+  // A second scene may not reuse the directory without --force.
+  const Result other = run("mesh " + kTestDir + "/good_circular.toml --set tunnel.radius=2.5 -o " +
+                           out.string());
+  EXPECT_EQ(other.code, 2) << other.output;
+  EXPECT_NE(other.output.find("--force"), std::string::npos) << other.output;
+  fs::remove_all(out);
+}

@@ -1,0 +1,30 @@
+// The `rockfdem` command line (contract: product.md). Parsing is separate
+// from running so tests can check both without spawning processes.
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace rockfdem::workflows {
+
+struct CommandLine {
+  std::string command;   ///< run, check, mesh, insitu ("" with --help/--version)
+  std::string scene;     ///< scene file; empty: the built-in default (run only)
+  std::string output_dir = "rockfdem-out";
+  int threads = 0;       ///< 0: all cores
+  std::vector<std::string> overrides;  ///< --set section.key=value
+  bool quiet = false;
+  bool force = false;    ///< overwrite another scene's results in the output directory
+  bool help = false;
+  bool version = false;
+  bool scene_reference = false;
+  std::string help_text;
+};
+
+/// Parses argv; throws rockfdem::InputError on a bad option.
+CommandLine parse_command_line(int argc, const char* const argv[]);
+
+/// Runs a parsed command and returns the process exit code (0, 1, 2 or 3).
+int run_command(const CommandLine& cli);
+
+}  // namespace rockfdem::workflows

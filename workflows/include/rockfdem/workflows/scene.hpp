@@ -1,0 +1,70 @@
+// A validated scene: everything a run needs, typed, with defaults filled in.
+// load_scene() checks the whole file (and every --set override) before any
+// work starts; the first problem is thrown as rockfdem::InputError naming
+// the file, the key, the value and what is allowed.
+#pragma once
+
+#include <map>
+#include <string>
+#include <vector>
+
+#include "rockfdem/mesh/mesh_spec.hpp"
+
+namespace rockfdem::workflows {
+
+struct MaterialSpec {
+  double density = 2700;                ///< kg/m^3
+  double young = 0;                     ///< Pa
+  double poisson = 0;                   ///< -
+  double tensile_strength = 0;          ///< Pa (0: not given)
+  double cohesion = 0;                  ///< Pa (0: not given)
+  double friction_angle = 30;           ///< deg
+  double residual_friction_angle = 30;  ///< deg
+  double fracture_energy_I = 0;         ///< J/m^2 (0: not given)
+  double fracture_energy_II = 0;        ///< J/m^2 (0: not given)
+  double penalty_factor = 10;           ///< penalty / Young's modulus
+};
+
+struct InsituSettings {
+  double sigma_h = 0;          ///< Pa, compression positive
+  double sigma_v = 0;          ///< Pa, compression positive
+  double angle_deg = 0;        ///< rotation of sigma_h from x, counter-clockwise
+  double unit_weight = 0;      ///< N/m^3
+  bool kirsch_boundary = false;
+  std::vector<double> alpha{1.0};
+  bool lining_active = false;
+  std::string solver = "auto";
+  double tolerance = 1e-10;
+};
+
+struct OutputSettings {
+  int every_steps = 1000;
+  bool vtk = true;
+  bool plots = true;
+};
+
+struct Scene {
+  std::string source;    ///< the scene file's path, or "default"
+  std::string title;
+  bool plane_stress = false;
+  mesh::MeshSpec mesh;
+  std::map<std::string, MaterialSpec> materials;  ///< "rock", "core", "lining" as present
+  InsituSettings insitu;
+  OutputSettings output;
+  std::string canonical;  ///< the validated scene as TOML (overrides applied), for hashing and records
+};
+
+/// Reads and validates a scene file; `overrides` are "section.key=value" strings.
+Scene load_scene(const std::string& path, const std::vector<std::string>& overrides = {});
+
+/// The built-in default scene (the seed's tunnel), with overrides.
+Scene load_default_scene(const std::vector<std::string>& overrides = {});
+
+/// Validates scene text; `source` names it in messages, `base_dir` resolves relative paths.
+Scene parse_scene(const std::string& text, const std::string& source, const std::string& base_dir,
+                  const std::vector<std::string>& overrides = {});
+
+/// The text of the built-in default scene (scenes/tunnel-seed.toml).
+const std::string& default_scene_text();
+
+}  // namespace rockfdem::workflows

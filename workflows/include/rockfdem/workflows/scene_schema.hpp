@@ -1,0 +1,44 @@
+// Every key a scene file may hold: type, unit, default, allowed range and a
+// one-line meaning. Validation, defaults and docs/scene-reference.md all come
+// from this one table, so they cannot drift apart.
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace rockfdem::workflows {
+
+enum class KeyType { kNumber, kInteger, kBool, kString, kChoice, kNumberArray, kStringMap };
+
+struct KeySpec {
+  std::string path;          ///< dotted path; "[]" marks an array of tables, e.g. "stages[].kind"
+  KeyType type = KeyType::kNumber;
+  std::string unit;          ///< SI unit, "-" for dimensionless
+  std::string default_text;  ///< documented default; empty: none (required where the model needs it)
+  double min = -1e300;       ///< lower bound for numbers (and array elements)
+  double max = 1e300;        ///< upper bound
+  bool min_open = false;     ///< true: value must be > min (else >=)
+  bool max_open = false;     ///< true: value must be < max (else <=)
+  std::vector<std::string> choices;  ///< allowed strings (kChoice, and kStringMap values)
+  std::string description;
+};
+
+/// The whole schema in documentation order.
+const std::vector<KeySpec>& scene_schema();
+
+/// The spec for a normalised path ("stages[].kind"), or nullptr.
+const KeySpec* find_key(const std::string& normalised_path);
+
+/// True when some key lives under this section ("tunnel", "materials.rock", "stages[]").
+bool is_known_section(const std::string& normalised_section);
+
+/// Keys directly under a section, for "allowed keys are ..." messages.
+std::vector<std::string> keys_in_section(const std::string& normalised_section);
+
+/// "allowed: > 0 (m)" style description of a key's range or choices.
+std::string describe_allowed(const KeySpec& spec);
+
+/// docs/scene-reference.md, generated from the schema.
+std::string scene_reference_markdown();
+
+}  // namespace rockfdem::workflows

@@ -1,0 +1,84 @@
+#include "rockfdem/workflows/cli.hpp"
+
+#include <boost/program_options.hpp>
+#include <sstream>
+
+#include "rockfdem/error.hpp"
+
+namespace po = boost::program_options;
+
+namespace rockfdem::workflows {
+namespace {
+
+const char* const kUsage =
+    "Usage:\n"
+    "  rockfdem run [SCENE.toml] [-o OUTDIR] [-j THREADS] [--set section.key=value ...] [-q]\n"
+    "  rockfdem check SCENE.toml     validate, print derived figures, run nothing\n"
+    "  rockfdem mesh SCENE.toml      mesh only (mesh.msh, mesh.vtu, summary.json)\n"
+    "  rockfdem insitu SCENE.toml    mesh + implicit in-situ stage\n"
+    "  rockfdem --help | --version\n\n"
+    "Without a scene, `run` uses the built-in default: the seed's horseshoe tunnel.\n"
+    "Exit codes: 0 success, 2 bad input, 3 numerical failure, 1 anything else.\n";
+
+po::options_description visible_options() {
+  po::options_description o("Options");
+  o.add_options()("help,h", "print this help")("version", "print the version")(
+      "output,o", po::value<std::string>()->default_value("rockfdem-out"), "output directory")(
+      "threads,j", po::value<int>()->default_value(0), "OpenMP threads (0: all cores)")(
+      "set", po::value<std::vector<std::string>>()->composing(),
+      "override a scene key: --set section.key=value (repeatable)")(
+      "quiet,q", "no progress on stderr")(
+      "force", "overwrite results of another scene in the output directory");
+  return o;
+}
+
+}  // namespace
+
+CommandLine parse_command_line(int argc, const char* const argv[]) {
+  po::options_description visible = visible_options();
+  po::options_description hidden;
+  hidden.add_options()("command", po::value<std::string>(), "")(
+      "scene", po::value<std::string>(), "")("scene-reference", "");
+  po::options_description all;
+  all.add(visible).add(hidden);
+  po::positional_options_description positional;
+  positional.add("command", 1).add("scene", 1);
+
+  po::variables_map vm;
+  try {
+    po::store(po::command_line_parser(argc, argv).options(all).positional(positional).run(), vm);
+    po::notify(vm);
+  } catch (const po::error& e) {
+    throw InputError(std::string("command line: ") + e.what() + "; see rockfdem --help");
+  }
+  CommandLine cli;
+  std::ostringstream help;
+  help << kUsage << '\n' << visible;
+  cli.help_text = help.str();
+  cli.help = vm.count("help") > 0;
+  cli.version = vm.count("version") > 0;
+  cli.scene_reference = vm.count("scene-reference") > 0;
+  cli.quiet = vm.count("quiet") > 0;
+  cli.force = vm.count("force") > 0;
+  cli.output_dir = vm["output"].as<std::string>();
+  cli.threads = vm["threads"].as<int>();
+  if (vm.count("set")) cli.overrides = vm["set"].as<std::vector<std::string>>();
+  if (vm.count("command")) cli.command = vm["command"].as<std::string>();
+  if (vm.count("scene")) cli.scene = vm["scene"].as<std::string>();
+  if (cli.help || cli.version || cli.scene_reference) return cli;
+
+  if (cli.command.empty()) throw InputError("command line: no command given; see rockfdem --help");
+  if (cli.command != "run" && cli.command != "check" && cli.command != "mesh" &&
+      cli.command != "insitu")
+    throw InputError("command line: unknown command '" + cli.command +
+                     "'; allowed: run, check, mesh, insitu");
+  if (cli.scene.empty() && cli.command != "run")
+    throw InputError("command line: `rockfdem " + cli.command + "` needs a scene file");
+  if (cli.threads < 0 || cli.threads > 4096)
+    throw InputError("command line: -j " + std::to_string(cli.threads) +
+                     ": allowed 0 (all cores) to 4096");
+  if (cli.output_dir.empty()) throw InputError("command line: -o needs a directory");
+  return cli;
+}
+
+}  // namespace rockfdem::workflows

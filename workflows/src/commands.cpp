@@ -1,0 +1,45 @@
+// Dispatch: validate the whole scene first, whichever subcommand runs, then
+// hand it to the subcommand.
+#include <omp.h>
+
+#include <iostream>
+
+#include "commands.hpp"
+#include "rockfdem/workflows/cli.hpp"
+#include "rockfdem/workflows/scene_schema.hpp"
+#include "rockfdem/workflows/version.hpp"
+
+namespace rockfdem::workflows {
+namespace {
+int g_threads = 1;
+}
+
+int active_threads() {
+  omp_set_num_threads(g_threads);  // gmsh resets it to 1: put it back before each stage
+  return g_threads;
+}
+
+int run_command(const CommandLine& cli) {
+  if (cli.help) {
+    std::cout << cli.help_text;
+    return 0;
+  }
+  if (cli.version) {
+    std::cout << "rockfdem " << version_string() << '\n';
+    return 0;
+  }
+  if (cli.scene_reference) {
+    std::cout << scene_reference_markdown();
+    return 0;
+  }
+  const Scene scene =
+      cli.scene.empty() ? load_default_scene(cli.overrides) : load_scene(cli.scene, cli.overrides);
+  g_threads = cli.threads > 0 ? cli.threads : omp_get_num_procs();
+  active_threads();
+  if (cli.command == "check") return command_check(scene, cli);
+  if (cli.command == "mesh") return command_mesh(scene, cli);
+  if (cli.command == "insitu") return command_insitu(scene, cli);
+  return command_run(scene, cli);
+}
+
+}  // namespace rockfdem::workflows

@@ -1,0 +1,24 @@
+// rockfdem: from a tunnel scene to stresses, cracks, convergence and support
+// loads. Errors are caught here once and mapped to the exit codes of
+// product.md: 2 bad input, 3 numerical failure, 1 anything else.
+#include <iostream>
+
+#include "rockfdem/error.hpp"
+#include "rockfdem/workflows/cli.hpp"
+
+int main(int argc, char** argv) {
+  using namespace rockfdem;
+  try {
+    const workflows::CommandLine cli = workflows::parse_command_line(argc, argv);
+    return workflows::run_command(cli);
+  } catch (const InputError& e) {
+    std::cerr << "rockfdem: error: " << e.what() << '\n';
+    return 2;
+  } catch (const NumericalError& e) {
+    std::cerr << "rockfdem: numerical failure: " << e.what() << '\n';
+    return 3;
+  } catch (const std::exception& e) {
+    std::cerr << "rockfdem: " << e.what() << '\n';
+    return 1;
+  }
+}

@@ -1,0 +1,320 @@
+// From a schema-checked TOML tree to the typed Scene, with defaults and the
+// checks that involve several keys (tunnel inside the domain, a material for
+// every zone, decreasing alpha, ...).
+#include <cmath>
+#include <fstream>
+#include <sstream>
+
+#include "rockfdem/error.hpp"
+#include "rockfdem/workflows/scene.hpp"
+#include "rockfdem/workflows/scene_schema.hpp"
+#include "scene_reader.hpp"
+
+namespace rockfdem::workflows {
+namespace {
+
+using detail::fail_key;
+using detail::RawScene;
+
+// Typed reads of validated keys; absent keys take the schema's default.
+class Reader {
+ public:
+  explicit Reader(const RawScene& raw) : raw_(raw) {}
+
+  const toml::node* node(const std::string& path) const {
+    return raw_.root.at_path(path).node();
+  }
+  bool has(const std::string& path) const { return node(path) != nullptr; }
+
+  double number(const std::string& path) const {
+    if (const toml::node* n = node(path))
+      return n->is_integer() ? double(n->as_integer()->get()) : n->as_floating_point()->get();
+    return std::stod(spec(path).default_text);
+  }
+  double number_or(const std::string& path, double fallback) const {
+    return has(path) ? number(path) : fallback;
+  }
+  int integer(const std::string& path) const { return int(number(path)); }
+  bool boolean(const std::string& path) const {
+    if (const toml::node* n = node(path)) return n->as_boolean()->get();
+    return spec(path).default_text == "true";
+  }
+  std::string text(const std::string& path) const {
+    if (const toml::node* n = node(path)) return n->as_string()->get();
+    std::string d = spec(path).default_text;
+    return d == "\"\"" ? std::string() : d;
+  }
+  std::vector<double> numbers(const std::string& path) const {
+    std::vector<double> out;
+    if (const toml::node* n = node(path)) {
+      for (auto&& v : *n->as_array())
+        out.push_back(v.is_integer() ? double(v.as_integer()->get())
+                                     : v.as_floating_point()->get());
+    }
+    return out;
+  }
+  std::map<std::string, std::string> string_map(const std::string& path) const {
+    std::map<std::string, std::string> out;
+    if (const toml::node* n = node(path))
+      for (auto&& [k, v] : *n->as_table()) out[std::string(k.str())] = v.as_string()->get();
+    return out;
+  }
+  /// Requires a key that has no default in this context.
+  void require(const std::string& path, const std::string& why) const {
+    if (!has(path))
+      throw InputError(raw_.source + ": missing key '" + path + "' (" + why +
+                       "); allowed: " + describe_allowed(spec(path)));
+  }
+  [[noreturn]] void fail(const std::string& path, const std::string& problem) const {
+    fail_key(raw_, path, node(path), problem);
+  }
+  const std::string& source() const { return raw_.source; }
+
+ private:
+  static const KeySpec& spec(const std::string& path) {
+    std::string norm = path;
+    const KeySpec* k = find_key(norm);
+    if (!k) throw std::logic_error("scene key not in schema: " + path);
+    return *k;
+  }
+  const RawScene& raw_;
+};
+
+mesh::TunnelShape tunnel_shape(const std::string& s) {
+  if (s == "circular") return mesh::TunnelShape::kCircular;
+  if (s == "horseshoe") return mesh::TunnelShape::kHorseshoe;
+  if (s == "rectangular") return mesh::TunnelShape::kRectangular;
+  return mesh::TunnelShape::kArched;  // "arched" and "d-shaped"
+}
+
+void read_tunnel(const Reader& r, mesh::MeshSpec& m) {
+  mesh::TunnelSpec& t = m.tunnel;
+  t.shape = tunnel_shape(r.text("tunnel.shape"));
+  t.lining_thickness = r.number("tunnel.lining_thickness");
+  t.fracture_zone = r.number("tunnel.fracture_zone");
+  double w = 0, h = 0;
+  if (t.shape == mesh::TunnelShape::kCircular) {
+    r.require("tunnel.radius", "tunnel.shape is \"circular\"");
+    t.radius = r.number("tunnel.radius");
+    w = h = 2 * t.radius;
+  } else {
+    w = t.span = r.number("tunnel.span");
+    h = t.height = r.number("tunnel.height");
+    if (t.shape == mesh::TunnelShape::kHorseshoe && h < w / 2)
+      r.fail("tunnel.height", "a horseshoe's height must be at least span/2 = " +
+                                  std::to_string(w / 2) + " m");
+    if (t.shape == mesh::TunnelShape::kArched) {
+      r.require("tunnel.rise", "tunnel.shape is \"arched\"");
+      t.rise = r.number("tunnel.rise");
+      if (t.rise > w / 2 || t.rise >= h)
+        r.fail("tunnel.rise", "must be at most span/2 = " + std::to_string(w / 2) +
+                                  " m and below the height " + std::to_string(h) + " m");
+    }
+  }
+  m.domain.width = r.number("domain.width");
+  m.domain.height = r.number("domain.height");
+  m.domain.center_x = r.number("domain.center_x");
+  m.domain.center_y = r.number("domain.center_y");
+  // The opening plus its fracture zone must sit inside the domain.
+  const double margin = t.fracture_zone;
+  const double half_w = m.domain.width / 2, half_h = m.domain.height / 2;
+  if (w / 2 + margin + std::abs(m.domain.center_x) >= half_w)
+    r.fail(r.has("domain.width") ? "domain.width" : "tunnel.span",
+           "the tunnel (width " + std::to_string(w) + " m plus fracture zone " +
+               std::to_string(margin) + " m each side) must lie inside the domain");
+  if (h / 2 + margin + std::abs(m.domain.center_y) >= half_h)
+    r.fail(r.has("domain.height") ? "domain.height" : "tunnel.height",
+           "the tunnel (height " + std::to_string(h) + " m plus fracture zone " +
+               std::to_string(margin) + " m each side) must lie inside the domain");
+  if (t.lining_thickness > 0 && 2 * t.lining_thickness >= std::min(w, h) * 0.9)
+    r.fail("tunnel.lining_thickness", "the lining must leave a core: thickness below 45% of "
+                                      "the opening's smaller dimension " +
+                                          std::to_string(std::min(w, h)) + " m");
+}
+
+void read_mesh_sizes(const Reader& r, mesh::MeshSpec& m) {
+  m.size.size_near = r.number("mesh.size_near");
+  m.size.size_far = r.number("mesh.size_far");
+  m.size.grading_distance = r.number("mesh.grading_distance");
+  m.size.algorithm = r.integer("mesh.algorithm");
+  if (m.size.algorithm != 1 && m.size.algorithm != 5 && m.size.algorithm != 6)
+    r.fail("mesh.algorithm", "only 1 (MeshAdapt), 5 (Delaunay) or 6 (Frontal-Delaunay) make "
+                             "triangles");
+  if (m.size.size_far < m.size.size_near)
+    r.fail("mesh.size_far", "must be at least mesh.size_near = " +
+                                std::to_string(m.size.size_near) + " m");
+  double smallest = 0;
+  if (m.kind == mesh::ModelKind::kTunnel) {
+    const mesh::TunnelSpec& t = m.tunnel;
+    smallest = t.shape == mesh::TunnelShape::kCircular ? 2 * t.radius : std::min(t.span, t.height);
+    if (t.lining_thickness > 0) smallest = std::min(smallest, 4 * t.lining_thickness);
+  } else if (m.kind == mesh::ModelKind::kUcs) {
+    smallest = std::min(m.specimen.width, m.specimen.height);
+  } else if (m.kind == mesh::ModelKind::kBrazilian) {
+    smallest = m.specimen.diameter;
+  }
+  if (smallest > 0 && m.size.size_near > smallest / 2)
+    r.fail("mesh.size_near", "must resolve the geometry: at most " + std::to_string(smallest / 2) +
+                                 " m here");
+}
+
+void read_msh(const Reader& r, const std::string& base_dir, mesh::MeshSpec& m) {
+  r.require("msh.file", "model.kind is \"msh\"");
+  std::string file = r.text("msh.file");
+  if (!file.empty() && file[0] != '/' && !base_dir.empty()) file = base_dir + "/" + file;
+  if (!std::ifstream(file)) r.fail("msh.file", "cannot open " + file);
+  m.msh.path = file;
+  static const std::map<std::string, int> zones{{"rock", 1}, {"core", 2}, {"lining", 3}};
+  static const std::map<std::string, int> tags{
+      {"bottom", 1}, {"right", 2},        {"top", 3},      {"left", 4},         {"excavation", 5},
+      {"lining_inner", 6}, {"rim", 7}, {"load_top", 8}, {"load_bottom", 9}};
+  for (auto& [group, zone] : r.string_map("msh.zones")) m.msh.zone_groups[group] = zones.at(zone);
+  for (auto& [group, tag] : r.string_map("msh.edges")) m.msh.edge_groups[group] = tags.at(tag);
+  if (m.msh.zone_groups.empty())
+    throw InputError(r.source() + ": missing key 'msh.zones' (model.kind is \"msh\"); allowed: " +
+                     describe_allowed(*find_key("msh.zones")));
+  m.msh.fracture_group = r.text("msh.fracture_group");
+}
+
+MaterialSpec read_material(const Reader& r, const std::string& name, const MaterialSpec* base) {
+  const std::string p = "materials." + name + ".";
+  MaterialSpec m = base ? *base : MaterialSpec{};
+  if (!base) {
+    r.require(p + "young", "every zone of the model needs its material");
+    r.require(p + "poisson", "every zone of the model needs its material");
+  }
+  m.density = r.number_or(p + "density", base ? base->density : 2700);
+  m.young = r.number_or(p + "young", m.young);
+  m.poisson = r.number_or(p + "poisson", m.poisson);
+  m.tensile_strength = r.number_or(p + "tensile_strength", m.tensile_strength);
+  m.cohesion = r.number_or(p + "cohesion", m.cohesion);
+  m.friction_angle = r.number_or(p + "friction_angle", base ? base->friction_angle : 30);
+  m.residual_friction_angle = r.number_or(p + "residual_friction_angle", m.friction_angle);
+  m.fracture_energy_I = r.number_or(p + "fracture_energy_I", m.fracture_energy_I);
+  m.fracture_energy_II = r.number_or(p + "fracture_energy_II", m.fracture_energy_II);
+  m.penalty_factor = r.number_or(p + "penalty_factor", base ? base->penalty_factor : 10);
+  return m;
+}
+
+bool needs_fracture(const mesh::MeshSpec& m) {
+  return m.kind == mesh::ModelKind::kUcs || m.kind == mesh::ModelKind::kBrazilian ||
+         (m.kind == mesh::ModelKind::kTunnel && m.tunnel.fracture_zone > 0);
+}
+
+void read_materials(const Reader& r, Scene& s) {
+  s.materials["rock"] = read_material(r, "rock", nullptr);
+  if (needs_fracture(s.mesh)) {
+    for (const char* key : {"tensile_strength", "cohesion", "fracture_energy_I",
+                            "fracture_energy_II"})
+      r.require(std::string("materials.rock.") + key, "the model allows fracture");
+  }
+  const bool tunnel_like = s.mesh.kind == mesh::ModelKind::kTunnel ||
+                           s.mesh.kind == mesh::ModelKind::kMshFile;
+  if (tunnel_like) s.materials["core"] = read_material(r, "core", &s.materials["rock"]);
+  const bool lining = (s.mesh.kind == mesh::ModelKind::kTunnel &&
+                       s.mesh.tunnel.lining_thickness > 0) ||
+                      r.has("materials.lining");
+  if (lining) s.materials["lining"] = read_material(r, "lining", nullptr);
+}
+
+void read_insitu(const Reader& r, Scene& s) {
+  InsituSettings& in = s.insitu;
+  in.sigma_h = r.number("insitu.sigma_h");
+  in.sigma_v = r.number("insitu.sigma_v");
+  in.angle_deg = r.number("insitu.angle");
+  in.unit_weight = r.number("insitu.unit_weight");
+  in.kirsch_boundary = r.text("insitu.boundary") == "kirsch";
+  in.lining_active = r.boolean("insitu.lining_active");
+  in.solver = r.text("insitu.solver");
+  in.tolerance = r.number("insitu.tolerance");
+  if (r.has("insitu.alpha")) in.alpha = r.numbers("insitu.alpha");
+  for (std::size_t i = 1; i < in.alpha.size(); ++i)
+    if (!(in.alpha[i] < in.alpha[i - 1]))
+      r.fail("insitu.alpha", "must be strictly decreasing");
+  if (s.mesh.kind == mesh::ModelKind::kTunnel) {
+    if (!(in.sigma_h > 0)) r.fail("insitu.sigma_h", "a tunnel needs a compressive in-situ stress");
+    if (!(in.sigma_v > 0)) r.fail("insitu.sigma_v", "a tunnel needs a compressive in-situ stress");
+    if (in.kirsch_boundary && (s.mesh.tunnel.shape != mesh::TunnelShape::kCircular ||
+                               in.unit_weight > 0 || in.angle_deg != 0))
+      r.fail("insitu.boundary", "exact Kirsch tractions need a circular tunnel, no gradient "
+                                "and angle 0");
+  }
+  if (in.lining_active && !s.materials.count("lining"))
+    r.fail("insitu.lining_active", "the model has no lining ring (tunnel.lining_thickness = 0)");
+}
+
+mesh::ModelKind model_kind(const std::string& s) {
+  if (s == "ucs") return mesh::ModelKind::kUcs;
+  if (s == "brazilian") return mesh::ModelKind::kBrazilian;
+  if (s == "msh") return mesh::ModelKind::kMshFile;
+  return mesh::ModelKind::kTunnel;
+}
+
+// The sections a kind does not use must not be given: a stray [specimen] in
+// a tunnel scene is almost always a mistake worth reporting.
+void reject_unused_sections(const Reader& r, mesh::ModelKind kind) {
+  const bool tunnel = kind == mesh::ModelKind::kTunnel;
+  const bool specimen = kind == mesh::ModelKind::kUcs || kind == mesh::ModelKind::kBrazilian;
+  const std::pair<const char*, bool> used[] = {{"tunnel", tunnel},
+                                               {"domain", tunnel},
+                                               {"specimen", specimen},
+                                               {"msh", kind == mesh::ModelKind::kMshFile}};
+  for (auto [section, ok] : used)
+    if (!ok && r.has(section))
+      r.fail(section, std::string("section [") + section + "] is not used by model.kind = \"" +
+                          r.text("model.kind") + "\"");
+}
+
+Scene build_scene(const RawScene& raw, const std::string& base_dir) {
+  const Reader r(raw);
+  Scene s;
+  s.source = raw.source;
+  s.title = r.text("model.title");
+  s.plane_stress = r.text("model.analysis") == "plane_stress";
+  s.mesh.kind = model_kind(r.text("model.kind"));
+  reject_unused_sections(r, s.mesh.kind);
+  s.mesh.specimen.width = r.number("specimen.width");
+  s.mesh.specimen.height = r.number("specimen.height");
+  s.mesh.specimen.diameter = r.number("specimen.diameter");
+  s.mesh.specimen.load_arc_deg = r.number("specimen.load_arc_deg");
+  if (s.mesh.kind == mesh::ModelKind::kTunnel) read_tunnel(r, s.mesh);
+  if (s.mesh.kind == mesh::ModelKind::kMshFile) read_msh(r, base_dir, s.mesh);
+  read_mesh_sizes(r, s.mesh);
+  read_materials(r, s);
+  read_insitu(r, s);
+  s.output.every_steps = r.integer("output.every_steps");
+  s.output.vtk = r.boolean("output.vtk");
+  s.output.plots = r.boolean("output.plots");
+  std::ostringstream canonical;
+  canonical << raw.root;
+  s.canonical = canonical.str();
+  return s;
+}
+
+std::string directory_of(const std::string& path) {
+  const auto slash = path.rfind('/');
+  return slash == std::string::npos ? "." : path.substr(0, slash);
+}
+
+}  // namespace
+
+Scene parse_scene(const std::string& text, const std::string& source, const std::string& base_dir,
+                  const std::vector<std::string>& overrides) {
+  const RawScene raw = detail::read_raw_scene(text, source, overrides);
+  return build_scene(raw, base_dir);
+}
+
+Scene load_scene(const std::string& path, const std::vector<std::string>& overrides) {
+  std::ifstream in(path);
+  if (!in) throw InputError(path + ": cannot open the scene file");
+  std::ostringstream text;
+  text << in.rdbuf();
+  return parse_scene(text.str(), path, directory_of(path), overrides);
+}
+
+Scene load_default_scene(const std::vector<std::string>& overrides) {
+  Scene s = parse_scene(default_scene_text(), "default", ".", overrides);
+  return s;
+}
+
+}  // namespace rockfdem::workflows

@@ -1,0 +1,206 @@
+#include "scene_reader.hpp"
+
+#include <cmath>
+#include <sstream>
+
+#include "rockfdem/error.hpp"
+#include "rockfdem/workflows/scene_schema.hpp"
+
+namespace rockfdem::workflows::detail {
+namespace {
+
+std::string join(const std::vector<std::string>& items) {
+  std::string out;
+  for (std::size_t i = 0; i < items.size(); ++i) out += (i ? ", " : "") + items[i];
+  return out;
+}
+
+[[noreturn]] void fail(const std::string& message) { throw InputError(message); }
+
+// "stages[2].kind" -> "stages[].kind": array-of-table indices do not matter to the schema.
+std::string normalise(const std::string& path) {
+  std::string out;
+  for (std::size_t i = 0; i < path.size(); ++i) {
+    out += path[i];
+    if (path[i] == '[') {
+      while (i + 1 < path.size() && path[i + 1] != ']') ++i;
+    }
+  }
+  return out;
+}
+
+// Parse the right-hand side of --set as a TOML value; bare words become strings
+// so `--set tunnel.shape=circular` needs no shell quoting.
+toml::table parse_override_value(const std::string& key, const std::string& value) {
+  try {
+    return toml::parse("v = " + value);
+  } catch (const toml::parse_error&) {
+    toml::table t;
+    t.insert("v", value);
+    (void)key;
+    return t;
+  }
+}
+
+void apply_override(RawScene& scene, const std::string& text) {
+  const auto eq = text.find('=');
+  if (eq == std::string::npos || eq == 0)
+    fail(scene.source + ": --set " + text + ": expected section.key=value");
+  const std::string path = text.substr(0, eq);
+  const std::string value = text.substr(eq + 1);
+  if (!find_key(normalise(path)))
+    fail(scene.source + ": --set " + text + ": unknown key '" + path +
+         "'; see docs/scene-reference.md for the keys");
+  toml::table parsed = parse_override_value(path, value);
+  toml::table* table = &scene.root;
+  std::size_t start = 0;
+  for (auto dot = path.find('.'); dot != std::string::npos; dot = path.find('.', start)) {
+    const std::string part = path.substr(start, dot - start);
+    auto [it, inserted] = table->insert(part, toml::table{});
+    (void)inserted;
+    table = it->second.as_table();
+    if (!table) fail(scene.source + ": --set " + text + ": '" + part + "' is not a table");
+    start = dot + 1;
+  }
+  table->insert_or_assign(path.substr(start), std::move(*parsed.get("v")));
+  scene.overridden.insert(path);
+}
+
+bool is_finite_number(const toml::node& n) {
+  if (n.is_integer()) return true;
+  return n.is_floating_point() && std::isfinite(n.as_floating_point()->get());
+}
+
+double as_double(const toml::node& n) {
+  return n.is_integer() ? double(n.as_integer()->get()) : n.as_floating_point()->get();
+}
+
+bool in_range(const KeySpec& k, double v) {
+  if (k.min_open ? !(v > k.min) : !(v >= k.min)) return false;
+  if (k.max_open ? !(v < k.max) : !(v <= k.max)) return false;
+  return true;
+}
+
+bool is_choice(const KeySpec& k, const toml::node& n) {
+  if (!n.is_string()) return false;
+  for (const std::string& c : k.choices)
+    if (c == n.as_string()->get()) return true;
+  return false;
+}
+
+void check_value(const RawScene& s, const KeySpec& k, const std::string& path,
+                 const toml::node& n) {
+  switch (k.type) {
+    case KeyType::kBool:
+      if (!n.is_boolean()) fail_key(s, path, &n, "wrong type");
+      return;
+    case KeyType::kString:
+      if (!n.is_string()) fail_key(s, path, &n, "wrong type");
+      return;
+    case KeyType::kChoice:
+      if (!is_choice(k, n)) fail_key(s, path, &n, "not an allowed value");
+      return;
+    case KeyType::kStringMap:
+      if (!n.is_table()) fail_key(s, path, &n, "wrong type");
+      for (auto&& [name, v] : *n.as_table())
+        if (!is_choice(k, v))
+          fail_key(s, path + "." + std::string(name.str()), &v, "not an allowed value");
+      return;
+    case KeyType::kNumberArray:
+      if (!n.is_array() || n.as_array()->empty()) fail_key(s, path, &n, "wrong type");
+      for (auto&& v : *n.as_array())
+        if (!is_finite_number(v) || !in_range(k, as_double(v)))
+          fail_key(s, path, &n, "element " + node_text(v) + " out of range");
+      return;
+    case KeyType::kInteger:
+      if (!n.is_integer()) fail_key(s, path, &n, "wrong type");
+      if (!in_range(k, as_double(n))) fail_key(s, path, &n, "out of range");
+      return;
+    case KeyType::kNumber:
+      if (!n.is_number()) fail_key(s, path, &n, "wrong type");
+      if (!is_finite_number(n) || !in_range(k, as_double(n))) fail_key(s, path, &n, "out of range");
+      return;
+  }
+}
+
+void check_table(const RawScene& s, const toml::table& table, const std::string& prefix);
+
+void check_node(const RawScene& s, const std::string& path, const toml::node& n) {
+  const std::string norm = normalise(path);
+  if (const KeySpec* k = find_key(norm)) return check_value(s, *k, path, n);
+  if (n.is_table() && is_known_section(norm)) return check_table(s, *n.as_table(), path);
+  if (n.is_array_of_tables() && is_known_section(norm + "[]")) {
+    std::size_t i = 0;
+    for (auto&& item : *n.as_array())
+      check_table(s, *item.as_table(), path + "[" + std::to_string(i++) + "]");
+    return;
+  }
+  const auto dot = norm.rfind('.');
+  const std::string section = dot == std::string::npos ? "" : norm.substr(0, dot);
+  std::vector<std::string> allowed = keys_in_section(section);
+  if (section.empty()) {
+    for (const KeySpec& k : scene_schema()) {
+      const std::string top = k.path.substr(0, k.path.find_first_of(".["));
+      if (allowed.empty() || allowed.back() != top) allowed.push_back(top);
+    }
+  }
+  fail_key(s, path, &n, "unknown key; allowed here: " + join(allowed));
+}
+
+void check_table(const RawScene& s, const toml::table& table, const std::string& prefix) {
+  for (auto&& [key, node] : table) {
+    const std::string path = prefix.empty() ? std::string(key.str())
+                                            : prefix + "." + std::string(key.str());
+    check_node(s, path, node);
+  }
+}
+
+}  // namespace
+
+std::string node_text(const toml::node& node) {
+  std::ostringstream out;
+  node.visit([&](auto&& v) {
+    if constexpr (toml::is_string<decltype(v)>)
+      out << '"' << v.get() << '"';
+    else if constexpr (toml::is_table<decltype(v)>)
+      out << "{...}";
+    else if constexpr (toml::is_array<decltype(v)>)
+      out << toml::toml_formatter{v, toml::format_flags::none};
+    else
+      out << v;
+  });
+  return out.str();
+}
+
+void fail_key(const RawScene& s, const std::string& path, const toml::node* node,
+              const std::string& problem) {
+  std::ostringstream msg;
+  const bool from_cli = s.overridden.count(path) > 0;
+  msg << s.source;
+  if (!from_cli && node && node->source().begin.line > 0) msg << ':' << node->source().begin.line;
+  msg << ": " << (from_cli ? "--set " : "") << "key '" << path << "'";
+  if (node) msg << " = " << node_text(*node);
+  msg << ": " << problem;
+  if (const KeySpec* k = find_key(normalise(path)); k && problem.find("allowed") == std::string::npos)
+    msg << "; allowed: " << describe_allowed(*k);
+  throw InputError(msg.str());
+}
+
+RawScene read_raw_scene(const std::string& text, const std::string& source,
+                        const std::vector<std::string>& overrides) {
+  RawScene scene;
+  scene.source = source;
+  try {
+    scene.root = toml::parse(text, source);
+  } catch (const toml::parse_error& e) {
+    std::ostringstream msg;
+    msg << source << ':' << e.source().begin.line << ':' << e.source().begin.column
+        << ": not valid TOML: " << e.description();
+    throw InputError(msg.str());
+  }
+  for (const std::string& o : overrides) apply_override(scene, o);
+  check_table(scene, scene.root, "");
+  return scene;
+}
+
+}  // namespace rockfdem::workflows::detail

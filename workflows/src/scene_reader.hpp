@@ -1,0 +1,29 @@
+// Private: the TOML layer of scene loading. Parses text, applies --set
+// overrides and checks every key against the schema, so later code only
+// ever sees known keys of the right type within range.
+#pragma once
+
+#include <set>
+#include <string>
+#include <vector>
+
+#include <toml++/toml.h>
+
+namespace rockfdem::workflows::detail {
+
+struct RawScene {
+  toml::table root;
+  std::string source;             ///< file name for messages
+  std::set<std::string> overridden;  ///< dotted paths set with --set
+};
+
+RawScene read_raw_scene(const std::string& text, const std::string& source,
+                        const std::vector<std::string>& overrides);
+
+/// Throws InputError "<source>[:line]: <key> = <value>: <problem>; allowed: <what>".
+[[noreturn]] void fail_key(const RawScene& scene, const std::string& path, const toml::node* node,
+                           const std::string& problem);
+
+std::string node_text(const toml::node& node);
+
+}  // namespace rockfdem::workflows::detail

@@ -1,0 +1,298 @@
+// The scene file's keys. To add a key: add one line here, read it in
+// scene_build.cpp, and regenerate docs/scene-reference.md
+// (`rockfdem --scene-reference > docs/scene-reference.md`; a test checks it).
+#include "rockfdem/workflows/scene_schema.hpp"
+
+#include <algorithm>
+#include <sstream>
+
+namespace rockfdem::workflows {
+namespace {
+
+constexpr double kInf = 1e300;
+
+KeySpec number(std::string path, std::string unit, std::string def, double min, bool min_open,
+               double max, bool max_open, std::string what) {
+  KeySpec k;
+  k.path = std::move(path);
+  k.type = KeyType::kNumber;
+  k.unit = std::move(unit);
+  k.default_text = std::move(def);
+  k.min = min;
+  k.min_open = min_open;
+  k.max = max;
+  k.max_open = max_open;
+  k.description = std::move(what);
+  return k;
+}
+
+KeySpec positive(std::string path, std::string unit, std::string def, std::string what) {
+  return number(std::move(path), std::move(unit), std::move(def), 0, true, kInf, false,
+                std::move(what));
+}
+
+KeySpec non_negative(std::string path, std::string unit, std::string def, std::string what) {
+  return number(std::move(path), std::move(unit), std::move(def), 0, false, kInf, false,
+                std::move(what));
+}
+
+KeySpec integer(std::string path, std::string def, double min, double max, std::string what) {
+  KeySpec k = number(std::move(path), "-", std::move(def), min, false, max, false, std::move(what));
+  k.type = KeyType::kInteger;
+  return k;
+}
+
+KeySpec choice(std::string path, std::string def, std::vector<std::string> choices,
+               std::string what) {
+  KeySpec k;
+  k.path = std::move(path);
+  k.type = KeyType::kChoice;
+  k.unit = "-";
+  k.default_text = std::move(def);
+  k.choices = std::move(choices);
+  k.description = std::move(what);
+  return k;
+}
+
+KeySpec text(std::string path, std::string def, std::string what) {
+  KeySpec k;
+  k.path = std::move(path);
+  k.type = KeyType::kString;
+  k.unit = "-";
+  k.default_text = std::move(def);
+  k.description = std::move(what);
+  return k;
+}
+
+KeySpec boolean(std::string path, std::string def, std::string what) {
+  KeySpec k;
+  k.path = std::move(path);
+  k.type = KeyType::kBool;
+  k.unit = "-";
+  k.default_text = std::move(def);
+  k.description = std::move(what);
+  return k;
+}
+
+void add_material(std::vector<KeySpec>& s, const std::string& name, const std::string& role) {
+  const std::string p = "materials." + name + ".";
+  s.push_back(positive(p + "density", "kg/m^3", "2700", "Density of the " + role + "."));
+  s.push_back(positive(p + "young", "Pa", "", "Young's modulus of the " + role + "."));
+  s.push_back(number(p + "poisson", "-", "", 0, true, 0.5, true,
+                     "Poisson's ratio of the " + role + "."));
+  s.push_back(positive(p + "tensile_strength", "Pa", "",
+                       "Tensile strength ft of the " + role + "'s crack elements."));
+  s.push_back(positive(p + "cohesion", "Pa", "",
+                       "Cohesion c of the " + role + "'s crack elements (Mohr-Coulomb)."));
+  s.push_back(number(p + "friction_angle", "deg", "30", 0, false, 90, true,
+                     "Internal friction angle of the " + role + "'s crack elements."));
+  s.push_back(number(p + "residual_friction_angle", "deg", "friction_angle", 0, false, 90, true,
+                     "Friction angle of broken cracks and contacts in the " + role + "."));
+  s.push_back(positive(p + "fracture_energy_I", "J/m^2", "",
+                       "Mode I fracture energy GfI of the " + role + "."));
+  s.push_back(positive(p + "fracture_energy_II", "J/m^2", "",
+                       "Mode II fracture energy GfII of the " + role + "."));
+  s.push_back(number(p + "penalty_factor", "-", "10", 1, false, 1000, false,
+                     "Crack and contact penalty as a multiple of the Young's modulus."));
+}
+
+std::vector<KeySpec> build_schema() {
+  std::vector<KeySpec> s;
+  // [model]
+  s.push_back(choice("model.kind", "tunnel", {"tunnel", "ucs", "brazilian", "msh"},
+                     "What the scene models: a tunnel in a rock domain, a lab specimen, or a "
+                     "user's own .msh file."));
+  s.push_back(text("model.title", "\"\"", "Free text shown in outputs."));
+  s.push_back(choice("model.analysis", "plane_strain", {"plane_strain", "plane_stress"},
+                     "Two-dimensional idealisation (unit thickness)."));
+  // [domain]
+  s.push_back(positive("domain.width", "m", "100", "Width of the rectangular rock domain."));
+  s.push_back(positive("domain.height", "m", "100", "Height of the rectangular rock domain."));
+  s.push_back(number("domain.center_x", "m", "0", -kInf, false, kInf, false,
+                     "Domain centre relative to the opening's centre (x)."));
+  s.push_back(number("domain.center_y", "m", "0", -kInf, false, kInf, false,
+                     "Domain centre relative to the opening's centre (y)."));
+  // [tunnel]
+  s.push_back(choice("tunnel.shape", "horseshoe",
+                     {"circular", "horseshoe", "arched", "d-shaped", "rectangular"},
+                     "Shape of the opening; the opening's bounding box is centred at the origin. "
+                     "`d-shaped` is a synonym of `arched`."));
+  s.push_back(positive("tunnel.radius", "m", "", "Radius (circular only; required there)."));
+  s.push_back(positive("tunnel.span", "m", "11.3", "Width of the opening (not circular)."));
+  s.push_back(positive("tunnel.height", "m", "8.8",
+                       "Floor-to-crown height of the opening (not circular). Horseshoe: at least "
+                       "span/2."));
+  s.push_back(positive("tunnel.rise", "m", "",
+                       "Arched only (required there): rise of the arch above the walls, at most "
+                       "span/2 and below the height."));
+  s.push_back(non_negative("tunnel.lining_thickness", "m", "0",
+                           "Thickness of the lining ring inside the tunnel boundary; 0: none."));
+  s.push_back(non_negative("tunnel.fracture_zone", "m", "0",
+                           "Crack elements are allowed within this distance outside the opening; "
+                           "0: elastic rock everywhere."));
+  // [specimen]
+  s.push_back(positive("specimen.width", "m", "0.05", "UCS specimen width."));
+  s.push_back(positive("specimen.height", "m", "0.1", "UCS specimen height."));
+  s.push_back(positive("specimen.diameter", "m", "0.05", "Brazilian disc diameter."));
+  s.push_back(number("specimen.load_arc_deg", "deg", "10", 0, true, 90, true,
+                     "Brazilian disc: angle subtended by each loading arc."));
+  // [msh]
+  s.push_back(text("msh.file", "", "User's gmsh .msh file (relative to the scene file); "
+                                   "required when model.kind = \"msh\"."));
+  KeySpec zones;
+  zones.path = "msh.zones";
+  zones.type = KeyType::kStringMap;
+  zones.unit = "-";
+  zones.default_text = "{}";
+  zones.choices = {"rock", "core", "lining"};
+  zones.description = "Map from 2D physical group name to zone, e.g. { Rock = \"rock\" }.";
+  s.push_back(zones);
+  KeySpec edges = zones;
+  edges.path = "msh.edges";
+  edges.choices = {"bottom", "right", "top", "left", "excavation", "lining_inner", "rim",
+                   "load_top", "load_bottom"};
+  edges.description = "Map from 1D physical group name to edge tag, e.g. { Floor = \"bottom\" }.";
+  s.push_back(edges);
+  s.push_back(text("msh.fracture_group", "\"\"",
+                   "2D physical group where crack elements are allowed; empty: all rock."));
+  // [mesh]
+  s.push_back(positive("mesh.size_near", "m", "0.5",
+                       "Element size at the tunnel boundary and in the fracture zone "
+                       "(specimens: everywhere)."));
+  s.push_back(positive("mesh.size_far", "m", "5", "Element size at the outer boundary."));
+  s.push_back(non_negative("mesh.grading_distance", "m", "0",
+                           "Distance from the tunnel over which the size grows from near to "
+                           "far; 0: half the domain's smaller side."));
+  KeySpec algo = integer("mesh.algorithm", "6", 1, 9,
+                         "gmsh 2D algorithm: 1 MeshAdapt, 5 Delaunay, 6 Frontal-Delaunay, 8 "
+                         "Frontal-Delaunay for quads (not used).");
+  s.push_back(algo);
+  // [materials.*]
+  add_material(s, "rock", "host rock (or the specimen)");
+  add_material(s, "core", "excavation core (defaults to the rock's values)");
+  add_material(s, "lining", "shotcrete lining");
+  // [insitu]
+  s.push_back(non_negative("insitu.sigma_h", "Pa", "0",
+                           "Horizontal far-field principal stress at the tunnel centre "
+                           "(compression positive)."));
+  s.push_back(non_negative("insitu.sigma_v", "Pa", "0",
+                           "Vertical far-field principal stress at the tunnel centre "
+                           "(compression positive)."));
+  s.push_back(number("insitu.angle", "deg", "0", -90, false, 90, false,
+                     "Rotation of sigma_h from the x axis, counter-clockwise."));
+  s.push_back(non_negative("insitu.unit_weight", "N/m^3", "0",
+                           "Stress gradient with depth: both principal stresses grow by "
+                           "unit_weight (times sigma_h/sigma_v for the horizontal one) per metre "
+                           "below the centre; 0: uniform."));
+  s.push_back(choice("insitu.boundary", "far_field", {"far_field", "kirsch"},
+                     "Loading on the box: the far-field tractions, or exact Kirsch tractions "
+                     "(circular tunnel only, for verification)."));
+  KeySpec alpha = number("insitu.alpha", "-", "[1.0]", 0, false, 1, false,
+                         "Core softening factors solved implicitly, strictly decreasing in "
+                         "[0, 1]; 0 removes the core.");
+  alpha.type = KeyType::kNumberArray;
+  s.push_back(alpha);
+  s.push_back(boolean("insitu.lining_active", "false",
+                      "Whether the lining ring carries load during the implicit stage."));
+  s.push_back(choice("insitu.solver", "auto", {"auto", "amg", "direct"},
+                     "auto: direct for small systems, else AMG-preconditioned CG."));
+  s.push_back(number("insitu.tolerance", "-", "1e-10", 0, true, 1e-3, false,
+                     "Relative residual of the iterative solver."));
+  // [output]
+  s.push_back(integer("output.every_steps", "1000", 1, 1e9,
+                      "Explicit steps between outputs (VTK frames, history rows)."));
+  s.push_back(boolean("output.vtk", "true", "Write ParaView files."));
+  s.push_back(boolean("output.plots", "true", "Render PNG plots (needs a display or Xvfb)."));
+  return s;
+}
+
+std::string section_of(const std::string& path) {
+  const auto dot = path.rfind('.');
+  return dot == std::string::npos ? std::string() : path.substr(0, dot);
+}
+
+}  // namespace
+
+const std::vector<KeySpec>& scene_schema() {
+  static const std::vector<KeySpec> schema = build_schema();
+  return schema;
+}
+
+const KeySpec* find_key(const std::string& path) {
+  for (const KeySpec& k : scene_schema())
+    if (k.path == path) return &k;
+  return nullptr;
+}
+
+bool is_known_section(const std::string& section) {
+  for (const KeySpec& k : scene_schema()) {
+    const std::string s = section_of(k.path);
+    if (s == section || s.rfind(section + ".", 0) == 0) return true;
+  }
+  return false;
+}
+
+std::vector<std::string> keys_in_section(const std::string& section) {
+  std::vector<std::string> keys;
+  for (const KeySpec& k : scene_schema())
+    if (section_of(k.path) == section) keys.push_back(k.path.substr(section.size() + 1));
+  return keys;
+}
+
+std::string describe_allowed(const KeySpec& k) {
+  std::ostringstream out;
+  out.precision(12);
+  switch (k.type) {
+    case KeyType::kBool: return "true or false";
+    case KeyType::kString: return "a string";
+    case KeyType::kChoice:
+    case KeyType::kStringMap: {
+      out << (k.type == KeyType::kStringMap ? "a table of strings, each one of " : "one of ");
+      for (std::size_t i = 0; i < k.choices.size(); ++i)
+        out << (i ? ", " : "") << '"' << k.choices[i] << '"';
+      return out.str();
+    }
+    default: break;
+  }
+  if (k.type == KeyType::kInteger) out << "an integer ";
+  if (k.type == KeyType::kNumberArray) out << "an array of numbers each ";
+  const bool lo = k.min > -kInf, hi = k.max < kInf;
+  if (lo && hi) {
+    out << "in " << (k.min_open ? "(" : "[") << k.min << ", " << k.max << (k.max_open ? ")" : "]");
+  } else if (lo) {
+    out << (k.min_open ? "> " : ">= ") << k.min;
+  } else if (hi) {
+    out << (k.max_open ? "< " : "<= ") << k.max;
+  } else {
+    out << "any finite number";
+  }
+  if (!k.unit.empty() && k.unit != "-") out << " (" << k.unit << ")";
+  return out.str();
+}
+
+std::string scene_reference_markdown() {
+  std::ostringstream md;
+  md << "# Scene file reference\n\n"
+        "Generated by `rockfdem --scene-reference` from the schema in "
+        "`workflows/src/scene_schema.cpp`; a test keeps this page equal to it.\n\n"
+        "A scene is one TOML file. Units are SI (m, Pa, kg, s, J); angles in degrees; "
+        "stresses compression positive in `[insitu]`. Unknown keys, wrong types and values "
+        "out of range are errors (exit code 2) naming the file, the key, the value and what "
+        "is allowed. Any key can be overridden on the command line with "
+        "`--set section.key=value`.\n";
+  std::string current;
+  for (const KeySpec& k : scene_schema()) {
+    const std::string section = section_of(k.path);
+    if (section != current) {
+      current = section;
+      md << "\n## [" << section << "]\n\n| key | unit | default | allowed | meaning |\n"
+            "|---|---|---|---|---|\n";
+    }
+    md << "| `" << k.path.substr(section.size() + 1) << "` | " << k.unit << " | "
+       << (k.default_text.empty() ? "required where used" : k.default_text) << " | "
+       << describe_allowed(k) << " | " << k.description << " |\n";
+  }
+  return md.str();
+}
+
+}  // namespace rockfdem::workflows
