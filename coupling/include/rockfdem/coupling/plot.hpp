@@ -1,0 +1,53 @@
+// PNG pictures rendered by VTK: line plots (convergence, broken cracks, the
+// ground reaction curve) and the mesh coloured by a cell field with cracks
+// drawn on top.
+//
+// VTK renders through an X display (GLX); with none, VTK's offscreen path
+// aborts the process. So every function first calls rendering_available()
+// and returns false with the reason instead of rendering. Run under
+// `xvfb-run -a` on machines without a display.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "rockfdem/coupling/vtk_grid.hpp"
+
+namespace rockfdem::coupling {
+
+/// True when an X display can be opened and offers GLX, i.e. VTK can render.
+/// Checked without VTK (which would abort): DISPLAY must be set, libX11 and
+/// libGL are opened with dlopen, XOpenDisplay must succeed and
+/// glXQueryExtension must answer yes. Costs one X connection (milliseconds).
+/// @param why  if not null, receives the reason when the answer is false.
+bool rendering_available(std::string* why = nullptr);
+
+/// One curve of a line plot.
+struct PlotSeries {
+  std::string name;      ///< legend entry
+  std::vector<double> x; ///< abscissae
+  std::vector<double> y; ///< ordinates, as many as x
+};
+
+/// Line plot with title, axis labels and a legend, written atomically as PNG
+/// of width x height pixels.
+/// @return false (reason in *why) when rendering is not available; nothing written.
+/// @throws std::invalid_argument for no series, x/y size mismatch (names the
+///         series) or a size below 16 pixels; std::runtime_error naming `path`
+///         when it cannot be written.
+bool plot_xy_png(const std::string& title, const std::string& x_label, const std::string& y_label,
+                 const std::vector<PlotSeries>& series, const std::string& path, int width = 900,
+                 int height = 600, std::string* why = nullptr);
+
+/// The grid's triangles coloured by one component of a cell array (with a
+/// colour bar titled by the field), its line cells (cracks) drawn in black
+/// on top, and a title; written atomically as PNG. `component` indexes the
+/// record's tuple (for a stress (xx, yy, xy): 0, 1 or 2); NaN cells are grey.
+/// @return false (reason in *why) when rendering is not available; nothing written.
+/// @throws std::invalid_argument naming the field when it is missing or the
+///         component is out of range; std::runtime_error naming `path`.
+bool render_mesh_png(const VtkGrid& grid, const std::string& cell_field, int component,
+                     const std::string& path, const std::string& title, int width = 1000,
+                     int height = 800, std::string* why = nullptr);
+
+}  // namespace rockfdem::coupling

@@ -1,0 +1,101 @@
+// Line plots with vtkChartXY in an offscreen vtkContextView.
+#include <vtkAxis.h>
+#include <vtkChartLegend.h>
+#include <vtkChartXY.h>
+#include <vtkContextScene.h>
+#include <vtkContextView.h>
+#include <vtkDoubleArray.h>
+#include <vtkNew.h>
+#include <vtkPlot.h>
+#include <vtkRenderWindow.h>
+#include <vtkRenderer.h>
+#include <vtkTable.h>
+#include <vtkTextProperty.h>
+
+#include <array>
+#include <stdexcept>
+
+#include "plot_png.hpp"
+#include "rockfdem/coupling/plot.hpp"
+
+namespace rockfdem::coupling {
+namespace {
+
+// Tableau's ten colours: distinguishable, and printable in grey scale.
+constexpr std::array<std::array<unsigned char, 3>, 10> kPalette{{{31, 119, 180},
+                                                                 {255, 127, 14},
+                                                                 {44, 160, 44},
+                                                                 {214, 39, 40},
+                                                                 {148, 103, 189},
+                                                                 {140, 86, 75},
+                                                                 {227, 119, 194},
+                                                                 {127, 127, 127},
+                                                                 {188, 189, 34},
+                                                                 {23, 190, 207}}};
+
+void check_series(const std::vector<PlotSeries>& series) {
+  if (series.empty()) throw std::invalid_argument("plot has no series");
+  for (const PlotSeries& s : series) {
+    if (s.x.size() != s.y.size()) {
+      throw std::invalid_argument("plot series '" + s.name + "': " + std::to_string(s.x.size()) +
+                                  " x values but " + std::to_string(s.y.size()) + " y values");
+    }
+  }
+}
+
+vtkSmartPointer<vtkDoubleArray> column(const char* name, const std::vector<double>& v) {
+  auto a = vtkSmartPointer<vtkDoubleArray>::New();
+  a->SetName(name);
+  a->SetNumberOfValues(static_cast<vtkIdType>(v.size()));
+  for (std::size_t i = 0; i < v.size(); ++i) a->SetValue(static_cast<vtkIdType>(i), v[i]);
+  return a;
+}
+
+void add_series(vtkChartXY* chart, const PlotSeries& s, std::size_t index) {
+  const std::string label = s.name.empty() ? "series " + std::to_string(index + 1) : s.name;
+  vtkNew<vtkTable> table;  // the plot keeps a reference to it
+  table->AddColumn(column("x", s.x));
+  table->AddColumn(column(label.c_str(), s.y));
+  vtkPlot* line = chart->AddPlot(vtkChart::LINE);
+  line->SetInputData(table, 0, 1);
+  line->SetLabel(label);
+  const auto& c = kPalette[index % kPalette.size()];
+  line->SetColor(c[0], c[1], c[2], 255);
+  line->SetWidth(2.0);
+}
+
+void label_axis(vtkAxis* axis, const std::string& title) {
+  axis->SetTitle(title);
+  axis->GetTitleProperties()->SetFontSize(16);
+  axis->GetLabelProperties()->SetFontSize(13);
+}
+
+}  // namespace
+
+bool plot_xy_png(const std::string& title, const std::string& x_label, const std::string& y_label,
+                 const std::vector<PlotSeries>& series, const std::string& path, int width,
+                 int height, std::string* why) {
+  check_series(series);
+  check_image_size(width, height);
+  if (!rendering_available(why)) return false;
+
+  vtkNew<vtkContextView> view;
+  view->GetRenderer()->SetBackground(1.0, 1.0, 1.0);
+  view->GetRenderWindow()->SetOffScreenRendering(1);
+  view->GetRenderWindow()->SetSize(width, height);
+
+  vtkNew<vtkChartXY> chart;
+  view->GetScene()->AddItem(chart);
+  chart->SetTitle(title);
+  chart->GetTitleProperties()->SetFontSize(18);
+  label_axis(chart->GetAxis(vtkAxis::BOTTOM), x_label);
+  label_axis(chart->GetAxis(vtkAxis::LEFT), y_label);
+  for (std::size_t i = 0; i < series.size(); ++i) add_series(chart, series[i], i);
+  chart->SetShowLegend(true);
+  chart->GetLegend()->GetLabelProperties()->SetFontSize(14);
+
+  save_window_png(view->GetRenderWindow(), path);
+  return true;
+}
+
+}  // namespace rockfdem::coupling

@@ -1,0 +1,122 @@
+// VtkGrid -> vtkUnstructuredGrid -> .vtu (appended, raw binary, zlib).
+// The only translation unit of the writers that includes VTK headers.
+#include "rockfdem/coupling/vtk_writer.hpp"
+
+#include <vtkCellArray.h>
+#include <vtkCellData.h>
+#include <vtkDoubleArray.h>
+#include <vtkIntArray.h>
+#include <vtkNew.h>
+#include <vtkPointData.h>
+#include <vtkPoints.h>
+#include <vtkSmartPointer.h>
+#include <vtkUnstructuredGrid.h>
+#include <vtkXMLUnstructuredGridWriter.h>
+
+#include <algorithm>
+#include <stdexcept>
+#include <type_traits>
+
+#include "rockfdem/coupling/atomic_file.hpp"
+
+namespace rockfdem::coupling {
+namespace {
+
+// Number of components in the file for an array of the record (see vtk_grid.hpp).
+int file_components(const VtkArray& a) {
+  switch (a.kind) {
+    case VtkKind::scalar: return 1;
+    case VtkKind::vector: return 3;
+    case VtkKind::symmetric_tensor: return 9;
+  }
+  return 1;
+}
+
+// One tuple of the record -> one tuple of the file. Vectors gain z = 0;
+// symmetric tensors (xx, yy, xy) or (xx, yy, zz, xy) become the full,
+// row-major 3x3 tensor.
+template <typename T>
+void expand_tuple(const VtkArray& a, const T* in, T* out) {
+  if (a.kind == VtkKind::scalar) {
+    out[0] = in[0];
+  } else if (a.kind == VtkKind::vector) {
+    out[0] = in[0];
+    out[1] = in[1];
+    out[2] = a.n_components == 3 ? in[2] : T(0);
+  } else {
+    const T xx = in[0], yy = in[1];
+    const T zz = a.n_components == 4 ? in[2] : T(0);
+    const T xy = a.n_components == 4 ? in[3] : in[2];
+    const T full[9] = {xx, xy, 0, xy, yy, 0, 0, 0, zz};
+    std::copy(full, full + 9, out);
+  }
+}
+
+template <typename VtkArrayT, typename T>
+vtkSmartPointer<vtkDataArray> to_vtk_array(const VtkArray& a, const std::vector<T>& values) {
+  auto out = vtkSmartPointer<VtkArrayT>::New();
+  out->SetName(a.name.c_str());
+  const int nc = file_components(a);
+  out->SetNumberOfComponents(nc);
+  const vtkIdType n = static_cast<vtkIdType>(a.n_tuples());
+  out->SetNumberOfTuples(n);
+  auto* dst = out->GetPointer(0);
+  for (vtkIdType t = 0; t < n; ++t) expand_tuple(a, values.data() + t * a.n_components, dst + t * nc);
+  return out;
+}
+
+vtkSmartPointer<vtkDataArray> to_vtk_array(const VtkArray& a) {
+  // vtkIntArray holds `int`, which the record's int32 values fit exactly.
+  static_assert(sizeof(int) == sizeof(std::int32_t), "vtkIntArray must be 32-bit");
+  if (a.is_int()) {
+    const auto& v = std::get<std::vector<std::int32_t>>(a.values);
+    return to_vtk_array<vtkIntArray>(a, std::vector<int>(v.begin(), v.end()));
+  }
+  return to_vtk_array<vtkDoubleArray>(a, std::get<std::vector<double>>(a.values));
+}
+
+vtkSmartPointer<vtkUnstructuredGrid> to_vtk_grid(const VtkGrid& grid) {
+  auto ug = vtkSmartPointer<vtkUnstructuredGrid>::New();
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToDouble();
+  points->SetNumberOfPoints(static_cast<vtkIdType>(grid.n_points()));
+  for (std::size_t i = 0; i < grid.n_points(); ++i) {
+    points->SetPoint(static_cast<vtkIdType>(i), grid.x[i], grid.y[i], 0.0);
+  }
+  ug->SetPoints(points);
+  ug->Allocate(static_cast<vtkIdType>(grid.n_cells()));
+  for (const auto& t : grid.triangles) {
+    const vtkIdType ids[3] = {t[0], t[1], t[2]};
+    ug->InsertNextCell(VTK_TRIANGLE, 3, ids);
+  }
+  for (const auto& l : grid.lines) {
+    const vtkIdType ids[2] = {l[0], l[1]};
+    ug->InsertNextCell(VTK_LINE, 2, ids);
+  }
+  for (const VtkArray& a : grid.point_arrays) ug->GetPointData()->AddArray(to_vtk_array(a));
+  for (const VtkArray& a : grid.cell_arrays) ug->GetCellData()->AddArray(to_vtk_array(a));
+  return ug;
+}
+
+}  // namespace
+
+void write_vtu(const VtkGrid& grid, const std::string& path) {
+  grid.validate();
+  const auto ug = to_vtk_grid(grid);
+  AtomicFile file(path);
+  vtkNew<vtkXMLUnstructuredGridWriter> writer;
+  writer->SetInputData(ug);
+  writer->SetFileName(file.temp_path().c_str());
+  writer->SetDataModeToAppended();
+  writer->EncodeAppendedDataOff();  // raw bytes, not base64: a third smaller
+  writer->SetCompressorTypeToZLib();
+  writer->SetHeaderTypeToUInt64();  // block sizes beyond 4 GiB
+  if (writer->Write() != 1 || writer->GetErrorCode() != 0) {
+    throw std::runtime_error("cannot write '" + path + "': VTK writer failed (error code " +
+                             std::to_string(writer->GetErrorCode()) +
+                             "); check free disk space and permissions");
+  }
+  file.commit();
+}
+
+}  // namespace rockfdem::coupling

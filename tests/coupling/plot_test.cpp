@@ -1,0 +1,189 @@
+// PNG plots: with a display they render a picture of the asked size that is
+// not blank; without one they say why and write nothing. CTest runs this
+// binary under `xvfb-run -a` when that exists (tests/coupling/CMakeLists.txt).
+#include "rockfdem/coupling/plot.hpp"
+
+#include <gtest/gtest.h>
+#include <vtkImageData.h>
+#include <vtkNew.h>
+#include <vtkPNGReader.h>
+#include <vtkPointData.h>
+#include <vtkUnsignedCharArray.h>
+
+#include <cmath>
+#include <cstdlib>
+
+#include "temp_dir.hpp"
+
+namespace rockfdem::coupling {
+namespace {
+
+using testing::TempDir;
+
+struct Picture {
+  int width = 0, height = 0;
+  double variance = 0;      ///< of the grey level over all pixels
+  int n_black = 0;          ///< pixels with every channel below 40 (cracks, text)
+};
+
+Picture read_png(const std::string& path) {
+  vtkNew<vtkPNGReader> reader;
+  reader->SetFileName(path.c_str());
+  reader->Update();
+  vtkImageData* image = reader->GetOutput();
+  int dims[3];
+  image->GetDimensions(dims);
+  Picture p{dims[0], dims[1]};
+  auto* pixels = vtkUnsignedCharArray::SafeDownCast(image->GetPointData()->GetScalars());
+  if (!pixels) return p;
+  const int nc = pixels->GetNumberOfComponents();
+  const vtkIdType n = pixels->GetNumberOfTuples();
+  double sum = 0, sum2 = 0;
+  for (vtkIdType i = 0; i < n; ++i) {
+    double grey = 0;
+    bool black = true;
+    for (int c = 0; c < std::min(nc, 3); ++c) {
+      const int v = pixels->GetValue(i * nc + c);
+      grey += v / 3.0;
+      black = black && v < 40;
+    }
+    sum += grey;
+    sum2 += grey * grey;
+    p.n_black += black;
+  }
+  p.variance = sum2 / n - (sum / n) * (sum / n);
+  return p;
+}
+
+// A 1 m x 1 m square split into 2 n^2 triangles, coloured by x + 2y, with a
+// diagonal crack of n line cells.
+VtkGrid cracked_square(int n) {
+  VtkGrid g;
+  for (int j = 0; j <= n; ++j) {
+    for (int i = 0; i <= n; ++i) {
+      g.x.push_back(double(i) / n);
+      g.y.push_back(double(j) / n);
+    }
+  }
+  const auto id = [n](int i, int j) { return j * (n + 1) + i; };
+  std::vector<double> field;
+  for (int j = 0; j < n; ++j) {
+    for (int i = 0; i < n; ++i) {
+      g.triangles.push_back({id(i, j), id(i + 1, j), id(i + 1, j + 1)});
+      g.triangles.push_back({id(i, j), id(i + 1, j + 1), id(i, j + 1)});
+      field.push_back((i + 0.7) / n + 2.0 * (j + 0.3) / n);
+      field.push_back((i + 0.3) / n + 2.0 * (j + 0.7) / n);
+    }
+  }
+  for (int k = 0; k < n; ++k) g.lines.push_back({id(k, k), id(k + 1, k + 1)});
+  std::vector<double> stress;
+  for (double f : field) stress.insert(stress.end(), {-1e6 * f, -2e6, 1e5 * f});
+  g.cell_arrays.push_back(triangle_cell_array(g, scalar_array("field", field)));
+  g.cell_arrays.push_back(triangle_cell_array(g, tensor_array("stress", 3, stress)));
+  return g;
+}
+
+// Restores DISPLAY on scope exit.
+class DisplayUnset {
+ public:
+  DisplayUnset() {
+    if (const char* d = std::getenv("DISPLAY")) saved_ = d, had_ = true;
+    ::unsetenv("DISPLAY");
+  }
+  ~DisplayUnset() {
+    if (had_) ::setenv("DISPLAY", saved_.c_str(), 1);
+  }
+
+ private:
+  std::string saved_;
+  bool had_ = false;
+};
+
+TEST(Plot, without_display_rendering_is_refused_with_a_reason_and_nothing_written) {
+  const DisplayUnset no_display;
+  std::string why;
+  EXPECT_FALSE(rendering_available(&why));
+  EXPECT_NE(why.find("DISPLAY"), std::string::npos) << why;
+  const TempDir dir;
+  why.clear();
+  EXPECT_FALSE(plot_xy_png("t", "x", "y", {{"s", {0, 1}, {0, 1}}}, dir.file("p.png"), 320, 240, &why));
+  EXPECT_FALSE(why.empty());
+  why.clear();
+  EXPECT_FALSE(render_mesh_png(cracked_square(4), "field", 0, dir.file("m.png"), "t", 320, 240, &why));
+  EXPECT_FALSE(why.empty());
+  EXPECT_TRUE(dir.entries().empty());
+}
+
+TEST(Plot, bad_arguments_throw_before_any_rendering) {
+  const TempDir dir;
+  EXPECT_THROW(plot_xy_png("t", "x", "y", {}, dir.file("p.png")), std::invalid_argument);
+  try {
+    plot_xy_png("t", "x", "y", {{"convergence", {0, 1, 2}, {0, 1}}}, dir.file("p.png"));
+    FAIL() << "expected std::invalid_argument";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("'convergence'"), std::string::npos) << e.what();
+  }
+  EXPECT_THROW(render_mesh_png(cracked_square(2), "nope", 0, dir.file("m.png"), "t"),
+               std::invalid_argument);
+  EXPECT_THROW(render_mesh_png(cracked_square(2), "stress", 3, dir.file("m.png"), "t"),
+               std::invalid_argument);
+  EXPECT_TRUE(dir.entries().empty());
+}
+
+TEST(Plot, xy_plot_png_has_the_asked_size_and_is_not_blank) {
+  std::string why;
+  if (!rendering_available(&why)) GTEST_SKIP() << why;
+  const TempDir dir;
+  std::vector<PlotSeries> series(2);
+  series[0].name = "vault settlement";
+  series[1].name = "shoulder convergence";
+  for (int i = 0; i <= 50; ++i) {
+    const double t = 0.02 * i;
+    series[0].x.push_back(t), series[0].y.push_back(226.6 * (1 - std::exp(-4 * t)));
+    series[1].x.push_back(t), series[1].y.push_back(207.2 * (1 - std::exp(-3 * t)));
+  }
+  ASSERT_TRUE(plot_xy_png("Convergence", "time [s]", "displacement [mm]", series,
+                          dir.file("convergence.png"), 640, 420, &why))
+      << why;
+  const Picture p = read_png(dir.file("convergence.png"));
+  EXPECT_EQ(p.width, 640);
+  EXPECT_EQ(p.height, 420);
+  EXPECT_GT(p.variance, 10.0);
+  EXPECT_EQ(dir.entries(), (std::set<std::string>{"convergence.png"}));
+}
+
+TEST(Plot, mesh_png_has_the_asked_size_colours_and_black_cracks) {
+  std::string why;
+  if (!rendering_available(&why)) GTEST_SKIP() << why;
+  const TempDir dir;
+  ASSERT_TRUE(render_mesh_png(cracked_square(24), "stress", 0, dir.file("mesh.png"),
+                              "Final mesh: stress xx", 800, 600, &why))
+      << why;
+  const Picture p = read_png(dir.file("mesh.png"));
+  EXPECT_EQ(p.width, 800);
+  EXPECT_EQ(p.height, 600);
+  EXPECT_GT(p.variance, 100.0);
+  // The diagonal crack alone is about 2 px x 500 px of black.
+  EXPECT_GT(p.n_black, 500);
+  EXPECT_EQ(dir.entries(), (std::set<std::string>{"mesh.png"}));
+}
+
+TEST(Plot, mesh_png_of_an_uncracked_int_field_renders) {
+  std::string why;
+  if (!rendering_available(&why)) GTEST_SKIP() << why;
+  const TempDir dir;
+  VtkGrid g = cracked_square(6);
+  g.lines.clear();
+  g.cell_arrays.clear();
+  std::vector<std::int32_t> zone(g.n_triangles());
+  for (std::size_t t = 0; t < zone.size(); ++t) zone[t] = 1 + static_cast<int>(t % 3);
+  g.cell_arrays.push_back(scalar_array("zone", zone));
+  ASSERT_TRUE(render_mesh_png(g, "zone", 0, dir.file("zones.png"), "Zones", 400, 300, &why))
+      << why;
+  const Picture p = read_png(dir.file("zones.png"));
+  EXPECT_EQ(p.width, 400);
+  EXPECT_GT(p.variance, 10.0);
+}
+
+}  // namespace
+}  // namespace rockfdem::coupling
