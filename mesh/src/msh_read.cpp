@@ -1,0 +1,245 @@
+// read_msh: a user's .msh through gmsh's reader (every version and binary
+// form gmsh knows), then checked hard, since a bad mesh would otherwise fail
+// much later and far from its cause. Each check names the file and the node,
+// element or physical group at fault, and says what is allowed.
+#include <gmsh.h>
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <numeric>
+#include <set>
+#include <string>
+
+#include "gmsh_model.hpp"
+#include "gmsh_session.hpp"
+#include "msh_names.hpp"
+#include "rockfdem/error.hpp"
+#include "rockfdem/mesh/msh_io.hpp"
+
+namespace rockfdem::mesh {
+namespace {
+
+using detail::TagIndex;
+
+struct Reader {
+  const MshFileSpec& spec;
+
+  [[noreturn]] void fail(const std::string& what) const {
+    throw InputError(spec.path + ": " + what);
+  }
+
+  void open() const {
+    if (!std::ifstream(spec.path).good())
+      fail("cannot open the file; give the path of a readable gmsh .msh file");
+    detail::gmsh_guarded(spec.path + ": not a readable gmsh mesh", detail::GmshFailure::kInput,
+                         [&] { gmsh::open(spec.path); });
+    std::string last;
+    gmsh::logger::getLastError(last);
+    if (!last.empty()) fail("not a readable gmsh mesh: " + last);
+  }
+
+  // Only 3-node triangles, 2-node lines and points (ignored) are accepted.
+  void check_element_types() const {
+    std::vector<int> types;
+    std::vector<std::vector<std::size_t>> tags, nodes;
+    gmsh::model::mesh::getElements(types, tags, nodes);
+    for (std::size_t k = 0; k < types.size(); ++k) {
+      if (types[k] == 1 || types[k] == 2 || types[k] == 15) continue;
+      std::string name;
+      int dim, order, n_nodes, n_primary;
+      std::vector<double> local;
+      gmsh::model::mesh::getElementProperties(types[k], name, dim, order, n_nodes, local,
+                                              n_primary);
+      fail("element " + std::to_string(tags[k].front()) + " is a " + name + " (gmsh type " +
+           std::to_string(types[k]) + "); allowed: 3-node triangles (type 2), 2-node lines "
+           "(type 1) and points (type 15)");
+    }
+    if (std::find(types.begin(), types.end(), 2) == types.end())
+      fail("no 3-node triangles; the mesh must be 2D and made of 3-node triangles");
+  }
+
+  // Nodes sorted by tag, all finite, no tag twice, no two at one position.
+  std::vector<std::size_t> read_nodes(Mesh& m) const {
+    std::vector<std::size_t> tags = detail::read_gmsh_nodes(m);
+    std::vector<std::size_t> order(tags.size());
+    std::iota(order.begin(), order.end(), 0);
+    std::sort(order.begin(), order.end(), [&](auto a, auto b) { return tags[a] < tags[b]; });
+    Mesh sorted;
+    std::vector<std::size_t> sorted_tags;
+    for (std::size_t i : order) {
+      if (!std::isfinite(m.x[i]) || !std::isfinite(m.y[i]))
+        fail("node " + std::to_string(tags[i]) + " has a coordinate that is not a finite "
+             "number; every coordinate must be finite");
+      sorted.x.push_back(m.x[i]), sorted.y.push_back(m.y[i]), sorted_tags.push_back(tags[i]);
+    }
+    m.x.swap(sorted.x), m.y.swap(sorted.y);
+    check_coincident(m, sorted_tags);
+    return sorted_tags;
+  }
+
+  void check_coincident(const Mesh& m, const std::vector<std::size_t>& tags) const {
+    for (std::size_t i = 1; i < tags.size(); ++i)
+      if (tags[i] == tags[i - 1])
+        fail("node tag " + std::to_string(tags[i]) + " is defined twice; node tags must be unique");
+    std::vector<std::size_t> order(tags.size());
+    std::iota(order.begin(), order.end(), 0);
+    const auto key = [&](std::size_t i) { return std::make_pair(m.x[i], m.y[i]); };
+    std::sort(order.begin(), order.end(), [&](auto a, auto b) { return key(a) < key(b); });
+    for (std::size_t k = 1; k < order.size(); ++k)
+      if (key(order[k]) == key(order[k - 1]))
+        fail("nodes " + std::to_string(tags[order[k - 1]]) + " and " +
+             std::to_string(tags[order[k]]) + " lie at the same position; each position may "
+             "hold one node only (merge duplicate nodes)");
+  }
+
+  // name -> physical tag of the groups of dimension `dim` in the file.
+  std::map<std::string, int> groups(int dim) const {
+    gmsh::vectorpair dim_tags;
+    gmsh::model::getPhysicalGroups(dim_tags, dim);
+    std::map<std::string, int> out;
+    for (const auto& [d, tag] : dim_tags) {
+      std::string name;
+      gmsh::model::getPhysicalName(d, tag, name);
+      out[name.empty() ? std::to_string(tag) : name] = tag;
+    }
+    return out;
+  }
+
+  static std::string list(const std::map<std::string, int>& g) {
+    std::string s;
+    for (const auto& [name, tag] : g) s += (s.empty() ? "" : ", ") + ("'" + name + "'");
+    return s.empty() ? "(none)" : s;
+  }
+
+  std::vector<int> entities(int dim, const std::string& name,
+                            const std::map<std::string, int>& present, const char* role) const {
+    const auto it = present.find(name);
+    if (it == present.end())
+      fail(std::string(role) + " physical group '" + name + "' (" + std::to_string(dim) +
+           "D) is not in the file; its " + std::to_string(dim) + "D groups are: " +
+           list(present));
+    std::vector<int> tags;
+    gmsh::model::getEntitiesForPhysicalGroup(dim, it->second, tags);
+    return tags;
+  }
+};
+
+// Zone groups to read: the caller's, or write_msh's names that are present.
+std::map<std::string, int> zone_groups_to_read(const MshFileSpec& spec,
+                                               const std::map<std::string, int>& present) {
+  if (!spec.zone_groups.empty() || !spec.edge_groups.empty()) return spec.zone_groups;
+  std::map<std::string, int> out;
+  for (const auto& [name, zone] : detail::default_zone_groups())
+    if (present.count(name)) out[name] = zone;
+  return out;
+}
+
+std::map<std::string, int> edge_groups_to_read(const MshFileSpec& spec,
+                                               const std::map<std::string, int>& present) {
+  if (!spec.zone_groups.empty() || !spec.edge_groups.empty()) return spec.edge_groups;
+  std::map<std::string, int> out;
+  for (const auto& [name, tag] : present)
+    if (edge_tag_name(tag) == name) out[name] = tag;
+  return out;
+}
+
+// Returns the element tags in their new (ascending) order.
+std::vector<std::size_t> sort_triangles_by_tag(const std::vector<std::size_t>& tags, Mesh& m) {
+  std::vector<std::size_t> order(tags.size());
+  std::iota(order.begin(), order.end(), 0);
+  std::sort(order.begin(), order.end(), [&](auto a, auto b) { return tags[a] < tags[b]; });
+  Mesh s;
+  for (std::size_t i : order) {
+    s.triangles.push_back(m.triangles[i]);
+    s.zone.push_back(m.zone[i]);
+    s.fracture.push_back(m.fracture[i]);
+  }
+  m.triangles.swap(s.triangles), m.zone.swap(s.zone), m.fracture.swap(s.fracture);
+  std::vector<std::size_t> sorted(tags.size());
+  for (std::size_t k = 0; k < order.size(); ++k) sorted[k] = tags[order[k]];
+  return sorted;
+}
+
+// Returns the triangles' element tags, in the record's order.
+std::vector<std::size_t> read_triangles(const Reader& r, const TagIndex& index, Mesh& m) {
+  const auto present = r.groups(2);
+  const auto zones = zone_groups_to_read(r.spec, present);
+  if (zones.empty())
+    r.fail("no zone groups to read: name the 2D physical groups to use (zone_groups); the "
+           "file's 2D groups are: " + Reader::list(present));
+  std::set<int> fractured;
+  std::string fracture_group = r.spec.fracture_group;
+  if (fracture_group.empty() && present.count(detail::kFractureGroup))
+    fracture_group = detail::kFractureGroup;
+  if (!fracture_group.empty())
+    for (int s : r.entities(2, fracture_group, present, "fracture")) fractured.insert(s);
+  std::map<int, std::string> zone_of_surface;
+  std::vector<std::size_t> element_tags;
+  for (const auto& [name, zone] : zones) {
+    for (int s : r.entities(2, name, present, "zone")) {
+      if (!zone_of_surface.emplace(s, name).second)
+        r.fail("surface " + std::to_string(s) + " is in zone groups '" + zone_of_surface[s] +
+               "' and '" + name + "'; each surface may be in one zone group only");
+      const bool flag = fracture_group.empty() ? zone == kRock : fractured.count(s) > 0;
+      const auto tags = detail::append_triangles(s, zone, flag ? 1 : 0, index, m);
+      element_tags.insert(element_tags.end(), tags.begin(), tags.end());
+    }
+  }
+  gmsh::vectorpair surfaces;
+  gmsh::model::getEntities(surfaces, 2);
+  for (const auto& [d, s] : surfaces) {
+    std::vector<std::size_t> tags, nodes;
+    gmsh::model::mesh::getElementsByType(2, tags, nodes, s);
+    if (!tags.empty() && !zone_of_surface.count(s))
+      r.fail("triangle " + std::to_string(tags.front()) + " (surface " + std::to_string(s) +
+             ") is in none of the zone groups read (" + Reader::list(zones) +
+             "); every triangle must belong to one");
+  }
+  return sort_triangles_by_tag(element_tags, m);
+}
+
+void read_edges(const Reader& r, const TagIndex& index, Mesh& m) {
+  const auto present = r.groups(1);
+  for (const auto& [name, tag] : edge_groups_to_read(r.spec, present))
+    for (int c : r.entities(1, name, present, "edge")) detail::append_edges(c, tag, index, m);
+}
+
+// Zero-area triangles cannot carry stress; clockwise ones are only
+// numbered the other way round and are turned.
+void check_areas(const Reader& r, const std::vector<std::size_t>& element_tags,
+                 const std::vector<std::size_t>& tags, Mesh& m) {
+  for (std::size_t t = 0; t < m.n_triangles(); ++t) {
+    const auto& v = m.triangles[t];
+    double longest = 0;
+    for (int k = 0; k < 3; ++k)
+      longest = std::max(longest, std::hypot(m.x[v[k]] - m.x[v[(k + 1) % 3]],
+                                             m.y[v[k]] - m.y[v[(k + 1) % 3]]));
+    if (std::abs(signed_area(m, t)) <= 1e-12 * longest * longest)
+      r.fail("triangle " + std::to_string(element_tags[t]) + " (nodes " + std::to_string(tags[v[0]]) +
+             ", " + std::to_string(tags[v[1]]) + ", " + std::to_string(tags[v[2]]) +
+             ") has zero area; every triangle must have positive area");
+  }
+  detail::orient_counter_clockwise(m);
+}
+
+}  // namespace
+
+Mesh read_msh(const MshFileSpec& spec) {
+  const Reader r{spec};
+  detail::GmshSession session(1);
+  Mesh m;
+  detail::gmsh_guarded(spec.path, detail::GmshFailure::kInput, [&] {
+    r.open();
+    r.check_element_types();
+    const std::vector<std::size_t> node_tags = r.read_nodes(m);
+    const TagIndex index(node_tags);
+    const std::vector<std::size_t> triangle_tags = read_triangles(r, index, m);
+    read_edges(r, index, m);
+    check_areas(r, triangle_tags, node_tags, m);
+  });
+  detail::compact_vertices(m);
+  return m;
+}
+
+}  // namespace rockfdem::mesh
