@@ -282,6 +282,14 @@ Scene build_scene(const RawScene& raw, const std::string& base_dir) {
   read_mesh_sizes(r, s.mesh);
   read_materials(r, s);
   read_insitu(r, s);
+  s.engine.steps = long(r.number("engine.steps"));
+  s.engine.dt = r.number("engine.dt");
+  s.engine.dt_safety = r.number("engine.dt_safety");
+  s.engine.damping_ratio = r.number("engine.damping_ratio");
+  s.engine.local_damping = r.number("engine.local_damping");
+  s.engine.mass_damping = r.number("engine.mass_damping");
+  s.engine.gravity = r.number("engine.gravity");
+  s.engine.platen_velocity = r.number("loading.platen_velocity");
   s.output.every_steps = r.integer("output.every_steps");
   s.output.vtk = r.boolean("output.vtk");
   s.output.plots = r.boolean("output.plots");

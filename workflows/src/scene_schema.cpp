@@ -198,6 +198,26 @@ std::vector<KeySpec> build_schema() {
                      "auto: direct for small systems, else AMG-preconditioned CG."));
   s.push_back(number("insitu.tolerance", "-", "1e-10", 0, true, 1e-3, false,
                      "Relative residual of the iterative solver."));
+  // [engine]
+  s.push_back(integer("engine.steps", "10000", 1, 1e12,
+                      "Explicit steps of a specimen run (tunnels: the cap of each stage)."));
+  s.push_back(non_negative("engine.dt", "s", "0",
+                           "Time step; 0: dt_safety times the computed stability limit. A value "
+                           "above the limit is refused."));
+  s.push_back(number("engine.dt_safety", "-", "0.8", 0, true, 1, false,
+                     "Fraction of the computed critical time step used when engine.dt = 0."));
+  s.push_back(number("engine.damping_ratio", "-", "0.1", 0, false, 2, false,
+                     "Viscous damping of the triangles as a fraction of critical for one "
+                     "element (eta = ratio 2 h sqrt(E rho))."));
+  s.push_back(number("engine.local_damping", "-", "0", 0, false, 1, true,
+                     "Cundall local damping coefficient for quasi-static stages."));
+  s.push_back(non_negative("engine.mass_damping", "1/s", "0",
+                           "Mass-proportional damping coefficient c (force -c m v)."));
+  s.push_back(non_negative("engine.gravity", "m/s^2", "0",
+                           "Gravitational acceleration acting in -y; 0: none."));
+  // [loading]
+  s.push_back(positive("loading.platen_velocity", "m/s", "0.5",
+                       "UCS and Brazilian tests: speed of each platen towards the other."));
   // [output]
   s.push_back(integer("output.every_steps", "1000", 1, 1e9,
                       "Explicit steps between outputs (VTK frames, history rows)."));

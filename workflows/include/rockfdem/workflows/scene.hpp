@@ -37,6 +37,17 @@ struct InsituSettings {
   double tolerance = 1e-10;
 };
 
+struct EngineSettings {
+  long steps = 10000;
+  double dt = 0;            ///< s; 0: automatic
+  double dt_safety = 0.8;
+  double damping_ratio = 0.1;
+  double local_damping = 0;
+  double mass_damping = 0;  ///< 1/s
+  double gravity = 0;       ///< m/s^2, acting in -y
+  double platen_velocity = 0.5;  ///< m/s, each platen (specimens)
+};
+
 struct OutputSettings {
   int every_steps = 1000;
   bool vtk = true;
@@ -50,6 +61,7 @@ struct Scene {
   mesh::MeshSpec mesh;
   std::map<std::string, MaterialSpec> materials;  ///< "rock", "core", "lining" as present
   InsituSettings insitu;
+  EngineSettings engine;
   OutputSettings output;
   std::string canonical;  ///< the validated scene as TOML (overrides applied), for hashing and records
 };
