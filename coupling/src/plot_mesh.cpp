@@ -162,11 +162,15 @@ vtkSmartPointer<vtkRenderer> colour_bar(vtkLookupTable* lut, const std::string& 
   bar->SetPosition(0.05, 0.05);
   bar->SetWidth(0.9);
   bar->SetHeight(0.9);
+  bar->UnconstrainedFontSizeOn();  // fixed point sizes, not scaled up to the bar's width
   for (vtkTextProperty* p : {bar->GetTitleTextProperty(), bar->GetLabelTextProperty()}) {
     p->SetColor(0.0, 0.0, 0.0);
     p->ShadowOff();
     p->ItalicOff();
+    p->BoldOff();
+    p->SetFontSize(14);
   }
+  bar->GetTitleTextProperty()->SetFontSize(16);
   auto renderer = vtkSmartPointer<vtkRenderer>::New();
   renderer->SetViewport(kMeshRight, 0.0, 1.0, kMeshTop);
   renderer->SetBackground(1.0, 1.0, 1.0);

@@ -12,7 +12,10 @@
 #include <vtkTable.h>
 #include <vtkTextProperty.h>
 
+#include <algorithm>
 #include <array>
+#include <cmath>
+#include <limits>
 #include <stdexcept>
 
 #include "plot_png.hpp"
@@ -64,6 +67,20 @@ void add_series(vtkChartXY* chart, const PlotSeries& s, std::size_t index) {
   line->SetWidth(2.0);
 }
 
+// Extends the y axis by a quarter above the data, so the legend (drawn in the
+// top right corner, on an opaque box) does not hide the curves' ends.
+void leave_room_for_legend(vtkAxis* axis, const std::vector<PlotSeries>& series) {
+  double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+  for (const PlotSeries& s : series) {
+    for (double y : s.y) {
+      if (std::isfinite(y)) lo = std::min(lo, y), hi = std::max(hi, y);
+    }
+  }
+  if (!(hi > lo)) return;  // no data or flat: VTK's automatic range is fine
+  axis->SetBehavior(vtkAxis::FIXED);
+  axis->SetRange(lo, hi + 0.25 * (hi - lo));
+}
+
 void label_axis(vtkAxis* axis, const std::string& title) {
   axis->SetTitle(title);
   axis->GetTitleProperties()->SetFontSize(16);
@@ -91,6 +108,7 @@ bool plot_xy_png(const std::string& title, const std::string& x_label, const std
   label_axis(chart->GetAxis(vtkAxis::BOTTOM), x_label);
   label_axis(chart->GetAxis(vtkAxis::LEFT), y_label);
   for (std::size_t i = 0; i < series.size(); ++i) add_series(chart, series[i], i);
+  leave_room_for_legend(chart->GetAxis(vtkAxis::LEFT), series);
   chart->SetShowLegend(true);
   chart->GetLegend()->GetLabelProperties()->SetFontSize(14);
 

@@ -179,6 +179,21 @@ TEST(VtkWriter, write_into_missing_directory_throws_naming_path_and_leaves_nothi
   EXPECT_TRUE(dir.entries().empty());
 }
 
+TEST(VtkWriter, write_failing_at_the_rename_throws_and_removes_its_temp_file) {
+  const TempDir dir;
+  // A directory where the file should go: the temporary file is created and
+  // written, then the rename onto the target fails (EISDIR).
+  const std::string path = dir.file("grid.vtu");
+  std::filesystem::create_directory(path);
+  try {
+    write_vtu(sample_grid(), path);
+    FAIL() << "expected std::runtime_error";
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find(path), std::string::npos) << e.what();
+  }
+  EXPECT_EQ(dir.entries(), (std::set<std::string>{"grid.vtu"}));
+}
+
 ino_t inode_of(const std::string& path) {
   struct stat st {};
   EXPECT_EQ(::stat(path.c_str(), &st), 0) << path;
