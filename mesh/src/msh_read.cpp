@@ -13,6 +13,7 @@
 
 #include "gmsh_model.hpp"
 #include "gmsh_session.hpp"
+#include "msh_header.hpp"
 #include "msh_names.hpp"
 #include "rockfdem/error.hpp"
 #include "rockfdem/mesh/msh_io.hpp"
@@ -79,9 +80,10 @@ struct Reader {
   }
 
   void check_coincident(const Mesh& m, const std::vector<std::size_t>& tags) const {
-    for (std::size_t i = 1; i < tags.size(); ++i)
-      if (tags[i] == tags[i - 1])
-        fail("node tag " + std::to_string(tags[i]) + " is defined twice; node tags must be unique");
+    const auto declared = detail::declared_node_count(spec.path);
+    if (declared && *declared != tags.size())
+      fail("the $Nodes section declares " + std::to_string(*declared) + " nodes but holds " +
+           std::to_string(tags.size()) + " distinct node tags; each node tag must be unique");
     std::vector<std::size_t> order(tags.size());
     std::iota(order.begin(), order.end(), 0);
     const auto key = [&](std::size_t i) { return std::make_pair(m.x[i], m.y[i]); };

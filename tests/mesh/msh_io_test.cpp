@@ -1,0 +1,170 @@
+// .msh files: a meshed tunnel written and read back unchanged, a hand-written
+// file read with named groups, and malformed files each refused with an
+// InputError that names the file.
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <iostream>
+#include <set>
+#include <tuple>
+#include <string>
+
+#include "rockfdem/error.hpp"
+#include "rockfdem/mesh/build.hpp"
+#include "rockfdem/mesh/msh_io.hpp"
+
+namespace rockfdem::mesh {
+namespace {
+
+std::string temp_path(const std::string& name) { return ::testing::TempDir() + name; }
+
+void write_text(const std::string& path, const std::string& text) {
+  std::ofstream(path) << text;
+}
+
+TEST(MshRoundTrip, written_tunnel_reads_back_identical) {
+  MeshSpec s;
+  s.tunnel.shape = TunnelShape::kHorseshoe;
+  s.tunnel.span = 6, s.tunnel.height = 5, s.tunnel.lining_thickness = 0.3;
+  s.tunnel.fracture_zone = 1;
+  s.domain = {30, 30, 0, 0};
+  s.size.size_near = 0.4, s.size.size_far = 3;
+  Mesh m = build_mesh(s);
+  m.edges.push_back({m.triangles[0][0], m.triangles[0][1], 101});  // a user tag
+  const std::string path = temp_path("rockfdem_roundtrip.msh");
+  write_msh(m, path);
+  const Mesh r = read_msh({path, {}, {}, ""});
+  // gmsh writes coordinates with 16 significant digits: equal to rounding.
+  ASSERT_EQ(r.n_vertices(), m.n_vertices());
+  for (std::size_t v = 0; v < m.n_vertices(); ++v) {
+    ASSERT_NEAR(r.x[v], m.x[v], 1e-15 * 15) << "vertex " << v;
+    ASSERT_NEAR(r.y[v], m.y[v], 1e-15 * 15) << "vertex " << v;
+  }
+  EXPECT_EQ(r.triangles, m.triangles);
+  EXPECT_EQ(r.zone, m.zone);
+  EXPECT_EQ(r.fracture, m.fracture);
+  ASSERT_EQ(r.edges.size(), m.edges.size());
+  std::multiset<std::tuple<int, int, int>> a, b;
+  for (const TaggedEdge& e : m.edges) a.insert({e.a, e.b, e.tag});
+  for (const TaggedEdge& e : r.edges) b.insert({e.a, e.b, e.tag});
+  EXPECT_EQ(a, b);
+}
+
+TEST(MshRoundTrip, named_groups_choose_zones_and_edges) {
+  MeshSpec s;
+  s.kind = ModelKind::kUcs;
+  s.size.size_near = 0.01;
+  const Mesh m = build_mesh(s);
+  const std::string path = temp_path("rockfdem_named.msh");
+  write_msh(m, path);
+  const Mesh r = read_msh({path, {{"rock", kCore}}, {{"top", 42}}, ""});
+  EXPECT_EQ(r.n_triangles(), m.n_triangles());
+  for (int z : r.zone) EXPECT_EQ(z, kCore);
+  EXPECT_FALSE(r.edges.empty());
+  for (const TaggedEdge& e : r.edges) EXPECT_EQ(e.tag, 42);
+}
+
+// A unit square of two triangles, in the MSH 2.2 format a user might write;
+// `nodes` and `elements` are the sections' bodies.
+std::string square_msh(const std::string& nodes, const std::string& elements) {
+  return "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n"
+         "$PhysicalNames\n2\n1 1 \"base\"\n2 7 \"granite\"\n$EndPhysicalNames\n"
+         "$Nodes\n" + nodes + "$EndNodes\n$Elements\n" + elements + "$EndElements\n";
+}
+const std::string kNodes = "4\n1 0 0 0\n2 1 0 0\n3 1 1 0\n4 0 1 0\n";
+const std::string kElements = "3\n1 1 2 1 1 1 2\n2 2 2 7 1 1 2 3\n3 2 2 7 1 1 3 4\n";
+const MshFileSpec kGroups{"", {{"granite", kRock}}, {{"base", kBottom}}, ""};
+
+Mesh read_text(const std::string& name, const std::string& text) {
+  MshFileSpec spec = kGroups;
+  spec.path = temp_path(name);
+  write_text(spec.path, text);
+  return read_msh(spec);
+}
+
+TEST(MshUserFile, well_formed_square_reads) {
+  const Mesh m = read_text("rockfdem_square.msh", square_msh(kNodes, kElements));
+  EXPECT_EQ(m.n_triangles(), 2u);
+  EXPECT_EQ(m.n_vertices(), 4u);
+  ASSERT_EQ(m.edges.size(), 1u);
+  EXPECT_EQ(m.edges[0].tag, kBottom);
+  EXPECT_EQ(m.fracture, (std::vector<std::uint8_t>{1, 1}));  // no fracture group: all rock
+}
+
+TEST(MshUserFile, clockwise_triangle_is_turned) {
+  const Mesh m = read_text("rockfdem_cw.msh",
+                           square_msh(kNodes, "3\n1 1 2 1 1 1 2\n2 2 2 7 1 1 3 2\n3 2 2 7 1 1 3 4\n"));
+  for (std::size_t t = 0; t < m.n_triangles(); ++t) EXPECT_NEAR(signed_area(m, t), 0.5, 1e-15);
+}
+
+// The error must be an InputError naming the file and containing `detail`.
+void expect_refused(const std::string& name, const std::string& text, const std::string& detail,
+                    MshFileSpec spec = kGroups) {
+  spec.path = temp_path(name);
+  write_text(spec.path, text);
+  try {
+    read_msh(spec);
+    ADD_FAILURE() << name << " was accepted";
+  } catch (const InputError& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find(spec.path), std::string::npos) << what;
+    EXPECT_NE(what.find(detail), std::string::npos) << what;
+    std::cout << "  refused: " << what << "\n";
+  }
+}
+
+TEST(MshUserFile, truncated_file_is_refused) {
+  const std::string full = square_msh(kNodes, kElements);
+  expect_refused("rockfdem_truncated.msh", full.substr(0, full.find("2 1 0 0") + 3), "");
+}
+
+TEST(MshUserFile, nan_coordinate_is_refused) {
+  expect_refused("rockfdem_nan.msh",
+                 square_msh("4\n1 0 0 0\n2 1 0 0\n3 nan 1 0\n4 0 1 0\n", kElements), "node 3");
+}
+
+TEST(MshUserFile, duplicate_node_is_refused) {
+  expect_refused("rockfdem_dup.msh",
+                 square_msh("5\n1 0 0 0\n2 1 0 0\n3 1 1 0\n4 0 1 0\n5 1 1 0\n",
+                            "3\n1 1 2 1 1 1 2\n2 2 2 7 1 1 2 5\n3 2 2 7 1 1 3 4\n"),
+                 "same position");
+}
+
+TEST(MshUserFile, node_tag_given_twice_is_refused) {
+  expect_refused("rockfdem_duptag.msh",
+                 square_msh("5\n1 0 0 0\n2 1 0 0\n3 1 1 0\n4 0 1 0\n3 0.5 0.5 0\n", kElements),
+                 "node");
+}
+
+TEST(MshUserFile, degenerate_triangle_is_refused) {
+  expect_refused("rockfdem_flat.msh",
+                 square_msh("5\n1 0 0 0\n2 1 0 0\n3 1 1 0\n4 0 1 0\n5 0.5 0 0\n",
+                            "4\n1 1 2 1 1 1 2\n2 2 2 7 1 1 2 3\n3 2 2 7 1 1 3 4\n4 2 2 7 1 1 5 2\n"),
+                 "zero area");
+}
+
+TEST(MshUserFile, quadrangle_is_refused) {
+  expect_refused("rockfdem_quad.msh", square_msh(kNodes, "1\n1 3 2 7 1 1 2 3 4\n"),
+                 "gmsh type 3");
+}
+
+TEST(MshUserFile, missing_physical_group_is_refused) {
+  MshFileSpec spec = kGroups;
+  spec.zone_groups = {{"basalt", kRock}};
+  expect_refused("rockfdem_nogroup.msh", square_msh(kNodes, kElements), "'basalt'", spec);
+}
+
+TEST(MshUserFile, triangle_outside_every_zone_group_is_refused) {
+  expect_refused("rockfdem_unzoned.msh",
+                 square_msh(kNodes, "3\n1 1 2 1 1 1 2\n2 2 2 7 1 1 2 3\n3 2 2 8 2 1 3 4\n"),
+                 "none of the zone groups");
+}
+
+TEST(MshUserFile, missing_file_is_refused) {
+  MshFileSpec spec = kGroups;
+  spec.path = temp_path("rockfdem_no_such_file.msh");
+  EXPECT_THROW(read_msh(spec), InputError);
+}
+
+}  // namespace
+}  // namespace rockfdem::mesh
