@@ -25,6 +25,7 @@
 #include <limits>
 #include <stdexcept>
 
+#include "plot_display.hpp"
 #include "plot_png.hpp"
 #include "rockfdem/coupling/plot.hpp"
 
@@ -214,7 +215,11 @@ bool render_mesh_png(const VtkGrid& grid, const std::string& cell_field, int com
   const VtkArray& field = field_to_draw(grid, cell_field, component);
   check_image_size(width, height);
   if (grid.n_points() == 0) throw std::invalid_argument("mesh plot: the grid has no points");
-  if (!rendering_available(why)) return false;
+  const DisplayConnection display;  // held until the PNG is written
+  if (!display.ok()) {
+    if (why) *why = display.reason();
+    return false;
+  }
 
   const std::vector<double> values = triangle_values(grid, field, component);
   const auto lut = blue_to_red(finite_range(values));

@@ -18,6 +18,7 @@
 #include <limits>
 #include <stdexcept>
 
+#include "plot_display.hpp"
 #include "plot_png.hpp"
 #include "rockfdem/coupling/plot.hpp"
 
@@ -94,7 +95,11 @@ bool plot_xy_png(const std::string& title, const std::string& x_label, const std
                  int height, std::string* why) {
   check_series(series);
   check_image_size(width, height);
-  if (!rendering_available(why)) return false;
+  const DisplayConnection display;  // held until the PNG is written
+  if (!display.ok()) {
+    if (why) *why = display.reason();
+    return false;
+  }
 
   vtkNew<vtkContextView> view;
   view->GetRenderer()->SetBackground(1.0, 1.0, 1.0);
