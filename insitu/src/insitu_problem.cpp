@@ -1,0 +1,859 @@
+// The in-situ stage as a deal.II program.
+//
+// This file reads like a deal.II tutorial (step-8 for elasticity, step-18 for
+// the staged loop): one class, InsituProblem, whose constructor takes the
+// mesh and the spec and whose run() solves one elastic state per softening
+// factor alpha. It is the only translation unit of rockfdem that includes
+// deal.II headers for the finite element work.
+//
+// ## The mathematics
+//
+// The ground is at rest under an initial stress sigma0(x) (tension positive):
+// uniform, or growing with depth under its own weight b = (0, -gamma). sigma0
+// is in equilibrium with b and with the far-field traction t = sigma0 . n on
+// the outer boundary of the box:
+//
+//     div sigma0 + b = 0 in the domain,     sigma0 . n = t on the box.     (1)
+//
+// We seek the displacement u measured FROM this state. In each zone the
+// stress is an initial stress plus an elastic response,
+//
+//     rock:                sigma = sigma0 + C_rock : eps(u)
+//     core (softened):     sigma = alpha (sigma0 + C_core : eps(u))        (2)
+//     lining (installed):  sigma = C_lining : (eps(u) - eps_install)
+//
+// and the weak form of equilibrium, for every test function v, is
+//
+//     sum_zones int D eps(u) : eps(v) = int_box t . v + int b_zone . v
+//                                       - sum_zones int s0_zone : eps(v),   (3)
+//
+// with D = C_rock, alpha C_core, C_lining, s0 = sigma0, alpha sigma0,
+// -C_lining eps_install, and b_zone = b, alpha b, 0 respectively. By (1) the
+// right-hand side vanishes identically when every zone carries sigma0 (alpha
+// = 1, no lining): nothing moves and the stress IS sigma0, element by element
+// (the patch test). For alpha < 1 the right-hand side is what the softened
+// core no longer carries, (1 - alpha) int_core (sigma0 : eps(v) - b . v),
+// i.e. (1 - alpha) times the in-situ traction on the excavation boundary:
+// the familiar internal-pressure release, arising here on its own. For
+// alpha = 0 the core is not in the system at all (its cells are left out of
+// the triangulation) and the excavation boundary is traction-free: the open
+// hole, which with exact Kirsch tractions on the box reproduces Kirsch.
+//
+// Scaling the core's WHOLE stress by alpha (not only its modulus) is what
+// reference section 5 asks: when the in-situ state was reached by deforming
+// from zero and the modulus is then scaled, the stress scales with it. Scaling
+// only C_core would release nothing.
+//
+// P1 triangles have constant strain, so one quadrature point (the centroid)
+// integrates (3) exactly: D and eps(v) are constant per cell, sigma0 and b.v
+// are at most linear. On the box edges the traction is integrated with a
+// 3-point Gauss rule (exact for the linear gravity traction times a linear v;
+// accurate for the smooth Kirsch traction).
+//
+// ## Rigid motion
+//
+// With tractions on the whole boundary the problem is pure Neumann: the
+// loads are self-equilibrated, and the stiffness is singular with the three
+// rigid motions as its kernel. We pin one vertex of the box (both components)
+// and, at the vertex farthest away along the box, the component normal to the
+// line joining them: the minimal constraints, which carry no force when the
+// loads are in equilibrium. The code measures those reactions after every
+// solve (InsituField::reaction_ratio) instead of trusting this. The reported
+// displacement then has the rigid motion that best fits the outer boundary
+// (least squares over its vertices, weighted by edge length) removed, so
+// that "the far field stays put"; strains and stresses do not change.
+//
+// ## Solvers
+//
+// Small systems go to UMFPACK. Larger ones to conjugate gradients with
+// Trilinos ML smoothed-aggregation AMG, given the three rigid-body modes as
+// its near-null space (two translations and the rotation): with only the two
+// translations ML coarsens elasticity poorly. If CG does not converge the
+// direct solver takes over and the record says so.
+#include <Epetra_MultiVector.h>
+#include <Teuchos_ParameterList.hpp>
+#include <deal.II/base/exceptions.h>
+#include <deal.II/base/quadrature_lib.h>
+#include <deal.II/base/symmetric_tensor.h>
+#include <deal.II/base/timer.h>
+#include <deal.II/dofs/dof_handler.h>
+#include <deal.II/dofs/dof_tools.h>
+#include <deal.II/fe/fe_simplex_p.h>
+#include <deal.II/fe/fe_system.h>
+#include <deal.II/fe/fe_values.h>
+#include <deal.II/fe/mapping_fe.h>
+#include <deal.II/grid/tria.h>
+#include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/dynamic_sparsity_pattern.h>
+#include <deal.II/lac/full_matrix.h>
+#include <deal.II/lac/solver_cg.h>
+#include <deal.II/lac/solver_control.h>
+#include <deal.II/lac/sparse_direct.h>
+#include <deal.II/lac/sparse_matrix.h>
+#include <deal.II/lac/sparsity_pattern.h>
+#include <deal.II/lac/trilinos_precondition.h>
+#include <deal.II/lac/trilinos_sparse_matrix.h>
+#include <deal.II/lac/vector.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <map>
+#include <numeric>
+#include <string>
+#include <unordered_set>
+#include <vector>
+
+#include "rockfdem/error.hpp"
+#include "rockfdem/insitu/insitu.hpp"
+
+namespace rockfdem::insitu {
+
+namespace {
+
+using namespace dealii;
+
+constexpr double kPi = 3.14159265358979323846;
+
+/// The boundary id of faces that carry the far-field (or Kirsch) traction:
+/// edges on the outer boundary of the FULL mesh. Faces that become boundary
+/// only because cells were removed (the excavation wall) keep id 0 and no
+/// traction.
+constexpr types::boundary_id kLoadedBoundary = 1;
+
+/// What a triangle is during one stage.
+enum class Role : std::uint8_t {
+  kRock,     ///< host rock: sigma0 + C_rock eps
+  kGround,   ///< core, or lining ring not yet installed: alpha (sigma0 + C_core eps)
+  kLining,   ///< installed lining: C_lining (eps - eps_install)
+  kRemoved,  ///< excavated (alpha = 0): not in the system
+};
+
+/// The plane-strain isotropic elasticity tensor
+/// C_ijkl = lambda delta_ij delta_kl + mu (delta_ik delta_jl + delta_il delta_jk).
+SymmetricTensor<4, 2> elasticity_tensor(const ElasticMaterial& m) {
+  const double lambda = m.E * m.nu / ((1 + m.nu) * (1 - 2 * m.nu));
+  const double mu = m.E / (2 * (1 + m.nu));
+  SymmetricTensor<4, 2> C;
+  for (unsigned int i = 0; i < 2; ++i)
+    for (unsigned int j = 0; j < 2; ++j)
+      for (unsigned int k = 0; k < 2; ++k)
+        for (unsigned int l = 0; l < 2; ++l)
+          C[i][j][k][l] = (i == j && k == l ? lambda : 0.0) +
+                          ((i == k && j == l) ? mu : 0.0) + ((i == l && j == k) ? mu : 0.0);
+  return C;
+}
+
+double lame_lambda(const ElasticMaterial& m) {
+  return m.E * m.nu / ((1 + m.nu) * (1 - 2 * m.nu));
+}
+
+std::uint64_t edge_key(int a, int b) {
+  const auto lo = static_cast<std::uint64_t>(std::min(a, b));
+  const auto hi = static_cast<std::uint64_t>(std::max(a, b));
+  return (hi << 32) | lo;
+}
+
+/// The in-situ stage: one elastic solve per softening factor.
+class InsituProblem {
+ public:
+  InsituProblem(const mesh::Mesh& mesh, const InsituSpec& spec);
+  std::vector<InsituField> run();
+
+ private:
+  void assign_roles(double alpha);
+  void make_grid();
+  void setup_system();
+  void assemble_system(double alpha);
+  void solve(InsituField& field);
+  void output_results(double alpha, InsituField& field);
+
+  // The constitutive law of one cell during this stage, see (2) and (3).
+  struct CellLaw {
+    SymmetricTensor<4, 2> D;
+    SymmetricTensor<2, 2> s0;
+    Tensor<1, 2> b;
+  };
+  CellLaw cell_law(int triangle, double alpha, const Point<2>& x) const;
+  SymmetricTensor<2, 2> initial_stress(const Point<2>& x) const;
+  double initial_szz(const Point<2>& x) const;
+  Tensor<1, 2> boundary_traction(const Point<2>& x, const Tensor<1, 2>& normal) const;
+  void solve_direct();
+  int solve_amg_cg(double target_residual);
+  template <class CellVector>
+  void add_boundary_tractions(const DoFHandler<2>::active_cell_iterator& cell, double sign,
+                              CellVector& cell_vector);
+
+  const mesh::Mesh& mesh_;
+  const InsituSpec& spec_;
+
+  // Bookkeeping between the mesh record and deal.II's objects.
+  std::unordered_set<std::uint64_t> outer_edges_;  ///< edges with one triangle in the full mesh
+  std::vector<Role> role_;                         ///< per mesh triangle, this stage
+  std::vector<std::uint8_t> grid_removed_;         ///< removal pattern the grid was built for
+  bool have_grid_ = false;
+  bool have_system_ = false;                       ///< dofs and sparsity match the grid
+  std::vector<int> cell_to_triangle_;              ///< active cell index -> mesh triangle
+  std::vector<int> grid_to_mesh_vertex_;           ///< triangulation vertex -> mesh vertex
+
+  // The finite element machinery of step-8, on simplices.
+  Triangulation<2> triangulation_;
+  const FESystem<2> fe_;
+  const MappingFE<2> mapping_;
+  // One point per cell (the centroid) integrates the P1 weak form exactly;
+  // three per box edge integrate the traction (see the introduction).
+  const QGaussSimplex<2> quadrature_;
+  const QGaussSimplex<1> face_quadrature_;
+  FEValues<2> fe_values_;
+  FEFaceValues<2> fe_face_values_;
+  DoFHandler<2> dof_handler_;
+  AffineConstraints<double> constraints_;
+  std::vector<types::global_dof_index> pinned_dofs_;
+  SparsityPattern sparsity_pattern_;
+  SparseMatrix<double> system_matrix_;
+  Vector<double> solution_;
+  Vector<double> system_rhs_;
+  Vector<double> insitu_forces_;  ///< int sigma0 : eps(phi_i): the load scale
+
+  // Materials and the staged state.
+  SymmetricTensor<4, 2> C_rock_, C_core_, C_lining_;
+  bool lining_installed_ = false;
+  std::vector<SymmetricTensor<2, 2>> eps_previous_;  ///< per mesh triangle, end of last stage
+  std::vector<SymmetricTensor<2, 2>> eps_install_;   ///< per mesh triangle, at lining install
+};
+
+// ---------------------------------------------------------------------------
+// Construction: the materials and the outer boundary of the full mesh.
+// ---------------------------------------------------------------------------
+
+InsituProblem::InsituProblem(const mesh::Mesh& mesh, const InsituSpec& spec)
+    : mesh_(mesh),
+      spec_(spec),
+      fe_(FE_SimplexP<2>(1), 2),
+      mapping_(FE_SimplexP<2>(1)),
+      quadrature_(1),
+      face_quadrature_(3),
+      fe_values_(mapping_, fe_, quadrature_,
+                 update_values | update_gradients | update_quadrature_points | update_JxW_values),
+      fe_face_values_(mapping_, fe_, face_quadrature_,
+                      update_values | update_quadrature_points | update_normal_vectors |
+                          update_JxW_values),
+      eps_previous_(mesh.n_triangles()),
+      eps_install_(mesh.n_triangles()) {
+  // validate() has made sure every material a stage needs is present.
+  if (spec.materials.rock) C_rock_ = elasticity_tensor(*spec.materials.rock);
+  if (spec.materials.core) C_core_ = elasticity_tensor(*spec.materials.core);
+  if (spec.materials.lining) C_lining_ = elasticity_tensor(*spec.materials.lining);
+
+  // An edge is on the outer boundary when exactly one triangle of the full
+  // mesh has it; the excavation boundary has two (rock outside, core inside).
+  // Only these edges carry the far-field traction, in every stage.
+  std::unordered_set<std::uint64_t> seen;
+  seen.reserve(3 * mesh.n_triangles());
+  outer_edges_.reserve(mesh.n_triangles() / 4 + 16);
+  for (const auto& tri : mesh.triangles)
+    for (int k = 0; k < 3; ++k) {
+      const std::uint64_t key = edge_key(tri[k], tri[(k + 1) % 3]);
+      if (seen.insert(key).second)
+        outer_edges_.insert(key);
+      else
+        outer_edges_.erase(key);
+    }
+}
+
+// ---------------------------------------------------------------------------
+// run(): the staged loop of step-18, one elastic solve per alpha.
+// ---------------------------------------------------------------------------
+
+std::vector<InsituField> InsituProblem::run() {
+  std::vector<InsituField> fields;
+  for (const double alpha : spec_.alphas) {
+    InsituField field;
+    field.alpha = alpha;
+    Timer timer;
+
+    // The lining goes in at the first stage with alpha <= install_alpha,
+    // stress-free on the ground as the previous stage left it.
+    if (spec_.lining.active && !lining_installed_ && alpha <= spec_.lining.install_alpha) {
+      lining_installed_ = true;
+      for (std::size_t t = 0; t < mesh_.n_triangles(); ++t)
+        if (mesh_.zone[t] == mesh::kLining) eps_install_[t] = eps_previous_[t];
+    }
+    field.lining_installed = lining_installed_;
+
+    assign_roles(alpha);
+    make_grid();  // rebuilds only when the set of removed cells changed
+    setup_system();
+    field.setup_seconds = timer.wall_time();
+
+    timer.restart();
+    assemble_system(alpha);
+    field.assembly_seconds = timer.wall_time();
+
+    timer.restart();
+    solve(field);
+    field.solve_seconds = timer.wall_time();
+
+    timer.restart();
+    output_results(alpha, field);
+    field.postprocess_seconds = timer.wall_time();
+    field.total_seconds = field.setup_seconds + field.assembly_seconds + field.solve_seconds +
+                          field.postprocess_seconds;
+    fields.push_back(std::move(field));
+  }
+  return fields;
+}
+
+// ---------------------------------------------------------------------------
+// Roles and the triangulation.
+// ---------------------------------------------------------------------------
+
+void InsituProblem::assign_roles(const double alpha) {
+  role_.resize(mesh_.n_triangles());
+  for (std::size_t t = 0; t < mesh_.n_triangles(); ++t) {
+    switch (mesh_.zone[t]) {
+      case mesh::kRock:
+        role_[t] = Role::kRock;
+        break;
+      case mesh::kLining:
+        if (lining_installed_) {
+          role_[t] = Role::kLining;
+          break;
+        }
+        [[fallthrough]];  // not installed: ground still to be excavated
+      default:
+        role_[t] = alpha > 0 ? Role::kGround : Role::kRemoved;
+    }
+  }
+}
+
+// The triangulation is built directly from the mesh record (no file round
+// trip): vertices used by the cells that stay, renumbered compactly, and one
+// CellData per triangle with its zone as material id. The cells keep the
+// record's order, which lets every result go back to its triangle; we check
+// that rather than assume it.
+void InsituProblem::make_grid() {
+  std::vector<std::uint8_t> removed(mesh_.n_triangles());
+  for (std::size_t t = 0; t < mesh_.n_triangles(); ++t) removed[t] = role_[t] == Role::kRemoved;
+  if (have_grid_ && removed == grid_removed_) return;
+
+  std::vector<int> mesh_to_grid(mesh_.n_vertices(), -1);
+  grid_to_mesh_vertex_.clear();
+  std::vector<Point<2>> vertices;
+  std::vector<CellData<2>> cells;
+  std::vector<int> cell_triangles;
+  for (std::size_t t = 0; t < mesh_.n_triangles(); ++t) {
+    if (removed[t]) continue;
+    CellData<2> cell(3);
+    for (unsigned int k = 0; k < 3; ++k) {
+      const int v = mesh_.triangles[t][k];
+      if (mesh_to_grid[v] < 0) {
+        mesh_to_grid[v] = static_cast<int>(vertices.size());
+        vertices.emplace_back(mesh_.x[v], mesh_.y[v]);
+        grid_to_mesh_vertex_.push_back(v);
+      }
+      cell.vertices[k] = mesh_to_grid[v];
+    }
+    cell.material_id = static_cast<types::material_id>(mesh_.zone[t]);
+    cells.push_back(cell);
+    cell_triangles.push_back(static_cast<int>(t));
+  }
+  if (cells.empty())
+    throw InputError("insitu: every triangle is removed at alpha = 0: the system is singular");
+
+  // The cells that stay must hang together, or some part floats free and
+  // the stiffness is singular (three constraints hold one body only).
+  std::vector<int> parent(vertices.size());
+  std::iota(parent.begin(), parent.end(), 0);
+  const auto find = [&parent](int v) {
+    while (parent[v] != v) v = parent[v] = parent[parent[v]];
+    return v;
+  };
+  for (const auto& c : cells)
+    for (int k = 1; k < 3; ++k) parent[find(c.vertices[k])] = find(c.vertices[0]);
+  std::size_t n_parts = 0;
+  for (std::size_t v = 0; v < vertices.size(); ++v) n_parts += find(static_cast<int>(v)) == static_cast<int>(v);
+  if (n_parts != 1)
+    throw InputError("insitu: the cells left in the system form " + std::to_string(n_parts) +
+                     " disconnected parts: the system is singular (a zone floats free once "
+                     "the core is removed; check the zones or keep alpha > 0)");
+
+  dof_handler_.clear();
+  triangulation_.clear();
+  triangulation_.create_triangulation(vertices, cells, SubCellData());
+
+  // Map cells back to triangles: the creation order if deal.II kept it (it
+  // does in 9.4), a search by vertex triple otherwise.
+  cell_to_triangle_.assign(triangulation_.n_active_cells(), -1);
+  const auto sorted_vertices = [](std::array<unsigned int, 3> v) {
+    std::sort(v.begin(), v.end());
+    return v;
+  };
+  bool same_order = true;
+  for (const auto& cell : triangulation_.active_cell_iterators()) {
+    const auto i = cell->active_cell_index();
+    const auto& c = cells[i];
+    same_order = same_order &&
+                 sorted_vertices({cell->vertex_index(0), cell->vertex_index(1),
+                                  cell->vertex_index(2)}) ==
+                     sorted_vertices({c.vertices[0], c.vertices[1], c.vertices[2]});
+    cell_to_triangle_[i] = cell_triangles[i];
+  }
+  if (!same_order) {
+    std::map<std::array<unsigned int, 3>, int> by_vertices;
+    for (std::size_t i = 0; i < cells.size(); ++i)
+      by_vertices[sorted_vertices({cells[i].vertices[0], cells[i].vertices[1],
+                                   cells[i].vertices[2]})] = cell_triangles[i];
+    for (const auto& cell : triangulation_.active_cell_iterators())
+      cell_to_triangle_[cell->active_cell_index()] = by_vertices.at(sorted_vertices(
+          {cell->vertex_index(0), cell->vertex_index(1), cell->vertex_index(2)}));
+  }
+
+  // Faces on the outer boundary of the full mesh carry the traction.
+  for (const auto& cell : triangulation_.active_cell_iterators())
+    for (const unsigned int f : cell->face_indices())
+      if (cell->face(f)->at_boundary()) {
+        const int a = grid_to_mesh_vertex_[cell->face(f)->vertex_index(0)];
+        const int b = grid_to_mesh_vertex_[cell->face(f)->vertex_index(1)];
+        cell->face(f)->set_boundary_id(outer_edges_.count(edge_key(a, b)) ? kLoadedBoundary : 0);
+      }
+
+  grid_removed_ = std::move(removed);
+  have_grid_ = true;
+  have_system_ = false;
+}
+
+// ---------------------------------------------------------------------------
+// setup_system(): dofs, the three rigid-motion constraints, the sparsity.
+// ---------------------------------------------------------------------------
+
+void InsituProblem::setup_system() {
+  if (have_system_) return;
+  system_matrix_.clear();  // it holds a pointer to the pattern we replace
+  dof_handler_.reinit(triangulation_);
+  dof_handler_.distribute_dofs(fe_);
+
+  // Pin the loaded-boundary vertex with the smallest x (both components), and
+  // at the one with the largest x the component normal to the line joining
+  // them. Without a loaded boundary (a mesh with no box), any two vertices.
+  const auto& verts = triangulation_.get_vertices();
+  unsigned int a = 0, b = 0;
+  bool found = false;
+  for (const auto& cell : triangulation_.active_cell_iterators())
+    for (const unsigned int f : cell->face_indices())
+      if (cell->face(f)->at_boundary() && cell->face(f)->boundary_id() == kLoadedBoundary)
+        for (unsigned int k = 0; k < 2; ++k) {
+          const unsigned int v = cell->face(f)->vertex_index(k);
+          if (!found) a = b = v, found = true;
+          if (verts[v][0] < verts[a][0]) a = v;
+          if (verts[v][0] > verts[b][0]) b = v;
+        }
+  if (!found || a == b) {
+    a = 0;
+    b = 0;
+    for (unsigned int v = 0; v < verts.size(); ++v)
+      if ((verts[v] - verts[0]).norm() > (verts[b] - verts[0]).norm()) b = v;
+  }
+  const unsigned int b_component =
+      std::abs(verts[b][0] - verts[a][0]) >= std::abs(verts[b][1] - verts[a][1]) ? 1 : 0;
+
+  pinned_dofs_.assign(3, numbers::invalid_dof_index);
+  for (const auto& cell : dof_handler_.active_cell_iterators())
+    for (const unsigned int v : cell->vertex_indices()) {
+      if (cell->vertex_index(v) == a) {
+        pinned_dofs_[0] = cell->vertex_dof_index(v, 0);
+        pinned_dofs_[1] = cell->vertex_dof_index(v, 1);
+      }
+      if (cell->vertex_index(v) == b) pinned_dofs_[2] = cell->vertex_dof_index(v, b_component);
+    }
+  constraints_.clear();
+  for (const auto dof : pinned_dofs_) constraints_.add_line(dof);
+  constraints_.close();
+
+  DynamicSparsityPattern dsp(dof_handler_.n_dofs(), dof_handler_.n_dofs());
+  DoFTools::make_sparsity_pattern(dof_handler_, dsp, constraints_, false);
+  sparsity_pattern_.copy_from(dsp);
+  system_matrix_.reinit(sparsity_pattern_);
+  solution_.reinit(dof_handler_.n_dofs());
+  system_rhs_.reinit(dof_handler_.n_dofs());
+  insitu_forces_.reinit(dof_handler_.n_dofs());
+  have_system_ = true;
+}
+
+// ---------------------------------------------------------------------------
+// The in-situ state and the loads.
+// ---------------------------------------------------------------------------
+
+// sigma0 = -(sH n n + sV m m), n the direction of sH, m normal to it; with
+// gravity both grow linearly with depth below reference_y.
+SymmetricTensor<2, 2> InsituProblem::initial_stress(const Point<2>& x) const {
+  const FarField& ff = spec_.far_field;
+  const double depth = spec_.gravity.reference_y - x[1];
+  const double gamma = spec_.gravity.unit_weight;
+  const double sV = ff.sV + gamma * depth;
+  const double sH = ff.sH + ff.sH / ff.sV * gamma * depth;
+  const double beta = ff.angle_deg * kPi / 180;
+  const double c = std::cos(beta), s = std::sin(beta);
+  SymmetricTensor<2, 2> sigma;
+  sigma[0][0] = -(sH * c * c + sV * s * s);
+  sigma[1][1] = -(sH * s * s + sV * c * c);
+  sigma[0][1] = -(sH - sV) * s * c;
+  return sigma;
+}
+
+double InsituProblem::initial_szz(const Point<2>& x) const {
+  const FarField& ff = spec_.far_field;
+  if (ff.sZ) {
+    const double depth = spec_.gravity.reference_y - x[1];
+    return -(*ff.sZ) * (ff.sV + spec_.gravity.unit_weight * depth) / ff.sV;
+  }
+  return spec_.materials.rock->nu * trace(initial_stress(x));
+}
+
+Tensor<1, 2> InsituProblem::boundary_traction(const Point<2>& x,
+                                              const Tensor<1, 2>& normal) const {
+  SymmetricTensor<2, 2> sigma;
+  if (spec_.loading == BoundaryLoading::kKirschExact) {
+    KirschCase k;
+    k.a = spec_.kirsch_radius;
+    k.sH = spec_.far_field.sH;
+    k.sV = spec_.far_field.sV;
+    k.angle_deg = spec_.far_field.angle_deg;
+    const Stress s = kirsch_stress(k, x[0], x[1]);
+    sigma[0][0] = s.sxx;
+    sigma[1][1] = s.syy;
+    sigma[0][1] = s.sxy;
+  } else {
+    sigma = initial_stress(x);
+  }
+  return sigma * normal;
+}
+
+InsituProblem::CellLaw InsituProblem::cell_law(const int triangle, const double alpha,
+                                               const Point<2>& x) const {
+  Tensor<1, 2> gravity;
+  gravity[1] = -spec_.gravity.unit_weight;
+  switch (role_[triangle]) {
+    case Role::kRock:
+      return {C_rock_, initial_stress(x), gravity};
+    case Role::kGround:
+      return {alpha * C_core_, alpha * initial_stress(x), alpha * gravity};
+    case Role::kLining:
+      // The lining's weight is not part of the in-situ stage.
+      return {C_lining_, -(C_lining_ * eps_install_[triangle]), Tensor<1, 2>()};
+    case Role::kRemoved:
+      break;
+  }
+  Assert(false, ExcInternalError());
+  return {};
+}
+
+template <class CellVector>
+void InsituProblem::add_boundary_tractions(const DoFHandler<2>::active_cell_iterator& cell,
+                                           const double sign, CellVector& cell_vector) {
+  FEFaceValues<2>& fe_face_values = fe_face_values_;
+  const FEValuesExtractors::Vector displacement(0);
+  for (const unsigned int f : cell->face_indices()) {
+    if (!cell->face(f)->at_boundary() || cell->face(f)->boundary_id() != kLoadedBoundary)
+      continue;
+    fe_face_values.reinit(cell, f);
+    for (const unsigned int q : fe_face_values.quadrature_point_indices()) {
+      const Tensor<1, 2> t =
+          boundary_traction(fe_face_values.quadrature_point(q), fe_face_values.normal_vector(q));
+      for (const unsigned int i : fe_face_values.dof_indices())
+        cell_vector(i) += sign * (fe_face_values[displacement].value(i, q) * t) *
+                          fe_face_values.JxW(q);
+    }
+  }
+}
+
+// ---------------------------------------------------------------------------
+// assemble_system(): the weak form (3), cell by cell as in step-8.
+// ---------------------------------------------------------------------------
+
+void InsituProblem::assemble_system(const double alpha) {
+  system_matrix_ = 0;
+  system_rhs_ = 0;
+  insitu_forces_ = 0;
+
+  FEValues<2>& fe_values = fe_values_;
+  const FEValuesExtractors::Vector displacement(0);
+
+  const unsigned int dofs_per_cell = fe_.n_dofs_per_cell();
+  FullMatrix<double> cell_matrix(dofs_per_cell, dofs_per_cell);
+  Vector<double> cell_rhs(dofs_per_cell);
+  Vector<double> cell_insitu(dofs_per_cell);
+  std::vector<types::global_dof_index> local_dof_indices(dofs_per_cell);
+  std::vector<SymmetricTensor<2, 2>> eps_phi(dofs_per_cell);
+
+  for (const auto& cell : dof_handler_.active_cell_iterators()) {
+    cell_matrix = 0;
+    cell_rhs = 0;
+    cell_insitu = 0;
+    fe_values.reinit(cell);
+    const int triangle = cell_to_triangle_[cell->active_cell_index()];
+
+    for (const unsigned int q : fe_values.quadrature_point_indices()) {
+      const Point<2>& x = fe_values.quadrature_point(q);
+      const CellLaw law = cell_law(triangle, alpha, x);
+      const SymmetricTensor<2, 2> sigma0 = initial_stress(x);
+      const double JxW = fe_values.JxW(q);
+      for (const unsigned int i : fe_values.dof_indices())
+        eps_phi[i] = fe_values[displacement].symmetric_gradient(i, q);
+
+      for (const unsigned int i : fe_values.dof_indices()) {
+        const SymmetricTensor<2, 2> D_eps_i = law.D * eps_phi[i];
+        for (const unsigned int j : fe_values.dof_indices())
+          cell_matrix(i, j) += (D_eps_i * eps_phi[j]) * JxW;
+        cell_rhs(i) +=
+            (fe_values[displacement].value(i, q) * law.b - eps_phi[i] * law.s0) * JxW;
+        cell_insitu(i) += (eps_phi[i] * sigma0) * JxW;
+      }
+    }
+    add_boundary_tractions(cell, +1.0, cell_rhs);
+
+    cell->get_dof_indices(local_dof_indices);
+    constraints_.distribute_local_to_global(cell_matrix, cell_rhs, local_dof_indices,
+                                            system_matrix_, system_rhs_);
+    insitu_forces_.add(local_dof_indices, cell_insitu);
+  }
+}
+
+// ---------------------------------------------------------------------------
+// solve(): AMG-CG or UMFPACK, with the fallback.
+// ---------------------------------------------------------------------------
+
+void InsituProblem::solve(InsituField& field) {
+  field.n_dofs = dof_handler_.n_dofs();
+  field.n_cells = triangulation_.n_active_cells();
+  solution_ = 0;
+
+  const SolverSpec& s = spec_.solver;
+  const bool small = field.n_dofs < s.direct_below_dofs;
+  const bool want_cg =
+      s.kind == LinearSolver::kAmgCg || (s.kind == LinearSolver::kAuto && !small);
+  // CG stops at an absolute residual scaled by the in-situ nodal forces, not
+  // by the right-hand side: at alpha = 1 the latter is round-off, and nothing
+  // is to be gained by reducing it further.
+  const double target = s.tolerance * insitu_forces_.l2_norm();
+
+  if (want_cg && !ScopedParallelInit::active()) {
+    field.solver = "direct (no MPI runtime: create ScopedParallelInit in main for AMG)";
+    solve_direct();
+  } else if (want_cg) {
+    try {
+      field.iterations = solve_amg_cg(target);
+      field.solver = "amg-cg";
+    } catch (const SolverControl::NoConvergence& e) {
+      field.iterations = static_cast<int>(e.last_step);
+      field.solver = "direct (cg stopped at " + std::to_string(e.last_step) + " iterations)";
+      solution_ = 0;
+      solve_direct();
+    }
+  } else {
+    field.solver = "direct";
+    solve_direct();
+  }
+  constraints_.distribute(solution_);
+}
+
+void InsituProblem::solve_direct() {
+  SparseDirectUMFPACK direct;
+  try {
+    direct.initialize(system_matrix_);
+  } catch (const ExceptionBase& e) {
+    throw InputError(
+        "insitu: the stiffness matrix is singular (UMFPACK could not factorise it): check "
+        "that no zone has a zero modulus and that alpha > 0 leaves a stiff core or none");
+  }
+  direct.vmult(solution_, system_rhs_);
+}
+
+int InsituProblem::solve_amg_cg(const double target_residual) {
+  // ML works on a Trilinos copy of the matrix; CG itself runs on deal.II's.
+  TrilinosWrappers::SparseMatrix trilinos_matrix;
+  trilinos_matrix.reinit(system_matrix_);
+
+  // The near-null space: the rigid motions of the plate, evaluated at every
+  // vertex dof. ML wants them as columns of one array in dof order.
+  const std::size_t n = dof_handler_.n_dofs();
+  std::vector<double> null_space(3 * n, 0.0);
+  Point<2> center;
+  double extent = 0;
+  for (const auto& v : triangulation_.get_vertices()) center += v / triangulation_.n_vertices();
+  for (const auto& v : triangulation_.get_vertices()) extent = std::max(extent, (v - center).norm());
+  bool node_blocks = true;  // x and y dofs of a vertex next to each other?
+  for (const auto& cell : dof_handler_.active_cell_iterators())
+    for (const unsigned int v : cell->vertex_indices()) {
+      const auto dx = cell->vertex_dof_index(v, 0), dy = cell->vertex_dof_index(v, 1);
+      const Tensor<1, 2> p = (cell->vertex(v) - center) / extent;
+      null_space[0 * n + dx] = 1;
+      null_space[1 * n + dy] = 1;
+      null_space[2 * n + dx] = -p[1];
+      null_space[2 * n + dy] = p[0];
+      node_blocks = node_blocks && dx % 2 == 0 && dy == dx + 1;
+    }
+
+  TrilinosWrappers::PreconditionAMG::AdditionalData data;
+  data.elliptic = true;
+  data.higher_order_elements = false;
+  data.smoother_sweeps = 2;
+  data.aggregation_threshold = 1e-3;
+  Teuchos::ParameterList parameters;
+  std::unique_ptr<Epetra_MultiVector> distributed_modes;
+  data.set_parameters(parameters, distributed_modes, trilinos_matrix);
+  parameters.set("PDE equations", node_blocks ? 2 : 1);
+  parameters.set("null space: type", "pre-computed");
+  parameters.set("null space: dimension", 3);
+  parameters.set("null space: vectors", null_space.data());
+
+  TrilinosWrappers::PreconditionAMG amg;
+  amg.initialize(trilinos_matrix, parameters);
+
+  SolverControl control(spec_.solver.max_iterations, target_residual, false, false);
+  SolverCG<Vector<double>> cg(control);
+  cg.solve(system_matrix_, solution_, system_rhs_, amg);
+  return static_cast<int>(control.last_step());
+}
+
+// ---------------------------------------------------------------------------
+// output_results(): stresses per triangle, displacements per vertex, and the
+// equilibrium check, all handed back in the mesh's own order.
+// ---------------------------------------------------------------------------
+
+void InsituProblem::output_results(const double alpha, InsituField& field) {
+  const std::size_t n_t = mesh_.n_triangles(), n_v = mesh_.n_vertices();
+  field.stress.assign(n_t, Stress{});
+  field.active.assign(n_t, 0);
+  field.ux.assign(n_v, 0.0);
+  field.uy.assign(n_v, 0.0);
+
+  FEValues<2>& fe_values = fe_values_;
+  const FEValuesExtractors::Vector displacement(0);
+  std::vector<SymmetricTensor<2, 2>> eps_q(quadrature_.size());
+  std::vector<types::global_dof_index> local_dof_indices(fe_.n_dofs_per_cell());
+  Vector<double> cell_residual(fe_.n_dofs_per_cell());
+  Vector<double> residual(dof_handler_.n_dofs());
+
+  // 1. Stress per triangle, sigma = s0 + D eps(u) of (2), and the residual
+  //    of (3) with the constraints left out: at free dofs it is what the
+  //    solver left over, at the pinned dofs it is the reaction.
+  for (const auto& cell : dof_handler_.active_cell_iterators()) {
+    fe_values.reinit(cell);
+    fe_values[displacement].get_function_symmetric_gradients(solution_, eps_q);
+    const int t = cell_to_triangle_[cell->active_cell_index()];
+    const Point<2>& x = fe_values.quadrature_point(0);
+    const CellLaw law = cell_law(t, alpha, x);
+    const SymmetricTensor<2, 2> sigma = law.s0 + law.D * eps_q[0];
+
+    Stress& out = field.stress[t];
+    out.sxx = sigma[0][0];
+    out.syy = sigma[1][1];
+    out.sxy = sigma[0][1];
+    // Plane strain: the out-of-plane stress responds with lambda tr(eps).
+    switch (role_[t]) {
+      case Role::kRock:
+        out.szz = initial_szz(x) + lame_lambda(*spec_.materials.rock) * trace(eps_q[0]);
+        break;
+      case Role::kGround:
+        out.szz = alpha * (initial_szz(x) + lame_lambda(*spec_.materials.core) * trace(eps_q[0]));
+        break;
+      case Role::kLining:
+        out.szz = lame_lambda(*spec_.materials.lining) * trace(eps_q[0] - eps_install_[t]);
+        break;
+      case Role::kRemoved:
+        break;
+    }
+    field.active[t] = 1;
+    eps_previous_[t] = eps_q[0];
+
+    cell_residual = 0;
+    for (const unsigned int i : fe_values.dof_indices())
+      cell_residual(i) += (fe_values[displacement].symmetric_gradient(i, 0) * sigma -
+                           fe_values[displacement].value(i, 0) * law.b) *
+                          fe_values.JxW(0);
+    add_boundary_tractions(cell, -1.0, cell_residual);
+    cell->get_dof_indices(local_dof_indices);
+    residual.add(local_dof_indices, cell_residual);
+  }
+  const double scale = std::max(insitu_forces_.l2_norm(), 1e-300);
+  double reaction = 0;
+  for (const auto dof : pinned_dofs_) {
+    reaction = std::max(reaction, std::abs(residual(dof)));
+    residual(dof) = 0;
+  }
+  field.reaction_ratio = reaction / scale;
+  field.unbalanced_ratio = residual.l2_norm() / scale;
+
+  // 2. Displacement per vertex, less the rigid motion that best fits the
+  //    loaded (outer) boundary: translation = weighted mean, rotation =
+  //    weighted mean of x' x u / |x'|^2 about the weighted centroid.
+  std::vector<double> gx(triangulation_.n_vertices()), gy(triangulation_.n_vertices());
+  for (const auto& cell : dof_handler_.active_cell_iterators())
+    for (const unsigned int v : cell->vertex_indices()) {
+      gx[cell->vertex_index(v)] = solution_(cell->vertex_dof_index(v, 0));
+      gy[cell->vertex_index(v)] = solution_(cell->vertex_dof_index(v, 1));
+    }
+  const auto& verts = triangulation_.get_vertices();
+  double w_sum = 0, cx = 0, cy = 0;
+  std::vector<std::pair<unsigned int, double>> boundary;  // vertex, weight
+  for (const auto& cell : triangulation_.active_cell_iterators())
+    for (const unsigned int f : cell->face_indices())
+      if (cell->face(f)->at_boundary() && cell->face(f)->boundary_id() == kLoadedBoundary) {
+        const double half = 0.5 * cell->face(f)->measure();
+        for (unsigned int k = 0; k < 2; ++k) boundary.emplace_back(cell->face(f)->vertex_index(k), half);
+      }
+  for (const auto& [v, w] : boundary) {
+    w_sum += w;
+    cx += w * verts[v][0];
+    cy += w * verts[v][1];
+  }
+  double tx = 0, ty = 0, omega = 0;
+  if (w_sum > 0) {
+    cx /= w_sum;
+    cy /= w_sum;
+    double moment = 0, inertia = 0;
+    for (const auto& [v, w] : boundary) {
+      const double px = verts[v][0] - cx, py = verts[v][1] - cy;
+      tx += w * gx[v];
+      ty += w * gy[v];
+      moment += w * (px * gy[v] - py * gx[v]);
+      inertia += w * (px * px + py * py);
+    }
+    tx /= w_sum;
+    ty /= w_sum;
+    omega = inertia > 0 ? moment / inertia : 0;
+  }
+  for (unsigned int v = 0; v < verts.size(); ++v) {
+    const int m = grid_to_mesh_vertex_[v];
+    field.ux[m] = gx[v] - (tx - omega * (verts[v][1] - cy));
+    field.uy[m] = gy[v] - (ty + omega * (verts[v][0] - cx));
+  }
+
+  // A solve that left the body far from equilibrium is a numerical failure,
+  // not a result.
+  const double allowed = std::max(1e-6, 100 * spec_.solver.tolerance);
+  if (!(field.unbalanced_ratio <= allowed))
+    throw NumericalError("insitu: alpha = " + std::to_string(alpha) +
+                         ": the solution is out of balance by " +
+                         std::to_string(field.unbalanced_ratio) +
+                         " of the in-situ nodal forces (allowed " + std::to_string(allowed) +
+                         "); solver: " + field.solver);
+}
+
+}  // namespace
+
+std::vector<InsituField> solve_insitu(const mesh::Mesh& mesh, const InsituSpec& spec) {
+  validate(mesh, spec);
+  try {
+    InsituProblem problem(mesh, spec);
+    return problem.run();
+  } catch (const ExceptionBase& e) {
+    // deal.II's checks that are always on (AssertThrow): report them once,
+    // as the numerical failure they are.
+    throw NumericalError(std::string("insitu: deal.II stopped: ") + e.what());
+  }
+}
+
+}  // namespace rockfdem::insitu
