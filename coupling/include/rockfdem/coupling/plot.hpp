@@ -18,7 +18,9 @@ namespace rockfdem::coupling {
 /// True when an X display can be opened and offers GLX, i.e. VTK can render.
 /// Checked without VTK (which would abort): DISPLAY must be set, libX11 and
 /// libGL are opened with dlopen, XOpenDisplay must succeed and
-/// glXQueryExtension must answer yes. Costs one X connection (milliseconds).
+/// glXQueryExtension must answer yes. Costs one X connection (milliseconds);
+/// a failed connection is retried for up to half a second (Xvfb resets after
+/// its last client leaves, and refuses connections meanwhile).
 /// @param why  if not null, receives the reason when the answer is false.
 bool rendering_available(std::string* why = nullptr);
 
