@@ -8,6 +8,7 @@
 #include <unistd.h>
 
 #include <cstdio>
+#include <fstream>
 #include <map>
 #include <stdexcept>
 #include <string>
@@ -88,7 +89,7 @@ std::string temporary_path(const std::string& path) {
 
 void write_msh(const Mesh& m, const std::string& path) {
   const std::string tmp = temporary_path(path);
-  {
+  try {
     detail::GmshSession session(1);
     detail::gmsh_guarded("writing " + path, detail::GmshFailure::kRuntime, [&] {
       gmsh::model::add("rockfdem");
@@ -99,10 +100,16 @@ void write_msh(const Mesh& m, const std::string& path) {
       gmsh::option::setNumber("Mesh.SaveAll", 0);
       gmsh::write(tmp);
     });
+  } catch (...) {
+    std::remove(tmp.c_str());  // leave no half-written file behind
+    throw;
   }
-  if (std::rename(tmp.c_str(), path.c_str()) != 0) {
+  // gmsh only logs some write failures (e.g. a missing folder): the file
+  // must exist before it replaces anything.
+  if (!std::ifstream(tmp).good() || std::rename(tmp.c_str(), path.c_str()) != 0) {
     std::remove(tmp.c_str());
-    throw std::runtime_error("writing " + path + ": cannot move the finished file into place");
+    throw std::runtime_error("writing " + path + ": cannot write the file; check that its "
+                             "folder exists and is writable");
   }
 }
 

@@ -50,6 +50,15 @@ TEST(MshRoundTrip, written_tunnel_reads_back_identical) {
   EXPECT_EQ(a, b);
 }
 
+TEST(MshRoundTrip, unwritable_path_is_an_error_and_leaves_nothing) {
+  Mesh m;
+  m.x = {0, 1, 0}, m.y = {0, 0, 1};
+  m.triangles = {{0, 1, 2}}, m.zone = {kRock}, m.fracture = {0};
+  const std::string path = temp_path("rockfdem_no_such_dir/mesh.msh");
+  EXPECT_THROW(write_msh(m, path), std::runtime_error);
+  EXPECT_FALSE(std::ifstream(path).good());
+}
+
 TEST(MshRoundTrip, named_groups_choose_zones_and_edges) {
   MeshSpec s;
   s.kind = ModelKind::kUcs;
