@@ -50,6 +50,18 @@
 // 3-point Gauss rule (exact for the linear gravity traction times a linear v;
 // accurate for the smooth Kirsch traction).
 //
+// ## Gravity: the weight that leaves with the core
+//
+// With a gradient, sigma0 balances the self weight b, and the box tractions
+// carry the weight of everything inside, the core included. Softening or
+// removing the core takes (1 - alpha) of its weight away (and an installed
+// lining is weightless here), so the loads of (3) no longer balance: the
+// difference would end up on the three constraints below as a spurious
+// point force. The base of the box is what carried that weight, so we take
+// it off there: a correction to the traction on the bottom edge, linear in
+// x, t_y = q0 + q1 (x - x_base), whose force and moment cancel the missing
+// weight's exactly. The loads are then self-equilibrated in every stage.
+//
 // ## Rigid motion
 //
 // With tractions on the whole boundary the problem is pure Neumann: the
@@ -121,6 +133,14 @@ constexpr double kPi = 3.14159265358979323846;
 /// only because cells were removed (the excavation wall) keep id 0 and no
 /// traction.
 constexpr types::boundary_id kLoadedBoundary = 1;
+/// Loaded faces on the (horizontal) bottom of the box: with gravity they
+/// also give up the weight the excavation removes.
+constexpr types::boundary_id kBaseBoundary = 2;
+
+bool loaded(const TriaIterator<TriaAccessor<1, 2, 2>>& face) {
+  return face->at_boundary() &&
+         (face->boundary_id() == kLoadedBoundary || face->boundary_id() == kBaseBoundary);
+}
 
 /// What a triangle is during one stage.
 enum class Role : std::uint8_t {
@@ -165,6 +185,7 @@ class InsituProblem {
   void assign_roles(double alpha);
   void make_grid();
   void setup_system();
+  void balance_removed_weight(double alpha);
   void assemble_system(double alpha);
   void solve(InsituField& field);
   void output_results(double alpha, InsituField& field);
@@ -215,6 +236,9 @@ class InsituProblem {
   Vector<double> solution_;
   Vector<double> system_rhs_;
   Vector<double> insitu_forces_;  ///< int sigma0 : eps(phi_i): the load scale
+
+  // The base correction for removed weight (gravity only), see above.
+  double base_q0_ = 0, base_q1_ = 0, base_x_ = 0;
 
   // Materials and the staged state.
   SymmetricTensor<4, 2> C_rock_, C_core_, C_lining_;
@@ -288,6 +312,7 @@ std::vector<InsituField> InsituProblem::run() {
     field.setup_seconds = timer.wall_time();
 
     timer.restart();
+    balance_removed_weight(alpha);
     assemble_system(alpha);
     field.assembly_seconds = timer.wall_time();
 
@@ -410,13 +435,25 @@ void InsituProblem::make_grid() {
           {cell->vertex_index(0), cell->vertex_index(1), cell->vertex_index(2)}));
   }
 
-  // Faces on the outer boundary of the full mesh carry the traction.
+  // Faces on the outer boundary of the full mesh carry the traction; those
+  // of them that are horizontal at the lowest y form the base.
+  double y_min = mesh_.y[0];
+  for (const double y : mesh_.y) y_min = std::min(y_min, y);
+  double extent = 0;
+  for (const auto& p : vertices) extent = std::max(extent, (p - vertices[0]).norm());
   for (const auto& cell : triangulation_.active_cell_iterators())
     for (const unsigned int f : cell->face_indices())
       if (cell->face(f)->at_boundary()) {
-        const int a = grid_to_mesh_vertex_[cell->face(f)->vertex_index(0)];
-        const int b = grid_to_mesh_vertex_[cell->face(f)->vertex_index(1)];
-        cell->face(f)->set_boundary_id(outer_edges_.count(edge_key(a, b)) ? kLoadedBoundary : 0);
+        const auto face = cell->face(f);
+        const int a = grid_to_mesh_vertex_[face->vertex_index(0)];
+        const int b = grid_to_mesh_vertex_[face->vertex_index(1)];
+        types::boundary_id id = 0;
+        if (outer_edges_.count(edge_key(a, b))) {
+          const bool base = std::abs(mesh_.y[a] - y_min) < 1e-12 * extent &&
+                            std::abs(mesh_.y[b] - y_min) < 1e-12 * extent;
+          id = base ? kBaseBoundary : kLoadedBoundary;
+        }
+        face->set_boundary_id(id);
       }
 
   grid_removed_ = std::move(removed);
@@ -442,7 +479,7 @@ void InsituProblem::setup_system() {
   bool found = false;
   for (const auto& cell : triangulation_.active_cell_iterators())
     for (const unsigned int f : cell->face_indices())
-      if (cell->face(f)->at_boundary() && cell->face(f)->boundary_id() == kLoadedBoundary)
+      if (loaded(cell->face(f)))
         for (unsigned int k = 0; k < 2; ++k) {
           const unsigned int v = cell->face(f)->vertex_index(k);
           if (!found) a = b = v, found = true;
@@ -555,17 +592,67 @@ void InsituProblem::add_boundary_tractions(const DoFHandler<2>::active_cell_iter
   FEFaceValues<2>& fe_face_values = fe_face_values_;
   const FEValuesExtractors::Vector displacement(0);
   for (const unsigned int f : cell->face_indices()) {
-    if (!cell->face(f)->at_boundary() || cell->face(f)->boundary_id() != kLoadedBoundary)
-      continue;
+    if (!loaded(cell->face(f))) continue;
+    const bool base = cell->face(f)->boundary_id() == kBaseBoundary;
     fe_face_values.reinit(cell, f);
     for (const unsigned int q : fe_face_values.quadrature_point_indices()) {
-      const Tensor<1, 2> t =
-          boundary_traction(fe_face_values.quadrature_point(q), fe_face_values.normal_vector(q));
+      const Point<2>& x = fe_face_values.quadrature_point(q);
+      Tensor<1, 2> t = boundary_traction(x, fe_face_values.normal_vector(q));
+      if (base) t[1] += base_q0_ + base_q1_ * (x[0] - base_x_);
       for (const unsigned int i : fe_face_values.dof_indices())
         cell_vector(i) += sign * (fe_face_values[displacement].value(i, q) * t) *
                           fe_face_values.JxW(q);
     }
   }
+}
+
+// The weight that left with the softened or removed core (and the ring, once
+// the weightless lining replaces it): force F and moment M about z of the
+// missing body force, from the mesh record (removed cells are not in the
+// triangulation). The base traction t_y = q0 + q1 (x - x_base) with
+// int t_y = -F and int t_y x = -M puts the balance back.
+void InsituProblem::balance_removed_weight(const double alpha) {
+  base_q0_ = base_q1_ = base_x_ = 0;
+  const double gamma = spec_.gravity.unit_weight;
+  if (gamma == 0) return;
+  double F = 0, M = 0;  // the change of the vertical body force, b_cell - b0
+  for (std::size_t t = 0; t < mesh_.n_triangles(); ++t) {
+    double kept = 1;  // fraction of the in-situ weight still acting
+    switch (role_[t]) {
+      case Role::kRock: kept = 1; break;
+      case Role::kGround: kept = alpha; break;
+      case Role::kLining:
+      case Role::kRemoved: kept = 0; break;
+    }
+    if (kept == 1) continue;
+    const auto& tri = mesh_.triangles[t];
+    const double xa = mesh_.x[tri[0]], ya = mesh_.y[tri[0]], xb = mesh_.x[tri[1]],
+                 yb = mesh_.y[tri[1]], xc = mesh_.x[tri[2]], yc = mesh_.y[tri[2]];
+    const double area = 0.5 * ((xb - xa) * (yc - ya) - (xc - xa) * (yb - ya));
+    const double dF = (1 - kept) * gamma * area;  // weight gone: the load rises by this
+    F += dF;
+    M += dF * (xa + xb + xc) / 3;
+  }
+  if (F == 0) return;
+
+  double length = 0, first = 0, second = 0;  // int 1, int x, int x^2 over the base
+  for (const auto& cell : triangulation_.active_cell_iterators())
+    for (const unsigned int f : cell->face_indices())
+      if (cell->face(f)->at_boundary() && cell->face(f)->boundary_id() == kBaseBoundary) {
+        const double x0 = cell->face(f)->vertex(0)[0], x1 = cell->face(f)->vertex(1)[0];
+        const double l = std::abs(x1 - x0);
+        length += l;
+        first += l * 0.5 * (x0 + x1);
+        second += l * (x0 * x0 + x0 * x1 + x1 * x1) / 3;
+      }
+  if (!(length > 0))
+    throw InputError(
+        "insitu: with gravity the box needs a horizontal bottom edge: it carries the weight "
+        "the excavation removes (set gravity.unit_weight = 0 for this mesh)");
+  base_x_ = first / length;
+  const double inertia = second - length * base_x_ * base_x_;
+  base_q0_ = -F / length;
+  base_q1_ = inertia > 0 ? (-M + F * base_x_) / inertia : 0;
 }
 
 // ---------------------------------------------------------------------------
@@ -800,7 +887,7 @@ void InsituProblem::output_results(const double alpha, InsituField& field) {
   std::vector<std::pair<unsigned int, double>> boundary;  // vertex, weight
   for (const auto& cell : triangulation_.active_cell_iterators())
     for (const unsigned int f : cell->face_indices())
-      if (cell->face(f)->at_boundary() && cell->face(f)->boundary_id() == kLoadedBoundary) {
+      if (loaded(cell->face(f))) {
         const double half = 0.5 * cell->face(f)->measure();
         for (unsigned int k = 0; k < 2; ++k) boundary.emplace_back(cell->face(f)->vertex_index(k), half);
       }

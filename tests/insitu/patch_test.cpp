@@ -89,6 +89,30 @@ INSTANTIATE_TEST_SUITE_P(Solvers, PatchTest,
                            return info.param == LinearSolver::kDirect ? "direct" : "amg_cg";
                          });
 
+TEST(Gravity, excavation_under_self_weight_stays_self_equilibrated) {
+  // The core's body force is scaled with its stress, so every stage's loads
+  // balance: the three constraints carry nothing, and the opening's crown
+  // settles while its invert heaves relative to the (fixed) far field.
+  const mesh::Mesh m = polar_box_mesh({1.0, 8.0, 64, true, 0.0});
+  InsituSpec spec = seed_spec();
+  spec.gravity.unit_weight = 27e3;
+  spec.alphas = {0.5, 0.0};
+  for (const InsituField& f : solve_insitu(m, spec)) {
+    EXPECT_LT(f.reaction_ratio, 1e-12);
+    EXPECT_LT(f.unbalanced_ratio, 1e-12);
+    int crown = 0, invert = 0;
+    for (std::size_t v = 0; v < m.n_vertices(); ++v) {
+      if (std::hypot(m.x[v], m.y[v]) > 1 + 1e-9 || std::abs(m.x[v]) > 1e-9) continue;
+      if (m.y[v] > m.y[crown] || std::abs(m.x[crown]) > 1e-9) crown = static_cast<int>(v);
+      if (m.y[v] < m.y[invert] || std::abs(m.x[invert]) > 1e-9) invert = static_cast<int>(v);
+    }
+    ASSERT_NEAR(m.y[crown], 1.0, 1e-12);
+    ASSERT_NEAR(m.y[invert], -1.0, 1e-12);
+    EXPECT_LT(f.uy[crown], 0);
+    EXPECT_GT(f.uy[invert], 0);
+  }
+}
+
 TEST(Runtime, openmp_thread_count_survives_init_and_solve) {
   const int before = omp_get_max_threads();
   const mesh::Mesh m = polar_box_mesh({1.0, 8.0, 32, true, 0.0});
