@@ -1,0 +1,91 @@
+// bench_ucs: throughput of the fracturing UCS test.
+//
+//   bench_ucs [--triangles N] [--steps S] [--threads T] [--velocity V]
+//             [--report-every K]
+//
+// A 50 x 100 mm specimen on the structured mesh (about N triangles, crack
+// elements on every interior edge) is loaded by rough platens moving towards
+// each other at V m/s each for S steps of the automatic dt. Prints the
+// command line, counts, wall time of the time loop, triangle-steps per
+// second, the state hash (equal hashes = bit-identical runs), broken counts
+// by mode and the axial stress history every K steps.
+//
+//        v platen (prescribed velocity, x fixed)
+//      +-------+
+//      |/\/\/\/|   every triangle its own body, joined by crack elements
+//      |\/\/\/\|
+//      +-------+
+//        ^ platen
+#include <omp.h>
+
+#include <cstdio>
+#include <cstdlib>
+#include <string>
+
+#include "rockfdem/fdem/engine.hpp"
+#include "ucs_setup.hpp"
+
+using namespace rockfdem;
+
+int main(int argc, char** argv) {
+  long n_tri = 33000, steps = 10000, report = 0;
+  int threads = 0;
+  double velocity = 0.5;
+  std::printf("command:");
+  for (int i = 0; i < argc; ++i) std::printf(" %s", argv[i]);
+  std::printf("\n");
+  for (int i = 1; i + 1 < argc; i += 2) {
+    const std::string a = argv[i];
+    if (a == "--triangles") n_tri = std::atol(argv[i + 1]);
+    else if (a == "--steps") steps = std::atol(argv[i + 1]);
+    else if (a == "--threads") threads = std::atoi(argv[i + 1]);
+    else if (a == "--velocity") velocity = std::atof(argv[i + 1]);
+    else if (a == "--report-every") report = std::atol(argv[i + 1]);
+    else {
+      std::fprintf(stderr, "unknown option %s\n", a.c_str());
+      return 2;
+    }
+  }
+  try {
+    const fdem::RectangleSpec grid = fdem::ucs_grid(0.05, 0.1, n_tri);
+    fdem::ModelInput in = fdem::ucs_specimen(grid, bench::ucs_rock(), velocity);
+    in.threads = threads;
+    fdem::Engine engine(in);
+    std::printf("triangles %zu nodes %zu cracks %zu threads %d\n", engine.n_triangles(),
+                engine.n_nodes(), engine.n_cracks(), engine.threads());
+    std::printf("dt %.6g s (critical %.6g s), strain rate %.4g 1/s, memory %.0f B/triangle\n",
+                engine.dt(), engine.critical_dt(), 2 * velocity / 0.1,
+                double(engine.memory_bytes()) / engine.n_triangles());
+    double peak = 0;
+    const double t0 = omp_get_wtime();
+    for (long done = 0; done < steps;) {
+      const long n = report > 0 ? std::min(report, steps - done) : steps - done;
+      engine.run(n);
+      done += n;
+      const double stress = -engine.boundary_force(fdem::kTagTop)[1] / 0.05;
+      peak = std::max(peak, -stress);
+      if (report > 0) {
+        const auto b = engine.broken_counts();
+        std::printf("step %ld strain %.4e stress %.4g MPa broken %ld\n", done,
+                    2 * velocity * engine.time() / 0.1, -stress / 1e6, b.total());
+      }
+    }
+    const double wall = omp_get_wtime() - t0;
+    const auto b = engine.broken_counts();
+    const auto ph = engine.phase_times();
+    std::printf("steps %ld wall %.3f s triangle-steps/s %.4g\n", steps, wall,
+                double(engine.n_triangles()) * steps / wall);
+    std::printf("phases: triangles %.3f s cracks %.3f s nodes %.3f s\n", ph.triangles, ph.cracks,
+                ph.nodes);
+    std::printf("peak axial stress %.4g MPa\n", peak / 1e6);
+    std::printf("broken mode_I %ld mode_II %ld mixed %ld\n", b.mode_I, b.mode_II, b.mixed);
+    std::printf("state_hash %s\n", engine.state_hash().c_str());
+  } catch (const InputError& e) {
+    std::fprintf(stderr, "input error: %s\n", e.what());
+    return 2;
+  } catch (const NumericalError& e) {
+    std::fprintf(stderr, "numerical error: %s\n", e.what());
+    return 3;
+  }
+  return 0;
+}

@@ -1,0 +1,148 @@
+// Crack (cohesive) laws evaluated at one integration point of a four-node
+// crack element. Header-only and inline because the crack loop calls them
+// three times per element per step; a switch on CrackLaw picks the law.
+//
+// Conventions (reference sec. 2): opening o > 0 separates the faces, slip s
+// is signed along the element; tension positive. Each law turns (o, s, h)
+// plus the point's damage history D into a normal stress sigma and a shear
+// stress tau, and reports the normalised softening excursions
+//   a = (o - op)/(or - op) >= 0,  b = (|s| - sp)/(sr - sp) >= 0,
+// from which the mixed-mode damage D = sqrt(a^2 + b^2) (seed eq. 10) and the
+// failure mode at breakage follow.
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+
+#include "rockfdem/fdem/model_input.hpp"
+
+namespace rockfdem::fdem {
+
+/// Evans-Marathe softening curve z(D), z(0) = 1, z(1) = 0 (a = 0.63,
+/// b = 1.8, c = 6).
+inline double evans_marathe_z(double d) {
+  constexpr double a = 0.63, b = 1.8;
+  constexpr double k1 = (a + b - 1.0) / (a + b);
+  constexpr double k2 = (a + 6.0 * b) / ((a + b) * (1.0 - a - b));
+  const double r = 1.0 - d;
+  const double r2 = r * r;
+  return (1.0 - k1 * std::exp(d * k2)) * (a * r + b * r2 * r2 * r2);
+}
+
+/// Integral of z(D) over [0, 1] (about 0.3863), by composite Simpson with
+/// 2048 intervals, computed once. The softening ranges are chosen from it so
+/// that a crack dissipates exactly its fracture energy:
+///   or - op = GfI / (I ft) = 2.589 GfI / ft  (not the common 3 GfI / ft,
+///   which dissipates 1.16 GfI).
+inline double rock_softening_integral() {
+  static const double value = [] {
+    constexpr int n = 2048;
+    double sum = evans_marathe_z(0.0) + evans_marathe_z(1.0);
+    for (int i = 1; i < n; ++i) sum += (i % 2 ? 4.0 : 2.0) * evans_marathe_z(double(i) / n);
+    return sum / (3.0 * n);
+  }();
+  return value;
+}
+
+/// Per-material constants of a crack law, derived once from a Material.
+struct CrackConstants {
+  CrackLaw law = CrackLaw::kRock;
+  double ft = 0;          ///< rock: tensile strength; bolt: yield strength sigma_y
+  double fu = 0;          ///< bolt: ultimate strength sigma_u
+  double c = 0;           ///< rock: cohesion; bolt: shear yield tau_y
+  double tan_phi = 0;     ///< rock: tan(friction angle)
+  double pn = 0, pt = 0;  ///< normal and tangential penalties [Pa]
+  double open_range = 0;  ///< or - op [m]
+  double slip_energy = 0; ///< sr - sp = slip_energy / fs [J/m^2 -> m * Pa]
+};
+
+/// Derive the law constants of `m` (penalties default to 10 E).
+inline CrackConstants make_crack_constants(const Material& m) {
+  CrackConstants k;
+  k.law = m.crack_law;
+  k.pn = m.normal_penalty > 0 ? m.normal_penalty : 10.0 * m.young;
+  k.pt = m.tangential_penalty > 0 ? m.tangential_penalty : k.pn;
+  if (m.crack_law == CrackLaw::kBoltSteel) {
+    // Seed eqs. 14 and 16 with eta = 6 and tau_u = tau_y.
+    k.ft = m.yield_strength;
+    k.fu = m.ultimate_strength;
+    k.c = m.shear_yield_strength;
+    k.open_range = 2.0 * m.gf_I / (m.yield_strength + m.ultimate_strength);
+    k.slip_energy = 6.0 * m.gf_II / 2.0;
+  } else {
+    const double integral = rock_softening_integral();
+    k.ft = m.tensile_strength;
+    k.c = m.cohesion;
+    k.tan_phi = std::tan(m.friction_deg * M_PI / 180.0);
+    k.open_range = m.gf_I / (integral * m.tensile_strength);
+    k.slip_energy = m.gf_II / integral;
+  }
+  return k;
+}
+
+/// Result of one integration point.
+struct CrackPoint {
+  double sigma = 0;  ///< normal stress [Pa], tension positive
+  double tau = 0;    ///< shear stress [Pa], sign of the slip
+  double a = 0;      ///< normalised opening excursion (o - op)/(or - op), >= 0
+  double b = 0;      ///< normalised slip excursion (|s| - sp)/(sr - sp), >= 0
+};
+
+/// Hardening-softening branch shared by both laws: (2x - x^2) below the peak.
+inline double pre_peak(double x) { return x >= 1.0 ? 1.0 : (2.0 - x) * x; }
+
+/// Rock law (reference sec. 2): Mohr-Coulomb strength, Evans-Marathe
+/// softening, penalty in compression; `damage` is the point's history and is
+/// raised (never lowered) to the mixed-mode damage, capped at 1.
+inline CrackPoint rock_point(const CrackConstants& k, double o, double s, double h, double& damage) {
+  CrackPoint p;
+  const double op = 2.0 * h * k.ft / k.pn;
+  const double sigma_c = o < 0.0 ? k.pn * o / h : 0.0;  // compressive penalty, unaffected by damage
+  const double fs = k.c - sigma_c * k.tan_phi;          // Mohr-Coulomb, tension positive
+  const double sp = 2.0 * h * fs / k.pt;
+  const double abs_s = std::fabs(s);
+  p.a = o > op ? (o - op) / k.open_range : 0.0;
+  p.b = abs_s > sp ? (abs_s - sp) * fs / k.slip_energy : 0.0;
+  const double trial = std::sqrt(p.a * p.a + p.b * p.b);
+  if (trial > damage) damage = std::min(trial, 1.0);
+  const double z = damage > 0.0 ? evans_marathe_z(damage) : 1.0;
+  p.sigma = o < 0.0 ? sigma_c : pre_peak(o / op) * z * k.ft;
+  const double t = pre_peak(abs_s / sp) * z * fs;
+  p.tau = s < 0.0 ? -t : t;
+  return p;
+}
+
+/// Bolt steel (seed eqs. 11-19): below op the rock-law curve up to sigma_y,
+/// then axial hardening sigma_y + D (sigma_u - sigma_y) (f_axial = D) until
+/// D = 1; shear up to tau_y, then brittle decay f_lateral = (1 - D)^2, whose
+/// integral 1/3 makes eq. 16 with eta = 6 dissipate exactly GfII.
+inline CrackPoint bolt_steel_point(const CrackConstants& k, double o, double s, double h,
+                                   double& damage) {
+  CrackPoint p;
+  const double op = 2.0 * h * k.ft / k.pn;
+  const double sp = 2.0 * h * k.c / k.pt;
+  const double abs_s = std::fabs(s);
+  p.a = o > op ? (o - op) / k.open_range : 0.0;
+  p.b = abs_s > sp ? (abs_s - sp) * k.c / k.slip_energy : 0.0;
+  const double trial = std::sqrt(p.a * p.a + p.b * p.b);
+  if (trial > damage) damage = std::min(trial, 1.0);
+  const double axial = damage < 1.0 ? k.ft + damage * (k.fu - k.ft) : 0.0;
+  const double lateral = (1.0 - damage) * (1.0 - damage);
+  p.sigma = o < 0.0 ? k.pn * o / h : pre_peak(o / op) * axial;
+  const double t = pre_peak(abs_s / sp) * lateral * k.c;
+  p.tau = s < 0.0 ? -t : t;
+  return p;
+}
+
+/// Dispatch on the law id (a switch, not a virtual call).
+inline CrackPoint crack_point(const CrackConstants& k, double o, double s, double h, double& damage) {
+  switch (k.law) {
+    case CrackLaw::kBoltSteel:
+      return bolt_steel_point(k, o, s, h, damage);
+    case CrackLaw::kRock:
+    default:
+      return rock_point(k, o, s, h, damage);
+  }
+}
+
+}  // namespace rockfdem::fdem

@@ -1,0 +1,180 @@
+// The explicit FDEM engine: finite-strain constant-strain triangles, four-node
+// crack elements and central-difference time integration, parallel with
+// OpenMP and bit-identical for any thread count.
+//
+//   rockfdem::fdem::ModelInput in = ...;        // mesh, materials, BCs
+//   rockfdem::fdem::Engine engine(in);          // builds nodes, cracks, dt
+//   engine.run(10000);                          // or run_to_equilibrium(...)
+//   engine.state_hash();                        // equal hashes = identical runs
+//
+// Lifecycle: construct (validates the input, throws InputError), then any
+// mix of run()/step() and stage controls (stiffness factors, activity,
+// boundary conditions, damping). A blow-up throws NumericalError naming step,
+// element or node, quantity and value; the state is then that of the failing
+// step. Three checks run every step at negligible cost: J > 0 and finite for
+// every triangle, finite positions, and the signature of a time step above
+// the stability limit: the free nodes' velocities reversing with growth,
+// sum m v_old.v_new < -1.1 sum m |v_old|^2, three steps in a row (this also
+// catches instabilities that break crack elements instead of inverting
+// triangles).
+//
+// Numbering: triangles keep the ModelInput's order; engine nodes and crack
+// elements are the engine's own (node_vertex() maps nodes back to the mesh).
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "rockfdem/error.hpp"
+#include "rockfdem/fdem/model_input.hpp"
+
+namespace rockfdem::fdem {
+
+enum class CrackState : std::uint8_t { kIntact = 0, kYielding = 1, kBroken = 2 };
+enum class FailureMode : std::uint8_t { kNone = 0, kModeI = 1, kModeII = 2, kMixed = 3 };
+
+/// Whether set_dt may exceed the stability limit.
+enum class DtCheck { kRefuseAboveLimit, kForce };
+
+/// Reference configuration of a triangle when it is (re)activated.
+enum class ActivationReference {
+  kKeep,     ///< keep the original reference (strain measured from the mesh)
+  kCurrent,  ///< stress-free in the current, deformed configuration (lining)
+};
+
+struct BrokenCounts {
+  long mode_I = 0, mode_II = 0, mixed = 0;
+  long total() const { return mode_I + mode_II + mixed; }
+};
+
+/// Stop a stage when both ratios are at or below their tolerances.
+struct EquilibriumCriteria {
+  double force_ratio = 1e-3;    ///< unbalanced_force_ratio()
+  double kinetic_ratio = 1e-3;  ///< kinetic energy over its peak during this call
+  long check_interval = 100;    ///< steps between checks
+  long max_steps = 100000;
+};
+
+struct EquilibriumResult {
+  bool converged = false;
+  long steps = 0;
+  double force_ratio = 0;
+  double kinetic_ratio = 0;
+};
+
+/// Wall time spent in each phase of the step since construction [s].
+struct PhaseTimes {
+  double triangles = 0, cracks = 0, nodes = 0;
+};
+
+class Engine {
+ public:
+  /// Builds nodes, crack elements, masses, boundary records and the time
+  /// step from `input`. Throws InputError for inconsistent input or a dt
+  /// above the stability limit.
+  explicit Engine(const ModelInput& input);
+  ~Engine();
+  Engine(Engine&&) noexcept;
+  Engine& operator=(Engine&&) noexcept;
+  Engine(const Engine&) = delete;
+  Engine& operator=(const Engine&) = delete;
+
+  // --- Sizes and numbering ------------------------------------------------
+  std::size_t n_nodes() const;
+  std::size_t n_triangles() const;
+  std::size_t n_cracks() const;
+  /// Engine node -> mesh vertex.
+  const std::vector<int>& node_vertex() const;
+  std::array<int, 3> triangle_nodes(std::size_t t) const;
+  /// Crack element's nodes: 0,1 on the first face, 3,2 facing them.
+  std::array<int, 4> crack_nodes(std::size_t c) const;
+  /// The two triangles a crack element joins (first face's triangle first).
+  std::array<int, 2> crack_triangles(std::size_t c) const;
+
+  // --- Time step -----------------------------------------------------------
+  /// Stability limit of the central-difference scheme for the current model:
+  /// per node, the exact linearised CST frequency of its stiffest triangle
+  /// plus its crack elements' penalty frequencies, reduced for viscous
+  /// damping by sqrt(1 + xi^2) - xi.
+  double critical_dt() const;
+  /// dt_safety * critical_dt().
+  double stable_dt() const;
+  double dt() const;
+  /// Throws InputError (naming the limit) above critical_dt() unless forced.
+  void set_dt(double dt, DtCheck check = DtCheck::kRefuseAboveLimit);
+
+  // --- Running -------------------------------------------------------------
+  void step();
+  void run(long n_steps);
+  EquilibriumResult run_to_equilibrium(const EquilibriumCriteria& criteria);
+  long step_count() const;
+  double time() const;
+
+  // --- Stage controls ------------------------------------------------------
+  /// Scales the whole stress of triangle t, alpha (sigma0 + C:eps + eta D)
+  /// (core softening, reference sec. 5). alpha in (0, 1e3].
+  void set_stiffness_factor(std::size_t t, double alpha);
+  double stiffness_factor(std::size_t t) const;
+  /// An inactive triangle has no force and no mass; crack elements act only
+  /// between two active triangles. Masses are rebuilt before the next step.
+  void set_active(std::size_t t, bool active,
+                  ActivationReference ref = ActivationReference::kKeep);
+  bool active(std::size_t t) const;
+  void set_boundary_conditions(const std::vector<BoundaryCondition>& bcs);
+  void set_gravity(double gx, double gy);
+  void set_damping(const DampingSettings& damping);
+  /// Assigns material m (and its crack law) to crack element c.
+  void set_crack_material(std::size_t c, int material);
+  /// OpenMP threads for every loop; 0 = OpenMP's default.
+  void set_threads(int n_threads);
+  int threads() const;
+
+  // --- State ---------------------------------------------------------------
+  /// Node positions and velocities, interleaved (x0, y0, x1, y1, ...).
+  const std::vector<double>& positions() const;
+  const std::vector<double>& velocities() const;
+  const std::vector<double>& node_mass() const;
+  /// Overwrites one node's position and velocity (mapping a state in,
+  /// quasi-static drivers, tests).
+  void set_node_state(std::size_t node, double x, double y, double vx, double vy);
+  /// Net force on a node from the last step's element forces and external
+  /// loads, without damping [N/m].
+  std::array<double, 2> node_force(std::size_t node) const;
+  /// Position minus the mesh vertex position (includes any initial displacement).
+  std::array<double, 2> displacement(std::size_t node) const;
+  /// Cauchy stress (sxx, syy, sxy) of triangle t in the current state.
+  std::array<double, 3> triangle_stress(std::size_t t) const;
+  /// Largest damage of the element's three integration points.
+  double crack_damage(std::size_t c) const;
+  CrackState crack_state(std::size_t c) const;
+  FailureMode crack_mode(std::size_t c) const;
+  /// Step at which the element broke; -1 while unbroken.
+  long crack_broken_step(std::size_t c) const;
+
+  // --- Global figures (deterministic block sums) ----------------------------
+  double kinetic_energy() const;
+  /// Hyperelastic energy of Munjiza's law (initial stress excluded).
+  double strain_energy() const;
+  /// Sum over unconstrained node components of |net force| over the sum of
+  /// the magnitudes of the forces acting on them (last step's forces).
+  double unbalanced_force_ratio() const;
+  BrokenCounts broken_counts() const;
+  /// Force the kinematic conditions of `tag` exert on the body [N/m]
+  /// (the platen load of a UCS test).
+  std::array<double, 2> boundary_force(int tag) const;
+  /// FNV-1a 64 over the bytes of the node coordinates, as 16 hex digits.
+  std::string state_hash() const;
+  PhaseTimes phase_times() const;
+  /// Bytes held by the engine's arrays.
+  std::size_t memory_bytes() const;
+
+ private:
+  void check_reversal();
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace rockfdem::fdem

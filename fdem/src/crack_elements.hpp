@@ -1,0 +1,20 @@
+// Four-node crack elements (reference sec. 2): geometry, Simpson integration
+// of the crack law along the element, damage history and breakage.
+#pragma once
+
+#include "engine_data.hpp"
+#include "rockfdem/fdem/engine.hpp"
+
+namespace rockfdem::fdem::detail {
+
+/// Writes every live crack element's four nodal forces into its slots,
+/// advances damage and marks breakage (state, mode, step). A broken or
+/// inactive element's slots are zero.
+void crack_forces(EngineData& d);
+
+/// Failure mode from the summed squared excursions at breakage: mode I when
+/// opening carries at least 90% of a^2 + b^2, mode II when slip does, else
+/// mixed.
+FailureMode classify_failure(double sum_a2, double sum_b2);
+
+}  // namespace rockfdem::fdem::detail

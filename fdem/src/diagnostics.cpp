@@ -1,0 +1,120 @@
+// Global figures of the Engine. Every sum is a fixed-block sum (parallel.hpp)
+// so the figures, like the state, do not depend on the thread count. None of
+// them runs inside the time loop: they are computed when asked for.
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <cstring>
+
+#include "engine_impl.hpp"
+#include "node_update.hpp"
+#include "parallel.hpp"
+#include "triangle_force.hpp"
+
+namespace rockfdem::fdem {
+
+double Engine::kinetic_energy() const {
+  const auto& n = impl_->d.nodes;
+  return detail::block_sum(static_cast<long>(n.size()), impl_->d.threads, [&](long i) {
+    const double vx = n.vel[2 * i], vy = n.vel[2 * i + 1];
+    return 0.5 * n.mass[i] * (vx * vx + vy * vy);
+  });
+}
+
+double Engine::strain_energy() const {
+  const auto& d = impl_->d;
+  return detail::block_sum(static_cast<long>(d.tris.size()), d.threads,
+                           [&](long t) { return detail::triangle_strain_energy(d, t); });
+}
+
+double Engine::unbalanced_force_ratio() const {
+  const auto& d = impl_->d;
+  const long nn = static_cast<long>(d.nodes.size());
+  // A component counts only when free: a constrained one carries a reaction.
+  auto free_x = [&](long i) {
+    const int b = d.nodes.bc[i];
+    return d.nodes.inv_mass[i] > 0 && (b < 0 || d.bc_records[b].x == Constraint::kFree);
+  };
+  auto free_y = [&](long i) {
+    const int b = d.nodes.bc[i];
+    return d.nodes.inv_mass[i] > 0 && (b < 0 || d.bc_records[b].y == Constraint::kFree);
+  };
+  const double net = detail::block_sum(nn, d.threads, [&](long i) {
+    double fx, fy;
+    detail::node_force(d, i, fx, fy);
+    return (free_x(i) ? std::fabs(fx) : 0.0) + (free_y(i) ? std::fabs(fy) : 0.0);
+  });
+  const double gross = detail::block_sum(nn, d.threads, [&](long i) {
+    const bool fx_on = free_x(i), fy_on = free_y(i);
+    double s = (fx_on ? std::fabs(d.nodes.fext[2 * i]) : 0.0) +
+               (fy_on ? std::fabs(d.nodes.fext[2 * i + 1]) : 0.0);
+    for (int k = d.nodes.slot_start[i]; k < d.nodes.slot_start[i + 1]; ++k) {
+      const int sl = d.nodes.slot_index[k];
+      s += (fx_on ? std::fabs(d.slots[2 * sl]) : 0.0) + (fy_on ? std::fabs(d.slots[2 * sl + 1]) : 0.0);
+    }
+    return s;
+  });
+  return gross > 0 ? net / gross : 0.0;
+}
+
+BrokenCounts Engine::broken_counts() const {
+  const auto& c = impl_->d.cracks;
+  BrokenCounts b;
+  for (std::size_t e = 0; e < c.size(); ++e) {
+    if (c.state[e] != std::uint8_t(CrackState::kBroken)) continue;
+    switch (FailureMode(c.mode[e])) {
+      case FailureMode::kModeI: ++b.mode_I; break;
+      case FailureMode::kModeII: ++b.mode_II; break;
+      default: ++b.mixed; break;
+    }
+  }
+  return b;
+}
+
+std::array<double, 2> Engine::boundary_force(int tag) const {
+  const auto& d = impl_->d;
+  double sx = 0, sy = 0;
+  for (const auto& tn : d.tag_nodes) {
+    if (tn.tag != tag) continue;
+    for (int i : tn.nodes) {
+      // The node barely accelerates, so the condition balances the body's
+      // force on it: f_bc = -(f_internal + f_external), per constrained component.
+      double fx, fy;
+      detail::node_force(d, i, fx, fy);
+      const auto& r = d.bc_records[d.nodes.bc[i]];
+      if (r.x != Constraint::kFree) sx -= fx;
+      if (r.y != Constraint::kFree) sy -= fy;
+    }
+  }
+  return {sx, sy};
+}
+
+std::string Engine::state_hash() const {
+  std::uint64_t h = 1469598103934665603ull;  // FNV-1a 64 offset basis
+  const auto& p = impl_->d.nodes.pos;
+  const auto* bytes = reinterpret_cast<const unsigned char*>(p.data());
+  for (std::size_t i = 0; i < p.size() * sizeof(double); ++i) {
+    h ^= bytes[i];
+    h *= 1099511628211ull;
+  }
+  char buf[17];
+  std::snprintf(buf, sizeof buf, "%016llx", static_cast<unsigned long long>(h));
+  return buf;
+}
+
+PhaseTimes Engine::phase_times() const { return impl_->times; }
+
+std::size_t Engine::memory_bytes() const {
+  const auto& d = impl_->d;
+  auto b = [](const auto& v) { return v.capacity() * sizeof(v[0]); };
+  const auto& n = d.nodes;
+  const auto& t = d.tris;
+  const auto& c = d.cracks;
+  return b(n.pos) + b(n.vel) + b(n.mesh_pos) + b(n.mass) + b(n.inv_mass) + b(n.fext) + b(n.bc) +
+         b(n.vertex) + b(n.slot_start) + b(n.slot_index) + b(t.nodes) + b(t.ref_inv) +
+         b(t.area0) + b(t.eta) + b(t.alpha) + b(t.sigma0) + b(t.material) + b(t.active) +
+         b(c.nodes) + b(c.tri) + b(c.damage) + b(c.material) + b(c.state) + b(c.mode) +
+         b(c.active) + b(c.broken_step) + b(d.slots) + b(d.vertex_nodes) + b(d.vertex_node_start);
+}
+
+}  // namespace rockfdem::fdem

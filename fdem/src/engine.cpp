@@ -1,0 +1,388 @@
+// The public Engine: construction from a ModelInput, the explicit step as a
+// fixed list of timed phases, stage controls and state access.
+//
+// One step:
+//   1. triangles: finite-strain CST forces into the triangles' slots
+//   2. cracks:    crack-law forces into the crack elements' slots, damage
+//   3. nodes:     gather slots per node, damping, BCs, central differences
+// Each phase is one parallel loop whose iterations write disjoint memory, so
+// the result is bit-identical for any thread count. Errors found inside a
+// loop are reduced to the lowest offending index and raised after it.
+#include "rockfdem/fdem/engine.hpp"
+
+#include <omp.h>
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+#include "boundary.hpp"
+#include "crack_elements.hpp"
+#include "engine_impl.hpp"
+#include "node_update.hpp"
+#include "parallel.hpp"
+#include "stable_dt.hpp"
+#include "topology.hpp"
+#include "triangle_force.hpp"
+
+namespace rockfdem::fdem {
+namespace {
+
+detail::SolidConstants solid_constants(const Material& m, Plane plane) {
+  detail::SolidConstants s;
+  const double e = m.young, nu = m.poisson;
+  s.mu = e / (2.0 * (1.0 + nu));
+  s.lambda = plane == Plane::kStrain ? e * nu / ((1.0 + nu) * (1.0 - 2.0 * nu))
+                                     : e * nu / (1.0 - nu * nu);
+  s.rho = m.density;
+  s.cp = std::sqrt((s.lambda + 2.0 * s.mu) / s.rho);
+  s.cs = std::sqrt(s.mu / s.rho);
+  return s;
+}
+
+/// eta = ratio * 2 h sqrt(E rho) with h the triangle's smallest altitude.
+void set_viscous_damping(detail::EngineData& d) {
+  for (std::size_t t = 0; t < d.tris.size(); ++t) {
+    const Material& m = d.materials[d.tris.material[t]];
+    if (m.damping_ratio <= 0) continue;
+    const int* nd = &d.tris.nodes[3 * t];
+    const double* p = d.nodes.pos.data();
+    double longest = 0;
+    for (int k = 0; k < 3; ++k) {
+      const int a = nd[k], b = nd[(k + 1) % 3];
+      longest = std::max(longest, std::hypot(p[2 * b] - p[2 * a], p[2 * b + 1] - p[2 * a + 1]));
+    }
+    const double h = 2.0 * d.tris.area0[t] / longest;
+    d.tris.eta[t] = m.damping_ratio * 2.0 * h * std::sqrt(m.young * m.density);
+  }
+}
+
+std::string fmt(double v) {
+  std::ostringstream s;
+  s.precision(6);
+  s << v;
+  return s.str();
+}
+
+[[noreturn]] void raise_bad_triangle(const detail::EngineData& d, long t) {
+  double j;
+  detail::triangle_stress(d, t, j);
+  std::ostringstream msg;
+  msg << "fdem: step " << d.step << " (t = " << fmt(d.time) << " s): triangle " << t;
+  if (std::isfinite(j)) {
+    msg << " is inverted: Jacobian J = " << fmt(j) << " <= 0";
+  } else {
+    msg << " has a non-finite Jacobian J = " << j;
+  }
+  msg << " (nodes";
+  for (int k = 0; k < 3; ++k) {
+    const int n = d.tris.nodes[3 * t + k];
+    msg << ' ' << n << " at (" << fmt(d.nodes.pos[2 * n]) << ", " << fmt(d.nodes.pos[2 * n + 1])
+        << ")";
+  }
+  msg << "). The run is unstable: reduce dt (now " << fmt(d.dt)
+      << " s), the loading rate or the penalties, or add damping.";
+  throw NumericalError(msg.str());
+}
+
+[[noreturn]] void raise_bad_node(const detail::EngineData& d, long n) {
+  std::ostringstream msg;
+  msg << "fdem: step " << d.step << ": node " << n << " (mesh vertex " << d.nodes.vertex[n]
+      << ") has a non-finite position (" << d.nodes.pos[2 * n] << ", " << d.nodes.pos[2 * n + 1]
+      << "), velocity (" << d.nodes.vel[2 * n] << ", " << d.nodes.vel[2 * n + 1]
+      << "). Reduce dt (now " << fmt(d.dt) << " s) or check the loads on that node.";
+  throw NumericalError(msg.str());
+}
+
+void check_index(std::size_t i, std::size_t n, const char* what) {
+  if (i >= n)
+    throw InputError(std::string("fdem: ") + what + " " + std::to_string(i) + " outside [0, " +
+                     std::to_string(n) + ")");
+}
+
+}  // namespace
+
+// --- Construction -----------------------------------------------------------
+
+Engine::Engine(const ModelInput& in) : impl_(std::make_unique<Impl>()) {
+  detail::validate_input(in);
+  auto& d = impl_->d;
+  d.materials = in.materials;
+  for (const Material& m : in.materials) {
+    d.solids.push_back(solid_constants(m, in.plane));
+    d.crack_laws.push_back(make_crack_constants(m));
+  }
+  d.threads = in.threads;
+  d.damping = in.damping;
+  d.gravity[0] = in.gravity_x;
+  d.gravity[1] = in.gravity_y;
+  detail::build_topology(in, d);
+  set_viscous_damping(d);
+  detail::resolve_edges(in, d);
+  detail::apply_boundary_conditions(in.boundary_conditions, d);
+  impl_->dt_safety = in.dt_safety;
+  if (in.dt > 0) set_dt(in.dt);
+  impl_->refresh();
+}
+
+Engine::~Engine() = default;
+Engine::Engine(Engine&&) noexcept = default;
+Engine& Engine::operator=(Engine&&) noexcept = default;
+
+// --- Sizes -------------------------------------------------------------------
+
+std::size_t Engine::n_nodes() const { return impl_->d.nodes.size(); }
+std::size_t Engine::n_triangles() const { return impl_->d.tris.size(); }
+std::size_t Engine::n_cracks() const { return impl_->d.cracks.size(); }
+const std::vector<int>& Engine::node_vertex() const { return impl_->d.nodes.vertex; }
+
+std::array<int, 3> Engine::triangle_nodes(std::size_t t) const {
+  check_index(t, n_triangles(), "triangle");
+  const int* n = &impl_->d.tris.nodes[3 * t];
+  return {n[0], n[1], n[2]};
+}
+
+std::array<int, 4> Engine::crack_nodes(std::size_t c) const {
+  check_index(c, n_cracks(), "crack element");
+  const int* n = &impl_->d.cracks.nodes[4 * c];
+  return {n[0], n[1], n[2], n[3]};
+}
+
+std::array<int, 2> Engine::crack_triangles(std::size_t c) const {
+  check_index(c, n_cracks(), "crack element");
+  return {impl_->d.cracks.tri[2 * c], impl_->d.cracks.tri[2 * c + 1]};
+}
+
+// --- Time step -----------------------------------------------------------------
+
+/// Brings masses, loads and the stability limit up to date after a stage
+/// change. An automatic dt follows the new limit; an explicit one must stay
+/// below it unless it was forced.
+void Engine::Impl::refresh() {
+  if (d.masses_dirty) detail::refresh_nodes(d);
+  if (critical_dt >= 0) return;
+  critical_dt = detail::critical_dt(d);
+  if (auto_dt) {
+    d.dt = dt_safety * critical_dt;
+  } else if (!forced_dt && d.dt > critical_dt) {
+    throw InputError("fdem: after a stage change the stability limit is " + fmt(critical_dt) +
+                     " s, below the dt = " + fmt(d.dt) +
+                     " s set earlier; set a smaller dt (or force it)");
+  }
+}
+
+double Engine::critical_dt() const {
+  impl_->refresh();
+  return impl_->critical_dt;
+}
+
+double Engine::stable_dt() const { return impl_->dt_safety * critical_dt(); }
+double Engine::dt() const { return impl_->d.dt; }
+
+void Engine::set_dt(double dt, DtCheck check) {
+  if (!(dt > 0)) throw InputError("fdem: dt = " + fmt(dt) + " s must be > 0");
+  const double limit = critical_dt();
+  if (dt > limit && check == DtCheck::kRefuseAboveLimit)
+    throw InputError("fdem: dt = " + fmt(dt) + " s exceeds the stability limit " + fmt(limit) +
+                     " s of this mesh and its penalties (the default uses " +
+                     fmt(impl_->dt_safety) + " of it, " + fmt(stable_dt()) +
+                     " s); choose dt <= " + fmt(limit) + " s or force it with DtCheck::kForce");
+  impl_->d.dt = dt;
+  impl_->auto_dt = false;
+  impl_->forced_dt = check == DtCheck::kForce;
+}
+
+// --- Running -----------------------------------------------------------------------
+
+void Engine::step() {
+  auto& d = impl_->d;
+  impl_->refresh();
+  const double t0 = omp_get_wtime();
+  const long bad_tri = detail::triangle_forces(d);
+  const double t1 = omp_get_wtime();
+  impl_->times.triangles += t1 - t0;
+  if (bad_tri >= 0) raise_bad_triangle(d, bad_tri);
+  detail::crack_forces(d);
+  const double t2 = omp_get_wtime();
+  impl_->times.cracks += t2 - t1;
+  const long bad_node = detail::node_update(d);
+  impl_->times.nodes += omp_get_wtime() - t2;
+  ++d.step;
+  d.time += d.dt;
+  if (bad_node >= 0) raise_bad_node(d, bad_node);
+  check_reversal();
+}
+
+/// Above the stability limit the stiffest mode grows by a factor g > 1 per
+/// step with alternating sign: v_new = -g v_old. A mass-weighted velocity
+/// correlation below -1.1 three steps in a row is that and nothing physical.
+void Engine::check_reversal() {
+  auto& im = *impl_;
+  const double dot = im.d.reversal[0], kin = im.d.reversal[1];
+  const bool growing = kin > 0 && dot < -1.1 * kin;
+  im.reversals = growing ? im.reversals + 1 : 0;
+  if (im.reversals < 3) return;
+  std::ostringstream msg;
+  msg << "fdem: step " << im.d.step << ": unstable time integration: the free nodes' velocities "
+      << "reversed and grew by a factor " << fmt(-dot / kin) << " (sum m v_old.v_new / sum m v_old^2)"
+      << " for 3 steps in a row. dt = " << fmt(im.d.dt) << " s against the stability limit "
+      << fmt(im.critical_dt) << " s; reduce dt (do not force it above the limit).";
+  throw NumericalError(msg.str());
+}
+
+void Engine::run(long n_steps) {
+  for (long i = 0; i < n_steps; ++i) step();
+}
+
+EquilibriumResult Engine::run_to_equilibrium(const EquilibriumCriteria& c) {
+  if (c.check_interval <= 0 || c.max_steps < 0)
+    throw InputError("fdem: equilibrium check interval must be > 0 and max steps >= 0");
+  EquilibriumResult r;
+  double peak = kinetic_energy();
+  while (r.steps < c.max_steps) {
+    const long n = std::min(c.check_interval, c.max_steps - r.steps);
+    run(n);
+    r.steps += n;
+    const double ke = kinetic_energy();
+    peak = std::max(peak, ke);
+    r.kinetic_ratio = peak > 0 ? ke / peak : 0.0;
+    r.force_ratio = unbalanced_force_ratio();
+    if (r.force_ratio <= c.force_ratio && r.kinetic_ratio <= c.kinetic_ratio) {
+      r.converged = true;
+      break;
+    }
+  }
+  return r;
+}
+
+long Engine::step_count() const { return impl_->d.step; }
+double Engine::time() const { return impl_->d.time; }
+
+// --- Stage controls ------------------------------------------------------------------
+
+void Engine::set_stiffness_factor(std::size_t t, double alpha) {
+  check_index(t, n_triangles(), "triangle");
+  if (!(alpha >= 0 && alpha <= 1e3))
+    throw InputError("fdem: stiffness factor " + fmt(alpha) + " for triangle " +
+                     std::to_string(t) + " must lie in [0, 1000]");
+  impl_->d.tris.alpha[t] = alpha;
+  impl_->critical_dt = -1;
+}
+
+double Engine::stiffness_factor(std::size_t t) const {
+  check_index(t, n_triangles(), "triangle");
+  return impl_->d.tris.alpha[t];
+}
+
+void Engine::set_active(std::size_t t, bool on, ActivationReference ref) {
+  check_index(t, n_triangles(), "triangle");
+  auto& d = impl_->d;
+  if (on && ref == ActivationReference::kCurrent) detail::set_reference_to_current(d, t);
+  d.tris.active[t] = on ? 1 : 0;
+  d.masses_dirty = true;
+  impl_->critical_dt = -1;
+}
+
+bool Engine::active(std::size_t t) const {
+  check_index(t, n_triangles(), "triangle");
+  return impl_->d.tris.active[t] != 0;
+}
+
+void Engine::set_boundary_conditions(const std::vector<BoundaryCondition>& bcs) {
+  for (const auto& bc : bcs) {
+    bool found = false;
+    for (const auto& e : impl_->d.edges) found = found || e.tag == bc.tag;
+    if (!found)
+      throw InputError("fdem: boundary condition for tag " + std::to_string(bc.tag) +
+                       " but no edge carries it");
+  }
+  detail::apply_boundary_conditions(bcs, impl_->d);
+}
+
+void Engine::set_gravity(double gx, double gy) {
+  impl_->d.gravity[0] = gx;
+  impl_->d.gravity[1] = gy;
+  impl_->d.masses_dirty = true;
+}
+
+void Engine::set_damping(const DampingSettings& damping) {
+  if (!(damping.local >= 0 && damping.local < 1) || !(damping.mass_proportional >= 0))
+    throw InputError("fdem: local damping must lie in [0, 1) and mass-proportional be >= 0");
+  impl_->d.damping = damping;
+  impl_->critical_dt = -1;  // local and mass damping lower the limit
+}
+
+void Engine::set_crack_material(std::size_t c, int material) {
+  check_index(c, n_cracks(), "crack element");
+  check_index(static_cast<std::size_t>(material), impl_->d.materials.size(), "material");
+  impl_->d.cracks.material[c] = static_cast<std::uint16_t>(material);
+  impl_->critical_dt = -1;
+}
+
+void Engine::set_threads(int n_threads) {
+  if (n_threads < 0) throw InputError("fdem: thread count must be >= 0 (0 = OpenMP default)");
+  impl_->d.threads = n_threads;
+}
+
+int Engine::threads() const { return detail::thread_count(impl_->d.threads); }
+
+// --- State -----------------------------------------------------------------------------
+
+const std::vector<double>& Engine::positions() const { return impl_->d.nodes.pos; }
+const std::vector<double>& Engine::velocities() const { return impl_->d.nodes.vel; }
+
+const std::vector<double>& Engine::node_mass() const {
+  if (impl_->d.masses_dirty) detail::refresh_nodes(impl_->d);
+  return impl_->d.nodes.mass;
+}
+
+void Engine::set_node_state(std::size_t node, double x, double y, double vx, double vy) {
+  check_index(node, n_nodes(), "node");
+  auto& n = impl_->d.nodes;
+  n.pos[2 * node] = x;
+  n.pos[2 * node + 1] = y;
+  n.vel[2 * node] = vx;
+  n.vel[2 * node + 1] = vy;
+}
+
+std::array<double, 2> Engine::node_force(std::size_t node) const {
+  check_index(node, n_nodes(), "node");
+  std::array<double, 2> f;
+  detail::node_force(impl_->d, node, f[0], f[1]);
+  return f;
+}
+
+std::array<double, 2> Engine::displacement(std::size_t node) const {
+  check_index(node, n_nodes(), "node");
+  const auto& n = impl_->d.nodes;
+  return {n.pos[2 * node] - n.mesh_pos[2 * node], n.pos[2 * node + 1] - n.mesh_pos[2 * node + 1]};
+}
+
+std::array<double, 3> Engine::triangle_stress(std::size_t t) const {
+  check_index(t, n_triangles(), "triangle");
+  double j;
+  return detail::triangle_stress(impl_->d, t, j);
+}
+
+double Engine::crack_damage(std::size_t c) const {
+  check_index(c, n_cracks(), "crack element");
+  const double* d = &impl_->d.cracks.damage[3 * c];
+  return std::max({d[0], d[1], d[2]});
+}
+
+CrackState Engine::crack_state(std::size_t c) const {
+  check_index(c, n_cracks(), "crack element");
+  return CrackState(impl_->d.cracks.state[c]);
+}
+
+FailureMode Engine::crack_mode(std::size_t c) const {
+  check_index(c, n_cracks(), "crack element");
+  return FailureMode(impl_->d.cracks.mode[c]);
+}
+
+long Engine::crack_broken_step(std::size_t c) const {
+  check_index(c, n_cracks(), "crack element");
+  return impl_->d.cracks.broken_step[c];
+}
+
+}  // namespace rockfdem::fdem

@@ -1,0 +1,114 @@
+// The engine's state as structure-of-arrays. Private to fdem/: the kernels
+// (triangle_force, crack_elements, node_update) read and write these arrays
+// directly; engine.cpp owns one EngineData behind the public Engine.
+//
+// Force slots: every triangle writes its three nodal forces into its own
+// slots [3t, 3t+3), every crack element its four into
+// [3 n_tri + 4c, 3 n_tri + 4c + 4). Each node then gathers its incident
+// slots in ascending slot order (CSR built once). No two loop iterations write
+// the same memory, so results do not depend on the thread count.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+#include "rockfdem/fdem/crack_law.hpp"
+#include "rockfdem/fdem/model_input.hpp"
+
+namespace rockfdem::fdem::detail {
+
+/// Per-material constants the triangle kernel needs.
+struct SolidConstants {
+  double mu = 0, lambda = 0;  ///< Lame constants (lambda* in plane stress)
+  double rho = 0;
+  double cp = 0, cs = 0;      ///< P and S wave speeds (absorbing boundaries)
+};
+
+struct Nodes {
+  std::vector<double> pos, vel;     ///< interleaved x, y
+  std::vector<double> mesh_pos;     ///< mesh vertex position (displacement origin)
+  std::vector<double> mass, inv_mass;
+  std::vector<double> fext;         ///< interleaved: gravity + tractions [N/m]
+  std::vector<int> bc;              ///< -1 or index into BoundaryRecords
+  std::vector<int> vertex;          ///< mesh vertex of each node
+  std::vector<int> slot_start;      ///< CSR over force slots, n + 1 entries
+  std::vector<int> slot_index;
+  std::size_t size() const { return mass.size(); }
+};
+
+struct Triangles {
+  std::vector<int> nodes;           ///< 3 per triangle
+  std::vector<double> ref_inv;      ///< F0^-1 row-major, 4 per triangle
+  std::vector<double> area0;        ///< reference area
+  std::vector<double> eta;          ///< viscous damping coefficient [Pa s]
+  std::vector<double> alpha;        ///< stiffness factor
+  std::vector<double> sigma0;       ///< initial stress (sxx, syy, sxy); empty if none
+  std::vector<std::uint16_t> material;
+  std::vector<std::uint8_t> active;
+  std::size_t size() const { return area0.size(); }
+};
+
+struct Cracks {
+  std::vector<int> nodes;           ///< 4 per element: 0,1 first face; 3 faces 0, 2 faces 1
+  std::vector<int> tri;             ///< 2 per element
+  std::vector<double> damage;       ///< 3 per element (end 0, midpoint, end 1)
+  std::vector<std::uint16_t> material;
+  std::vector<std::uint8_t> state;  ///< CrackState
+  std::vector<std::uint8_t> mode;   ///< FailureMode
+  std::vector<std::uint8_t> active; ///< both triangles active
+  std::vector<std::int32_t> broken_step;
+  std::size_t size() const { return material.size(); }
+};
+
+/// Kinematic and dashpot conditions of the few nodes that have any.
+struct BoundaryRecord {
+  Constraint x = Constraint::kFree, y = Constraint::kFree;
+  double vx = 0, vy = 0;
+  double cxx = 0, cxy = 0, cyy = 0;  ///< dashpot matrix [N s/m^2]: f = -C v
+};
+
+/// A tagged edge resolved to the triangle that owns it: corners ka -> kb run
+/// counter-clockwise in that triangle.
+struct EdgeRef {
+  int tag = 0, tri = 0, ka = 0, kb = 0;
+};
+
+/// Constant nodal force from a traction or pressure (dead load).
+struct NodalLoad {
+  int node = 0;
+  double fx = 0, fy = 0;
+};
+
+/// Nodes whose velocity a tag prescribes (reaction forces are summed over them).
+struct TagNodes {
+  int tag = 0;
+  std::vector<int> nodes;
+};
+
+struct EngineData {
+  Nodes nodes;
+  Triangles tris;
+  Cracks cracks;
+  std::vector<SolidConstants> solids;      ///< per material
+  std::vector<CrackConstants> crack_laws;  ///< per material
+  std::vector<Material> materials;
+  std::vector<BoundaryRecord> bc_records;
+  std::vector<EdgeRef> edges;
+  std::vector<int> vertex_node_start, vertex_nodes;  ///< CSR mesh vertex -> engine nodes
+  std::vector<NodalLoad> loads;
+  std::vector<TagNodes> tag_nodes;
+  bool masses_dirty = true;                 ///< rebuild masses, fext, crack activity before stepping
+  std::vector<double> slots;               ///< interleaved fx, fy per slot
+  std::vector<double> block_partial;       ///< node loop: 2 partial sums per node block
+  double reversal[2] = {0, 0};             ///< sum m v_old.v_new, sum m v_old^2 (free nodes)
+  DampingSettings damping;
+  double gravity[2] = {0, 0};
+  double dt = 0;
+  long step = 0;
+  double time = 0;
+  int threads = 0;
+  std::size_t crack_slot0() const { return 3 * tris.size(); }
+};
+
+}  // namespace rockfdem::fdem::detail

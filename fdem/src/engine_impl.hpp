@@ -1,0 +1,22 @@
+// What the public Engine holds behind its pointer. Shared by engine.cpp
+// (construction, stepping, stage controls) and diagnostics.cpp (global
+// figures).
+#pragma once
+
+#include "engine_data.hpp"
+#include "rockfdem/fdem/engine.hpp"
+
+namespace rockfdem::fdem {
+
+struct Engine::Impl {
+  detail::EngineData d;
+  PhaseTimes times;
+  double dt_safety = 0.8;
+  double critical_dt = -1;  ///< cached; < 0 when it must be recomputed
+  bool auto_dt = true;      ///< dt follows dt_safety * critical_dt
+  bool forced_dt = false;   ///< an explicit dt above the limit was forced
+  int reversals = 0;        ///< consecutive steps with growing velocity reversal
+  void refresh();
+};
+
+}  // namespace rockfdem::fdem

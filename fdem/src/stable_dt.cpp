@@ -1,0 +1,256 @@
+// Stability limit. For a constant-strain triangle with lumped mass
+// M = rho A0 / 3 I and stiffness K = A0 B^T D B, M^-1 K = (3 / rho) B^T D B,
+// whose largest eigenvalue equals that of the 3x3 matrix D^1/2 (B B^T) D^1/2:
+// a closed form per triangle, no 6x6 eigenproblem. The viscous stress eta D
+// gives C = eta A0 B^T V B with V = diag(1, 1, 1/2) (engineering shear), and
+// the damping ratio of the stiffest mode is bounded by
+// lambda_max(M^-1 C) / (2 omega).
+#include "stable_dt.hpp"
+
+#include <Eigen/Dense>
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "parallel.hpp"
+#include "rockfdem/fdem/engine.hpp"
+
+namespace rockfdem::fdem::detail {
+
+double damped_limit(const EngineData& d, double omega, double xi_viscous);
+
+namespace {
+
+/// B B^T for the CST with shape-function gradients from F0^-1.
+Eigen::Matrix3d gradient_product(const double* g) {
+  const double b1 = g[0], c1 = g[1], b2 = g[2], c2 = g[3];
+  const double b0 = -(b1 + b2), c0 = -(c1 + c2);
+  const double sbb = b0 * b0 + b1 * b1 + b2 * b2;
+  const double scc = c0 * c0 + c1 * c1 + c2 * c2;
+  const double sbc = b0 * c0 + b1 * c1 + b2 * c2;
+  Eigen::Matrix3d m;
+  m << sbb, 0, sbc, 0, scc, sbc, sbc, sbc, sbb + scc;
+  return m;
+}
+
+double largest_eigenvalue(const Eigen::Matrix3d& sym) {
+  Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver;
+  solver.computeDirect(sym, Eigen::EigenvaluesOnly);
+  return solver.eigenvalues()(2);
+}
+
+/// Square root of the Voigt elasticity matrix [[a, l, 0], [l, a, 0], [0, 0, mu]].
+Eigen::Matrix3d elasticity_sqrt(double lambda, double mu) {
+  const double a = lambda + 2.0 * mu;
+  const double s1 = std::sqrt(a + lambda), s2 = std::sqrt(a - lambda);
+  Eigen::Matrix3d r = Eigen::Matrix3d::Zero();
+  r(0, 0) = r(1, 1) = 0.5 * (s1 + s2);
+  r(0, 1) = r(1, 0) = 0.5 * (s1 - s2);
+  r(2, 2) = std::sqrt(mu);
+  return r;
+}
+
+/// Gershgorin row sums of the crack elements' penalty stiffness, mass
+/// normalised: node 0 couples to itself and its facing node 3 with weight
+/// 1/3 and to the other pair with 1/6 (Simpson's consistent weights).
+void add_crack_rows(const EngineData& d, std::vector<double>& row) {
+  const double* m = d.nodes.mass.data();
+  for (std::size_t c = 0; c < d.cracks.size(); ++c) {
+    if (!d.cracks.active[c] || d.cracks.state[c] == std::uint8_t(CrackState::kBroken)) continue;
+    const CrackConstants& k = d.crack_laws[d.cracks.material[c]];
+    const double pen = std::max(k.pn, k.pt);
+    const int* nd = &d.cracks.nodes[4 * c];
+    // For node j: facing node, and the two nodes of the other end.
+    static constexpr int facing[4] = {3, 2, 1, 0}, other[4] = {1, 0, 3, 2};
+    for (int j = 0; j < 4; ++j) {
+      const double mi = m[nd[j]];
+      if (mi <= 0) continue;
+      const double mf = m[nd[facing[j]]], mo = m[nd[other[j]]], mof = m[nd[facing[other[j]]]];
+      auto term = [&](double w, double mj) { return mj > 0 ? w / std::sqrt(mi * mj) : 0.0; };
+      row[nd[j]] += pen * (term(1.0 / 3.0, mi) + term(1.0 / 3.0, mf) + term(1.0 / 6.0, mo) +
+                           term(1.0 / 6.0, mof));
+    }
+  }
+}
+
+}  // namespace
+
+void triangle_frequency(const EngineData& d, std::size_t t, double& omega2, double& xi) {
+  const SolidConstants& s = d.solids[d.tris.material[t]];
+  const Eigen::Matrix3d bbt = gradient_product(&d.tris.ref_inv[4 * t]);
+  const Eigen::Matrix3d root = elasticity_sqrt(s.lambda, s.mu);
+  const double alpha = d.tris.alpha[t];
+  omega2 = 3.0 / s.rho * alpha * largest_eigenvalue(root * bbt * root);
+  xi = 0;
+  if (d.tris.eta[t] > 0 && omega2 > 0) {
+    const Eigen::Vector3d v(1.0, 1.0, std::sqrt(0.5));
+    const double c_max = 3.0 * d.tris.eta[t] * alpha / s.rho *
+                         largest_eigenvalue(v.asDiagonal() * bbt * v.asDiagonal());
+    xi = c_max / (2.0 * std::sqrt(omega2));
+  }
+}
+
+double bound_critical_dt(const EngineData& d) {
+  const std::size_t nn = d.nodes.size();
+  std::vector<double> tri_w2(nn, 0.0), tri_xi(nn, 0.0), crack_w2(nn, 0.0);
+  for (std::size_t t = 0; t < d.tris.size(); ++t) {
+    if (!d.tris.active[t]) continue;
+    double w2, xi;
+    triangle_frequency(d, t, w2, xi);
+    for (int k = 0; k < 3; ++k) {
+      const int n = d.tris.nodes[3 * t + k];
+      tri_w2[n] = std::max(tri_w2[n], w2);
+      tri_xi[n] = std::max(tri_xi[n], xi);
+    }
+  }
+  add_crack_rows(d, crack_w2);
+  double dt = std::numeric_limits<double>::infinity();
+  for (std::size_t n = 0; n < nn; ++n) {
+    const double w2 = tri_w2[n] + crack_w2[n];
+    if (w2 > 0) dt = std::min(dt, damped_limit(d, std::sqrt(w2), tri_xi[n]));
+  }
+  return dt;
+}
+
+}  // namespace rockfdem::fdem::detail
+
+namespace rockfdem::fdem::detail {
+namespace {
+
+/// Deterministic pseudo-random start vector in [-1, 1] (splitmix64).
+double start_value(std::uint64_t i) {
+  std::uint64_t z = i + 0x9e3779b97f4a7c15ull;
+  z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ull;
+  z = (z ^ (z >> 27)) * 0x94d049bb133111ebull;
+  z ^= z >> 31;
+  return double(z >> 11) / double(1ull << 52) - 1.0;
+}
+
+/// Linearised stiffness times u, into the slots `s` (same layout as the
+/// force slots): small-strain CST at the reference configuration and the
+/// crack elements' initial penalty slopes pn/h, pt/h at the current geometry.
+void apply_stiffness(const EngineData& d, const std::vector<double>& u, std::vector<double>& s) {
+  const long nt = static_cast<long>(d.tris.size()), nc = static_cast<long>(d.cracks.size());
+#pragma omp parallel for schedule(static) num_threads(thread_count(d.threads))
+  for (long t = 0; t < nt; ++t) {
+    double* out = &s[6 * t];
+    if (!d.tris.active[t]) {
+      for (int k = 0; k < 6; ++k) out[k] = 0.0;
+      continue;
+    }
+    const int* nd = &d.tris.nodes[3 * t];
+    const double* g = &d.tris.ref_inv[4 * t];
+    const double b[3] = {-(g[0] + g[2]), g[0], g[2]}, c[3] = {-(g[1] + g[3]), g[1], g[3]};
+    double exx = 0, eyy = 0, gxy = 0;
+    for (int k = 0; k < 3; ++k) {
+      exx += b[k] * u[2 * nd[k]];
+      eyy += c[k] * u[2 * nd[k] + 1];
+      gxy += c[k] * u[2 * nd[k]] + b[k] * u[2 * nd[k] + 1];
+    }
+    const SolidConstants& m = d.solids[d.tris.material[t]];
+    const double w = d.tris.alpha[t] * d.tris.area0[t];
+    const double sxx = w * ((m.lambda + 2 * m.mu) * exx + m.lambda * eyy);
+    const double syy = w * (m.lambda * exx + (m.lambda + 2 * m.mu) * eyy);
+    const double sxy = w * m.mu * gxy;
+    for (int k = 0; k < 3; ++k) {
+      out[2 * k] = b[k] * sxx + c[k] * sxy;
+      out[2 * k + 1] = c[k] * syy + b[k] * sxy;
+    }
+  }
+  const std::size_t slot0 = d.crack_slot0();
+#pragma omp parallel for schedule(static) num_threads(thread_count(d.threads))
+  for (long e = 0; e < nc; ++e) {
+    double* out = &s[2 * (slot0 + 4 * e)];
+    for (int k = 0; k < 8; ++k) out[k] = 0.0;
+    if (!d.cracks.active[e] || d.cracks.state[e] == std::uint8_t(CrackState::kBroken)) continue;
+    const int* nd = &d.cracks.nodes[4 * e];
+    const double* p = d.nodes.pos.data();
+    const double tx = 0.5 * (p[2 * nd[1]] + p[2 * nd[2]] - p[2 * nd[0]] - p[2 * nd[3]]);
+    const double ty = 0.5 * (p[2 * nd[1] + 1] + p[2 * nd[2] + 1] - p[2 * nd[0] + 1] - p[2 * nd[3] + 1]);
+    const double h = std::sqrt(tx * tx + ty * ty), ex = tx / h, ey = ty / h;
+    const CrackConstants& k = d.crack_laws[d.cracks.material[e]];
+    double o[2], sl[2];
+    for (int end = 0; end < 2; ++end) {
+      const int a = nd[end], f = nd[3 - end];
+      const double dx = u[2 * a] - u[2 * f], dy = u[2 * a + 1] - u[2 * f + 1];
+      o[end] = -dx * ey + dy * ex;
+      sl[end] = dx * ex + dy * ey;
+    }
+    // Simpson: end weight h/6, half the midpoint's 2h/3; stresses pn o / h.
+    for (int end = 0; end < 2; ++end) {
+      const double on = (o[end] / 6.0 + (o[0] + o[1]) / 6.0) * k.pn;
+      const double st = (sl[end] / 6.0 + (sl[0] + sl[1]) / 6.0) * k.pt;
+      const double fx = st * ex - on * ey, fy = st * ey + on * ex;
+      out[2 * end] = fx;
+      out[2 * end + 1] = fy;
+      out[2 * (3 - end)] = -fx;
+      out[2 * (3 - end) + 1] = -fy;
+    }
+  }
+}
+
+}  // namespace
+
+/// 2 / omega reduced for damping. Viscous (ratio xi) and mass-proportional
+/// (c m v, ratio c / (2 omega)) damping shrink it by sqrt(1 + xi^2) - xi.
+/// Local damping raises a decelerating force to (1 + alpha) |f|, i.e. the
+/// stiffness seen by the stiffest mode, so it divides the limit by
+/// sqrt(1 + alpha).
+double damped_limit(const EngineData& d, double omega, double xi_viscous) {
+  const double xi = xi_viscous + d.damping.mass_proportional / (2.0 * omega);
+  return 2.0 / omega * (std::sqrt(1.0 + xi * xi) - xi) / std::sqrt(1.0 + d.damping.local);
+}
+
+double power_critical_dt(const EngineData& d, int max_iterations) {
+  const long nn = static_cast<long>(d.nodes.size());
+  std::vector<double> u(2 * nn), s(d.slots.size());
+  const double* m = d.nodes.mass.data();
+  for (long i = 0; i < 2 * nn; ++i) u[i] = m[i / 2] > 0 ? start_value(i) : 0.0;
+  double lambda = 0;
+  for (int it = 0; it < max_iterations; ++it) {
+    apply_stiffness(d, u, s);
+    // Rayleigh quotient u.K u / u.M u, then u <- M^-1 K u, M-normalised.
+    double ku[2];
+    std::vector<double> next(2 * nn, 0.0);
+#pragma omp parallel for schedule(static) num_threads(thread_count(d.threads))
+    for (long i = 0; i < nn; ++i) {
+      if (m[i] <= 0) continue;
+      double fx = 0, fy = 0;
+      for (int k = d.nodes.slot_start[i]; k < d.nodes.slot_start[i + 1]; ++k) {
+        fx += s[2 * d.nodes.slot_index[k]];
+        fy += s[2 * d.nodes.slot_index[k] + 1];
+      }
+      next[2 * i] = fx / m[i];
+      next[2 * i + 1] = fy / m[i];
+    }
+    ku[0] = block_sum(2 * nn, d.threads, [&](long i) { return u[i] * next[i] * m[i / 2]; });
+    ku[1] = block_sum(2 * nn, d.threads, [&](long i) { return u[i] * u[i] * m[i / 2]; });
+    const double estimate = ku[1] > 0 ? ku[0] / ku[1] : 0.0;
+    const double norm = std::sqrt(block_sum(2 * nn, d.threads,
+                                            [&](long i) { return next[i] * next[i] * m[i / 2]; }));
+    if (!(norm > 0)) break;
+    for (long i = 0; i < 2 * nn; ++i) u[i] = next[i] / norm;
+    const bool settled = it > 20 && std::fabs(estimate - lambda) <= 1e-5 * estimate;
+    lambda = estimate;
+    if (settled) break;
+  }
+  double xi = 0;
+  for (std::size_t t = 0; t < d.tris.size(); ++t) {
+    if (!d.tris.active[t]) continue;
+    double w2, x;
+    triangle_frequency(d, t, w2, x);
+    xi = std::max(xi, x);
+  }
+  if (!(lambda > 0)) return std::numeric_limits<double>::infinity();
+  return damped_limit(d, std::sqrt(lambda), xi);
+}
+
+double critical_dt(const EngineData& d) {
+  // The power estimate approaches omega_max from below (dt from above); the
+  // element bound is safe but can be conservative by tens of percent. Take
+  // the power estimate, never beyond 1.5 times the bound.
+  const double bound = bound_critical_dt(d);
+  return std::min(power_critical_dt(d, 400), 1.5 * bound);
+}
+
+}  // namespace rockfdem::fdem::detail

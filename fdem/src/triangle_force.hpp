@@ -1,0 +1,23 @@
+// Munjiza's finite-strain constant-strain triangle (reference sec. 1).
+#pragma once
+
+#include <array>
+
+#include "engine_data.hpp"
+
+namespace rockfdem::fdem::detail {
+
+/// Writes every active triangle's three nodal forces into its slots.
+/// Returns the lowest index of a triangle whose Jacobian is not > 0 (inverted
+/// or non-finite), or -1 when all are sound.
+long triangle_forces(EngineData& d);
+
+/// Cauchy stress (sxx, syy, sxy) of triangle t; J receives the Jacobian.
+std::array<double, 3> triangle_stress(const EngineData& d, std::size_t t, double& J);
+
+/// Hyperelastic energy A0 alpha W(F) of triangle t (initial stress excluded):
+/// W = mu/2 (tr B - 2) - mu ln J + lambda/4 (J^2 - 1 - 2 ln J), whose Cauchy
+/// stress is exactly (mu/J)(B - I) + (lambda/2)(J - 1/J) I.
+double triangle_strain_energy(const EngineData& d, std::size_t t);
+
+}  // namespace rockfdem::fdem::detail

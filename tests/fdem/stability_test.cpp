@@ -1,0 +1,99 @@
+// Stability limit and blow-up detection.
+#include <gtest/gtest.h>
+
+#include <random>
+
+#include "test_models.hpp"
+
+namespace rockfdem::fdem {
+namespace {
+
+/// A small free specimen with random velocities: 4 x 4 cells with crack
+/// elements everywhere (fracture) or one shared-node cell of two triangles.
+Engine vibrating_specimen(bool fracture) {
+  RectangleSpec spec;
+  spec.width = 0.02;
+  spec.height = 0.02;
+  spec.nx = spec.ny = fracture ? 4 : 1;
+  spec.fracture = fracture;
+  Engine e(structured_rectangle(spec, test::rock()));
+  std::mt19937 rng(3);
+  std::uniform_real_distribution<double> v(-0.01, 0.01);
+  for (std::size_t n = 0; n < e.n_nodes(); ++n)
+    e.set_node_state(n, e.positions()[2 * n], e.positions()[2 * n + 1], v(rng), v(rng));
+  return e;
+}
+
+/// Largest kinetic energy over n steps relative to the initial one.
+double kinetic_growth(Engine& e, long n) {
+  const double k0 = e.kinetic_energy();
+  double worst = 0;
+  for (long i = 0; i < n; ++i) {
+    e.step();
+    worst = std::max(worst, e.kinetic_energy() / k0);
+  }
+  return worst;
+}
+
+// At 0.9 of the computed limit the energy stays bounded (the kinetic energy
+// never exceeds 1.5 times the initial total, which is all kinetic).
+TEST(Stability, bounded_at_0_9_of_critical_dt) {
+  for (bool fracture : {false, true}) {
+    Engine e = vibrating_specimen(fracture);
+    e.set_dt(0.9 * e.critical_dt());
+    EXPECT_LT(kinetic_growth(e, 20000), 1.5) << "fracture " << fracture;
+  }
+}
+
+// Above the limit set_dt refuses, naming the limit; forced, the run blows up
+// and is stopped with a NumericalError naming step and element. (On larger
+// shared-node meshes the element bound is conservative and 1.1 may still be
+// stable: see the stability sweep in docs/engine.md.)
+TEST(Stability, refused_and_detected_at_1_1_of_critical_dt) {
+  for (bool fracture : {false, true}) {
+    Engine e = vibrating_specimen(fracture);
+    const double limit = e.critical_dt();
+    try {
+      e.set_dt(1.1 * limit);
+      FAIL() << "dt above the limit accepted";
+    } catch (const InputError& err) {
+      EXPECT_NE(std::string(err.what()).find("stability limit"), std::string::npos);
+    }
+    e.set_dt(1.1 * limit, DtCheck::kForce);
+    try {
+      e.run(20000);
+      FAIL() << "unstable run not detected, fracture " << fracture;
+    } catch (const NumericalError& err) {
+      const std::string what = err.what();
+      EXPECT_NE(what.find("step"), std::string::npos);
+      EXPECT_TRUE(what.find("triangle") != std::string::npos ||
+                  what.find("node") != std::string::npos);
+    }
+  }
+}
+
+// An inverted triangle (J <= 0) stops the run, naming step and element.
+TEST(Stability, inverted_triangle_names_step_and_element) {
+  ModelInput in;
+  in.x = {0, 0.01, 0, 0.01};
+  in.y = {0, 0, 0.01, 0.01};
+  in.triangles = {{0, 1, 2}, {1, 3, 2}};
+  in.material = {0, 0};
+  in.fracture = {1, 1};  // own nodes: triangle 1 has nodes 3, 4, 5
+  in.materials = {test::rock()};
+  Engine e(in);
+  // Node 5 is triangle 1's third corner (vertex 2): drive it through edge 1-3.
+  e.set_node_state(5, 0, 0.01, 1e4, 0);
+  try {
+    e.run(1000);
+    FAIL() << "inversion not detected";
+  } catch (const NumericalError& err) {
+    const std::string what = err.what();
+    EXPECT_NE(what.find("triangle 1"), std::string::npos) << what;
+    EXPECT_NE(what.find("step "), std::string::npos) << what;
+    EXPECT_NE(what.find("inverted"), std::string::npos) << what;
+  }
+}
+
+}  // namespace
+}  // namespace rockfdem::fdem

@@ -1,0 +1,96 @@
+// Dynamics: wave speed and energy conservation of the undamped scheme.
+#include <gtest/gtest.h>
+
+#include "test_models.hpp"
+
+namespace rockfdem::fdem {
+namespace {
+
+/// A bar along x with rollers on its long sides (1D strain, so the front
+/// travels at the plane-strain P-wave speed).
+ModelInput bar(double length, int nx, bool fracture) {
+  RectangleSpec spec;
+  spec.width = length;
+  spec.height = length / 50;
+  spec.nx = nx;
+  spec.ny = 4;
+  spec.fracture = fracture;
+  ModelInput in = structured_rectangle(spec, test::rock());
+  BoundaryCondition top, bottom;
+  top.tag = kTagTop;
+  bottom.tag = kTagBottom;
+  top.y = bottom.y = Constraint::kFixed;
+  in.boundary_conditions = {top, bottom};
+  return in;
+}
+
+/// Node of the first engine node at the vertex nearest (x, y).
+int node_near(const Engine& e, const ModelInput& in, double x, double y) {
+  int best = 0;
+  double d_best = 1e300;
+  for (std::size_t n = 0; n < e.n_nodes(); ++n) {
+    const int v = e.node_vertex()[n];
+    const double d = std::hypot(in.x[v] - x, in.y[v] - y);
+    if (d < d_best) d_best = d, best = static_cast<int>(n);
+  }
+  return best;
+}
+
+// A velocity step v0 at the left end reaches x = 0.8 L, at half amplitude,
+// at 0.8 L / c_p within 2%.
+TEST(Wave, p_wave_arrival_matches_cp) {
+  const double length = 1.0, v0 = 0.1;
+  ModelInput in = bar(length, 250, false);
+  BoundaryCondition left;
+  left.tag = kTagLeft;
+  left.x = Constraint::kVelocity;
+  left.vx = v0;
+  in.boundary_conditions.push_back(left);
+  Engine e(in);
+  const int probe = node_near(e, in, 0.8 * length, length / 100);
+  const double expect = 0.8 * length / test::p_wave_speed(in.materials[0]);
+  double arrival = -1, prev_v = 0, prev_t = 0;
+  while (e.time() < 1.5 * expect && arrival < 0) {
+    e.step();
+    const double v = e.velocities()[2 * probe];
+    if (v >= 0.5 * v0) arrival = prev_t + (e.time() - prev_t) * (0.5 * v0 - prev_v) / (v - prev_v);
+    prev_v = v;
+    prev_t = e.time();
+  }
+  ASSERT_GT(arrival, 0);
+  EXPECT_NEAR(arrival, expect, 0.02 * expect);
+}
+
+// Undamped free vibration: kinetic (from the average of the half-step
+// velocities around x_n) plus strain energy at x_n drifts by less than 0.5%
+// over 1e4 steps.
+TEST(Wave, undamped_vibration_conserves_energy) {
+  ModelInput in = bar(0.2, 40, false);
+  in.boundary_conditions.clear();
+  Engine e(in);
+  const auto& mass = e.node_mass();
+  for (std::size_t n = 0; n < e.n_nodes(); ++n) {
+    const int v = e.node_vertex()[n];
+    const double x = in.x[v], y = in.y[v];
+    e.set_node_state(n, x, y, 0.5 * std::sin(M_PI * x / 0.2), 0.05 * std::cos(7 * x / 0.2 + y));
+  }
+  auto energy_step = [&]() {
+    const double strain = e.strain_energy();
+    const std::vector<double> before = e.velocities();
+    e.step();
+    double kinetic = 0;
+    for (std::size_t n = 0; n < e.n_nodes(); ++n)
+      for (int k = 0; k < 2; ++k) {
+        const double v = 0.5 * (before[2 * n + k] + e.velocities()[2 * n + k]);
+        kinetic += 0.5 * mass[n] * v * v;
+      }
+    return strain + kinetic;
+  };
+  const double e0 = energy_step();
+  double worst = 0;
+  for (int i = 0; i < 10000; ++i) worst = std::max(worst, std::fabs(energy_step() - e0) / e0);
+  EXPECT_LT(worst, 0.005);
+}
+
+}  // namespace
+}  // namespace rockfdem::fdem
