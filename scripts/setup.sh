@@ -14,7 +14,10 @@ cmake -S . -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release >/dev/null
 cmake --build "$build" -j "$(nproc)"
 
 if [ "$mode" = run ]; then
-  "$build/bin/rockfdem" run -o out/default
+  # PNG plots need a display; Xvfb stands in for one on a headless machine.
+  xvfb=()
+  [ -z "${DISPLAY:-}" ] && command -v xvfb-run >/dev/null && xvfb=(xvfb-run -a)
+  "${xvfb[@]}" "$build/bin/rockfdem" run -o out/default --force
 else
   ctest --test-dir "$build" --output-on-failure -j "$(nproc)"
 fi

@@ -1,0 +1,35 @@
+// Mesh (and implicit field) to the explicit engine's input, and the engine's
+// state back to a ParaView grid. The mesh's triangles are the engine's
+// triangles one to one, so the implicit stress hands over element by
+// element with no interpolation.
+#pragma once
+
+#include <map>
+
+#include "rockfdem/coupling/vtk_grid.hpp"
+#include "rockfdem/fdem/engine.hpp"
+#include "rockfdem/fdem/model_input.hpp"
+#include "rockfdem/insitu/insitu.hpp"
+#include "rockfdem/mesh/mesh.hpp"
+
+namespace rockfdem::coupling {
+
+/// Vertices, triangles, zones (as material indices), fracture flags and
+/// tagged edges of `m`; `by_zone` gives each zone present its material.
+/// Throws rockfdem::InputError naming a zone without a material.
+fdem::ModelInput model_input(const mesh::Mesh& m, const std::map<int, fdem::Material>& by_zone,
+                             fdem::Plane plane);
+
+/// The implicit field as the engine's initial state: per-triangle stress
+/// and per-vertex displacement (the displaced configuration is the
+/// reference the engine measures strain from).
+void apply_insitu(const insitu::InsituField& field, fdem::ModelInput& in);
+
+/// The engine's state: its own nodes (duplicated where cracks may open) with
+/// displacement and velocity; triangles with stress, principal stresses,
+/// zone, activity; crack elements as line cells with damage, state and mode.
+/// With `implicit`, displacements include the implicit stage's part.
+VtkGrid fdem_grid(const fdem::Engine& engine, const mesh::Mesh& m,
+                  const insitu::InsituField* implicit = nullptr);
+
+}  // namespace rockfdem::coupling

@@ -1,0 +1,111 @@
+// `rockfdem insitu SCENE -o DIR`: mesh, then the implicit deal.II stage for
+// every softening factor alpha. Writes insitu.vtu (the last alpha, the state
+// handed to the explicit engine), insitu.pvd + insitu_NN.vtu (every alpha),
+// and, for a circular opening, the comparison with Kirsch:
+// insitu_vs_analytic.csv and summary.json's insitu.kirsch_rel_l2.
+#include <cstdio>
+#include <iostream>
+#include <sstream>
+
+#include "commands.hpp"
+#include "output_dir.hpp"
+#include "phase_timer.hpp"
+#include "rockfdem/error.hpp"
+#include "rockfdem/coupling/atomic_file.hpp"
+#include "rockfdem/coupling/insitu_grid.hpp"
+#include "rockfdem/coupling/vtk_writer.hpp"
+#include "rockfdem/mesh/build.hpp"
+#include "rockfdem/mesh/msh_io.hpp"
+#include "stage_inputs.hpp"
+#include "summary.hpp"
+
+namespace rockfdem::workflows {
+namespace {
+
+std::string kirsch_csv(const insitu::KirschComparison& c) {
+  std::ostringstream out;
+  out.precision(10);
+  out << "triangle,x,y,r,theta,srr,stt,srt,srr_exact,stt_exact,srt_exact\n";
+  for (const insitu::KirschRow& r : c.rows)
+    out << r.triangle << ',' << r.x << ',' << r.y << ',' << r.r << ',' << r.theta << ',' << r.srr
+        << ',' << r.stt << ',' << r.srt << ',' << r.srr_exact << ',' << r.stt_exact << ','
+        << r.srt_exact << '\n';
+  return out.str();
+}
+
+void write_fields(const mesh::Mesh& m, const std::vector<insitu::InsituField>& fields,
+                  const std::string& dir) {
+  coupling::PvdCollection pvd(output_path(dir, "insitu.pvd"));
+  for (std::size_t i = 0; i < fields.size(); ++i) {
+    char name[32];
+    std::snprintf(name, sizeof name, "insitu_%02zu.vtu", i);
+    coupling::write_vtu(coupling::insitu_grid(m, fields[i]), output_path(dir, name));
+    pvd.add(double(i), name);
+  }
+  pvd.write();
+  coupling::write_vtu(coupling::insitu_grid(m, fields.back()), output_path(dir, "insitu.vtu"));
+}
+
+}  // namespace
+
+int command_insitu(const Scene& scene, const CommandLine& cli) {
+  PhaseTimer timer;
+  if (scene.mesh.kind != mesh::ModelKind::kTunnel && scene.mesh.kind != mesh::ModelKind::kMshFile)
+    throw InputError(scene.source + ": key 'model.kind': `rockfdem insitu` needs a tunnel or a "
+                     ".msh model; specimens have no in-situ stage");
+  const insitu::InsituSpec spec = insitu_spec(scene);
+  prepare_output_dir(cli.output_dir, scene, cli.force);
+  RunSummary summary(scene, active_threads());
+
+  mesh::MeshReport report;
+  const mesh::Mesh m = mesh::build_mesh(scene.mesh, &report);
+  active_threads();
+  timer.stamp("mesh");
+  const std::vector<insitu::InsituField> fields = insitu::solve_insitu(m, spec);
+  active_threads();
+  timer.stamp("insitu");
+
+  mesh::write_msh(m, output_path(cli.output_dir, "mesh.msh"));
+  write_fields(m, fields, cli.output_dir);
+  auto& j = summary.json();
+  j["counts"]["triangles"] = m.n_triangles();
+  j["counts"]["nodes"] = m.n_vertices();
+  j["insitu"]["alpha"] = nlohmann::json::array();
+  j["insitu"]["solver_iterations"] = nlohmann::json::array();
+  j["insitu"]["stages"] = nlohmann::json::array();
+  for (const insitu::InsituField& f : fields) {
+    j["insitu"]["alpha"].push_back(f.alpha);
+    j["insitu"]["solver_iterations"].push_back(f.iterations);
+    j["insitu"]["stages"].push_back({{"alpha", f.alpha},
+                                     {"solver", f.solver},
+                                     {"dofs", f.n_dofs},
+                                     {"assembly_seconds", f.assembly_seconds},
+                                     {"solve_seconds", f.solve_seconds},
+                                     {"total_seconds", f.total_seconds},
+                                     {"unbalanced_ratio", f.unbalanced_ratio}});
+  }
+  insitu::KirschCase k;
+  if (kirsch_case(scene, &k) && fields.back().alpha == 0.0) {
+    const insitu::KirschComparison c = insitu::compare_kirsch(m, fields.back(), k);
+    j["insitu"]["kirsch_rel_l2"] = c.stress_rel_l2;
+    j["insitu"]["kirsch_wall_ur_rel_l2"] = c.wall_ur_rel_l2;
+    j["insitu"]["kirsch_triangles"] = c.n_triangles;
+    coupling::atomic_write_text(output_path(cli.output_dir, "insitu_vs_analytic.csv"),
+                                kirsch_csv(c));
+    if (!cli.quiet)
+      std::cout << "Kirsch: relative L2 stress error over a <= r <= 5a: " << c.stress_rel_l2
+                << " (" << c.n_triangles << " triangles); wall u_r error " << c.wall_ur_rel_l2
+                << '\n';
+  } else {
+    summary.skipped("Kirsch comparison: needs a circular opening without lining, uniform stress "
+                    "and a last alpha of 0");
+  }
+  summary.skipped("fdem: `rockfdem insitu` runs the implicit stage only");
+  timer.stamp("output");
+  summary.set_timings(timer);
+  summary.write(output_path(cli.output_dir, "summary.json"));
+  if (!cli.quiet) std::cout << insitu::timing_table(fields) << timer.table();
+  return 0;
+}
+
+}  // namespace rockfdem::workflows

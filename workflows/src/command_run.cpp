@@ -1,0 +1,156 @@
+// `rockfdem run [SCENE] -o DIR`: the whole pipeline. Specimens (UCS,
+// Brazilian disc): mesh, then the explicit engine loading the specimen
+// between platens for engine.steps steps, with the stress-strain (or
+// load-displacement) history, ParaView frames and a summary.
+#include <cmath>
+#include <cstdio>
+#include <iostream>
+
+#include "commands.hpp"
+#include "history.hpp"
+#include "output_dir.hpp"
+#include "phase_timer.hpp"
+#include "progress.hpp"
+#include "rockfdem/coupling/fdem_model.hpp"
+#include "rockfdem/coupling/vtk_writer.hpp"
+#include "rockfdem/fdem/engine.hpp"
+#include "rockfdem/mesh/build.hpp"
+#include "rockfdem/mesh/msh_io.hpp"
+#include "stage_inputs.hpp"
+#include "summary.hpp"
+
+namespace rockfdem::workflows {
+namespace {
+
+// Platens: the loaded edges move towards each other at the platen speed and
+// hold the specimen's ends laterally (rough platens).
+std::vector<fdem::BoundaryCondition> platens(const Scene& s) {
+  const bool disc = s.mesh.kind == mesh::ModelKind::kBrazilian;
+  const double v = s.engine.platen_velocity;
+  fdem::BoundaryCondition lower, upper;
+  lower.tag = disc ? mesh::kLoadBottom : mesh::kBottom;
+  upper.tag = disc ? mesh::kLoadTop : mesh::kTop;
+  lower.x = upper.x = fdem::Constraint::kFixed;
+  lower.y = upper.y = fdem::Constraint::kVelocity;
+  lower.vy = v;
+  upper.vy = -v;
+  return {lower, upper};
+}
+
+/// Specimen length along the load, and the cross-section the load is spread over.
+struct SpecimenSize {
+  double length, section;
+};
+
+SpecimenSize specimen_size(const Scene& s) {
+  if (s.mesh.kind == mesh::ModelKind::kBrazilian) return {s.mesh.specimen.diameter, 1.0};
+  return {s.mesh.specimen.height, s.mesh.specimen.width};
+}
+
+void write_frame(const fdem::Engine& e, const mesh::Mesh& m, const std::string& dir, int frame,
+                 coupling::PvdCollection& pvd) {
+  char name[32];
+  std::snprintf(name, sizeof name, "fdem_%04d.vtu", frame);
+  coupling::write_vtu(coupling::fdem_grid(e, m), output_path(dir, name));
+  pvd.add(e.time(), name);
+  pvd.write();
+}
+
+int run_specimen(const Scene& scene, const CommandLine& cli) {
+  PhaseTimer timer;
+  prepare_output_dir(cli.output_dir, scene, cli.force);
+  const int threads = active_threads();
+  RunSummary summary(scene, threads);
+  mesh::MeshReport report;
+  const mesh::Mesh m = mesh::build_mesh(scene.mesh, &report);
+  active_threads();
+  mesh::write_msh(m, output_path(cli.output_dir, "mesh.msh"));
+  timer.stamp("mesh");
+
+  fdem::ModelInput in = coupling::model_input(m, engine_materials(scene),
+                                              scene.plane_stress ? fdem::Plane::kStress
+                                                                 : fdem::Plane::kStrain);
+  in.boundary_conditions = platens(scene);
+  in.dt = scene.engine.dt;
+  in.dt_safety = scene.engine.dt_safety;
+  in.damping.local = scene.engine.local_damping;
+  in.damping.mass_proportional = scene.engine.mass_damping;
+  in.gravity_y = -scene.engine.gravity;
+  in.threads = threads;
+  fdem::Engine engine(in);
+  timer.stamp("fdem setup");
+
+  const bool disc = scene.mesh.kind == mesh::ModelKind::kBrazilian;
+  const SpecimenSize size = specimen_size(scene);
+  const int upper_tag = disc ? mesh::kLoadTop : mesh::kTop;
+  History history(output_path(cli.output_dir, "history.csv"),
+                  {"step", "time", "axial_strain", disc ? "tensile_stress" : "axial_stress",
+                   "platen_force", "kinetic_energy", "broken_I", "broken_II", "broken_mixed"});
+  coupling::PvdCollection pvd(output_path(cli.output_dir, "fdem.pvd"));
+  Progress progress(disc ? "brazilian" : "ucs", scene.engine.steps, cli.quiet);
+  double peak = 0, fdem_seconds = 0, output_seconds = 0;
+  int frame = 0;
+  const auto record = [&] {
+    const double force = -engine.boundary_force(upper_tag)[1];  // compression positive
+    // UCS: mean axial stress; disc: the Brazilian tensile stress 2P/(pi D t).
+    const double stress = disc ? 2 * force / (M_PI * size.length) : force / size.section;
+    const double strain = 2 * scene.engine.platen_velocity * engine.time() / size.length;
+    const fdem::BrokenCounts b = engine.broken_counts();
+    peak = std::max(peak, stress);
+    history.add({double(engine.step_count()), engine.time(), strain, stress, force,
+                 engine.kinetic_energy(), double(b.mode_I), double(b.mode_II), double(b.mixed)});
+    if (scene.output.vtk) write_frame(engine, m, cli.output_dir, frame++, pvd);
+  };
+  record();
+  while (engine.step_count() < scene.engine.steps) {
+    const long chunk = std::min<long>(scene.output.every_steps,
+                                      scene.engine.steps - engine.step_count());
+    timer.stamp("output");
+    engine.run(chunk);
+    timer.stamp("fdem");
+    record();
+    progress.update(engine.step_count(), engine.time());
+  }
+  timer.stamp("output");
+  progress.finish(engine.step_count(), engine.time());
+  fdem_seconds = timer.seconds("fdem");
+  output_seconds = timer.seconds("output");
+  (void)output_seconds;
+
+  auto& j = summary.json();
+  j["counts"] = {{"triangles", engine.n_triangles()}, {"nodes", engine.n_nodes()},
+                 {"crack_elements", engine.n_cracks()}, {"bolts", 0}};
+  j["steps"] = engine.step_count();
+  j["dt"] = engine.dt();
+  j["simulated_time"] = engine.time();
+  j["throughput"]["triangle_steps_per_second"] =
+      fdem_seconds > 0 ? double(engine.n_triangles()) * double(engine.step_count()) / fdem_seconds
+                       : 0.0;
+  const fdem::BrokenCounts b = engine.broken_counts();
+  j["broken"] = {{"mode_I", b.mode_I}, {"mode_II", b.mode_II}, {"mixed", b.mixed}};
+  j["specimen"] = {{"peak_stress", peak},
+                   {"strain_rate", 2 * scene.engine.platen_velocity / size.length},
+                   {"kind", disc ? "brazilian" : "ucs"}};
+  j["memory_bytes"] = engine.memory_bytes();
+  j["state_hash"] = engine.state_hash();
+  summary.skipped("insitu: a specimen starts stress-free");
+  summary.skipped("contact: not part of this build's engine");
+  summary.set_timings(timer);
+  summary.write(output_path(cli.output_dir, "summary.json"));
+  if (!cli.quiet)
+    std::cout << (disc ? "peak tensile stress " : "peak axial stress ") << peak / 1e6
+              << " MPa, broken " << b.total() << " of " << engine.n_cracks()
+              << " crack elements, state hash " << engine.state_hash() << '\n'
+              << timer.table();
+  return 0;
+}
+
+}  // namespace
+
+int command_run(const Scene& scene, const CommandLine& cli) {
+  if (scene.mesh.kind == mesh::ModelKind::kUcs || scene.mesh.kind == mesh::ModelKind::kBrazilian)
+    return run_specimen(scene, cli);
+  return run_tunnel(scene, cli);
+}
+
+}  // namespace rockfdem::workflows

@@ -1,0 +1,26 @@
+// history.csv: one row per output interval, written atomically after each
+// row so an interrupted run keeps a valid history.
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace rockfdem::workflows {
+
+class History {
+ public:
+  History(std::string path, std::vector<std::string> columns);
+  /// Appends a row (as many values as columns) and rewrites the file.
+  void add(const std::vector<double>& row);
+  const std::vector<std::vector<double>>& rows() const { return rows_; }
+  /// The values of one column, for plots.
+  std::vector<double> column(const std::string& name) const;
+
+ private:
+  std::string path_;
+  std::vector<std::string> columns_;
+  std::vector<std::vector<double>> rows_;
+  std::string text_;
+};
+
+}  // namespace rockfdem::workflows

@@ -1,0 +1,202 @@
+#include "run_outputs.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <iostream>
+
+#include "output_dir.hpp"
+#include "rockfdem/coupling/fdem_model.hpp"
+#include "rockfdem/coupling/insitu_grid.hpp"
+#include "rockfdem/coupling/plot.hpp"
+
+namespace rockfdem::workflows {
+namespace {
+
+double mm(double metres) { return 1000 * metres; }
+
+// Monitors' mesh vertices: the implicit fields are per vertex.
+int vertex_of(const fdem::Engine& e, const Monitor& mon) { return e.node_vertex()[mon.node]; }
+
+const Monitor& find(const std::vector<Monitor>& ms, const std::string& name) {
+  for (const Monitor& m : ms)
+    if (m.name == name) return m;
+  throw std::logic_error("no monitor " + name);
+}
+
+// The picture of the final state shows broken cracks only: intact crack
+// elements lie on every edge of the fracture zone and would hide the mesh.
+coupling::VtkGrid broken_crack_grid(const fdem::Engine& e, const mesh::Mesh& m,
+                                    const insitu::InsituField* implicit) {
+  coupling::VtkGrid g = coupling::fdem_grid(e, m, implicit);
+  std::vector<std::array<int, 2>> lines;
+  for (std::size_t c = 0; c < e.n_cracks(); ++c)
+    if (e.crack_state(c) == fdem::CrackState::kBroken) lines.push_back(g.lines[c]);
+  const std::size_t n_tri = g.n_triangles();
+  g.lines = lines;
+  for (coupling::VtkArray& a : g.cell_arrays) {
+    if (a.is_int()) {
+      auto& v = std::get<std::vector<std::int32_t>>(a.values);
+      v.resize(n_tri * a.n_components);
+    } else {
+      auto& v = std::get<std::vector<double>>(a.values);
+      v.resize(n_tri * a.n_components);
+    }
+    a = coupling::triangle_cell_array(g, std::move(a));
+  }
+  return g;
+}
+
+}  // namespace
+
+std::array<double, 2> RunOutputs::displacement(const fdem::Engine& e, const Monitor& mon) const {
+  static const std::vector<double> none;
+  return monitor_displacement(e, mon, fields_.empty() ? none : fields_.back().ux,
+                              fields_.empty() ? none : fields_.back().uy);
+}
+
+double RunOutputs::convergence(const fdem::Engine& e, const std::vector<Monitor>& ms,
+                               const std::string& a, const std::string& b) const {
+  const Monitor &ma = find(ms, a), &mb = find(ms, b);
+  const auto ua = displacement(e, ma), ub = displacement(e, mb);
+  const double dx = mb.x - ma.x, dy = mb.y - ma.y, len = std::hypot(dx, dy);
+  return ((ua[0] - ub[0]) * dx + (ua[1] - ub[1]) * dy) / len;
+}
+
+RunOutputs::RunOutputs(const Scene& scene, const CommandLine& cli, RunSummary& summary)
+    : scene_(scene), cli_(cli), summary_(summary),
+      pvd_(output_path(cli.output_dir, "fdem.pvd")) {}
+
+void RunOutputs::record_insitu(const mesh::Mesh& m, const std::vector<insitu::InsituField>& fields) {
+  fields_ = fields;
+  auto& j = summary_.json()["insitu"];
+  j["alpha"] = nlohmann::json::array();
+  j["solver_iterations"] = nlohmann::json::array();
+  for (const insitu::InsituField& f : fields) {
+    j["alpha"].push_back(f.alpha);
+    j["solver_iterations"].push_back(f.iterations);
+  }
+  coupling::write_vtu(coupling::insitu_grid(m, fields.back()),
+                      output_path(cli_.output_dir, "insitu.vtu"));
+}
+
+void RunOutputs::begin_history(const std::vector<Monitor>& monitors) {
+  std::vector<std::string> cols{"step", "time", "kinetic_energy", "unbalanced_ratio",
+                                "broken_I", "broken_II", "broken_mixed"};
+  for (const Monitor& mon : monitors) {
+    cols.push_back(mon.name + "_ux_mm");
+    cols.push_back(mon.name + "_uy_mm");
+  }
+  cols.insert(cols.end(), {"vault_settlement_mm", "wall_convergence_mm",
+                           "support_pressure_ratio"});
+  history_ = std::make_unique<History>(output_path(cli_.output_dir, "history.csv"), cols);
+}
+
+void RunOutputs::record_step(const fdem::Engine& e, const mesh::Mesh& m,
+                             const std::vector<Monitor>& monitors, PhaseTimer& timer) {
+  const fdem::BrokenCounts b = e.broken_counts();
+  std::vector<double> row{double(e.step_count()), e.time(), e.kinetic_energy(),
+                          e.unbalanced_force_ratio(), double(b.mode_I), double(b.mode_II),
+                          double(b.mixed)};
+  for (const Monitor& mon : monitors) {
+    const auto u = displacement(e, mon);
+    row.push_back(mm(u[0]));
+    row.push_back(mm(u[1]));
+  }
+  row.push_back(-mm(displacement(e, find(monitors, "vault"))[1]));
+  row.push_back(mm(convergence(e, monitors, "left_wall", "right_wall")));
+  row.push_back(0.0);  // the core is gone: no support from it
+  history_->add(row);
+  if (scene_.output.vtk) {
+    char name[32];
+    std::snprintf(name, sizeof name, "fdem_%04d.vtu", frame_++);
+    coupling::write_vtu(coupling::fdem_grid(e, m, fields_.empty() ? nullptr : &fields_.back()),
+                        output_path(cli_.output_dir, name));
+    pvd_.add(e.time(), name);
+    pvd_.write();
+  }
+  timer.stamp("output");
+}
+
+void RunOutputs::finish(const fdem::Engine& e, const mesh::Mesh& m,
+                        const std::vector<Monitor>& monitors, PhaseTimer& timer) {
+  auto& j = summary_.json();
+  j["counts"] = {{"triangles", e.n_triangles()}, {"nodes", e.n_nodes()},
+                 {"crack_elements", e.n_cracks()}, {"bolts", 0}};
+  j["steps"] = e.step_count();
+  j["dt"] = e.dt();
+  j["simulated_time"] = e.time();
+  const double fdem = timer.seconds("fdem");
+  j["throughput"]["triangle_steps_per_second"] =
+      fdem > 0 ? double(e.n_triangles()) * double(e.step_count()) / fdem : 0.0;
+  const fdem::BrokenCounts b = e.broken_counts();
+  j["broken"] = {{"mode_I", b.mode_I}, {"mode_II", b.mode_II}, {"mixed", b.mixed}};
+  for (const Monitor& mon : monitors) {
+    const auto u = displacement(e, mon);
+    j["monitors"][mon.name] = {{"ux_mm", mm(u[0])}, {"uy_mm", mm(u[1])}, {"x", mon.x},
+                               {"y", mon.y}};
+  }
+  j["monitors"]["vault_settlement_mm"] = -mm(displacement(e, find(monitors, "vault"))[1]);
+  j["monitors"]["wall_convergence_mm"] = mm(convergence(e, monitors, "left_wall", "right_wall"));
+  j["monitors"]["shoulder_convergence_mm"] =
+      mm(convergence(e, monitors, "left_shoulder", "right_shoulder"));
+  // Ground reaction curve, implicit part: the core's share of the in-situ
+  // stress (alpha) against the vault settlement it allows.
+  const int vault_vertex = vertex_of(e, find(monitors, "vault"));
+  nlohmann::json grc = nlohmann::json::array();
+  for (const insitu::InsituField& f : fields_)
+    grc.push_back({{"support_pressure_ratio", f.alpha},
+                   {"vault_settlement_mm", -mm(f.uy[vault_vertex])}});
+  grc.push_back({{"support_pressure_ratio", 0.0},
+                 {"vault_settlement_mm", j["monitors"]["vault_settlement_mm"]}});
+  j["ground_reaction_curve"] = grc;
+  j["memory_bytes"] = e.memory_bytes();
+  j["state_hash"] = e.state_hash();
+  const fdem::PhaseTimes p = e.phase_times();
+  j["fdem_modules"] = {{"triangles", p.triangles}, {"cracks", p.cracks}, {"nodes", p.nodes}};
+  if (e.n_cracks() == 0) summary_.skipped("crack elements: no fracture zone in the scene");
+  summary_.skipped("contact: not part of this build's engine");
+  if (scene_.output.plots) plots(e, m);
+  timer.stamp("output");
+  summary_.set_timings(timer);
+  summary_.write(output_path(cli_.output_dir, "summary.json"));
+  if (!cli_.quiet)
+    std::cout << "vault settlement " << j["monitors"]["vault_settlement_mm"].get<double>()
+              << " mm, wall convergence " << j["monitors"]["wall_convergence_mm"].get<double>()
+              << " mm, broken cracks " << b.total() << ", state hash " << e.state_hash() << '\n'
+              << timer.table();
+}
+
+void RunOutputs::plots(const fdem::Engine& e, const mesh::Mesh& m) {
+  std::string why;
+  if (!coupling::rendering_available(&why)) {
+    summary_.skipped("plots: " + why + " (run under xvfb-run -a)");
+    if (!cli_.quiet) std::cerr << "rockfdem: plots skipped: " << why << '\n';
+    return;
+  }
+  const std::string& dir = cli_.output_dir;
+  const History& h = *history_;
+  const std::vector<double> t = h.column("time");
+  coupling::plot_xy_png("Convergence", "time [s]", "displacement [mm]",
+                        {{"vault settlement", t, h.column("vault_settlement_mm")},
+                         {"wall convergence", t, h.column("wall_convergence_mm")}},
+                        output_path(dir, "convergence.png"));
+  coupling::plot_xy_png("Broken crack elements", "time [s]", "count",
+                        {{"mode I", t, h.column("broken_I")},
+                         {"mode II", t, h.column("broken_II")},
+                         {"mixed", t, h.column("broken_mixed")}},
+                        output_path(dir, "broken.png"));
+  std::vector<double> ratio, settlement;
+  for (const auto& p : summary_.json()["ground_reaction_curve"]) {
+    ratio.push_back(p["support_pressure_ratio"].get<double>());
+    settlement.push_back(p["vault_settlement_mm"].get<double>());
+  }
+  coupling::plot_xy_png("Ground reaction curve (vault)", "vault settlement [mm]",
+                        "support pressure / in-situ stress", {{"vault", settlement, ratio}},
+                        output_path(dir, "ground_reaction.png"));
+  coupling::render_mesh_png(broken_crack_grid(e, m, fields_.empty() ? nullptr : &fields_.back()),
+                            "principal_stress", 1,
+                            output_path(dir, "final_mesh.png"),
+                            "Minor principal stress [Pa], broken cracks in black");
+}
+
+}  // namespace rockfdem::workflows

@@ -1,0 +1,50 @@
+// Everything a tunnel run writes besides the engine's work: history.csv,
+// ParaView frames, the ground reaction curve, PNG plots and summary.json.
+#pragma once
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "history.hpp"
+#include "monitors.hpp"
+#include "phase_timer.hpp"
+#include "rockfdem/coupling/vtk_writer.hpp"
+#include "rockfdem/insitu/insitu.hpp"
+#include "rockfdem/workflows/cli.hpp"
+#include "rockfdem/workflows/scene.hpp"
+#include "summary.hpp"
+
+namespace rockfdem::workflows {
+
+class RunOutputs {
+ public:
+  RunOutputs(const Scene& scene, const CommandLine& cli, RunSummary& summary);
+  /// summary.json's insitu keys and the implicit part of the ground reaction curve.
+  void record_insitu(const mesh::Mesh& m, const std::vector<insitu::InsituField>& fields);
+  void begin_history(const std::vector<Monitor>& monitors);
+  /// One history row and (if enabled) one ParaView frame.
+  void record_step(const fdem::Engine& e, const mesh::Mesh& m, const std::vector<Monitor>& monitors,
+                   PhaseTimer& timer);
+  /// Counts, monitors, broken cracks, hash, plots, timings; writes summary.json.
+  void finish(const fdem::Engine& e, const mesh::Mesh& m, const std::vector<Monitor>& monitors,
+              PhaseTimer& timer);
+
+ private:
+  void plots(const fdem::Engine& e, const mesh::Mesh& m);
+  /// Monitor displacement from the in-situ state (implicit part + engine increment).
+  std::array<double, 2> displacement(const fdem::Engine& e, const Monitor& mon) const;
+  /// Closure between two monitors along the line joining them, positive inwards [m].
+  double convergence(const fdem::Engine& e, const std::vector<Monitor>& ms, const std::string& a,
+                     const std::string& b) const;
+  const Scene& scene_;
+  const CommandLine& cli_;
+  RunSummary& summary_;
+  std::vector<insitu::InsituField> fields_;
+  std::unique_ptr<History> history_;
+  coupling::PvdCollection pvd_;
+  int frame_ = 0;
+  double fdem_seconds_at_start_ = 0;
+};
+
+}  // namespace rockfdem::workflows

@@ -1,0 +1,68 @@
+#include "stage_inputs.hpp"
+
+namespace rockfdem::workflows {
+namespace {
+
+insitu::ElasticMaterial elastic(const MaterialSpec& m) { return {m.young, m.poisson}; }
+
+fdem::Material engine_material(const MaterialSpec& m, const EngineSettings& e) {
+  fdem::Material f;
+  f.density = m.density;
+  f.young = m.young;
+  f.poisson = m.poisson;
+  f.tensile_strength = m.tensile_strength;
+  f.cohesion = m.cohesion;
+  f.friction_deg = m.friction_angle;
+  f.residual_friction_deg = m.residual_friction_angle;
+  f.gf_I = m.fracture_energy_I;
+  f.gf_II = m.fracture_energy_II;
+  f.normal_penalty = m.penalty_factor * m.young;
+  f.damping_ratio = e.damping_ratio;
+  return f;
+}
+
+}  // namespace
+
+std::map<int, fdem::Material> engine_materials(const Scene& s) {
+  std::map<int, fdem::Material> out;
+  const std::pair<const char*, int> zones[] = {
+      {"rock", mesh::kRock}, {"core", mesh::kCore}, {"lining", mesh::kLining}};
+  for (auto [name, zone] : zones)
+    if (s.materials.count(name)) out[zone] = engine_material(s.materials.at(name), s.engine);
+  return out;
+}
+
+insitu::InsituSpec insitu_spec(const Scene& s) {
+  insitu::InsituSpec spec;
+  spec.far_field.sH = s.insitu.sigma_h;
+  spec.far_field.sV = s.insitu.sigma_v;
+  spec.far_field.angle_deg = s.insitu.angle_deg;
+  spec.gravity.unit_weight = s.insitu.unit_weight;
+  spec.gravity.reference_y = 0;  // the stresses hold at the opening's centre
+  if (s.insitu.kirsch_boundary) {
+    spec.loading = insitu::BoundaryLoading::kKirschExact;
+    spec.kirsch_radius = s.mesh.tunnel.radius;
+  }
+  spec.materials.rock = elastic(s.materials.at("rock"));
+  if (s.materials.count("core")) spec.materials.core = elastic(s.materials.at("core"));
+  if (s.materials.count("lining")) spec.materials.lining = elastic(s.materials.at("lining"));
+  spec.lining.active = s.insitu.lining_active;
+  spec.alphas = s.insitu.alpha;
+  spec.solver.tolerance = s.insitu.tolerance;
+  if (s.insitu.solver == "amg") spec.solver.kind = insitu::LinearSolver::kAmgCg;
+  if (s.insitu.solver == "direct") spec.solver.kind = insitu::LinearSolver::kDirect;
+  return spec;
+}
+
+bool kirsch_case(const Scene& s, insitu::KirschCase* k) {
+  const mesh::MeshSpec& m = s.mesh;
+  if (m.kind != mesh::ModelKind::kTunnel || m.tunnel.shape != mesh::TunnelShape::kCircular ||
+      m.tunnel.lining_thickness > 0 || s.insitu.unit_weight > 0)
+    return false;
+  const MaterialSpec& rock = s.materials.at("rock");
+  *k = {m.tunnel.radius, s.insitu.sigma_h, s.insitu.sigma_v, s.insitu.angle_deg, rock.young,
+        rock.poisson};
+  return true;
+}
+
+}  // namespace rockfdem::workflows

@@ -1,0 +1,21 @@
+// Private: from the validated scene to each stage's own input record.
+#pragma once
+
+#include <map>
+
+#include "rockfdem/fdem/model_input.hpp"
+#include "rockfdem/insitu/insitu.hpp"
+#include "rockfdem/workflows/scene.hpp"
+
+namespace rockfdem::workflows {
+
+insitu::InsituSpec insitu_spec(const Scene& scene);
+
+/// The engine's material for each zone present in the scene (rock, core, lining).
+std::map<int, fdem::Material> engine_materials(const Scene& scene);
+
+/// Whether the scene's geometry has the Kirsch closed form (circular opening,
+/// uniform stress, no lining) and its parameters.
+bool kirsch_case(const Scene& scene, insitu::KirschCase* k);
+
+}  // namespace rockfdem::workflows
