@@ -62,12 +62,13 @@ int main(int argc, char** argv) {
       const long n = report > 0 ? std::min(report, steps - done) : steps - done;
       engine.run(n);
       done += n;
+      // The upper platen pushes down on the specimen: compression positive.
       const double stress = -engine.boundary_force(fdem::kTagTop)[1] / 0.05;
-      peak = std::max(peak, -stress);
+      peak = std::max(peak, stress);
       if (report > 0) {
         const auto b = engine.broken_counts();
         std::printf("step %ld strain %.4e stress %.4g MPa broken %ld\n", done,
-                    2 * velocity * engine.time() / 0.1, -stress / 1e6, b.total());
+                    2 * velocity * engine.time() / 0.1, stress / 1e6, b.total());
       }
     }
     const double wall = omp_get_wtime() - t0;

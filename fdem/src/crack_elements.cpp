@@ -6,6 +6,7 @@
 // (0,1) receives -w (tau e + sigma n), face (3,2) the opposite.
 #include "crack_elements.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include "parallel.hpp"
@@ -16,6 +17,15 @@ namespace {
 
 void zero_slots(double* s) {
   for (int k = 0; k < 8; ++k) s[k] = 0.0;
+}
+
+/// The three integration points of one element with law L.
+template <CrackLaw L>
+inline void law_points(const CrackConstants& k, const double o[3], const double s[3], double h,
+                       double inv_h, double* damage, CrackPoint p[3]) {
+  for (int i = 0; i < 3; ++i)
+    p[i] = L == CrackLaw::kBoltSteel ? bolt_steel_point(k, o[i], s[i], h, inv_h, damage[i])
+                                     : rock_point(k, o[i], s[i], h, inv_h, damage[i]);
 }
 
 /// Evaluates one element; returns true when it broke this step.
@@ -34,9 +44,18 @@ inline bool crack_element(const EngineData& d, std::size_t c, double* damage, do
   const double o0 = d0x * nx + d0y * ny, s0 = d0x * ex + d0y * ey;
   const double o1 = d1x * nx + d1y * ny, s1 = d1x * ex + d1y * ey;
   const CrackConstants& k = d.crack_laws[d.cracks.material[c]];
-  const CrackPoint p0 = crack_point(k, o0, s0, h, damage[0]);
-  const CrackPoint pm = crack_point(k, 0.5 * (o0 + o1), 0.5 * (s0 + s1), h, damage[1]);
-  const CrackPoint p1 = crack_point(k, o1, s1, h, damage[2]);
+  const double o[3] = {o0, 0.5 * (o0 + o1), o1}, s[3] = {s0, 0.5 * (s0 + s1), s1};
+  CrackPoint pt[3];
+  switch (k.law) {  // one dispatch per element; new laws add a case
+    case CrackLaw::kBoltSteel:
+      law_points<CrackLaw::kBoltSteel>(k, o, s, h, inv_h, damage, pt);
+      break;
+    case CrackLaw::kRock:
+    default:
+      law_points<CrackLaw::kRock>(k, o, s, h, inv_h, damage, pt);
+      break;
+  }
+  const CrackPoint &p0 = pt[0], &pm = pt[1], &p1 = pt[2];
   const int n_full = (damage[0] >= 1.0) + (damage[1] >= 1.0) + (damage[2] >= 1.0);
   if (n_full >= 2) {
     sum_a2 = p0.a * p0.a + pm.a * pm.a + p1.a * p1.a;
@@ -60,6 +79,46 @@ inline bool crack_element(const EngineData& d, std::size_t c, double* damage, do
 }
 
 }  // namespace
+
+namespace {
+
+/// Potential of one point per unit length: integral of sigma do + tau ds
+/// along the undamaged curves, (2x - x^2) integrates to x^2 - x^3 / 3.
+double point_energy(const CrackConstants& k, double o, double s, double h) {
+  const double op = h * k.op_per_h;
+  double e;
+  if (o < 0.0) {
+    e = 0.5 * k.pn * o * o / h;
+  } else {
+    const double x = std::min(o / op, 1.0);
+    e = k.ft * op * (x * x - x * x * x / 3.0) + (o > op ? k.ft * (o - op) : 0.0);
+  }
+  const double fs = o < 0.0 ? k.c - k.pn * o / h * k.tan_phi : k.c;
+  const double sp = h * fs * k.two_over_pt, y = std::min(std::fabs(s) / sp, 1.0);
+  return e + fs * sp * (y * y - y * y * y / 3.0);
+}
+
+}  // namespace
+
+double crack_element_energy(const EngineData& d, std::size_t c) {
+  const double* dmg = &d.cracks.damage[3 * c];
+  if (!d.cracks.active[c] || dmg[0] > 0 || dmg[1] > 0 || dmg[2] > 0) return 0.0;
+  const int* nd = &d.cracks.nodes[4 * c];
+  const double* p = d.nodes.pos.data();
+  const double tx = 0.5 * (p[2 * nd[1]] + p[2 * nd[2]] - p[2 * nd[0]] - p[2 * nd[3]]);
+  const double ty = 0.5 * (p[2 * nd[1] + 1] + p[2 * nd[2] + 1] - p[2 * nd[0] + 1] - p[2 * nd[3] + 1]);
+  const double h = std::sqrt(tx * tx + ty * ty), ex = tx / h, ey = ty / h;
+  double o[2], s[2];
+  for (int end = 0; end < 2; ++end) {
+    const double dx = p[2 * nd[end]] - p[2 * nd[3 - end]];
+    const double dy = p[2 * nd[end] + 1] - p[2 * nd[3 - end] + 1];
+    o[end] = -dx * ey + dy * ex;
+    s[end] = dx * ex + dy * ey;
+  }
+  const CrackConstants& k = d.crack_laws[d.cracks.material[c]];
+  return h / 6.0 * (point_energy(k, o[0], s[0], h) + point_energy(k, o[1], s[1], h)) +
+         2.0 * h / 3.0 * point_energy(k, 0.5 * (o[0] + o[1]), 0.5 * (s[0] + s[1]), h);
+}
 
 FailureMode classify_failure(double sum_a2, double sum_b2) {
   const double total = sum_a2 + sum_b2;

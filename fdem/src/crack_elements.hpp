@@ -12,6 +12,9 @@ namespace rockfdem::fdem::detail {
 /// inactive element's slots are zero.
 void crack_forces(EngineData& d);
 
+/// Stored energy of crack element c's undamaged branches (0 once damaged).
+double crack_element_energy(const EngineData& d, std::size_t c);
+
 /// Failure mode from the summed squared excursions at breakage: mode I when
 /// opening carries at least 90% of a^2 + b^2, mode II when slip does, else
 /// mixed.

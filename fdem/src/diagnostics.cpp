@@ -7,6 +7,7 @@
 #include <cstring>
 
 #include "engine_impl.hpp"
+#include "crack_elements.hpp"
 #include "node_update.hpp"
 #include "parallel.hpp"
 #include "triangle_force.hpp"
@@ -25,6 +26,12 @@ double Engine::strain_energy() const {
   const auto& d = impl_->d;
   return detail::block_sum(static_cast<long>(d.tris.size()), d.threads,
                            [&](long t) { return detail::triangle_strain_energy(d, t); });
+}
+
+double Engine::crack_energy() const {
+  const auto& d = impl_->d;
+  return detail::block_sum(static_cast<long>(d.cracks.size()), d.threads,
+                           [&](long c) { return detail::crack_element_energy(d, c); });
 }
 
 double Engine::unbalanced_force_ratio() const {

@@ -6,8 +6,8 @@
 namespace rockfdem::fdem::detail {
 
 /// The stability limit used by the engine: 2 / omega_max of the linearised
-/// model by power iteration (at most 400 iterations, Rayleigh quotient
-/// settled to 1e-5), reduced for damping, capped at 1.5 times the bound below.
+/// model by power iteration (at most 200 iterations, Rayleigh quotient
+/// settled to 1e-4), reduced for damping, capped at 1.5 times the bound below.
 double critical_dt(const EngineData& d);
 
 /// 2 / omega reduced for viscous, mass-proportional and local damping.

@@ -1,4 +1,16 @@
 // UCS sanity: peak strength of the fracturing specimen in the expected band.
+//
+// Band: the Mohr-Coulomb uniaxial strength of the crack elements' strength
+// parameters, sigma_c = 2 c cos(phi) / (1 - sin(phi)) = 52.0 MPa, is the
+// reference. The specimen can only fail along triangle edges (zig-zag paths
+// longer and less favourably oriented than a straight shear plane), the
+// platens are fully rough (confining the ends) and the loading rate is 25/s
+// (a few wave transits to the peak), all of which raise the peak; tensile
+// splitting cannot lower it much below sigma_c because the edges are
+// compressed. Accepted: 0.9 to 1.6 sigma_c (measured: 1.25 sigma_c, 65 MPa,
+// see docs/engine.md). The closed-form tests pin the pieces; this one guards
+// their assembly (a specimen that does not fracture, or fails at the
+// tensile strength, falls outside).
 #include <gtest/gtest.h>
 
 #include "test_models.hpp"
@@ -24,7 +36,9 @@ TEST(Ucs, peak_strength_in_expected_band) {
   const double mc = 2 * m.cohesion * std::cos(M_PI / 6) / (1 - std::sin(M_PI / 6));
   std::printf("peak %.3f MPa (Mohr-Coulomb %.3f MPa) at step %ld, broken %ld\n", peak / 1e6,
               mc / 1e6, peak_step, e.broken_counts().total());
-  EXPECT_GT(peak, 0.0);
+  EXPECT_GT(peak, 0.9 * mc);
+  EXPECT_LT(peak, 1.6 * mc);
+  EXPECT_GT(e.broken_counts().total(), 100);  // it fractured
 }
 
 }  // namespace

@@ -45,6 +45,7 @@ inline double rock_softening_integral() {
 }
 
 /// Per-material constants of a crack law, derived once from a Material.
+/// The reciprocals spare the crack loop its divisions.
 struct CrackConstants {
   CrackLaw law = CrackLaw::kRock;
   double ft = 0;          ///< rock: tensile strength; bolt: yield strength sigma_y
@@ -53,7 +54,15 @@ struct CrackConstants {
   double tan_phi = 0;     ///< rock: tan(friction angle)
   double pn = 0, pt = 0;  ///< normal and tangential penalties [Pa]
   double open_range = 0;  ///< or - op [m]
-  double slip_energy = 0; ///< sr - sp = slip_energy / fs [J/m^2 -> m * Pa]
+  double slip_energy = 0; ///< sr - sp = slip_energy / fs [Pa m]
+  // Derived.
+  double op_per_h = 0;        ///< op / h = 2 ft / pn
+  double h_per_op = 0;        ///< pn / (2 ft)
+  double half_pt = 0;         ///< pt / 2 (h / sp = half_pt / fs)
+  double two_over_pt = 0;     ///< 2 / pt (sp = 2 h fs / pt)
+  double inv_c = 0;           ///< 1 / c
+  double inv_open_range = 0;  ///< 1 / (or - op)
+  double inv_slip_energy = 0; ///< 1 / slip_energy
 };
 
 /// Derive the law constants of `m` (penalties default to 10 E).
@@ -77,6 +86,13 @@ inline CrackConstants make_crack_constants(const Material& m) {
     k.open_range = m.gf_I / (integral * m.tensile_strength);
     k.slip_energy = m.gf_II / integral;
   }
+  k.op_per_h = 2.0 * k.ft / k.pn;
+  k.h_per_op = k.pn / (2.0 * k.ft);
+  k.half_pt = 0.5 * k.pt;
+  k.two_over_pt = 2.0 / k.pt;
+  k.inv_c = 1.0 / k.c;
+  k.inv_open_range = 1.0 / k.open_range;
+  k.inv_slip_energy = 1.0 / k.slip_energy;
   return k;
 }
 
@@ -88,27 +104,39 @@ struct CrackPoint {
   double b = 0;      ///< normalised slip excursion (|s| - sp)/(sr - sp), >= 0
 };
 
-/// Hardening-softening branch shared by both laws: (2x - x^2) below the peak.
+/// Hardening branch shared by both laws: (2x - x^2) below the peak, 1 beyond.
 inline double pre_peak(double x) { return x >= 1.0 ? 1.0 : (2.0 - x) * x; }
 
+/// Raises the point's damage history to the mixed-mode damage
+/// sqrt(a^2 + b^2) (seed eq. 10), capped at 1; never lowers it.
+inline void accumulate_damage(const CrackPoint& p, double& damage) {
+  if (p.a > 0.0 || p.b > 0.0) {
+    const double trial = std::sqrt(p.a * p.a + p.b * p.b);
+    if (trial > damage) damage = std::min(trial, 1.0);
+  }
+}
+
 /// Rock law (reference sec. 2): Mohr-Coulomb strength, Evans-Marathe
-/// softening, penalty in compression; `damage` is the point's history and is
-/// raised (never lowered) to the mixed-mode damage, capped at 1.
-inline CrackPoint rock_point(const CrackConstants& k, double o, double s, double h, double& damage) {
+/// softening, penalty in compression; `damage` is the point's history.
+/// h is the element length, inv_h = 1 / h.
+///   op = 2 h ft / pn, sp = 2 h fs / pt, or - op = GfI / (I ft),
+///   sr - sp = GfII / (I fs), I = integral of z = 0.3863.
+inline CrackPoint rock_point(const CrackConstants& k, double o, double s, double h, double inv_h,
+                             double& damage) {
   CrackPoint p;
-  const double op = 2.0 * h * k.ft / k.pn;
-  const double sigma_c = o < 0.0 ? k.pn * o / h : 0.0;  // compressive penalty, unaffected by damage
-  const double fs = k.c - sigma_c * k.tan_phi;          // Mohr-Coulomb, tension positive
-  const double sp = 2.0 * h * fs / k.pt;
+  const bool closed = o < 0.0;
+  const double sigma_c = closed ? k.pn * o * inv_h : 0.0;  // penalty, unaffected by damage
+  const double fs = k.c - sigma_c * k.tan_phi;             // Mohr-Coulomb, tension positive
+  const double inv_fs = closed ? 1.0 / fs : k.inv_c;
+  const double op = h * k.op_per_h;
+  const double sp = h * fs * k.two_over_pt;
   const double abs_s = std::fabs(s);
-  p.a = o > op ? (o - op) / k.open_range : 0.0;
-  p.b = abs_s > sp ? (abs_s - sp) * fs / k.slip_energy : 0.0;
-  const double trial = std::sqrt(p.a * p.a + p.b * p.b);
-  if (trial > damage) damage = std::min(trial, 1.0);
+  p.a = o > op ? (o - op) * k.inv_open_range : 0.0;
+  p.b = abs_s > sp ? (abs_s - sp) * fs * k.inv_slip_energy : 0.0;
+  accumulate_damage(p, damage);
   const double z = damage > 0.0 ? evans_marathe_z(damage) : 1.0;
-  p.sigma = o < 0.0 ? sigma_c : pre_peak(o / op) * z * k.ft;
-  const double t = pre_peak(abs_s / sp) * z * fs;
-  p.tau = s < 0.0 ? -t : t;
+  p.sigma = closed ? sigma_c : pre_peak(o * inv_h * k.h_per_op) * z * k.ft;
+  p.tau = std::copysign(pre_peak(abs_s * inv_h * k.half_pt * inv_fs) * z * fs, s);
   return p;
 }
 
@@ -117,31 +145,31 @@ inline CrackPoint rock_point(const CrackConstants& k, double o, double s, double
 /// D = 1; shear up to tau_y, then brittle decay f_lateral = (1 - D)^2, whose
 /// integral 1/3 makes eq. 16 with eta = 6 dissipate exactly GfII.
 inline CrackPoint bolt_steel_point(const CrackConstants& k, double o, double s, double h,
-                                   double& damage) {
+                                   double inv_h, double& damage) {
   CrackPoint p;
-  const double op = 2.0 * h * k.ft / k.pn;
-  const double sp = 2.0 * h * k.c / k.pt;
+  const double op = h * k.op_per_h;
+  const double sp = h * k.c * k.two_over_pt;
   const double abs_s = std::fabs(s);
-  p.a = o > op ? (o - op) / k.open_range : 0.0;
-  p.b = abs_s > sp ? (abs_s - sp) * k.c / k.slip_energy : 0.0;
-  const double trial = std::sqrt(p.a * p.a + p.b * p.b);
-  if (trial > damage) damage = std::min(trial, 1.0);
+  p.a = o > op ? (o - op) * k.inv_open_range : 0.0;
+  p.b = abs_s > sp ? (abs_s - sp) * k.c * k.inv_slip_energy : 0.0;
+  accumulate_damage(p, damage);
   const double axial = damage < 1.0 ? k.ft + damage * (k.fu - k.ft) : 0.0;
   const double lateral = (1.0 - damage) * (1.0 - damage);
-  p.sigma = o < 0.0 ? k.pn * o / h : pre_peak(o / op) * axial;
-  const double t = pre_peak(abs_s / sp) * lateral * k.c;
-  p.tau = s < 0.0 ? -t : t;
+  p.sigma = o < 0.0 ? k.pn * o * inv_h : pre_peak(o * inv_h * k.h_per_op) * axial;
+  p.tau = std::copysign(pre_peak(abs_s * inv_h * k.half_pt * k.inv_c) * lateral * k.c, s);
   return p;
 }
 
-/// Dispatch on the law id (a switch, not a virtual call).
-inline CrackPoint crack_point(const CrackConstants& k, double o, double s, double h, double& damage) {
+/// One point of any law: a switch on the law id, no virtual call. The crack
+/// loop dispatches once per element instead (crack_elements.cpp).
+inline CrackPoint crack_point(const CrackConstants& k, double o, double s, double h,
+                              double& damage) {
   switch (k.law) {
     case CrackLaw::kBoltSteel:
-      return bolt_steel_point(k, o, s, h, damage);
+      return bolt_steel_point(k, o, s, h, 1.0 / h, damage);
     case CrackLaw::kRock:
     default:
-      return rock_point(k, o, s, h, damage);
+      return rock_point(k, o, s, h, 1.0 / h, damage);
   }
 }
 

@@ -158,6 +158,11 @@ class Engine {
   double kinetic_energy() const;
   /// Hyperelastic energy of Munjiza's law (initial stress excluded).
   double strain_energy() const;
+  /// Energy stored in the crack elements' undamaged pre-peak branches
+  /// (Simpson-integrated potential of the penalty and (2x - x^2) curves);
+  /// with kinetic_energy() and strain_energy() it closes the energy balance
+  /// of an elastic run.
+  double crack_energy() const;
   /// Sum over unconstrained node components of |net force| over the sum of
   /// the magnitudes of the forces acting on them (last step's forces).
   double unbalanced_force_ratio() const;
