@@ -112,6 +112,7 @@
 #include <cmath>
 #include <cstdint>
 #include <map>
+#include <memory>
 #include <numeric>
 #include <string>
 #include <unordered_set>
@@ -223,11 +224,13 @@ class InsituProblem {
   const FESystem<2> fe_;
   const MappingFE<2> mapping_;
   // One point per cell (the centroid) integrates the P1 weak form exactly;
-  // three per box edge integrate the traction (see the introduction).
+  // three per box edge integrate the traction (see the introduction). The
+  // FEValues objects remember the last cell they saw (to skip work on
+  // congruent cells), so they are made anew with every new triangulation.
   const QGaussSimplex<2> quadrature_;
   const QGaussSimplex<1> face_quadrature_;
-  FEValues<2> fe_values_;
-  FEFaceValues<2> fe_face_values_;
+  std::unique_ptr<FEValues<2>> fe_values_;
+  std::unique_ptr<FEFaceValues<2>> fe_face_values_;
   DoFHandler<2> dof_handler_;
   AffineConstraints<double> constraints_;
   std::vector<types::global_dof_index> pinned_dofs_;
@@ -258,11 +261,6 @@ InsituProblem::InsituProblem(const mesh::Mesh& mesh, const InsituSpec& spec)
       mapping_(FE_SimplexP<2>(1)),
       quadrature_(1),
       face_quadrature_(3),
-      fe_values_(mapping_, fe_, quadrature_,
-                 update_values | update_gradients | update_quadrature_points | update_JxW_values),
-      fe_face_values_(mapping_, fe_, face_quadrature_,
-                      update_values | update_quadrature_points | update_normal_vectors |
-                          update_JxW_values),
       eps_previous_(mesh.n_triangles()),
       eps_install_(mesh.n_triangles()) {
   // validate() has made sure every material a stage needs is present.
@@ -404,6 +402,8 @@ void InsituProblem::make_grid() {
                      " disconnected parts: the system is singular (a zone floats free once "
                      "the core is removed; check the zones or keep alpha > 0)");
 
+  fe_values_.reset();
+  fe_face_values_.reset();
   dof_handler_.clear();
   triangulation_.clear();
   triangulation_.create_triangulation(vertices, cells, SubCellData());
@@ -515,6 +515,12 @@ void InsituProblem::setup_system() {
   solution_.reinit(dof_handler_.n_dofs());
   system_rhs_.reinit(dof_handler_.n_dofs());
   insitu_forces_.reinit(dof_handler_.n_dofs());
+  fe_values_ = std::make_unique<FEValues<2>>(
+      mapping_, fe_, quadrature_,
+      update_values | update_gradients | update_quadrature_points | update_JxW_values);
+  fe_face_values_ = std::make_unique<FEFaceValues<2>>(
+      mapping_, fe_, face_quadrature_,
+      update_values | update_quadrature_points | update_normal_vectors | update_JxW_values);
   have_system_ = true;
 }
 
@@ -589,7 +595,7 @@ InsituProblem::CellLaw InsituProblem::cell_law(const int triangle, const double 
 template <class CellVector>
 void InsituProblem::add_boundary_tractions(const DoFHandler<2>::active_cell_iterator& cell,
                                            const double sign, CellVector& cell_vector) {
-  FEFaceValues<2>& fe_face_values = fe_face_values_;
+  FEFaceValues<2>& fe_face_values = *fe_face_values_;
   const FEValuesExtractors::Vector displacement(0);
   for (const unsigned int f : cell->face_indices()) {
     if (!loaded(cell->face(f))) continue;
@@ -664,7 +670,7 @@ void InsituProblem::assemble_system(const double alpha) {
   system_rhs_ = 0;
   insitu_forces_ = 0;
 
-  FEValues<2>& fe_values = fe_values_;
+  FEValues<2>& fe_values = *fe_values_;
   const FEValuesExtractors::Vector displacement(0);
 
   const unsigned int dofs_per_cell = fe_.n_dofs_per_cell();
@@ -816,7 +822,7 @@ void InsituProblem::output_results(const double alpha, InsituField& field) {
   field.ux.assign(n_v, 0.0);
   field.uy.assign(n_v, 0.0);
 
-  FEValues<2>& fe_values = fe_values_;
+  FEValues<2>& fe_values = *fe_values_;
   const FEValuesExtractors::Vector displacement(0);
   std::vector<SymmetricTensor<2, 2>> eps_q(quadrature_.size());
   std::vector<types::global_dof_index> local_dof_indices(fe_.n_dofs_per_cell());
