@@ -30,7 +30,7 @@ using namespace rockfdem;
 int main(int argc, char** argv) {
   long n_tri = 33000, steps = 10000, report = 0;
   int threads = 0;
-  double velocity = 0.5;
+  double velocity = 1.0;  // strain rate 20/s: peak near step 6000, post-peak by 10^4
   std::printf("command:");
   for (int i = 0; i < argc; ++i) std::printf(" %s", argv[i]);
   std::printf("\n");

@@ -16,6 +16,15 @@ TEST(CrackLaw, evans_marathe_curve_runs_from_one_to_zero) {
     EXPECT_LT(evans_marathe_z(i / 100.0), evans_marathe_z((i - 1) / 100.0));
 }
 
+TEST(CrackLaw, tabulated_curve_matches_exact_within_1e_6) {
+  EXPECT_EQ(softening_z(0.0), 1.0);
+  EXPECT_EQ(softening_z(1.0), 0.0);
+  for (int i = 0; i <= 10007; ++i) {
+    const double d = i / 10007.0;
+    EXPECT_NEAR(softening_z(d), evans_marathe_z(d), 1e-6);
+  }
+}
+
 // Reference sec. 2: the integral of z over [0, 1] is 0.3863, so the exact
 // softening range is or - op = 2.589 GfI / ft (independent check: 1e5-point
 // midpoint rule gives 0.386307).

@@ -67,6 +67,7 @@ TEST(Wave, p_wave_arrival_matches_cp) {
 TEST(Wave, undamped_vibration_conserves_energy) {
   ModelInput in = bar(0.2, 40, false);
   in.boundary_conditions.clear();
+  in.threads = 1;  // small model: threads would only add fork/join cost
   Engine e(in);
   const auto& mass = e.node_mass();
   for (std::size_t n = 0; n < e.n_nodes(); ++n) {

@@ -12,6 +12,7 @@
 #pragma once
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 #include "rockfdem/fdem/model_input.hpp"
@@ -27,6 +28,24 @@ inline double evans_marathe_z(double d) {
   const double r = 1.0 - d;
   const double r2 = r * r;
   return (1.0 - k1 * std::exp(d * k2)) * (a * r + b * r2 * r2 * r2);
+}
+
+/// z(D) from a 4096-interval table with linear interpolation: the crack loop
+/// evaluates it at every damaged point, and exp() there cost more than the
+/// rest of the law. Exact at D = 0 and 1; relative error below 1e-6 elsewhere
+/// (tested), far below anything the damage history resolves.
+inline double softening_z(double d) {
+  constexpr int n = 4096;
+  static const auto table = [] {
+    std::array<double, n + 2> t{};
+    for (int i = 0; i <= n; ++i) t[i] = evans_marathe_z(double(i) / n);
+    t[n + 1] = 0.0;  // guard for d == 1
+    return t;
+  }();
+  const double x = d * n;
+  const int i = static_cast<int>(x);
+  const double f = x - i;
+  return table[i] + f * (table[i + 1] - table[i]);
 }
 
 /// Integral of z(D) over [0, 1] (about 0.3863), by composite Simpson with
@@ -134,7 +153,7 @@ inline CrackPoint rock_point(const CrackConstants& k, double o, double s, double
   p.a = o > op ? (o - op) * k.inv_open_range : 0.0;
   p.b = abs_s > sp ? (abs_s - sp) * fs * k.inv_slip_energy : 0.0;
   accumulate_damage(p, damage);
-  const double z = damage > 0.0 ? evans_marathe_z(damage) : 1.0;
+  const double z = damage > 0.0 ? softening_z(damage) : 1.0;
   p.sigma = closed ? sigma_c : pre_peak(o * inv_h * k.h_per_op) * z * k.ft;
   p.tau = std::copysign(pre_peak(abs_s * inv_h * k.half_pt * inv_fs) * z * fs, s);
   return p;
