@@ -16,6 +16,12 @@ fdem::Material engine_material(const MaterialSpec& m, const EngineSettings& e) {
   f.residual_friction_deg = m.residual_friction_angle;
   f.gf_I = m.fracture_energy_I;
   f.gf_II = m.fracture_energy_II;
+  // A zone given no strength is elastic: the crack elements that may touch
+  // it (next to a fracture zone) get a strength no stress reaches.
+  if (f.tensile_strength <= 0) f.tensile_strength = 10 * m.young;
+  if (f.cohesion <= 0) f.cohesion = 10 * m.young;
+  if (f.gf_I <= 0) f.gf_I = 1e9;
+  if (f.gf_II <= 0) f.gf_II = 1e9;
   f.normal_penalty = m.penalty_factor * m.young;
   f.damping_ratio = e.damping_ratio;
   return f;
