@@ -115,6 +115,7 @@
 #include <memory>
 #include <numeric>
 #include <string>
+#include <unordered_map>
 #include <unordered_set>
 #include <vector>
 
@@ -129,18 +130,20 @@ using namespace dealii;
 
 constexpr double kPi = 3.14159265358979323846;
 
-/// The boundary id of faces that carry the far-field (or Kirsch) traction:
-/// edges on the outer boundary of the FULL mesh. Faces that become boundary
-/// only because cells were removed (the excavation wall) keep id 0 and no
-/// traction.
-constexpr types::boundary_id kLoadedBoundary = 1;
-/// Loaded faces on the (horizontal) bottom of the box: with gravity they
-/// also give up the weight the excavation removes.
-constexpr types::boundary_id kBaseBoundary = 2;
+/// Boundary faces carry the mesh's edge tags as boundary ids (kBottom ...
+/// kLeft on the box, kExcavation where the core was removed, 0 untagged).
+/// What the assembly needs is kept apart, in the face's user index, so that
+/// it does not depend on how a mesh was tagged:
+///   kLoaded: an edge on the outer boundary of the FULL mesh (one triangle
+///            there): it carries the far-field (or Kirsch) traction;
+///   kBase:   a loaded edge lying on the (horizontal) bottom of the box: with
+///            gravity it also gives up the weight the excavation removes.
+/// Faces that became boundary only because cells were removed (the wall of
+/// the open hole) are neither: no traction.
+enum FaceLoad : unsigned int { kFree = 0, kLoaded = 1, kBase = 2 };
 
 bool loaded(const TriaIterator<TriaAccessor<1, 2, 2>>& face) {
-  return face->at_boundary() &&
-         (face->boundary_id() == kLoadedBoundary || face->boundary_id() == kBaseBoundary);
+  return face->at_boundary() && face->user_index() != kFree;
 }
 
 /// What a triangle is during one stage.
@@ -435,8 +438,10 @@ void InsituProblem::make_grid() {
           {cell->vertex_index(0), cell->vertex_index(1), cell->vertex_index(2)}));
   }
 
-  // Faces on the outer boundary of the full mesh carry the traction; those
-  // of them that are horizontal at the lowest y form the base.
+  // Boundary ids from the mesh's tags; the load kind (see FaceLoad) from
+  // the full mesh's outer boundary, the base being its part at the lowest y.
+  std::unordered_map<std::uint64_t, int> tags;
+  for (const auto& e : mesh_.edges) tags[edge_key(e.a, e.b)] = e.tag;
   double y_min = mesh_.y[0];
   for (const double y : mesh_.y) y_min = std::min(y_min, y);
   double extent = 0;
@@ -447,13 +452,17 @@ void InsituProblem::make_grid() {
         const auto face = cell->face(f);
         const int a = grid_to_mesh_vertex_[face->vertex_index(0)];
         const int b = grid_to_mesh_vertex_[face->vertex_index(1)];
-        types::boundary_id id = 0;
+        const auto tag = tags.find(edge_key(a, b));
+        face->set_boundary_id(tag != tags.end() && tag->second > 0 && tag->second < 255
+                                  ? static_cast<types::boundary_id>(tag->second)
+                                  : 0);
+        FaceLoad load = kFree;
         if (outer_edges_.count(edge_key(a, b))) {
           const bool base = std::abs(mesh_.y[a] - y_min) < 1e-12 * extent &&
                             std::abs(mesh_.y[b] - y_min) < 1e-12 * extent;
-          id = base ? kBaseBoundary : kLoadedBoundary;
+          load = base ? kBase : kLoaded;
         }
-        face->set_boundary_id(id);
+        face->set_user_index(load);
       }
 
   grid_removed_ = std::move(removed);
@@ -599,7 +608,7 @@ void InsituProblem::add_boundary_tractions(const DoFHandler<2>::active_cell_iter
   const FEValuesExtractors::Vector displacement(0);
   for (const unsigned int f : cell->face_indices()) {
     if (!loaded(cell->face(f))) continue;
-    const bool base = cell->face(f)->boundary_id() == kBaseBoundary;
+    const bool base = cell->face(f)->user_index() == kBase;
     fe_face_values.reinit(cell, f);
     for (const unsigned int q : fe_face_values.quadrature_point_indices()) {
       const Point<2>& x = fe_face_values.quadrature_point(q);
@@ -644,7 +653,7 @@ void InsituProblem::balance_removed_weight(const double alpha) {
   double length = 0, first = 0, second = 0;  // int 1, int x, int x^2 over the base
   for (const auto& cell : triangulation_.active_cell_iterators())
     for (const unsigned int f : cell->face_indices())
-      if (cell->face(f)->at_boundary() && cell->face(f)->boundary_id() == kBaseBoundary) {
+      if (cell->face(f)->at_boundary() && cell->face(f)->user_index() == kBase) {
         const double x0 = cell->face(f)->vertex(0)[0], x1 = cell->face(f)->vertex(1)[0];
         const double l = std::abs(x1 - x0);
         length += l;

@@ -77,7 +77,9 @@ TEST(GmshDefaultTunnel, seed_sequence_converges_inward_and_stays_in_balance) {
   for (const InsituField& f : fields) {
     EXPECT_LT(f.unbalanced_ratio, 1e-8);
     EXPECT_LT(f.reaction_ratio, 1e-8);
-    if (f.alpha < 1) EXPECT_LT(f.uy[crown], previous);  // the crown settles, more each stage
+    if (f.alpha < 1) {
+      EXPECT_LT(f.uy[crown], previous);  // the crown settles, more each stage
+    }
     previous = f.uy[crown];
   }
   EXPECT_TRUE(fields.back().lining_installed);
