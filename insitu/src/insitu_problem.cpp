@@ -560,7 +560,10 @@ double InsituProblem::initial_szz(const Point<2>& x) const {
     const double depth = spec_.gravity.reference_y - x[1];
     return -(*ff.sZ) * (ff.sV + spec_.gravity.unit_weight * depth) / ff.sV;
   }
-  return spec_.materials.rock->nu * trace(initial_stress(x));
+  // Plane strain from rest in the host ground (the core's material where a
+  // mesh has no rock zone, e.g. a specimen that is all core).
+  const auto& ground = spec_.materials.rock ? spec_.materials.rock : spec_.materials.core;
+  return ground->nu * trace(initial_stress(x));
 }
 
 Tensor<1, 2> InsituProblem::boundary_traction(const Point<2>& x,
