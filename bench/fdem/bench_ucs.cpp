@@ -36,11 +36,16 @@ int main(int argc, char** argv) {
   std::printf("\n");
   for (int i = 1; i + 1 < argc; i += 2) {
     const std::string a = argv[i];
-    if (a == "--triangles") n_tri = std::atol(argv[i + 1]);
-    else if (a == "--steps") steps = std::atol(argv[i + 1]);
-    else if (a == "--threads") threads = std::atoi(argv[i + 1]);
-    else if (a == "--velocity") velocity = std::atof(argv[i + 1]);
-    else if (a == "--report-every") report = std::atol(argv[i + 1]);
+    if (a == "--triangles")
+      n_tri = std::atol(argv[i + 1]);
+    else if (a == "--steps")
+      steps = std::atol(argv[i + 1]);
+    else if (a == "--threads")
+      threads = std::atoi(argv[i + 1]);
+    else if (a == "--velocity")
+      velocity = std::atof(argv[i + 1]);
+    else if (a == "--report-every")
+      report = std::atol(argv[i + 1]);
     else {
       std::fprintf(stderr, "unknown option %s\n", a.c_str());
       return 2;

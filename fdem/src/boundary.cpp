@@ -57,7 +57,8 @@ EdgeRef resolve_edge(const ModelInput& in, const VertexTriangles& vt, const Tagg
   return found;
 }
 
-void add_dashpot(BoundaryRecord& r, const SolidConstants& m, double nx, double ny, double half_len) {
+void add_dashpot(BoundaryRecord& r, const SolidConstants& m, double nx, double ny,
+                 double half_len) {
   const double cn = m.rho * m.cp * half_len, ct = m.rho * m.cs * half_len;
   // C = cn n n^T + ct t t^T with t = (-ny, nx).
   r.cxx += cn * nx * nx + ct * ny * ny;

@@ -106,7 +106,8 @@ double crack_element_energy(const EngineData& d, std::size_t c) {
   const int* nd = &d.cracks.nodes[4 * c];
   const double* p = d.nodes.pos.data();
   const double tx = 0.5 * (p[2 * nd[1]] + p[2 * nd[2]] - p[2 * nd[0]] - p[2 * nd[3]]);
-  const double ty = 0.5 * (p[2 * nd[1] + 1] + p[2 * nd[2] + 1] - p[2 * nd[0] + 1] - p[2 * nd[3] + 1]);
+  const double ty =
+      0.5 * (p[2 * nd[1] + 1] + p[2 * nd[2] + 1] - p[2 * nd[0] + 1] - p[2 * nd[3] + 1]);
   const double h = std::sqrt(tx * tx + ty * ty), ex = tx / h, ey = ty / h;
   double o[2], s[2];
   for (int end = 0; end < 2; ++end) {

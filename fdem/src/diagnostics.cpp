@@ -6,8 +6,8 @@
 #include <cstdio>
 #include <cstring>
 
-#include "engine_impl.hpp"
 #include "crack_elements.hpp"
+#include "engine_impl.hpp"
 #include "node_update.hpp"
 #include "parallel.hpp"
 #include "triangle_force.hpp"
@@ -57,7 +57,8 @@ double Engine::unbalanced_force_ratio() const {
                (fy_on ? std::fabs(d.nodes.fext[2 * i + 1]) : 0.0);
     for (int k = d.nodes.slot_start[i]; k < d.nodes.slot_start[i + 1]; ++k) {
       const int sl = d.nodes.slot_index[k];
-      s += (fx_on ? std::fabs(d.slots[2 * sl]) : 0.0) + (fy_on ? std::fabs(d.slots[2 * sl + 1]) : 0.0);
+      s += (fx_on ? std::fabs(d.slots[2 * sl]) : 0.0) +
+           (fy_on ? std::fabs(d.slots[2 * sl + 1]) : 0.0);
     }
     return s;
   });
@@ -70,9 +71,15 @@ BrokenCounts Engine::broken_counts() const {
   for (std::size_t e = 0; e < c.size(); ++e) {
     if (c.state[e] != std::uint8_t(CrackState::kBroken)) continue;
     switch (FailureMode(c.mode[e])) {
-      case FailureMode::kModeI: ++b.mode_I; break;
-      case FailureMode::kModeII: ++b.mode_II; break;
-      default: ++b.mixed; break;
+      case FailureMode::kModeI:
+        ++b.mode_I;
+        break;
+      case FailureMode::kModeII:
+        ++b.mode_II;
+        break;
+      default:
+        ++b.mixed;
+        break;
     }
   }
   return b;
@@ -118,10 +125,10 @@ std::size_t Engine::memory_bytes() const {
   const auto& t = d.tris;
   const auto& c = d.cracks;
   return b(n.pos) + b(n.vel) + b(n.mesh_pos) + b(n.mass) + b(n.inv_mass) + b(n.fext) + b(n.bc) +
-         b(n.vertex) + b(n.slot_start) + b(n.slot_index) + b(t.nodes) + b(t.ref_inv) +
-         b(t.area0) + b(t.eta) + b(t.alpha) + b(t.sigma0) + b(t.material) + b(t.active) +
-         b(c.nodes) + b(c.tri) + b(c.damage) + b(c.material) + b(c.state) + b(c.mode) +
-         b(c.active) + b(c.broken_step) + b(d.slots) + b(d.vertex_nodes) + b(d.vertex_node_start);
+         b(n.vertex) + b(n.slot_start) + b(n.slot_index) + b(t.nodes) + b(t.ref_inv) + b(t.area0) +
+         b(t.eta) + b(t.alpha) + b(t.sigma0) + b(t.material) + b(t.active) + b(c.nodes) + b(c.tri) +
+         b(c.damage) + b(c.material) + b(c.state) + b(c.mode) + b(c.active) + b(c.broken_step) +
+         b(d.slots) + b(d.vertex_nodes) + b(d.vertex_node_start);
 }
 
 }  // namespace rockfdem::fdem

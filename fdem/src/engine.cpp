@@ -32,8 +32,8 @@ detail::SolidConstants solid_constants(const Material& m, Plane plane) {
   detail::SolidConstants s;
   const double e = m.young, nu = m.poisson;
   s.mu = e / (2.0 * (1.0 + nu));
-  s.lambda = plane == Plane::kStrain ? e * nu / ((1.0 + nu) * (1.0 - 2.0 * nu))
-                                     : e * nu / (1.0 - nu * nu);
+  s.lambda =
+      plane == Plane::kStrain ? e * nu / ((1.0 + nu) * (1.0 - 2.0 * nu)) : e * nu / (1.0 - nu * nu);
   s.rho = m.density;
   s.cp = std::sqrt((s.lambda + 2.0 * s.mu) / s.rho);
   s.cs = std::sqrt(s.mu / s.rho);
@@ -224,7 +224,8 @@ void Engine::check_reversal() {
   if (im.reversals < 3) return;
   std::ostringstream msg;
   msg << "fdem: step " << im.d.step << ": unstable time integration: the free nodes' velocities "
-      << "reversed and grew by a factor " << fmt(-dot / kin) << " (sum m v_old.v_new / sum m v_old^2)"
+      << "reversed and grew by a factor " << fmt(-dot / kin)
+      << " (sum m v_old.v_new / sum m v_old^2)"
       << " for 3 steps in a row. dt = " << fmt(im.d.dt) << " s against the stability limit "
       << fmt(im.critical_dt) << " s; reduce dt (do not force it above the limit).";
   throw NumericalError(msg.str());
@@ -263,8 +264,8 @@ double Engine::time() const { return impl_->d.time; }
 void Engine::set_stiffness_factor(std::size_t t, double alpha) {
   check_index(t, n_triangles(), "triangle");
   if (!(alpha >= 0 && alpha <= 1e3))
-    throw InputError("fdem: stiffness factor " + fmt(alpha) + " for triangle " +
-                     std::to_string(t) + " must lie in [0, 1000]");
+    throw InputError("fdem: stiffness factor " + fmt(alpha) + " for triangle " + std::to_string(t) +
+                     " must lie in [0, 1000]");
   impl_->d.tris.alpha[t] = alpha;
   impl_->critical_dt = -1;
 }

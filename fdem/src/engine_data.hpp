@@ -22,41 +22,41 @@ namespace rockfdem::fdem::detail {
 struct SolidConstants {
   double mu = 0, lambda = 0;  ///< Lame constants (lambda* in plane stress)
   double rho = 0;
-  double cp = 0, cs = 0;      ///< P and S wave speeds (absorbing boundaries)
+  double cp = 0, cs = 0;  ///< P and S wave speeds (absorbing boundaries)
 };
 
 struct Nodes {
-  std::vector<double> pos, vel;     ///< interleaved x, y
-  std::vector<double> mesh_pos;     ///< mesh vertex position (displacement origin)
+  std::vector<double> pos, vel;  ///< interleaved x, y
+  std::vector<double> mesh_pos;  ///< mesh vertex position (displacement origin)
   std::vector<double> mass, inv_mass;
-  std::vector<double> fext;         ///< interleaved: gravity + tractions [N/m]
-  std::vector<int> bc;              ///< -1 or index into BoundaryRecords
-  std::vector<int> vertex;          ///< mesh vertex of each node
-  std::vector<int> slot_start;      ///< CSR over force slots, n + 1 entries
+  std::vector<double> fext;     ///< interleaved: gravity + tractions [N/m]
+  std::vector<int> bc;          ///< -1 or index into BoundaryRecords
+  std::vector<int> vertex;      ///< mesh vertex of each node
+  std::vector<int> slot_start;  ///< CSR over force slots, n + 1 entries
   std::vector<int> slot_index;
   std::size_t size() const { return mass.size(); }
 };
 
 struct Triangles {
-  std::vector<int> nodes;           ///< 3 per triangle
-  std::vector<double> ref_inv;      ///< F0^-1 row-major, 4 per triangle
-  std::vector<double> area0;        ///< reference area
-  std::vector<double> eta;          ///< viscous damping coefficient [Pa s]
-  std::vector<double> alpha;        ///< stiffness factor
-  std::vector<double> sigma0;       ///< initial stress (sxx, syy, sxy); empty if none
+  std::vector<int> nodes;       ///< 3 per triangle
+  std::vector<double> ref_inv;  ///< F0^-1 row-major, 4 per triangle
+  std::vector<double> area0;    ///< reference area
+  std::vector<double> eta;      ///< viscous damping coefficient [Pa s]
+  std::vector<double> alpha;    ///< stiffness factor
+  std::vector<double> sigma0;   ///< initial stress (sxx, syy, sxy); empty if none
   std::vector<std::uint16_t> material;
   std::vector<std::uint8_t> active;
   std::size_t size() const { return area0.size(); }
 };
 
 struct Cracks {
-  std::vector<int> nodes;           ///< 4 per element: 0,1 first face; 3 faces 0, 2 faces 1
-  std::vector<int> tri;             ///< 2 per element
-  std::vector<double> damage;       ///< 3 per element (end 0, midpoint, end 1)
+  std::vector<int> nodes;      ///< 4 per element: 0,1 first face; 3 faces 0, 2 faces 1
+  std::vector<int> tri;        ///< 2 per element
+  std::vector<double> damage;  ///< 3 per element (end 0, midpoint, end 1)
   std::vector<std::uint16_t> material;
-  std::vector<std::uint8_t> state;  ///< CrackState
-  std::vector<std::uint8_t> mode;   ///< FailureMode
-  std::vector<std::uint8_t> active; ///< both triangles active
+  std::vector<std::uint8_t> state;   ///< CrackState
+  std::vector<std::uint8_t> mode;    ///< FailureMode
+  std::vector<std::uint8_t> active;  ///< both triangles active
   std::vector<std::int32_t> broken_step;
   std::size_t size() const { return material.size(); }
 };
@@ -98,10 +98,10 @@ struct EngineData {
   std::vector<int> vertex_node_start, vertex_nodes;  ///< CSR mesh vertex -> engine nodes
   std::vector<NodalLoad> loads;
   std::vector<TagNodes> tag_nodes;
-  bool masses_dirty = true;                 ///< rebuild masses, fext, crack activity before stepping
-  std::vector<double> slots;               ///< interleaved fx, fy per slot
-  std::vector<double> block_partial;       ///< node loop: 2 partial sums per node block
-  double reversal[2] = {0, 0};             ///< sum m v_old.v_new, sum m v_old^2 (free nodes)
+  bool masses_dirty = true;           ///< rebuild masses, fext, crack activity before stepping
+  std::vector<double> slots;          ///< interleaved fx, fy per slot
+  std::vector<double> block_partial;  ///< node loop: 2 partial sums per node block
+  double reversal[2] = {0, 0};        ///< sum m v_old.v_new, sum m v_old^2 (free nodes)
   DampingSettings damping;
   double gravity[2] = {0, 0};
   double dt = 0;

@@ -10,9 +10,7 @@
 namespace rockfdem::fdem::detail {
 namespace {
 
-[[noreturn]] void fail(const std::string& what) {
-  throw InputError("fdem model input: " + what);
-}
+[[noreturn]] void fail(const std::string& what) { throw InputError("fdem model input: " + what); }
 
 template <class T>
 std::string str(const T& v) {

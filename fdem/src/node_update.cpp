@@ -87,7 +87,8 @@ long node_update(EngineData& d) {
   double* partial = d.block_partial.data();
   long first_bad = nn;
 #pragma omp parallel for schedule(static) num_threads(thread_count(d.threads)) \
-    reduction(min : first_bad)
+    reduction(min                                                              \
+              : first_bad)
   for (long blk = 0; blk < n_blocks; ++blk) {
     double dot = 0, kin = 0;
     const long end = std::min(nn, (blk + 1) * kNodeBlock);

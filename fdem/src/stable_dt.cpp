@@ -166,7 +166,8 @@ void apply_stiffness(const EngineData& d, const std::vector<double>& u, std::vec
     const int* nd = &d.cracks.nodes[4 * e];
     const double* p = d.nodes.pos.data();
     const double tx = 0.5 * (p[2 * nd[1]] + p[2 * nd[2]] - p[2 * nd[0]] - p[2 * nd[3]]);
-    const double ty = 0.5 * (p[2 * nd[1] + 1] + p[2 * nd[2] + 1] - p[2 * nd[0] + 1] - p[2 * nd[3] + 1]);
+    const double ty =
+        0.5 * (p[2 * nd[1] + 1] + p[2 * nd[2] + 1] - p[2 * nd[0] + 1] - p[2 * nd[3] + 1]);
     const double h = std::sqrt(tx * tx + ty * ty), ex = tx / h, ey = ty / h;
     const CrackConstants& k = d.crack_laws[d.cracks.material[e]];
     double o[2], sl[2];

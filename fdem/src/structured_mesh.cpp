@@ -1,9 +1,8 @@
 // Structured rectangle meshes for tests and benchmarks (no gmsh needed).
 #include "rockfdem/fdem/structured_mesh.hpp"
 
-#include <cmath>
-
 #include <algorithm>
+#include <cmath>
 
 #include "rockfdem/error.hpp"
 
@@ -39,7 +38,7 @@ ModelInput structured_rectangle(const RectangleSpec& s, const Material& material
       if ((i + j) % 2 == 0) {  // diagonal a-c
         in.triangles.push_back({a, b, c});
         in.triangles.push_back({a, c, d});
-      } else {                 // diagonal b-d
+      } else {  // diagonal b-d
         in.triangles.push_back({a, b, d});
         in.triangles.push_back({b, c, d});
       }

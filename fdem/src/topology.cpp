@@ -4,6 +4,8 @@
 // fracture share a single engine node; every fracture triangle gets its own.
 // A crack element sits on each interior edge with a fracture triangle on at
 // least one side, so it always joins two distinct node pairs.
+#include "topology.hpp"
+
 #include <algorithm>
 #include <array>
 #include <cstdint>
@@ -11,7 +13,6 @@
 #include <utility>
 
 #include "rockfdem/error.hpp"
-#include "topology.hpp"
 
 namespace rockfdem::fdem::detail {
 namespace {
@@ -127,8 +128,8 @@ void build_cracks(const ModelInput& in, EngineData& d) {
   uses.reserve(3 * nt);
   for (std::size_t t = 0; t < nt; ++t)
     for (int k = 0; k < 3; ++k)
-      uses.push_back({edge_key(in.triangles[t][k], in.triangles[t][(k + 1) % 3]),
-                      static_cast<int>(t), k});
+      uses.push_back(
+          {edge_key(in.triangles[t][k], in.triangles[t][(k + 1) % 3]), static_cast<int>(t), k});
   std::sort(uses.begin(), uses.end(), [](const EdgeUse& p, const EdgeUse& q) {
     return p.key != q.key ? p.key < q.key : p.tri < q.tri;
   });

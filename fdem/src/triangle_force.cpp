@@ -8,10 +8,11 @@
 // (objectivity); for small strains it is S0 itself. alpha scales the whole
 // stress, initial part included: that is what core softening needs when the
 // in-situ state is held as S0 (reference sec. 5).
+#include "triangle_force.hpp"
+
 #include <cmath>
 
 #include "parallel.hpp"
-#include "triangle_force.hpp"
 
 namespace rockfdem::fdem::detail {
 namespace {
@@ -101,7 +102,8 @@ long triangle_forces(EngineData& d) {
   const std::uint8_t* active = d.tris.active.data();
   long first_bad = nt;
 #pragma omp parallel for schedule(static) num_threads(thread_count(d.threads)) \
-    reduction(min : first_bad)
+    reduction(min                                                              \
+              : first_bad)
   for (long t = 0; t < nt; ++t) {
     if (!active[t]) continue;  // an inactive triangle's slots are kept at zero
     TriangleState s;
@@ -135,8 +137,8 @@ double triangle_strain_energy(const EngineData& d, std::size_t t) {
   const double* F = s.F;
   const double tr_b = F[0] * F[0] + F[1] * F[1] + F[2] * F[2] + F[3] * F[3];
   const double ln_j = std::log(s.J);
-  const double w = 0.5 * m.mu * (tr_b - 2.0) - m.mu * ln_j +
-                   0.25 * m.lambda * (s.J * s.J - 1.0 - 2.0 * ln_j);
+  const double w =
+      0.5 * m.mu * (tr_b - 2.0) - m.mu * ln_j + 0.25 * m.lambda * (s.J * s.J - 1.0 - 2.0 * ln_j);
   return d.tris.alpha[t] * d.tris.area0[t] * w;
 }
 

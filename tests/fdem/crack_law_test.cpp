@@ -1,9 +1,10 @@
 // The crack laws at one integration point: the Evans-Marathe curve, the
 // energy-exact softening constant, and the energies of the rock and
 // bolt-steel laws along monotonic paths (closed forms in each test).
+#include "rockfdem/fdem/crack_law.hpp"
+
 #include <gtest/gtest.h>
 
-#include "rockfdem/fdem/crack_law.hpp"
 #include "test_models.hpp"
 
 namespace rockfdem::fdem {

@@ -33,8 +33,8 @@ ModelInput distorted_patch(const Material& m) {
   std::mt19937 rng(7);
   std::uniform_real_distribution<double> jitter(-0.003, 0.003);
   for (std::size_t v = 0; v < in.x.size(); ++v) {
-    const bool boundary = in.x[v] < 1e-9 || in.x[v] > 0.06 - 1e-9 || in.y[v] < 1e-9 ||
-                          in.y[v] > 0.06 - 1e-9;
+    const bool boundary =
+        in.x[v] < 1e-9 || in.x[v] > 0.06 - 1e-9 || in.y[v] < 1e-9 || in.y[v] > 0.06 - 1e-9;
     if (boundary) continue;
     in.x[v] += jitter(rng);
     in.y[v] += jitter(rng);
@@ -71,8 +71,8 @@ TEST(Triangle, patch_test_homogeneous_deformation) {
   const double f_scale = scale * 0.01;  // stress times cell size
   for (std::size_t n = 0; n < e.n_nodes(); ++n) {
     const int v = e.node_vertex()[n];
-    const bool boundary = in.x[v] < 1e-9 || in.x[v] > 0.06 - 1e-9 || in.y[v] < 1e-9 ||
-                          in.y[v] > 0.06 - 1e-9;
+    const bool boundary =
+        in.x[v] < 1e-9 || in.x[v] > 0.06 - 1e-9 || in.y[v] < 1e-9 || in.y[v] > 0.06 - 1e-9;
     if (boundary) continue;
     EXPECT_NEAR(e.node_force(n)[0], 0.0, 1e-9 * f_scale);
     EXPECT_NEAR(e.node_force(n)[1], 0.0, 1e-9 * f_scale);
@@ -147,10 +147,9 @@ TEST(Triangle, rigid_rotation_objectivity) {
   place(e, in, U);
   const Stress s0 = e.triangle_stress(0);
   const double q = M_PI / 2;
-  const double RU[4] = {std::cos(q) * U[0] - std::sin(q) * U[2],
-                        std::cos(q) * U[1] - std::sin(q) * U[3],
-                        std::sin(q) * U[0] + std::cos(q) * U[2],
-                        std::sin(q) * U[1] + std::cos(q) * U[3]};
+  const double RU[4] = {
+      std::cos(q) * U[0] - std::sin(q) * U[2], std::cos(q) * U[1] - std::sin(q) * U[3],
+      std::sin(q) * U[0] + std::cos(q) * U[2], std::sin(q) * U[1] + std::cos(q) * U[3]};
   place(e, in, RU);
   const Stress s1 = e.triangle_stress(0), expect = rotate(s0, q);
   for (int k = 0; k < 3; ++k) EXPECT_NEAR(s1[k], expect[k], 1e-9 * std::fabs(s0[0]));

@@ -67,21 +67,21 @@ inline double rock_softening_integral() {
 /// The reciprocals spare the crack loop its divisions.
 struct CrackConstants {
   CrackLaw law = CrackLaw::kRock;
-  double ft = 0;          ///< rock: tensile strength; bolt: yield strength sigma_y
-  double fu = 0;          ///< bolt: ultimate strength sigma_u
-  double c = 0;           ///< rock: cohesion; bolt: shear yield tau_y
-  double tan_phi = 0;     ///< rock: tan(friction angle)
-  double pn = 0, pt = 0;  ///< normal and tangential penalties [Pa]
-  double open_range = 0;  ///< or - op [m]
-  double slip_energy = 0; ///< sr - sp = slip_energy / fs [Pa m]
+  double ft = 0;           ///< rock: tensile strength; bolt: yield strength sigma_y
+  double fu = 0;           ///< bolt: ultimate strength sigma_u
+  double c = 0;            ///< rock: cohesion; bolt: shear yield tau_y
+  double tan_phi = 0;      ///< rock: tan(friction angle)
+  double pn = 0, pt = 0;   ///< normal and tangential penalties [Pa]
+  double open_range = 0;   ///< or - op [m]
+  double slip_energy = 0;  ///< sr - sp = slip_energy / fs [Pa m]
   // Derived.
-  double op_per_h = 0;        ///< op / h = 2 ft / pn
-  double h_per_op = 0;        ///< pn / (2 ft)
-  double half_pt = 0;         ///< pt / 2 (h / sp = half_pt / fs)
-  double two_over_pt = 0;     ///< 2 / pt (sp = 2 h fs / pt)
-  double inv_c = 0;           ///< 1 / c
-  double inv_open_range = 0;  ///< 1 / (or - op)
-  double inv_slip_energy = 0; ///< 1 / slip_energy
+  double op_per_h = 0;         ///< op / h = 2 ft / pn
+  double h_per_op = 0;         ///< pn / (2 ft)
+  double half_pt = 0;          ///< pt / 2 (h / sp = half_pt / fs)
+  double two_over_pt = 0;      ///< 2 / pt (sp = 2 h fs / pt)
+  double inv_c = 0;            ///< 1 / c
+  double inv_open_range = 0;   ///< 1 / (or - op)
+  double inv_slip_energy = 0;  ///< 1 / slip_energy
 };
 
 /// Derive the law constants of `m` (penalties default to 10 E).

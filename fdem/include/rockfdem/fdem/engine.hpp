@@ -120,8 +120,7 @@ class Engine {
   double stiffness_factor(std::size_t t) const;
   /// An inactive triangle has no force and no mass; crack elements act only
   /// between two active triangles. Masses are rebuilt before the next step.
-  void set_active(std::size_t t, bool active,
-                  ActivationReference ref = ActivationReference::kKeep);
+  void set_active(std::size_t t, bool active, ActivationReference ref = ActivationReference::kKeep);
   bool active(std::size_t t) const;
   void set_boundary_conditions(const std::vector<BoundaryCondition>& bcs);
   void set_gravity(double gx, double gy);

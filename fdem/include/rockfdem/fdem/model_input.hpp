@@ -27,19 +27,19 @@ enum class Plane : std::uint8_t { kStrain, kStress };
 /// energies and penalties feed the crack elements whose law this material
 /// selects.
 struct Material {
-  double density = 2700;            ///< [kg/m^3]
-  double young = 30e9;              ///< Young's modulus E [Pa]
-  double poisson = 0.25;            ///< Poisson ratio nu (< 0.5)
-  double tensile_strength = 5e6;    ///< ft [Pa] (rock law)
-  double cohesion = 15e6;           ///< c [Pa] (rock law; Mohr-Coulomb)
-  double friction_deg = 30;         ///< internal friction angle phi [deg]
-  double residual_friction_deg = 30;///< friction of broken cracks [deg]; used by contact
-  double gf_I = 10;                 ///< mode I fracture energy [J/m^2]
-  double gf_II = 50;                ///< mode II fracture energy [J/m^2]
-  double normal_penalty = 0;        ///< crack penalty pn [Pa]; 0 selects 10 E
-  double tangential_penalty = 0;    ///< crack penalty pt [Pa]; 0 selects pn
-  double damping_ratio = 0;         ///< triangle viscous damping as a fraction of critical:
-                                    ///< eta = ratio * 2 h sqrt(E rho), h = smallest altitude
+  double density = 2700;              ///< [kg/m^3]
+  double young = 30e9;                ///< Young's modulus E [Pa]
+  double poisson = 0.25;              ///< Poisson ratio nu (< 0.5)
+  double tensile_strength = 5e6;      ///< ft [Pa] (rock law)
+  double cohesion = 15e6;             ///< c [Pa] (rock law; Mohr-Coulomb)
+  double friction_deg = 30;           ///< internal friction angle phi [deg]
+  double residual_friction_deg = 30;  ///< friction of broken cracks [deg]; used by contact
+  double gf_I = 10;                   ///< mode I fracture energy [J/m^2]
+  double gf_II = 50;                  ///< mode II fracture energy [J/m^2]
+  double normal_penalty = 0;          ///< crack penalty pn [Pa]; 0 selects 10 E
+  double tangential_penalty = 0;      ///< crack penalty pt [Pa]; 0 selects pn
+  double damping_ratio = 0;           ///< triangle viscous damping as a fraction of critical:
+                                      ///< eta = ratio * 2 h sqrt(E rho), h = smallest altitude
   CrackLaw crack_law = CrackLaw::kRock;
   // Bolt steel only (CrackLaw::kBoltSteel), seed eqs. 11-19.
   double yield_strength = 0;        ///< sigma_y [Pa]
@@ -49,8 +49,8 @@ struct Material {
 
 /// An edge of the mesh carrying an integer tag (the mesh's EdgeTag values).
 struct TaggedEdge {
-  int a = 0;    ///< first vertex
-  int b = 0;    ///< second vertex
+  int a = 0;  ///< first vertex
+  int b = 0;  ///< second vertex
   int tag = 0;
 };
 
@@ -73,15 +73,17 @@ struct BoundaryCondition {
   int tag = 0;
   Constraint x = Constraint::kFree;
   Constraint y = Constraint::kFree;
-  double vx = 0, vy = 0;         ///< prescribed velocity [m/s] (Constraint::kVelocity)
-  double tx = 0, ty = 0;         ///< distributed traction [Pa], dead load
-  double pressure = 0;           ///< normal pressure [Pa], positive pushes into the owning triangle
-  bool absorbing = false;        ///< viscous dashpots -rho c_p v_n, -rho c_s v_t (owning triangle's material)
+  double vx = 0, vy = 0;  ///< prescribed velocity [m/s] (Constraint::kVelocity)
+  double tx = 0, ty = 0;  ///< distributed traction [Pa], dead load
+  double pressure = 0;    ///< normal pressure [Pa], positive pushes into the owning triangle
+  bool absorbing =
+      false;  ///< viscous dashpots -rho c_p v_n, -rho c_s v_t (owning triangle's material)
 };
 
 /// Damping for quasi-static stages (applied in the node update).
 struct DampingSettings {
-  double local = 0;              ///< Cundall local damping alpha in [0, 1): f -= alpha |f| sign(v) per component
+  double local =
+      0;  ///< Cundall local damping alpha in [0, 1): f -= alpha |f| sign(v) per component
   double mass_proportional = 0;  ///< c [1/s]: f -= c m v
 };
 
@@ -89,30 +91,32 @@ struct DampingSettings {
 /// materials are required; empty optional vectors mean "none".
 struct ModelInput {
   // Mesh.
-  std::vector<double> x, y;                    ///< vertex coordinates [m]
-  std::vector<std::array<int, 3>> triangles;   ///< counter-clockwise vertex ids
-  std::vector<int> material;                   ///< per triangle: index into materials
-  std::vector<std::uint8_t> fracture;          ///< per triangle: 1 where crack elements may form;
-                                               ///< empty = nowhere
+  std::vector<double> x, y;                   ///< vertex coordinates [m]
+  std::vector<std::array<int, 3>> triangles;  ///< counter-clockwise vertex ids
+  std::vector<int> material;                  ///< per triangle: index into materials
+  std::vector<std::uint8_t> fracture;         ///< per triangle: 1 where crack elements may form;
+                                              ///< empty = nowhere
   std::vector<Material> materials;
   Plane plane = Plane::kStrain;
 
   // State handed over by the implicit in-situ stage.
-  std::vector<std::array<double, 3>> initial_stress;       ///< per triangle (sxx, syy, sxy) [Pa], tension positive
-  std::vector<std::array<double, 2>> initial_displacement; ///< per vertex (ux, uy) [m]; the displaced
-                                                           ///< configuration is the stress reference
+  std::vector<std::array<double, 3>>
+      initial_stress;  ///< per triangle (sxx, syy, sxy) [Pa], tension positive
+  std::vector<std::array<double, 2>>
+      initial_displacement;  ///< per vertex (ux, uy) [m]; the displaced
+                             ///< configuration is the stress reference
 
   // Loads and supports.
   std::vector<TaggedEdge> edges;
   std::vector<BoundaryCondition> boundary_conditions;
-  double gravity_x = 0, gravity_y = 0;         ///< [m/s^2]
+  double gravity_x = 0, gravity_y = 0;  ///< [m/s^2]
   DampingSettings damping;
 
   // Time step: dt > 0 is checked against the stability limit; dt = 0 takes
   // dt_safety times the computed critical step.
   double dt = 0;
   double dt_safety = 0.8;
-  int threads = 0;                             ///< OpenMP threads; 0 = OpenMP's default
+  int threads = 0;  ///< OpenMP threads; 0 = OpenMP's default
 };
 
 }  // namespace rockfdem::fdem
