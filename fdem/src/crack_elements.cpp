@@ -41,8 +41,15 @@ inline bool crack_element(const EngineData& d, std::size_t c, double* damage, do
   const double ex = tx * inv_h, ey = ty * inv_h;
   const double nx = -ey, ny = ex;
   const double d0x = x0 - x3, d0y = y0 - y3, d1x = x1 - x2, d1y = y1 - y2;
-  const double o0 = d0x * nx + d0y * ny, s0 = d0x * ex + d0y * ey;
-  const double o1 = d1x * nx + d1y * ny, s1 = d1x * ex + d1y * ey;
+  double o0 = d0x * nx + d0y * ny, s0 = d0x * ex + d0y * ey;
+  double o1 = d1x * nx + d1y * ny, s1 = d1x * ex + d1y * ey;
+  if (!d.cracks.offset.empty()) {  // re-joined elements measure from their re-joining
+    const double* off = &d.cracks.offset[4 * c];
+    o0 -= off[0];
+    s0 -= off[1];
+    o1 -= off[2];
+    s1 -= off[3];
+  }
   const CrackConstants& k = d.crack_laws[d.cracks.material[c]];
   const double o[3] = {o0, 0.5 * (o0 + o1), o1}, s[3] = {s0, 0.5 * (s0 + s1), s1};
   CrackPoint pt[3];
@@ -100,25 +107,32 @@ double point_energy(const CrackConstants& k, double o, double s, double h) {
 
 }  // namespace
 
-double crack_element_energy(const EngineData& d, std::size_t c) {
-  const double* dmg = &d.cracks.damage[3 * c];
-  if (!d.cracks.active[c] || dmg[0] > 0 || dmg[1] > 0 || dmg[2] > 0) return 0.0;
+double crack_end_openings(const EngineData& d, std::size_t c, double out[4]) {
   const int* nd = &d.cracks.nodes[4 * c];
   const double* p = d.nodes.pos.data();
   const double tx = 0.5 * (p[2 * nd[1]] + p[2 * nd[2]] - p[2 * nd[0]] - p[2 * nd[3]]);
   const double ty =
       0.5 * (p[2 * nd[1] + 1] + p[2 * nd[2] + 1] - p[2 * nd[0] + 1] - p[2 * nd[3] + 1]);
   const double h = std::sqrt(tx * tx + ty * ty), ex = tx / h, ey = ty / h;
-  double o[2], s[2];
   for (int end = 0; end < 2; ++end) {
     const double dx = p[2 * nd[end]] - p[2 * nd[3 - end]];
     const double dy = p[2 * nd[end] + 1] - p[2 * nd[3 - end] + 1];
-    o[end] = -dx * ey + dy * ex;
-    s[end] = dx * ex + dy * ey;
+    out[2 * end] = -dx * ey + dy * ex;
+    out[2 * end + 1] = dx * ex + dy * ey;
   }
+  return h;
+}
+
+double crack_element_energy(const EngineData& d, std::size_t c) {
+  const double* dmg = &d.cracks.damage[3 * c];
+  if (!d.cracks.active[c] || dmg[0] > 0 || dmg[1] > 0 || dmg[2] > 0) return 0.0;
+  double os[4];
+  const double h = crack_end_openings(d, c, os);
+  if (!d.cracks.offset.empty())
+    for (int i = 0; i < 4; ++i) os[i] -= d.cracks.offset[4 * c + i];
   const CrackConstants& k = d.crack_laws[d.cracks.material[c]];
-  return h / 6.0 * (point_energy(k, o[0], s[0], h) + point_energy(k, o[1], s[1], h)) +
-         2.0 * h / 3.0 * point_energy(k, 0.5 * (o[0] + o[1]), 0.5 * (s[0] + s[1]), h);
+  return h / 6.0 * (point_energy(k, os[0], os[1], h) + point_energy(k, os[2], os[3], h)) +
+         2.0 * h / 3.0 * point_energy(k, 0.5 * (os[0] + os[2]), 0.5 * (os[1] + os[3]), h);
 }
 
 FailureMode classify_failure(double sum_a2, double sum_b2) {
@@ -148,7 +162,8 @@ void crack_forces(EngineData& d) {
       state[c] = std::uint8_t(CrackState::kBroken);
       d.cracks.mode[c] = std::uint8_t(classify_failure(sum_a2, sum_b2));
       d.cracks.broken_step[c] = step;
-    } else if (dmg[0] > 0.0 || dmg[1] > 0.0 || dmg[2] > 0.0) {
+    } else if (state[c] == std::uint8_t(CrackState::kIntact) &&
+               (dmg[0] > 0.0 || dmg[1] > 0.0 || dmg[2] > 0.0)) {
       state[c] = std::uint8_t(CrackState::kYielding);
     }
   }

@@ -15,6 +15,10 @@ void crack_forces(EngineData& d);
 /// Stored energy of crack element c's undamaged branches (0 once damaged).
 double crack_element_energy(const EngineData& d, std::size_t c);
 
+/// Current (opening, slip) at end 0 and end 1 of element c, without
+/// offsets; returns the element length h.
+double crack_end_openings(const EngineData& d, std::size_t c, double out[4]);
+
 /// Failure mode from the summed squared excursions at breakage: mode I when
 /// opening carries at least 90% of a^2 + b^2, mode II when slip does, else
 /// mixed.

@@ -320,6 +320,24 @@ void Engine::set_crack_material(std::size_t c, int material) {
   impl_->critical_dt = -1;
 }
 
+void Engine::rejoin_crack(std::size_t c, int material) {
+  set_crack_material(c, material);
+  auto& cr = impl_->d.cracks;
+  if (cr.offset.empty()) cr.offset.assign(4 * cr.size(), 0.0);
+  detail::crack_end_openings(impl_->d, c, &cr.offset[4 * c]);
+  for (int k = 0; k < 3; ++k) cr.damage[3 * c + k] = 0.0;
+  cr.state[c] = std::uint8_t(CrackState::kIntact);
+  cr.mode[c] = std::uint8_t(FailureMode::kNone);
+  cr.broken_step[c] = -1;
+}
+
+void Engine::set_initial_stress(std::size_t t, const std::array<double, 3>& stress) {
+  check_index(t, n_triangles(), "triangle");
+  auto& s0 = impl_->d.tris.sigma0;
+  if (s0.empty()) s0.assign(3 * n_triangles(), 0.0);
+  for (int k = 0; k < 3; ++k) s0[3 * t + k] = stress[k];
+}
+
 void Engine::set_threads(int n_threads) {
   if (n_threads < 0) throw InputError("fdem: thread count must be >= 0 (0 = OpenMP default)");
   impl_->d.threads = n_threads;

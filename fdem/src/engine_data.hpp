@@ -58,6 +58,8 @@ struct Cracks {
   std::vector<std::uint8_t> mode;    ///< FailureMode
   std::vector<std::uint8_t> active;  ///< both triangles active
   std::vector<std::int32_t> broken_step;
+  std::vector<double> offset;  ///< (o, s) at end 0 and end 1 taken as zero, 4 per
+                               ///< element; empty until an element is re-joined
   std::size_t size() const { return material.size(); }
 };
 

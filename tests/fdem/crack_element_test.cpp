@@ -61,21 +61,48 @@ TEST(CrackElement, two_triangles_get_one_crack_element) {
   EXPECT_EQ(tri[1], 1);
 }
 
+/// Pulls the element apart in mode I until it breaks; returns the energy
+/// dissipated per unit length (total work minus the pre-peak (2/3) ft op).
+double mode_I_dissipation(Engine& e, double h, const Material& m, int n, double& u_at_break) {
+  const CrackConstants k = make_crack_constants(m);
+  const double op = 2 * h * m.tensile_strength / k.pn;
+  const PathResult r = drive(e, h, 0, 1, 1.2 * (op + k.open_range), n);
+  u_at_break = r.u_at_break;
+  return r.work_per_length - 2.0 / 3.0 * m.tensile_strength * op;
+}
+
 // Mode I: GfI per unit length within 2% (reference: or - op = GfI/(0.3863 ft)).
 TEST(CrackElement, crack_law_mode_I_dissipates_GfI) {
   const double h = 0.01;
   const Material m = test::rock();
   Engine e(test::two_triangles(h, m));
-  const CrackConstants k = make_crack_constants(m);
-  const double op = 2 * h * m.tensile_strength / k.pn;
-  const PathResult r = drive(e, h, 0, 1, 1.2 * (op + k.open_range), 6000);
-  ASSERT_GT(r.u_at_break, 0);
+  double u_break = -1;
+  const double dissipated = mode_I_dissipation(e, h, m, 6000, u_break);
+  ASSERT_GT(u_break, 0);
   EXPECT_EQ(e.crack_mode(0), FailureMode::kModeI);
   EXPECT_EQ(e.crack_broken_step(0), e.step_count() - 1);
-  const double dissipated = r.work_per_length - 2.0 / 3.0 * m.tensile_strength * op;
   std::printf("mode I: dissipated %.4f J/m^2 for GfI = %.4f\n", dissipated, m.gf_I);
   EXPECT_NEAR(dissipated, m.gf_I, 0.02 * m.gf_I);
-  EXPECT_NEAR(r.u_at_break, op + k.open_range, 0.01 * k.open_range);
+  const CrackConstants k = make_crack_constants(m);
+  const double op = 2 * h * m.tensile_strength / k.pn;
+  EXPECT_NEAR(u_break, op + k.open_range, 0.01 * k.open_range);
+}
+
+// Grouting (issue 7): a broken element re-joined where it is carries tension
+// again from its new zero, up to ft, and dissipates GfI again (2%).
+TEST(CrackElement, rejoined_crack_carries_tension_from_its_new_zero) {
+  const double h = 0.01;
+  const Material m = test::rock();
+  Engine e(test::two_triangles(h, m));
+  double u_break = -1;
+  mode_I_dissipation(e, h, m, 3000, u_break);
+  ASSERT_GT(u_break, 0);
+  e.rejoin_crack(0, 0);
+  EXPECT_EQ(e.crack_state(0), CrackState::kIntact);
+  EXPECT_EQ(e.crack_broken_step(0), -1);
+  const double again = mode_I_dissipation(e, h, m, 3000, u_break);
+  ASSERT_GT(u_break, 0);
+  EXPECT_NEAR(again, m.gf_I, 0.02 * m.gf_I);
 }
 
 // Mode II at zero normal stress: GfII per unit length within 5%.

@@ -169,6 +169,9 @@ TEST(Triangle, initial_stress_rotates_with_element) {
   Engine e(in);
   const Stress s0 = e.triangle_stress(0);
   for (int k = 0; k < 3; ++k) EXPECT_DOUBLE_EQ(s0[k], in.initial_stress[0][k]);
+  Engine later(single_triangle(m));  // the same stress set after construction
+  later.set_initial_stress(0, in.initial_stress[0]);
+  for (int k = 0; k < 3; ++k) EXPECT_DOUBLE_EQ(later.triangle_stress(0)[k], s0[k]);
   const double q = M_PI / 2;
   const double R[4] = {std::cos(q), -std::sin(q), std::sin(q), std::cos(q)};
   place(e, in, R);

@@ -62,6 +62,30 @@ TEST(Wave, p_wave_arrival_matches_cp) {
   EXPECT_NEAR(arrival, expect, 0.02 * expect);
 }
 
+// A viscous absorbing end (-rho c_p v_n, -rho c_s v_t) swallows the front:
+// after the step v0 has reached and "reflected" from it, the velocity near
+// that end stays v0 within 5% (a free end would double it, a fixed one
+// stop it).
+TEST(Wave, absorbing_boundary_does_not_reflect) {
+  const double length = 0.5, v0 = 0.1;
+  ModelInput in = bar(length, 125, false);
+  BoundaryCondition left, right;
+  left.tag = kTagLeft;
+  left.x = Constraint::kVelocity;
+  left.vx = v0;
+  right.tag = kTagRight;
+  right.absorbing = true;
+  in.boundary_conditions.push_back(left);
+  in.boundary_conditions.push_back(right);
+  in.threads = 1;
+  Engine e(in);
+  const int probe = node_near(e, in, 0.9 * length, length / 100);
+  const double cp = test::p_wave_speed(in.materials[0]);
+  const double t_end = 1.5 * length / cp;  // front at 0.9 L, end, and back past the probe
+  while (e.time() < t_end) e.step();
+  EXPECT_NEAR(e.velocities()[2 * probe], v0, 0.05 * v0);
+}
+
 // Undamped free vibration: kinetic (from the average of the half-step
 // velocities around x_n) plus strain (plus crack) energy at x_n drifts by less
 // than 0.5% over 1e4 steps, without and with crack elements on every edge.

@@ -127,6 +127,13 @@ class Engine {
   void set_damping(const DampingSettings& damping);
   /// Assigns material m (and its crack law) to crack element c.
   void set_crack_material(std::size_t c, int material);
+  /// Re-joins crack element c with material m (grouting, issue 7): damage,
+  /// state, mode and breakage step are reset, and its current opening and
+  /// slip become its new zero, so it starts intact where it is.
+  void rejoin_crack(std::size_t c, int material);
+  /// Replaces triangle t's initial stress (sxx, syy, sxy) [Pa] (e.g. a
+  /// lining installed stress-free where the in-situ field covered it).
+  void set_initial_stress(std::size_t t, const std::array<double, 3>& stress);
   /// OpenMP threads for every loop; 0 = OpenMP's default.
   void set_threads(int n_threads);
   int threads() const;
