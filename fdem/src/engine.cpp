@@ -88,9 +88,10 @@ std::string fmt(double v) {
 [[noreturn]] void raise_bad_node(const detail::EngineData& d, long n) {
   std::ostringstream msg;
   msg << "fdem: step " << d.step << ": node " << n << " (mesh vertex " << d.nodes.vertex[n]
-      << ") has a non-finite position (" << d.nodes.pos[2 * n] << ", " << d.nodes.pos[2 * n + 1]
-      << "), velocity (" << d.nodes.vel[2 * n] << ", " << d.nodes.vel[2 * n + 1]
-      << "). Reduce dt (now " << fmt(d.dt) << " s) or check the loads on that node.";
+      << ") has a non-finite velocity or position (" << d.nodes.pos[2 * n] << ", "
+      << d.nodes.pos[2 * n + 1] << "), velocity (" << d.nodes.vel[2 * n] << ", "
+      << d.nodes.vel[2 * n + 1] << "). Reduce dt (now " << fmt(d.dt)
+      << " s) or check the loads on that node.";
   throw NumericalError(msg.str());
 }
 
@@ -214,8 +215,9 @@ void Engine::step() {
 }
 
 /// Above the stability limit the stiffest mode grows by a factor g > 1 per
-/// step with alternating sign: v_new = -g v_old. A mass-weighted velocity
-/// correlation below -1.1 three steps in a row is that and nothing physical.
+/// step with alternating sign: v_new = -g v_old. A velocity correlation
+/// sum v_old.v_new / sum v_old^2 below -1.1 three steps in a row is that and
+/// nothing physical (a stable scheme keeps it >= -1).
 void Engine::check_reversal() {
   auto& im = *impl_;
   const double dot = im.d.reversal[0], kin = im.d.reversal[1];
@@ -224,8 +226,7 @@ void Engine::check_reversal() {
   if (im.reversals < 3) return;
   std::ostringstream msg;
   msg << "fdem: step " << im.d.step << ": unstable time integration: the free nodes' velocities "
-      << "reversed and grew by a factor " << fmt(-dot / kin)
-      << " (sum m v_old.v_new / sum m v_old^2)"
+      << "reversed and grew by a factor " << fmt(-dot / kin) << " (sum v_old.v_new / sum v_old^2)"
       << " for 3 steps in a row. dt = " << fmt(im.d.dt) << " s against the stability limit "
       << fmt(im.critical_dt) << " s; reduce dt (do not force it above the limit).";
   throw NumericalError(msg.str());

@@ -75,8 +75,8 @@ void refresh_nodes(EngineData& d) {
 }
 
 /// Nodes are processed in fixed blocks so that the velocity-reversal sums
-/// (free nodes only) are block partials added in block order: the same
-/// figure for any thread count.
+/// (free nodes only, sum v_old.v_new and sum |v_old|^2) are block partials added in block order:
+/// the same figure for any thread count.
 long node_update(EngineData& d) {
   const long nn = static_cast<long>(d.nodes.size());
   const long n_blocks = (nn + kNodeBlock - 1) / kNodeBlock;
@@ -116,17 +116,17 @@ long node_update(EngineData& d) {
       if (b >= 0) {
         if (rec[b].x != Constraint::kFree) vx = rec[b].vx;
         if (rec[b].y != Constraint::kFree) vy = rec[b].vy;
-      } else {
-        const double m = n.mass[i];
-        dot += m * (vx0 * vx + vy0 * vy);
-        kin += m * (vx0 * vx0 + vy0 * vy0);
+      } else {  // unweighted: the unstable mode's sign flip shows without masses
+        dot += vx0 * vx + vy0 * vy;
+        kin += vx0 * vx0 + vy0 * vy0;
       }
       n.vel[2 * i] = vx;
       n.vel[2 * i + 1] = vy;
-      const double x = n.pos[2 * i] + vx * dt, y = n.pos[2 * i + 1] + vy * dt;
-      n.pos[2 * i] = x;
-      n.pos[2 * i + 1] = y;
-      if (!std::isfinite(x) || !std::isfinite(y)) first_bad = i < first_bad ? i : first_bad;
+      n.pos[2 * i] += vx * dt;
+      n.pos[2 * i + 1] += vy * dt;
+      // A non-finite velocity is caught here; positions follow from it (and
+      // every node of an active triangle is checked again through J).
+      if (!std::isfinite(vx + vy)) first_bad = i < first_bad ? i : first_bad;
     }
     partial[2 * blk] = dot;
     partial[2 * blk + 1] = kin;

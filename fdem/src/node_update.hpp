@@ -14,7 +14,7 @@ void refresh_nodes(EngineData& d);
 
 /// Gathers each node's slots in CSR order, adds external, dashpot and
 /// damping forces, then v += f/m dt (kinematic conditions override), x += v dt.
-/// Returns the lowest node whose new position is not finite, or -1.
+/// Returns the lowest node whose new velocity is not finite, or -1.
 long node_update(EngineData& d);
 
 /// Net force on node i from its slots and external load (no damping).

@@ -14,7 +14,7 @@
 // step. Three checks run every step at negligible cost: J > 0 and finite for
 // every triangle, finite positions, and the signature of a time step above
 // the stability limit: the free nodes' velocities reversing with growth,
-// sum m v_old.v_new < -1.1 sum m |v_old|^2, three steps in a row (this also
+// sum v_old.v_new < -1.1 sum |v_old|^2, three steps in a row (this also
 // catches instabilities that break crack elements instead of inverting
 // triangles).
 //
