@@ -157,19 +157,14 @@ std::array<int, 2> Engine::crack_triangles(std::size_t c) const {
 // --- Time step -----------------------------------------------------------------
 
 /// Brings masses, loads and the stability limit up to date after a stage
-/// change. An automatic dt follows the new limit; an explicit one must stay
-/// below it unless it was forced.
+/// change. An automatic dt follows the new limit; an explicit one is checked
+/// against it before the next step (step()), so that set_dt can still lower
+/// it first.
 void Engine::Impl::refresh() {
   if (d.masses_dirty) detail::refresh_nodes(d);
   if (critical_dt >= 0) return;
   critical_dt = detail::critical_dt(d);
-  if (auto_dt) {
-    d.dt = dt_safety * critical_dt;
-  } else if (!forced_dt && d.dt > critical_dt) {
-    throw InputError("fdem: after a stage change the stability limit is " + fmt(critical_dt) +
-                     " s, below the dt = " + fmt(d.dt) +
-                     " s set earlier; set a smaller dt (or force it)");
-  }
+  if (auto_dt) d.dt = dt_safety * critical_dt;
 }
 
 double Engine::critical_dt() const {
@@ -198,6 +193,10 @@ void Engine::set_dt(double dt, DtCheck check) {
 void Engine::step() {
   auto& d = impl_->d;
   impl_->refresh();
+  if (!impl_->auto_dt && !impl_->forced_dt && d.dt > impl_->critical_dt)
+    throw InputError("fdem: after a stage change the stability limit is " +
+                     fmt(impl_->critical_dt) + " s, below the dt = " + fmt(d.dt) +
+                     " s set earlier; set a smaller dt (or force it)");
   const double t0 = omp_get_wtime();
   const long bad_tri = detail::triangle_forces(d);
   const double t1 = omp_get_wtime();

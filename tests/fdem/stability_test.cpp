@@ -72,6 +72,26 @@ TEST(Stability, refused_and_detected_at_1_1_of_critical_dt) {
   }
 }
 
+// A stage change that lowers the limit (stiffening by 4 halves it): an
+// automatic dt follows; an explicit dt above the new limit is refused at the
+// next step, and can then be lowered.
+TEST(Stability, stage_change_rechecks_the_time_step) {
+  Engine automatic = vibrating_specimen(false);
+  const double before = automatic.critical_dt();
+  for (std::size_t t = 0; t < automatic.n_triangles(); ++t) automatic.set_stiffness_factor(t, 4);
+  automatic.step();
+  EXPECT_LT(automatic.critical_dt(), 0.75 * before);
+  EXPECT_NEAR(automatic.dt(), automatic.stable_dt(), 1e-20);
+
+  Engine explicit_dt = vibrating_specimen(false);
+  explicit_dt.set_dt(0.9 * explicit_dt.critical_dt());
+  for (std::size_t t = 0; t < explicit_dt.n_triangles(); ++t)
+    explicit_dt.set_stiffness_factor(t, 4);
+  EXPECT_THROW(explicit_dt.step(), InputError);
+  explicit_dt.set_dt(0.9 * explicit_dt.critical_dt());
+  EXPECT_NO_THROW(explicit_dt.run(100));
+}
+
 // An inverted triangle (J <= 0) stops the run, naming step and element.
 TEST(Stability, inverted_triangle_names_step_and_element) {
   ModelInput in;
