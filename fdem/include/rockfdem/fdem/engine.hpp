@@ -12,7 +12,7 @@
 // boundary conditions, damping). A blow-up throws NumericalError naming step,
 // element or node, quantity and value; the state is then that of the failing
 // step. Three checks run every step at negligible cost: J > 0 and finite for
-// every triangle, finite positions, and the signature of a time step above
+// every triangle, finite velocities, and the signature of a time step above
 // the stability limit: the free nodes' velocities reversing with growth,
 // sum v_old.v_new < -1.1 sum |v_old|^2, three steps in a row (this also
 // catches instabilities that break crack elements instead of inverting
