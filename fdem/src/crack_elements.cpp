@@ -43,15 +43,15 @@ inline bool crack_element(const EngineData& d, std::size_t c, double* damage, do
   const double d0x = x0 - x3, d0y = y0 - y3, d1x = x1 - x2, d1y = y1 - y2;
   double o0 = d0x * nx + d0y * ny, s0 = d0x * ex + d0y * ey;
   double o1 = d1x * nx + d1y * ny, s1 = d1x * ex + d1y * ey;
-  if (!d.cracks.offset.empty()) {  // re-joined elements measure from their re-joining
-    const double* off = &d.cracks.offset[4 * c];
-    o0 -= off[0];
-    s0 -= off[1];
-    o1 -= off[2];
-    s1 -= off[3];
-  }
   const CrackConstants& k = d.crack_laws[d.cracks.material[c]];
-  const double o[3] = {o0, 0.5 * (o0 + o1), o1}, s[3] = {s0, 0.5 * (s0 + s1), s1};
+  double o[3] = {o0, 0.5 * (o0 + o1), o1}, s[3] = {s0, 0.5 * (s0 + s1), s1};
+  if (!d.cracks.offset.empty()) {  // re-joined or pre-stressed elements (per point)
+    const double* off = &d.cracks.offset[6 * c];
+    for (int i = 0; i < 3; ++i) {
+      o[i] -= off[2 * i];
+      s[i] -= off[2 * i + 1];
+    }
+  }
   CrackPoint pt[3];
   switch (k.law) {  // one dispatch per element; new laws add a case
     case CrackLaw::kBoltSteel:
@@ -123,16 +123,28 @@ double crack_end_openings(const EngineData& d, std::size_t c, double out[4]) {
   return h;
 }
 
+double crack_point_openings(const EngineData& d, std::size_t c, double out[6]) {
+  double ends[4];
+  const double h = crack_end_openings(d, c, ends);
+  out[0] = ends[0];
+  out[1] = ends[1];
+  out[2] = 0.5 * (ends[0] + ends[2]);
+  out[3] = 0.5 * (ends[1] + ends[3]);
+  out[4] = ends[2];
+  out[5] = ends[3];
+  return h;
+}
+
 double crack_element_energy(const EngineData& d, std::size_t c) {
   const double* dmg = &d.cracks.damage[3 * c];
   if (!d.cracks.active[c] || dmg[0] > 0 || dmg[1] > 0 || dmg[2] > 0) return 0.0;
-  double os[4];
-  const double h = crack_end_openings(d, c, os);
+  double os[6];
+  const double h = crack_point_openings(d, c, os);
   if (!d.cracks.offset.empty())
-    for (int i = 0; i < 4; ++i) os[i] -= d.cracks.offset[4 * c + i];
+    for (int i = 0; i < 6; ++i) os[i] -= d.cracks.offset[6 * c + i];
   const CrackConstants& k = d.crack_laws[d.cracks.material[c]];
-  return h / 6.0 * (point_energy(k, os[0], os[1], h) + point_energy(k, os[2], os[3], h)) +
-         2.0 * h / 3.0 * point_energy(k, 0.5 * (os[0] + os[2]), 0.5 * (os[1] + os[3]), h);
+  return h / 6.0 * (point_energy(k, os[0], os[1], h) + point_energy(k, os[4], os[5], h)) +
+         2.0 * h / 3.0 * point_energy(k, os[2], os[3], h);
 }
 
 FailureMode classify_failure(double sum_a2, double sum_b2) {

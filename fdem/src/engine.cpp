@@ -18,6 +18,7 @@
 
 #include "boundary.hpp"
 #include "crack_elements.hpp"
+#include "crack_prestress.hpp"
 #include "engine_impl.hpp"
 #include "node_update.hpp"
 #include "parallel.hpp"
@@ -121,6 +122,9 @@ Engine::Engine(const ModelInput& in) : impl_(std::make_unique<Impl>()) {
   set_viscous_damping(d);
   detail::resolve_edges(in, d);
   detail::apply_boundary_conditions(in.boundary_conditions, d);
+  // Crack elements start carrying the initial stress (the in-situ hand-off
+  // must start in equilibrium with or without a fracture zone).
+  impl_->prestress_clipped = detail::prestress_cracks(d);
   impl_->dt_safety = in.dt_safety;
   if (in.dt > 0) set_dt(in.dt);
   impl_->refresh();
@@ -323,8 +327,8 @@ void Engine::set_crack_material(std::size_t c, int material) {
 void Engine::rejoin_crack(std::size_t c, int material) {
   set_crack_material(c, material);
   auto& cr = impl_->d.cracks;
-  if (cr.offset.empty()) cr.offset.assign(4 * cr.size(), 0.0);
-  detail::crack_end_openings(impl_->d, c, &cr.offset[4 * c]);
+  if (cr.offset.empty()) cr.offset.assign(6 * cr.size(), 0.0);
+  detail::crack_point_openings(impl_->d, c, &cr.offset[6 * c]);
   for (int k = 0; k < 3; ++k) cr.damage[3 * c + k] = 0.0;
   cr.state[c] = std::uint8_t(CrackState::kIntact);
   cr.mode[c] = std::uint8_t(FailureMode::kNone);
@@ -335,7 +339,9 @@ void Engine::set_initial_stress(std::size_t t, const std::array<double, 3>& stre
   check_index(t, n_triangles(), "triangle");
   auto& s0 = impl_->d.tris.sigma0;
   if (s0.empty()) s0.assign(3 * n_triangles(), 0.0);
+  const double old[3] = {s0[3 * t], s0[3 * t + 1], s0[3 * t + 2]};
   for (int k = 0; k < 3; ++k) s0[3 * t + k] = stress[k];
+  detail::shift_crack_prestress(impl_->d, t, old, stress.data());
 }
 
 void Engine::set_threads(int n_threads) {
@@ -398,6 +404,8 @@ FailureMode Engine::crack_mode(std::size_t c) const {
   check_index(c, n_cracks(), "crack element");
   return FailureMode(impl_->d.cracks.mode[c]);
 }
+
+long Engine::crack_prestress_clipped() const { return impl_->prestress_clipped; }
 
 long Engine::crack_broken_step(std::size_t c) const {
   check_index(c, n_cracks(), "crack element");

@@ -58,8 +58,10 @@ struct Cracks {
   std::vector<std::uint8_t> mode;    ///< FailureMode
   std::vector<std::uint8_t> active;  ///< both triangles active
   std::vector<std::int32_t> broken_step;
-  std::vector<double> offset;  ///< (o, s) at end 0 and end 1 taken as zero, 4 per
-                               ///< element; empty until an element is re-joined
+  std::vector<double> offset;  ///< (o, s) taken as zero at end 0, midpoint, end 1
+                               ///< (6 per element); empty until an element is
+                               ///< re-joined or pre-stressed (crack_prestress.cpp)
+  std::vector<int> tri_cracks;  ///< 3 per triangle (-1: none); built on first use
   std::size_t size() const { return material.size(); }
 };
 

@@ -15,7 +15,8 @@ struct Engine::Impl {
   double critical_dt = -1;  ///< cached; < 0 when it must be recomputed
   bool auto_dt = true;      ///< dt follows dt_safety * critical_dt
   bool forced_dt = false;   ///< an explicit dt above the limit was forced
-  int reversals = 0;        ///< consecutive steps with growing velocity reversal
+  int reversals = 0;
+  long prestress_clipped = 0;  ///< crack points whose initial traction exceeded the strength        ///< consecutive steps with growing velocity reversal
   void refresh();
 };
 

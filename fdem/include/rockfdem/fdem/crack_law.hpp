@@ -181,6 +181,36 @@ inline CrackPoint bolt_steel_point(const CrackConstants& k, double o, double s, 
   return p;
 }
 
+/// Relative displacement (opening o, slip s) at which an undamaged point of
+/// law k carries the normal stress `sigma` and shear stress `tau` (the
+/// inverse of the pre-peak branches): compression on the penalty branch
+/// o = sigma h / pn; tension and shear invert (2x - x^2) times ft resp. the
+/// shear strength (rock: Mohr-Coulomb with the total normal stress sigma).
+/// A demand at or above the strength starts just below the peak, so the
+/// point carries the strength, not the demand (and stays undamaged).
+/// Returns true when the demand was clipped that way.
+inline bool pre_peak_displacement(const CrackConstants& k, double sigma, double tau, double h,
+                                  double& o, double& s) {
+  constexpr double kBelowPeak = 1.0 - 1e-12;  // keeps a = b = 0 at the start
+  bool clipped = false;
+  auto invert = [&](double ratio) {  // x with (2x - x^2) = ratio, x <= 1
+    if (ratio >= 1.0) {
+      clipped = clipped || ratio > 1.0;
+      return kBelowPeak;
+    }
+    return ratio / (1.0 + std::sqrt(1.0 - ratio));  // 1 - sqrt(1 - r), without cancellation
+  };
+  if (sigma < 0.0) {
+    o = sigma * h / k.pn;
+  } else {
+    o = invert(sigma / k.ft) * h * k.op_per_h;
+  }
+  const double fs = (k.law == CrackLaw::kRock && sigma < 0.0) ? k.c - sigma * k.tan_phi : k.c;
+  const double sp = h * fs * k.two_over_pt;
+  s = std::copysign(invert(std::fabs(tau) / fs) * sp, tau);
+  return clipped;
+}
+
 /// One point of any law: a switch on the law id, no virtual call. The crack
 /// loop dispatches once per element instead (crack_elements.cpp).
 inline CrackPoint crack_point(const CrackConstants& k, double o, double s, double h,

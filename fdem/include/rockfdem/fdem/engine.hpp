@@ -132,7 +132,9 @@ class Engine {
   /// slip become its new zero, so it starts intact where it is.
   void rejoin_crack(std::size_t c, int material);
   /// Replaces triangle t's initial stress (sxx, syy, sxy) [Pa] (e.g. a
-  /// lining installed stress-free where the in-situ field covered it).
+  /// lining installed stress-free where the in-situ field covered it). The
+  /// unbroken crack elements on t's edges change their starting traction by
+  /// ((new - old)/2) n, half the jump, as at construction.
   void set_initial_stress(std::size_t t, const std::array<double, 3>& stress);
   /// OpenMP threads for every loop; 0 = OpenMP's default.
   void set_threads(int n_threads);
@@ -157,6 +159,10 @@ class Engine {
   double crack_damage(std::size_t c) const;
   CrackState crack_state(std::size_t c) const;
   FailureMode crack_mode(std::size_t c) const;
+  /// Crack integration points whose share of the initial stress reached
+  /// the crack's strength at construction: they start at the peak and carry
+  /// the strength, not the demand (0 when the start is fully balanced).
+  long crack_prestress_clipped() const;
   /// Step at which the element broke; -1 while unbroken.
   long crack_broken_step(std::size_t c) const;
 
