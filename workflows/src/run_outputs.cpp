@@ -1,5 +1,6 @@
 #include "run_outputs.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <iostream>
@@ -50,8 +51,26 @@ coupling::VtkGrid broken_crack_grid(const fdem::Engine& e, const mesh::Mesh& m,
 
 std::array<double, 2> RunOutputs::displacement(const fdem::Engine& e, const Monitor& mon) const {
   static const std::vector<double> none;
-  return monitor_displacement(e, mon, fields_.empty() ? none : fields_.back().ux,
-                              fields_.empty() ? none : fields_.back().uy);
+  std::array<double, 2> u = monitor_displacement(e, mon, fields_.empty() ? none : fields_.back().ux,
+                                                 fields_.empty() ? none : fields_.back().uy);
+  // Remove the engine's mean translation of the outer boundary (the
+  // implicit part already has its rigid motion removed).
+  if (!boundary_vertices_.empty()) {
+    std::array<double, 2> mean{0, 0};
+    const std::vector<int>& vertex = e.node_vertex();
+    std::size_t n = 0;
+    for (std::size_t node = 0; node < e.n_nodes(); ++node) {
+      if (!std::binary_search(boundary_vertices_.begin(), boundary_vertices_.end(), vertex[node]))
+        continue;
+      const auto d = e.displacement(node);
+      mean[0] += d[0];
+      mean[1] += d[1];
+      ++n;
+    }
+    u[0] -= mean[0] / double(n);
+    u[1] -= mean[1] / double(n);
+  }
+  return u;
 }
 
 double RunOutputs::convergence(const fdem::Engine& e, const std::vector<Monitor>& ms,
@@ -79,8 +98,16 @@ void RunOutputs::record_insitu(const mesh::Mesh& m, const std::vector<insitu::In
                       output_path(cli_.output_dir, "insitu.vtu"));
 }
 
-void RunOutputs::begin_history(const std::vector<Monitor>& monitors) {
-  std::vector<std::string> cols{"step", "time", "kinetic_energy", "unbalanced_ratio",
+void RunOutputs::begin_history(const std::vector<Monitor>& monitors, const mesh::Mesh& m) {
+  for (const mesh::TaggedEdge& edge : m.edges)
+    if (edge.tag >= mesh::kBottom && edge.tag <= mesh::kLeft) {
+      boundary_vertices_.push_back(edge.a);
+      boundary_vertices_.push_back(edge.b);
+    }
+  std::sort(boundary_vertices_.begin(), boundary_vertices_.end());
+  boundary_vertices_.erase(std::unique(boundary_vertices_.begin(), boundary_vertices_.end()),
+                           boundary_vertices_.end());
+  std::vector<std::string> cols{"stage", "step", "time", "kinetic_energy", "unbalanced_ratio",
                                 "broken_I", "broken_II", "broken_mixed"};
   for (const Monitor& mon : monitors) {
     cols.push_back(mon.name + "_ux_mm");
@@ -92,9 +119,12 @@ void RunOutputs::begin_history(const std::vector<Monitor>& monitors) {
 }
 
 void RunOutputs::record_step(const fdem::Engine& e, const mesh::Mesh& m,
-                             const std::vector<Monitor>& monitors, PhaseTimer& timer) {
+                             const std::vector<Monitor>& monitors, PhaseTimer& timer,
+                             const std::string& stage, double support_ratio) {
+  if (stage_names_.empty() || stage_names_.back() != stage) stage_names_.push_back(stage);
   const fdem::BrokenCounts b = e.broken_counts();
-  std::vector<double> row{double(e.step_count()), e.time(), e.kinetic_energy(),
+  std::vector<double> row{double(stage_names_.size() - 1), double(e.step_count()), e.time(),
+                          e.kinetic_energy(),
                           e.unbalanced_force_ratio(), double(b.mode_I), double(b.mode_II),
                           double(b.mixed)};
   for (const Monitor& mon : monitors) {
@@ -104,7 +134,7 @@ void RunOutputs::record_step(const fdem::Engine& e, const mesh::Mesh& m,
   }
   row.push_back(-mm(displacement(e, find(monitors, "vault"))[1]));
   row.push_back(mm(convergence(e, monitors, "left_wall", "right_wall")));
-  row.push_back(0.0);  // the core is gone: no support from it
+  row.push_back(support_ratio);
   history_->add(row);
   if (scene_.output.vtk) {
     char name[32];
@@ -151,6 +181,7 @@ void RunOutputs::finish(const fdem::Engine& e, const mesh::Mesh& m,
   j["ground_reaction_curve"] = grc;
   j["memory_bytes"] = e.memory_bytes();
   j["state_hash"] = e.state_hash();
+  j["history_stages"] = stage_names_;  // history.csv's "stage" column indexes this list
   const fdem::PhaseTimes p = e.phase_times();
   j["fdem_modules"] = {{"triangles", p.triangles}, {"cracks", p.cracks}, {"nodes", p.nodes}};
   if (e.n_cracks() == 0) summary_.skipped("crack elements: no fracture zone in the scene");

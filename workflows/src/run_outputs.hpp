@@ -22,10 +22,12 @@ class RunOutputs {
   RunOutputs(const Scene& scene, const CommandLine& cli, RunSummary& summary);
   /// summary.json's insitu keys and the implicit part of the ground reaction curve.
   void record_insitu(const mesh::Mesh& m, const std::vector<insitu::InsituField>& fields);
-  void begin_history(const std::vector<Monitor>& monitors);
+  /// Starts history.csv; `m`'s outer boundary defines the rigid translation
+  /// removed from reported displacements.
+  void begin_history(const std::vector<Monitor>& monitors, const mesh::Mesh& m);
   /// One history row and (if enabled) one ParaView frame.
   void record_step(const fdem::Engine& e, const mesh::Mesh& m, const std::vector<Monitor>& monitors,
-                   PhaseTimer& timer);
+                   PhaseTimer& timer, const std::string& stage, double support_ratio);
   /// Counts, monitors, broken cracks, hash, plots, timings; writes summary.json.
   void finish(const fdem::Engine& e, const mesh::Mesh& m, const std::vector<Monitor>& monitors,
               PhaseTimer& timer);
@@ -44,6 +46,8 @@ class RunOutputs {
   std::unique_ptr<History> history_;
   coupling::PvdCollection pvd_;
   int frame_ = 0;
+  std::vector<int> boundary_vertices_;  ///< outer boundary, for the rigid translation
+  std::vector<std::string> stage_names_;
   double fdem_seconds_at_start_ = 0;
 };
 

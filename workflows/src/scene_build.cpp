@@ -72,8 +72,7 @@ class Reader {
 
  private:
   static const KeySpec& spec(const std::string& path) {
-    std::string norm = path;
-    const KeySpec* k = find_key(norm);
+    const KeySpec* k = find_key(detail::normalise(path));
     if (!k) throw std::logic_error("scene key not in schema: " + path);
     return *k;
   }
@@ -243,6 +242,56 @@ void read_insitu(const Reader& r, Scene& s) {
     r.fail("insitu.lining_active", "the model has no lining ring (tunnel.lining_thickness = 0)");
 }
 
+// The explicit stages after the implicit hand-off. An "insitu" entry may
+// only open the list; a lining only exists with a lining ring; softening
+// only goes down, and only while the core is there.
+void read_stages(const Reader& r, Scene& s) {
+  const toml::node* list = r.node("stages");
+  const bool lining = s.materials.count("lining") && s.mesh.kind == mesh::ModelKind::kTunnel &&
+                      s.mesh.tunnel.lining_thickness > 0;
+  if (!list) {
+    if (lining) s.stages.push_back({"lining", 0, 0, 1e-3, 0, s.output.every_steps});
+    s.stages.push_back({"remove_core", 0, 0, 1e-3, 0, s.output.every_steps});
+    s.stages.push_back({"equilibrium", 0, s.engine.steps, 1e-3, 0, s.output.every_steps});
+    return;
+  }
+  if (s.mesh.kind != mesh::ModelKind::kTunnel && s.mesh.kind != mesh::ModelKind::kMshFile)
+    r.fail("stages", "construction stages need a tunnel model");
+  double alpha = s.insitu.alpha.back();
+  bool core = alpha > 0, lined = false;
+  const std::size_t n = list->as_array()->size();
+  for (std::size_t i = 0; i < n; ++i) {
+    const std::string p = "stages[" + std::to_string(i) + "]";
+    r.require(p + ".kind", "every stage has a kind");
+    const std::string kind = r.text(p + ".kind");
+    if (kind == "insitu") {
+      if (i != 0) r.fail(p + ".kind", "the implicit in-situ stage comes first");
+      continue;
+    }
+    StageSpec st{kind, r.number_or(p + ".alpha", 0), long(r.number_or(p + ".max_steps",
+                                                                     double(s.engine.steps))),
+                 r.number_or(p + ".ratio", 1e-3), r.number_or(p + ".time", 0),
+                 int(r.number_or(p + ".every_steps", s.output.every_steps))};
+    if (kind == "soften") {
+      r.require(p + ".alpha", "a soften stage needs its target alpha");
+      if (!core) r.fail(p + ".kind", "the core is already removed (or alpha = 0)");
+      if (!(st.alpha < alpha))
+        r.fail(p + ".alpha", "softening must go down from " + std::to_string(alpha));
+      alpha = st.alpha;
+    }
+    if (kind == "lining") {
+      if (!lining) r.fail(p + ".kind", "the model has no lining ring (tunnel.lining_thickness)");
+      if (lined || s.insitu.lining_active) r.fail(p + ".kind", "the lining is installed once");
+      lined = true;
+    }
+    if (kind == "remove_core") {
+      if (!core) r.fail(p + ".kind", "the core is already removed");
+      core = false;
+    }
+    s.stages.push_back(st);
+  }
+}
+
 mesh::ModelKind model_kind(const std::string& s) {
   if (s == "ucs") return mesh::ModelKind::kUcs;
   if (s == "brazilian") return mesh::ModelKind::kBrazilian;
@@ -293,6 +342,7 @@ Scene build_scene(const RawScene& raw, const std::string& base_dir) {
   s.output.every_steps = r.integer("output.every_steps");
   s.output.vtk = r.boolean("output.vtk");
   s.output.plots = r.boolean("output.plots");
+  read_stages(r, s);
   std::ostringstream canonical;
   canonical << raw.root;
   s.canonical = canonical.str();

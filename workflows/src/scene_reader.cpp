@@ -17,6 +17,8 @@ std::string join(const std::vector<std::string>& items) {
 
 [[noreturn]] void fail(const std::string& message) { throw InputError(message); }
 
+}  // namespace
+
 // "stages[2].kind" -> "stages[].kind": array-of-table indices do not matter to the schema.
 std::string normalise(const std::string& path) {
   std::string out;
@@ -28,6 +30,8 @@ std::string normalise(const std::string& path) {
   }
   return out;
 }
+
+namespace {
 
 // Parse the right-hand side of --set as a TOML value; bare words become strings
 // so `--set tunnel.shape=circular` needs no shell quoting.

@@ -26,4 +26,7 @@ RawScene read_raw_scene(const std::string& text, const std::string& source,
 
 std::string node_text(const toml::node& node);
 
+/// "stages[2].kind" -> "stages[].kind" (the schema's form).
+std::string normalise(const std::string& path);
+
 }  // namespace rockfdem::workflows::detail

@@ -218,6 +218,23 @@ std::vector<KeySpec> build_schema() {
   // [loading]
   s.push_back(positive("loading.platen_velocity", "m/s", "0.5",
                        "UCS and Brazilian tests: speed of each platen towards the other."));
+  // [[stages]]
+  s.push_back(choice("stages[].kind", "", {"insitu", "soften", "lining", "remove_core",
+                                           "equilibrium"},
+                     "Construction stage: `insitu` (the implicit stage, first if given), "
+                     "`soften` (core to alpha, explicit), `lining` (install the lining ring "
+                     "stress-free), `remove_core`, `equilibrium`. Without [[stages]]: insitu, "
+                     "lining (if any), remove_core, equilibrium."));
+  s.push_back(number("stages[].alpha", "-", "", 0, true, 1, false,
+                     "soften: target core stiffness factor, below the implicit hand-off's."));
+  s.push_back(integer("stages[].max_steps", "engine.steps", 0, 1e12,
+                      "Explicit steps at most in this stage."));
+  s.push_back(number("stages[].ratio", "-", "1e-3", 0, true, 1, false,
+                     "Stop when the unbalanced-force ratio falls below this."));
+  s.push_back(non_negative("stages[].time", "s", "0",
+                           "Stop after this much simulated time in the stage; 0: no limit."));
+  s.push_back(integer("stages[].every_steps", "output.every_steps", 1, 1e9,
+                      "Steps between outputs in this stage."));
   // [output]
   s.push_back(integer("output.every_steps", "1000", 1, 1e9,
                       "Explicit steps between outputs (VTK frames, history rows)."));

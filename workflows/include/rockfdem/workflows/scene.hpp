@@ -48,6 +48,16 @@ struct EngineSettings {
   double platen_velocity = 0.5;  ///< m/s, each platen (specimens)
 };
 
+/// One construction stage of a tunnel run (scene [[stages]]).
+struct StageSpec {
+  std::string kind;     ///< soften, lining, remove_core, equilibrium
+  double alpha = 0;     ///< soften: target core stiffness factor
+  long max_steps = 0;   ///< explicit steps at most
+  double ratio = 1e-3;  ///< stop when the unbalanced-force ratio is below
+  double time = 0;      ///< stop after this simulated time [s]; 0: no limit
+  int every_steps = 1000;
+};
+
 struct OutputSettings {
   int every_steps = 1000;
   bool vtk = true;
@@ -62,6 +72,7 @@ struct Scene {
   std::map<std::string, MaterialSpec> materials;  ///< "rock", "core", "lining" as present
   InsituSettings insitu;
   EngineSettings engine;
+  std::vector<StageSpec> stages;  ///< explicit stages after the implicit one (tunnels)
   OutputSettings output;
   std::string canonical;  ///< the validated scene as TOML (overrides applied), for hashing and records
 };
