@@ -44,6 +44,14 @@ coupling::VtkGrid broken_crack_grid(const fdem::Engine& e, const mesh::Mesh& m,
     }
     a = coupling::triangle_cell_array(g, std::move(a));
   }
+  // Excavated triangles are drawn grey (NaN), not as stress-free rock.
+  for (coupling::VtkArray& a : g.cell_arrays) {
+    if (a.is_int()) continue;
+    auto& v = std::get<std::vector<double>>(a.values);
+    for (std::size_t t = 0; t < n_tri; ++t)
+      if (!e.active(t))
+        for (int k = 0; k < a.n_components; ++k) v[t * a.n_components + k] = std::nan("");
+  }
   return g;
 }
 
