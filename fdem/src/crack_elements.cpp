@@ -156,14 +156,16 @@ FailureMode classify_failure(double sum_a2, double sum_b2) {
   return FailureMode::kMixed;
 }
 
-void crack_forces(EngineData& d) {
+long crack_forces(EngineData& d) {
   const long nc = static_cast<long>(d.cracks.size());
   double* slots = d.slots.data() + 2 * d.crack_slot0();
   double* damage = d.cracks.damage.data();
   std::uint8_t* state = d.cracks.state.data();
   const std::uint8_t* active = d.cracks.active.data();
   const auto step = static_cast<std::int32_t>(d.step);
-#pragma omp parallel for schedule(static) num_threads(thread_count(d.threads))
+  long n_broken = 0;
+#pragma omp parallel for schedule(static) num_threads(thread_count(d.threads)) \
+    reduction(+ : n_broken)
   for (long c = 0; c < nc; ++c) {
     if (!active[c] || state[c] == std::uint8_t(CrackState::kBroken)) continue;
     double sum_a2 = 0, sum_b2 = 0;
@@ -174,11 +176,13 @@ void crack_forces(EngineData& d) {
       state[c] = std::uint8_t(CrackState::kBroken);
       d.cracks.mode[c] = std::uint8_t(classify_failure(sum_a2, sum_b2));
       d.cracks.broken_step[c] = step;
+      ++n_broken;
     } else if (state[c] == std::uint8_t(CrackState::kIntact) &&
                (dmg[0] > 0.0 || dmg[1] > 0.0 || dmg[2] > 0.0)) {
       state[c] = std::uint8_t(CrackState::kYielding);
     }
   }
+  return n_broken;
 }
 
 }  // namespace rockfdem::fdem::detail

@@ -9,8 +9,8 @@ namespace rockfdem::fdem::detail {
 
 /// Writes every live crack element's four nodal forces into its slots,
 /// advances damage and marks breakage (state, mode, step). A broken or
-/// inactive element's slots are zero.
-void crack_forces(EngineData& d);
+/// inactive element's slots are zero. Returns the number broken this step.
+long crack_forces(EngineData& d);
 
 /// Stored energy of crack element c's undamaged branches (0 once damaged).
 double crack_element_energy(const EngineData& d, std::size_t c);

@@ -166,44 +166,4 @@ long prestress_cracks(EngineData& d) {
   return clipped;
 }
 
-void shift_crack_prestress(EngineData& d, std::size_t t, const double old_stress[3],
-                           const double new_stress[3]) {
-  Cracks& cr = d.cracks;
-  const bool same = old_stress[0] == new_stress[0] && old_stress[1] == new_stress[1] &&
-                    old_stress[2] == new_stress[2];
-  if (cr.size() == 0 || same) return;
-  if (cr.offset.empty()) cr.offset.assign(6 * cr.size(), 0.0);
-  const double ds[3] = {0.5 * (new_stress[0] - old_stress[0]),
-                        0.5 * (new_stress[1] - old_stress[1]),
-                        0.5 * (new_stress[2] - old_stress[2])};
-  if (cr.tri_cracks.empty()) {  // built on first use: up to 3 elements per triangle
-    cr.tri_cracks.assign(3 * d.tris.size(), -1);
-    for (std::size_t c = 0; c < cr.size(); ++c)
-      for (int side = 0; side < 2; ++side) {
-        int* slot = &cr.tri_cracks[3 * cr.tri[2 * c + side]];
-        while (*slot >= 0) ++slot;
-        *slot = static_cast<int>(c);
-      }
-  }
-  for (int j = 0; j < 3; ++j) {
-    const int c = cr.tri_cracks[3 * t + j];
-    if (c < 0 || cr.state[c] == std::uint8_t(CrackState::kBroken)) continue;
-    double e[2], n[2], cur[6], tp[6];
-    const double h = crack_frame(d, c, e, n);
-    const CrackConstants& k = d.crack_laws[cr.material[c]];
-    const double dtx = ds[0] * n[0] + ds[2] * n[1], dty = ds[2] * n[0] + ds[1] * n[1];
-    for (int i = 0; i < 3; ++i) {
-      // The pre-stress traction: the undamaged law at zero measured opening.
-      double undamaged = 0.0;
-      const CrackPoint p = crack_point(k, -cr.offset[6 * c + 2 * i],
-                                       -cr.offset[6 * c + 2 * i + 1], h, undamaged);
-      tp[2 * i] = p.sigma * n[0] + p.tau * e[0] + dtx;
-      tp[2 * i + 1] = p.sigma * n[1] + p.tau * e[1] + dty;
-      cur[2 * i] = 0.0;  // offsets are relative to zero opening here
-      cur[2 * i + 1] = 0.0;
-    }
-    set_point_offsets(d, c, tp, cur);
-  }
-}
-
 }  // namespace rockfdem::fdem::detail

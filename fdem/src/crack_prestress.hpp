@@ -23,10 +23,4 @@ namespace rockfdem::fdem::detail {
 /// Returns the number of clipped integration points.
 long prestress_cracks(EngineData& d);
 
-/// Adds the traction change ((new - old)/2) n of one triangle's initial
-/// stress to the starting traction of the unbroken crack elements on its
-/// edges (set_initial_stress after construction).
-void shift_crack_prestress(EngineData& d, std::size_t t, const double old_stress[3],
-                           const double new_stress[3]);
-
 }  // namespace rockfdem::fdem::detail

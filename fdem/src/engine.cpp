@@ -17,6 +17,7 @@
 #include <sstream>
 
 #include "boundary.hpp"
+#include "contact.hpp"
 #include "crack_elements.hpp"
 #include "crack_prestress.hpp"
 #include "engine_impl.hpp"
@@ -125,6 +126,7 @@ Engine::Engine(const ModelInput& in) : impl_(std::make_unique<Impl>()) {
   // Crack elements start carrying the initial stress (the in-situ hand-off
   // must start in equilibrium with or without a fracture zone).
   impl_->prestress_clipped = detail::prestress_cracks(d);
+  if (in.contact.enabled) set_contact(in.contact);
   impl_->dt_safety = in.dt_safety;
   if (in.dt > 0) set_dt(in.dt);
   impl_->refresh();
@@ -168,6 +170,11 @@ void Engine::Impl::refresh() {
   if (d.masses_dirty) detail::refresh_nodes(d);
   if (critical_dt >= 0) return;
   critical_dt = detail::critical_dt(d);
+  if (d.contact_on) {  // the contact penalty adds its frequency to the model's
+    const double omega = 2.0 / critical_dt, xi = d.contact.settings.damping_ratio;
+    critical_dt = 2.0 / std::sqrt(omega * omega + detail::contact_omega2(d)) *
+                  (std::sqrt(1.0 + xi * xi) - xi);
+  }
   if (auto_dt) d.dt = dt_safety * critical_dt;
 }
 
@@ -206,9 +213,16 @@ void Engine::step() {
   const double t1 = omp_get_wtime();
   impl_->times.triangles += t1 - t0;
   if (bad_tri >= 0) raise_bad_triangle(d, bad_tri);
-  detail::crack_forces(d);
-  const double t2 = omp_get_wtime();
+  const long n_broken = detail::crack_forces(d);
+  double t2 = omp_get_wtime();
   impl_->times.cracks += t2 - t1;
+  if (d.contact_on) {  // one branch per step while contact is off
+    if (n_broken > 0) d.contact.topology_dirty = d.contact.dirty = true;
+    detail::contact_forces(d);
+    const double t3 = omp_get_wtime();
+    impl_->times.contact += t3 - t2;
+    t2 = t3;
+  }
   const long bad_node = detail::node_update(d);
   impl_->times.nodes += omp_get_wtime() - t2;
   ++d.step;
@@ -285,6 +299,7 @@ void Engine::set_active(std::size_t t, bool on, ActivationReference ref) {
   if (on && ref == ActivationReference::kCurrent) detail::set_reference_to_current(d, t);
   d.tris.active[t] = on ? 1 : 0;
   d.masses_dirty = true;
+  d.contact.topology_dirty = d.contact.dirty = true;  // free surfaces change
   impl_->critical_dt = -1;
 }
 
@@ -333,15 +348,43 @@ void Engine::rejoin_crack(std::size_t c, int material) {
   cr.state[c] = std::uint8_t(CrackState::kIntact);
   cr.mode[c] = std::uint8_t(FailureMode::kNone);
   cr.broken_step[c] = -1;
+  impl_->d.contact.topology_dirty = impl_->d.contact.dirty = true;
 }
 
 void Engine::set_initial_stress(std::size_t t, const std::array<double, 3>& stress) {
   check_index(t, n_triangles(), "triangle");
   auto& s0 = impl_->d.tris.sigma0;
   if (s0.empty()) s0.assign(3 * n_triangles(), 0.0);
-  const double old[3] = {s0[3 * t], s0[3 * t + 1], s0[3 * t + 2]};
   for (int k = 0; k < 3; ++k) s0[3 * t + k] = stress[k];
-  detail::shift_crack_prestress(impl_->d, t, old, stress.data());
+}
+
+void Engine::set_contact(const ContactSettings& contact) {
+  if (!(contact.penalty >= 0) || !(contact.buffer >= 0) || !(contact.damping_ratio >= 0) ||
+      !(contact.damping_ratio <= 1))
+    throw InputError("fdem: contact penalty and buffer must be >= 0 (0 = default) and the "
+                     "damping ratio in [0, 1]");
+  auto& d = impl_->d;
+  d.contact.settings = contact;
+  d.contact_on = contact.enabled;
+  if (contact.enabled) detail::contact_setup(d);
+  impl_->critical_dt = -1;
+}
+
+bool Engine::contact_active() const {
+  return impl_->d.contact_on && !impl_->d.contact.pairs.empty();
+}
+
+ContactCounters Engine::contact_counters() const {
+  const auto& c = impl_->d.contact;
+  ContactCounters r;
+  r.enabled = impl_->d.contact_on;
+  r.candidates = static_cast<long>(c.candidates.size());
+  r.pairs = static_cast<long>(c.pairs.size());
+  r.touching = c.touching;
+  r.detections = c.detections;
+  r.steps_with_pairs = c.steps_with_pairs;
+  r.steps_skipped = c.steps_skipped;
+  return r;
 }
 
 void Engine::set_threads(int n_threads) {
@@ -368,6 +411,7 @@ void Engine::set_node_state(std::size_t node, double x, double y, double vx, dou
   n.pos[2 * node + 1] = y;
   n.vel[2 * node] = vx;
   n.vel[2 * node + 1] = vy;
+  impl_->d.contact.dirty = true;  // a jump the drift check does not bound
 }
 
 std::array<double, 2> Engine::node_force(std::size_t node) const {

@@ -13,6 +13,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "contact.hpp"
 #include "rockfdem/fdem/crack_law.hpp"
 #include "rockfdem/fdem/model_input.hpp"
 
@@ -61,7 +62,6 @@ struct Cracks {
   std::vector<double> offset;  ///< (o, s) taken as zero at end 0, midpoint, end 1
                                ///< (6 per element); empty until an element is
                                ///< re-joined or pre-stressed (crack_prestress.cpp)
-  std::vector<int> tri_cracks;  ///< 3 per triangle (-1: none); built on first use
   std::size_t size() const { return material.size(); }
 };
 
@@ -108,6 +108,8 @@ struct EngineData {
   double reversal[2] = {0, 0};        ///< sum m v_old.v_new, sum m v_old^2 (free nodes)
   DampingSettings damping;
   double gravity[2] = {0, 0};
+  bool contact_on = false;  ///< ContactSettings::enabled
+  ContactData contact;
   double dt = 0;
   long step = 0;
   double time = 0;

@@ -135,18 +135,5 @@ TEST(CrackPrestress, gravity_gradient_field_starts_in_equilibrium) {
   EXPECT_EQ(e.broken_counts().total(), 0);
 }
 
-// set_initial_stress after construction: doubling a uniform field on every
-// triangle (and the tractions with it) shifts each crack's starting traction
-// by half the jump from each side: the block is balanced again.
-TEST(CrackPrestress, set_initial_stress_shifts_the_crack_traction) {
-  const Stress s{-4e6, -2e6, 1e6}, s2{-8e6, -4e6, 2e6};
-  Engine e(uniform_stress_block(s));
-  for (std::size_t t = 0; t < e.n_triangles(); ++t) e.set_initial_stress(t, s2);
-  e.set_boundary_conditions(side_tractions(s2));
-  e.step();
-  EXPECT_LT(e.unbalanced_force_ratio(), 1e-6);
-  EXPECT_LT(peak_kinetic(e, 100), 1e-12 * release_energy(s2, 1.0));
-}
-
 }  // namespace
 }  // namespace rockfdem::fdem

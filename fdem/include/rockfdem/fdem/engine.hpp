@@ -68,6 +68,18 @@ struct EquilibriumResult {
 /// Wall time spent in each phase of the step since construction [s].
 struct PhaseTimes {
   double triangles = 0, cracks = 0, nodes = 0;
+  double contact = 0;  ///< detection, contact forces and their gather
+};
+
+/// What contact did (contact_counters()): for the run summary.
+struct ContactCounters {
+  bool enabled = false;
+  long candidates = 0;        ///< triangles on a free surface at the last detection
+  long pairs = 0;             ///< candidate pairs from the last detection
+  long touching = 0;          ///< pairs with a contact force in the last step
+  long detections = 0;        ///< broad-phase runs since construction
+  long steps_with_pairs = 0;  ///< steps in which the narrow phase ran
+  long steps_skipped = 0;     ///< steps in which nothing could touch (no narrow phase)
 };
 
 class Engine {
@@ -133,9 +145,17 @@ class Engine {
   void rejoin_crack(std::size_t c, int material);
   /// Replaces triangle t's initial stress (sxx, syy, sxy) [Pa] (e.g. a
   /// lining installed stress-free where the in-situ field covered it). The
-  /// unbroken crack elements on t's edges change their starting traction by
-  /// ((new - old)/2) n, half the jump, as at construction.
+  /// crack elements keep their state: such a change goes with a new
+  /// reference (set_active(..., kCurrent)), and an interface's new zero is
+  /// set with rejoin_crack.
   void set_initial_stress(std::size_t t, const std::array<double, 3>& stress);
+  /// Enables, changes or disables contact (ContactSettings). Detection is
+  /// redone before the next step; the stability limit accounts for the
+  /// contact penalty.
+  void set_contact(const ContactSettings& contact);
+  /// True when the last step evaluated contact pairs (something could touch).
+  bool contact_active() const;
+  ContactCounters contact_counters() const;
   /// OpenMP threads for every loop; 0 = OpenMP's default.
   void set_threads(int n_threads);
   int threads() const;

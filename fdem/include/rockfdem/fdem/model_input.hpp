@@ -87,6 +87,19 @@ struct DampingSettings {
   double mass_proportional = 0;  ///< c [1/s]: f -= c m v
 };
 
+/// Contact between triangles (Munjiza's potential-based penalty contact with
+/// Coulomb friction, reference sec. 3). Off by default: a run enables it
+/// when fragments or separate bodies can touch. Only triangles on a free
+/// surface (outer boundary, next to an inactive triangle, next to a broken
+/// crack element) take part, so an intact body costs nothing.
+struct ContactSettings {
+  bool enabled = false;
+  double penalty = 0;        ///< p [Pa]; 0 selects the largest Young's modulus
+  double buffer = 0;         ///< detection buffer [m]; 0 selects 0.25 x the mean edge length
+  double damping_ratio = 0;  ///< normal contact damping as a fraction of critical
+  bool friction = true;      ///< Coulomb friction, mu = tan(residual friction angle)
+};
+
 /// Everything the engine needs. Only x, y, triangles, material and
 /// materials are required; empty optional vectors mean "none".
 struct ModelInput {
@@ -111,6 +124,7 @@ struct ModelInput {
   std::vector<BoundaryCondition> boundary_conditions;
   double gravity_x = 0, gravity_y = 0;  ///< [m/s^2]
   DampingSettings damping;
+  ContactSettings contact;
 
   // Time step: dt > 0 is checked against the stability limit; dt = 0 takes
   // dt_safety times the computed critical step.

@@ -1,0 +1,72 @@
+// Contact between triangles (reference sec. 3), private to fdem/.
+//
+//   contact_setup    once per set_contact: edge neighbours, penalty, buffer
+//   contact_detect   broad phase: free-surface triangles, exclusions, grid
+//   contact_forces   per step: re-detect if needed, narrow phase per pair,
+//                    friction, gather into the triangles' force slots
+//
+// Determinism: every pair writes its twelve corner forces into its own
+// buffer; each contact triangle then sums its pairs' entries in ascending
+// pair order (a CSR built at detection) and adds the sum to its own force
+// slots, which the node loop gathers as usual. While no candidate pair
+// exists the step does nothing but a displacement check over the
+// free-surface nodes.
+#pragma once
+
+#include <array>
+#include <vector>
+
+#include "contact_grid.hpp"
+#include "rockfdem/fdem/model_input.hpp"
+
+namespace rockfdem::fdem::detail {
+
+struct EngineData;
+
+struct ContactData {
+  ContactSettings settings;
+  double penalty = 0, buffer = 0;
+  std::vector<double> mu;  ///< per material: tan(residual friction angle)
+  // Static topology (setup): per triangle edge k (corners k -> k+1).
+  std::vector<int> edge_nbr;    ///< neighbouring triangle or -1
+  std::vector<int> edge_crack;  ///< crack element on the edge or -1
+  // Detection results.
+  std::vector<int> candidates;        ///< free-surface triangles, ascending
+  std::vector<int> component;         ///< per node: intact-crack component at its vertex
+  std::vector<double> boxes;          ///< 4 per candidate, grown by buffer / 2
+  std::vector<int> watch_nodes;       ///< nodes of the candidates (displacement check)
+  std::vector<double> watch_pos;      ///< their positions at detection
+  std::vector<std::array<int, 2>> pairs, old_pairs;  ///< triangle ids, canonical order
+  std::vector<double> friction, old_friction;         ///< 6 per pair: role x contactor edge
+  std::vector<double> pair_force;                     ///< 12 per pair: A's corners, B's corners
+  std::vector<int> gather_tri, gather_start, gather_entry;  ///< CSR triangle -> 2 pair + side
+  std::vector<std::uint8_t> pair_touching;
+  GridScratch grid;
+  bool dirty = true;           ///< re-detect before the next contact pass
+  bool topology_dirty = true;  ///< candidates and components must be rebuilt
+  long detections = 0, steps_with_pairs = 0, steps_skipped = 0, touching = 0;
+};
+
+/// Edge neighbours and crack elements per triangle edge, penalty, buffer,
+/// friction coefficients.
+void contact_setup(EngineData& d);
+
+/// Broad phase: candidates (active triangles with a free edge), exclusions
+/// (shared nodes, an intact crack element between them, or one shared vertex
+/// whose nodes an intact chain of crack elements joins), grid pairs.
+void contact_detect(EngineData& d);
+
+/// The pairs contact_detect would find, by testing every candidate pair
+/// (tests). Uses and overwrites the detection's candidates and boxes.
+std::vector<std::array<int, 2>> contact_pairs_brute_force(EngineData& d);
+
+/// One step of contact; see the header comment.
+void contact_forces(EngineData& d);
+
+/// Square of the largest angular frequency contact can add: two roles of
+/// normal stiffness 3 p / H per unit length on a node of the thinnest
+/// triangle (H its smallest altitude), Gershgorin-bounded, doubled when
+/// friction adds its tangential spring of the same stiffness.
+double contact_omega2(const EngineData& d);
+
+}  // namespace rockfdem::fdem::detail

@@ -1,0 +1,243 @@
+// Narrow phase: Munjiza and Andrews' potential-based penalty contact
+// (reference sec. 3) with Coulomb friction.
+//
+// The target's potential phi = 3 min(lambda_i) (barycentric coordinates) is
+// 1 at its centroid and 0 on its edges. Each contactor edge A->B (length L,
+// outward normal n) is clipped to the part inside the target, where phi is
+// piecewise linear in the edge parameter xi; exactly integrated,
+//   F_AB = p L int phi dxi,  F_B = p L int phi xi dxi,  F_A = F_AB - F_B
+// push the contactor's nodes by -F n, and the target's nodes receive
+// p L int phi lambda_i dxi n, the same force distributed by the barycentric
+// coordinates of the points where it acts (so forces and moments balance
+// exactly). Then the roles are swapped. This is the boundary form of the
+// overlap integral of the two potentials' gradients.
+//
+// Friction: per contactor edge and pair, an incremental tangential spring at
+// the edge's force centre xi_c = F_B / F_AB, F_t -= k_t v_t dt with
+// k_t = 3 p L_in / H (the normal stiffness of the same overlap) and
+// |F_t| <= mu F_n (mu from the residual friction angle). Optional normal
+// damping c v_n, c = ratio 2 sqrt(k_n m), never making F_n adhesive.
+#include <algorithm>
+#include <cmath>
+
+#include "engine_data.hpp"
+#include "parallel.hpp"
+
+namespace rockfdem::fdem::detail {
+namespace {
+
+struct Corners {
+  double x[3], y[3], vx[3], vy[3], m[3];
+};
+
+inline void load(const EngineData& d, int t, Corners& c) {
+  const int* nd = &d.tris.nodes[3 * t];
+  for (int k = 0; k < 3; ++k) {
+    c.x[k] = d.nodes.pos[2 * nd[k]];
+    c.y[k] = d.nodes.pos[2 * nd[k] + 1];
+    c.vx[k] = d.nodes.vel[2 * nd[k]];
+    c.vy[k] = d.nodes.vel[2 * nd[k] + 1];
+    c.m[k] = d.nodes.mass[nd[k]];
+  }
+}
+
+/// Barycentric coordinates of (px, py) in triangle t (inv2a = 1 / 2A).
+inline void barycentric(const Corners& t, double inv2a, double px, double py, double l[3]) {
+  for (int i = 0; i < 3; ++i) {
+    const int j = (i + 1) % 3, k = (i + 2) % 3;
+    l[i] = ((t.x[j] - px) * (t.y[k] - py) - (t.x[k] - px) * (t.y[j] - py)) * inv2a;
+  }
+}
+
+/// Exact integrals of phi = 3 min(lambda) over the part of the edge inside
+/// the target: i0 = int phi, i1 = int phi xi, r_i = int phi lambda_i, and the
+/// inside length fraction. lambda is linear from la (xi = 0) to lb (xi = 1).
+struct EdgeIntegral {
+  double i0 = 0, i1 = 0, r[3] = {0, 0, 0}, inside = 0;
+};
+
+inline bool integrate_edge(const double la[3], const double lb[3], EdgeIntegral& out) {
+  double lo = 0.0, hi = 1.0;
+  for (int i = 0; i < 3; ++i) {
+    if (la[i] < 0.0 && lb[i] < 0.0) return false;
+    if (la[i] < 0.0) lo = std::max(lo, la[i] / (la[i] - lb[i]));
+    else if (lb[i] < 0.0) hi = std::min(hi, la[i] / (la[i] - lb[i]));
+  }
+  if (!(hi > lo)) return false;
+  // Breakpoints of min(lambda): where two coordinates cross inside (lo, hi).
+  double xs[5] = {lo, hi, 0, 0, 0};
+  int n = 2;
+  for (int i = 0; i < 3; ++i)
+    for (int j = i + 1; j < 3; ++j) {
+      const double d0 = la[i] - la[j], d1 = lb[i] - lb[j];
+      if ((d0 < 0.0) != (d1 < 0.0) && d0 != d1) {
+        const double x = d0 / (d0 - d1);
+        if (x > lo && x < hi) xs[n++] = x;
+      }
+    }
+  for (int i = 1; i < n; ++i)  // insertion sort of at most 5 values
+    for (int j = i; j > 0 && xs[j] < xs[j - 1]; --j) std::swap(xs[j], xs[j - 1]);
+  auto lambda = [&](int i, double x) { return la[i] + (lb[i] - la[i]) * x; };
+  auto phi = [&](double x) {
+    return 3.0 * std::max(0.0, std::min({lambda(0, x), lambda(1, x), lambda(2, x)}));
+  };
+  for (int s = 0; s + 1 < n; ++s) {
+    const double a = xs[s], b = xs[s + 1], w = b - a;
+    if (!(w > 0.0)) continue;
+    const double pa = phi(a), pb = phi(b);
+    out.i0 += 0.5 * w * (pa + pb);
+    out.i1 += w / 6.0 * (pa * (2.0 * a + b) + pb * (a + 2.0 * b));
+    for (int i = 0; i < 3; ++i) {
+      const double qa = lambda(i, a), qb = lambda(i, b);
+      out.r[i] += w / 6.0 * (2.0 * pa * qa + pa * qb + pb * qa + 2.0 * pb * qb);
+    }
+  }
+  out.inside = hi - lo;
+  return out.i0 > 0.0;
+}
+
+struct RoleParams {
+  double p, mu, dt, damping;
+  bool friction;
+};
+
+/// Contactor c's three edges against target t; adds the forces to fc, ft
+/// (6 each: corner x, y), updates the three friction springs. Returns true
+/// when some edge overlaps.
+bool role(const Corners& c, const Corners& t, const RoleParams& rp, double* spring, double* fc,
+          double* ft) {
+  const double two_a = (t.x[1] - t.x[0]) * (t.y[2] - t.y[0]) - (t.x[2] - t.x[0]) * (t.y[1] - t.y[0]);
+  if (!(two_a > 0.0)) return false;
+  const double inv2a = 1.0 / two_a;
+  double longest = 0;
+  for (int k = 0; k < 3; ++k)
+    longest = std::max(longest, std::hypot(t.x[(k + 1) % 3] - t.x[k], t.y[(k + 1) % 3] - t.y[k]));
+  const double h_t = two_a / longest;  // smallest altitude
+  bool touching = false;
+  for (int k = 0; k < 3; ++k) {
+    const int a = k, b = (k + 1) % 3;
+    double la[3], lb[3];
+    barycentric(t, inv2a, c.x[a], c.y[a], la);
+    barycentric(t, inv2a, c.x[b], c.y[b], lb);
+    EdgeIntegral e;
+    if (!integrate_edge(la, lb, e)) {
+      spring[k] = 0.0;
+      continue;
+    }
+    touching = true;
+    const double ex = c.x[b] - c.x[a], ey = c.y[b] - c.y[a];
+    const double len = std::sqrt(ex * ex + ey * ey);
+    const double tx = ex / len, ty = ey / len, nx = ty, ny = -tx;  // n outward
+    const double s = rp.p * len;
+    const double f_ab = s * e.i0, f_b = s * e.i1, f_a = f_ab - f_b;
+    // Point of action and the relative velocity there.
+    const double xi = e.i1 / e.i0;
+    double lc[3], vtx = 0, vty = 0;
+    for (int i = 0; i < 3; ++i) {
+      lc[i] = la[i] + (lb[i] - la[i]) * xi;
+      vtx += lc[i] * t.vx[i];
+      vty += lc[i] * t.vy[i];
+    }
+    const double vrx = (1 - xi) * c.vx[a] + xi * c.vx[b] - vtx;
+    const double vry = (1 - xi) * c.vy[a] + xi * c.vy[b] - vty;
+    const double k_n = 3.0 * s * e.inside / h_t;
+    double f_d = 0.0;  // normal damping, > 0 while approaching (v_r . n > 0)
+    if (rp.damping > 0.0) {
+      const double m = std::min(c.m[a], c.m[b]);
+      f_d = std::max(rp.damping * 2.0 * std::sqrt(k_n * m) * (vrx * nx + vry * ny), -f_ab);
+    }
+    double f_t = 0.0;
+    if (rp.friction) {
+      f_t = spring[k] - k_n * (vrx * tx + vry * ty) * rp.dt;
+      const double cap = rp.mu * (f_ab + f_d);
+      f_t = std::clamp(f_t, -cap, cap);
+      spring[k] = f_t;
+    }
+    // Contactor: potential force at A, B plus the point force (F_t t - F_d n) at xi.
+    const double px = f_t * tx - f_d * nx, py = f_t * ty - f_d * ny;
+    fc[2 * a] += -f_a * nx + (1 - xi) * px;
+    fc[2 * a + 1] += -f_a * ny + (1 - xi) * py;
+    fc[2 * b] += -f_b * nx + xi * px;
+    fc[2 * b + 1] += -f_b * ny + xi * py;
+    for (int i = 0; i < 3; ++i) {
+      ft[2 * i] += s * e.r[i] * nx - lc[i] * px;
+      ft[2 * i + 1] += s * e.r[i] * ny - lc[i] * py;
+    }
+  }
+  return touching;
+}
+
+/// Both roles of pair q; its 12 corner forces go to its own buffer.
+bool pair_forces(const EngineData& d, std::size_t q, double* spring, double* out) {
+  const ContactData& c = d.contact;
+  const int ta = c.pairs[q][0], tb = c.pairs[q][1];
+  Corners a, b;
+  load(d, ta, a);
+  load(d, tb, b);
+  RoleParams rp;
+  rp.p = c.penalty;
+  rp.mu = std::min(c.mu[d.tris.material[ta]], c.mu[d.tris.material[tb]]);
+  rp.dt = d.dt;
+  rp.damping = c.settings.damping_ratio;
+  rp.friction = c.settings.friction;
+  for (int k = 0; k < 12; ++k) out[k] = 0.0;
+  const bool t0 = role(a, b, rp, spring, out, out + 6);
+  const bool t1 = role(b, a, rp, spring + 3, out + 6, out);
+  return t0 || t1;
+}
+
+/// Largest squared displacement of a watched node since the detection.
+double watched_drift2(const EngineData& d) {
+  const ContactData& c = d.contact;
+  const long n = static_cast<long>(c.watch_nodes.size());
+  double worst = 0.0;
+#pragma omp parallel for schedule(static) num_threads(thread_count(d.threads)) reduction(max : worst)
+  for (long i = 0; i < n; ++i) {
+    const int node = c.watch_nodes[i];
+    const double dx = d.nodes.pos[2 * node] - c.watch_pos[2 * i];
+    const double dy = d.nodes.pos[2 * node + 1] - c.watch_pos[2 * i + 1];
+    worst = std::max(worst, dx * dx + dy * dy);
+  }
+  return worst;
+}
+
+}  // namespace
+
+void contact_forces(EngineData& d) {
+  ContactData& c = d.contact;
+  // Two pieces approach by at most twice the largest drift: detect again
+  // once that could close the buffer.
+  if (!c.dirty && !c.watch_nodes.empty() && 4.0 * watched_drift2(d) > c.buffer * c.buffer)
+    c.dirty = true;
+  if (c.dirty) contact_detect(d);
+  const long np = static_cast<long>(c.pairs.size());
+  if (np == 0) {
+    ++c.steps_skipped;
+    c.touching = 0;
+    return;
+  }
+  ++c.steps_with_pairs;
+  long touching = 0;
+#pragma omp parallel for schedule(dynamic, 64) num_threads(thread_count(d.threads)) \
+    reduction(+ : touching)
+  for (long q = 0; q < np; ++q)
+    touching += pair_forces(d, q, &c.friction[6 * q], &c.pair_force[12 * q]);
+  c.touching = touching;
+  // Gather: each contact triangle sums its pairs in ascending pair order
+  // into its own force slots (rewritten by the triangle loop every step).
+  const long ng = static_cast<long>(c.gather_tri.size());
+  double* slots = d.slots.data();
+#pragma omp parallel for schedule(static) num_threads(thread_count(d.threads))
+  for (long g = 0; g < ng; ++g) {
+    double sum[6] = {0, 0, 0, 0, 0, 0};
+    for (int k = c.gather_start[g]; k < c.gather_start[g + 1]; ++k) {
+      const int entry = c.gather_entry[k];
+      const double* f = &c.pair_force[12 * (entry / 2) + 6 * (entry % 2)];
+      for (int i = 0; i < 6; ++i) sum[i] += f[i];
+    }
+    double* s = slots + 6 * c.gather_tri[g];
+    for (int i = 0; i < 6; ++i) s[i] += sum[i];
+  }
+}
+
+}  // namespace rockfdem::fdem::detail
