@@ -17,6 +17,7 @@
 #include <iostream>
 
 #include "commands.hpp"
+#include "continuum_comparison.hpp"
 #include "history.hpp"
 #include "monitors.hpp"
 #include "output_dir.hpp"
@@ -116,6 +117,22 @@ int run_tunnel(const Scene& scene, const CommandLine& cli) {
   StageRunner stages(engine, m, handoff, scene, cli, out, monitors);
   for (const StageSpec& stage : scene.stages) stages.run(stage, timer);
 
+  if (!stages.core_present()) {
+    // The continuum reference of the relaxed state: the open excavation.
+    insitu::InsituSpec open = insitu_spec(scene);
+    open.alphas = {0.0};
+    open.lining.active = false;
+    const bool lined = scene.materials.count("lining") && scene.mesh.tunnel.lining_thickness > 0;
+    if (!lined) {
+      const insitu::InsituField reference = insitu::solve_insitu(m, open).back();
+      active_threads();
+      summary.json()["comparison"] = compare_with_continuum(
+          scene, m, engine, reference, output_path(cli.output_dir, "fdem_vs_continuum.csv"));
+    } else {
+      summary.skipped("comparison with continuum FEM: the lining has no implicit counterpart");
+    }
+    timer.stamp("insitu");
+  }
   summary.json()["fdem"] = {{"unbalanced_ratio_at_start", start_ratio},
                             {"unbalanced_ratio_at_end", engine.unbalanced_force_ratio()},
                             {"handoff_alpha", handoff.alpha},

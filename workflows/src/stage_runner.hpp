@@ -25,6 +25,7 @@ class StageRunner {
   void run(const StageSpec& stage, PhaseTimer& timer);
   /// One entry per stage run: kind, steps, simulated time, final ratio, converged.
   const nlohmann::json& report() const { return report_; }
+  bool core_present() const { return core_present_; }
 
  private:
   void apply(const StageSpec& stage);
