@@ -7,6 +7,7 @@
 #include <iostream>
 
 #include "commands.hpp"
+#include "engine_report.hpp"
 #include "history.hpp"
 #include "output_dir.hpp"
 #include "phase_timer.hpp"
@@ -77,6 +78,7 @@ int run_specimen(const Scene& scene, const CommandLine& cli) {
   in.damping.mass_proportional = scene.engine.mass_damping;
   in.gravity_y = -scene.engine.gravity;
   in.threads = threads;
+  in.contact = contact_settings(scene);
   fdem::Engine engine(in);
   timer.stamp("fdem setup");
 
@@ -88,7 +90,7 @@ int run_specimen(const Scene& scene, const CommandLine& cli) {
                    "platen_force", "kinetic_energy", "broken_I", "broken_II", "broken_mixed"});
   coupling::PvdCollection pvd(output_path(cli.output_dir, "fdem.pvd"));
   Progress progress(disc ? "brazilian" : "ucs", scene.engine.steps, cli.quiet);
-  double peak = 0, fdem_seconds = 0, output_seconds = 0;
+  double peak = 0;
   int frame = 0;
   const auto record = [&] {
     const double force = -engine.boundary_force(upper_tag)[1];  // compression positive
@@ -113,33 +115,17 @@ int run_specimen(const Scene& scene, const CommandLine& cli) {
   }
   timer.stamp("output");
   progress.finish(engine.step_count(), engine.time());
-  fdem_seconds = timer.seconds("fdem");
-  output_seconds = timer.seconds("output");
-  (void)output_seconds;
-
   auto& j = summary.json();
-  j["counts"] = {{"triangles", engine.n_triangles()}, {"nodes", engine.n_nodes()},
-                 {"crack_elements", engine.n_cracks()}, {"bolts", 0}};
-  j["steps"] = engine.step_count();
-  j["dt"] = engine.dt();
-  j["simulated_time"] = engine.time();
-  j["throughput"]["triangle_steps_per_second"] =
-      fdem_seconds > 0 ? double(engine.n_triangles()) * double(engine.step_count()) / fdem_seconds
-                       : 0.0;
-  const fdem::BrokenCounts b = engine.broken_counts();
-  j["broken"] = {{"mode_I", b.mode_I}, {"mode_II", b.mode_II}, {"mixed", b.mixed}};
+  report_engine(engine, timer, summary);
   j["specimen"] = {{"peak_stress", peak},
                    {"strain_rate", 2 * scene.engine.platen_velocity / size.length},
                    {"kind", disc ? "brazilian" : "ucs"}};
-  j["memory_bytes"] = engine.memory_bytes();
-  j["state_hash"] = engine.state_hash();
   summary.skipped("insitu: a specimen starts stress-free");
-  summary.skipped("contact: not part of this build's engine");
   summary.set_timings(timer);
   summary.write(output_path(cli.output_dir, "summary.json"));
   if (!cli.quiet)
     std::cout << (disc ? "peak tensile stress " : "peak axial stress ") << peak / 1e6
-              << " MPa, broken " << b.total() << " of " << engine.n_cracks()
+              << " MPa, broken " << engine.broken_counts().total() << " of " << engine.n_cracks()
               << " crack elements, state hash " << engine.state_hash() << '\n'
               << timer.table();
   return 0;

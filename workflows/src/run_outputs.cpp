@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <iostream>
 
+#include "engine_report.hpp"
 #include "output_dir.hpp"
 #include "rockfdem/coupling/fdem_model.hpp"
 #include "rockfdem/coupling/insitu_grid.hpp"
@@ -158,16 +159,7 @@ void RunOutputs::record_step(const fdem::Engine& e, const mesh::Mesh& m,
 void RunOutputs::finish(const fdem::Engine& e, const mesh::Mesh& m,
                         const std::vector<Monitor>& monitors, PhaseTimer& timer) {
   auto& j = summary_.json();
-  j["counts"] = {{"triangles", e.n_triangles()}, {"nodes", e.n_nodes()},
-                 {"crack_elements", e.n_cracks()}, {"bolts", 0}};
-  j["steps"] = e.step_count();
-  j["dt"] = e.dt();
-  j["simulated_time"] = e.time();
-  const double fdem = timer.seconds("fdem");
-  j["throughput"]["triangle_steps_per_second"] =
-      fdem > 0 ? double(e.n_triangles()) * double(e.step_count()) / fdem : 0.0;
-  const fdem::BrokenCounts b = e.broken_counts();
-  j["broken"] = {{"mode_I", b.mode_I}, {"mode_II", b.mode_II}, {"mixed", b.mixed}};
+  report_engine(e, timer, summary_);
   for (const Monitor& mon : monitors) {
     const auto u = displacement(e, mon);
     j["monitors"][mon.name] = {{"ux_mm", mm(u[0])}, {"uy_mm", mm(u[1])}, {"x", mon.x},
@@ -187,17 +179,12 @@ void RunOutputs::finish(const fdem::Engine& e, const mesh::Mesh& m,
   grc.push_back({{"support_pressure_ratio", 0.0},
                  {"vault_settlement_mm", j["monitors"]["vault_settlement_mm"]}});
   j["ground_reaction_curve"] = grc;
-  j["memory_bytes"] = e.memory_bytes();
-  j["state_hash"] = e.state_hash();
   j["history_stages"] = stage_names_;  // history.csv's "stage" column indexes this list
-  const fdem::PhaseTimes p = e.phase_times();
-  j["fdem_modules"] = {{"triangles", p.triangles}, {"cracks", p.cracks}, {"nodes", p.nodes}};
-  if (e.n_cracks() == 0) summary_.skipped("crack elements: no fracture zone in the scene");
-  summary_.skipped("contact: not part of this build's engine");
   if (scene_.output.plots) plots(e, m);
   timer.stamp("output");
   summary_.set_timings(timer);
   summary_.write(output_path(cli_.output_dir, "summary.json"));
+  const fdem::BrokenCounts b = e.broken_counts();
   if (!cli_.quiet)
     std::cout << "vault settlement " << j["monitors"]["vault_settlement_mm"].get<double>()
               << " mm, wall convergence " << j["monitors"]["wall_convergence_mm"].get<double>()

@@ -74,6 +74,7 @@ fdem::ModelInput engine_input(const Scene& scene, const mesh::Mesh& m,
   in.dt = scene.engine.dt;
   in.dt_safety = scene.engine.dt_safety;
   in.threads = active_threads();
+  in.contact = contact_settings(scene);
   return in;
 }
 

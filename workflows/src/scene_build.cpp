@@ -339,6 +339,10 @@ Scene build_scene(const RawScene& raw, const std::string& base_dir) {
   s.engine.mass_damping = r.number("engine.mass_damping");
   s.engine.gravity = r.number("engine.gravity");
   s.engine.platen_velocity = r.number("loading.platen_velocity");
+  s.engine.contact = r.boolean("contact.enabled");
+  s.engine.contact_penalty_factor = r.number("contact.penalty_factor");
+  s.engine.contact_damping = r.number("contact.damping_ratio");
+  s.engine.contact_friction = r.boolean("contact.friction");
   s.output.every_steps = r.integer("output.every_steps");
   s.output.vtk = r.boolean("output.vtk");
   s.output.plots = r.boolean("output.plots");

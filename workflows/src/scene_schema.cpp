@@ -218,6 +218,16 @@ std::vector<KeySpec> build_schema() {
   // [loading]
   s.push_back(positive("loading.platen_velocity", "m/s", "0.5",
                        "UCS and Brazilian tests: speed of each platen towards the other."));
+  // [contact]
+  s.push_back(boolean("contact.enabled", "true",
+                      "Penalty contact with friction between triangles on free surfaces and "
+                      "next to broken cracks; costs nothing while nothing can touch."));
+  s.push_back(number("contact.penalty_factor", "-", "1", 0.1, false, 1000, false,
+                     "Contact penalty as a multiple of the rock's Young's modulus."));
+  s.push_back(number("contact.damping_ratio", "-", "0", 0, false, 1, false,
+                     "Normal contact damping as a fraction of critical."));
+  s.push_back(boolean("contact.friction", "true",
+                      "Coulomb friction with mu = tan(residual_friction_angle)."));
   // [[stages]]
   s.push_back(choice("stages[].kind", "", {"insitu", "soften", "lining", "remove_core",
                                            "equilibrium"},

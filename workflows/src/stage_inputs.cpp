@@ -38,6 +38,15 @@ std::map<int, fdem::Material> engine_materials(const Scene& s) {
   return out;
 }
 
+fdem::ContactSettings contact_settings(const Scene& s) {
+  fdem::ContactSettings c;
+  c.enabled = s.engine.contact;
+  c.penalty = s.engine.contact_penalty_factor * s.materials.at("rock").young;
+  c.damping_ratio = s.engine.contact_damping;
+  c.friction = s.engine.contact_friction;
+  return c;
+}
+
 insitu::InsituSpec insitu_spec(const Scene& s) {
   insitu::InsituSpec spec;
   spec.far_field.sH = s.insitu.sigma_h;

@@ -14,6 +14,11 @@ insitu::InsituSpec insitu_spec(const Scene& scene);
 /// The engine's material for each zone present in the scene (rock, core, lining).
 std::map<int, fdem::Material> engine_materials(const Scene& scene);
 
+/// The scene's contact settings for the engine.
+fdem::ContactSettings contact_settings(const Scene& scene);
+
+/// summary.json's "contact" entry and, when nothing could touch, the
+/// "skipped" line saying so.
 /// Whether the scene's geometry has the Kirsch closed form (circular opening,
 /// uniform stress, no lining) and its parameters.
 bool kirsch_case(const Scene& scene, insitu::KirschCase* k);

@@ -46,6 +46,10 @@ struct EngineSettings {
   double mass_damping = 0;  ///< 1/s
   double gravity = 0;       ///< m/s^2, acting in -y
   double platen_velocity = 0.5;  ///< m/s, each platen (specimens)
+  bool contact = true;
+  double contact_penalty_factor = 1;  ///< times the rock's Young's modulus
+  double contact_damping = 0;
+  bool contact_friction = true;
 };
 
 /// One construction stage of a tunnel run (scene [[stages]]).
