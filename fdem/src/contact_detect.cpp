@@ -104,6 +104,32 @@ void build_candidates(EngineData& d) {
                       c.watch_nodes.end());
 }
 
+/// True when an edge normal of either triangle separates them by more than
+/// `gap`. For convex polygons the largest such separation never exceeds the
+/// true distance, so no pair that could touch is lost; it drops the pairs
+/// whose boxes touch only diagonally (the alternating-diagonal mesh puts
+/// such free-surface triangles at every corner).
+bool separated(const EngineData& d, int a, int b, double gap) {
+  const double* p = d.nodes.pos.data();
+  const int* tri[2] = {&d.tris.nodes[3 * a], &d.tris.nodes[3 * b]};
+  for (int side = 0; side < 2; ++side) {
+    const int* own = tri[side];
+    const int* other = tri[1 - side];
+    for (int k = 0; k < 3; ++k) {
+      const int i = own[k], j = own[(k + 1) % 3];
+      // Outward normal of edge i->j (counter-clockwise), unnormalised.
+      const double nx = p[2 * j + 1] - p[2 * i + 1], ny = p[2 * i] - p[2 * j];
+      const double len = std::sqrt(nx * nx + ny * ny);
+      const double base = nx * p[2 * i] + ny * p[2 * i + 1];
+      double nearest = 1e300;
+      for (int q = 0; q < 3; ++q)
+        nearest = std::min(nearest, nx * p[2 * other[q]] + ny * p[2 * other[q] + 1] - base);
+      if (nearest > gap * len) return true;
+    }
+  }
+  return false;
+}
+
 /// Pair filter on candidate indices: see the file comment.
 bool may_touch(const void* context, int i, int j) {
   const EngineData& d = *static_cast<const EngineData*>(context);
@@ -128,8 +154,8 @@ bool may_touch(const void* context, int i, int j) {
       }
     return false;
   }
-  if (shared == 1) return d.contact.component[na[ka]] != d.contact.component[nb[kb]];
-  return true;
+  if (shared == 1 && d.contact.component[na[ka]] == d.contact.component[nb[kb]]) return false;
+  return !separated(d, a, b, d.contact.buffer);
 }
 
 void build_boxes(EngineData& d) {

@@ -174,13 +174,22 @@ bool pair_forces(const EngineData& d, std::size_t q, double* spring, double* out
   Corners a, b;
   load(d, ta, a);
   load(d, tb, b);
+  for (int k = 0; k < 12; ++k) out[k] = 0.0;
+  // Most pairs lie within the buffer without touching: their boxes are
+  // disjoint, and the edge clipping is skipped (springs reset, as apart).
+  if (std::max({a.x[0], a.x[1], a.x[2]}) < std::min({b.x[0], b.x[1], b.x[2]}) ||
+      std::max({b.x[0], b.x[1], b.x[2]}) < std::min({a.x[0], a.x[1], a.x[2]}) ||
+      std::max({a.y[0], a.y[1], a.y[2]}) < std::min({b.y[0], b.y[1], b.y[2]}) ||
+      std::max({b.y[0], b.y[1], b.y[2]}) < std::min({a.y[0], a.y[1], a.y[2]})) {
+    for (int k = 0; k < 6; ++k) spring[k] = 0.0;
+    return false;
+  }
   RoleParams rp;
   rp.p = c.penalty;
   rp.mu = std::min(c.mu[d.tris.material[ta]], c.mu[d.tris.material[tb]]);
   rp.dt = d.dt;
   rp.damping = c.settings.damping_ratio;
   rp.friction = c.settings.friction;
-  for (int k = 0; k < 12; ++k) out[k] = 0.0;
   const bool t0 = role(a, b, rp, spring, out, out + 6);
   const bool t1 = role(b, a, rp, spring + 3, out + 6, out);
   return t0 || t1;
@@ -191,7 +200,10 @@ double watched_drift2(const EngineData& d) {
   const ContactData& c = d.contact;
   const long n = static_cast<long>(c.watch_nodes.size());
   double worst = 0.0;
-#pragma omp parallel for schedule(static) num_threads(thread_count(d.threads)) reduction(max : worst)
+  // Serial below a few thousand nodes (an intact body's outline): a
+  // parallel region would cost more than the loop.
+#pragma omp parallel for schedule(static) num_threads(thread_count(d.threads)) \
+    reduction(max : worst) if (n > 16384)
   for (long i = 0; i < n; ++i) {
     const int node = c.watch_nodes[i];
     const double dx = d.nodes.pos[2 * node] - c.watch_pos[2 * i];
@@ -199,6 +211,19 @@ double watched_drift2(const EngineData& d) {
     worst = std::max(worst, dx * dx + dy * dy);
   }
   return worst;
+}
+
+/// Sum of contact triangle g's pair entries, in ascending pair order, added
+/// to its three force slots.
+inline void gather_triangle(const ContactData& c, long g, double* slots) {
+  double sum[6] = {0, 0, 0, 0, 0, 0};
+  for (int k = c.gather_start[g]; k < c.gather_start[g + 1]; ++k) {
+    const int entry = c.gather_entry[k];
+    const double* f = &c.pair_force[12 * (entry / 2) + 6 * (entry % 2)];
+    for (int i = 0; i < 6; ++i) sum[i] += f[i];
+  }
+  double* s = slots + 6 * c.gather_tri[g];
+  for (int i = 0; i < 6; ++i) s[i] += sum[i];
 }
 
 }  // namespace
@@ -218,26 +243,21 @@ void contact_forces(EngineData& d) {
   }
   ++c.steps_with_pairs;
   long touching = 0;
-#pragma omp parallel for schedule(dynamic, 64) num_threads(thread_count(d.threads)) \
-    reduction(+ : touching)
-  for (long q = 0; q < np; ++q)
-    touching += pair_forces(d, q, &c.friction[6 * q], &c.pair_force[12 * q]);
-  c.touching = touching;
-  // Gather: each contact triangle sums its pairs in ascending pair order
-  // into its own force slots (rewritten by the triangle loop every step).
   const long ng = static_cast<long>(c.gather_tri.size());
   double* slots = d.slots.data();
-#pragma omp parallel for schedule(static) num_threads(thread_count(d.threads))
-  for (long g = 0; g < ng; ++g) {
-    double sum[6] = {0, 0, 0, 0, 0, 0};
-    for (int k = c.gather_start[g]; k < c.gather_start[g + 1]; ++k) {
-      const int entry = c.gather_entry[k];
-      const double* f = &c.pair_force[12 * (entry / 2) + 6 * (entry % 2)];
-      for (int i = 0; i < 6; ++i) sum[i] += f[i];
-    }
-    double* s = slots + 6 * c.gather_tri[g];
-    for (int i = 0; i < 6; ++i) s[i] += sum[i];
+  // One parallel region for both loops (the barrier between them is the
+  // for's), none at all for a handful of pairs.
+#pragma omp parallel num_threads(thread_count(d.threads)) if (np > 64)
+  {
+#pragma omp for schedule(dynamic, 64) reduction(+ : touching)
+    for (long q = 0; q < np; ++q)
+      touching += pair_forces(d, q, &c.friction[6 * q], &c.pair_force[12 * q]);
+    // Gather: each contact triangle sums its pairs in ascending pair order
+    // into its own force slots (rewritten by the triangle loop every step).
+#pragma omp for schedule(static)
+    for (long g = 0; g < ng; ++g) gather_triangle(c, g, slots);
   }
+  c.touching = touching;
 }
 
 }  // namespace rockfdem::fdem::detail

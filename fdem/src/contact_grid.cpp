@@ -102,13 +102,13 @@ void grid_pairs(const std::vector<double>& boxes, PairFilter keep, const void* c
   const Grid g = make_grid(boxes, n);
   bucket(boxes, n, g, s);
   s.count.resize(n + 1);
-#pragma omp parallel for schedule(dynamic, 256) num_threads(thread_count(threads))
+#pragma omp parallel for schedule(dynamic, 256) num_threads(thread_count(threads)) if (n > 2048)
   for (long i = 0; i < n; ++i)
     s.count[i + 1] = partners<false>(boxes, g, s, keep, context, i, nullptr);
   s.count[0] = 0;
   for (long i = 0; i < n; ++i) s.count[i + 1] += s.count[i];
   pairs.resize(s.count[n]);
-#pragma omp parallel for schedule(dynamic, 256) num_threads(thread_count(threads))
+#pragma omp parallel for schedule(dynamic, 256) num_threads(thread_count(threads)) if (n > 2048)
   for (long i = 0; i < n; ++i)
     partners<true>(boxes, g, s, keep, context, i, pairs.data() + s.count[i]);
 }
