@@ -7,7 +7,9 @@
 
 #include "engine_report.hpp"
 #include "output_dir.hpp"
+#include "rockfdem/coupling/atomic_file.hpp"
 #include "rockfdem/coupling/fdem_model.hpp"
+#include "rockfdem/fdem/bolt_output.hpp"
 #include "rockfdem/coupling/insitu_grid.hpp"
 #include "rockfdem/coupling/plot.hpp"
 
@@ -156,10 +158,53 @@ void RunOutputs::record_step(const fdem::Engine& e, const mesh::Mesh& m,
   timer.stamp("output");
 }
 
+void RunOutputs::bolt_outputs(const fdem::Engine& e, const fdem::BoltPlan& bolts) {
+  auto& j = summary_.json();
+  j["counts"]["bolts"] = bolts.specs.size();
+  if (bolts.specs.empty()) {
+    summary_.skipped("bolts: none in the scene");
+    return;
+  }
+  nlohmann::json list = nlohmann::json::array();
+  for (std::size_t b = 0; b < bolts.specs.size(); ++b) {
+    std::string csv = "position_m,steel_axial_stress_Pa,force_per_bolt_N,triangle\n";
+    double peak_stress = 0, peak_force = 0;
+    char line[160];
+    for (const fdem::BoltSample& p : fdem::bolt_axial_profile(e, bolts, int(b))) {
+      std::snprintf(line, sizeof line, "%.6g,%.8g,%.8g,%d\n", p.position, p.steel_stress,
+                    p.force_per_bolt, p.triangle);
+      csv += line;
+      if (std::abs(p.steel_stress) > std::abs(peak_stress)) peak_stress = p.steel_stress;
+      if (std::abs(p.force_per_bolt) > std::abs(peak_force)) peak_force = p.force_per_bolt;
+    }
+    char name[32];
+    std::snprintf(name, sizeof name, "bolt_%02zu.csv", b);
+    coupling::atomic_write_text(output_path(cli_.output_dir, name), csv);
+    const fdem::BoltCounts c = fdem::bolt_counts(e, bolts, int(b));
+    const fdem::Bolt& bolt = bolts.specs[b].bolt;
+    list.push_back({{"file", name},
+                    {"head", {bolt.a[0], bolt.a[1]}},
+                    {"end", {bolt.b[0], bolt.b[1]}},
+                    {"peak_axial_stress_Pa", peak_stress},
+                    {"peak_force_N", peak_force},
+                    {"yielding", c.yielding},
+                    {"broken", c.broken},
+                    {"grout_broken", c.grout_broken}});
+  }
+  const fdem::BoltCounts all = fdem::bolt_counts(e, bolts, -1);
+  j["bolts"] = {{"count", bolts.specs.size()},
+                {"steel_cracks_yielding", all.yielding},
+                {"steel_cracks_broken", all.broken},
+                {"grout_cracks_broken", all.grout_broken},
+                {"each", list}};
+}
+
 void RunOutputs::finish(const fdem::Engine& e, const mesh::Mesh& m,
-                        const std::vector<Monitor>& monitors, PhaseTimer& timer) {
+                        const std::vector<Monitor>& monitors, PhaseTimer& timer,
+                        const fdem::BoltPlan& bolts) {
   auto& j = summary_.json();
   report_engine(e, timer, summary_);
+  bolt_outputs(e, bolts);
   for (const Monitor& mon : monitors) {
     const auto u = displacement(e, mon);
     j["monitors"][mon.name] = {{"ux_mm", mm(u[0])}, {"uy_mm", mm(u[1])}, {"x", mon.x},

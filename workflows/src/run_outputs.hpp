@@ -10,6 +10,7 @@
 #include "monitors.hpp"
 #include "phase_timer.hpp"
 #include "rockfdem/coupling/vtk_writer.hpp"
+#include "rockfdem/fdem/bolt_install.hpp"
 #include "rockfdem/insitu/insitu.hpp"
 #include "rockfdem/workflows/cli.hpp"
 #include "rockfdem/workflows/scene.hpp"
@@ -30,10 +31,12 @@ class RunOutputs {
                    PhaseTimer& timer, const std::string& stage, double support_ratio);
   /// Counts, monitors, broken cracks, hash, plots, timings; writes summary.json.
   void finish(const fdem::Engine& e, const mesh::Mesh& m, const std::vector<Monitor>& monitors,
-              PhaseTimer& timer);
+              PhaseTimer& timer, const fdem::BoltPlan& bolts);
 
  private:
   void plots(const fdem::Engine& e, const mesh::Mesh& m);
+  /// bolt_NN.csv (axial stress and force along each bolt) and summary "bolts".
+  void bolt_outputs(const fdem::Engine& e, const fdem::BoltPlan& bolts);
   /// Monitor displacement from the in-situ state (implicit part + engine increment).
   std::array<double, 2> displacement(const fdem::Engine& e, const Monitor& mon) const;
   /// Closure between two monitors along the line joining them, positive inwards [m].

@@ -103,7 +103,12 @@ int run_tunnel(const Scene& scene, const CommandLine& cli) {
   timer.stamp("insitu");
 
   const insitu::InsituField& handoff = fields.back();
-  fdem::Engine engine(engine_input(scene, m, handoff));
+  fdem::ModelInput in = engine_input(scene, m, handoff);
+  const int grout = int(in.materials.size());
+  in.materials.push_back(grout_material(scene));
+  fdem::BoltPlan bolts;  // marks bolt triangles and allows fracture there
+  if (!scene.bolts.segments.empty()) bolts = fdem::plan_bolts(in, bolt_specs(scene));
+  fdem::Engine engine(in);
   for (std::size_t t = 0; t < m.n_triangles(); ++t)
     if (!handoff.active[t]) engine.set_active(t, false);
   engine.step();
@@ -115,7 +120,7 @@ int run_tunnel(const Scene& scene, const CommandLine& cli) {
   const std::vector<Monitor> monitors = tunnel_monitors(scene.mesh.tunnel, m, engine);
   out.begin_history(monitors, m);
   out.record_step(engine, m, monitors, timer, "handoff", handoff.alpha);
-  StageRunner stages(engine, m, handoff, scene, cli, out, monitors);
+  StageRunner stages(engine, m, handoff, scene, cli, out, monitors, bolts, grout);
   for (const StageSpec& stage : scene.stages) stages.run(stage, timer);
 
   if (!stages.core_present()) {
@@ -138,7 +143,7 @@ int run_tunnel(const Scene& scene, const CommandLine& cli) {
                             {"unbalanced_ratio_at_end", engine.unbalanced_force_ratio()},
                             {"handoff_alpha", handoff.alpha},
                             {"stages", stages.report()}};
-  out.finish(engine, m, monitors, timer);
+  out.finish(engine, m, monitors, timer, bolts);
   return 0;
 }
 

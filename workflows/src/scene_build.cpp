@@ -242,6 +242,75 @@ void read_insitu(const Reader& r, Scene& s) {
     r.fail("insitu.lining_active", "the model has no lining ring (tunnel.lining_thickness = 0)");
 }
 
+std::array<double, 2> point(const Reader& r, const std::string& path) {
+  const std::vector<double> v = r.numbers(path);
+  if (v.size() != 2) r.fail(path, "a point is [x, y]");
+  return {v[0], v[1]};
+}
+
+// Bolts from [[bolt]] segments and [[bolt_fan]] patterns; each must be a
+// real segment inside the rock domain.
+void read_bolts(const Reader& r, Scene& s) {
+  BoltSettings& b = s.bolts;
+  b.diameter = r.number("bolts.diameter");
+  b.row_spacing = r.number("bolts.row_spacing");
+  b.young = r.number("bolts.young");
+  b.yield_strength = r.number("bolts.yield_strength");
+  b.ultimate_strength = r.number("bolts.ultimate_strength");
+  b.tangent_modulus = r.number("bolts.tangent_modulus");
+  b.shear_yield_strength = r.number("bolts.shear_yield_strength");
+  b.shear_fracture_energy = r.number("bolts.shear_fracture_energy");
+  if (b.ultimate_strength < b.yield_strength)
+    r.fail("bolts.ultimate_strength", "must be at least bolts.yield_strength");
+  GroutSettings& g = s.grout;
+  g.young = r.number("grout.young");
+  g.tensile_strength = r.number("grout.tensile_strength");
+  g.cohesion = r.number("grout.cohesion");
+  g.friction_angle = r.number("grout.friction_angle");
+  g.fracture_energy_I = r.number("grout.fracture_energy_I");
+  g.fracture_energy_II = r.number("grout.fracture_energy_II");
+  std::vector<std::pair<std::string, std::array<double, 4>>> found;
+  if (const toml::node* list = r.node("bolt")) {
+    for (std::size_t i = 0; i < list->as_array()->size(); ++i) {
+      const std::string p = "bolt[" + std::to_string(i) + "]";
+      r.require(p + ".start", "a bolt needs its head");
+      r.require(p + ".end", "a bolt needs its end");
+      const auto a = point(r, p + ".start"), e = point(r, p + ".end");
+      found.push_back({p + ".end", {a[0], a[1], e[0], e[1]}});
+    }
+  }
+  if (const toml::node* list = r.node("bolt_fan")) {
+    for (std::size_t i = 0; i < list->as_array()->size(); ++i) {
+      const std::string p = "bolt_fan[" + std::to_string(i) + "]";
+      for (const char* k : {".radius", ".count", ".length"})
+        r.require(p + k, "a bolt fan needs radius, count and length");
+      const std::array<double, 2> c = r.has(p + ".centre") ? point(r, p + ".centre")
+                                                            : std::array<double, 2>{0, 0};
+      const int count = r.integer(p + ".count");
+      const double radius = r.number(p + ".radius"), length = r.number(p + ".length");
+      const double a0 = r.number_or(p + ".first_deg", 0), a1 = r.number_or(p + ".last_deg", 180);
+      for (int k = 0; k < count; ++k) {
+        const double deg = count == 1 ? a0 : a0 + (a1 - a0) * k / (count - 1);
+        const double cs = std::cos(deg * M_PI / 180), sn = std::sin(deg * M_PI / 180);
+        found.push_back({p + ".length", {c[0] + radius * cs, c[1] + radius * sn,
+                                         c[0] + (radius + length) * cs,
+                                         c[1] + (radius + length) * sn}});
+      }
+    }
+  }
+  const mesh::DomainSpec& d = s.mesh.domain;
+  for (const auto& [key, seg] : found) {
+    if (std::hypot(seg[2] - seg[0], seg[3] - seg[1]) <= 0) r.fail(key, "a bolt has zero length");
+    for (int k = 0; k < 4; k += 2)
+      if (std::abs(seg[k] - d.center_x) >= d.width / 2 ||
+          std::abs(seg[k + 1] - d.center_y) >= d.height / 2)
+        r.fail(key, "the bolt reaches outside the rock domain");
+    b.segments.push_back(seg);
+  }
+  if (!b.segments.empty() && s.mesh.kind != mesh::ModelKind::kTunnel)
+    r.fail("bolt", "bolts need a tunnel model");
+}
+
 // The explicit stages after the implicit hand-off. An "insitu" entry may
 // only open the list; a lining only exists with a lining ring; softening
 // only goes down, and only while the core is there.
@@ -249,12 +318,15 @@ void read_stages(const Reader& r, Scene& s) {
   const toml::node* list = r.node("stages");
   const bool lining = s.materials.count("lining") && s.mesh.kind == mesh::ModelKind::kTunnel &&
                       s.mesh.tunnel.lining_thickness > 0;
+  const bool bolts = !s.bolts.segments.empty();
   if (!list) {
-    if (lining) s.stages.push_back({"lining", 0, 0, 1e-3, 0, s.output.every_steps});
-    s.stages.push_back({"remove_core", 0, 0, 1e-3, 0, s.output.every_steps});
-    s.stages.push_back({"equilibrium", 0, s.engine.steps, 1e-3, 0, s.output.every_steps});
+    if (lining) s.stages.push_back({"lining", 0, 0, 1e-3, 0, s.output.every_steps, 0});
+    if (bolts) s.stages.push_back({"bolts", 0, 0, 1e-3, 0, s.output.every_steps, 0});
+    s.stages.push_back({"remove_core", 0, 0, 1e-3, 0, s.output.every_steps, 0});
+    s.stages.push_back({"equilibrium", 0, s.engine.steps, 1e-3, 0, s.output.every_steps, 0});
     return;
   }
+  bool bolted = false;
   if (s.mesh.kind != mesh::ModelKind::kTunnel && s.mesh.kind != mesh::ModelKind::kMshFile)
     r.fail("stages", "construction stages need a tunnel model");
   double alpha = s.insitu.alpha.back();
@@ -271,7 +343,13 @@ void read_stages(const Reader& r, Scene& s) {
     StageSpec st{kind, r.number_or(p + ".alpha", 0), long(r.number_or(p + ".max_steps",
                                                                      double(s.engine.steps))),
                  r.number_or(p + ".ratio", 1e-3), r.number_or(p + ".time", 0),
-                 int(r.number_or(p + ".every_steps", s.output.every_steps))};
+                 int(r.number_or(p + ".every_steps", s.output.every_steps)),
+                 long(r.number_or(p + ".trigger_broken", 0))};
+    if (kind == "bolts") {
+      if (!bolts) r.fail(p + ".kind", "the scene has no [[bolt]] or [[bolt_fan]]");
+      if (bolted) r.fail(p + ".kind", "the bolts are installed once");
+      bolted = true;
+    }
     if (kind == "soften") {
       r.require(p + ".alpha", "a soften stage needs its target alpha");
       if (!core) r.fail(p + ".kind", "the core is already removed (or alpha = 0)");
@@ -290,6 +368,8 @@ void read_stages(const Reader& r, Scene& s) {
     }
     s.stages.push_back(st);
   }
+  if (bolts && !bolted)
+    r.fail("stages", "the scene has bolts but no stage of kind \"bolts\" installs them");
 }
 
 mesh::ModelKind model_kind(const std::string& s) {
@@ -346,6 +426,7 @@ Scene build_scene(const RawScene& raw, const std::string& base_dir) {
   s.output.every_steps = r.integer("output.every_steps");
   s.output.vtk = r.boolean("output.vtk");
   s.output.plots = r.boolean("output.plots");
+  read_bolts(r, s);
   read_stages(r, s);
   std::ostringstream canonical;
   canonical << raw.root;

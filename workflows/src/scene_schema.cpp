@@ -218,6 +218,47 @@ std::vector<KeySpec> build_schema() {
   // [loading]
   s.push_back(positive("loading.platen_velocity", "m/s", "0.5",
                        "UCS and Brazilian tests: speed of each platen towards the other."));
+  // [bolts]: the steel and layout every bolt shares
+  s.push_back(positive("bolts.diameter", "m", "0.025", "Bolt diameter."));
+  s.push_back(positive("bolts.row_spacing", "m", "1", "Out-of-plane spacing of bolt rows s_b "
+                                                      "(stiffness and strength scale by 1/s_b)."));
+  s.push_back(positive("bolts.young", "Pa", "200e9", "Steel Young's modulus Eb."));
+  s.push_back(positive("bolts.yield_strength", "Pa", "400e6", "Steel yield strength."));
+  s.push_back(positive("bolts.ultimate_strength", "Pa", "500e6",
+                       "Steel ultimate strength (at least the yield strength)."));
+  s.push_back(positive("bolts.tangent_modulus", "Pa", "2e9", "Hardening modulus ET."));
+  s.push_back(positive("bolts.shear_yield_strength", "Pa", "240e6",
+                       "Steel shear strength (brittle in shear)."));
+  s.push_back(positive("bolts.shear_fracture_energy", "J/m^2", "1e4",
+                       "Steel shear fracture energy GfII."));
+  // [grout]: bolt-rock bond and the grouting of broken cracks
+  s.push_back(positive("grout.young", "Pa", "10e9", "Grout modulus (sets its crack penalty)."));
+  s.push_back(positive("grout.tensile_strength", "Pa", "1e6", "Grout tensile strength."));
+  s.push_back(positive("grout.cohesion", "Pa", "2e6", "Grout cohesion."));
+  s.push_back(number("grout.friction_angle", "deg", "30", 0, false, 90, true,
+                     "Grout friction angle."));
+  s.push_back(positive("grout.fracture_energy_I", "J/m^2", "20", "Grout mode I fracture energy."));
+  s.push_back(positive("grout.fracture_energy_II", "J/m^2", "100",
+                       "Grout mode II fracture energy."));
+  // [[bolt]] and [[bolt_fan]]
+  KeySpec point = number("bolt[].start", "m", "", -kInf, false, kInf, false,
+                         "Head of the bolt, [x, y] (on the excavation boundary).");
+  point.type = KeyType::kNumberArray;
+  s.push_back(point);
+  point.path = "bolt[].end";
+  point.description = "End of the bolt in the rock, [x, y].";
+  s.push_back(point);
+  point.path = "bolt_fan[].centre";
+  point.default_text = "[0.0, 0.0]";
+  point.description = "Centre of the circle the bolt heads lie on, [x, y].";
+  s.push_back(point);
+  s.push_back(positive("bolt_fan[].radius", "m", "", "Radius of the heads' circle."));
+  s.push_back(number("bolt_fan[].first_deg", "deg", "0", -360, false, 360, false,
+                     "Angle of the first bolt, counter-clockwise from +x."));
+  s.push_back(number("bolt_fan[].last_deg", "deg", "180", -360, false, 360, false,
+                     "Angle of the last bolt."));
+  s.push_back(integer("bolt_fan[].count", "", 1, 1000, "Number of bolts in the fan."));
+  s.push_back(positive("bolt_fan[].length", "m", "", "Bolt length."));
   // [contact]
   s.push_back(boolean("contact.enabled", "true",
                       "Penalty contact with friction between triangles on free surfaces and "
@@ -229,11 +270,13 @@ std::vector<KeySpec> build_schema() {
   s.push_back(boolean("contact.friction", "true",
                       "Coulomb friction with mu = tan(residual_friction_angle)."));
   // [[stages]]
-  s.push_back(choice("stages[].kind", "", {"insitu", "soften", "lining", "remove_core",
-                                           "equilibrium"},
+  s.push_back(choice("stages[].kind", "", {"insitu", "soften", "lining", "bolts", "remove_core",
+                                           "grout", "equilibrium"},
                      "Construction stage: `insitu` (the implicit stage, first if given), "
                      "`soften` (core to alpha, explicit), `lining` (install the lining ring "
-                     "stress-free), `remove_core`, `equilibrium`. Without [[stages]]: insitu, "
+                     "stress-free), `bolts` (install every bolt stress-free), `remove_core`, "
+                     "`grout` (re-join broken cracks with grout, once trigger_broken is "
+                     "reached), `equilibrium`. Without [[stages]]: insitu, "
                      "lining (if any), remove_core, equilibrium."));
   s.push_back(number("stages[].alpha", "-", "", 0, true, 1, false,
                      "soften: target core stiffness factor, below the implicit hand-off's."));
@@ -243,6 +286,9 @@ std::vector<KeySpec> build_schema() {
                      "Stop when the unbalanced-force ratio falls below this."));
   s.push_back(non_negative("stages[].time", "s", "0",
                            "Stop after this much simulated time in the stage; 0: no limit."));
+  s.push_back(integer("stages[].trigger_broken", "0", 0, 1e12,
+                      "grout: step until this many crack elements are broken, then grout; 0: "
+                      "at once."));
   s.push_back(integer("stages[].every_steps", "output.every_steps", 1, 1e9,
                       "Steps between outputs in this stage."));
   // [output]

@@ -38,6 +38,42 @@ std::map<int, fdem::Material> engine_materials(const Scene& s) {
   return out;
 }
 
+fdem::Material grout_material(const Scene& s) {
+  const GroutSettings& g = s.grout;
+  fdem::Material m;
+  m.density = s.materials.at("rock").density;
+  m.young = g.young;
+  m.poisson = 0.25;
+  m.tensile_strength = g.tensile_strength;
+  m.cohesion = g.cohesion;
+  m.friction_deg = m.residual_friction_deg = g.friction_angle;
+  m.gf_I = g.fracture_energy_I;
+  m.gf_II = g.fracture_energy_II;
+  m.damping_ratio = s.engine.damping_ratio;
+  return m;
+}
+
+std::vector<fdem::BoltSpec> bolt_specs(const Scene& s) {
+  const BoltSettings& b = s.bolts;
+  fdem::BoltSteel steel;
+  steel.young = b.young;
+  steel.yield_strength = b.yield_strength;
+  steel.ultimate_strength = b.ultimate_strength;
+  steel.tangent_modulus = b.tangent_modulus;
+  steel.shear_yield_strength = b.shear_yield_strength;
+  steel.gf_II = b.shear_fracture_energy;
+  std::vector<fdem::BoltSpec> specs;
+  for (const auto& seg : b.segments) {
+    fdem::BoltSpec spec;
+    spec.bolt = {{seg[0], seg[1]}, {seg[2], seg[3]}, b.diameter};
+    spec.row_spacing = b.row_spacing;
+    spec.steel = steel;
+    spec.grout = grout_material(s);
+    specs.push_back(spec);
+  }
+  return specs;
+}
+
 fdem::ContactSettings contact_settings(const Scene& s) {
   fdem::ContactSettings c;
   c.enabled = s.engine.contact;

@@ -3,6 +3,7 @@
 
 #include <map>
 
+#include "rockfdem/fdem/bolt_install.hpp"
 #include "rockfdem/fdem/model_input.hpp"
 #include "rockfdem/insitu/insitu.hpp"
 #include "rockfdem/workflows/scene.hpp"
@@ -13,6 +14,12 @@ insitu::InsituSpec insitu_spec(const Scene& scene);
 
 /// The engine's material for each zone present in the scene (rock, core, lining).
 std::map<int, fdem::Material> engine_materials(const Scene& scene);
+
+/// The grout as an engine material (rock law with the grout's strengths).
+fdem::Material grout_material(const Scene& scene);
+
+/// The scene's bolts as the engine's bolt records.
+std::vector<fdem::BoltSpec> bolt_specs(const Scene& scene);
 
 /// The scene's contact settings for the engine.
 fdem::ContactSettings contact_settings(const Scene& scene);

@@ -9,6 +9,7 @@
 
 #include "monitors.hpp"
 #include "phase_timer.hpp"
+#include "rockfdem/fdem/bolt_install.hpp"
 #include "rockfdem/fdem/engine.hpp"
 #include "rockfdem/insitu/insitu.hpp"
 #include "rockfdem/workflows/cli.hpp"
@@ -21,14 +22,20 @@ class StageRunner {
  public:
   StageRunner(fdem::Engine& engine, const mesh::Mesh& m, const insitu::InsituField& handoff,
               const Scene& scene, const CommandLine& cli, RunOutputs& out,
-              const std::vector<Monitor>& monitors);
+              const std::vector<Monitor>& monitors, fdem::BoltPlan& bolts, int grout_material);
   void run(const StageSpec& stage, PhaseTimer& timer);
   /// One entry per stage run: kind, steps, simulated time, final ratio, converged.
   const nlohmann::json& report() const { return report_; }
   bool core_present() const { return core_present_; }
 
  private:
-  void apply(const StageSpec& stage);
+  nlohmann::json apply(const StageSpec& stage);
+  /// grout: steps until `trigger` crack elements are broken (within the
+  /// stage's step cap), then re-joins the broken ones with grout.
+  nlohmann::json grout(const StageSpec& stage, PhaseTimer& timer);
+  /// Steps in output chunks until the stage's criterion; returns converged.
+  bool step_until(const StageSpec& stage, long first, double t0, PhaseTimer& timer,
+                  long broken_target);
   void set_zone(int zone, bool active, fdem::ActivationReference ref);
   /// Core stiffness factor relative to the full rock (0 once removed).
   double support_ratio() const { return core_present_ ? alpha_ : 0.0; }
@@ -39,6 +46,8 @@ class StageRunner {
   const CommandLine& cli_;
   RunOutputs& out_;
   const std::vector<Monitor>& monitors_;
+  fdem::BoltPlan& bolts_;
+  int grout_material_;
   double handoff_alpha_;
   double alpha_;
   bool core_present_;

@@ -4,6 +4,7 @@
 // the file, the key, the value and what is allowed.
 #pragma once
 
+#include <array>
 #include <map>
 #include <string>
 #include <vector>
@@ -60,6 +61,22 @@ struct StageSpec {
   double ratio = 1e-3;  ///< stop when the unbalanced-force ratio is below
   double time = 0;      ///< stop after this simulated time [s]; 0: no limit
   int every_steps = 1000;
+  long trigger_broken = 0;  ///< grout: broken crack elements that trigger grouting
+};
+
+/// Rockbolts (seed sec. 2.2): one steel and layout for all, each bolt a
+/// segment from its head on the excavation boundary into the rock.
+struct BoltSettings {
+  double diameter = 0.025, row_spacing = 1;
+  double young = 200e9, yield_strength = 400e6, ultimate_strength = 500e6;
+  double tangent_modulus = 2e9, shear_yield_strength = 240e6, shear_fracture_energy = 1e4;
+  std::vector<std::array<double, 4>> segments;  ///< (x0, y0, x1, y1) per bolt, fans expanded
+};
+
+/// Grout: the bolt-rock bond and what re-joins broken cracks when grouting.
+struct GroutSettings {
+  double young = 10e9, tensile_strength = 1e6, cohesion = 2e6, friction_angle = 30;
+  double fracture_energy_I = 20, fracture_energy_II = 100;
 };
 
 struct OutputSettings {
@@ -77,6 +94,8 @@ struct Scene {
   InsituSettings insitu;
   EngineSettings engine;
   std::vector<StageSpec> stages;  ///< explicit stages after the implicit one (tunnels)
+  BoltSettings bolts;
+  GroutSettings grout;
   OutputSettings output;
   std::string canonical;  ///< the validated scene as TOML (overrides applied), for hashing and records
 };
