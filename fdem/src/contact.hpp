@@ -40,7 +40,6 @@ struct ContactData {
   std::vector<double> friction, old_friction;         ///< 6 per pair: role x contactor edge
   std::vector<double> pair_force;                     ///< 12 per pair: A's corners, B's corners
   std::vector<int> gather_tri, gather_start, gather_entry;  ///< CSR triangle -> 2 pair + side
-  std::vector<std::uint8_t> pair_touching;
   GridScratch grid;
   bool dirty = true;           ///< re-detect before the next contact pass
   bool topology_dirty = true;  ///< candidates and components must be rebuilt

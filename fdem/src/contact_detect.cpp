@@ -250,7 +250,6 @@ void contact_detect(EngineData& d) {
     c.pairs[i] = {c.candidates[c.grid.found[i][0]], c.candidates[c.grid.found[i][1]]};
   carry_friction(c);
   c.pair_force.resize(12 * c.pairs.size());
-  c.pair_touching.resize(c.pairs.size());
   build_gather(d);
   c.watch_pos.resize(2 * c.watch_nodes.size());
   for (std::size_t i = 0; i < c.watch_nodes.size(); ++i) {

@@ -118,6 +118,21 @@ std::string Engine::state_hash() const {
 
 PhaseTimes Engine::phase_times() const { return impl_->times; }
 
+namespace {
+
+/// Contact arrays: per-triangle edge topology and per-node labels (when
+/// enabled), plus what the last detection holds.
+template <class Bytes>
+std::size_t contact_bytes(const detail::ContactData& c, Bytes b) {
+  return b(c.edge_nbr) + b(c.edge_crack) + b(c.component) + b(c.candidates) + b(c.boxes) +
+         b(c.watch_nodes) + b(c.watch_pos) + b(c.pairs) + b(c.old_pairs) + b(c.friction) +
+         b(c.old_friction) + b(c.pair_force) + b(c.gather_tri) + b(c.gather_start) +
+         b(c.gather_entry) + b(c.grid.cell) + b(c.grid.cell_start) +
+         b(c.grid.items) + b(c.grid.count) + b(c.grid.offset) + b(c.grid.found);
+}
+
+}  // namespace
+
 std::size_t Engine::memory_bytes() const {
   const auto& d = impl_->d;
   auto b = [](const auto& v) { return v.capacity() * sizeof(v[0]); };
@@ -128,7 +143,8 @@ std::size_t Engine::memory_bytes() const {
          b(n.vertex) + b(n.slot_start) + b(n.slot_index) + b(t.nodes) + b(t.ref_inv) + b(t.area0) +
          b(t.eta) + b(t.alpha) + b(t.sigma0) + b(t.material) + b(t.active) + b(c.nodes) + b(c.tri) +
          b(c.damage) + b(c.material) + b(c.state) + b(c.mode) + b(c.active) + b(c.broken_step) +
-         b(c.offset) + b(d.slots) + b(d.vertex_nodes) + b(d.vertex_node_start);
+         b(c.offset) + b(d.slots) + b(d.vertex_nodes) + b(d.vertex_node_start) +
+         contact_bytes(d.contact, b);
 }
 
 }  // namespace rockfdem::fdem
