@@ -213,3 +213,18 @@ TEST(Cli, elastic_tunnel_wall_displacement_matches_kirsch) {
   EXPECT_TRUE(fs::exists(out / "fdem_vs_continuum.csv"));
   fs::remove_all(out);
 }
+
+// A scene whose only stage is the implicit one: `run` skips the explicit
+// engine, says so, and still reports the Kirsch comparison (open hole).
+TEST(Cli, elastic_only_scene_skips_the_engine) {
+  const fs::path out = scratch("elastic-only");
+  const Result r = run("run " + kTestDir + "/elastic_only.toml -q -o " + out.string());
+  ASSERT_EQ(r.code, 0) << r.output;
+  std::ifstream in(out / "summary.json");
+  const nlohmann::json j = nlohmann::json::parse(in);
+  EXPECT_EQ(j["steps"].get<long>(), 0);
+  EXPECT_NE(j["skipped"].dump().find("fdem"), std::string::npos) << j["skipped"].dump();
+  EXPECT_LT(j["insitu"]["kirsch_rel_l2"].get<double>(), 0.05);
+  EXPECT_FALSE(fs::exists(out / "fdem.pvd"));
+  fs::remove_all(out);
+}

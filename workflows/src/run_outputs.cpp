@@ -7,6 +7,7 @@
 
 #include "engine_report.hpp"
 #include "output_dir.hpp"
+#include "stage_inputs.hpp"
 #include "rockfdem/coupling/atomic_file.hpp"
 #include "rockfdem/coupling/fdem_model.hpp"
 #include "rockfdem/fdem/bolt_output.hpp"
@@ -107,6 +108,9 @@ void RunOutputs::record_insitu(const mesh::Mesh& m, const std::vector<insitu::In
   }
   coupling::write_vtu(coupling::insitu_grid(m, fields.back()),
                       output_path(cli_.output_dir, "insitu.vtu"));
+  insitu::KirschCase k;
+  if (kirsch_case(scene_, &k) && fields.back().alpha == 0.0)
+    j["kirsch_rel_l2"] = insitu::compare_kirsch(m, fields.back(), k).stress_rel_l2;
 }
 
 void RunOutputs::begin_history(const std::vector<Monitor>& monitors, const mesh::Mesh& m) {

@@ -102,6 +102,14 @@ int run_tunnel(const Scene& scene, const CommandLine& cli) {
   out.record_insitu(m, fields);
   timer.stamp("insitu");
 
+  if (scene.stages.empty()) {
+    // [[stages]] holds only "insitu": the scene asks for the elastic
+    // implicit results alone.
+    summary.skipped("fdem: the scene's only stage is the implicit in-situ stage");
+    summary.set_timings(timer);
+    summary.write(output_path(cli.output_dir, "summary.json"));
+    return 0;
+  }
   const insitu::InsituField& handoff = fields.back();
   fdem::ModelInput in = engine_input(scene, m, handoff);
   const int grout = int(in.materials.size());
