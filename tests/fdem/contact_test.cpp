@@ -309,5 +309,61 @@ TEST(Contact, intact_body_has_no_pairs) {
   EXPECT_EQ(c.steps_skipped, 100);
 }
 
+// Excavation: removing the core (set_active false) makes the ring around
+// it a free surface. Candidates = active triangles with an edge on the
+// outline or next to an inactive triangle, counted here independently from
+// the mesh; the solid (shared-node) ring has no pairs.
+TEST(Contact, excavation_boundary_becomes_a_free_surface) {
+  RectangleSpec spec;
+  spec.width = spec.height = 1.0;
+  spec.nx = spec.ny = 8;
+  spec.fracture = false;
+  ModelInput in = structured_rectangle(spec, test::rock());
+  in.contact = contact_on();
+  in.threads = 1;
+  Engine e(in);
+  std::vector<char> core(in.triangles.size(), 0);
+  for (std::size_t t = 0; t < in.triangles.size(); ++t) {
+    double cx = 0, cy = 0;
+    for (int v : in.triangles[t]) {
+      cx += in.x[v] / 3;
+      cy += in.y[v] / 3;
+    }
+    core[t] = std::fabs(cx - 0.5) < 0.25 && std::fabs(cy - 0.5) < 0.25;
+  }
+  // Expected candidates: active triangles with an edge that no other active
+  // triangle shares.
+  auto expected_candidates = [&] {
+    long n = 0;
+    for (std::size_t t = 0; t < in.triangles.size(); ++t) {
+      if (core[t]) continue;
+      bool free_edge = false;
+      for (int k = 0; k < 3; ++k) {
+        const int a = in.triangles[t][k], b = in.triangles[t][(k + 1) % 3];
+        bool shared = false;
+        for (std::size_t u = 0; u < in.triangles.size(); ++u) {
+          if (u == t || core[u]) continue;
+          int hits = 0;
+          for (int v : in.triangles[u]) hits += v == a || v == b;
+          shared = shared || hits == 2;
+        }
+        free_edge = free_edge || !shared;
+      }
+      n += free_edge;
+    }
+    return n;
+  };
+  e.step();
+  const long outline = e.contact_counters().candidates;
+  for (std::size_t t = 0; t < in.triangles.size(); ++t)
+    if (core[t]) e.set_active(t, false);
+  e.step();
+  const ContactCounters c = e.contact_counters();
+  EXPECT_EQ(c.candidates, expected_candidates());
+  EXPECT_GT(c.candidates, outline);
+  EXPECT_EQ(c.pairs, 0);
+  EXPECT_EQ(c.detections, 2);
+}
+
 }  // namespace
 }  // namespace rockfdem::fdem
