@@ -124,8 +124,10 @@ Engine::Engine(const ModelInput& in) : impl_(std::make_unique<Impl>()) {
   detail::resolve_edges(in, d);
   detail::apply_boundary_conditions(in.boundary_conditions, d);
   // Crack elements start carrying the initial stress (the in-situ hand-off
-  // must start in equilibrium with or without a fracture zone).
-  impl_->prestress_clipped = detail::prestress_cracks(d);
+  // must start in equilibrium with or without a fracture zone). Done before
+  // the first step, so that triangles deactivated, stresses replaced or
+  // boundary conditions changed after construction are accounted for.
+  impl_->prestress_pending = !in.initial_stress.empty();
   if (in.contact.enabled) set_contact(in.contact);
   impl_->dt_safety = in.dt_safety;
   if (in.dt > 0) set_dt(in.dt);
@@ -208,6 +210,10 @@ void Engine::step() {
     throw InputError("fdem: after a stage change the stability limit is " +
                      fmt(impl_->critical_dt) + " s, below the dt = " + fmt(d.dt) +
                      " s set earlier; set a smaller dt (or force it)");
+  if (impl_->prestress_pending) {
+    impl_->prestress_clipped = detail::prestress_cracks(d);
+    impl_->prestress_pending = false;
+  }
   const double t0 = omp_get_wtime();
   const long bad_tri = detail::triangle_forces(d);
   const double t1 = omp_get_wtime();

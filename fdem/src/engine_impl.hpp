@@ -16,6 +16,7 @@ struct Engine::Impl {
   bool auto_dt = true;      ///< dt follows dt_safety * critical_dt
   bool forced_dt = false;   ///< an explicit dt above the limit was forced
   int reversals = 0;
+  bool prestress_pending = false;  ///< crack pre-stress is set before the first step
   long prestress_clipped = 0;  ///< crack points whose initial traction exceeded the strength        ///< consecutive steps with growing velocity reversal
   void refresh();
 };

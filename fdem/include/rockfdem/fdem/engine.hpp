@@ -180,8 +180,10 @@ class Engine {
   CrackState crack_state(std::size_t c) const;
   FailureMode crack_mode(std::size_t c) const;
   /// Crack integration points whose share of the initial stress reached
-  /// the crack's strength at construction: they start at the peak and carry
-  /// the strength, not the demand (0 when the start is fully balanced).
+  /// the crack's strength: they start at the peak and carry the strength,
+  /// not the demand (0 when the start is fully balanced). The crack
+  /// pre-stress is set just before the first step, with the activity,
+  /// initial stresses and boundary conditions of that moment.
   long crack_prestress_clipped() const;
   /// Step at which the element broke; -1 while unbroken.
   long crack_broken_step(std::size_t c) const;
