@@ -55,10 +55,6 @@ void contact_setup(EngineData& d);
 /// whose nodes an intact chain of crack elements joins), grid pairs.
 void contact_detect(EngineData& d);
 
-/// The pairs contact_detect would find, by testing every candidate pair
-/// (tests). Uses and overwrites the detection's candidates and boxes.
-std::vector<std::array<int, 2>> contact_pairs_brute_force(EngineData& d);
-
 /// One step of contact; see the header comment.
 void contact_forces(EngineData& d);
 

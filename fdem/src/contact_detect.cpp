@@ -260,16 +260,6 @@ void contact_detect(EngineData& d) {
   ++c.detections;
 }
 
-std::vector<std::array<int, 2>> contact_pairs_brute_force(EngineData& d) {
-  ContactData& c = d.contact;
-  build_candidates(d);
-  build_boxes(d);
-  std::vector<std::array<int, 2>> found, pairs;
-  brute_force_pairs(c.boxes, may_touch, &d, found);
-  for (const auto& f : found) pairs.push_back({c.candidates[f[0]], c.candidates[f[1]]});
-  return pairs;
-}
-
 double contact_omega2(const EngineData& d) {
   double min_rho_h2 = 1e300;
   const double* p = d.nodes.mesh_pos.data();
