@@ -11,4 +11,10 @@ namespace rockfdem::mesh::detail {
 /// binary files or when the file has no readable $Nodes header.
 std::optional<std::size_t> declared_node_count(const std::string& path);
 
+/// In an ASCII .msh, the first number in an $Elements or $Periodic section
+/// that is negative or above 2147483647, as "line N: 'TEXT'"; nullopt when
+/// there is none (or the file is binary). gmsh 4.8 looks node tags up as
+/// int, so such a number crashes its reader (found by tests/fuzz/fuzz_msh).
+std::optional<std::string> tag_out_of_int_range(const std::string& path);
+
 }  // namespace rockfdem::mesh::detail

@@ -33,6 +33,9 @@ struct Reader {
   void open() const {
     if (!std::ifstream(spec.path).good())
       fail("cannot open the file; give the path of a readable gmsh .msh file");
+    if (const auto bad = detail::tag_out_of_int_range(spec.path))
+      fail(*bad + " is not a node, element or entity tag gmsh can read; tags in $Elements "
+           "and $Periodic must be integers from 0 to 2147483647");
     detail::gmsh_guarded(spec.path + ": not a readable gmsh mesh", detail::GmshFailure::kInput,
                          [&] { gmsh::open(spec.path); });
     std::string last;

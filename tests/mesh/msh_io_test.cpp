@@ -169,6 +169,25 @@ TEST(MshUserFile, triangle_outside_every_zone_group_is_refused) {
                  "none of the zone groups");
 }
 
+// Found by tests/fuzz/fuzz_msh: gmsh 4.8's MSH 4 reader looks node tags up
+// as int, so an element naming node 180000000000001 or -7 crashed it (SEGV in
+// GModel::getMeshVertexByTag / gmsh::model::mesh::getElements). Such files
+// are now refused before gmsh reads them.
+std::string msh4_triangle(const std::string& third_node) {
+  return "$MeshFormat\n4.1 0 8\n$EndMeshFormat\n$Nodes\n1 3 1 3\n2 1 0 3\n1\n2\n3\n"
+         "0 0 0\n1 0 0\n0 1 0\n$EndNodes\n$Elements\n1 1 1 1\n2 1 2 1\n1 1 2 " +
+         third_node + "\n$EndElements\n";
+}
+
+TEST(MshUserFile, node_tag_beyond_int_is_refused) {
+  expect_refused("rockfdem_bigtag.msh", msh4_triangle("180000000000001"),
+                 "line 17: '180000000000001'");
+}
+
+TEST(MshUserFile, negative_node_tag_is_refused) {
+  expect_refused("rockfdem_negtag.msh", msh4_triangle("-7"), "from 0 to 2147483647");
+}
+
 TEST(MshUserFile, missing_file_is_refused) {
   MshFileSpec spec = kGroups;
   spec.path = temp_path("rockfdem_no_such_file.msh");
