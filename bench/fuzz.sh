@@ -64,5 +64,5 @@ for d in "${drivers[@]}"; do
        "findings $(ls "$findings" | wc -l) (log: $log)"
   [ $rc -eq 0 ] || status=1
 done
-echo "command: bash bench/fuzz.sh $seconds ${drivers[*]}  ($(date -u +%Y-%m-%d), $(nproc) cores)"
+echo "command: bash bench/fuzz.sh $seconds ${drivers[*]}  ($(date -u +%Y-%m-%d), $(nproc --all) cores)"
 exit $status

@@ -31,5 +31,5 @@ rc=${PIPESTATUS[0]}
 set -e
 done_at=$(date +%s)
 echo "sanitize.sh: build $((built - start)) s, tests $((done_at - built)) s, ctest exit $rc" \
-     "($(date -u +%Y-%m-%d), $(nproc) cores)"
+     "($(date -u +%Y-%m-%d), $(nproc --all) cores)"
 exit "$rc"
