@@ -127,3 +127,14 @@ TEST(Scene, every_schema_key_has_unit_and_description) {
     EXPECT_FALSE(k.description.empty()) << k.path;
   }
 }
+
+// --set reaches into arrays of tables ("stages[2].max_steps"), and an index
+// the scene does not have is an error, not a silently ignored key.
+TEST(Scene, override_reaches_array_of_tables) {
+  const std::string seed = std::string(ROCKFDEM_SOURCE_DIR) + "/scenes/tunnel-seed.toml";
+  const Scene s = load_scene(seed, {"stages[5].max_steps=123"});
+  EXPECT_EQ(s.stages.back().kind, "equilibrium");
+  EXPECT_EQ(s.stages.back().max_steps, 123);
+  const std::string msg = error_of([&] { load_scene(seed, {"stages[9].max_steps=5"}); });
+  EXPECT_NE(msg.find("stages[9]"), std::string::npos) << msg;
+}

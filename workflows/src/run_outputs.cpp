@@ -154,12 +154,25 @@ void RunOutputs::record_step(const fdem::Engine& e, const mesh::Mesh& m,
   if (scene_.output.vtk) {
     char name[32];
     std::snprintf(name, sizeof name, "fdem_%04d.vtu", frame_++);
-    coupling::write_vtu(coupling::fdem_grid(e, m, fields_.empty() ? nullptr : &fields_.back()),
-                        output_path(cli_.output_dir, name));
+    coupling::write_vtu(frame_grid(e, m), output_path(cli_.output_dir, name));
     pvd_.add(e.time(), name);
     pvd_.write();
   }
   timer.stamp("output");
+}
+
+coupling::VtkGrid RunOutputs::frame_grid(const fdem::Engine& e, const mesh::Mesh& m) const {
+  coupling::VtkGrid g = coupling::fdem_grid(e, m, fields_.empty() ? nullptr : &fields_.back());
+  if (!bolts_ || bolts_->specs.empty()) return g;
+  std::vector<double> stress(e.n_triangles(), std::nan(""));
+  for (std::size_t b = 0; b < bolts_->specs.size(); ++b) {
+    if (!bolts_->installed[b]) continue;
+    for (const fdem::BoltSample& p : fdem::bolt_axial_profile(e, *bolts_, int(b)))
+      stress[p.triangle] = p.steel_stress;
+  }
+  g.cell_arrays.push_back(
+      coupling::triangle_cell_array(g, coupling::scalar_array("bolt_axial_stress", std::move(stress))));
+  return g;
 }
 
 void RunOutputs::bolt_outputs(const fdem::Engine& e, const fdem::BoltPlan& bolts) {

@@ -26,6 +26,8 @@ class RunOutputs {
   /// Starts history.csv; `m`'s outer boundary defines the rigid translation
   /// removed from reported displacements.
   void begin_history(const std::vector<Monitor>& monitors, const mesh::Mesh& m);
+  /// Bolts whose axial stress the ParaView frames carry (once installed).
+  void set_bolts(const fdem::BoltPlan* bolts) { bolts_ = bolts; }
   /// One history row and (if enabled) one ParaView frame.
   void record_step(const fdem::Engine& e, const mesh::Mesh& m, const std::vector<Monitor>& monitors,
                    PhaseTimer& timer, const std::string& stage, double support_ratio);
@@ -35,6 +37,9 @@ class RunOutputs {
 
  private:
   void plots(const fdem::Engine& e, const mesh::Mesh& m);
+  /// The engine grid plus, with bolts installed, "bolt_axial_stress" (steel
+  /// stress along the axis per bolt triangle, NaN elsewhere).
+  coupling::VtkGrid frame_grid(const fdem::Engine& e, const mesh::Mesh& m) const;
   /// bolt_NN.csv (axial stress and force along each bolt) and summary "bolts".
   void bolt_outputs(const fdem::Engine& e, const fdem::BoltPlan& bolts);
   /// Monitor displacement from the in-situ state (implicit part + engine increment).
@@ -49,6 +54,7 @@ class RunOutputs {
   std::unique_ptr<History> history_;
   coupling::PvdCollection pvd_;
   int frame_ = 0;
+  const fdem::BoltPlan* bolts_ = nullptr;
   std::vector<int> boundary_vertices_;  ///< outer boundary, for the rigid translation
   std::vector<std::string> stage_names_;
   double fdem_seconds_at_start_ = 0;

@@ -127,6 +127,7 @@ int run_tunnel(const Scene& scene, const CommandLine& cli) {
 
   const std::vector<Monitor> monitors = tunnel_monitors(scene.mesh.tunnel, m, engine);
   out.begin_history(monitors, m);
+  out.set_bolts(&bolts);
   out.record_step(engine, m, monitors, timer, "handoff", handoff.alpha);
   StageRunner stages(engine, m, handoff, scene, cli, out, monitors, bolts, grout);
   for (const StageSpec& stage : scene.stages) stages.run(stage, timer);

@@ -46,6 +46,26 @@ toml::table parse_override_value(const std::string& key, const std::string& valu
   }
 }
 
+// One step down a --set path: "name" is a table (made if missing),
+// "name[i]" the i-th table of an existing array of tables.
+toml::table* descend(const RawScene& scene, const std::string& text, toml::table& table,
+                     const std::string& part) {
+  const auto bracket = part.find('[');
+  if (bracket == std::string::npos) {
+    auto [it, inserted] = table.insert(part, toml::table{});
+    (void)inserted;
+    if (toml::table* t = it->second.as_table()) return t;
+    fail(scene.source + ": --set " + text + ": '" + part + "' is not a table");
+  }
+  const std::string name = part.substr(0, bracket);
+  const std::size_t index = std::stoul(part.substr(bracket + 1));
+  toml::array* list = table[name].as_array();
+  if (!list || index >= list->size() || !(*list)[index].is_table())
+    fail(scene.source + ": --set " + text + ": the scene has no " + part + " (" +
+         std::to_string(list ? list->size() : 0) + " entries of [[" + name + "]])");
+  return (*list)[index].as_table();
+}
+
 void apply_override(RawScene& scene, const std::string& text) {
   const auto eq = text.find('=');
   if (eq == std::string::npos || eq == 0)
@@ -60,10 +80,7 @@ void apply_override(RawScene& scene, const std::string& text) {
   std::size_t start = 0;
   for (auto dot = path.find('.'); dot != std::string::npos; dot = path.find('.', start)) {
     const std::string part = path.substr(start, dot - start);
-    auto [it, inserted] = table->insert(part, toml::table{});
-    (void)inserted;
-    table = it->second.as_table();
-    if (!table) fail(scene.source + ": --set " + text + ": '" + part + "' is not a table");
+    table = descend(scene, text, *table, part);
     start = dot + 1;
   }
   table->insert_or_assign(path.substr(start), std::move(*parsed.get("v")));

@@ -287,8 +287,8 @@ std::vector<KeySpec> build_schema() {
   s.push_back(non_negative("stages[].time", "s", "0",
                            "Stop after this much simulated time in the stage; 0: no limit."));
   s.push_back(integer("stages[].trigger_broken", "0", 0, 1e12,
-                      "grout: step until this many crack elements are broken, then grout; 0: "
-                      "at once."));
+                      "grout: step until this many crack elements are broken (or the stage's "
+                      "time has passed), then grout; 0: at once."));
   s.push_back(integer("stages[].every_steps", "output.every_steps", 1, 1e9,
                       "Steps between outputs in this stage."));
   // [output]

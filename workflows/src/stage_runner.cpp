@@ -76,8 +76,12 @@ nlohmann::json StageRunner::grout(const StageSpec& stage, PhaseTimer& timer) {
   const long first = engine_.step_count();
   bool triggered = stage.trigger_broken == 0 ||
                    engine_.broken_counts().total() >= stage.trigger_broken;
-  if (!triggered)
-    triggered = step_until(stage, first, engine_.time(), timer, stage.trigger_broken);
+  // Triggered by the broken count, or by the stage's time when one is given.
+  if (!triggered) {
+    const double t0 = engine_.time();
+    triggered = step_until(stage, first, t0, timer, stage.trigger_broken) ||
+                (stage.time > 0 && engine_.time() - t0 >= stage.time);
+  }
   nlohmann::json done = {{"triggered", triggered},
                          {"broken_before", engine_.broken_counts().total()}};
   if (!triggered) return done;
