@@ -16,7 +16,10 @@ build=${ROCKFDEM_ASAN_BUILD:-$root/build-asan}
 jobs=${JOBS:-2}
 
 # Also during the build: gtest_discover_tests runs each test binary.
-export ASAN_OPTIONS=${ASAN_OPTIONS:-detect_leaks=1:halt_on_error=1:abort_on_error=0:strict_string_checks=1:detect_stack_use_after_return=1:check_initialization_order=1}
+# fast_unwind_on_malloc=0: OpenMPI, Trilinos and gmsh are built without frame
+# pointers, so the fast unwinder stops at "<unknown module>" and their leak
+# reports could not be matched by tests/lsan.supp.
+export ASAN_OPTIONS=${ASAN_OPTIONS:-detect_leaks=1:fast_unwind_on_malloc=0:halt_on_error=1:abort_on_error=0:strict_string_checks=1:detect_stack_use_after_return=1:check_initialization_order=1}
 export LSAN_OPTIONS=${LSAN_OPTIONS:-suppressions=$root/tests/lsan.supp:print_suppressions=0}
 export UBSAN_OPTIONS=${UBSAN_OPTIONS:-print_stacktrace=1:halt_on_error=1}
 export OMP_NUM_THREADS=${OMP_NUM_THREADS:-2}

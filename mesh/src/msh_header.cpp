@@ -35,6 +35,13 @@ std::optional<std::size_t> declared_node_count(const std::string& path) {
   return std::nullopt;
 }
 
+bool starts_as_msh(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::string line;
+  if (!std::getline(in, line)) return false;
+  return line.rfind("$MeshFormat", 0) == 0 || line.rfind("$NOD", 0) == 0;
+}
+
 std::optional<std::string> tag_out_of_int_range(const std::string& path) {
   std::ifstream in(path);
   std::string line, token;

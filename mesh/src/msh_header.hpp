@@ -11,6 +11,12 @@ namespace rockfdem::mesh::detail {
 /// binary files or when the file has no readable $Nodes header.
 std::optional<std::size_t> declared_node_count(const std::string& path);
 
+/// Whether the file starts as a gmsh mesh file does ("$MeshFormat", or
+/// "$NOD" for MSH 1). gmsh::open reads any other text as a .geo script,
+/// which can run shell commands (SystemCall): such files must never reach
+/// it (found by tests/fuzz/fuzz_msh).
+bool starts_as_msh(const std::string& path);
+
 /// In an ASCII .msh, the first number in an $Elements or $Periodic section
 /// that is negative or above 2147483647, as "line N: 'TEXT'"; nullopt when
 /// there is none (or the file is binary). gmsh 4.8 looks node tags up as

@@ -33,6 +33,9 @@ struct Reader {
   void open() const {
     if (!std::ifstream(spec.path).good())
       fail("cannot open the file; give the path of a readable gmsh .msh file");
+    if (!detail::starts_as_msh(spec.path))
+      fail("does not start with $MeshFormat (or $NOD); give a gmsh .msh mesh file (gmsh "
+           "reads other text as a .geo script, which is never run here)");
     if (const auto bad = detail::tag_out_of_int_range(spec.path))
       fail(*bad + " is not a node, element or entity tag gmsh can read; tags in $Elements "
            "and $Periodic must be integers from 0 to 2147483647");

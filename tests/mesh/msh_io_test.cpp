@@ -3,6 +3,7 @@
 // InputError that names the file.
 #include <gtest/gtest.h>
 
+#include <cstdio>
 #include <fstream>
 #include <iostream>
 #include <set>
@@ -186,6 +187,17 @@ TEST(MshUserFile, node_tag_beyond_int_is_refused) {
 
 TEST(MshUserFile, negative_node_tag_is_refused) {
   expect_refused("rockfdem_negtag.msh", msh4_triangle("-7"), "from 0 to 2147483647");
+}
+
+// Found by tests/fuzz/fuzz_msh: gmsh::open reads a file that does not start
+// as a mesh as a .geo script, and a script can run shell commands. Such a
+// file is refused before gmsh sees it, and its command never runs.
+TEST(MshUserFile, geo_script_is_refused_and_never_run) {
+  const std::string marker = temp_path("rockfdem_systemcall_ran");
+  std::remove(marker.c_str());
+  expect_refused("rockfdem_script.msh", "SystemCall \"touch " + marker + "\";\n",
+                 "does not start with $MeshFormat");
+  EXPECT_FALSE(std::ifstream(marker).good()) << "the script's command ran";
 }
 
 TEST(MshUserFile, missing_file_is_refused) {
