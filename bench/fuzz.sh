@@ -58,9 +58,11 @@ for d in "${drivers[@]}"; do
   log=$build/$d.log
   echo "== $d: ${seconds} s, seeds $(ls "$seeds" | wc -l), corpus before $(ls "$corpus" | wc -l)"
   set +e
-  "$build/bin/$d" "$corpus" "$seeds" -dict="$dict" -max_total_time="$seconds" \
+  # From inside the build folder: fork mode writes fuzz-N.log files to the
+  # working directory.
+  (cd "$build" && "$build/bin/$d" "$corpus" "$seeds" -dict="$dict" -max_total_time="$seconds" \
     -timeout=20 -rss_limit_mb=4096 -max_len=65536 -print_final_stats=1 \
-    -artifact_prefix="$findings/" "${extra[@]}" >"$log" 2>&1
+    -artifact_prefix="$findings/" "${extra[@]}") >"$log" 2>&1
   rc=$?
   set -e
   # One process: libFuzzer's final stats; fork mode: its last "#N: cov: ..." line.
