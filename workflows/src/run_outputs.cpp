@@ -61,27 +61,35 @@ coupling::VtkGrid broken_crack_grid(const fdem::Engine& e, const mesh::Mesh& m,
 
 }  // namespace
 
+std::array<double, 2> RunOutputs::boundary_translation(const fdem::Engine& e) const {
+  if (boundary_vertices_.empty()) return {0, 0};
+  // Every monitor of a step needs the same mean: compute it once per step.
+  if (translation_step_ == e.step_count()) return translation_;
+  std::array<double, 2> mean{0, 0};
+  const std::vector<int>& vertex = e.node_vertex();
+  std::size_t n = 0;
+  for (std::size_t node = 0; node < e.n_nodes(); ++node) {
+    if (!std::binary_search(boundary_vertices_.begin(), boundary_vertices_.end(), vertex[node]))
+      continue;
+    const auto d = e.displacement(node);
+    mean[0] += d[0];
+    mean[1] += d[1];
+    ++n;
+  }
+  translation_ = {mean[0] / double(n), mean[1] / double(n)};
+  translation_step_ = e.step_count();
+  return translation_;
+}
+
 std::array<double, 2> RunOutputs::displacement(const fdem::Engine& e, const Monitor& mon) const {
   static const std::vector<double> none;
   std::array<double, 2> u = monitor_displacement(e, mon, fields_.empty() ? none : fields_.back().ux,
                                                  fields_.empty() ? none : fields_.back().uy);
   // Remove the engine's mean translation of the outer boundary (the
   // implicit part already has its rigid motion removed).
-  if (!boundary_vertices_.empty()) {
-    std::array<double, 2> mean{0, 0};
-    const std::vector<int>& vertex = e.node_vertex();
-    std::size_t n = 0;
-    for (std::size_t node = 0; node < e.n_nodes(); ++node) {
-      if (!std::binary_search(boundary_vertices_.begin(), boundary_vertices_.end(), vertex[node]))
-        continue;
-      const auto d = e.displacement(node);
-      mean[0] += d[0];
-      mean[1] += d[1];
-      ++n;
-    }
-    u[0] -= mean[0] / double(n);
-    u[1] -= mean[1] / double(n);
-  }
+  const std::array<double, 2> shift = boundary_translation(e);
+  u[0] -= shift[0];
+  u[1] -= shift[1];
   return u;
 }
 

@@ -42,6 +42,8 @@ class RunOutputs {
   coupling::VtkGrid frame_grid(const fdem::Engine& e, const mesh::Mesh& m) const;
   /// bolt_NN.csv (axial stress and force along each bolt) and summary "bolts".
   void bolt_outputs(const fdem::Engine& e, const fdem::BoltPlan& bolts);
+  /// Mean engine displacement of the outer boundary (the rigid translation).
+  std::array<double, 2> boundary_translation(const fdem::Engine& e) const;
   /// Monitor displacement from the in-situ state (implicit part + engine increment).
   std::array<double, 2> displacement(const fdem::Engine& e, const Monitor& mon) const;
   /// Closure between two monitors along the line joining them, positive inwards [m].
@@ -56,6 +58,8 @@ class RunOutputs {
   int frame_ = 0;
   const fdem::BoltPlan* bolts_ = nullptr;
   std::vector<int> boundary_vertices_;  ///< outer boundary, for the rigid translation
+  mutable long translation_step_ = -1;   ///< step the cached translation belongs to
+  mutable std::array<double, 2> translation_{0, 0};
   std::vector<std::string> stage_names_;
   double fdem_seconds_at_start_ = 0;
 };
