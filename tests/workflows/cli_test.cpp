@@ -9,38 +9,16 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 
+#include "cli_runner.hpp"
 #include "rockfdem/workflows/cli.hpp"
 #include "rockfdem/error.hpp"
 
 namespace fs = std::filesystem;
 
-namespace {
-
-struct Result {
-  int code = -1;
-  std::string output;
-};
-
-Result run(const std::string& args) {
-  Result r;
-  const std::string cmd = std::string(ROCKFDEM_BINARY) + " " + args + " 2>&1";
-  FILE* pipe = popen(cmd.c_str(), "r");
-  std::array<char, 4096> buf{};
-  while (std::fgets(buf.data(), buf.size(), pipe)) r.output += buf.data();
-  const int status = pclose(pipe);
-  r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  return r;
-}
-
-fs::path scratch(const std::string& name) {
-  fs::path p = fs::temp_directory_path() / ("rockfdem-cli-" + name + "-" + std::to_string(getpid()));
-  fs::remove_all(p);
-  return p;
-}
-
-const std::string kTestDir = ROCKFDEM_TEST_DIR;
-
-}  // namespace
+using rockfdem::test::kTestDir;
+using rockfdem::test::Result;
+using rockfdem::test::run;
+using rockfdem::test::scratch;
 
 TEST(Cli, help_and_version_exit_zero) {
   EXPECT_EQ(run("--help").code, 0);
@@ -90,6 +68,24 @@ TEST(Cli, check_prints_estimates_and_writes_nothing) {
   EXPECT_EQ(r.code, 0) << r.output;
   EXPECT_NE(r.output.find("triangles (estimate)"), std::string::npos) << r.output;
   EXPECT_NE(r.output.find("stable time step"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("run time (estimate)"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("peak memory (estimate)"), std::string::npos) << r.output;
+}
+
+// A mesh far beyond any machine's memory (1 mm triangles over the whole
+// domain: billions) is refused by check and by run before meshing: exit 2,
+// naming the key, and no output directory.
+TEST(Cli, scene_larger_than_the_machine_is_refused_before_meshing) {
+  const fs::path out = scratch("too-large");
+  for (const char* cmd : {"check", "run"}) {
+    const Result r = run(std::string(cmd) + " " + kTestDir +
+                         "/good_circular.toml --set mesh.size_near=0.001 --set "
+                         "mesh.size_far=0.001 -o " + out.string());
+    EXPECT_EQ(r.code, 2) << r.output;
+    EXPECT_NE(r.output.find("mesh.size_near"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("GiB"), std::string::npos) << r.output;
+    EXPECT_FALSE(fs::exists(out));
+  }
 }
 
 TEST(Cli, mesh_writes_msh_vtu_and_summary) {
@@ -250,4 +246,29 @@ TEST(Cli, support_reduces_vault_settlement_and_broken_cracks) {
   EXPECT_GT(vault[0], 0.0);
   EXPECT_LT(vault[0], 0.6 * vault[1]);
   EXPECT_LT(broken[0], broken[1]);
+}
+
+// A time step above the stability limit is refused before any explicit
+// step (exit 2, naming engine.dt and --force-dt); forced, the run diverges
+// and stops with a diagnostic (exit 3) naming the step, keeping a valid
+// summary marked "failed" and the history written so far.
+TEST(Cli, dt_above_the_limit_is_refused_and_forced_it_stops_with_a_diagnostic) {
+  const std::string scene = kTestDir + "/ucs_small.toml --set engine.dt=2e-6 -q";
+  const fs::path out = scratch("force-dt");
+  const Result refused = run("run " + scene + " -o " + out.string());
+  EXPECT_EQ(refused.code, 2) << refused.output;
+  EXPECT_NE(refused.output.find("engine.dt"), std::string::npos) << refused.output;
+  EXPECT_NE(refused.output.find("--force-dt"), std::string::npos) << refused.output;
+  EXPECT_FALSE(fs::exists(out / "history.csv"));
+
+  const Result forced = run("run " + scene + " --force-dt --force -o " + out.string());
+  EXPECT_EQ(forced.code, 3) << forced.output;
+  EXPECT_NE(forced.output.find("step"), std::string::npos) << forced.output;
+  std::ifstream in(out / "summary.json");
+  const nlohmann::json j = nlohmann::json::parse(in);
+  EXPECT_EQ(j["status"].get<std::string>(), "failed");
+  EXPECT_NE(j["failure"].get<std::string>().find("step"), std::string::npos);
+  EXPECT_TRUE(fs::exists(out / "history.csv"));
+  EXPECT_TRUE(fs::exists(out / "fdem_0000.vtu"));
+  fs::remove_all(out);
 }

@@ -13,6 +13,7 @@ namespace {
 const char* const kUsage =
     "Usage:\n"
     "  rockfdem run [SCENE.toml] [-o OUTDIR] [-j THREADS] [--set section.key=value ...] [-q]\n"
+    "               [--checkpoint-every N] [--restart CHECKPOINT] [--force-dt]\n"
     "  rockfdem check SCENE.toml     validate, print derived figures, run nothing\n"
     "  rockfdem mesh SCENE.toml      mesh only (mesh.msh, mesh.vtu, summary.json)\n"
     "  rockfdem insitu SCENE.toml    mesh + implicit in-situ stage\n"
@@ -28,7 +29,11 @@ po::options_description visible_options() {
       "set", po::value<std::vector<std::string>>()->composing(),
       "override a scene key: --set section.key=value (repeatable)")(
       "quiet,q", "no progress on stderr")(
-      "force", "overwrite results of another scene in the output directory");
+      "force", "overwrite results of another scene in the output directory")(
+      "checkpoint-every", po::value<long>(),
+      "write a checkpoint every N steps (at the next output step; keeps the newest two)")(
+      "restart", po::value<std::string>(), "continue a run from a checkpoint file")(
+      "force-dt", "accept an engine.dt above the stability limit (the run stops if it diverges)");
   return o;
 }
 
@@ -60,6 +65,9 @@ CommandLine parse_command_line(int argc, const char* const argv[]) {
   cli.scene_reference = vm.count("scene-reference") > 0;
   cli.quiet = vm.count("quiet") > 0;
   cli.force = vm.count("force") > 0;
+  cli.force_dt = vm.count("force-dt") > 0;
+  if (vm.count("checkpoint-every")) cli.checkpoint_every = vm["checkpoint-every"].as<long>();
+  if (vm.count("restart")) cli.restart = vm["restart"].as<std::string>();
   cli.output_dir = vm["output"].as<std::string>();
   cli.threads = vm["threads"].as<int>();
   if (vm.count("set")) cli.overrides = vm["set"].as<std::vector<std::string>>();
@@ -77,6 +85,11 @@ CommandLine parse_command_line(int argc, const char* const argv[]) {
   if (cli.threads < 0 || cli.threads > 4096)
     throw InputError("command line: -j " + std::to_string(cli.threads) +
                      ": allowed 0 (all cores) to 4096");
+  if (vm.count("checkpoint-every") && cli.checkpoint_every < 0)
+    throw InputError("command line: --checkpoint-every " + std::to_string(cli.checkpoint_every) +
+                     ": allowed 0 (none) or a positive step count");
+  if ((!cli.restart.empty() || vm.count("checkpoint-every")) && cli.command != "run")
+    throw InputError("command line: --restart and --checkpoint-every belong to `rockfdem run`");
   if (cli.output_dir.empty()) throw InputError("command line: -o needs a directory");
   return cli;
 }

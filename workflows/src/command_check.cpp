@@ -1,13 +1,17 @@
 // `rockfdem check SCENE`: the scene is valid (validation already ran), so
 // print the figures a user wants before committing to a run: estimated
-// triangle and crack-element counts, memory and the stable time step. No
-// meshing, nothing written.
+// triangle and crack-element counts, memory, run time and the stable time
+// step. No meshing, nothing written. Every command also refuses, before
+// meshing, a scene whose memory estimate exceeds this machine's memory.
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <iostream>
 
+#include <unistd.h>
+
 #include "commands.hpp"
+#include "rockfdem/error.hpp"
 #include "rockfdem/mesh/outline.hpp"
 
 namespace rockfdem::workflows {
@@ -71,6 +75,36 @@ Estimate estimate(const Scene& s) {
   return {};
 }
 
+// Peak memory of a run: the libraries' baseline plus, per triangle, the
+// mesh and the implicit stage (measured 0.65 kB per triangle of peak RSS
+// growth between 107k and 390k triangles, `rockfdem insitu`) and the engine
+// (1100 B per triangle, below), with the implicit fields the outputs keep.
+constexpr double kBaseBytes = 256.0 * 1048576;
+constexpr double kBytesPerTriangle = 650 + 1100 + 250;
+
+double peak_bytes(const Estimate& e) { return kBaseBytes + kBytesPerTriangle * e.triangles; }
+
+double machine_bytes() {
+  return double(sysconf(_SC_PHYS_PAGES)) * double(sysconf(_SC_PAGE_SIZE));
+}
+
+// Explicit steps at most: the step caps of the stages (tunnels) or the
+// specimen's step count.
+double explicit_steps(const Scene& s) {
+  if (s.mesh.kind != mesh::ModelKind::kTunnel) return double(s.engine.steps);
+  double n = s.stages.empty() ? 0 : 1;  // the hand-off step
+  for (const StageSpec& st : s.stages) n += double(st.max_steps);
+  return n;
+}
+
+// Serial engine throughput measured on the 2-core development machine
+// (bench_ucs, docs/benchmarks.md): 11 M triangle-steps/s, 0.9 parallel
+// efficiency at 2 threads; mesh and implicit stage about 90 us per triangle.
+double run_seconds(const Scene& s, const Estimate& e, int threads) {
+  const double rate = 11e6 * std::max(1, threads) * (threads > 1 ? 0.9 : 1.0);
+  return 90e-6 * e.triangles + explicit_steps(s) * e.triangles / rate;
+}
+
 // Plane-strain P-wave speed of the rock.
 double p_wave_speed(const MaterialSpec& r, bool plane_stress) {
   const double nu = r.poisson;
@@ -80,6 +114,20 @@ double p_wave_speed(const MaterialSpec& r, bool plane_stress) {
 }
 
 }  // namespace
+
+void refuse_if_too_large(const Scene& scene) {
+  const Estimate e = estimate(scene);
+  const double need = peak_bytes(e), have = machine_bytes();
+  if (need <= have) return;
+  char msg[400];
+  std::snprintf(msg, sizeof msg,
+                "%s: key 'mesh.size_near' = %g: the model would have about %.3g triangles and "
+                "need about %.1f GiB, more than this machine's %.1f GiB; coarsen "
+                "mesh.size_near or shrink the domain",
+                scene.source.c_str(), scene.mesh.size.size_near, e.triangles,
+                need / 1073741824.0, have / 1073741824.0);
+  throw InputError(msg);
+}
 
 int command_check(const Scene& scene, const CommandLine& /*cli*/) {
   const Estimate e = estimate(scene);
@@ -105,6 +153,11 @@ int command_check(const Scene& scene, const CommandLine& /*cli*/) {
     std::printf("  triangles (estimate):       %.0f\n", e.triangles);
     std::printf("  crack elements (estimate):  %.0f\n", cracks);
     std::printf("  engine memory (estimate):   %.1f MiB\n", bytes / 1048576.0);
+    std::printf("  peak memory (estimate):     %.1f MiB of %.1f MiB on this machine\n",
+                peak_bytes(e) / 1048576.0, machine_bytes() / 1048576.0);
+    std::printf("  explicit steps (at most):   %.0f\n", explicit_steps(scene));
+    std::printf("  run time (estimate):        %.0f s at most on %d threads\n",
+                run_seconds(scene, e, active_threads()), active_threads());
   }
   std::printf("  P-wave speed of rock:       %.1f m/s\n", cp);
   std::printf("  stable time step (approx):  %.3g s\n", dt);

@@ -9,11 +9,13 @@
 #include "commands.hpp"
 #include "engine_report.hpp"
 #include "history.hpp"
+#include "interrupt.hpp"
 #include "output_dir.hpp"
 #include "phase_timer.hpp"
 #include "progress.hpp"
 #include "rockfdem/coupling/fdem_model.hpp"
 #include "rockfdem/coupling/vtk_writer.hpp"
+#include "rockfdem/error.hpp"
 #include "rockfdem/fdem/engine.hpp"
 #include "rockfdem/mesh/build.hpp"
 #include "rockfdem/mesh/msh_io.hpp"
@@ -72,14 +74,14 @@ int run_specimen(const Scene& scene, const CommandLine& cli) {
                                               scene.plane_stress ? fdem::Plane::kStress
                                                                  : fdem::Plane::kStrain);
   in.boundary_conditions = platens(scene);
-  in.dt = scene.engine.dt;
+  in.dt = scene.engine.dt;  // checked by make_engine
   in.dt_safety = scene.engine.dt_safety;
   in.damping.local = scene.engine.local_damping;
   in.damping.mass_proportional = scene.engine.mass_damping;
   in.gravity_y = -scene.engine.gravity;
   in.threads = threads;
   in.contact = contact_settings(scene);
-  fdem::Engine engine(in);
+  fdem::Engine engine = make_engine(in, scene, cli.force_dt);
   timer.stamp("fdem setup");
 
   const bool disc = scene.mesh.kind == mesh::ModelKind::kBrazilian;
@@ -103,19 +105,38 @@ int run_specimen(const Scene& scene, const CommandLine& cli) {
                  engine.kinetic_energy(), double(b.mode_I), double(b.mode_II), double(b.mixed)});
     if (scene.output.vtk) write_frame(engine, m, cli.output_dir, frame++, pvd);
   };
+  auto& j = summary.json();
+  const auto stop = [&](const char* status, const std::string& why) {
+    j["status"] = status;
+    j["failure"] = why;
+    summary.set_timings(timer);
+    summary.write(output_path(cli.output_dir, "summary.json"));
+  };
   record();
   while (engine.step_count() < scene.engine.steps) {
     const long chunk = std::min<long>(scene.output.every_steps,
                                       scene.engine.steps - engine.step_count());
     timer.stamp("output");
-    engine.run(chunk);
+    try {
+      for (long i = 0; i < chunk && !interrupt_requested(); ++i) engine.step();
+    } catch (const NumericalError& e) {
+      stop("failed", e.what());  // history and frames so far are the last good output
+      throw;
+    }
     timer.stamp("fdem");
     record();
     progress.update(engine.step_count(), engine.time());
+    if (const int sig = interrupt_requested()) {
+      const std::string why = "interrupted by signal " + std::to_string(sig) + " at step " +
+                              std::to_string(engine.step_count());
+      report_engine(engine, timer, summary);
+      stop("interrupted", why);
+      throw Interrupted(sig, why);
+    }
   }
   timer.stamp("output");
   progress.finish(engine.step_count(), engine.time());
-  auto& j = summary.json();
+  j["status"] = "completed";
   report_engine(engine, timer, summary);
   j["specimen"] = {{"peak_stress", peak},
                    {"strain_rate", 2 * scene.engine.platen_velocity / size.length},
@@ -134,8 +155,14 @@ int run_specimen(const Scene& scene, const CommandLine& cli) {
 }  // namespace
 
 int command_run(const Scene& scene, const CommandLine& cli) {
-  if (scene.mesh.kind == mesh::ModelKind::kUcs || scene.mesh.kind == mesh::ModelKind::kBrazilian)
+  install_interrupt_handlers();
+  if (scene.mesh.kind == mesh::ModelKind::kUcs || scene.mesh.kind == mesh::ModelKind::kBrazilian) {
+    if (!cli.restart.empty() || cli.checkpoint_every > 0 || scene.output.checkpoint_every > 0)
+      throw InputError(scene.source + ": checkpoints (--restart, --checkpoint-every, "
+                       "output.checkpoint_every) apply to tunnel runs; a specimen run is "
+                       "re-run from the start");
     return run_specimen(scene, cli);
+  }
   return run_tunnel(scene, cli);
 }
 

@@ -36,6 +36,7 @@ int run_command(const CommandLine& cli) {
       cli.scene.empty() ? load_default_scene(cli.overrides) : load_scene(cli.scene, cli.overrides);
   g_threads = cli.threads > 0 ? cli.threads : omp_get_num_procs();
   active_threads();
+  refuse_if_too_large(scene);
   if (cli.command == "check") return command_check(scene, cli);
   if (cli.command == "mesh") return command_mesh(scene, cli);
   if (cli.command == "insitu") return command_insitu(scene, cli);

@@ -12,6 +12,10 @@ int command_insitu(const Scene& scene, const CommandLine& cli);
 int command_run(const Scene& scene, const CommandLine& cli);
 int run_tunnel(const Scene& scene, const CommandLine& cli);
 
+/// Throws InputError (naming mesh.size_near) when the scene's estimated peak
+/// memory exceeds this machine's physical memory; runs before meshing.
+void refuse_if_too_large(const Scene& scene);
+
 /// The OpenMP thread count in force (after gmsh, which resets it).
 int active_threads();
 

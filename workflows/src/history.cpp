@@ -13,15 +13,26 @@ History::History(std::string path, std::vector<std::string> columns)
   text_ += '\n';
 }
 
-void History::add(const std::vector<double>& row) {
+void History::append_text(const std::vector<double>& row) {
   if (row.size() != columns_.size()) throw std::logic_error("history row has the wrong width");
-  rows_.push_back(row);
   char buf[32];
   for (std::size_t i = 0; i < row.size(); ++i) {
     std::snprintf(buf, sizeof buf, "%.10g", row[i]);
     text_ += (i ? "," : "") + std::string(buf);
   }
   text_ += '\n';
+}
+
+void History::add(const std::vector<double>& row) {
+  append_text(row);
+  rows_.push_back(row);
+  coupling::atomic_write_text(path_, text_);
+}
+
+void History::restore(const std::vector<std::vector<double>>& rows) {
+  text_.erase(text_.find('\n') + 1);  // keep the header
+  for (const auto& r : rows) append_text(r);
+  rows_ = rows;
   coupling::atomic_write_text(path_, text_);
 }
 

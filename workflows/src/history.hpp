@@ -13,10 +13,13 @@ class History {
   /// Appends a row (as many values as columns) and rewrites the file.
   void add(const std::vector<double>& row);
   const std::vector<std::vector<double>>& rows() const { return rows_; }
+  /// Replaces the rows (a restarted run continues its checkpoint's history).
+  void restore(const std::vector<std::vector<double>>& rows);
   /// The values of one column, for plots.
   std::vector<double> column(const std::string& name) const;
 
  private:
+  void append_text(const std::vector<double>& row);
   std::string path_;
   std::vector<std::string> columns_;
   std::vector<std::vector<double>> rows_;

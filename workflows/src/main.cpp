@@ -1,8 +1,10 @@
 // rockfdem: from a tunnel scene to stresses, cracks, convergence and support
 // loads. Errors are caught here once and mapped to the exit codes of
-// product.md: 2 bad input, 3 numerical failure, 1 anything else.
+// product.md: 2 bad input, 3 numerical failure, 1 anything else; 130/143
+// after SIGINT/SIGTERM (interrupt.hpp).
 #include <iostream>
 
+#include "interrupt.hpp"
 #include "rockfdem/error.hpp"
 #include "rockfdem/insitu/insitu.hpp"
 #include "rockfdem/workflows/cli.hpp"
@@ -14,6 +16,9 @@ int main(int argc, char** argv) {
   try {
     const workflows::CommandLine cli = workflows::parse_command_line(argc, argv);
     return workflows::run_command(cli);
+  } catch (const workflows::Interrupted& e) {
+    std::cerr << "rockfdem: " << e.what() << "; outputs and a checkpoint are written\n";
+    return e.exit_code();
   } catch (const InputError& e) {
     std::cerr << "rockfdem: error: " << e.what() << '\n';
     return 2;

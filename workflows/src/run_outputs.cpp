@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <iostream>
 
 #include "engine_report.hpp"
@@ -183,6 +184,34 @@ coupling::VtkGrid RunOutputs::frame_grid(const fdem::Engine& e, const mesh::Mesh
   return g;
 }
 
+nlohmann::json RunOutputs::state() const {
+  nlohmann::json frames = nlohmann::json::array();
+  for (const coupling::PvdEntry& f : pvd_.entries()) frames.push_back({f.time, f.file});
+  return {{"history", history_->rows()}, {"stages", stage_names_}, {"frames", frames}};
+}
+
+void RunOutputs::restore(const nlohmann::json& s, const std::string& from_dir) {
+  namespace fs = std::filesystem;
+  history_->restore(s.at("history").get<std::vector<std::vector<double>>>());
+  stage_names_ = s.at("stages").get<std::vector<std::string>>();
+  std::error_code same_ec;
+  const bool same_dir = fs::equivalent(from_dir, cli_.output_dir, same_ec);
+  for (const auto& f : s.at("frames")) {
+    const std::string name = f.at(1).get<std::string>();
+    if (!same_dir) {
+      // The earlier frames live beside the checkpoint's run; the series
+      // stays whole only if they come along.
+      std::error_code ec;
+      fs::copy_file(output_path(from_dir, name), output_path(cli_.output_dir, name),
+                    fs::copy_options::overwrite_existing, ec);
+      if (ec) summary_.skipped("frame " + name + " of the restarted run: not found in " + from_dir);
+    }
+    pvd_.add(f.at(0).get<double>(), name);
+    ++frame_;
+  }
+  if (frame_ > 0) pvd_.write();
+}
+
 void RunOutputs::bolt_outputs(const fdem::Engine& e, const fdem::BoltPlan& bolts) {
   auto& j = summary_.json();
   j["counts"]["bolts"] = bolts.specs.size();
@@ -208,6 +237,7 @@ void RunOutputs::bolt_outputs(const fdem::Engine& e, const fdem::BoltPlan& bolts
     const fdem::BoltCounts c = fdem::bolt_counts(e, bolts, int(b));
     const fdem::Bolt& bolt = bolts.specs[b].bolt;
     list.push_back({{"file", name},
+                    {"kind", scene_.bolts.is_cable[b] ? "cable" : "bolt"},
                     {"head", {bolt.a[0], bolt.a[1]}},
                     {"end", {bolt.b[0], bolt.b[1]}},
                     {"peak_axial_stress_Pa", peak_stress},

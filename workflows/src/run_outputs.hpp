@@ -31,6 +31,12 @@ class RunOutputs {
   /// One history row and (if enabled) one ParaView frame.
   void record_step(const fdem::Engine& e, const mesh::Mesh& m, const std::vector<Monitor>& monitors,
                    PhaseTimer& timer, const std::string& stage, double support_ratio);
+  /// What a restart needs to continue the outputs: history rows, stage
+  /// names, frames written.
+  nlohmann::json state() const;
+  /// Puts state() back; frames listed there are copied from `from_dir` when
+  /// the restart writes to another directory.
+  void restore(const nlohmann::json& state, const std::string& from_dir);
   /// Counts, monitors, broken cracks, hash, plots, timings; writes summary.json.
   void finish(const fdem::Engine& e, const mesh::Mesh& m, const std::vector<Monitor>& monitors,
               PhaseTimer& timer, const fdem::BoltPlan& bolts);

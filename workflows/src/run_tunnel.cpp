@@ -14,11 +14,15 @@
 // boundary removed, as the implicit stage removes its rigid motion.
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <iostream>
+#include <sstream>
 
+#include "checkpoint.hpp"
 #include "commands.hpp"
 #include "continuum_comparison.hpp"
 #include "history.hpp"
+#include "interrupt.hpp"
 #include "monitors.hpp"
 #include "output_dir.hpp"
 #include "phase_timer.hpp"
@@ -71,11 +75,40 @@ fdem::ModelInput engine_input(const Scene& scene, const mesh::Mesh& m,
       m, materials, scene.plane_stress ? fdem::Plane::kStress : fdem::Plane::kStrain);
   coupling::apply_insitu(handoff, in);
   in.boundary_conditions = box_conditions(scene.insitu);
-  in.dt = scene.engine.dt;
+  in.dt = scene.engine.dt;  // checked by make_engine
   in.dt_safety = scene.engine.dt_safety;
   in.threads = active_threads();
   in.contact = contact_settings(scene);
   return in;
+}
+
+// Bolt installation is state a restart needs: which bolts and their stress then.
+nlohmann::json bolt_state(const fdem::BoltPlan& bolts) {
+  return {{"installed", bolts.installed}, {"installed_stress", bolts.installed_stress}};
+}
+
+void restore_bolts(const nlohmann::json& s, fdem::BoltPlan& bolts) {
+  bolts.installed = s.at("installed").get<std::vector<char>>();
+  bolts.installed_stress =
+      s.at("installed_stress").get<std::vector<std::vector<std::array<double, 3>>>>();
+}
+
+// The run directory a checkpoint belongs to: OUTDIR/checkpoints/FILE -> OUTDIR.
+std::string run_dir_of(const std::string& checkpoint) {
+  const std::filesystem::path p = std::filesystem::absolute(checkpoint);
+  return p.parent_path().parent_path().string();
+}
+
+// A signal between the implicit phases: nothing to checkpoint yet.
+void stop_if_interrupted(RunSummary& summary, const CommandLine& cli, const PhaseTimer& timer,
+                         const char* after) {
+  const int sig = interrupt_requested();
+  if (!sig) return;
+  summary.json()["status"] = "interrupted";
+  summary.set_timings(timer);
+  summary.write(output_path(cli.output_dir, "summary.json"));
+  throw Interrupted(sig, std::string("interrupted by signal ") + std::to_string(sig) + " after " +
+                             after + " (no explicit step yet, so no checkpoint)");
 }
 
 }  // namespace
@@ -87,6 +120,9 @@ int run_tunnel(const Scene& scene, const CommandLine& cli) {
                      ": `rockfdem run` of a tunnel needs a uniform in-situ stress (0); the "
                      "gradient is supported by `rockfdem insitu`");
   PhaseTimer timer;
+  // A bad checkpoint is refused before anything is written.
+  const bool restart = !cli.restart.empty();
+  const Checkpoint resume = restart ? read_checkpoint(cli.restart, scene) : Checkpoint{};
   prepare_output_dir(cli.output_dir, scene, cli.force);
   RunSummary summary(scene, active_threads());
   RunOutputs out(scene, cli, summary);
@@ -96,11 +132,13 @@ int run_tunnel(const Scene& scene, const CommandLine& cli) {
   active_threads();
   mesh::write_msh(m, output_path(cli.output_dir, "mesh.msh"));
   timer.stamp("mesh");
+  stop_if_interrupted(summary, cli, timer, "meshing");
 
   const std::vector<insitu::InsituField> fields = insitu::solve_insitu(m, insitu_spec(scene));
   active_threads();
   out.record_insitu(m, fields);
   timer.stamp("insitu");
+  stop_if_interrupted(summary, cli, timer, "the implicit stage");
 
   if (scene.stages.empty()) {
     // [[stages]] holds only "insitu": the scene asks for the elastic
@@ -116,21 +154,62 @@ int run_tunnel(const Scene& scene, const CommandLine& cli) {
   in.materials.push_back(grout_material(scene));
   fdem::BoltPlan bolts;  // marks bolt triangles and allows fracture there
   if (!scene.bolts.segments.empty()) bolts = fdem::plan_bolts(in, bolt_specs(scene));
-  fdem::Engine engine(in);
-  for (std::size_t t = 0; t < m.n_triangles(); ++t)
-    if (!handoff.active[t]) engine.set_active(t, false);
-  engine.step();
-  const double start_ratio = engine.unbalanced_force_ratio();
-  engine.set_damping({scene.engine.local_damping > 0 ? scene.engine.local_damping : 0.8,
-                      scene.engine.mass_damping});
+  fdem::Engine engine = make_engine(in, scene, cli.force_dt);
+  double start_ratio = 0;
+  if (restart) {
+    std::istringstream state(resume.engine_state);
+    engine.load_state(state);
+    restore_bolts(resume.run.at("bolts"), bolts);
+    start_ratio = resume.run.at("start_ratio").get<double>();
+  } else {
+    for (std::size_t t = 0; t < m.n_triangles(); ++t)
+      if (!handoff.active[t]) engine.set_active(t, false);
+    engine.step();
+    start_ratio = engine.unbalanced_force_ratio();
+    engine.set_damping({scene.engine.local_damping > 0 ? scene.engine.local_damping : 0.8,
+                        scene.engine.mass_damping});
+  }
   timer.stamp("fdem setup");
 
   const std::vector<Monitor> monitors = tunnel_monitors(scene.mesh.tunnel, m, engine);
   out.begin_history(monitors, m);
   out.set_bolts(&bolts);
-  out.record_step(engine, m, monitors, timer, "handoff", handoff.alpha);
   StageRunner stages(engine, m, handoff, scene, cli, out, monitors, bolts, grout);
-  for (const StageSpec& stage : scene.stages) stages.run(stage, timer);
+  if (restart) {
+    out.restore(resume.run.at("outputs"), run_dir_of(cli.restart));
+    stages.restore(resume.run.at("stages"));
+    summary.json()["restarted_from"] = {{"checkpoint", cli.restart},
+                                        {"step", engine.step_count()}};
+  } else {
+    out.record_step(engine, m, monitors, timer, "handoff", handoff.alpha);
+  }
+  stages.set_checkpoint(
+      cli.checkpoint_every >= 0 ? cli.checkpoint_every : scene.output.checkpoint_every, [&] {
+        Checkpoint c;
+        c.run = {{"stages", stages.state()}, {"outputs", out.state()},
+                 {"bolts", bolt_state(bolts)}, {"start_ratio", start_ratio}};
+        std::ostringstream bytes;
+        engine.save_state(bytes);
+        c.engine_state = bytes.str();
+        const std::string path = write_checkpoint(cli.output_dir, engine.step_count(), scene, c);
+        summary.json()["checkpoint"] = {{"last", path}, {"step", engine.step_count()}};
+      });
+  try {
+    stages.run_all(timer);
+  } catch (const Interrupted&) {
+    summary.json()["status"] = "interrupted";
+    summary.json()["fdem"] = {{"stages", stages.report()}};
+    out.finish(engine, m, monitors, timer, bolts);
+    throw;
+  } catch (const NumericalError& e) {
+    // The frames and history rows written so far are the last good output.
+    summary.json()["status"] = "failed";
+    summary.json()["failure"] = e.what();
+    summary.json()["fdem"] = {{"stages", stages.report()}};
+    summary.set_timings(timer);
+    summary.write(output_path(cli.output_dir, "summary.json"));
+    throw;
+  }
 
   if (!stages.core_present()) {
     // The continuum reference of the relaxed state: the open excavation.
@@ -148,6 +227,7 @@ int run_tunnel(const Scene& scene, const CommandLine& cli) {
     }
     timer.stamp("insitu");
   }
+  summary.json()["status"] = "completed";
   summary.json()["fdem"] = {{"unbalanced_ratio_at_start", start_ratio},
                             {"unbalanced_ratio_at_end", engine.unbalanced_force_ratio()},
                             {"handoff_alpha", handoff.alpha},

@@ -250,18 +250,25 @@ std::array<double, 2> point(const Reader& r, const std::string& path) {
 
 // Bolts from [[bolt]] segments and [[bolt_fan]] patterns; each must be a
 // real segment inside the rock domain.
+SteelSettings read_steel(const Reader& r, const std::string& section) {
+  SteelSettings b;
+  b.diameter = r.number(section + ".diameter");
+  b.row_spacing = r.number(section + ".row_spacing");
+  b.young = r.number(section + ".young");
+  b.yield_strength = r.number(section + ".yield_strength");
+  b.ultimate_strength = r.number(section + ".ultimate_strength");
+  b.tangent_modulus = r.number(section + ".tangent_modulus");
+  b.shear_yield_strength = r.number(section + ".shear_yield_strength");
+  b.shear_fracture_energy = r.number(section + ".shear_fracture_energy");
+  if (b.ultimate_strength < b.yield_strength)
+    r.fail(section + ".ultimate_strength", "must be at least " + section + ".yield_strength");
+  return b;
+}
+
 void read_bolts(const Reader& r, Scene& s) {
   BoltSettings& b = s.bolts;
-  b.diameter = r.number("bolts.diameter");
-  b.row_spacing = r.number("bolts.row_spacing");
-  b.young = r.number("bolts.young");
-  b.yield_strength = r.number("bolts.yield_strength");
-  b.ultimate_strength = r.number("bolts.ultimate_strength");
-  b.tangent_modulus = r.number("bolts.tangent_modulus");
-  b.shear_yield_strength = r.number("bolts.shear_yield_strength");
-  b.shear_fracture_energy = r.number("bolts.shear_fracture_energy");
-  if (b.ultimate_strength < b.yield_strength)
-    r.fail("bolts.ultimate_strength", "must be at least bolts.yield_strength");
+  b.bolt = read_steel(r, "bolts");
+  b.cable = read_steel(r, "cables");
   GroutSettings& g = s.grout;
   g.young = r.number("grout.young");
   g.tensile_strength = r.number("grout.tensile_strength");
@@ -269,14 +276,22 @@ void read_bolts(const Reader& r, Scene& s) {
   g.friction_angle = r.number("grout.friction_angle");
   g.fracture_energy_I = r.number("grout.fracture_energy_I");
   g.fracture_energy_II = r.number("grout.fracture_energy_II");
-  std::vector<std::pair<std::string, std::array<double, 4>>> found;
+  struct Found {
+    std::string key;
+    std::array<double, 4> seg;
+    bool cable;
+  };
+  std::vector<Found> found;
+  const auto is_cable = [&](const std::string& p) {
+    return r.has(p + ".kind") && r.text(p + ".kind") == "cable";
+  };
   if (const toml::node* list = r.node("bolt")) {
     for (std::size_t i = 0; i < list->as_array()->size(); ++i) {
       const std::string p = "bolt[" + std::to_string(i) + "]";
       r.require(p + ".start", "a bolt needs its head");
       r.require(p + ".end", "a bolt needs its end");
       const auto a = point(r, p + ".start"), e = point(r, p + ".end");
-      found.push_back({p + ".end", {a[0], a[1], e[0], e[1]}});
+      found.push_back({p + ".end", {a[0], a[1], e[0], e[1]}, is_cable(p)});
     }
   }
   if (const toml::node* list = r.node("bolt_fan")) {
@@ -292,20 +307,22 @@ void read_bolts(const Reader& r, Scene& s) {
       for (int k = 0; k < count; ++k) {
         const double deg = count == 1 ? a0 : a0 + (a1 - a0) * k / (count - 1);
         const double cs = std::cos(deg * M_PI / 180), sn = std::sin(deg * M_PI / 180);
-        found.push_back({p + ".length", {c[0] + radius * cs, c[1] + radius * sn,
-                                         c[0] + (radius + length) * cs,
-                                         c[1] + (radius + length) * sn}});
+        found.push_back({p + ".length",
+                         {c[0] + radius * cs, c[1] + radius * sn, c[0] + (radius + length) * cs,
+                          c[1] + (radius + length) * sn},
+                         is_cable(p)});
       }
     }
   }
   const mesh::DomainSpec& d = s.mesh.domain;
-  for (const auto& [key, seg] : found) {
+  for (const auto& [key, seg, cable] : found) {
     if (std::hypot(seg[2] - seg[0], seg[3] - seg[1]) <= 0) r.fail(key, "a bolt has zero length");
     for (int k = 0; k < 4; k += 2)
       if (std::abs(seg[k] - d.center_x) >= d.width / 2 ||
           std::abs(seg[k + 1] - d.center_y) >= d.height / 2)
         r.fail(key, "the bolt reaches outside the rock domain");
     b.segments.push_back(seg);
+    b.is_cable.push_back(cable);
   }
   if (!b.segments.empty() && s.mesh.kind != mesh::ModelKind::kTunnel)
     r.fail("bolt", "bolts need a tunnel model");
@@ -426,11 +443,18 @@ Scene build_scene(const RawScene& raw, const std::string& base_dir) {
   s.output.every_steps = r.integer("output.every_steps");
   s.output.vtk = r.boolean("output.vtk");
   s.output.plots = r.boolean("output.plots");
+  s.output.checkpoint_every = static_cast<long>(r.number("output.checkpoint_every"));
   read_bolts(r, s);
   read_stages(r, s);
   std::ostringstream canonical;
   canonical << raw.root;
   s.canonical = canonical.str();
+  // How often to checkpoint does not change the results a restart continues.
+  toml::table keyed = raw.root;
+  if (toml::table* out = keyed["output"].as_table()) out->erase("checkpoint_every");
+  std::ostringstream key;
+  key << keyed;
+  s.restart_key = key.str();
   return s;
 }
 

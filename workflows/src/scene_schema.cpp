@@ -218,19 +218,31 @@ std::vector<KeySpec> build_schema() {
   // [loading]
   s.push_back(positive("loading.platen_velocity", "m/s", "0.5",
                        "UCS and Brazilian tests: speed of each platen towards the other."));
-  // [bolts]: the steel and layout every bolt shares
-  s.push_back(positive("bolts.diameter", "m", "0.025", "Bolt diameter."));
-  s.push_back(positive("bolts.row_spacing", "m", "1", "Out-of-plane spacing of bolt rows s_b "
-                                                      "(stiffness and strength scale by 1/s_b)."));
-  s.push_back(positive("bolts.young", "Pa", "200e9", "Steel Young's modulus Eb."));
-  s.push_back(positive("bolts.yield_strength", "Pa", "400e6", "Steel yield strength."));
-  s.push_back(positive("bolts.ultimate_strength", "Pa", "500e6",
-                       "Steel ultimate strength (at least the yield strength)."));
-  s.push_back(positive("bolts.tangent_modulus", "Pa", "2e9", "Hardening modulus ET."));
-  s.push_back(positive("bolts.shear_yield_strength", "Pa", "240e6",
-                       "Steel shear strength (brittle in shear)."));
-  s.push_back(positive("bolts.shear_fracture_energy", "J/m^2", "1e4",
-                       "Steel shear fracture energy GfII."));
+  // [bolts] and [cables]: the steel each kind of bolt shares. Cables are
+  // long bolts of strand (the seed's simplification), here 15.2 mm 7-wire
+  // strand Y1860S7 (EN 10138-3): 0.1% proof 1600 MPa, 1860 MPa at 3.5%.
+  struct SteelDefaults {
+    const char *section, *what, *diameter, *young, *yield, *ultimate, *tangent, *shear;
+  };
+  for (const SteelDefaults& k :
+       {SteelDefaults{"bolts", "Bolt", "0.025", "200e9", "400e6", "500e6", "2e9", "240e6"},
+        SteelDefaults{"cables", "Cable", "0.0152", "195e9", "1600e6", "1860e6", "9.7e9",
+                      "960e6"}}) {
+    const std::string p = std::string(k.section) + ".";
+    s.push_back(positive(p + "diameter", "m", k.diameter, std::string(k.what) + " diameter."));
+    s.push_back(positive(p + "row_spacing", "m", "1",
+                         "Out-of-plane spacing of rows s_b (stiffness and strength scale by "
+                         "1/s_b)."));
+    s.push_back(positive(p + "young", "Pa", k.young, "Steel Young's modulus Eb."));
+    s.push_back(positive(p + "yield_strength", "Pa", k.yield, "Steel yield strength."));
+    s.push_back(positive(p + "ultimate_strength", "Pa", k.ultimate,
+                         "Steel ultimate strength (at least the yield strength)."));
+    s.push_back(positive(p + "tangent_modulus", "Pa", k.tangent, "Hardening modulus ET."));
+    s.push_back(positive(p + "shear_yield_strength", "Pa", k.shear,
+                         "Steel shear strength (brittle in shear)."));
+    s.push_back(positive(p + "shear_fracture_energy", "J/m^2", "1e4",
+                         "Steel shear fracture energy GfII."));
+  }
   // [grout]: bolt-rock bond and the grouting of broken cracks
   s.push_back(positive("grout.young", "Pa", "10e9", "Grout modulus (sets its crack penalty)."));
   s.push_back(positive("grout.tensile_strength", "Pa", "1e6", "Grout tensile strength."));
@@ -259,6 +271,9 @@ std::vector<KeySpec> build_schema() {
                      "Angle of the last bolt."));
   s.push_back(integer("bolt_fan[].count", "", 1, 1000, "Number of bolts in the fan."));
   s.push_back(positive("bolt_fan[].length", "m", "", "Bolt length."));
+  for (const char* list : {"bolt[].kind", "bolt_fan[].kind"})
+    s.push_back(choice(list, "bolt", {"bolt", "cable"},
+                       "`bolt` takes the steel of [bolts], `cable` that of [cables]."));
   // [contact]
   s.push_back(boolean("contact.enabled", "true",
                       "Penalty contact with friction between triangles on free surfaces and "
@@ -296,6 +311,9 @@ std::vector<KeySpec> build_schema() {
                       "Explicit steps between outputs (VTK frames, history rows)."));
   s.push_back(boolean("output.vtk", "true", "Write ParaView files."));
   s.push_back(boolean("output.plots", "true", "Render PNG plots (needs a display or Xvfb)."));
+  s.push_back(integer("output.checkpoint_every", "0", 0, 1e12,
+                      "Steps between checkpoints (written at the next output step); 0: none. "
+                      "`--checkpoint-every` overrides it."));
   return s;
 }
 

@@ -1,5 +1,7 @@
 #include "stage_inputs.hpp"
 
+#include "rockfdem/error.hpp"
+
 namespace rockfdem::workflows {
 namespace {
 
@@ -53,8 +55,9 @@ fdem::Material grout_material(const Scene& s) {
   return m;
 }
 
-std::vector<fdem::BoltSpec> bolt_specs(const Scene& s) {
-  const BoltSettings& b = s.bolts;
+namespace {
+
+fdem::BoltSteel steel_of(const SteelSettings& b) {
   fdem::BoltSteel steel;
   steel.young = b.young;
   steel.yield_strength = b.yield_strength;
@@ -62,12 +65,20 @@ std::vector<fdem::BoltSpec> bolt_specs(const Scene& s) {
   steel.tangent_modulus = b.tangent_modulus;
   steel.shear_yield_strength = b.shear_yield_strength;
   steel.gf_II = b.shear_fracture_energy;
+  return steel;
+}
+
+}  // namespace
+
+std::vector<fdem::BoltSpec> bolt_specs(const Scene& s) {
   std::vector<fdem::BoltSpec> specs;
-  for (const auto& seg : b.segments) {
+  for (std::size_t i = 0; i < s.bolts.segments.size(); ++i) {
+    const auto& seg = s.bolts.segments[i];
+    const SteelSettings& kind = s.bolts.is_cable[i] ? s.bolts.cable : s.bolts.bolt;
     fdem::BoltSpec spec;
-    spec.bolt = {{seg[0], seg[1]}, {seg[2], seg[3]}, b.diameter};
-    spec.row_spacing = b.row_spacing;
-    spec.steel = steel;
+    spec.bolt = {{seg[0], seg[1]}, {seg[2], seg[3]}, kind.diameter};
+    spec.row_spacing = kind.row_spacing;
+    spec.steel = steel_of(kind);
     spec.grout = grout_material(s);
     specs.push_back(spec);
   }
@@ -103,6 +114,20 @@ insitu::InsituSpec insitu_spec(const Scene& s) {
   if (s.insitu.solver == "amg") spec.solver.kind = insitu::LinearSolver::kAmgCg;
   if (s.insitu.solver == "direct") spec.solver.kind = insitu::LinearSolver::kDirect;
   return spec;
+}
+
+fdem::Engine make_engine(fdem::ModelInput in, const Scene& scene, bool force_dt) {
+  const double dt = in.dt;
+  in.dt = 0;  // built with the automatic step, then given the scene's
+  fdem::Engine engine(in);
+  if (dt <= 0) return engine;
+  try {
+    engine.set_dt(dt, force_dt ? fdem::DtCheck::kForce : fdem::DtCheck::kRefuseAboveLimit);
+  } catch (const InputError& e) {
+    throw InputError(scene.source + ": key 'engine.dt' = " + std::to_string(dt) + ": " +
+                     e.what() + "; pass --force-dt to run with it anyway");
+  }
+  return engine;
 }
 
 bool kirsch_case(const Scene& s, insitu::KirschCase* k) {

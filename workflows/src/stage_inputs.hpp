@@ -4,6 +4,7 @@
 #include <map>
 
 #include "rockfdem/fdem/bolt_install.hpp"
+#include "rockfdem/fdem/engine.hpp"
 #include "rockfdem/fdem/model_input.hpp"
 #include "rockfdem/insitu/insitu.hpp"
 #include "rockfdem/workflows/scene.hpp"
@@ -24,8 +25,11 @@ std::vector<fdem::BoltSpec> bolt_specs(const Scene& scene);
 /// The scene's contact settings for the engine.
 fdem::ContactSettings contact_settings(const Scene& scene);
 
-/// summary.json's "contact" entry and, when nothing could touch, the
-/// "skipped" line saying so.
+/// The engine for `in`. An in.dt above the stability limit is refused
+/// (InputError naming engine.dt) unless `force_dt`: then the run keeps it
+/// and stops with a diagnostic if it diverges.
+fdem::Engine make_engine(fdem::ModelInput in, const Scene& scene, bool force_dt);
+
 /// Whether the scene's geometry has the Kirsch closed form (circular opening,
 /// uniform stress, no lining) and its parameters.
 bool kirsch_case(const Scene& scene, insitu::KirschCase* k);

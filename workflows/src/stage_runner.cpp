@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "interrupt.hpp"
 #include "output_dir.hpp"
 #include "progress.hpp"
 #include "rockfdem/coupling/atomic_file.hpp"
@@ -52,36 +53,60 @@ nlohmann::json StageRunner::apply(const StageSpec& stage) {
   return done;
 }
 
-bool StageRunner::step_until(const StageSpec& stage, long first, double t0, PhaseTimer& timer,
-                             long broken_target) {
+bool StageRunner::advance(long n) {
+  for (long i = 0; i < n; ++i) {
+    if (interrupt_requested()) return false;
+    engine_.step();
+  }
+  return true;
+}
+
+bool StageRunner::step_until(const StageSpec& stage, PhaseTimer& timer, long broken_target) {
   Progress progress(stage.kind, stage.max_steps, cli_.quiet);
+  const long first = cursor_.first;
+  const double t0 = cursor_.t0;
+  const auto in_stage = [&] { return engine_.step_count() - first; };
+  const auto out_of_time = [&] { return stage.time > 0 && engine_.time() - t0 >= stage.time; };
   bool done = false;
-  while (engine_.step_count() - first < stage.max_steps && !done) {
-    if (stage.time > 0 && engine_.time() - t0 >= stage.time) break;
-    const long chunk = std::min<long>(stage.every_steps,
-                                      stage.max_steps - (engine_.step_count() - first));
+  while (in_stage() < stage.max_steps && !done && !out_of_time()) {
+    const long chunk = std::min<long>(stage.every_steps - in_stage() % stage.every_steps,
+                                      stage.max_steps - in_stage());
     timer.stamp("output");
-    engine_.run(chunk);
+    const bool whole = advance(chunk);
     timer.stamp("fdem");
+    if (!whole) {
+      // Checkpoint first: the extra row below is not one an uninterrupted run writes.
+      if (save_checkpoint_) save_checkpoint_();
+      out_.record_step(engine_, mesh_, monitors_, timer, stage.kind, support_ratio());
+      const int sig = interrupt_requested();
+      throw Interrupted(sig, "interrupted by signal " + std::to_string(sig) + " at step " +
+                                 std::to_string(engine_.step_count()) + " in stage '" +
+                                 stage.kind + "'");
+    }
     out_.record_step(engine_, mesh_, monitors_, timer, stage.kind, support_ratio());
     done = broken_target > 0 ? engine_.broken_counts().total() >= broken_target
                              : engine_.unbalanced_force_ratio() < stage.ratio;
-    progress.update(engine_.step_count() - first, engine_.time() - t0);
+    progress.update(in_stage(), engine_.time() - t0);
+    // Only where the loop goes on: a restart resumes inside this stage.
+    const bool goes_on = !done && in_stage() < stage.max_steps && !out_of_time();
+    if (goes_on && checkpoint_every_ > 0 && save_checkpoint_ &&
+        engine_.step_count() - last_checkpoint_ >= checkpoint_every_) {
+      save_checkpoint_();
+      last_checkpoint_ = engine_.step_count();
+      timer.stamp("checkpoint");
+    }
   }
-  progress.finish(engine_.step_count() - first, engine_.time() - t0);
+  progress.finish(in_stage(), engine_.time() - t0);
   return done;
 }
 
 nlohmann::json StageRunner::grout(const StageSpec& stage, PhaseTimer& timer) {
-  const long first = engine_.step_count();
   bool triggered = stage.trigger_broken == 0 ||
                    engine_.broken_counts().total() >= stage.trigger_broken;
   // Triggered by the broken count, or by the stage's time when one is given.
-  if (!triggered) {
-    const double t0 = engine_.time();
-    triggered = step_until(stage, first, t0, timer, stage.trigger_broken) ||
-                (stage.time > 0 && engine_.time() - t0 >= stage.time);
-  }
+  if (!triggered)
+    triggered = step_until(stage, timer, stage.trigger_broken) ||
+                (stage.time > 0 && engine_.time() - cursor_.t0 >= stage.time);
   nlohmann::json done = {{"triggered", triggered},
                          {"broken_before", engine_.broken_counts().total()}};
   if (!triggered) return done;
@@ -100,23 +125,59 @@ nlohmann::json StageRunner::grout(const StageSpec& stage, PhaseTimer& timer) {
 }
 
 void StageRunner::run(const StageSpec& stage, PhaseTimer& timer) {
-  const long first = engine_.step_count();
-  const double t0 = engine_.time();
-  nlohmann::json done;
-  bool converged = false;
-  if (stage.kind == "grout") {
-    done = grout(stage, timer);
-  } else {
-    done = apply(stage);
-    converged = step_until(stage, first, t0, timer, 0);
+  if (!cursor_.started) {
+    cursor_.first = engine_.step_count();
+    cursor_.t0 = engine_.time();
+    cursor_.changes = stage.kind == "grout" ? nlohmann::json::object() : apply(stage);
+    cursor_.started = true;
   }
+  nlohmann::json done = cursor_.changes;
+  bool converged = false;
+  if (stage.kind == "grout")
+    done = grout(stage, timer);
+  else
+    converged = step_until(stage, timer, 0);
   report_.push_back({{"kind", stage.kind},
                      {"changes", done},
-                     {"steps", engine_.step_count() - first},
-                     {"simulated_time", engine_.time() - t0},
+                     {"steps", engine_.step_count() - cursor_.first},
+                     {"simulated_time", engine_.time() - cursor_.t0},
                      {"unbalanced_ratio", engine_.unbalanced_force_ratio()},
                      {"converged", converged},
                      {"support_pressure_ratio", support_ratio()}});
+}
+
+void StageRunner::run_all(PhaseTimer& timer) {
+  for (; cursor_.index < scene_.stages.size(); ++cursor_.index) {
+    run(scene_.stages[cursor_.index], timer);
+    cursor_ = Cursor{cursor_.index};
+  }
+}
+
+void StageRunner::set_checkpoint(long every, std::function<void()> save) {
+  checkpoint_every_ = every;
+  save_checkpoint_ = std::move(save);
+  last_checkpoint_ = engine_.step_count();
+}
+
+nlohmann::json StageRunner::state() const {
+  return {{"stage_index", cursor_.index}, {"stage_started", cursor_.started},
+          {"stage_first_step", cursor_.first}, {"stage_t0", cursor_.t0},
+          {"stage_changes", cursor_.changes}, {"alpha", alpha_},
+          {"core_present", core_present_}, {"lining_installed", lining_installed_},
+          {"report", report_}, {"last_checkpoint", engine_.step_count()}};
+}
+
+void StageRunner::restore(const nlohmann::json& s) {
+  cursor_.index = s.at("stage_index").get<std::size_t>();
+  cursor_.started = s.at("stage_started").get<bool>();
+  cursor_.first = s.at("stage_first_step").get<long>();
+  cursor_.t0 = s.at("stage_t0").get<double>();
+  cursor_.changes = s.at("stage_changes");
+  alpha_ = s.at("alpha").get<double>();
+  core_present_ = s.at("core_present").get<bool>();
+  lining_installed_ = s.at("lining_installed").get<bool>();
+  report_ = s.at("report");
+  last_checkpoint_ = s.at("last_checkpoint").get<long>();
 }
 
 }  // namespace rockfdem::workflows

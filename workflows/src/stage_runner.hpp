@@ -1,9 +1,18 @@
 // The explicit construction stages of a tunnel run, in the scene's order.
-// Each stage changes the model (soften the core, install the lining, remove
-// the core) and then steps to its own stop criterion (unbalanced-force
-// ratio, step cap, simulated time), writing history rows and frames.
+// Each stage changes the model (soften the core, install the lining or the
+// bolts, remove the core, grout) and then steps to its own stop criterion
+// (unbalanced-force ratio, step cap, simulated time), writing history rows
+// and frames.
+//
+// Checkpoints: a cursor (stage index, the stage's first step and time, the
+// changes it made) and the runner's flags make its state(); restore() puts
+// them back, and run_all() then continues the stage where it stopped.
+// Output chunks end on multiples of the stage's every_steps counted from
+// the stage's first step, so a restarted run outputs at the same steps as
+// an uninterrupted one.
 #pragma once
 
+#include <functional>
 #include <nlohmann/json.hpp>
 #include <vector>
 
@@ -23,19 +32,35 @@ class StageRunner {
   StageRunner(fdem::Engine& engine, const mesh::Mesh& m, const insitu::InsituField& handoff,
               const Scene& scene, const CommandLine& cli, RunOutputs& out,
               const std::vector<Monitor>& monitors, fdem::BoltPlan& bolts, int grout_material);
-  void run(const StageSpec& stage, PhaseTimer& timer);
+  /// Called to write a checkpoint: every `every` steps (at the next output
+  /// step; 0: never) and when a signal interrupts the run.
+  void set_checkpoint(long every, std::function<void()> save);
+  /// Runs the stages from the cursor to the end. Throws Interrupted (after
+  /// a checkpoint and a last history row) when SIGINT or SIGTERM arrives.
+  void run_all(PhaseTimer& timer);
   /// One entry per stage run: kind, steps, simulated time, final ratio, converged.
   const nlohmann::json& report() const { return report_; }
   bool core_present() const { return core_present_; }
+  nlohmann::json state() const;
+  void restore(const nlohmann::json& state);
 
  private:
+  struct Cursor {
+    std::size_t index = 0;  ///< stage in scene.stages
+    bool started = false;   ///< the stage's changes are made; it is stepping
+    long first = 0;         ///< the stage's first step
+    double t0 = 0;          ///< the simulated time at its start
+    nlohmann::json changes = nlohmann::json::object();
+  };
+  void run(const StageSpec& stage, PhaseTimer& timer);
   nlohmann::json apply(const StageSpec& stage);
   /// grout: steps until `trigger` crack elements are broken (within the
   /// stage's step cap), then re-joins the broken ones with grout.
   nlohmann::json grout(const StageSpec& stage, PhaseTimer& timer);
   /// Steps in output chunks until the stage's criterion; returns converged.
-  bool step_until(const StageSpec& stage, long first, double t0, PhaseTimer& timer,
-                  long broken_target);
+  bool step_until(const StageSpec& stage, PhaseTimer& timer, long broken_target);
+  /// Steps `n` times unless a signal arrives; false when one did.
+  bool advance(long n);
   void set_zone(int zone, bool active, fdem::ActivationReference ref);
   /// Core stiffness factor relative to the full rock (0 once removed).
   double support_ratio() const { return core_present_ ? alpha_ : 0.0; }
@@ -52,6 +77,10 @@ class StageRunner {
   double alpha_;
   bool core_present_;
   bool lining_installed_;
+  Cursor cursor_;
+  long checkpoint_every_ = 0;
+  long last_checkpoint_ = 0;  ///< step of the last checkpoint (or of the start)
+  std::function<void()> save_checkpoint_;
   nlohmann::json report_ = nlohmann::json::array();
 };
 

@@ -15,6 +15,9 @@ struct CommandLine {
   std::vector<std::string> overrides;  ///< --set section.key=value
   bool quiet = false;
   bool force = false;    ///< overwrite another scene's results in the output directory
+  long checkpoint_every = -1;  ///< steps between checkpoints; -1: the scene's output.checkpoint_every
+  std::string restart;         ///< checkpoint to continue from; empty: start afresh
+  bool force_dt = false;       ///< accept an engine.dt above the stability limit
   bool help = false;
   bool version = false;
   bool scene_reference = false;

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <array>
+#include <cstdint>
 #include <map>
 #include <string>
 #include <vector>
@@ -64,13 +65,19 @@ struct StageSpec {
   long trigger_broken = 0;  ///< grout: broken crack elements that trigger grouting
 };
 
-/// Rockbolts (seed sec. 2.2): one steel and layout for all, each bolt a
-/// segment from its head on the excavation boundary into the rock.
-struct BoltSettings {
+/// The steel of one kind of bolt (seed sec. 2.2).
+struct SteelSettings {
   double diameter = 0.025, row_spacing = 1;
   double young = 200e9, yield_strength = 400e6, ultimate_strength = 500e6;
   double tangent_modulus = 2e9, shear_yield_strength = 240e6, shear_fracture_energy = 1e4;
+};
+
+/// Rockbolts and cables (long bolts of strand, the seed's simplification),
+/// each a segment from its head on the excavation boundary into the rock.
+struct BoltSettings {
+  SteelSettings bolt, cable;
   std::vector<std::array<double, 4>> segments;  ///< (x0, y0, x1, y1) per bolt, fans expanded
+  std::vector<std::uint8_t> is_cable;           ///< per segment
 };
 
 /// Grout: the bolt-rock bond and what re-joins broken cracks when grouting.
@@ -83,6 +90,7 @@ struct OutputSettings {
   int every_steps = 1000;
   bool vtk = true;
   bool plots = true;
+  long checkpoint_every = 0;  ///< steps between checkpoints; 0: none
 };
 
 struct Scene {
@@ -98,6 +106,8 @@ struct Scene {
   GroutSettings grout;
   OutputSettings output;
   std::string canonical;  ///< the validated scene as TOML (overrides applied), for hashing and records
+  /// canonical without output.checkpoint_every: what a checkpoint must match
+  std::string restart_key;
 };
 
 /// Reads and validates a scene file; `overrides` are "section.key=value" strings.

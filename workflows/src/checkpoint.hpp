@@ -1,0 +1,44 @@
+// Checkpoint files of a tunnel run: `rockfdem run --checkpoint-every N`
+// writes OUTDIR/checkpoints/checkpoint_<step>.rfck, keeping the newest two;
+// `rockfdem run --restart FILE` continues from one.
+//
+// Layout (native byte order; a checkpoint is read back on the machine kind
+// that wrote it):
+//   "RFDMCKPT"  u32 format version  u64 scene key (FNV-1a of the scene
+//   without output.checkpoint_every)  u64 n + n bytes: the run's state as
+//   JSON (stage cursor, history rows, frames, bolt installation)
+//   u64 n + n bytes: Engine::save_state()  u64 FNV-1a of everything before
+//
+// Written atomically (temp file, fsync, rename): a run killed while writing
+// leaves the previous checkpoints intact.
+#pragma once
+
+#include <cstdint>
+#include <nlohmann/json.hpp>
+#include <string>
+
+namespace rockfdem::workflows {
+
+struct Scene;
+
+struct Checkpoint {
+  nlohmann::json run;        ///< the workflow's state (stage_runner, run_outputs)
+  std::string engine_state;  ///< Engine::save_state() bytes
+};
+
+constexpr std::uint32_t kCheckpointVersion = 1;
+
+/// FNV-1a 64 of the scene's canonical text (the key a checkpoint records).
+std::uint64_t scene_key(const Scene& scene);
+
+/// Writes OUTDIR/checkpoints/checkpoint_<step>.rfck and removes all but the
+/// newest two (and temporary files of an interrupted write). Returns the path.
+std::string write_checkpoint(const std::string& output_dir, long step, const Scene& scene,
+                             const Checkpoint& checkpoint);
+
+/// Reads and verifies a checkpoint written for `scene`. Throws InputError
+/// naming the file for a missing, truncated or corrupt file, another format
+/// version or another scene.
+Checkpoint read_checkpoint(const std::string& path, const Scene& scene);
+
+}  // namespace rockfdem::workflows
