@@ -23,7 +23,6 @@
 #pragma once
 
 #include <array>
-#include <iosfwd>
 #include <cstdint>
 #include <memory>
 #include <string>
@@ -210,8 +209,6 @@ class Engine {
   PhaseTimes phase_times() const;
   /// Bytes held by the engine's arrays.
   std::size_t memory_bytes() const;
-  void save_state(std::ostream& out) const;
-  void load_state(std::istream& in);
 
  private:
   void check_reversal();
