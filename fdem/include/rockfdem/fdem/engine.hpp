@@ -24,6 +24,7 @@
 
 #include <array>
 #include <cstdint>
+#include <iosfwd>
 #include <memory>
 #include <string>
 #include <vector>
@@ -209,6 +210,20 @@ class Engine {
   PhaseTimes phase_times() const;
   /// Bytes held by the engine's arrays.
   std::size_t memory_bytes() const;
+
+  // --- Checkpoint ------------------------------------------------------------
+  /// Writes the whole mutable state (binary, native byte order) so that an
+  /// Engine built from the same ModelInput and given load_state() continues
+  /// bit for bit as this one would, with any thread count.
+  void save_state(std::ostream& out) const;
+  /// Restores a state written by save_state(). Throws InputError when the
+  /// stream is truncated, corrupt, from another engine format version or from
+  /// a model of another layout (model_fingerprint() differs).
+  void load_state(std::istream& in);
+  /// FNV-1a 64 over the model's static layout (node, triangle, crack counts,
+  /// triangle nodes, materials' constants as built from the ModelInput; also
+  /// crack nodes, mesh positions and tagged edges: docs/engine.md).
+  std::uint64_t model_fingerprint() const;
 
  private:
   void check_reversal();

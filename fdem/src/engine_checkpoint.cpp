@@ -1,0 +1,228 @@
+// The engine's checkpoint: which members are state (saved), which are the
+// model (fingerprinted: built from the ModelInput and never changed) and
+// which are neither (derived, scratch or a setting). Every member of every
+// engine record appears below exactly once, and every list is checked
+// against its record's member count at compile time: a new member fails
+// the build here until it is listed. Format and framing:
+// checkpoint_format.hpp.
+//
+// To add a member: one line in its record's list (ar.state / ar.model /
+// ar.skip, and the count in that list's ROCKFDEM_CHECKPOINT_MEMBERS; the
+// value records' each_member lists count themselves), and
+// kCheckpointVersion + 1 when the saved bytes change.
+#include <istream>
+#include <ostream>
+
+#include "checkpoint_format.hpp"
+#include "engine_impl.hpp"
+
+// A member count, with what to do when it changes.
+#define ROCKFDEM_CHECKPOINT_MEMBERS(Record, n)                                    \
+  static_assert(member_count<Record>() == (n), #Record                            \
+                " gained or lost a member: classify it in engine_checkpoint.cpp " \
+                "(state, model or skip) and update this count")
+
+namespace rockfdem::fdem {
+namespace detail {
+
+// --- Value records (inside state or model members): all of their members ---
+
+template <class Ar>
+void fields(Ar& ar, Material& m) {
+  each_member(ar, m, m.density, m.young, m.poisson, m.tensile_strength, m.cohesion, m.friction_deg,
+              m.residual_friction_deg, m.gf_I, m.gf_II, m.normal_penalty, m.tangential_penalty,
+              m.damping_ratio, m.crack_law, m.yield_strength, m.ultimate_strength,
+              m.shear_yield_strength);
+}
+
+template <class Ar>
+void fields(Ar& ar, SolidConstants& s) {
+  each_member(ar, s, s.mu, s.lambda, s.rho, s.cp, s.cs);
+}
+
+template <class Ar>
+void fields(Ar& ar, BoundaryRecord& r) {
+  each_member(ar, r, r.x, r.y, r.vx, r.vy, r.cxx, r.cxy, r.cyy);
+}
+
+template <class Ar>
+void fields(Ar& ar, NodalLoad& l) {
+  each_member(ar, l, l.node, l.fx, l.fy);
+}
+
+template <class Ar>
+void fields(Ar& ar, TagNodes& t) {
+  each_member(ar, t, t.tag, t.nodes);
+}
+
+template <class Ar>
+void fields(Ar& ar, DampingSettings& s) {
+  each_member(ar, s, s.local, s.mass_proportional);
+}
+
+template <class Ar>
+void fields(Ar& ar, ContactSettings& s) {
+  each_member(ar, s, s.enabled, s.penalty, s.buffer, s.damping_ratio, s.friction);
+}
+
+// --- Engine records: each member classified -------------------------------------
+
+template <class Ar>
+void fields(Ar& ar, Nodes& n) {
+  ROCKFDEM_CHECKPOINT_MEMBERS(Nodes, 10);
+  ar.tag("NODE");
+  ar.state(n.pos);
+  ar.state(n.vel);
+  ar.model(n.mesh_pos);
+  ar.state(n.mass);  // rebuilt only when masses_dirty: saved as they are
+  ar.state(n.inv_mass);
+  ar.state(n.fext);
+  ar.state(n.bc);
+  ar.model(n.vertex);
+  ar.model(n.slot_start);
+  ar.model(n.slot_index);
+}
+
+template <class Ar>
+void fields(Ar& ar, Triangles& t) {
+  ROCKFDEM_CHECKPOINT_MEMBERS(Triangles, 8);
+  ar.tag("TRIS");
+  ar.model(t.nodes);
+  ar.state(t.ref_inv);  // set_active(..., kCurrent) re-references
+  ar.state(t.area0);
+  ar.model(t.eta);  // from the initial shape, set once
+  ar.state(t.alpha);
+  ar.state(t.sigma0);
+  ar.model(t.material);
+  ar.state(t.active);
+}
+
+template <class Ar>
+void fields(Ar& ar, Cracks& c) {
+  ROCKFDEM_CHECKPOINT_MEMBERS(Cracks, 9);
+  ar.tag("CRAK");
+  ar.model(c.nodes);
+  ar.model(c.tri);
+  ar.state(c.damage);
+  ar.state(c.material);
+  ar.state(c.state);
+  ar.state(c.mode);
+  ar.state(c.active);
+  ar.state(c.broken_step);
+  ar.state(c.offset);
+}
+
+template <class Ar>
+void fields(Ar& ar, ContactData& c) {
+  ROCKFDEM_CHECKPOINT_MEMBERS(ContactData, 26);
+  ar.tag("CONT");
+  ar.state(c.settings);
+  ar.state(c.penalty);  // set_contact may come after construction: all of it is state
+  ar.state(c.buffer);
+  ar.state(c.mu);
+  ar.state(c.edge_nbr);
+  ar.state(c.edge_crack);
+  ar.state(c.candidates);
+  ar.state(c.component);
+  ar.state(c.boxes);
+  ar.state(c.watch_nodes);
+  ar.state(c.watch_pos);
+  ar.state(c.pairs);  // in their canonical order, not detected again
+  ar.state(c.old_pairs);
+  ar.state(c.friction);  // the tangential springs
+  ar.state(c.old_friction);
+  ar.state(c.pair_force);
+  ar.state(c.gather_tri);
+  ar.state(c.gather_start);
+  ar.state(c.gather_entry);
+  ar.skip(c.grid);  // scratch: every detection rewrites it before reading it
+  ar.state(c.dirty);
+  ar.state(c.topology_dirty);
+  ar.state(c.detections);
+  ar.state(c.steps_with_pairs);
+  ar.state(c.steps_skipped);
+  ar.state(c.touching);
+}
+
+template <class Ar>
+void fields(Ar& ar, EngineData& d) {
+  ROCKFDEM_CHECKPOINT_MEMBERS(EngineData, 26);  // reversal and gravity count twice
+  fields(ar, d.nodes);
+  fields(ar, d.tris);
+  fields(ar, d.cracks);
+  ar.tag("MATS");
+  ar.model(d.solids);
+  ar.skip(d.crack_laws);  // derived from materials
+  ar.model(d.materials);
+  ar.tag("BNDY");
+  ar.state(d.bc_records);
+  ar.model(d.edges);
+  ar.model(d.vertex_node_start);
+  ar.model(d.vertex_nodes);
+  ar.state(d.loads);
+  ar.state(d.tag_nodes);
+  ar.tag("STEP");
+  ar.state(d.masses_dirty);
+  ar.state(d.slots);  // the last step's forces: node_force(), reactions, ratios
+  ar.state(d.block_partial);
+  ar.state(d.reversal);
+  ar.state(d.damping);
+  ar.state(d.gravity);
+  ar.state(d.contact_on);
+  fields(ar, d.contact);
+  ar.state(d.dt);
+  ar.state(d.step);
+  ar.state(d.time);
+  ar.skip(d.threads);  // a setting, not state: a restart may use another count
+}
+
+/// Engine::Impl is private to Engine: deduced here, never named.
+template <class Ar, class Impl>
+void impl_fields(Ar& ar, Impl& im) {
+  ROCKFDEM_CHECKPOINT_MEMBERS(Impl, 9);
+  fields(ar, im.d);
+  ar.tag("IMPL");
+  ar.skip(im.times);  // timings of this process: a restarted engine times its own steps
+  ar.state(im.dt_safety);
+  ar.state(im.critical_dt);  // the cached limit, as the uninterrupted run has it
+  ar.state(im.auto_dt);
+  ar.state(im.forced_dt);
+  ar.state(im.reversals);
+  ar.state(im.prestress_pending);
+  ar.state(im.prestress_clipped);
+}
+
+}  // namespace detail
+
+// --- Engine -------------------------------------------------------------------------
+
+std::uint64_t Engine::model_fingerprint() const {
+  detail::ModelHasher h;
+  detail::impl_fields(h, *impl_);
+  return h.value();
+}
+
+void Engine::save_state(std::ostream& out) const {
+  detail::CheckpointWriter w;
+  detail::impl_fields(w, *impl_);  // the writer only reads
+  detail::write_checkpoint(out, model_fingerprint(), w.bytes());
+}
+
+void Engine::load_state(std::istream& in) {
+  const std::string file = detail::read_checkpoint(in);
+  const std::uint64_t theirs = detail::checkpoint_fingerprint(file), ours = model_fingerprint();
+  if (theirs != ours)
+    throw InputError("fdem: checkpoint belongs to another model (fingerprint " +
+                     detail::hex64(theirs) + ", this engine's is " + detail::hex64(ours) +
+                     "); load it into an Engine built from the same ModelInput");
+  // Read into a copy: the model members and the thread count stay this
+  // engine's, and a failure leaves the engine as it was.
+  Impl next = *impl_;
+  detail::CheckpointReader r(file, detail::kCheckpointHeaderBytes,
+                             file.size() - detail::kCheckpointChecksumBytes);
+  detail::impl_fields(r, next);
+  r.finish();
+  *impl_ = std::move(next);
+}
+
+}  // namespace rockfdem::fdem
