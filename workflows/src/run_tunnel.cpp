@@ -124,6 +124,8 @@ int run_tunnel(const Scene& scene, const CommandLine& cli) {
   const bool restart = !cli.restart.empty();
   const Checkpoint resume = restart ? read_checkpoint(cli.restart, scene) : Checkpoint{};
   prepare_output_dir(cli.output_dir, scene, cli.force);
+  // A fresh run's checkpoints must not mix with an earlier run's.
+  if (!restart) std::filesystem::remove_all(output_path(cli.output_dir, "checkpoints"));
   RunSummary summary(scene, active_threads());
   RunOutputs out(scene, cli, summary);
 
