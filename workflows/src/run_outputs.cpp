@@ -221,12 +221,16 @@ void RunOutputs::bolt_outputs(const fdem::Engine& e, const fdem::BoltPlan& bolts
   }
   nlohmann::json list = nlohmann::json::array();
   for (std::size_t b = 0; b < bolts.specs.size(); ++b) {
-    std::string csv = "position_m,steel_axial_stress_Pa,force_per_bolt_N,triangle\n";
+    // force_per_bolt_N is the seed's plane idealisation (a strip of width d
+    // per metre of row, times s_b); bar_force_N is the steel stress on the
+    // round bar's section, pi d^2 / 4, the force a pull test would read.
+    std::string csv = "position_m,steel_axial_stress_Pa,force_per_bolt_N,bar_force_N,triangle\n";
+    const double bar_area = M_PI * bolts.specs[b].bolt.diameter * bolts.specs[b].bolt.diameter / 4;
     double peak_stress = 0, peak_force = 0;
-    char line[160];
+    char line[200];
     for (const fdem::BoltSample& p : fdem::bolt_axial_profile(e, bolts, int(b))) {
-      std::snprintf(line, sizeof line, "%.6g,%.8g,%.8g,%d\n", p.position, p.steel_stress,
-                    p.force_per_bolt, p.triangle);
+      std::snprintf(line, sizeof line, "%.6g,%.8g,%.8g,%.8g,%d\n", p.position, p.steel_stress,
+                    p.force_per_bolt, p.steel_stress * bar_area, p.triangle);
       csv += line;
       if (std::abs(p.steel_stress) > std::abs(peak_stress)) peak_stress = p.steel_stress;
       if (std::abs(p.force_per_bolt) > std::abs(peak_force)) peak_force = p.force_per_bolt;
@@ -242,6 +246,7 @@ void RunOutputs::bolt_outputs(const fdem::Engine& e, const fdem::BoltPlan& bolts
                     {"end", {bolt.b[0], bolt.b[1]}},
                     {"peak_axial_stress_Pa", peak_stress},
                     {"peak_force_N", peak_force},
+                    {"peak_bar_force_N", peak_stress * bar_area},
                     {"yielding", c.yielding},
                     {"broken", c.broken},
                     {"grout_broken", c.grout_broken}});
