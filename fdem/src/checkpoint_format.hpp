@@ -40,7 +40,9 @@ class Fnv1a {
  public:
   void add(const void* data, std::size_t n) {
     const auto* p = static_cast<const unsigned char*>(data);
-    for (std::size_t i = 0; i < n; ++i) h_ = (h_ ^ p[i]) * 1099511628211ull;
+    std::uint64_t h = h_;  // a local: the bytes may alias h_, which would pin it to memory
+    for (std::size_t i = 0; i < n; ++i) h = (h ^ p[i]) * 1099511628211ull;
+    h_ = h;
   }
   std::uint64_t value() const { return h_; }
 
@@ -57,9 +59,10 @@ constexpr bool kRawBytes =
 
 // --- Member count of a record -----------------------------------------------
 // The largest N for which T{x_1, ..., x_N} compiles, with x convertible to
-// anything: the number of members (a C array counts once per element). The
-// member lists assert it, so a member added to an engine record fails the
-// build until it is listed as state, model or skip.
+// anything: the number of members (a C array counts once per element; the
+// records must stay aggregates). The member lists assert it, so a member
+// added to an engine record fails the build until it is listed as state,
+// model or skip.
 
 struct AnyMember {
   template <class T>

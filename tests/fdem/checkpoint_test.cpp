@@ -16,6 +16,7 @@
 #include <sstream>
 #include <string>
 #include <tuple>
+#include <vector>
 
 #include "checkpoint_format.hpp"
 #include "test_models.hpp"
@@ -25,10 +26,6 @@ namespace {
 
 constexpr int kBoltSteel = 1, kGrout = 2;
 constexpr long kSave = 600, kEnd = 1200;  // first cracks break near step 500
-// Restarts of the chained run: some fall on a step with stage controls
-// (applied before the save, so dirty flags and pending rebuilds are saved),
-// the others between them (so the contact detection is clean at some).
-constexpr long kRestarts[] = {450, kSave, kSave + 1, 900, 1100};
 
 ModelInput scenario(int threads) {
   Material rock = test::rock();
@@ -108,8 +105,9 @@ void stage(Engine& e, long s) {
   }
 }
 
-/// Steps to `to`, the stage controls of each step before it.
-void advance(Engine& e, long to) {
+/// Steps to `to`, calling stage(e, s) before each step s.
+template <class Stage>
+void advance(Engine& e, long to, Stage&& stage) {
   while (e.step_count() < to) {
     stage(e, e.step_count());
     e.step();
@@ -131,7 +129,7 @@ void load(Engine& e, const std::string& bytes) {
 const std::string& saved_at_kSave() {
   static const std::string bytes = [] {
     Engine e(scenario(1));
-    advance(e, kSave);
+    advance(e, kSave, stage);
     return save(e);
   }();
   return bytes;
@@ -192,62 +190,111 @@ Figures figures(const Engine& e) {
   return f;
 }
 
-/// Runs to kEnd; at each restart step its stage controls are applied, then
-/// `at_restart` sees (and may replace) the engine, then the step is taken.
-template <class F>
-Engine drive(Engine e, F&& at_restart) {
-  for (long k : kRestarts) {
-    advance(e, k);
-    stage(e, k);
-    at_restart(k, e);
-    e.step();
-  }
-  advance(e, kEnd);
-  return e;
-}
-
-// Run A goes straight through; run B restarts from a saved state at each of
-// kRestarts in a fresh engine of the other thread count (2, 1, 2, ...).
-// Every reported figure must agree exactly at each restart and at the end,
-// and so must the whole state: the checkpoint holds no timings, so the two
-// runs' checkpoints are the same bytes. The save at kSave is checked to hold
-// broken cracks, touching contact pairs with friction, a damaged bolt-steel
-// crack and clipped pre-stress points, so that a state left out would show.
-TEST(Checkpoint, restart_continues_bit_for_bit_with_another_thread_count) {
+/// Runs a model straight through with 1 thread (A), and again (B)
+/// restarted at each of `restarts` from its saved state in a fresh engine of
+/// the other thread count (2, 1, 2, ...). At a restart that step's stage
+/// controls come before the save, so pending rebuilds and dirty flags are
+/// saved too. Every figure must agree at each restart and at `end`, and so
+/// must the whole state: the checkpoint holds no timings, so the two runs
+/// write the same bytes. Returns A's figures at the restarts and at the end.
+template <class Input, class Stage>
+std::map<long, Figures> expect_restarts_match(Input&& input, const std::vector<long>& restarts,
+                                              long end, Stage&& stage) {
+  auto drive = [&](Engine e, auto&& at_restart) {
+    for (long k : restarts) {
+      advance(e, k, stage);
+      stage(e, k);
+      at_restart(k, e);
+      e.step();
+    }
+    advance(e, end, stage);
+    return e;
+  };
   std::map<long, Figures> at;
   std::map<long, std::string> state_at;
-  const Engine a = drive(Engine(scenario(1)), [&](long k, Engine& e) {
+  const Engine a = drive(Engine(input(1)), [&](long k, Engine& e) {
     at[k] = figures(e);
     state_at[k] = save(e);
-    if (k != kSave) return;
-    EXPECT_GT(at[k].broken(), 0) << "nothing broke by the save";
-    EXPECT_GT(at[k].touching, 0) << "no contact pair touches at the save";
-    double bolt_damage = 0;
-    for (std::size_t c = 0; c < e.n_cracks(); c += 5) bolt_damage += e.crack_damage(c);
-    EXPECT_GT(bolt_damage, 0.0) << "no bolt-steel crack element yielded by the save";
-    EXPECT_GT(at[k].clipped, 0) << "no crack point was clipped by the pre-stress";
   });
   int threads = 2;
-  const Engine b = drive(Engine(scenario(threads)), [&](long k, Engine& e) {
+  const Engine b = drive(Engine(input(threads)), [&](long k, Engine& e) {
     EXPECT_EQ(figures(e), at[k]) << "before the save at " << k;
     const std::string state = save(e);
     EXPECT_TRUE(state == state_at[k]) << "the two runs' states differ at " << k;
     threads = 3 - threads;
-    Engine restarted(scenario(threads));
+    Engine restarted(input(threads));
     load(restarted, state);
     EXPECT_EQ(restarted.threads(), threads) << "the thread count is a setting, not state";
     EXPECT_EQ(figures(restarted), at[k]) << "right after the load at " << k;
     e = std::move(restarted);
   });
-  const Figures end_a = figures(a), end_b = figures(b);
+  at[end] = figures(a);
+  EXPECT_EQ(figures(b), at[end]) << "at the end";
+  EXPECT_TRUE(save(b) == save(a)) << "the restarted run's final state differs";
+  return at;
+}
+
+// The fracturing scenario restarted at five steps, two of them right after
+// stage changes. The save at kSave is checked to hold broken cracks,
+// touching contact pairs with friction, clipped pre-stress points and a
+// damaged bolt-steel crack, so that a state left out would show.
+TEST(Checkpoint, restart_continues_bit_for_bit_with_another_thread_count) {
+  const auto at = expect_restarts_match(scenario, {450, kSave, kSave + 1, 900, 1100}, kEnd, stage);
+  const Figures& f = at.at(kSave);
   std::printf(
       "at step %ld: %ld broken, %ld pairs, %ld touching, %ld pre-stress points "
       "clipped; at the end: %s, %ld broken\n",
-      kSave, at[kSave].broken(), at[kSave].pairs, at[kSave].touching, at[kSave].clipped,
-      end_a.hash.c_str(), end_a.broken());
-  EXPECT_EQ(end_b.hash, end_a.hash);
-  EXPECT_EQ(end_b, end_a);
-  EXPECT_TRUE(save(b) == save(a)) << "the restarted run's final state differs";
+      kSave, f.broken(), f.pairs, f.touching, f.clipped, at.at(kEnd).hash.c_str(),
+      at.at(kEnd).broken());
+  EXPECT_GT(f.broken(), 0) << "nothing broke by the save";
+  EXPECT_GT(f.touching, 0) << "no contact pair touches at the save";
+  EXPECT_GT(f.clipped, 0) << "no crack point was clipped by the pre-stress";
+  Engine e(scenario(1));
+  load(e, saved_at_kSave());
+  double bolt_damage = 0;
+  for (std::size_t c = 0; c < e.n_cracks(); c += 5) bolt_damage += e.crack_damage(c);
+  EXPECT_GT(bolt_damage, 0.0) << "no bolt-steel crack element yielded by the save";
+}
+
+/// A block pressed (0.5 MPa) onto a fixed block, friction angle 20 deg; the
+/// upper block is made of crack-jointed triangles (which stay intact), so
+/// that its outline's neighbours are told apart by their crack components.
+ModelInput pressed_blocks(int threads) {
+  Material m = test::rock();
+  m.residual_friction_deg = 20;
+  ModelInput in = test::two_blocks(0.0, m);
+  for (std::size_t t = 2 * (in.triangles.size() / 3); t < in.triangles.size(); ++t)
+    in.fracture[t] = 1;
+  BoundaryCondition press;
+  press.tag = kTagTop + 10;
+  press.pressure = 0.5e6;
+  in.boundary_conditions.push_back(press);
+  in.contact.enabled = true;
+  in.threads = threads;
+  return in;
+}
+
+/// Throws the upper block sideways at 5 m/s before the first step.
+void throw_sideways(Engine& e, long s) {
+  if (s != 0) return;
+  for (std::size_t t = 2 * (e.n_triangles() / 3); t < e.n_triangles(); ++t)
+    for (int n : e.triangle_nodes(t))
+      e.set_node_state(n, e.positions()[2 * n], e.positions()[2 * n + 1], 5.0, 0.0);
+}
+
+// The block slides, decelerated by friction, and sticks. No crack breaks,
+// so contact is detected again only when the block has drifted: a restart
+// must bring back the candidates, watched positions, pairs and friction
+// springs as they were, not detect them afresh.
+TEST(Checkpoint, sliding_contact_restarts_with_its_springs_and_detection_state) {
+  const long end = 3000;
+  const auto at = expect_restarts_match(pressed_blocks, {200, 900, 901, 2000}, end, throw_sideways);
+  for (const auto& [k, f] : at)
+    std::printf("step %ld: touching %ld, detections %ld, kinetic %.6g\n", k, f.touching,
+                f.detections, f.kinetic);
+  EXPECT_EQ(at.at(end).broken(), 0);
+  EXPECT_GT(at.at(900).touching + at.at(2000).touching, 0);
+  EXPECT_GT(at.at(end).detections, at.at(901).detections) << "no detection by drift after 901";
 }
 
 /// Rewrites the trailing checksum to match the contents: a forged file that
