@@ -212,6 +212,18 @@ void RunOutputs::restore(const nlohmann::json& s, const std::string& from_dir) {
   if (frame_ > 0) pvd_.write();
 }
 
+void RunOutputs::lining_outputs(const fdem::Engine& e, const mesh::Mesh& m) {
+  long bonds = 0, broken = 0;
+  for (std::size_t c = 0; c < e.n_cracks(); ++c) {
+    const auto t = e.crack_triangles(c);
+    if ((m.zone[t[0]] == mesh::kLining) == (m.zone[t[1]] == mesh::kLining)) continue;
+    ++bonds;
+    broken += e.crack_state(c) == fdem::CrackState::kBroken;
+  }
+  if (bonds > 0)
+    summary_.json()["lining"] = {{"interface_cracks", bonds}, {"interface_broken", broken}};
+}
+
 void RunOutputs::bolt_outputs(const fdem::Engine& e, const fdem::BoltPlan& bolts) {
   auto& j = summary_.json();
   j["counts"]["bolts"] = bolts.specs.size();
@@ -284,6 +296,7 @@ void RunOutputs::finish(const fdem::Engine& e, const mesh::Mesh& m,
   grc.push_back({{"support_pressure_ratio", 0.0},
                  {"vault_settlement_mm", j["monitors"]["vault_settlement_mm"]}});
   j["ground_reaction_curve"] = grc;
+  lining_outputs(e, m);
   j["history_stages"] = stage_names_;  // history.csv's "stage" column indexes this list
   if (scene_.output.plots) plots(e, m);
   timer.stamp("output");

@@ -48,6 +48,8 @@ class RunOutputs {
   coupling::VtkGrid frame_grid(const fdem::Engine& e, const mesh::Mesh& m) const;
   /// bolt_NN.csv (axial stress and force along each bolt) and summary "bolts".
   void bolt_outputs(const fdem::Engine& e, const fdem::BoltPlan& bolts);
+  /// summary "lining": the lining-rock crack elements and how many broke.
+  void lining_outputs(const fdem::Engine& e, const mesh::Mesh& m);
   /// Mean engine displacement of the outer boundary (the rigid translation).
   std::array<double, 2> boundary_translation(const fdem::Engine& e) const;
   /// Monitor displacement from the in-situ state (implicit part + engine increment).

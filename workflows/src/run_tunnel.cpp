@@ -152,8 +152,13 @@ int run_tunnel(const Scene& scene, const CommandLine& cli) {
   }
   const insitu::InsituField& handoff = fields.back();
   fdem::ModelInput in = engine_input(scene, m, handoff);
-  const int grout = int(in.materials.size());
+  SupportMaterials support;
+  support.grout = int(in.materials.size());
   in.materials.push_back(grout_material(scene));
+  if (scene.materials.count("lining")) {
+    support.lining_interface = int(in.materials.size());
+    in.materials.push_back(lining_interface_material(scene));
+  }
   fdem::BoltPlan bolts;  // marks bolt triangles and allows fracture there
   if (!scene.bolts.segments.empty()) bolts = fdem::plan_bolts(in, bolt_specs(scene));
   fdem::Engine engine = make_engine(in, scene, cli.force_dt);
@@ -176,7 +181,7 @@ int run_tunnel(const Scene& scene, const CommandLine& cli) {
   const std::vector<Monitor> monitors = tunnel_monitors(scene.mesh.tunnel, m, engine);
   out.begin_history(monitors, m);
   out.set_bolts(&bolts);
-  StageRunner stages(engine, m, handoff, scene, cli, out, monitors, bolts, grout);
+  StageRunner stages(engine, m, handoff, scene, cli, out, monitors, bolts, support);
   if (restart) {
     out.restore(resume.run.at("outputs"), run_dir_of(cli.restart));
     stages.restore(resume.run.at("stages"));

@@ -265,17 +265,23 @@ SteelSettings read_steel(const Reader& r, const std::string& section) {
   return b;
 }
 
+BondSettings read_bond(const Reader& r, const std::string& section) {
+  BondSettings g;
+  g.young = r.number(section + ".young");
+  g.tensile_strength = r.number(section + ".tensile_strength");
+  g.cohesion = r.number(section + ".cohesion");
+  g.friction_angle = r.number(section + ".friction_angle");
+  g.fracture_energy_I = r.number(section + ".fracture_energy_I");
+  g.fracture_energy_II = r.number(section + ".fracture_energy_II");
+  return g;
+}
+
 void read_bolts(const Reader& r, Scene& s) {
   BoltSettings& b = s.bolts;
   b.bolt = read_steel(r, "bolts");
   b.cable = read_steel(r, "cables");
-  GroutSettings& g = s.grout;
-  g.young = r.number("grout.young");
-  g.tensile_strength = r.number("grout.tensile_strength");
-  g.cohesion = r.number("grout.cohesion");
-  g.friction_angle = r.number("grout.friction_angle");
-  g.fracture_energy_I = r.number("grout.fracture_energy_I");
-  g.fracture_energy_II = r.number("grout.fracture_energy_II");
+  s.grout = read_bond(r, "grout");
+  s.lining_interface = read_bond(r, "lining_interface");
   struct Found {
     std::string key;
     std::array<double, 4> seg;

@@ -243,15 +243,27 @@ std::vector<KeySpec> build_schema() {
     s.push_back(positive(p + "shear_fracture_energy", "J/m^2", "1e4",
                          "Steel shear fracture energy GfII."));
   }
-  // [grout]: bolt-rock bond and the grouting of broken cracks
-  s.push_back(positive("grout.young", "Pa", "10e9", "Grout modulus (sets its crack penalty)."));
-  s.push_back(positive("grout.tensile_strength", "Pa", "1e6", "Grout tensile strength."));
-  s.push_back(positive("grout.cohesion", "Pa", "2e6", "Grout cohesion."));
-  s.push_back(number("grout.friction_angle", "deg", "30", 0, false, 90, true,
-                     "Grout friction angle."));
-  s.push_back(positive("grout.fracture_energy_I", "J/m^2", "20", "Grout mode I fracture energy."));
-  s.push_back(positive("grout.fracture_energy_II", "J/m^2", "100",
-                       "Grout mode II fracture energy."));
+  // [grout] (the bolt-rock bond and what re-joins broken cracks) and
+  // [lining_interface] (the shotcrete-rock bond: adhesion 0.1-1.3 MPa measured
+  // in situ, Malmgren, Nordlund and Rolund 2005, TUST 20:33-48).
+  struct BondDefaults {
+    const char *section, *what, *young, *ft, *c, *phi, *gf1, *gf2;
+  };
+  for (const BondDefaults& k :
+       {BondDefaults{"grout", "Grout", "10e9", "1e6", "2e6", "30", "20", "100"},
+        BondDefaults{"lining_interface", "Shotcrete-rock bond", "5e8", "0.5e6", "1e6", "35", "10",
+                     "50"}}) {
+    const std::string p = std::string(k.section) + ".", what = k.what;
+    s.push_back(positive(p + "young", "Pa", k.young,
+                         what + ": modulus setting its crack penalty (penalty_factor x young)."));
+    s.push_back(positive(p + "tensile_strength", "Pa", k.ft, what + ": tensile strength."));
+    s.push_back(positive(p + "cohesion", "Pa", k.c, what + ": cohesion."));
+    s.push_back(number(p + "friction_angle", "deg", k.phi, 0, false, 90, true,
+                       what + ": friction angle."));
+    s.push_back(positive(p + "fracture_energy_I", "J/m^2", k.gf1, what + ": mode I fracture energy."));
+    s.push_back(positive(p + "fracture_energy_II", "J/m^2", k.gf2,
+                         what + ": mode II fracture energy."));
+  }
   // [[bolt]] and [[bolt_fan]]
   KeySpec point = number("bolt[].start", "m", "", -kInf, false, kInf, false,
                          "Head of the bolt, [x, y] (on the excavation boundary).");

@@ -1,5 +1,7 @@
 #include "stage_inputs.hpp"
 
+#include <cstdio>
+
 #include "rockfdem/error.hpp"
 
 namespace rockfdem::workflows {
@@ -40,10 +42,11 @@ std::map<int, fdem::Material> engine_materials(const Scene& s) {
   return out;
 }
 
-fdem::Material grout_material(const Scene& s) {
-  const GroutSettings& g = s.grout;
+namespace {
+
+fdem::Material bond_material(const BondSettings& g, double density, const Scene& s) {
   fdem::Material m;
-  m.density = s.materials.at("rock").density;
+  m.density = density;
   m.young = g.young;
   m.poisson = 0.25;
   m.tensile_strength = g.tensile_strength;
@@ -53,6 +56,16 @@ fdem::Material grout_material(const Scene& s) {
   m.gf_II = g.fracture_energy_II;
   m.damping_ratio = s.engine.damping_ratio;
   return m;
+}
+
+}  // namespace
+
+fdem::Material grout_material(const Scene& s) {
+  return bond_material(s.grout, s.materials.at("rock").density, s);
+}
+
+fdem::Material lining_interface_material(const Scene& s) {
+  return bond_material(s.lining_interface, s.materials.at("rock").density, s);
 }
 
 namespace {
@@ -121,12 +134,17 @@ fdem::Engine make_engine(fdem::ModelInput in, const Scene& scene, bool force_dt)
   in.dt = 0;  // built with the automatic step, then given the scene's
   fdem::Engine engine(in);
   if (dt <= 0) return engine;
-  try {
-    engine.set_dt(dt, force_dt ? fdem::DtCheck::kForce : fdem::DtCheck::kRefuseAboveLimit);
-  } catch (const InputError& e) {
-    throw InputError(scene.source + ": key 'engine.dt' = " + std::to_string(dt) + ": " +
-                     e.what() + "; pass --force-dt to run with it anyway");
+  const double limit = engine.critical_dt();
+  if (dt > limit && !force_dt) {
+    char msg[400];
+    std::snprintf(msg, sizeof msg,
+                  "%s: key 'engine.dt' = %g s: above the stability limit %.6g s of this mesh "
+                  "and its penalties; allowed 0 < dt <= %.6g s (engine.dt = 0 takes "
+                  "engine.dt_safety = %g of it), or pass --force-dt to run with it anyway",
+                  scene.source.c_str(), dt, limit, limit, scene.engine.dt_safety);
+    throw InputError(msg);
   }
+  engine.set_dt(dt, force_dt ? fdem::DtCheck::kForce : fdem::DtCheck::kRefuseAboveLimit);
   return engine;
 }
 

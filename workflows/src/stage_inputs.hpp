@@ -19,6 +19,9 @@ std::map<int, fdem::Material> engine_materials(const Scene& scene);
 /// The grout as an engine material (rock law with the grout's strengths).
 fdem::Material grout_material(const Scene& scene);
 
+/// The shotcrete-rock bond as an engine material ([lining_interface]).
+fdem::Material lining_interface_material(const Scene& scene);
+
 /// The scene's bolts as the engine's bolt records.
 std::vector<fdem::BoltSpec> bolt_specs(const Scene& scene);
 

@@ -14,15 +14,30 @@ StageRunner::StageRunner(fdem::Engine& engine, const mesh::Mesh& m,
                          const insitu::InsituField& handoff, const Scene& scene,
                          const CommandLine& cli, RunOutputs& out,
                          const std::vector<Monitor>& monitors, fdem::BoltPlan& bolts,
-                         int grout_material)
+                         SupportMaterials materials)
     : engine_(engine), mesh_(m), scene_(scene), cli_(cli), out_(out), monitors_(monitors),
-      bolts_(bolts), grout_material_(grout_material),
+      bolts_(bolts), materials_(materials),
       handoff_alpha_(handoff.alpha), alpha_(handoff.alpha), core_present_(handoff.alpha > 0),
       lining_installed_(handoff.lining_installed) {}
 
 void StageRunner::set_zone(int zone, bool active, fdem::ActivationReference ref) {
   for (std::size_t t = 0; t < mesh_.n_triangles(); ++t)
     if (mesh_.zone[t] == zone) engine_.set_active(t, active, ref);
+}
+
+long StageRunner::bond_lining() {
+  if (materials_.lining_interface < 0) return 0;
+  long n = 0;
+  for (std::size_t c = 0; c < engine_.n_cracks(); ++c) {
+    const auto t = engine_.crack_triangles(c);
+    const bool a = mesh_.zone[t[0]] == mesh::kLining, b = mesh_.zone[t[1]] == mesh::kLining;
+    if (a == b) continue;
+    // Sprayed onto the rock as it is now: the bond starts intact where the
+    // two faces are, whatever the rock's convergence so far.
+    engine_.rejoin_crack(c, materials_.lining_interface);
+    ++n;
+  }
+  return n;
 }
 
 nlohmann::json StageRunner::apply(const StageSpec& stage) {
@@ -44,6 +59,7 @@ nlohmann::json StageRunner::apply(const StageSpec& stage) {
     for (std::size_t t = 0; t < mesh_.n_triangles(); ++t)
       if (mesh_.zone[t] == mesh::kLining) engine_.set_stiffness_factor(t, 1.0);
     lining_installed_ = true;
+    done = {{"interface_cracks", bond_lining()}};
   } else if (stage.kind == "remove_core") {
     set_zone(mesh::kCore, false, fdem::ActivationReference::kKeep);
     // A ring never installed is ground still to be excavated.
@@ -112,7 +128,7 @@ nlohmann::json StageRunner::grout(const StageSpec& stage, PhaseTimer& timer) {
   if (!triggered) return done;
   const fdem::CrackSelector select =
       bolts_.specs.empty() ? fdem::CrackSelector{} : fdem::excluding_bolt_steel(engine_, bolts_, {});
-  const fdem::GroutingResult g = fdem::grout_broken_cracks(engine_, grout_material_, select);
+  const fdem::GroutingResult g = fdem::grout_broken_cracks(engine_, materials_.grout, select);
   done["rejoined"] = g.count;
   done["broken_after"] = engine_.broken_counts().total();
   std::string csv = "crack,x,y\n";

@@ -27,11 +27,18 @@
 
 namespace rockfdem::workflows {
 
+/// Engine materials the support stages assign to crack elements.
+struct SupportMaterials {
+  int grout = -1;             ///< re-joins broken cracks (grout stage)
+  int lining_interface = -1;  ///< lining-rock crack elements at installation
+};
+
 class StageRunner {
  public:
   StageRunner(fdem::Engine& engine, const mesh::Mesh& m, const insitu::InsituField& handoff,
               const Scene& scene, const CommandLine& cli, RunOutputs& out,
-              const std::vector<Monitor>& monitors, fdem::BoltPlan& bolts, int grout_material);
+              const std::vector<Monitor>& monitors, fdem::BoltPlan& bolts,
+              SupportMaterials materials);
   /// Called to write a checkpoint: every `every` steps (at the next output
   /// step; 0: never) and when a signal interrupts the run.
   void set_checkpoint(long every, std::function<void()> save);
@@ -62,6 +69,9 @@ class StageRunner {
   /// Steps `n` times unless a signal arrives; false when one did.
   bool advance(long n);
   void set_zone(int zone, bool active, fdem::ActivationReference ref);
+  /// Re-joins the crack elements between the lining and the rock with the
+  /// interface's bond, intact where they are; returns how many.
+  long bond_lining();
   /// Core stiffness factor relative to the full rock (0 once removed).
   double support_ratio() const { return core_present_ ? alpha_ : 0.0; }
 
@@ -72,7 +82,7 @@ class StageRunner {
   RunOutputs& out_;
   const std::vector<Monitor>& monitors_;
   fdem::BoltPlan& bolts_;
-  int grout_material_;
+  SupportMaterials materials_;
   double handoff_alpha_;
   double alpha_;
   bool core_present_;

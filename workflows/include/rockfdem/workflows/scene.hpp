@@ -80,11 +80,13 @@ struct BoltSettings {
   std::vector<std::uint8_t> is_cable;           ///< per segment
 };
 
-/// Grout: the bolt-rock bond and what re-joins broken cracks when grouting.
-struct GroutSettings {
+/// A bond modelled by crack elements: the grout (bolt-rock bond, and what
+/// re-joins broken cracks when grouting) or the shotcrete-rock interface.
+struct BondSettings {
   double young = 10e9, tensile_strength = 1e6, cohesion = 2e6, friction_angle = 30;
   double fracture_energy_I = 20, fracture_energy_II = 100;
 };
+using GroutSettings = BondSettings;
 
 struct OutputSettings {
   int every_steps = 1000;
@@ -104,6 +106,7 @@ struct Scene {
   std::vector<StageSpec> stages;  ///< explicit stages after the implicit one (tunnels)
   BoltSettings bolts;
   GroutSettings grout;
+  BondSettings lining_interface;  ///< re-joins the lining-rock crack elements at installation
   OutputSettings output;
   std::string canonical;  ///< the validated scene as TOML (overrides applied), for hashing and records
   /// canonical without output.checkpoint_every: what a checkpoint must match
