@@ -11,17 +11,6 @@
 namespace rockfdem::fdem {
 namespace {
 
-/// Appends `b` to `a` as a separate body (vertices not shared), tags + offset.
-void append_body(ModelInput& a, const ModelInput& b, int tag_offset) {
-  const int nv = static_cast<int>(a.x.size());
-  a.x.insert(a.x.end(), b.x.begin(), b.x.end());
-  a.y.insert(a.y.end(), b.y.begin(), b.y.end());
-  for (auto t : b.triangles) a.triangles.push_back({t[0] + nv, t[1] + nv, t[2] + nv});
-  a.material.insert(a.material.end(), b.material.begin(), b.material.end());
-  a.fracture.insert(a.fracture.end(), b.fracture.begin(), b.fracture.end());
-  for (auto e : b.edges) a.edges.push_back({e.a + nv, e.b + nv, e.tag + tag_offset});
-}
-
 /// Sum of the node forces of triangle t's nodes (each node once).
 std::array<double, 2> triangle_force(const Engine& e, int t) {
   std::array<double, 2> f{0, 0};
@@ -47,16 +36,11 @@ ContactSettings contact_on(double penalty = 0) {
 // up on T, down on C (0.1%; the ends add O(delta / (x2 - x1))). Apart by a
 // gap: no force. Forces and moments balance exactly.
 TEST(Contact, two_triangles_pressed_together_match_the_potential_closed_form) {
-  const double L = 0.1, H = 0.08, x1 = 0.03, x2 = 0.07, hc = 0.05, delta = 2e-6;
+  using P = test::PressedTriangles;
+  const double L = P::L, H = P::H, x1 = P::x1, x2 = P::x2, hc = P::hc, delta = 2e-6;
   const double p = 3e10;
   for (double gap : {-delta, delta}) {  // -delta: overlap by delta
-    const double top = -gap;
-    ModelInput in;
-    in.x = {0, L, L / 2, x1, (x1 + x2) / 2, x2};
-    in.y = {0, 0, H, top, top - hc, top};
-    in.triangles = {{0, 1, 2}, {3, 4, 5}};
-    in.material = {0, 0};
-    in.materials = {test::rock()};
+    ModelInput in = P::model(-gap);
     in.contact = contact_on(p);
     Engine e(in);
     e.step();
@@ -78,29 +62,6 @@ TEST(Contact, two_triangles_pressed_together_match_the_potential_closed_form) {
   }
 }
 
-/// Lower block 0.2 x 0.05 (bottom fixed), upper block 0.1 x 0.05 above it
-/// with a gap; tags of the upper block are offset by 10.
-ModelInput two_blocks(double gap, const Material& m, int nx_upper = 4) {
-  RectangleSpec lower;
-  lower.width = 0.2;
-  lower.height = 0.05;
-  lower.nx = 2 * nx_upper;
-  lower.ny = 2;
-  lower.fracture = false;
-  ModelInput in = structured_rectangle(lower, m);
-  RectangleSpec upper = lower;
-  upper.width = 0.1;
-  upper.nx = nx_upper;
-  upper.x0 = 0.05;
-  upper.y0 = 0.05 + gap;
-  append_body(in, structured_rectangle(upper, m), 10);
-  BoundaryCondition base;
-  base.tag = kTagBottom;
-  base.x = base.y = Constraint::kFixed;
-  in.boundary_conditions = {base};
-  return in;
-}
-
 double total_energy(const Engine& e) { return e.kinetic_energy() + e.strain_energy(); }
 
 // An elastic block thrown onto a fixed block at 1 m/s (no gravity, friction,
@@ -108,7 +69,7 @@ double total_energy(const Engine& e) { return e.kinetic_energy() + e.strain_ener
 // both blocks equals the initial kinetic energy within 2%.
 TEST(Contact, elastic_block_bounces_with_energy_conserved) {
   Material m = test::rock();
-  ModelInput in = two_blocks(1e-4, m);
+  ModelInput in = test::two_blocks(1e-4, m);
   in.contact = contact_on();
   in.contact.friction = false;
   in.threads = 1;
@@ -158,7 +119,7 @@ double upper_shift(const Engine& e, const std::vector<char>& upper) {
 double slide(double theta_deg, double friction_deg, double T, double& expected) {
   Material m = test::rock();
   m.residual_friction_deg = friction_deg;
-  ModelInput in = two_blocks(0.0, m);
+  ModelInput in = test::two_blocks(0.0, m);
   const double th = theta_deg * 3.14159265358979323846 / 180, g = 9.81;
   in.gravity_x = g * std::sin(th);
   in.gravity_y = -g * std::cos(th);
