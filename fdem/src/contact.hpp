@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "contact_grid.hpp"
+#include "energy.hpp"
 #include "rockfdem/fdem/model_input.hpp"
 
 namespace rockfdem::fdem::detail {
@@ -39,6 +40,7 @@ struct ContactData {
   std::vector<std::array<int, 2>> pairs, old_pairs;  ///< triangle ids, canonical order
   std::vector<double> friction, old_friction;         ///< 6 per pair: role x contactor edge
   std::vector<double> pair_force;                     ///< 12 per pair: A's corners, B's corners
+  std::vector<double> energy_partial;  ///< 2 per block of kPairBlock pairs: friction, damping
   std::vector<int> gather_tri, gather_start, gather_entry;  ///< CSR triangle -> 2 pair + side
   GridScratch grid;
   bool dirty = true;           ///< re-detect before the next contact pass
@@ -57,6 +59,21 @@ void contact_detect(EngineData& d);
 
 /// One step of contact; see the header comment.
 void contact_forces(EngineData& d);
+
+/// Pairs per block of the pair loop (dynamic scheduling; the energy sums
+/// are partials per block, added in block order).
+constexpr long kPairBlock = 64;
+
+/// Stored energy of pair q at `at`: the penalty potential
+/// p int (phi_A + phi_B) dA over the overlap plus the friction springs'
+/// F^2 / (2 k_t) (contact_energy.cpp).
+double contact_pair_energy(const EngineData& d, std::size_t q, const Placement& at);
+/// The same for triangles ta, tb with friction springs `springs` (6, or nullptr).
+double contact_pair_energy(const EngineData& d, int ta, int tb, const double* springs,
+                           const Placement& at);
+
+/// Sum over all pairs (0 with contact off).
+double contact_energy(const EngineData& d, const Placement& at);
 
 /// Square of the largest angular frequency contact can add: two roles of
 /// normal stiffness 3 p / H per unit length on a node of the thinnest

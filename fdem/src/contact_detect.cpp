@@ -174,15 +174,32 @@ void build_boxes(EngineData& d) {
 }
 
 /// Friction springs of pairs found again keep their state (both lists are
-/// sorted, so one merge walk).
-void carry_friction(ContactData& c) {
+/// sorted, so one merge walk). Returns the stored energy of the old pairs
+/// not found again minus that of the new pairs: what the detection itself
+/// changed. New pairs can start overlapping (the faces of a crack element
+/// broken in compression); dropped ones are mostly apart, but a re-joined
+/// crack's faces stop being a pair wherever they are.
+double carry_friction(EngineData& d) {
+  ContactData& c = d.contact;
   c.friction.assign(6 * c.pairs.size(), 0.0);
+  const Placement at = half_step_placement(d);
+  double change = 0.0;
   std::size_t o = 0;
   for (std::size_t i = 0; i < c.pairs.size(); ++i) {
-    while (o < c.old_pairs.size() && c.old_pairs[o] < c.pairs[i]) ++o;
-    if (o < c.old_pairs.size() && c.old_pairs[o] == c.pairs[i])
+    for (; o < c.old_pairs.size() && c.old_pairs[o] < c.pairs[i]; ++o)
+      change += contact_pair_energy(d, c.old_pairs[o][0], c.old_pairs[o][1],
+                                    &c.old_friction[6 * o], at);
+    if (o < c.old_pairs.size() && c.old_pairs[o] == c.pairs[i]) {
       std::copy_n(&c.old_friction[6 * o], 6, &c.friction[6 * i]);
+      ++o;
+    } else {
+      change -= contact_pair_energy(d, i, at);
+    }
   }
+  for (; o < c.old_pairs.size(); ++o)
+    change += contact_pair_energy(d, c.old_pairs[o][0], c.old_pairs[o][1],
+                                  &c.old_friction[6 * o], at);
+  return change;
 }
 
 /// CSR contact triangle -> (2 pair + side), in ascending pair order.
@@ -248,8 +265,12 @@ void contact_detect(EngineData& d) {
   c.pairs.resize(c.grid.found.size());
   for (std::size_t i = 0; i < c.pairs.size(); ++i)
     c.pairs[i] = {c.candidates[c.grid.found[i][0]], c.candidates[c.grid.found[i][1]]};
-  carry_friction(c);
+  // The broken faces' handover to contact: booked with the fracture energy
+  // that released the crack's compressive penalty (energy.hpp).
+  const double handover = carry_friction(d);
+  if (d.energy.started) d.energy.fracture += handover;
   c.pair_force.resize(12 * c.pairs.size());
+  c.energy_partial.resize(2 * ((c.pairs.size() + kPairBlock - 1) / kPairBlock));
   build_gather(d);
   c.watch_pos.resize(2 * c.watch_nodes.size());
   for (std::size_t i = 0; i < c.watch_nodes.size(); ++i) {

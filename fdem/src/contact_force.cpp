@@ -101,11 +101,16 @@ struct RoleParams {
   bool friction;
 };
 
+/// Energy dissipated by one pair in one step (energy.hpp).
+struct PairDissipation {
+  double friction = 0, damping = 0;
+};
+
 /// Contactor c's three edges against target t; adds the forces to fc, ft
 /// (6 each: corner x, y), updates the three friction springs. Returns true
 /// when some edge overlaps.
 bool role(const Corners& c, const Corners& t, const RoleParams& rp, double* spring, double* fc,
-          double* ft) {
+          double* ft, PairDissipation& loss) {
   const double two_a = (t.x[1] - t.x[0]) * (t.y[2] - t.y[0]) - (t.x[2] - t.x[0]) * (t.y[1] - t.y[0]);
   if (!(two_a > 0.0)) return false;
   const double inv2a = 1.0 / two_a;
@@ -144,14 +149,19 @@ bool role(const Corners& c, const Corners& t, const RoleParams& rp, double* spri
     double f_d = 0.0;  // normal damping, > 0 while approaching (v_r . n > 0)
     if (rp.damping > 0.0) {
       const double m = std::min(c.m[a], c.m[b]);
-      f_d = std::max(rp.damping * 2.0 * std::sqrt(k_n * m) * (vrx * nx + vry * ny), -f_ab);
+      const double v_n = vrx * nx + vry * ny;
+      f_d = std::max(rp.damping * 2.0 * std::sqrt(k_n * m) * v_n, -f_ab);
+      loss.damping += f_d * v_n * rp.dt;
     }
     double f_t = 0.0;
     if (rp.friction) {
-      f_t = spring[k] - k_n * (vrx * tx + vry * ty) * rp.dt;
+      const double trial = spring[k] - k_n * (vrx * tx + vry * ty) * rp.dt;
       const double cap = rp.mu * (f_ab + f_d);
-      f_t = std::clamp(f_t, -cap, cap);
+      f_t = std::clamp(trial, -cap, cap);
       spring[k] = f_t;
+      // Clipped: the slip beyond the spring's, (trial - f_t) / k_n, is
+      // plastic and dissipates f_t times it (return mapping).
+      if (f_t != trial) loss.friction += f_t * (trial - f_t) / k_n;
     }
     // Contactor: potential force at A, B plus the point force (F_t t - F_d n) at xi.
     const double px = f_t * tx - f_d * nx, py = f_t * ty - f_d * ny;
@@ -168,7 +178,8 @@ bool role(const Corners& c, const Corners& t, const RoleParams& rp, double* spri
 }
 
 /// Both roles of pair q; its 12 corner forces go to its own buffer.
-bool pair_forces(const EngineData& d, std::size_t q, double* spring, double* out) {
+bool pair_forces(const EngineData& d, std::size_t q, double* spring, double* out,
+                 PairDissipation& loss) {
   const ContactData& c = d.contact;
   const int ta = c.pairs[q][0], tb = c.pairs[q][1];
   Corners a, b;
@@ -190,8 +201,8 @@ bool pair_forces(const EngineData& d, std::size_t q, double* spring, double* out
   rp.dt = d.dt;
   rp.damping = c.settings.damping_ratio;
   rp.friction = c.settings.friction;
-  const bool t0 = role(a, b, rp, spring, out, out + 6);
-  const bool t1 = role(b, a, rp, spring + 3, out + 6, out);
+  const bool t0 = role(a, b, rp, spring, out, out + 6, loss);
+  const bool t1 = role(b, a, rp, spring + 3, out + 6, out, loss);
   return t0 || t1;
 }
 
@@ -244,20 +255,32 @@ void contact_forces(EngineData& d) {
   ++c.steps_with_pairs;
   long touching = 0;
   const long ng = static_cast<long>(c.gather_tri.size());
+  const long n_blocks = (np + kPairBlock - 1) / kPairBlock;
   double* slots = d.slots.data();
+  double* partial = c.energy_partial.data();
   // One parallel region for both loops (the barrier between them is the
   // for's), none at all for a handful of pairs.
 #pragma omp parallel num_threads(thread_count(d.threads)) if (np > 64)
   {
-#pragma omp for schedule(dynamic, 64) reduction(+ : touching)
-    for (long q = 0; q < np; ++q)
-      touching += pair_forces(d, q, &c.friction[6 * q], &c.pair_force[12 * q]);
+#pragma omp for schedule(dynamic, 1) reduction(+ : touching)
+    for (long b = 0; b < n_blocks; ++b) {
+      PairDissipation loss;
+      const long end = std::min(np, (b + 1) * kPairBlock);
+      for (long q = b * kPairBlock; q < end; ++q)
+        touching += pair_forces(d, q, &c.friction[6 * q], &c.pair_force[12 * q], loss);
+      partial[2 * b] = loss.friction;
+      partial[2 * b + 1] = loss.damping;
+    }
     // Gather: each contact triangle sums its pairs in ascending pair order
     // into its own force slots (rewritten by the triangle loop every step).
 #pragma omp for schedule(static)
     for (long g = 0; g < ng; ++g) gather_triangle(c, g, slots);
   }
   c.touching = touching;
+  for (long b = 0; b < n_blocks; ++b) {
+    d.energy.friction += partial[2 * b];
+    d.energy.contact_damping += partial[2 * b + 1];
+  }
 }
 
 }  // namespace rockfdem::fdem::detail

@@ -19,18 +19,57 @@ void zero_slots(double* s) {
   for (int k = 0; k < 8; ++k) s[k] = 0.0;
 }
 
-/// The three integration points of one element with law L.
+/// The three integration points of one element with law L; the damage
+/// histories are scalars so that they stay in registers.
 template <CrackLaw L>
 inline void law_points(const CrackConstants& k, const double o[3], const double s[3], double h,
-                       double inv_h, double* damage, CrackPoint p[3]) {
-  for (int i = 0; i < 3; ++i)
-    p[i] = L == CrackLaw::kBoltSteel ? bolt_steel_point(k, o[i], s[i], h, inv_h, damage[i])
-                                     : rock_point(k, o[i], s[i], h, inv_h, damage[i]);
+                       double inv_h, double& d0, double& d1, double& d2, CrackPoint p[3]) {
+  if (L == CrackLaw::kBoltSteel) {
+    p[0] = bolt_steel_point(k, o[0], s[0], h, inv_h, d0);
+    p[1] = bolt_steel_point(k, o[1], s[1], h, inv_h, d1);
+    p[2] = bolt_steel_point(k, o[2], s[2], h, inv_h, d2);
+  } else {
+    p[0] = rock_point(k, o[0], s[0], h, inv_h, d0);
+    p[1] = rock_point(k, o[1], s[1], h, inv_h, d1);
+    p[2] = rock_point(k, o[2], s[2], h, inv_h, d2);
+  }
 }
 
-/// Evaluates one element; returns true when it broke this step.
-inline bool crack_element(const EngineData& d, std::size_t c, double* damage, double* out,
-                          double& sum_a2, double& sum_b2) {
+/// Potential of the element's three points (Simpson weights h/6, 2h/3, h/6)
+/// at the damages `dmg`.
+inline double element_potential(const CrackConstants& k, const double o[3], const double s[3],
+                                double h, const double dmg[3]) {
+  return h / 6.0 *
+             (crack_point_potential(k, o[0], s[0], h, dmg[0]) +
+              crack_point_potential(k, o[2], s[2], h, dmg[2])) +
+         2.0 * h / 3.0 * crack_point_potential(k, o[1], s[1], h, dmg[1]);
+}
+
+/// Potential released when element c's damage grows from `before` to
+/// `after` (nullptr: the element broke, everything goes), evaluated where
+/// central differences put the change: at x(n-1/2) = x(n) - v(n-1/2) dt/2,
+/// between the last force that had the old damage and the first with the
+/// new (energy.hpp). Cold: only damage growth gets here.
+[[gnu::noinline, gnu::cold]] double released_potential(const EngineData& d, std::size_t c,
+                                                       const double before[3],
+                                                       const double* after) {
+  double os[6];
+  const Placement at{d.nodes.pos.data(), d.nodes.vel.data(), 0.5 * d.energy.last_dt};
+  const double h = crack_point_openings(d, c, at, os);
+  if (!d.cracks.offset.empty())
+    for (int i = 0; i < 6; ++i) os[i] -= d.cracks.offset[6 * c + i];
+  const double o[3] = {os[0], os[2], os[4]}, s[3] = {os[1], os[3], os[5]};
+  const CrackConstants& k = d.crack_laws[d.cracks.material[c]];
+  const double e_before = element_potential(k, o, s, h, before);
+  return after ? e_before - element_potential(k, o, s, h, after) : e_before;
+}
+
+/// Evaluates one element; returns true when it broke this step. Adds to
+/// `released` the potential the law released: phi(D_old) - phi(D_new) when
+/// damage grew, the whole phi(D_old) when the element broke.
+[[gnu::always_inline]] inline bool crack_element(const EngineData& d, std::size_t c,
+                                                double* damage, double* out, double& sum_a2,
+                                                double& sum_b2, double& released) {
   const int* nd = &d.cracks.nodes[4 * c];
   const double* p = d.nodes.pos.data();
   const double x0 = p[2 * nd[0]], y0 = p[2 * nd[0] + 1], x1 = p[2 * nd[1]], y1 = p[2 * nd[1] + 1];
@@ -52,22 +91,36 @@ inline bool crack_element(const EngineData& d, std::size_t c, double* damage, do
       s[i] -= off[2 * i + 1];
     }
   }
+  // The law raises a local copy; the history is written back only when it
+  // grew (rare), which is also when the energy ledger books the release.
+  const double before[3] = {damage[0], damage[1], damage[2]};
+  double d0 = before[0], d1 = before[1], d2 = before[2];
   CrackPoint pt[3];
   switch (k.law) {  // one dispatch per element; new laws add a case
     case CrackLaw::kBoltSteel:
-      law_points<CrackLaw::kBoltSteel>(k, o, s, h, inv_h, damage, pt);
+      law_points<CrackLaw::kBoltSteel>(k, o, s, h, inv_h, d0, d1, d2, pt);
       break;
     case CrackLaw::kRock:
     default:
-      law_points<CrackLaw::kRock>(k, o, s, h, inv_h, damage, pt);
+      law_points<CrackLaw::kRock>(k, o, s, h, inv_h, d0, d1, d2, pt);
       break;
   }
   const CrackPoint &p0 = pt[0], &pm = pt[1], &p1 = pt[2];
-  const int n_full = (damage[0] >= 1.0) + (damage[1] >= 1.0) + (damage[2] >= 1.0);
-  if (n_full >= 2) {
-    sum_a2 = p0.a * p0.a + pm.a * pm.a + p1.a * p1.a;
-    sum_b2 = p0.b * p0.b + pm.b * pm.b + p1.b * p1.b;
-    return true;
+  // Damage never decreases, so each difference is >= 0 and their sum is
+  // > 0 exactly when some point's damage grew. Only then can the element
+  // break (it is skipped once two points reach 1).
+  if ((d0 - before[0]) + (d1 - before[1]) + (d2 - before[2]) > 0.0) {
+    const double dn[3] = {d0, d1, d2};
+    const bool broke = (d0 >= 1.0) + (d1 >= 1.0) + (d2 >= 1.0) >= 2;
+    released += released_potential(d, c, before, broke ? nullptr : dn);
+    damage[0] = d0;
+    damage[1] = d1;
+    damage[2] = d2;
+    if (broke) {
+      sum_a2 = p0.a * p0.a + pm.a * pm.a + p1.a * p1.a;
+      sum_b2 = p0.b * p0.b + pm.b * pm.b + p1.b * p1.b;
+      return true;
+    }
   }
   const double w_end = h / 6.0, w_mid = h / 3.0;
   const double sn0 = w_end * p0.sigma + w_mid * pm.sigma, st0 = w_end * p0.tau + w_mid * pm.tau;
@@ -87,45 +140,32 @@ inline bool crack_element(const EngineData& d, std::size_t c, double* damage, do
 
 }  // namespace
 
-namespace {
-
-/// Potential of one point per unit length: integral of sigma do + tau ds
-/// along the undamaged curves, (2x - x^2) integrates to x^2 - x^3 / 3.
-double point_energy(const CrackConstants& k, double o, double s, double h) {
-  const double op = h * k.op_per_h;
-  double e;
-  if (o < 0.0) {
-    e = 0.5 * k.pn * o * o / h;
-  } else {
-    const double x = std::min(o / op, 1.0);
-    e = k.ft * op * (x * x - x * x * x / 3.0) + (o > op ? k.ft * (o - op) : 0.0);
-  }
-  const double fs = o < 0.0 ? k.c - k.pn * o / h * k.tan_phi : k.c;
-  const double sp = h * fs * k.two_over_pt, y = std::min(std::fabs(s) / sp, 1.0);
-  return e + fs * sp * (y * y - y * y * y / 3.0);
-}
-
-}  // namespace
-
-double crack_end_openings(const EngineData& d, std::size_t c, double out[4]) {
+double crack_end_openings(const EngineData& d, std::size_t c, const Placement& at,
+                          double out[4]) {
   const int* nd = &d.cracks.nodes[4 * c];
-  const double* p = d.nodes.pos.data();
-  const double tx = 0.5 * (p[2 * nd[1]] + p[2 * nd[2]] - p[2 * nd[0]] - p[2 * nd[3]]);
-  const double ty =
-      0.5 * (p[2 * nd[1] + 1] + p[2 * nd[2] + 1] - p[2 * nd[0] + 1] - p[2 * nd[3] + 1]);
+  double x[4], y[4];
+  for (int k = 0; k < 4; ++k) {
+    x[k] = at.x(nd[k]);
+    y[k] = at.y(nd[k]);
+  }
+  const double tx = 0.5 * (x[1] + x[2] - x[0] - x[3]), ty = 0.5 * (y[1] + y[2] - y[0] - y[3]);
   const double h = std::sqrt(tx * tx + ty * ty), ex = tx / h, ey = ty / h;
   for (int end = 0; end < 2; ++end) {
-    const double dx = p[2 * nd[end]] - p[2 * nd[3 - end]];
-    const double dy = p[2 * nd[end] + 1] - p[2 * nd[3 - end] + 1];
+    const double dx = x[end] - x[3 - end], dy = y[end] - y[3 - end];
     out[2 * end] = -dx * ey + dy * ex;
     out[2 * end + 1] = dx * ex + dy * ey;
   }
   return h;
 }
 
-double crack_point_openings(const EngineData& d, std::size_t c, double out[6]) {
+double crack_end_openings(const EngineData& d, std::size_t c, double out[4]) {
+  return crack_end_openings(d, c, Placement{d.nodes.pos.data(), d.nodes.vel.data(), 0.0}, out);
+}
+
+double crack_point_openings(const EngineData& d, std::size_t c, const Placement& at,
+                            double out[6]) {
   double ends[4];
-  const double h = crack_end_openings(d, c, ends);
+  const double h = crack_end_openings(d, c, at, ends);
   out[0] = ends[0];
   out[1] = ends[1];
   out[2] = 0.5 * (ends[0] + ends[2]);
@@ -135,16 +175,22 @@ double crack_point_openings(const EngineData& d, std::size_t c, double out[6]) {
   return h;
 }
 
-double crack_element_energy(const EngineData& d, std::size_t c) {
-  const double* dmg = &d.cracks.damage[3 * c];
-  if (!d.cracks.active[c] || dmg[0] > 0 || dmg[1] > 0 || dmg[2] > 0) return 0.0;
+double crack_point_openings(const EngineData& d, std::size_t c, double out[6]) {
+  return crack_point_openings(d, c, Placement{d.nodes.pos.data(), d.nodes.vel.data(), 0.0}, out);
+}
+
+double crack_element_energy(const EngineData& d, std::size_t c, const Placement& at) {
+  if (!d.cracks.active[c] || d.cracks.state[c] == std::uint8_t(CrackState::kBroken)) return 0.0;
   double os[6];
-  const double h = crack_point_openings(d, c, os);
+  const double h = crack_point_openings(d, c, at, os);
   if (!d.cracks.offset.empty())
     for (int i = 0; i < 6; ++i) os[i] -= d.cracks.offset[6 * c + i];
-  const CrackConstants& k = d.crack_laws[d.cracks.material[c]];
-  return h / 6.0 * (point_energy(k, os[0], os[1], h) + point_energy(k, os[4], os[5], h)) +
-         2.0 * h / 3.0 * point_energy(k, os[2], os[3], h);
+  const double o[3] = {os[0], os[2], os[4]}, s[3] = {os[1], os[3], os[5]};
+  return element_potential(d.crack_laws[d.cracks.material[c]], o, s, h, &d.cracks.damage[3 * c]);
+}
+
+double crack_element_energy(const EngineData& d, std::size_t c) {
+  return crack_element_energy(d, c, Placement{d.nodes.pos.data(), d.nodes.vel.data(), 0.0});
 }
 
 FailureMode classify_failure(double sum_a2, double sum_b2) {
@@ -156,32 +202,44 @@ FailureMode classify_failure(double sum_a2, double sum_b2) {
   return FailureMode::kMixed;
 }
 
+/// Fixed blocks of kEnergyBlock elements: the released potential is a
+/// deterministic block sum (energy.hpp).
 long crack_forces(EngineData& d) {
   const long nc = static_cast<long>(d.cracks.size());
+  const long n_blocks = (nc + kEnergyBlock - 1) / kEnergyBlock;
   double* slots = d.slots.data() + 2 * d.crack_slot0();
   double* damage = d.cracks.damage.data();
   std::uint8_t* state = d.cracks.state.data();
   const std::uint8_t* active = d.cracks.active.data();
+  double* partial = d.energy_partial.data();
   const auto step = static_cast<std::int32_t>(d.step);
   long n_broken = 0;
 #pragma omp parallel for schedule(static) num_threads(thread_count(d.threads)) \
     reduction(+ : n_broken)
-  for (long c = 0; c < nc; ++c) {
-    if (!active[c] || state[c] == std::uint8_t(CrackState::kBroken)) continue;
-    double sum_a2 = 0, sum_b2 = 0;
-    double* out = slots + 8 * c;
-    double* dmg = damage + 3 * c;
-    if (crack_element(d, c, dmg, out, sum_a2, sum_b2)) {
-      zero_slots(out);
-      state[c] = std::uint8_t(CrackState::kBroken);
-      d.cracks.mode[c] = std::uint8_t(classify_failure(sum_a2, sum_b2));
-      d.cracks.broken_step[c] = step;
-      ++n_broken;
-    } else if (state[c] == std::uint8_t(CrackState::kIntact) &&
-               (dmg[0] > 0.0 || dmg[1] > 0.0 || dmg[2] > 0.0)) {
-      state[c] = std::uint8_t(CrackState::kYielding);
+  for (long b = 0; b < n_blocks; ++b) {
+    double released = 0;
+    const long end = std::min(nc, (b + 1) * kEnergyBlock);
+    for (long c = b * kEnergyBlock; c < end; ++c) {
+      if (!active[c] || state[c] == std::uint8_t(CrackState::kBroken)) continue;
+      double sum_a2 = 0, sum_b2 = 0;
+      double* out = slots + 8 * c;
+      double* dmg = damage + 3 * c;
+      if (crack_element(d, c, dmg, out, sum_a2, sum_b2, released)) {
+        zero_slots(out);
+        state[c] = std::uint8_t(CrackState::kBroken);
+        d.cracks.mode[c] = std::uint8_t(classify_failure(sum_a2, sum_b2));
+        d.cracks.broken_step[c] = step;
+        ++n_broken;
+      } else if (state[c] == std::uint8_t(CrackState::kIntact) &&
+                 (dmg[0] > 0.0 || dmg[1] > 0.0 || dmg[2] > 0.0)) {
+        state[c] = std::uint8_t(CrackState::kYielding);
+      }
     }
+    partial[b] = released;
   }
+  double released = 0;
+  for (long b = 0; b < n_blocks; ++b) released += partial[b];
+  d.energy.fracture += released;
   return n_broken;
 }
 

@@ -12,16 +12,23 @@ namespace rockfdem::fdem::detail {
 /// inactive element's slots are zero. Returns the number broken this step.
 long crack_forces(EngineData& d);
 
-/// Stored energy of crack element c's undamaged branches (0 once damaged).
+/// Stored energy of crack element c: the Simpson-integrated potential of
+/// its law at its current damage (crack_point_potential), at `at` or at the
+/// current positions; 0 for a broken or inactive element.
+double crack_element_energy(const EngineData& d, std::size_t c, const Placement& at);
 double crack_element_energy(const EngineData& d, std::size_t c);
 
 /// Current (opening, slip) at end 0 and end 1 of element c, without
 /// offsets; returns the element length h.
 double crack_end_openings(const EngineData& d, std::size_t c, double out[4]);
+double crack_end_openings(const EngineData& d, std::size_t c, const Placement& at,
+                          double out[4]);
 
 /// Current (opening, slip) at end 0, the midpoint and end 1 of element c
 /// (the three integration points), without offsets; returns h.
 double crack_point_openings(const EngineData& d, std::size_t c, double out[6]);
+double crack_point_openings(const EngineData& d, std::size_t c, const Placement& at,
+                            double out[6]);
 
 /// Failure mode from the summed squared excursions at breakage: mode I when
 /// opening carries at least 90% of a^2 + b^2, mode II when slip does, else

@@ -20,6 +20,7 @@
 #include "contact.hpp"
 #include "crack_elements.hpp"
 #include "crack_prestress.hpp"
+#include "energy.hpp"
 #include "engine_impl.hpp"
 #include "node_update.hpp"
 #include "parallel.hpp"
@@ -57,6 +58,10 @@ void set_viscous_damping(detail::EngineData& d) {
     const double h = 2.0 * d.tris.area0[t] / longest;
     d.tris.eta[t] = m.damping_ratio * 2.0 * h * std::sqrt(m.young * m.density);
   }
+  // The energy ledger books each step's viscous force again with the next
+  // step's velocities (energy.hpp).
+  if (std::any_of(d.tris.eta.begin(), d.tris.eta.end(), [](double e) { return e > 0.0; }))
+    d.tris.viscous_stress.assign(3 * d.tris.size(), 0.0);
 }
 
 std::string fmt(double v) {
@@ -214,6 +219,7 @@ void Engine::step() {
     impl_->prestress_clipped = detail::prestress_cracks(d);
     impl_->prestress_pending = false;
   }
+  if (!d.energy.started) detail::start_ledger(d);
   const double t0 = omp_get_wtime();
   const long bad_tri = detail::triangle_forces(d);
   const double t1 = omp_get_wtime();
@@ -231,6 +237,7 @@ void Engine::step() {
   }
   const long bad_node = detail::node_update(d);
   impl_->times.nodes += omp_get_wtime() - t2;
+  d.energy.last_dt = d.dt;
   ++d.step;
   d.time += d.dt;
   if (bad_node >= 0) raise_bad_node(d, bad_node);
@@ -290,7 +297,12 @@ void Engine::set_stiffness_factor(std::size_t t, double alpha) {
   if (!(alpha >= 0 && alpha <= 1e3))
     throw InputError("fdem: stiffness factor " + fmt(alpha) + " for triangle " + std::to_string(t) +
                      " must lie in [0, 1000]");
-  impl_->d.tris.alpha[t] = alpha;
+  auto& d = impl_->d;
+  const detail::Placement at = detail::half_step_placement(d);
+  const double before = detail::triangle_stored_energy(d, t, at);
+  d.tris.alpha[t] = alpha;
+  detail::book(d, &detail::EnergyLedger::softening, before,
+               detail::triangle_stored_energy(d, t, at));
   impl_->critical_dt = -1;
 }
 
@@ -302,8 +314,17 @@ double Engine::stiffness_factor(std::size_t t) const {
 void Engine::set_active(std::size_t t, bool on, ActivationReference ref) {
   check_index(t, n_triangles(), "triangle");
   auto& d = impl_->d;
+  // Its strain energy and its contacts go (or its strain energy comes); its
+  // nodes' kinetic energy and its crack elements follow at the refresh.
+  const detail::Placement at = detail::half_step_placement(d);
+  double before = detail::triangle_stored_energy(d, t, at);
+  if (!on && d.tris.active[t]) before += detail::contact_energy_of_triangle(d, int(t), at);
   if (on && ref == ActivationReference::kCurrent) detail::set_reference_to_current(d, t);
   d.tris.active[t] = on ? 1 : 0;
+  if (!d.tris.viscous_stress.empty())
+    for (int k = 0; k < 3; ++k) d.tris.viscous_stress[3 * t + k] = 0.0;
+  detail::book(d, &detail::EnergyLedger::removed, before,
+               detail::triangle_stored_energy(d, t, at));
   d.masses_dirty = true;
   d.contact.topology_dirty = d.contact.dirty = true;  // free surfaces change
   impl_->critical_dt = -1;
@@ -341,12 +362,18 @@ void Engine::set_damping(const DampingSettings& damping) {
 void Engine::set_crack_material(std::size_t c, int material) {
   check_index(c, n_cracks(), "crack element");
   check_index(static_cast<std::size_t>(material), impl_->d.materials.size(), "material");
-  impl_->d.cracks.material[c] = static_cast<std::uint16_t>(material);
+  auto& d = impl_->d;
+  const detail::Placement at = detail::half_step_placement(d);
+  const double before = detail::crack_element_energy(d, c, at);
+  d.cracks.material[c] = static_cast<std::uint16_t>(material);
+  detail::book(d, &detail::EnergyLedger::removed, before, detail::crack_element_energy(d, c, at));
   impl_->critical_dt = -1;
 }
 
 void Engine::rejoin_crack(std::size_t c, int material) {
   set_crack_material(c, material);
+  const detail::Placement at = detail::half_step_placement(impl_->d);
+  const double before = detail::crack_element_energy(impl_->d, c, at);
   auto& cr = impl_->d.cracks;
   if (cr.offset.empty()) cr.offset.assign(6 * cr.size(), 0.0);
   detail::crack_point_openings(impl_->d, c, &cr.offset[6 * c]);
@@ -354,14 +381,21 @@ void Engine::rejoin_crack(std::size_t c, int material) {
   cr.state[c] = std::uint8_t(CrackState::kIntact);
   cr.mode[c] = std::uint8_t(FailureMode::kNone);
   cr.broken_step[c] = -1;
+  detail::book(impl_->d, &detail::EnergyLedger::removed, before,
+               detail::crack_element_energy(impl_->d, c, at));
   impl_->d.contact.topology_dirty = impl_->d.contact.dirty = true;
 }
 
 void Engine::set_initial_stress(std::size_t t, const std::array<double, 3>& stress) {
   check_index(t, n_triangles(), "triangle");
-  auto& s0 = impl_->d.tris.sigma0;
+  auto& d = impl_->d;
+  const detail::Placement at = detail::half_step_placement(d);
+  const double before = detail::triangle_stored_energy(d, t, at);
+  auto& s0 = d.tris.sigma0;
   if (s0.empty()) s0.assign(3 * n_triangles(), 0.0);
   for (int k = 0; k < 3; ++k) s0[3 * t + k] = stress[k];
+  detail::book(d, &detail::EnergyLedger::removed, before,
+               detail::triangle_stored_energy(d, t, at));
 }
 
 void Engine::set_contact(const ContactSettings& contact) {
@@ -370,9 +404,12 @@ void Engine::set_contact(const ContactSettings& contact) {
     throw InputError("fdem: contact penalty and buffer must be >= 0 (0 = default) and the "
                      "damping ratio in [0, 1]");
   auto& d = impl_->d;
+  const detail::Placement at = detail::half_step_placement(d);
+  const double before = detail::contact_energy(d, at);
   d.contact.settings = contact;
   d.contact_on = contact.enabled;
   if (contact.enabled) detail::contact_setup(d);
+  detail::book(d, &detail::EnergyLedger::removed, before, detail::contact_energy(d, at));
   impl_->critical_dt = -1;
 }
 
@@ -413,10 +450,14 @@ const std::vector<double>& Engine::node_mass() const {
 void Engine::set_node_state(std::size_t node, double x, double y, double vx, double vy) {
   check_index(node, n_nodes(), "node");
   auto& n = impl_->d.nodes;
+  const double before = impl_->d.energy.started ? detail::node_energy(impl_->d, node) : 0.0;
   n.pos[2 * node] = x;
   n.pos[2 * node + 1] = y;
   n.vel[2 * node] = vx;
   n.vel[2 * node + 1] = vy;
+  if (impl_->d.energy.started)
+    detail::book(impl_->d, &detail::EnergyLedger::removed, before,
+                 detail::node_energy(impl_->d, node));
   impl_->d.contact.dirty = true;  // a jump the drift check does not bound
 }
 

@@ -61,6 +61,12 @@ void fields(Ar& ar, DampingSettings& s) {
 }
 
 template <class Ar>
+void fields(Ar& ar, EnergyLedger& e) {
+  each_member(ar, e, e.started, e.last_dt, e.initial, e.external, e.viscous, e.nodal_damping,
+              e.contact_damping, e.absorbing, e.fracture, e.friction, e.softening, e.removed);
+}
+
+template <class Ar>
 void fields(Ar& ar, ContactSettings& s) {
   each_member(ar, s, s.enabled, s.penalty, s.buffer, s.damping_ratio, s.friction);
 }
@@ -85,7 +91,7 @@ void fields(Ar& ar, Nodes& n) {
 
 template <class Ar>
 void fields(Ar& ar, Triangles& t) {
-  ROCKFDEM_CHECKPOINT_MEMBERS(Triangles, 8);
+  ROCKFDEM_CHECKPOINT_MEMBERS(Triangles, 9);
   ar.tag("TRIS");
   ar.model(t.nodes);
   ar.state(t.ref_inv);  // set_active(..., kCurrent) re-references
@@ -95,6 +101,7 @@ void fields(Ar& ar, Triangles& t) {
   ar.state(t.sigma0);
   ar.model(t.material);
   ar.state(t.active);
+  ar.state(t.viscous_stress);  // the energy ledger books its work at the next step
 }
 
 template <class Ar>
@@ -114,7 +121,7 @@ void fields(Ar& ar, Cracks& c) {
 
 template <class Ar>
 void fields(Ar& ar, ContactData& c) {
-  ROCKFDEM_CHECKPOINT_MEMBERS(ContactData, 26);
+  ROCKFDEM_CHECKPOINT_MEMBERS(ContactData, 27);
   ar.tag("CONT");
   ar.state(c.settings);
   ar.state(c.penalty);  // set_contact may come after construction: all of it is state
@@ -142,11 +149,12 @@ void fields(Ar& ar, ContactData& c) {
   ar.state(c.steps_with_pairs);
   ar.state(c.steps_skipped);
   ar.state(c.touching);
+  ar.state(c.energy_partial);  // scratch, but sized with the pairs at detection
 }
 
 template <class Ar>
 void fields(Ar& ar, EngineData& d) {
-  ROCKFDEM_CHECKPOINT_MEMBERS(EngineData, 26);  // reversal and gravity count twice
+  ROCKFDEM_CHECKPOINT_MEMBERS(EngineData, 29);  // reversal and gravity count twice
   fields(ar, d.nodes);
   fields(ar, d.tris);
   fields(ar, d.cracks);
@@ -173,6 +181,9 @@ void fields(Ar& ar, EngineData& d) {
   ar.state(d.dt);
   ar.state(d.step);
   ar.state(d.time);
+  ar.state(d.dead_loads);
+  ar.state(d.energy_partial);  // scratch, kept for its size
+  ar.state(d.energy);         // the energy ledger: a restart's balance continues
   ar.skip(d.threads);  // a setting, not state: a restart may use another count
 }
 

@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "contact.hpp"
+#include "energy.hpp"
 #include "rockfdem/fdem/crack_law.hpp"
 #include "rockfdem/fdem/model_input.hpp"
 
@@ -45,6 +46,9 @@ struct Triangles {
   std::vector<double> eta;      ///< viscous damping coefficient [Pa s]
   std::vector<double> alpha;    ///< stiffness factor
   std::vector<double> sigma0;   ///< initial stress (sxx, syy, sxy); empty if none
+  std::vector<double> viscous_stress;  ///< dt/2 A alpha eta D of the last step (3 per
+                                       ///< triangle; empty without viscous damping): the energy
+                                       ///< ledger books its work with the next velocities
   std::vector<std::uint16_t> material;
   std::vector<std::uint8_t> active;
   std::size_t size() const { return area0.size(); }
@@ -103,13 +107,16 @@ struct EngineData {
   std::vector<NodalLoad> loads;
   std::vector<TagNodes> tag_nodes;
   bool masses_dirty = true;           ///< rebuild masses, fext, crack activity before stepping
+  bool dead_loads = false;            ///< some fext is not zero (gravity or boundary loads)
   std::vector<double> slots;          ///< interleaved fx, fy per slot
-  std::vector<double> block_partial;  ///< node loop: 2 partial sums per node block
+  std::vector<double> block_partial;  ///< node loop: kNodeSums partial sums per node block
+  std::vector<double> energy_partial;  ///< triangle and crack loops: one per kEnergyBlock
   double reversal[2] = {0, 0};        ///< sum m v_old.v_new, sum m v_old^2 (free nodes)
   DampingSettings damping;
   double gravity[2] = {0, 0};
   bool contact_on = false;  ///< ContactSettings::enabled
   ContactData contact;
+  EnergyLedger energy;  ///< accumulated energy terms (energy.hpp)
   double dt = 0;
   long step = 0;
   double time = 0;

@@ -14,6 +14,10 @@
 namespace rockfdem::fdem::detail {
 namespace {
 
+/// Partial sums per node block: reversal (2), external work, damping,
+/// absorbing dashpots.
+constexpr int kNodeSums = 5;
+
 inline double sign(double v) { return v > 0.0 ? 1.0 : (v < 0.0 ? -1.0 : 0.0); }
 
 void refresh_masses(EngineData& d) {
@@ -46,6 +50,7 @@ void refresh_external_forces(EngineData& d) {
     n.fext[2 * l.node] += l.fx;
     n.fext[2 * l.node + 1] += l.fy;
   }
+  d.dead_loads = d.gravity[0] != 0.0 || d.gravity[1] != 0.0 || !d.loads.empty();
 }
 
 /// Crack elements act only between two active triangles; an element that
@@ -67,21 +72,65 @@ void refresh_crack_activity(EngineData& d) {
 }  // namespace
 
 void refresh_nodes(EngineData& d) {
+  // Masses and crack activity change the kinetic and crack energies without
+  // work (a stage control): the energy ledger books the difference.
+  const double before = d.energy.started ? kinetic_and_crack_energy(d) : 0.0;
   refresh_masses(d);
   refresh_external_forces(d);
   refresh_crack_activity(d);
-  d.block_partial.assign(2 * ((d.nodes.size() + kNodeBlock - 1) / kNodeBlock), 0.0);
+  if (d.energy.started) book(d, &EnergyLedger::removed, before, kinetic_and_crack_energy(d));
+  d.block_partial.assign(kNodeSums * ((d.nodes.size() + kNodeBlock - 1) / kNodeBlock), 0.0);
+  const std::size_t blocks = std::max(d.tris.size(), d.cracks.size()) / kEnergyBlock + 1;
+  d.energy_partial.assign(blocks, 0.0);
   d.masses_dirty = false;
 }
 
-/// Nodes are processed in fixed blocks so that the velocity-reversal sums
-/// (free nodes only, sum v_old.v_new and sum |v_old|^2) are block partials added in block order:
-/// the same figure for any thread count.
-long node_update(EngineData& d) {
+namespace {
+
+/// Sums a block of the node loop hands back (reversal check and energy).
+struct NodeSums {
+  double dot = 0, kin = 0, external = 0, damping = 0, absorbing = 0;
+};
+
+/// Energy bookings of a node with a boundary record (rare, so out of line):
+/// a prescribed component's reaction turns v_old into the prescribed v_new
+/// against the element force f_el, so its work is
+/// m (v_new - v_old) (v_new + v_old) / 2 - f_el h (the platens' work; the
+/// dead load's is inside it), and the damping and dashpot it overrode did
+/// nothing; a free component books its dead load, dashpot and damping.
+[[gnu::noinline]] void boundary_node_work(const EngineData& d, long i, double vx0, double vy0,
+                                          double vx, double vy, bool free_x, bool free_y,
+                                          double cx, double cy, double lx, double ly,
+                                          NodeSums& sum) {
+  const double half_dt = 0.5 * d.dt;
+  const double hx = (vx0 + vx) * half_dt, hy = (vy0 + vy) * half_dt;
+  const double m = d.nodes.mass[i], gx = d.nodes.fext[2 * i], gy = d.nodes.fext[2 * i + 1];
+  double ex, ey;
+  node_force(d, i, ex, ey);  // element forces + dead load
+  sum.external += free_x ? gx * hx : m * (vx - vx0) * 0.5 * (vx + vx0) - (ex - gx) * hx;
+  sum.external += free_y ? gy * hy : m * (vy - vy0) * 0.5 * (vy + vy0) - (ey - gy) * hy;
+  sum.absorbing += (free_x ? cx * hx : 0.0) + (free_y ? cy * hy : 0.0);
+  sum.damping += (free_x ? lx * hx : 0.0) + (free_y ? ly * hy : 0.0);
+}
+
+/// First node in [begin, end) with a non-finite velocity, or -1 (a sum
+/// that overflowed from finite velocities).
+[[gnu::cold]] long first_non_finite(const Nodes& n, long begin, long end) {
+  for (long i = begin; i < end; ++i)
+    if (!std::isfinite(n.vel[2 * i] + n.vel[2 * i + 1])) return i;
+  return -1;
+}
+
+/// The node loop; kDamped (local or mass-proportional damping) and kLoaded
+/// (some dead load) are template arguments so that a run without them has
+/// no energy bookings left in its common path: only boundary-record nodes
+/// book there, in their own rare branch.
+template <bool kDamped, bool kLoaded>
+long node_loop(EngineData& d) {
   const long nn = static_cast<long>(d.nodes.size());
   const long n_blocks = (nn + kNodeBlock - 1) / kNodeBlock;
   Nodes& n = d.nodes;
-  const double dt = d.dt;
+  const double dt = d.dt, half_dt = 0.5 * d.dt;
   const double local = d.damping.local, cmass = d.damping.mass_proportional;
   const BoundaryRecord* rec = d.bc_records.data();
   double* partial = d.block_partial.data();
@@ -90,7 +139,7 @@ long node_update(EngineData& d) {
     reduction(min                                                              \
               : first_bad)
   for (long blk = 0; blk < n_blocks; ++blk) {
-    double dot = 0, kin = 0;
+    NodeSums sum;
     const long end = std::min(nn, (blk + 1) * kNodeBlock);
     for (long i = blk * kNodeBlock; i < end; ++i) {
       const double inv_m = n.inv_mass[i];
@@ -99,44 +148,92 @@ long node_update(EngineData& d) {
       node_force(d, i, fx, fy);
       const double vx0 = n.vel[2 * i], vy0 = n.vel[2 * i + 1];
       const int b = n.bc[i];
+      double cx = 0, cy = 0;  // dashpot
       if (b >= 0) {
-        fx -= rec[b].cxx * vx0 + rec[b].cxy * vy0;
-        fy -= rec[b].cxy * vx0 + rec[b].cyy * vy0;
+        cx = rec[b].cxx * vx0 + rec[b].cxy * vy0;
+        cy = rec[b].cxy * vx0 + rec[b].cyy * vy0;
+        fx -= cx;
+        fy -= cy;
       }
-      if (local > 0.0) {
-        fx -= local * std::fabs(fx) * sign(vx0);
-        fy -= local * std::fabs(fy) * sign(vy0);
-      }
-      if (cmass > 0.0) {
-        const double m = n.mass[i];
-        fx -= cmass * m * vx0;
-        fy -= cmass * m * vy0;
+      double lx = 0, ly = 0;  // local + mass-proportional damping
+      if (kDamped) {
+        if (local > 0.0) {
+          lx = local * std::fabs(fx) * sign(vx0);
+          ly = local * std::fabs(fy) * sign(vy0);
+          fx -= lx;
+          fy -= ly;
+        }
+        if (cmass > 0.0) {
+          const double m = n.mass[i];
+          const double mx = cmass * m * vx0, my = cmass * m * vy0;
+          fx -= mx;
+          fy -= my;
+          lx += mx;
+          ly += my;
+        }
       }
       double vx = vx0 + fx * inv_m * dt, vy = vy0 + fy * inv_m * dt;
       if (b >= 0) {
-        if (rec[b].x != Constraint::kFree) vx = rec[b].vx;
-        if (rec[b].y != Constraint::kFree) vy = rec[b].vy;
+        bool free_x = true, free_y = true;
+        if (rec[b].x != Constraint::kFree) vx = rec[b].vx, free_x = false;
+        if (rec[b].y != Constraint::kFree) vy = rec[b].vy, free_y = false;
+        boundary_node_work(d, i, vx0, vy0, vx, vy, free_x, free_y, cx, cy, lx, ly, sum);
+        if (!std::isfinite(vx + vy)) first_bad = i < first_bad ? i : first_bad;
       } else {  // unweighted: the unstable mode's sign flip shows without masses
-        dot += vx0 * vx + vy0 * vy;
-        kin += vx0 * vx0 + vy0 * vy0;
+        // A non-finite vx or vy makes this product, and the block's sum,
+        // non-finite (0 * inf is NaN too): the check after the block.
+        sum.dot += vx0 * vx + vy0 * vy;
+        sum.kin += vx0 * vx0 + vy0 * vy0;
+        if (kDamped) sum.damping += (lx * (vx0 + vx) + ly * (vy0 + vy)) * half_dt;
+        if (kLoaded)
+          sum.external += (n.fext[2 * i] * (vx0 + vx) + n.fext[2 * i + 1] * (vy0 + vy)) * half_dt;
       }
       n.vel[2 * i] = vx;
       n.vel[2 * i + 1] = vy;
       n.pos[2 * i] += vx * dt;
       n.pos[2 * i + 1] += vy * dt;
-      // A non-finite velocity is caught here; positions follow from it (and
-      // every node of an active triangle is checked again through J).
-      if (!std::isfinite(vx + vy)) first_bad = i < first_bad ? i : first_bad;
     }
-    partial[2 * blk] = dot;
-    partial[2 * blk + 1] = kin;
-  }
-  d.reversal[0] = d.reversal[1] = 0;
-  for (long blk = 0; blk < n_blocks; ++blk) {
-    d.reversal[0] += partial[2 * blk];
-    d.reversal[1] += partial[2 * blk + 1];
+    // Non-finite velocities of free nodes show in the block's dot product:
+    // one test per block instead of one per node; the block is searched only
+    // then. Positions follow from the velocities (and every node of an
+    // active triangle is checked again through J).
+    if (!std::isfinite(sum.dot)) {
+      const long bad = first_non_finite(n, blk * kNodeBlock, end);
+      if (bad >= 0 && bad < first_bad) first_bad = bad;
+    }
+    double* p = partial + kNodeSums * blk;
+    p[0] = sum.dot;
+    p[1] = sum.kin;
+    p[2] = sum.external;
+    p[3] = sum.damping;
+    p[4] = sum.absorbing;
   }
   return first_bad < nn ? first_bad : -1;
+}
+
+}  // namespace
+
+/// Nodes are processed in fixed blocks so that the velocity-reversal sums
+/// (free nodes only, sum v_old.v_new and sum |v_old|^2) and the energy sums
+/// are block partials added in block order: the same figures for any thread
+/// count. Energy (energy.hpp): each force's work is booked with the
+/// mid-step displacement h = (v_old + v_new) dt / 2 (boundary_node_work for
+/// nodes with a boundary record).
+long node_update(EngineData& d) {
+  const bool damped = d.damping.local > 0.0 || d.damping.mass_proportional > 0.0;
+  const long bad = damped ? (d.dead_loads ? node_loop<true, true>(d) : node_loop<true, false>(d))
+                          : (d.dead_loads ? node_loop<false, true>(d) : node_loop<false, false>(d));
+  const long n_blocks = (static_cast<long>(d.nodes.size()) + kNodeBlock - 1) / kNodeBlock;
+  const double* partial = d.block_partial.data();
+  double sum[kNodeSums] = {0, 0, 0, 0, 0};
+  for (long blk = 0; blk < n_blocks; ++blk)
+    for (int k = 0; k < kNodeSums; ++k) sum[k] += partial[kNodeSums * blk + k];
+  d.reversal[0] = sum[0];
+  d.reversal[1] = sum[1];
+  d.energy.external += sum[2];
+  d.energy.nodal_damping += sum[3];
+  d.energy.absorbing += sum[4];
+  return bad;
 }
 
 }  // namespace rockfdem::fdem::detail

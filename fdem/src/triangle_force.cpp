@@ -10,6 +10,7 @@
 // in-situ state is held as S0 (reference sec. 5).
 #include "triangle_force.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include "parallel.hpp"
@@ -24,13 +25,8 @@ struct TriangleState {
   double J;
 };
 
-inline void load_state(const EngineData& d, std::size_t t, TriangleState& s) {
-  const int* nd = &d.tris.nodes[3 * t];
-  const double* p = d.nodes.pos.data();
-  for (int k = 0; k < 3; ++k) {
-    s.x[k] = p[2 * nd[k]];
-    s.y[k] = p[2 * nd[k] + 1];
-  }
+/// Deformation from positions already in s.x, s.y.
+inline void deformation(const EngineData& d, std::size_t t, TriangleState& s) {
   const double* g = &d.tris.ref_inv[4 * t];
   const double e1x = s.x[1] - s.x[0], e1y = s.y[1] - s.y[0];
   const double e2x = s.x[2] - s.x[0], e2y = s.y[2] - s.y[0];
@@ -41,8 +37,61 @@ inline void load_state(const EngineData& d, std::size_t t, TriangleState& s) {
   s.J = s.F[0] * s.F[3] - s.F[1] * s.F[2];
 }
 
-/// Cauchy stress of a sound triangle (J > 0) into sig[3].
-inline void stress(const EngineData& d, std::size_t t, const TriangleState& s, double sig[3]) {
+inline void load_state(const EngineData& d, std::size_t t, TriangleState& s) {
+  const int* nd = &d.tris.nodes[3 * t];
+  const double* p = d.nodes.pos.data();
+  for (int k = 0; k < 3; ++k) {
+    s.x[k] = p[2 * nd[k]];
+    s.y[k] = p[2 * nd[k] + 1];
+  }
+  deformation(d, t, s);
+}
+
+inline void load_state(const EngineData& d, std::size_t t, const Placement& at,
+                       TriangleState& s) {
+  const int* nd = &d.tris.nodes[3 * t];
+  for (int k = 0; k < 3; ++k) {
+    s.x[k] = at.x(nd[k]);
+    s.y[k] = at.y(nd[k]);
+  }
+  deformation(d, t, s);
+}
+
+/// Velocity gradient L = [v1 - v0, v2 - v0] Fc^-1 (row-major) and
+/// det Fc = 2 A (the current area's double).
+struct VelocityGradient {
+  double l00, l01, l10, l11, det;
+};
+
+inline VelocityGradient velocity_gradient(const EngineData& d, std::size_t t,
+                                          const TriangleState& s) {
+  const int* nd = &d.tris.nodes[3 * t];
+  const double* v = d.nodes.vel.data();
+  const double d1x = v[2 * nd[1]] - v[2 * nd[0]], d1y = v[2 * nd[1] + 1] - v[2 * nd[0] + 1];
+  const double d2x = v[2 * nd[2]] - v[2 * nd[0]], d2y = v[2 * nd[2] + 1] - v[2 * nd[0] + 1];
+  const double e1x = s.x[1] - s.x[0], e1y = s.y[1] - s.y[0];
+  const double e2x = s.x[2] - s.x[0], e2y = s.y[2] - s.y[0];
+  const double det = e1x * e2y - e2x * e1y;
+  const double inv_det = 1.0 / det;
+  return {(d1x * e2y - d2x * e1y) * inv_det, (d2x * e1x - d1x * e2x) * inv_det,
+          (d1y * e2y - d2y * e1y) * inv_det, (d2y * e1x - d1y * e2x) * inv_det, det};
+}
+
+/// What the force loop needs to book the viscous stress's work (energy.hpp).
+struct ViscousWork {
+  double* last;     ///< w of the last step, 3 per triangle (Triangles::viscous_stress)
+  double quarter_dt;  ///< dt / 4: dt/2 times the area's 1/2 of the Jacobian determinant
+};
+
+/// Cauchy stress of a sound triangle (J > 0) into sig[3]. With `work`, a
+/// viscous triangle returns the work of its viscous stress booked this step
+/// and keeps w(n) = dt/2 A sigma_v(n) for the next:
+///   (w(n) + w(n-1)) : D(n),
+/// its force's work with v(n-1/2), and the last force's with the same
+/// velocities (the second half of that step's mid-step velocity); 0 for the
+/// others.
+inline double stress(const EngineData& d, std::size_t t, const TriangleState& s, double sig[3],
+                     const ViscousWork* work = nullptr) {
   const SolidConstants& m = d.solids[d.tris.material[t]];
   const double* F = s.F;
   const double inv_j = 1.0 / s.J;
@@ -60,28 +109,30 @@ inline void stress(const EngineData& d, std::size_t t, const TriangleState& s, d
     sig[1] += (p10 * F[2] + p11 * F[3]) * inv_j;
     sig[2] += (p00 * F[2] + p01 * F[3]) * inv_j;
   }
+  double booked = 0.0;
   const double eta = d.tris.eta[t];
-  if (eta > 0.0) {
-    // L = [v1 - v0, v2 - v0] Fc^-1, D = sym(L).
-    const int* nd = &d.tris.nodes[3 * t];
-    const double* v = d.nodes.vel.data();
-    const double d1x = v[2 * nd[1]] - v[2 * nd[0]], d1y = v[2 * nd[1] + 1] - v[2 * nd[0] + 1];
-    const double d2x = v[2 * nd[2]] - v[2 * nd[0]], d2y = v[2 * nd[2] + 1] - v[2 * nd[0] + 1];
-    const double e1x = s.x[1] - s.x[0], e1y = s.y[1] - s.y[0];
-    const double e2x = s.x[2] - s.x[0], e2y = s.y[2] - s.y[0];
-    const double inv_det = 1.0 / (e1x * e2y - e2x * e1y);
-    const double l00 = (d1x * e2y - d2x * e1y) * inv_det;
-    const double l01 = (d2x * e1x - d1x * e2x) * inv_det;
-    const double l10 = (d1y * e2y - d2y * e1y) * inv_det;
-    const double l11 = (d2y * e1x - d1y * e2x) * inv_det;
+  if (eta > 0.0) {  // D = sym(L)
+    const VelocityGradient g = velocity_gradient(d, t, s);
+    const double l00 = g.l00, l01 = g.l01, l10 = g.l10, l11 = g.l11;
     sig[0] += eta * l00;
     sig[1] += eta * l11;
     sig[2] += eta * 0.5 * (l01 + l10);
+    if (work) {
+      const double dxy = 0.5 * (l01 + l10);
+      const double k = work->quarter_dt * g.det * (d.tris.alpha[t] * eta);
+      const double w0 = k * l00, w1 = k * l11, w2 = k * dxy;
+      double* last = work->last + 3 * t;
+      booked = (w0 + last[0]) * l00 + (w1 + last[1]) * l11 + 2.0 * (w2 + last[2]) * dxy;
+      last[0] = w0;
+      last[1] = w1;
+      last[2] = w2;
+    }
   }
   const double alpha = d.tris.alpha[t];
   sig[0] *= alpha;
   sig[1] *= alpha;
   sig[2] *= alpha;
+  return booked;
 }
 
 /// f_i = sigma n / 2 for the edge j->k opposite node i, n = (yk - yj, xj - xk).
@@ -96,27 +147,55 @@ inline void nodal_forces(const TriangleState& s, const double sig[3], double* ou
 
 }  // namespace
 
-long triangle_forces(EngineData& d) {
+namespace {
+
+/// The force loop over fixed blocks of kEnergyBlock triangles, so that the
+/// viscous work (stress() above) is a deterministic block sum; kViscous:
+/// some triangle has viscous damping (only then is the work booked).
+template <bool kViscous>
+long triangle_loop(EngineData& d) {
   const long nt = static_cast<long>(d.tris.size());
+  const long n_blocks = (nt + kEnergyBlock - 1) / kEnergyBlock;
   double* slots = d.slots.data();
   const std::uint8_t* active = d.tris.active.data();
+  const ViscousWork work{d.tris.viscous_stress.data(), 0.25 * d.dt};
+  double* partial = d.energy_partial.data();
   long first_bad = nt;
 #pragma omp parallel for schedule(static) num_threads(thread_count(d.threads)) \
     reduction(min                                                              \
               : first_bad)
-  for (long t = 0; t < nt; ++t) {
-    if (!active[t]) continue;  // an inactive triangle's slots are kept at zero
-    TriangleState s;
-    load_state(d, t, s);
-    if (!(s.J > 0.0)) {
-      first_bad = t < first_bad ? t : first_bad;
-      continue;
+  for (long b = 0; b < n_blocks; ++b) {
+    double viscous = 0;
+    const long end = std::min(nt, (b + 1) * kEnergyBlock);
+    for (long t = b * kEnergyBlock; t < end; ++t) {
+      if (!active[t]) continue;  // an inactive triangle's slots are kept at zero
+      TriangleState s;
+      load_state(d, t, s);
+      if (!(s.J > 0.0)) {
+        first_bad = t < first_bad ? t : first_bad;
+        continue;
+      }
+      double sig[3];
+      if (kViscous)
+        viscous += stress(d, t, s, sig, &work);
+      else
+        stress(d, t, s, sig);
+      nodal_forces(s, sig, slots + 6 * t);
     }
-    double sig[3];
-    stress(d, t, s, sig);
-    nodal_forces(s, sig, slots + 6 * t);
+    if (kViscous) partial[b] = viscous;
+  }
+  if (kViscous) {
+    double viscous = 0;
+    for (long b = 0; b < n_blocks; ++b) viscous += partial[b];
+    d.energy.viscous += viscous;
   }
   return first_bad < nt ? first_bad : -1;
+}
+
+}  // namespace
+
+long triangle_forces(EngineData& d) {
+  return d.tris.viscous_stress.empty() ? triangle_loop<false>(d) : triangle_loop<true>(d);
 }
 
 std::array<double, 3> triangle_stress(const EngineData& d, std::size_t t, double& J) {
@@ -128,18 +207,53 @@ std::array<double, 3> triangle_stress(const EngineData& d, std::size_t t, double
   return sig;
 }
 
+namespace {
+
+/// W(F) of Munjiza's law per reference area.
+inline double hyperelastic_density(const SolidConstants& m, const TriangleState& s) {
+  const double* F = s.F;
+  const double tr_b = F[0] * F[0] + F[1] * F[1] + F[2] * F[2] + F[3] * F[3];
+  const double ln_j = std::log(s.J);
+  return 0.5 * m.mu * (tr_b - 2.0) - m.mu * ln_j + 0.25 * m.lambda * (s.J * s.J - 1.0 - 2.0 * ln_j);
+}
+
+}  // namespace
+
 double triangle_strain_energy(const EngineData& d, std::size_t t) {
   if (!d.tris.active[t]) return 0.0;
   TriangleState s;
   load_state(d, t, s);
   if (!(s.J > 0.0)) return 0.0;
-  const SolidConstants& m = d.solids[d.tris.material[t]];
-  const double* F = s.F;
-  const double tr_b = F[0] * F[0] + F[1] * F[1] + F[2] * F[2] + F[3] * F[3];
-  const double ln_j = std::log(s.J);
-  const double w =
-      0.5 * m.mu * (tr_b - 2.0) - m.mu * ln_j + 0.25 * m.lambda * (s.J * s.J - 1.0 - 2.0 * ln_j);
+  return d.tris.alpha[t] * d.tris.area0[t] *
+         hyperelastic_density(d.solids[d.tris.material[t]], s);
+}
+
+double triangle_stored_energy(const EngineData& d, std::size_t t, const Placement& at) {
+  if (!d.tris.active[t]) return 0.0;
+  TriangleState s;
+  load_state(d, t, at, s);
+  if (!(s.J > 0.0)) return 0.0;
+  double w = hyperelastic_density(d.solids[d.tris.material[t]], s);
+  if (!d.tris.sigma0.empty()) {  // S0 : E with E = (F^T F - I) / 2
+    const double* s0 = &d.tris.sigma0[3 * t];
+    const double* F = s.F;
+    const double exx = 0.5 * (F[0] * F[0] + F[2] * F[2] - 1.0);
+    const double eyy = 0.5 * (F[1] * F[1] + F[3] * F[3] - 1.0);
+    const double exy = 0.5 * (F[0] * F[1] + F[2] * F[3]);
+    w += s0[0] * exx + s0[1] * eyy + 2.0 * s0[2] * exy;
+  }
   return d.tris.alpha[t] * d.tris.area0[t] * w;
+}
+
+double triangle_viscous_pending(const EngineData& d, std::size_t t) {
+  if (d.tris.viscous_stress.empty() || !d.tris.active[t]) return 0.0;
+  const double* last = &d.tris.viscous_stress[3 * t];
+  if (last[0] == 0.0 && last[1] == 0.0 && last[2] == 0.0) return 0.0;
+  TriangleState s;
+  load_state(d, t, s);
+  if (!(s.J > 0.0)) return 0.0;
+  const VelocityGradient g = velocity_gradient(d, t, s);
+  return last[0] * g.l00 + last[1] * g.l11 + last[2] * (g.l01 + g.l10);
 }
 
 }  // namespace rockfdem::fdem::detail

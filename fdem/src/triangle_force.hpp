@@ -20,4 +20,14 @@ std::array<double, 3> triangle_stress(const EngineData& d, std::size_t t, double
 /// stress is exactly (mu/J)(B - I) + (lambda/2)(J - 1/J) I.
 double triangle_strain_energy(const EngineData& d, std::size_t t);
 
+/// Stored energy of triangle t at `at`: alpha A0 (W(F) + S0 : E), the
+/// potential whose gradient is the triangle's elastic force, initial stress
+/// included (E = (F^T F - I)/2, so it is measured from the pre-stressed
+/// reference). 0 for an inactive triangle.
+double triangle_stored_energy(const EngineData& d, std::size_t t, const Placement& at);
+
+/// The half of the last step's viscous work that the next step would book:
+/// w : D(current velocities), w = dt/2 A sigma_v of the last step.
+double triangle_viscous_pending(const EngineData& d, std::size_t t);
+
 }  // namespace rockfdem::fdem::detail

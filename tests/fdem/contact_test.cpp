@@ -36,16 +36,11 @@ ContactSettings contact_on(double penalty = 0) {
 // up on T, down on C (0.1%; the ends add O(delta / (x2 - x1))). Apart by a
 // gap: no force. Forces and moments balance exactly.
 TEST(Contact, two_triangles_pressed_together_match_the_potential_closed_form) {
-  const double L = 0.1, H = 0.08, x1 = 0.03, x2 = 0.07, hc = 0.05, delta = 2e-6;
+  using P = test::PressedTriangles;
+  const double L = P::L, H = P::H, x1 = P::x1, x2 = P::x2, hc = P::hc, delta = 2e-6;
   const double p = 3e10;
   for (double gap : {-delta, delta}) {  // -delta: overlap by delta
-    const double top = -gap;
-    ModelInput in;
-    in.x = {0, L, L / 2, x1, (x1 + x2) / 2, x2};
-    in.y = {0, 0, H, top, top - hc, top};
-    in.triangles = {{0, 1, 2}, {3, 4, 5}};
-    in.material = {0, 0};
-    in.materials = {test::rock()};
+    ModelInput in = P::model(-gap);
     in.contact = contact_on(p);
     Engine e(in);
     e.step();

@@ -85,14 +85,7 @@ TEST(CrackLaw, rock_shear_strength_follows_mohr_coulomb) {
 // Seed eqs. 11-19: yield at op, axial stress sigma_y + D (sigma_u - sigma_y),
 // and eq. 14 makes the hardening branch carry exactly GfI.
 TEST(CrackLaw, bolt_steel_hardens_from_yield_to_ultimate_and_carries_GfI) {
-  Material m;
-  m.young = 200e9;
-  m.crack_law = CrackLaw::kBoltSteel;
-  m.yield_strength = 400e6;
-  m.ultimate_strength = 600e6;
-  m.shear_yield_strength = 200e6;
-  m.gf_I = 2e4;
-  m.gf_II = 1e4;
+  const Material m = test::bolt_steel();
   const CrackConstants k = make_crack_constants(m);
   const double h = 0.01, op = 2 * h * m.yield_strength / k.pn;
   double damage = 0;

@@ -14,24 +14,6 @@ namespace {
 
 using Stress = std::array<double, 3>;
 
-/// Tractions sigma n on the four sides of a structured rectangle.
-std::vector<BoundaryCondition> side_tractions(const Stress& s) {
-  std::vector<BoundaryCondition> bcs(4);
-  bcs[0].tag = kTagBottom;  // n = (0, -1)
-  bcs[0].tx = -s[2];
-  bcs[0].ty = -s[1];
-  bcs[1].tag = kTagRight;  // n = (1, 0)
-  bcs[1].tx = s[0];
-  bcs[1].ty = s[2];
-  bcs[2].tag = kTagTop;  // n = (0, 1)
-  bcs[2].tx = s[2];
-  bcs[2].ty = s[1];
-  bcs[3].tag = kTagLeft;  // n = (-1, 0)
-  bcs[3].tx = -s[0];
-  bcs[3].ty = -s[2];
-  return bcs;
-}
-
 ModelInput uniform_stress_block(const Stress& s) {
   RectangleSpec spec;
   spec.width = 1.0;
@@ -39,7 +21,7 @@ ModelInput uniform_stress_block(const Stress& s) {
   spec.nx = spec.ny = 8;
   ModelInput in = structured_rectangle(spec, test::rock());
   in.initial_stress.assign(in.triangles.size(), s);
-  in.boundary_conditions = side_tractions(s);
+  in.boundary_conditions = test::side_tractions(s);
   return in;
 }
 

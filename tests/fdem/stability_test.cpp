@@ -1,6 +1,7 @@
 // Stability limit and blow-up detection.
 #include <gtest/gtest.h>
 
+#include <limits>
 #include <random>
 
 #include "test_models.hpp"
@@ -112,6 +113,47 @@ TEST(Stability, inverted_triangle_names_step_and_element) {
     EXPECT_NE(what.find("triangle 1"), std::string::npos) << what;
     EXPECT_NE(what.find("step "), std::string::npos) << what;
     EXPECT_NE(what.find("inverted"), std::string::npos) << what;
+  }
+}
+
+// A non-finite velocity stops the run at the next step, naming the step
+// and the node, whether the node is free (found through its block's
+// velocity sums) or has a boundary record (checked on its own): a node deep
+// in a large model, in its second node block, and a corner node held by a
+// roller.
+TEST(Stability, non_finite_velocity_names_the_node) {
+  RectangleSpec spec;
+  spec.nx = 20;
+  spec.ny = 40;
+  ModelInput in = structured_rectangle(spec, test::rock());
+  BoundaryCondition roller;
+  roller.tag = kTagBottom;
+  roller.y = Constraint::kFixed;
+  in.boundary_conditions = {roller};
+  in.threads = 1;
+  for (bool on_boundary : {false, true}) {
+    Engine e(in);
+    e.run(3);
+    std::size_t node = 0;
+    for (std::size_t n = 0; n < e.n_nodes(); ++n) {
+      const double y = in.y[e.node_vertex()[n]];
+      if (on_boundary ? y == 0.0 : (n > 700 && y > 0.0)) {
+        node = n;
+        break;
+      }
+    }
+    e.set_node_state(node, e.positions()[2 * node], e.positions()[2 * node + 1],
+                     std::numeric_limits<double>::quiet_NaN(), 0.0);
+    try {
+      e.step();
+      FAIL() << "non-finite velocity not detected";
+    } catch (const NumericalError& err) {
+      const std::string what = err.what();
+      EXPECT_NE(what.find("step "), std::string::npos) << what;
+      EXPECT_NE(what.find("node " + std::to_string(node) + " (mesh vertex"), std::string::npos)
+          << what;
+      EXPECT_NE(what.find("non-finite velocity"), std::string::npos) << what;
+    }
   }
 }
 

@@ -6,24 +6,6 @@
 namespace rockfdem::fdem {
 namespace {
 
-/// A bar along x with rollers on its long sides (1D strain, so the front
-/// travels at the plane-strain P-wave speed).
-ModelInput bar(double length, int nx, bool fracture) {
-  RectangleSpec spec;
-  spec.width = length;
-  spec.height = length / 50;
-  spec.nx = nx;
-  spec.ny = 4;
-  spec.fracture = fracture;
-  ModelInput in = structured_rectangle(spec, test::rock());
-  BoundaryCondition top, bottom;
-  top.tag = kTagTop;
-  bottom.tag = kTagBottom;
-  top.y = bottom.y = Constraint::kFixed;
-  in.boundary_conditions = {top, bottom};
-  return in;
-}
-
 /// Node of the first engine node at the vertex nearest (x, y).
 int node_near(const Engine& e, const ModelInput& in, double x, double y) {
   int best = 0;
@@ -40,7 +22,7 @@ int node_near(const Engine& e, const ModelInput& in, double x, double y) {
 // at 0.8 L / c_p within 2%.
 TEST(Wave, p_wave_arrival_matches_cp) {
   const double length = 1.0, v0 = 0.1;
-  ModelInput in = bar(length, 250, false);
+  ModelInput in = test::bar(length, 250, false);
   BoundaryCondition left;
   left.tag = kTagLeft;
   left.x = Constraint::kVelocity;
@@ -68,7 +50,7 @@ TEST(Wave, p_wave_arrival_matches_cp) {
 // stop it).
 TEST(Wave, absorbing_boundary_does_not_reflect) {
   const double length = 0.5, v0 = 0.1;
-  ModelInput in = bar(length, 125, false);
+  ModelInput in = test::bar(length, 125, false);
   BoundaryCondition left, right;
   left.tag = kTagLeft;
   left.x = Constraint::kVelocity;
@@ -91,31 +73,19 @@ TEST(Wave, absorbing_boundary_does_not_reflect) {
 // than 0.5% over 1e4 steps, without and with crack elements on every edge.
 TEST(Wave, undamped_vibration_conserves_energy) {
   for (bool fracture : {false, true}) {
-    ModelInput in = bar(0.2, 40, fracture);
+    ModelInput in = test::bar(0.2, 40, fracture);
     in.boundary_conditions.clear();
     in.threads = 1;  // small model: threads would only add fork/join cost
     Engine e(in);
-    const auto& mass = e.node_mass();
     for (std::size_t n = 0; n < e.n_nodes(); ++n) {
       const int v = e.node_vertex()[n];
       const double x = in.x[v], y = in.y[v];
       e.set_node_state(n, x, y, 0.5 * std::sin(M_PI * x / 0.2), 0.05 * std::cos(7 * x / 0.2 + y));
     }
-    auto energy_step = [&]() {
-      const double potential = e.strain_energy() + e.crack_energy();
-      const std::vector<double> before = e.velocities();
-      e.step();
-      double kinetic = 0;
-      for (std::size_t n = 0; n < e.n_nodes(); ++n)
-        for (int k = 0; k < 2; ++k) {
-          const double v = 0.5 * (before[2 * n + k] + e.velocities()[2 * n + k]);
-          kinetic += 0.5 * mass[n] * v * v;
-        }
-      return potential + kinetic;
-    };
-    const double e0 = energy_step();
+    const double e0 = test::energy_around_step(e);
     double worst = 0;
-    for (int i = 0; i < 10000; ++i) worst = std::max(worst, std::fabs(energy_step() - e0) / e0);
+    for (int i = 0; i < 10000; ++i)
+      worst = std::max(worst, std::fabs(test::energy_around_step(e) - e0) / e0);
     std::printf("fracture %d: largest energy deviation over 1e4 steps: %.3g\n", fracture, worst);
     EXPECT_LT(worst, 0.005);
     EXPECT_EQ(e.broken_counts().total(), 0);

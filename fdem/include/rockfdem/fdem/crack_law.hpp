@@ -211,6 +211,43 @@ inline bool pre_peak_displacement(const CrackConstants& k, double sigma, double 
   return clipped;
 }
 
+/// Potential of one point per unit length at a fixed damage D: the work the
+/// law's tractions do from (0, 0) to (o, s) with D held, i.e. the elastic
+/// energy the point would return on unloading. At fixed D both laws are
+/// elastic: the pre-peak curve (2x - x^2) scaled by a factor of D, then its
+/// plateau, and the compressive penalty (which damage does not touch):
+///   normal   o < 0: pn o^2 / (2h);  o >= 0: g_n(D) ft [op (x^2 - x^3/3) + (o - op)+]
+///   shear    g_s(D) fs [sp (y^2 - y^3/3) + (|s| - sp)+],   x = min(o/op, 1), y = min(|s|/sp, 1)
+/// with g_n = g_s = z(D) for rock (fs the Mohr-Coulomb strength) and, for
+/// bolt steel, g_n = (sigma_y + D (sigma_u - sigma_y))/sigma_y (0 at D = 1),
+/// g_s = (1 - D)^2. Damage growth at fixed (o, s) releases
+/// phi(D_old) - phi(D_new): the fracture energy of the energy balance.
+/// (Rock: the closed-shear strength grows with compression while sigma does
+/// not carry the matching term, so under changing compression the law is
+/// not exactly conservative below the peak; see docs/engine.md.)
+inline double crack_point_potential(const CrackConstants& k, double o, double s, double h,
+                                    double damage) {
+  const bool bolt = k.law == CrackLaw::kBoltSteel;
+  double g_n, g_s;
+  if (bolt) {
+    g_n = damage < 1.0 ? 1.0 + damage * (k.fu - k.ft) / k.ft : 0.0;
+    g_s = (1.0 - damage) * (1.0 - damage);
+  } else {
+    g_n = g_s = damage > 0.0 ? softening_z(damage) : 1.0;
+  }
+  double e;
+  if (o < 0.0) {
+    e = 0.5 * k.pn * o * o / h;
+  } else {
+    const double op = h * k.op_per_h, x = std::min(o / op, 1.0);
+    e = g_n * k.ft * (op * (x * x - x * x * x / 3.0) + std::max(o - op, 0.0));
+  }
+  const double fs = (!bolt && o < 0.0) ? k.c - k.pn * o / h * k.tan_phi : k.c;
+  const double sp = h * fs * k.two_over_pt, abs_s = std::fabs(s);
+  const double y = std::min(abs_s / sp, 1.0);
+  return e + g_s * fs * (sp * (y * y - y * y * y / 3.0) + std::max(abs_s - sp, 0.0));
+}
+
 /// One point of any law: a switch on the law id, no virtual call. The crack
 /// loop dispatches once per element instead (crack_elements.cpp).
 inline CrackPoint crack_point(const CrackConstants& k, double o, double s, double h,

@@ -83,6 +83,50 @@ struct ContactCounters {
   long steps_skipped = 0;     ///< steps in which nothing could touch (no narrow phase)
 };
 
+/// Energy terms since the first step [J/m] (plane problems: per unit
+/// thickness). Each term is its own computation, so the balance is a check,
+/// not an identity: the stored terms are closed forms of the state, the
+/// others are accumulated every step from their own mechanisms (force times
+/// the mid-step velocity of central differences, the crack law's released
+/// potential, the friction springs' plastic slip). docs/engine.md, "Energy
+/// balance", gives each formula.
+///
+///   external_work = (stored() - initial_stored) + dissipated() + softening + removed
+struct EnergyBalance {
+  /// Work of gravity, tractions and pressures (dead loads) and of the
+  /// reactions of prescribed velocities (platens).
+  double external_work = 0;
+  /// Stored now, at the half step of the current velocities: kinetic
+  /// (lumped masses); strain: alpha A0 (W(F) + S0 : E), the hyperelastic
+  /// energy plus the initial stress's potential (measured from the
+  /// pre-stressed reference, so it can be negative); crack_elastic: the
+  /// crack elements' potential at their current damage; contact_elastic:
+  /// the penalty potential of the overlaps plus the friction springs.
+  double kinetic = 0, strain = 0, crack_elastic = 0, contact_elastic = 0;
+  double initial_stored = 0;  ///< kinetic + stored when the first step began
+  /// Dissipated since the first step: damping (triangles' viscous eta D,
+  /// local, mass-proportional and contact damping), fracture (potential
+  /// released by damage growth and breakage), friction (contact, plastic
+  /// slip), absorbing (boundary dashpots).
+  double damping = 0, fracture = 0, friction = 0, absorbing = 0;
+  /// Stored energy taken out by stiffness-factor changes (core softening;
+  /// negative when a factor rises).
+  double softening = 0;
+  /// Energy taken out by other stage controls: deactivated triangles (their
+  /// strain energy, their nodes' kinetic energy, the crack elements and
+  /// contacts that stop acting), rejoined or re-assigned crack elements,
+  /// replaced initial stresses, overwritten node states (negative: added).
+  double removed = 0;
+
+  double stored() const;      ///< kinetic + strain + crack_elastic + contact_elastic
+  double dissipated() const;  ///< damping + fracture + friction + absorbing
+  /// external_work - (stored() - initial_stored) - dissipated() - softening - removed.
+  double residual() const;
+  /// residual() over the largest of |external_work|, the summed magnitudes
+  /// of the stored terms (initial included) and those of the others.
+  double imbalance() const;
+};
+
 class Engine {
  public:
   /// Builds nodes, crack elements, masses, boundary records and the time
@@ -193,11 +237,16 @@ class Engine {
   double kinetic_energy() const;
   /// Hyperelastic energy of Munjiza's law (initial stress excluded).
   double strain_energy() const;
-  /// Energy stored in the crack elements' undamaged pre-peak branches
-  /// (Simpson-integrated potential of the penalty and (2x - x^2) curves);
-  /// with kinetic_energy() and strain_energy() it closes the energy balance
-  /// of an elastic run.
+  /// Energy stored in the crack elements: the Simpson-integrated potential
+  /// of their laws (penalty and (2x - x^2) curves, scaled by the damage
+  /// factor) at their current damage; 0 for broken elements. With
+  /// kinetic_energy() and strain_energy() it closes the energy balance of an
+  /// elastic run.
   double crack_energy() const;
+  /// The energy balance since the first step (EnergyBalance). Costs about
+  /// one step (closed forms over all elements); the ledger it reads is kept
+  /// by every step at a few per cent of the step's cost.
+  EnergyBalance energy_balance() const;
   /// Sum over unconstrained node components of |net force| over the sum of
   /// the magnitudes of the forces acting on them (last step's forces).
   double unbalanced_force_ratio() const;
