@@ -46,22 +46,29 @@ inline double element_potential(const CrackConstants& k, const double o[3], cons
 }
 
 /// Potential released when element c's damage grows from `before` to
-/// `after` (nullptr: the element broke, everything goes), evaluated where
-/// central differences put the change: at x(n-1/2) = x(n) - v(n-1/2) dt/2,
-/// between the last force that had the old damage and the first with the
-/// new (energy.hpp). Cold: only damage growth gets here.
-[[gnu::noinline, gnu::cold]] double released_potential(const EngineData& d, std::size_t c,
-                                                       const double before[3],
-                                                       const double* after) {
+/// `after` (nullptr: the element broke, everything goes): the points whose
+/// damage grew release phi(D_old) - phi(D_new), a broken element its whole
+/// phi(D_old). Evaluated where central differences put the change, at
+/// x(n-1/2) = x(n) - v(n-1/2) dt/2, between the last force with the old
+/// damage and the first with the new (energy.hpp). Out of line: only damage
+/// growth gets here.
+[[gnu::noinline]] double released_potential(const EngineData& d, std::size_t c,
+                                            const double before[3], const double* after) {
   double os[6];
   const Placement at{d.nodes.pos.data(), d.nodes.vel.data(), 0.5 * d.energy.last_dt};
   const double h = crack_point_openings(d, c, at, os);
   if (!d.cracks.offset.empty())
     for (int i = 0; i < 6; ++i) os[i] -= d.cracks.offset[6 * c + i];
-  const double o[3] = {os[0], os[2], os[4]}, s[3] = {os[1], os[3], os[5]};
   const CrackConstants& k = d.crack_laws[d.cracks.material[c]];
-  const double e_before = element_potential(k, o, s, h, before);
-  return after ? e_before - element_potential(k, o, s, h, after) : e_before;
+  const double weight[3] = {h / 6.0, 2.0 * h / 3.0, h / 6.0};
+  double released = 0.0;
+  for (int i = 0; i < 3; ++i) {
+    if (after && after[i] == before[i]) continue;
+    const double o = os[2 * i], s = os[2 * i + 1];
+    released += weight[i] * (crack_point_potential(k, o, s, h, before[i]) -
+                             (after ? crack_point_potential(k, o, s, h, after[i]) : 0.0));
+  }
+  return released;
 }
 
 /// Evaluates one element; returns true when it broke this step. Adds to

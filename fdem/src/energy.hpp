@@ -9,12 +9,14 @@
 //   external  dead loads (gravity, tractions, pressures) f . v(n) dt, and the
 //             reactions of prescribed velocities, m dv/dt - f_elements, times v(n) dt
 //   viscous   triangles' eta D stress: A sigma_v(n) : D(v(n)), the half with
-//             v(n+1/2) booked at the next step from the stored sigma_v(n)
+//             v(n+1/2) booked at the next step from w(n) = dt/2 A sigma_v(n)
+//             kept per triangle (Triangles::viscous_stress)
 //   nodal     local and mass-proportional damping f . v(n) dt (node loop)
 //   absorbing dashpots f . v(n) dt (node loop)
 //   fracture  the crack law's potential released when damage grows
-//             (phi(D_old) - phi(D_new) at the current opening and slip), and
-//             an element's whole potential when it breaks
+//             (phi(D_old) - phi(D_new) at the opening and slip of x(n-1/2)),
+//             an element's whole potential when it breaks, less the contact
+//             energy of pairs that detection finds already overlapping
 //   friction  plastic slip of the contact friction springs,
 //             F (F_trial - F) / k_t when the spring is clipped at mu F_n
 //   contact_damping  normal contact damping f_d v_n dt
@@ -34,7 +36,10 @@ namespace rockfdem::fdem::detail {
 struct EngineData;
 
 /// Accumulated energy terms since the first step [J/m]. A plain struct of
-/// scalars (trivially copyable): checkpoints store it as one block.
+/// scalars (trivially copyable): checkpoints store it as one block. (For a
+/// bit-exact ledger across a restart the per-triangle
+/// Triangles::viscous_stress goes with it; without it the first step after
+/// the restart misses half a step of viscous work.)
 struct EnergyLedger {
   bool started = false;  ///< the first step has recorded the initial state
   double last_dt = 0;    ///< dt of the last step taken
@@ -42,7 +47,7 @@ struct EnergyLedger {
   double external = 0;
   double viscous = 0, nodal_damping = 0, contact_damping = 0;
   double absorbing = 0;
-  double fracture = 0;
+  double fracture = 0;  ///< released crack potential, net of the contact handover
   double friction = 0;
   double softening = 0;  ///< stored energy taken out by stiffness-factor changes
   double removed = 0;    ///< energy taken out by other stage controls (negative: added)

@@ -90,6 +90,7 @@ int run_specimen(const Scene& scene, const CommandLine& cli) {
   History history(output_path(cli.output_dir, "history.csv"),
                   {"step", "time", "axial_strain", disc ? "tensile_stress" : "axial_stress",
                    "platen_force", "kinetic_energy", "broken_I", "broken_II", "broken_mixed"});
+  history.extend(energy_columns());
   coupling::PvdCollection pvd(output_path(cli.output_dir, "fdem.pvd"));
   Progress progress(disc ? "brazilian" : "ucs", scene.engine.steps, cli.quiet);
   double peak = 0;
@@ -101,8 +102,13 @@ int run_specimen(const Scene& scene, const CommandLine& cli) {
     const double strain = 2 * scene.engine.platen_velocity * engine.time() / size.length;
     const fdem::BrokenCounts b = engine.broken_counts();
     peak = std::max(peak, stress);
-    history.add({double(engine.step_count()), engine.time(), strain, stress, force,
-                 engine.kinetic_energy(), double(b.mode_I), double(b.mode_II), double(b.mixed)});
+    std::vector<double> row{double(engine.step_count()), engine.time(), strain, stress, force,
+                            engine.kinetic_energy(), double(b.mode_I), double(b.mode_II),
+                            double(b.mixed)};
+    const fdem::EnergyBalance energy = engine.energy_balance();
+    for (double v : energy_row(energy)) row.push_back(v);
+    history.add(row);
+    check_energy(energy, engine.step_count());  // before the frame: keep the last good one
     if (scene.output.vtk) write_frame(engine, m, cli.output_dir, frame++, pvd);
   };
   auto& j = summary.json();
@@ -119,12 +125,12 @@ int run_specimen(const Scene& scene, const CommandLine& cli) {
     timer.stamp("output");
     try {
       for (long i = 0; i < chunk && !interrupt_requested(); ++i) engine.step();
+      timer.stamp("fdem");
+      record();
     } catch (const NumericalError& e) {
       stop("failed", e.what());  // history and frames so far are the last good output
       throw;
     }
-    timer.stamp("fdem");
-    record();
     progress.update(engine.step_count(), engine.time());
     if (const int sig = interrupt_requested()) {
       const std::string why = "interrupted by signal " + std::to_string(sig) + " at step " +

@@ -1,5 +1,10 @@
 #include "engine_report.hpp"
 
+#include <cmath>
+#include <cstdio>
+
+#include "rockfdem/error.hpp"
+
 namespace rockfdem::workflows {
 
 void report_engine(const fdem::Engine& e, const PhaseTimer& timer, RunSummary& summary) {
@@ -32,9 +37,47 @@ void report_engine(const fdem::Engine& e, const PhaseTimer& timer, RunSummary& s
     summary.skipped("contact: nothing could touch in " + std::to_string(c.steps_skipped) +
                     " of " + std::to_string(e.step_count()) + " steps");
   if (e.n_cracks() == 0) summary.skipped("crack elements: fracture is allowed nowhere");
+  const fdem::EnergyBalance en = e.energy_balance();
+  j["energy"] = {{"external_work", en.external_work},
+                 {"kinetic", en.kinetic},
+                 {"strain", en.strain},
+                 {"crack_elastic", en.crack_elastic},
+                 {"contact_elastic", en.contact_elastic},
+                 {"initial_stored", en.initial_stored},
+                 {"damping", en.damping},
+                 {"fracture", en.fracture},
+                 {"friction", en.friction},
+                 {"absorbing", en.absorbing},
+                 {"softening", en.softening},
+                 {"removed_by_stages", en.removed},
+                 {"residual", en.residual()},
+                 {"relative_imbalance", en.imbalance()}};
   j["memory_bytes"] = e.memory_bytes();
   j["memory_bytes_per_triangle"] = double(e.memory_bytes()) / double(e.n_triangles());
   j["state_hash"] = e.state_hash();
+}
+
+std::vector<std::string> energy_columns() {
+  return {"external_work", "stored_change", "dissipated", "removed_by_stages", "energy_residual",
+          "energy_imbalance"};
+}
+
+std::vector<double> energy_row(const fdem::EnergyBalance& b) {
+  return {b.external_work, b.stored() - b.initial_stored, b.dissipated(),
+          b.softening + b.removed, b.residual(), b.imbalance()};
+}
+
+void check_energy(const fdem::EnergyBalance& b, long step) {
+  if (!(std::abs(b.imbalance()) > kEnergyImbalanceLimit) && std::isfinite(b.imbalance())) return;
+  char msg[400];
+  std::snprintf(msg, sizeof msg,
+                "fdem: step %ld: energy balance broken: relative imbalance %.3g (limit %g): "
+                "external work %.4g J/m, stored change %.4g, dissipated %.4g, taken out by "
+                "stages %.4g; the integration diverged (a dt forced above the stability "
+                "limit?)",
+                step, b.imbalance(), kEnergyImbalanceLimit, b.external_work,
+                b.stored() - b.initial_stored, b.dissipated(), b.softening + b.removed);
+  throw NumericalError(msg);
 }
 
 }  // namespace rockfdem::workflows

@@ -3,6 +3,9 @@
 // mode, contact counters (and what was skipped), phase times, state hash.
 #pragma once
 
+#include <string>
+#include <vector>
+
 #include "phase_timer.hpp"
 #include "rockfdem/fdem/engine.hpp"
 #include "summary.hpp"
@@ -10,5 +13,21 @@
 namespace rockfdem::workflows {
 
 void report_engine(const fdem::Engine& e, const PhaseTimer& timer, RunSummary& summary);
+
+/// history.csv's energy columns and one row of them (energy since the
+/// first step [J/m]: external work, change of stored energy, dissipated and
+/// taken out by stage controls, residual and relative imbalance).
+std::vector<std::string> energy_columns();
+std::vector<double> energy_row(const fdem::EnergyBalance& b);
+
+/// Energy is not created by a sound run: a relative imbalance above this
+/// (measured at most 0.2-3% on sound runs, docs/reliability.md) means the
+/// integration diverged, typically with a dt forced above the limit while
+/// crack elements break before any velocity can grow.
+constexpr double kEnergyImbalanceLimit = 0.10;
+
+/// Throws NumericalError naming the step and the terms when the balance's
+/// relative imbalance exceeds kEnergyImbalanceLimit.
+void check_energy(const fdem::EnergyBalance& b, long step);
 
 }  // namespace rockfdem::workflows

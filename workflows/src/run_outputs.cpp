@@ -139,6 +139,7 @@ void RunOutputs::begin_history(const std::vector<Monitor>& monitors, const mesh:
   }
   cols.insert(cols.end(), {"vault_settlement_mm", "wall_convergence_mm",
                            "support_pressure_ratio"});
+  for (const std::string& c : energy_columns()) cols.push_back(c);
   history_ = std::make_unique<History>(output_path(cli_.output_dir, "history.csv"), cols);
 }
 
@@ -159,7 +160,10 @@ void RunOutputs::record_step(const fdem::Engine& e, const mesh::Mesh& m,
   row.push_back(-mm(displacement(e, find(monitors, "vault"))[1]));
   row.push_back(mm(convergence(e, monitors, "left_wall", "right_wall")));
   row.push_back(support_ratio);
+  const fdem::EnergyBalance energy = e.energy_balance();
+  for (double v : energy_row(energy)) row.push_back(v);
   history_->add(row);
+  check_energy(energy, e.step_count());  // before the frame: keep the last good one
   if (scene_.output.vtk) {
     char name[32];
     std::snprintf(name, sizeof name, "fdem_%04d.vtu", frame_++);
