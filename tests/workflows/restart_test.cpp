@@ -203,3 +203,30 @@ TEST_F(Restart, sigkill_leaves_a_restartable_checkpoint) {
   fs::remove_all(out);
   fs::remove(out.string() + ".log");
 }
+
+// Two SIGINTs in a row: the second exits at once (130), and every output
+// file left is complete (each was written atomically): summary.json and
+// history.csv parse, and every checkpoint left is readable.
+TEST_F(Restart, second_sigint_exits_at_once_leaving_complete_files) {
+  const fs::path out = scratch("restart-sigint2");
+  const pid_t pid = spawn("run " + kScene + " -q -j 2 --checkpoint-every 1 -o " + out.string(),
+                          out.string() + ".log");
+  ASSERT_TRUE(wait_for([&] { return history_rows(out) >= 3; }));
+  kill(pid, SIGINT);
+  kill(pid, SIGINT);
+  EXPECT_EQ(wait_exit_code(pid), 130) << read_text(out.string() + ".log");
+  if (fs::exists(out / "summary.json")) EXPECT_NO_THROW(read_json(out / "summary.json"));
+  const std::string h = read_text(out / "history.csv");
+  ASSERT_FALSE(h.empty());
+  EXPECT_EQ(h.back(), '\n') << "no half-written row";
+  const auto kept = checkpoints(out);
+  ASSERT_FALSE(kept.empty());
+  const fs::path again = scratch("restart-sigint2-again");
+  const Result r = run("run " + kScene + " -q --restart " + kept.back().string() + " -o " +
+                       again.string());
+  EXPECT_EQ(r.code, 0) << r.output;
+  EXPECT_EQ(read_json(again / "summary.json")["state_hash"].get<std::string>(), reference_hash());
+  fs::remove_all(again);
+  fs::remove_all(out);
+  fs::remove(out.string() + ".log");
+}
