@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Fuzz the scene parser and the .msh reader with libFuzzer (clang-14 from
+# Fuzz the scene parser, the .msh reader and the engine's checkpoint reader with libFuzzer (clang-14 from
 # Debian), each for a fixed time, and print the figures docs/reliability.md
 # records (executions, corpus size, findings).
 #
@@ -47,12 +47,14 @@ for d in "${drivers[@]}"; do
   findings=$build/findings/$d
   mkdir -p "$corpus" "$findings"
   case $d in
-    fuzz_scene) seeds=$build/seeds/scene; dict=$root/tests/fuzz/scene.dict; extra=() ;;
+    fuzz_scene) seeds=$build/seeds/scene; dict=(-dict="$root/tests/fuzz/scene.dict"); extra=() ;;
     # gmsh 4.8 keeps state across sessions and leaks a FILE (and its file
     # descriptor) each time its MSH 4 reader stops at an error: one process
     # reaches 4 GB after about 5000 inputs. Fork mode restarts the process
     # every few seconds; memory and descriptors start afresh.
-    fuzz_msh) seeds=$build/seeds/msh; dict=$root/tests/fuzz/msh.dict; extra=(-fork=1 -ignore_ooms=0 ${FUZZ_MSH_EXTRA:-}) ;;
+    fuzz_checkpoint) seeds=$build/seeds/checkpoint; mkdir -p "$seeds"
+      ROCKFDEM_FUZZ_SEED="$seeds/block.ckpt" "$build/bin/$d"; dict=(); extra=() ;;
+    fuzz_msh) seeds=$build/seeds/msh; dict=(-dict="$root/tests/fuzz/msh.dict"); extra=(-fork=1 -ignore_ooms=0 ${FUZZ_MSH_EXTRA:-}) ;;
     *) echo "fuzz.sh: unknown driver $d" >&2; exit 1 ;;
   esac
   log=$build/$d.log
@@ -60,7 +62,7 @@ for d in "${drivers[@]}"; do
   set +e
   # From inside the build folder: fork mode writes fuzz-N.log files to the
   # working directory.
-  (cd "$build" && "$build/bin/$d" "$corpus" "$seeds" -dict="$dict" -max_total_time="$seconds" \
+  (cd "$build" && "$build/bin/$d" "$corpus" "$seeds" "${dict[@]}" -max_total_time="$seconds" \
     -timeout=20 -rss_limit_mb=4096 -max_len=65536 -print_final_stats=1 \
     -artifact_prefix="$findings/" "${extra[@]}") >"$log" 2>&1
   rc=$?
