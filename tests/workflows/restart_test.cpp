@@ -215,7 +215,9 @@ TEST_F(Restart, second_sigint_exits_at_once_leaving_complete_files) {
   kill(pid, SIGINT);
   kill(pid, SIGINT);
   EXPECT_EQ(wait_exit_code(pid), 130) << read_text(out.string() + ".log");
-  if (fs::exists(out / "summary.json")) EXPECT_NO_THROW(read_json(out / "summary.json"));
+  if (fs::exists(out / "summary.json")) {
+    EXPECT_NO_THROW(read_json(out / "summary.json"));
+  }
   const std::string h = read_text(out / "history.csv");
   ASSERT_FALSE(h.empty());
   EXPECT_EQ(h.back(), '\n') << "no half-written row";
