@@ -26,11 +26,13 @@ namespace rockfdem::fdem::detail {
 
 struct EngineData;
 
-/// Reused by contact_breaks so that a warmed-up run allocates nothing.
+/// Scratch of contact_breaks and build_gather, reused so that a warmed-up
+/// run allocates nothing.
 struct BreakScratch {
   std::vector<int> cracks, tris, vertices, ints, merged;
   std::vector<double> boxes;
   std::vector<std::array<int, 2>> trial, found;
+  std::vector<int> gather_index;  ///< per triangle: its gather row, -1 between uses
 };
 
 struct ContactData {

@@ -241,31 +241,32 @@ double carry_friction(EngineData& d) {
   return change;
 }
 
-/// CSR contact triangle -> (2 pair + side), in ascending pair order.
+/// CSR contact triangle -> (2 pair + side), in ascending pair order. Linear
+/// in pairs and candidates (the pairs' triangles are candidates): it runs at
+/// every local update as well as at every detection.
 void build_gather(EngineData& d) {
   ContactData& c = d.contact;
+  std::vector<int>& index = c.breaks.gather_index;  // -1 between calls
+  index.resize(d.tris.size(), -1);
+  for (const auto& p : c.pairs) index[p[0]] = index[p[1]] = 0;
   c.gather_tri.clear();
-  for (const auto& p : c.pairs) {
-    c.gather_tri.push_back(p[0]);
-    c.gather_tri.push_back(p[1]);
-  }
-  std::sort(c.gather_tri.begin(), c.gather_tri.end());
-  c.gather_tri.erase(std::unique(c.gather_tri.begin(), c.gather_tri.end()), c.gather_tri.end());
-  auto index = [&](int t) {
-    return static_cast<int>(std::lower_bound(c.gather_tri.begin(), c.gather_tri.end(), t) -
-                            c.gather_tri.begin());
-  };
+  for (int t : c.candidates)
+    if (index[t] == 0) {
+      index[t] = static_cast<int>(c.gather_tri.size());
+      c.gather_tri.push_back(t);
+    }
   c.gather_start.assign(c.gather_tri.size() + 1, 0);
   for (const auto& p : c.pairs) {
-    ++c.gather_start[index(p[0]) + 1];
-    ++c.gather_start[index(p[1]) + 1];
+    ++c.gather_start[index[p[0]] + 1];
+    ++c.gather_start[index[p[1]] + 1];
   }
   for (std::size_t g = 0; g < c.gather_tri.size(); ++g) c.gather_start[g + 1] += c.gather_start[g];
   c.gather_entry.resize(2 * c.pairs.size());
   c.grid.offset.assign(c.gather_start.begin(), c.gather_start.end() - 1);
   for (std::size_t p = 0; p < c.pairs.size(); ++p)
     for (int side = 0; side < 2; ++side)
-      c.gather_entry[c.grid.offset[index(c.pairs[p][side])]++] = static_cast<int>(2 * p + side);
+      c.gather_entry[c.grid.offset[index[c.pairs[p][side]]]++] = static_cast<int>(2 * p + side);
+  for (int t : c.gather_tri) index[t] = -1;
 }
 
 /// Component labels of the nodes at mesh vertex v from scratch: the same

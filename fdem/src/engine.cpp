@@ -427,6 +427,7 @@ ContactCounters Engine::contact_counters() const {
   r.detections = c.detections;
   r.steps_with_pairs = c.steps_with_pairs;
   r.steps_skipped = c.steps_skipped;
+  r.updates = c.updates;
   return r;
 }
 
