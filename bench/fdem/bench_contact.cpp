@@ -10,8 +10,8 @@
 // confinement keeps the fragments in contact, and the specimen goes on
 // breaking for thousands of steps after the peak, a few crack elements a
 // step: the situation in which a broad phase that starts again from
-// scratch at every breakage costs most. F scales the contact buffer
-// (default 1 = the engine's 0.25 x mean edge length).
+// scratch at every breakage costs most. A buffer F > 0 sets the contact
+// buffer to F x the mean edge length (default 0: the engine's default).
 //
 // Prints the command line, counts, then every K steps: crack elements
 // broken in the interval, the contact share of the step time, detections
@@ -29,25 +29,25 @@
 
 #include <cmath>
 #include <cstdio>
-#include <cstdlib>
-#include <string>
 
 #include "rockfdem/fdem/engine.hpp"
+#include "bench_main.hpp"
 #include "ucs_setup.hpp"
 
 using namespace rockfdem;
 
 namespace {
 
-/// The engine's default buffer: 0.25 x the mean triangle edge length.
-double default_buffer(const fdem::ModelInput& in) {
+/// Mean triangle edge length (each interior edge counted twice, as the
+/// engine does).
+double mean_edge(const fdem::ModelInput& in) {
   double sum = 0;
   for (const auto& t : in.triangles)
     for (int k = 0; k < 3; ++k) {
       const int a = t[k], b = t[(k + 1) % 3];
       sum += std::hypot(in.x[b] - in.x[a], in.y[b] - in.y[a]);
     }
-  return 0.25 * sum / (3.0 * in.triangles.size());
+  return sum / (3.0 * in.triangles.size());
 }
 
 }  // namespace
@@ -56,39 +56,21 @@ int main(int argc, char** argv) {
   // 1. Options.
   long n_tri = 8800, steps = 20000, report = 1000;
   int threads = 0;
-  double velocity = 1.0, confinement = 20.0, buffer = 1.0;
-  std::printf("command:");
-  for (int i = 0; i < argc; ++i) std::printf(" %s", argv[i]);
-  std::printf("\n");
-  for (int i = 1; i < argc; i += 2) {
-    const std::string a = argv[i];
-    if (i + 1 >= argc || a == "--help") {
-      std::fprintf(stderr,
-                   "usage: bench_contact [--triangles N] [--steps S] [--threads T] "
-                   "[--velocity V] [--confinement MPa] [--buffer F] [--report-every K]\n");
-      return a == "--help" ? 0 : 2;
-    }
-    if (a == "--triangles")
-      n_tri = std::atol(argv[i + 1]);
-    else if (a == "--steps")
-      steps = std::atol(argv[i + 1]);
-    else if (a == "--threads")
-      threads = std::atoi(argv[i + 1]);
-    else if (a == "--velocity")
-      velocity = std::atof(argv[i + 1]);
-    else if (a == "--confinement")
-      confinement = std::atof(argv[i + 1]);
-    else if (a == "--buffer")
-      buffer = std::atof(argv[i + 1]);
-    else if (a == "--report-every")
-      report = std::atol(argv[i + 1]);
-    else {
-      std::fprintf(stderr, "unknown option %s (see --help)\n", a.c_str());
-      return 2;
-    }
-  }
+  double velocity = 1.0, confinement = 20.0, buffer = 0.0;
+  const bool ok = bench::read_options(
+      argc, argv,
+      {{"--triangles", &n_tri},
+       {"--steps", &steps},
+       {"--threads", &threads},
+       {"--velocity", &velocity},
+       {"--confinement", &confinement},
+       {"--buffer", &buffer},
+       {"--report-every", &report}},
+      "bench_contact [--triangles N] [--steps S] [--threads T] [--velocity V] "
+      "[--confinement MPa] [--buffer F] [--report-every K]");
+  if (!ok) return 2;
   if (report <= 0) report = steps;
-  try {
+  return bench::run_guarded([&] {
     // 2. The confined specimen with contact.
     const fdem::RectangleSpec grid = fdem::ucs_grid(0.05, 0.1, n_tri);
     fdem::ModelInput in = fdem::ucs_specimen(grid, bench::ucs_rock(), velocity);
@@ -100,12 +82,12 @@ int main(int argc, char** argv) {
     }
     in.threads = threads;
     in.contact.enabled = true;
-    in.contact.buffer = buffer * default_buffer(in);
+    in.contact.buffer = buffer * mean_edge(in);
     fdem::Engine engine(in);
     std::printf("triangles %zu nodes %zu cracks %zu threads %d\n", engine.n_triangles(),
                 engine.n_nodes(), engine.n_cracks(), engine.threads());
-    std::printf("dt %.6g s, confinement %.4g MPa, buffer %.4g m (%.3g x default)\n", engine.dt(),
-                confinement, in.contact.buffer, buffer);
+    std::printf("dt %.6g s, confinement %.4g MPa, buffer %.4g x mean edge (0: default)\n",
+                engine.dt(), confinement, buffer);
     // 3. The time loop, one report per interval.
     const double t0 = omp_get_wtime();
     long broken_before = 0;
@@ -143,12 +125,6 @@ int main(int argc, char** argv) {
                 c.updates, c.steps_with_pairs);
     std::printf("broken %ld\n", engine.broken_counts().total());
     std::printf("state_hash %s\n", engine.state_hash().c_str());
-  } catch (const InputError& e) {
-    std::fprintf(stderr, "input error: %s\n", e.what());
-    return 2;
-  } catch (const NumericalError& e) {
-    std::fprintf(stderr, "numerical error: %s\n", e.what());
-    return 3;
-  }
-  return 0;
+    return 0;
+  });
 }

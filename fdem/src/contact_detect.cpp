@@ -412,7 +412,10 @@ void contact_setup(EngineData& d) {
       sum += std::hypot(p[2 * b] - p[2 * a], p[2 * b + 1] - p[2 * a + 1]);
     }
   const double mean_edge = d.tris.size() ? sum / (3.0 * d.tris.size()) : 1.0;
-  c.buffer = c.settings.buffer > 0 ? c.settings.buffer : 0.25 * mean_edge;
+  // An eighth of the mean edge: bench_contact's table in docs/benchmarks.md
+  // (pairs mostly neighbours when pressed; fewer far pairs when flying apart,
+  // at a few detections per 1000 steps).
+  c.buffer = c.settings.buffer > 0 ? c.settings.buffer : 0.125 * mean_edge;
   build_vertex_lists(d);
   c.dirty = c.topology_dirty = true;
 }
