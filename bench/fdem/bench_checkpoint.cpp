@@ -14,6 +14,7 @@
 #include <sstream>
 #include <string>
 
+#include "bench_main.hpp"
 #include "rockfdem/fdem/engine.hpp"
 #include "ucs_setup.hpp"
 
@@ -54,7 +55,7 @@ int main(int argc, char** argv) {
     }
     *value = std::atol(argv[i + 1]);
   }
-  try {
+  return bench::run_guarded([&] {
     fdem::ModelInput in =
         fdem::ucs_specimen(fdem::ucs_grid(0.05, 0.1, n_tri), bench::ucs_rock(), 1.0);
     in.threads = static_cast<int>(threads);
@@ -93,11 +94,5 @@ int main(int argc, char** argv) {
     std::printf("state_hash %s restarted %s, after 100 more steps %s: %s\n", h0.c_str(), h1.c_str(),
                 engine.state_hash().c_str(), same ? "identical" : "DIFFERENT");
     return same ? 0 : 1;
-  } catch (const InputError& e) {
-    std::fprintf(stderr, "input error: %s\n", e.what());
-    return 2;
-  } catch (const NumericalError& e) {
-    std::fprintf(stderr, "numerical error: %s\n", e.what());
-    return 3;
-  }
+  });
 }

@@ -24,6 +24,7 @@
 #include <cstdlib>
 #include <string>
 
+#include "bench_main.hpp"
 #include "rockfdem/fdem/engine.hpp"
 #include "ucs_setup.hpp"
 
@@ -55,7 +56,7 @@ int main(int argc, char** argv) {
       return 2;
     }
   }
-  try {
+  return bench::run_guarded([&] {
     const fdem::RectangleSpec grid = fdem::ucs_grid(0.05, 0.1, n_tri);
     fdem::ModelInput in = fdem::ucs_specimen(grid, bench::ucs_rock(), velocity);
     in.threads = threads;
@@ -106,12 +107,6 @@ int main(int argc, char** argv) {
     std::printf("peak axial stress %.4g MPa\n", peak / 1e6);
     std::printf("broken mode_I %ld mode_II %ld mixed %ld\n", b.mode_I, b.mode_II, b.mixed);
     std::printf("state_hash %s\n", engine.state_hash().c_str());
-  } catch (const InputError& e) {
-    std::fprintf(stderr, "input error: %s\n", e.what());
-    return 2;
-  } catch (const NumericalError& e) {
-    std::fprintf(stderr, "numerical error: %s\n", e.what());
-    return 3;
-  }
-  return 0;
+    return 0;
+  });
 }

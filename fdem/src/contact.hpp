@@ -2,6 +2,8 @@
 //
 //   contact_setup    once per set_contact: edge neighbours, penalty, buffer
 //   contact_detect   broad phase: free-surface triangles, exclusions, grid
+//   contact_breaks   after crack elements broke: the same broad phase,
+//                    updated locally (new candidates, their pairs)
 //   contact_forces   per step: re-detect if needed, narrow phase per pair,
 //                    friction, gather into the triangles' force slots
 //
@@ -24,6 +26,15 @@ namespace rockfdem::fdem::detail {
 
 struct EngineData;
 
+/// Scratch of contact_breaks and build_gather, reused so that a warmed-up
+/// run allocates nothing.
+struct BreakScratch {
+  std::vector<int> cracks, tris, vertices, ints, merged;
+  std::vector<double> boxes;
+  std::vector<std::array<int, 2>> trial, found;
+  std::vector<int> gather_index;  ///< per triangle: its gather row, -1 between uses
+};
+
 struct ContactData {
   ContactSettings settings;
   double penalty = 0, buffer = 0;
@@ -31,21 +42,26 @@ struct ContactData {
   // Static topology (setup): per triangle edge k (corners k -> k+1).
   std::vector<int> edge_nbr;    ///< neighbouring triangle or -1
   std::vector<int> edge_crack;  ///< crack element on the edge or -1
+  std::vector<int> vertex_tri_start, vertex_tri;      ///< CSR mesh vertex -> its triangles
+  std::vector<int> vertex_crack_start, vertex_crack;  ///< CSR mesh vertex -> crack elements
+                                                      ///< with an end there
   // Detection results.
   std::vector<int> candidates;        ///< free-surface triangles, ascending
   std::vector<int> component;         ///< per node: intact-crack component at its vertex
   std::vector<double> boxes;          ///< 4 per candidate, grown by buffer / 2
   std::vector<int> watch_nodes;       ///< nodes of the candidates (displacement check)
-  std::vector<double> watch_pos;      ///< their positions at detection
+  std::vector<double> detect_pos;     ///< per node: position at the last detection
   std::vector<std::array<int, 2>> pairs, old_pairs;  ///< triangle ids, canonical order
   std::vector<double> friction, old_friction;         ///< 6 per pair: role x contactor edge
   std::vector<double> pair_force;                     ///< 12 per pair: A's corners, B's corners
   std::vector<double> energy_partial;  ///< 2 per block of kPairBlock pairs: friction, damping
   std::vector<int> gather_tri, gather_start, gather_entry;  ///< CSR triangle -> 2 pair + side
   GridScratch grid;
+  BreakScratch breaks;
   bool dirty = true;           ///< re-detect before the next contact pass
   bool topology_dirty = true;  ///< candidates and components must be rebuilt
   long detections = 0, steps_with_pairs = 0, steps_skipped = 0, touching = 0;
+  long updates = 0;  ///< local updates after breakage (contact_breaks)
 };
 
 /// Edge neighbours and crack elements per triangle edge, penalty, buffer,
@@ -56,6 +72,14 @@ void contact_setup(EngineData& d);
 /// (shared nodes, an intact crack element between them, or one shared vertex
 /// whose nodes an intact chain of crack elements joins), grid pairs.
 void contact_detect(EngineData& d);
+
+/// After crack elements broke in this step (broken_step == step): their
+/// triangles become candidates, the components at their end vertices are
+/// rebuilt, and the pairs that the breakage allows are inserted, tested at
+/// the positions of the last detection. The result equals a full detection
+/// at those positions (contact_detect.cpp explains why that is safe). Falls
+/// back to a full detection when many triangles change at once.
+void contact_breaks(EngineData& d);
 
 /// One step of contact; see the header comment.
 void contact_forces(EngineData& d);

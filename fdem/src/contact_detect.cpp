@@ -58,6 +58,38 @@ void build_edge_neighbours(EngineData& d) {
     }
 }
 
+/// Fills a CSR (start, items) over n_rows rows from (row, item) uses given
+/// in item order, so every row lists its items ascending.
+template <class Uses>
+void fill_csr(int n_rows, Uses uses, std::vector<int>& start, std::vector<int>& items) {
+  start.assign(n_rows + 1, 0);
+  uses([&](int row, int) { ++start[row + 1]; });
+  for (int r = 0; r < n_rows; ++r) start[r + 1] += start[r];
+  items.resize(start[n_rows]);
+  std::vector<int> next(start.begin(), start.end() - 1);
+  uses([&](int row, int item) { items[next[row]++] = item; });
+}
+
+/// Triangles and crack elements per mesh vertex: what a breakage touches.
+void build_vertex_lists(EngineData& d) {
+  ContactData& c = d.contact;
+  const int nv = static_cast<int>(d.vertex_node_start.size()) - 1;
+  fill_csr(
+      nv,
+      [&](auto use) {
+        for (int t = 0; t < static_cast<int>(d.tris.size()); ++t)
+          for (int k = 0; k < 3; ++k) use(vertex_of(d, t, k), t);
+      },
+      c.vertex_tri_start, c.vertex_tri);
+  fill_csr(
+      nv,
+      [&](auto use) {
+        for (int e = 0; e < static_cast<int>(d.cracks.size()); ++e)
+          for (int end = 0; end < 2; ++end) use(d.nodes.vertex[d.cracks.nodes[4 * e + end]], e);
+      },
+      c.vertex_crack_start, c.vertex_crack);
+}
+
 bool free_edge(const EngineData& d, int t, int k) {
   const int nbr = d.contact.edge_nbr[3 * t + k];
   if (nbr < 0 || !d.tris.active[nbr]) return true;
@@ -110,7 +142,7 @@ void build_candidates(EngineData& d) {
 /// whose boxes touch only diagonally (the alternating-diagonal mesh puts
 /// such free-surface triangles at every corner).
 bool separated(const EngineData& d, int a, int b, double gap) {
-  const double* p = d.nodes.pos.data();
+  const double* p = d.contact.detect_pos.data();
   const int* tri[2] = {&d.tris.nodes[3 * a], &d.tris.nodes[3 * b]};
   for (int side = 0; side < 2; ++side) {
     const int* own = tri[side];
@@ -158,19 +190,26 @@ bool may_touch(const void* context, int i, int j) {
   return !separated(d, a, b, d.contact.buffer);
 }
 
+/// Triangle t's box at the detection positions, grown by half the buffer.
+void triangle_box(const EngineData& d, int t, double* b) {
+  const double grow = 0.5 * d.contact.buffer;
+  const double* p = d.contact.detect_pos.data();
+  const int* nd = &d.tris.nodes[3 * t];
+  b[0] = std::min({p[2 * nd[0]], p[2 * nd[1]], p[2 * nd[2]]}) - grow;
+  b[1] = std::min({p[2 * nd[0] + 1], p[2 * nd[1] + 1], p[2 * nd[2] + 1]}) - grow;
+  b[2] = std::max({p[2 * nd[0]], p[2 * nd[1]], p[2 * nd[2]]}) + grow;
+  b[3] = std::max({p[2 * nd[0] + 1], p[2 * nd[1] + 1], p[2 * nd[2] + 1]}) + grow;
+}
+
 void build_boxes(EngineData& d) {
   ContactData& c = d.contact;
-  const double grow = 0.5 * c.buffer;
   c.boxes.resize(4 * c.candidates.size());
-  const double* p = d.nodes.pos.data();
-  for (std::size_t i = 0; i < c.candidates.size(); ++i) {
-    const int* nd = &d.tris.nodes[3 * c.candidates[i]];
-    double* b = &c.boxes[4 * i];
-    b[0] = std::min({p[2 * nd[0]], p[2 * nd[1]], p[2 * nd[2]]}) - grow;
-    b[1] = std::min({p[2 * nd[0] + 1], p[2 * nd[1] + 1], p[2 * nd[2] + 1]}) - grow;
-    b[2] = std::max({p[2 * nd[0]], p[2 * nd[1]], p[2 * nd[2]]}) + grow;
-    b[3] = std::max({p[2 * nd[0] + 1], p[2 * nd[1] + 1], p[2 * nd[2] + 1]}) + grow;
-  }
+  for (std::size_t i = 0; i < c.candidates.size(); ++i)
+    triangle_box(d, c.candidates[i], &c.boxes[4 * i]);
+}
+
+inline bool boxes_overlap(const double* a, const double* b) {
+  return a[0] <= b[2] && b[0] <= a[2] && a[1] <= b[3] && b[1] <= a[3];
 }
 
 /// Friction springs of pairs found again keep their state (both lists are
@@ -202,31 +241,154 @@ double carry_friction(EngineData& d) {
   return change;
 }
 
-/// CSR contact triangle -> (2 pair + side), in ascending pair order.
+/// CSR contact triangle -> (2 pair + side), in ascending pair order. Linear
+/// in pairs and candidates (the pairs' triangles are candidates): it runs at
+/// every local update as well as at every detection.
 void build_gather(EngineData& d) {
   ContactData& c = d.contact;
+  std::vector<int>& index = c.breaks.gather_index;  // -1 between calls
+  index.resize(d.tris.size(), -1);
+  for (const auto& p : c.pairs) index[p[0]] = index[p[1]] = 0;
   c.gather_tri.clear();
-  for (const auto& p : c.pairs) {
-    c.gather_tri.push_back(p[0]);
-    c.gather_tri.push_back(p[1]);
-  }
-  std::sort(c.gather_tri.begin(), c.gather_tri.end());
-  c.gather_tri.erase(std::unique(c.gather_tri.begin(), c.gather_tri.end()), c.gather_tri.end());
-  auto index = [&](int t) {
-    return static_cast<int>(std::lower_bound(c.gather_tri.begin(), c.gather_tri.end(), t) -
-                            c.gather_tri.begin());
-  };
+  for (int t : c.candidates)
+    if (index[t] == 0) {
+      index[t] = static_cast<int>(c.gather_tri.size());
+      c.gather_tri.push_back(t);
+    }
   c.gather_start.assign(c.gather_tri.size() + 1, 0);
   for (const auto& p : c.pairs) {
-    ++c.gather_start[index(p[0]) + 1];
-    ++c.gather_start[index(p[1]) + 1];
+    ++c.gather_start[index[p[0]] + 1];
+    ++c.gather_start[index[p[1]] + 1];
   }
   for (std::size_t g = 0; g < c.gather_tri.size(); ++g) c.gather_start[g + 1] += c.gather_start[g];
   c.gather_entry.resize(2 * c.pairs.size());
   c.grid.offset.assign(c.gather_start.begin(), c.gather_start.end() - 1);
   for (std::size_t p = 0; p < c.pairs.size(); ++p)
     for (int side = 0; side < 2; ++side)
-      c.gather_entry[c.grid.offset[index(c.pairs[p][side])]++] = static_cast<int>(2 * p + side);
+      c.gather_entry[c.grid.offset[index[c.pairs[p][side]]]++] = static_cast<int>(2 * p + side);
+  for (int t : c.gather_tri) index[t] = -1;
+}
+
+/// Component labels of the nodes at mesh vertex v from scratch: the same
+/// union-find as build_components, restricted to the crack elements with an
+/// end at v (they join nodes of v only). Every label is the smallest node id
+/// of its component, as after a full build.
+void rebuild_components_at(EngineData& d, int v) {
+  ContactData& c = d.contact;
+  std::vector<int>& parent = c.component;
+  const int n0 = d.vertex_node_start[v], n1 = d.vertex_node_start[v + 1];
+  for (int i = n0; i < n1; ++i) parent[d.vertex_nodes[i]] = d.vertex_nodes[i];
+  auto find = [&](int i) {
+    while (parent[i] != i) i = parent[i] = parent[parent[i]];
+    return i;
+  };
+  for (int k = c.vertex_crack_start[v]; k < c.vertex_crack_start[v + 1]; ++k) {
+    const int e = c.vertex_crack[k];
+    if (!d.cracks.active[e] || d.cracks.state[e] == std::uint8_t(CrackState::kBroken)) continue;
+    const int* nd = &d.cracks.nodes[4 * e];
+    const int end = d.nodes.vertex[nd[0]] == v ? 0 : 1;
+    const int a = find(nd[end]), b = find(nd[3 - end]);
+    if (a != b) parent[std::max(a, b)] = std::min(a, b);
+  }
+  for (int i = n0; i < n1; ++i) parent[d.vertex_nodes[i]] = find(d.vertex_nodes[i]);
+}
+
+/// Index of triangle t in the (ascending) candidates, or -1.
+int candidate_index(const ContactData& c, int t) {
+  const auto it = std::lower_bound(c.candidates.begin(), c.candidates.end(), t);
+  return it != c.candidates.end() && *it == t ? static_cast<int>(it - c.candidates.begin()) : -1;
+}
+
+/// Inserts the (ascending, new) triangles s.tris into the candidates with
+/// their boxes, and their nodes into the watched nodes: one merge each.
+void insert_candidates(EngineData& d) {
+  ContactData& c = d.contact;
+  BreakScratch& s = c.breaks;
+  const std::size_t n = c.candidates.size() + s.tris.size();
+  s.merged.resize(n);
+  s.boxes.resize(4 * n);
+  std::size_t i = 0, j = 0;
+  for (std::size_t k = 0; k < n; ++k) {
+    double* box = &s.boxes[4 * k];
+    if (j == s.tris.size() || (i < c.candidates.size() && c.candidates[i] < s.tris[j])) {
+      s.merged[k] = c.candidates[i];
+      std::copy_n(&c.boxes[4 * i], 4, box);
+      ++i;
+    } else {
+      s.merged[k] = s.tris[j++];
+      triangle_box(d, s.merged[k], box);
+    }
+  }
+  std::swap(c.candidates, s.merged);
+  std::swap(c.boxes, s.boxes);
+  s.ints.clear();
+  for (int t : s.tris)
+    for (int k = 0; k < 3; ++k) s.ints.push_back(d.tris.nodes[3 * t + k]);
+  std::sort(s.ints.begin(), s.ints.end());
+  s.merged.resize(c.watch_nodes.size() + s.ints.size());
+  const auto end = std::merge(c.watch_nodes.begin(), c.watch_nodes.end(), s.ints.begin(),
+                              s.ints.end(), s.merged.begin());
+  s.merged.erase(std::unique(s.merged.begin(), end), s.merged.end());
+  std::swap(c.watch_nodes, s.merged);
+}
+
+/// Every pair the breakage may have allowed, as ascending triangle ids,
+/// sorted and unique: a new candidate with any candidate whose box it
+/// overlaps, the faces of each broken crack element, and all candidate
+/// pairs around the vertices whose components split.
+void trial_pairs(EngineData& d) {
+  const ContactData& c = d.contact;
+  BreakScratch& s = d.contact.breaks;
+  s.trial.clear();
+  auto add = [&](int a, int b) {
+    if (a != b) s.trial.push_back({std::min(a, b), std::max(a, b)});
+  };
+  const int nc = static_cast<int>(c.candidates.size());
+  for (int t : s.tris) {
+    const double* box = &c.boxes[4 * candidate_index(c, t)];
+    for (int j = 0; j < nc; ++j)
+      if (boxes_overlap(box, &c.boxes[4 * j])) add(t, c.candidates[j]);
+  }
+  for (int e : s.cracks) add(d.cracks.tri[2 * e], d.cracks.tri[2 * e + 1]);
+  for (int v : s.vertices)
+    for (int i = c.vertex_tri_start[v]; i < c.vertex_tri_start[v + 1]; ++i)
+      for (int j = i + 1; j < c.vertex_tri_start[v + 1]; ++j)
+        add(c.vertex_tri[i], c.vertex_tri[j]);
+  std::sort(s.trial.begin(), s.trial.end());
+  s.trial.erase(std::unique(s.trial.begin(), s.trial.end()), s.trial.end());
+}
+
+/// Merges the accepted new pairs s.found into the pairs: old pairs keep
+/// their friction springs, new ones start at zero. Returns minus the stored
+/// energy of the new pairs (the handover, as in carry_friction).
+double insert_pairs(EngineData& d) {
+  ContactData& c = d.contact;
+  const BreakScratch& s = c.breaks;
+  std::swap(c.old_pairs, c.pairs);
+  std::swap(c.old_friction, c.friction);
+  const std::size_t n = c.old_pairs.size() + s.found.size();
+  c.pairs.resize(n);
+  c.friction.resize(6 * n);
+  std::size_t i = 0, j = 0;
+  for (std::size_t k = 0; k < n; ++k) {
+    if (j == s.found.size() || (i < c.old_pairs.size() && c.old_pairs[i] < s.found[j])) {
+      c.pairs[k] = c.old_pairs[i];
+      std::copy_n(&c.old_friction[6 * i], 6, &c.friction[6 * k]);
+      ++i;
+    } else {
+      c.pairs[k] = s.found[j++];
+      std::fill_n(&c.friction[6 * k], 6, 0.0);
+    }
+  }
+  const Placement at = half_step_placement(d);
+  double change = 0.0;
+  j = 0;
+  for (std::size_t k = 0; k < n && j < s.found.size(); ++k)
+    if (c.pairs[k] == s.found[j]) {
+      change -= contact_pair_energy(d, k, at);
+      ++j;
+    }
+  return change;
 }
 
 }  // namespace
@@ -250,7 +412,11 @@ void contact_setup(EngineData& d) {
       sum += std::hypot(p[2 * b] - p[2 * a], p[2 * b + 1] - p[2 * a + 1]);
     }
   const double mean_edge = d.tris.size() ? sum / (3.0 * d.tris.size()) : 1.0;
-  c.buffer = c.settings.buffer > 0 ? c.settings.buffer : 0.25 * mean_edge;
+  // An eighth of the mean edge: bench_contact's table in docs/benchmarks.md
+  // (pairs mostly neighbours when pressed; fewer far pairs when flying apart,
+  // at a few detections per 1000 steps).
+  c.buffer = c.settings.buffer > 0 ? c.settings.buffer : 0.125 * mean_edge;
+  build_vertex_lists(d);
   c.dirty = c.topology_dirty = true;
 }
 
@@ -258,6 +424,8 @@ void contact_detect(EngineData& d) {
   ContactData& c = d.contact;
   if (c.topology_dirty) build_candidates(d);
   c.topology_dirty = false;
+  // Boxes, the separation test and the drift check all start from here.
+  c.detect_pos.assign(d.nodes.pos.begin(), d.nodes.pos.end());
   build_boxes(d);
   std::swap(c.old_pairs, c.pairs);
   std::swap(c.old_friction, c.friction);
@@ -272,13 +440,77 @@ void contact_detect(EngineData& d) {
   c.pair_force.resize(12 * c.pairs.size());
   c.energy_partial.resize(2 * ((c.pairs.size() + kPairBlock - 1) / kPairBlock));
   build_gather(d);
-  c.watch_pos.resize(2 * c.watch_nodes.size());
-  for (std::size_t i = 0; i < c.watch_nodes.size(); ++i) {
-    c.watch_pos[2 * i] = d.nodes.pos[2 * c.watch_nodes[i]];
-    c.watch_pos[2 * i + 1] = d.nodes.pos[2 * c.watch_nodes[i] + 1];
-  }
   c.dirty = false;
   ++c.detections;
+}
+
+// Breakage without a full detection. The last detection (at positions x0,
+// kept in detect_pos) found every candidate pair whose boxes, grown by half
+// the buffer, overlap; it is repeated before any watched node has moved
+// more than half the buffer from x0, so no other pair can touch before
+// then. A broken crack element only adds: its two triangles may become
+// candidates, the pair of its faces is no longer excluded, and the
+// components at its two end vertices may split (which allows pairs of
+// triangles that share only that vertex); no exclusion is added and no
+// candidate lost. So the pair set of a full detection at x0 with the new
+// crack states is the old one plus pairs that involve a new candidate, the
+// faces' pair or two triangles around an end vertex, and contact_breaks
+// tests exactly those, at x0, with the full detection's filter. The new
+// candidates' nodes join the watched nodes with their x0 positions, so the
+// drift check covers them from x0 as if they had been watched since the
+// detection: the guarantee above holds for the grown set as it held for
+// the old one. Pairs are merged in their canonical order and existing
+// pairs keep their friction springs.
+void contact_breaks(EngineData& d) {
+  ContactData& c = d.contact;
+  if (c.dirty || c.topology_dirty) {  // a full detection is due this step anyway
+    c.dirty = c.topology_dirty = true;
+    return;
+  }
+  BreakScratch& s = c.breaks;
+  s.cracks.clear();
+  s.tris.clear();
+  s.vertices.clear();
+  for (int e = 0; e < static_cast<int>(d.cracks.size()); ++e) {
+    if (d.cracks.broken_step[e] != d.step ||
+        d.cracks.state[e] != std::uint8_t(CrackState::kBroken))
+      continue;
+    s.cracks.push_back(e);
+    for (int side = 0; side < 2; ++side) {
+      const int t = d.cracks.tri[2 * e + side];
+      if (d.tris.active[t] && candidate_index(c, t) < 0) s.tris.push_back(t);
+      s.vertices.push_back(d.nodes.vertex[d.cracks.nodes[4 * e + side]]);
+    }
+  }
+  std::sort(s.tris.begin(), s.tris.end());
+  s.tris.erase(std::unique(s.tris.begin(), s.tris.end()), s.tris.end());
+  std::sort(s.vertices.begin(), s.vertices.end());
+  s.vertices.erase(std::unique(s.vertices.begin(), s.vertices.end()), s.vertices.end());
+  // Each new candidate is tested against all candidates: beyond a few, the
+  // grid is cheaper.
+  if (s.tris.size() > c.candidates.size() / 16 + 16) {
+    c.dirty = c.topology_dirty = true;
+    return;
+  }
+  for (int v : s.vertices) rebuild_components_at(d, v);
+  insert_candidates(d);
+  trial_pairs(d);
+  s.found.clear();
+  std::size_t o = 0;
+  for (const auto& p : s.trial) {
+    while (o < c.pairs.size() && c.pairs[o] < p) ++o;
+    if (o < c.pairs.size() && c.pairs[o] == p) continue;
+    const int i = candidate_index(c, p[0]), j = candidate_index(c, p[1]);
+    if (i < 0 || j < 0 || !boxes_overlap(&c.boxes[4 * i], &c.boxes[4 * j])) continue;
+    if (may_touch(&d, i, j)) s.found.push_back(p);
+  }
+  ++c.updates;
+  if (s.found.empty()) return;
+  const double handover = insert_pairs(d);
+  if (d.energy.started) d.energy.fracture += handover;
+  c.pair_force.resize(12 * c.pairs.size());
+  c.energy_partial.resize(2 * ((c.pairs.size() + kPairBlock - 1) / kPairBlock));
+  build_gather(d);
 }
 
 double contact_omega2(const EngineData& d) {

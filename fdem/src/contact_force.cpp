@@ -217,8 +217,8 @@ double watched_drift2(const EngineData& d) {
     reduction(max : worst) if (n > 16384)
   for (long i = 0; i < n; ++i) {
     const int node = c.watch_nodes[i];
-    const double dx = d.nodes.pos[2 * node] - c.watch_pos[2 * i];
-    const double dy = d.nodes.pos[2 * node + 1] - c.watch_pos[2 * i + 1];
+    const double dx = d.nodes.pos[2 * node] - c.detect_pos[2 * node];
+    const double dy = d.nodes.pos[2 * node + 1] - c.detect_pos[2 * node + 1];
     worst = std::max(worst, dx * dx + dy * dy);
   }
   return worst;

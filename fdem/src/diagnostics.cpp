@@ -124,12 +124,15 @@ namespace {
 /// enabled), plus what the last detection holds.
 template <class Bytes>
 std::size_t contact_bytes(const detail::ContactData& c, Bytes b) {
-  return b(c.edge_nbr) + b(c.edge_crack) + b(c.component) + b(c.candidates) + b(c.boxes) +
-         b(c.watch_nodes) + b(c.watch_pos) + b(c.pairs) + b(c.old_pairs) + b(c.friction) +
+  const auto& s = c.breaks;
+  return b(c.edge_nbr) + b(c.edge_crack) + b(c.vertex_tri_start) + b(c.vertex_tri) +
+         b(c.vertex_crack_start) + b(c.vertex_crack) + b(c.component) + b(c.candidates) +
+         b(c.boxes) + b(c.watch_nodes) + b(c.detect_pos) + b(c.pairs) + b(c.old_pairs) + b(c.friction) +
          b(c.old_friction) + b(c.pair_force) + b(c.gather_tri) + b(c.gather_start) +
          b(c.gather_entry) + b(c.grid.cell) + b(c.grid.cell_start) +
          b(c.grid.items) + b(c.grid.count) + b(c.grid.offset) + b(c.grid.found) +
-         b(c.energy_partial);
+         b(c.energy_partial) + b(s.cracks) + b(s.tris) + b(s.vertices) + b(s.ints) +
+         b(s.merged) + b(s.boxes) + b(s.trial) + b(s.found) + b(s.gather_index);
 }
 
 }  // namespace

@@ -229,7 +229,7 @@ void Engine::step() {
   double t2 = omp_get_wtime();
   impl_->times.cracks += t2 - t1;
   if (d.contact_on) {  // one branch per step while contact is off
-    if (n_broken > 0) d.contact.topology_dirty = d.contact.dirty = true;
+    if (n_broken > 0) detail::contact_breaks(d);  // a local update, not a new detection
     detail::contact_forces(d);
     const double t3 = omp_get_wtime();
     impl_->times.contact += t3 - t2;
@@ -427,6 +427,7 @@ ContactCounters Engine::contact_counters() const {
   r.detections = c.detections;
   r.steps_with_pairs = c.steps_with_pairs;
   r.steps_skipped = c.steps_skipped;
+  r.updates = c.updates;
   return r;
 }
 

@@ -121,7 +121,7 @@ void fields(Ar& ar, Cracks& c) {
 
 template <class Ar>
 void fields(Ar& ar, ContactData& c) {
-  ROCKFDEM_CHECKPOINT_MEMBERS(ContactData, 27);
+  ROCKFDEM_CHECKPOINT_MEMBERS(ContactData, 33);
   ar.tag("CONT");
   ar.state(c.settings);
   ar.state(c.penalty);  // set_contact may come after construction: all of it is state
@@ -129,11 +129,15 @@ void fields(Ar& ar, ContactData& c) {
   ar.state(c.mu);
   ar.state(c.edge_nbr);
   ar.state(c.edge_crack);
+  ar.state(c.vertex_tri_start);
+  ar.state(c.vertex_tri);
+  ar.state(c.vertex_crack_start);
+  ar.state(c.vertex_crack);
   ar.state(c.candidates);
   ar.state(c.component);
   ar.state(c.boxes);
   ar.state(c.watch_nodes);
-  ar.state(c.watch_pos);
+  ar.state(c.detect_pos);  // boxes of later candidates and the drift check start here
   ar.state(c.pairs);  // in their canonical order, not detected again
   ar.state(c.old_pairs);
   ar.state(c.friction);  // the tangential springs
@@ -143,12 +147,14 @@ void fields(Ar& ar, ContactData& c) {
   ar.state(c.gather_start);
   ar.state(c.gather_entry);
   ar.skip(c.grid);  // scratch: every detection rewrites it before reading it
+  ar.skip(c.breaks);  // scratch: every local update rewrites it before reading it
   ar.state(c.dirty);
   ar.state(c.topology_dirty);
   ar.state(c.detections);
   ar.state(c.steps_with_pairs);
   ar.state(c.steps_skipped);
   ar.state(c.touching);
+  ar.state(c.updates);
   ar.state(c.energy_partial);  // scratch, but sized with the pairs at detection
 }
 

@@ -5,8 +5,11 @@
 #include <algorithm>
 #include <random>
 
+#include "boundary.hpp"
 #include "contact_grid.hpp"
+#include "engine_data.hpp"
 #include "test_models.hpp"
+#include "topology.hpp"
 
 namespace rockfdem::fdem {
 namespace {
@@ -249,10 +252,89 @@ TEST(Contact, grid_broad_phase_matches_brute_force) {
     detail::GridScratch s;
     detail::grid_pairs(boxes, keep_by_parity, &drop, 1, s, grid1);
     detail::grid_pairs(boxes, keep_by_parity, &drop, 2, s, grid2);
-    if (seed % 2) EXPECT_GT(brute.size(), 0u);  // clustered seeds overlap
+    if (seed % 2) {  // clustered seeds overlap
+      EXPECT_GT(brute.size(), 0u);
+    }
     EXPECT_EQ(grid1, brute) << "seed " << seed;
     EXPECT_EQ(grid2, brute) << "seed " << seed;
   }
+}
+
+/// Breaks crack element e in the current step, as crack_forces does.
+void break_crack(detail::EngineData& d, int e) {
+  d.cracks.state[e] = std::uint8_t(CrackState::kBroken);
+  d.cracks.broken_step[e] = static_cast<std::int32_t>(d.step);
+}
+
+// Breakage updates the broad phase locally (contact_breaks): after a few
+// random crack elements break, candidates, components, boxes, watched
+// nodes, pairs and the gather lists equal those of a full detection at the
+// same positions, and the pairs that were there keep their friction springs.
+// A fracture mesh with every node jiggled (faces open and overlap), a fifth
+// of the crack elements broken beforehand, full detections between rounds
+// after the nodes moved again.
+TEST(Contact, local_update_after_breakage_equals_a_full_detection) {
+  RectangleSpec spec;
+  spec.width = spec.height = 0.02;
+  spec.nx = spec.ny = 12;
+  ModelInput in = structured_rectangle(spec, test::rock());
+  detail::EngineData d;
+  d.materials = in.materials;
+  detail::build_topology(in, d);
+  detail::resolve_edges(in, d);  // the vertex -> node lists
+  d.threads = 1;
+  d.contact.settings = contact_on();
+  d.contact_on = true;
+  detail::contact_setup(d);
+  std::mt19937 rng(11);
+  const double h = spec.width / spec.nx;
+  std::uniform_real_distribution<double> jiggle(-0.04 * h, 0.04 * h), spring(-1, 1);
+  const int nc = static_cast<int>(d.cracks.size());
+  for (int e = 0; e < nc; ++e)
+    if (rng() % 5 == 0) break_crack(d, e);
+  long local = 0;
+  for (int round = 0; round < 40; ++round) {
+    if (round % 8 == 0) {  // move, detect in full
+      for (double& x : d.nodes.pos) x += jiggle(rng);
+      d.contact.dirty = true;
+      detail::contact_detect(d);
+    }
+    for (double& f : d.contact.friction) f = spring(rng);
+    const auto pairs_before = d.contact.pairs;
+    const auto friction_before = d.contact.friction;
+    ++d.step;
+    for (int k = 1 + round % 4; k > 0;) {
+      const int e = static_cast<int>(rng() % nc);
+      if (d.cracks.state[e] == std::uint8_t(CrackState::kBroken)) continue;
+      break_crack(d, e);
+      --k;
+    }
+    detail::contact_breaks(d);
+    ASSERT_FALSE(d.contact.dirty) << "round " << round << ": fell back to a full detection";
+    local += d.contact.pairs.size() > pairs_before.size();
+    detail::EngineData full = d;
+    full.contact.dirty = full.contact.topology_dirty = true;
+    detail::contact_detect(full);
+    const detail::ContactData &a = d.contact, &b = full.contact;
+    EXPECT_EQ(a.candidates, b.candidates) << "round " << round;
+    EXPECT_EQ(a.component, b.component) << "round " << round;
+    EXPECT_EQ(a.boxes, b.boxes) << "round " << round;
+    EXPECT_EQ(a.watch_nodes, b.watch_nodes) << "round " << round;
+    EXPECT_EQ(a.pairs, b.pairs) << "round " << round;
+    EXPECT_EQ(a.gather_tri, b.gather_tri) << "round " << round;
+    EXPECT_EQ(a.gather_start, b.gather_start) << "round " << round;
+    EXPECT_EQ(a.gather_entry, b.gather_entry) << "round " << round;
+    for (std::size_t q = 0, o = 0; q < a.pairs.size(); ++q) {
+      while (o < pairs_before.size() && pairs_before[o] < a.pairs[q]) ++o;
+      const bool kept = o < pairs_before.size() && pairs_before[o] == a.pairs[q];
+      for (int k = 0; k < 6; ++k)
+        EXPECT_EQ(a.friction[6 * q + k], kept ? friction_before[6 * o + k] : 0.0);
+    }
+  }
+  std::printf("%ld of 40 local updates added pairs; %zu candidates, %zu pairs\n", local,
+              d.contact.candidates.size(), d.contact.pairs.size());
+  EXPECT_GT(local, 20);
+  EXPECT_EQ(d.contact.updates, 40);
 }
 
 // Contact on, intact fracture specimen: candidates on the outline, no pairs,

@@ -81,6 +81,7 @@ struct ContactCounters {
   long detections = 0;        ///< broad-phase runs since construction
   long steps_with_pairs = 0;  ///< steps in which the narrow phase ran
   long steps_skipped = 0;     ///< steps in which nothing could touch (no narrow phase)
+  long updates = 0;           ///< local broad-phase updates after breakage (no detection)
 };
 
 /// Energy terms since the first step [J/m] (plane problems: per unit

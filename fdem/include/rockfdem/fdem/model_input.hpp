@@ -95,7 +95,7 @@ struct DampingSettings {
 struct ContactSettings {
   bool enabled = false;
   double penalty = 0;        ///< p [Pa]; 0 selects the largest Young's modulus
-  double buffer = 0;         ///< detection buffer [m]; 0 selects 0.25 x the mean edge length
+  double buffer = 0;         ///< detection buffer [m]; 0 selects 0.125 x the mean edge length
   double damping_ratio = 0;  ///< normal contact damping as a fraction of critical
   bool friction = true;      ///< Coulomb friction, mu = tan(residual friction angle)
 };
