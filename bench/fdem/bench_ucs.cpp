@@ -34,28 +34,16 @@ int main(int argc, char** argv) {
   long n_tri = 33000, steps = 10000, report = 0;
   int threads = 0, contact = 0;
   double velocity = 1.0;  // strain rate 20/s: peak near step 6000, post-peak by 10^4
-  std::printf("command:");
-  for (int i = 0; i < argc; ++i) std::printf(" %s", argv[i]);
-  std::printf("\n");
-  for (int i = 1; i + 1 < argc; i += 2) {
-    const std::string a = argv[i];
-    if (a == "--triangles")
-      n_tri = std::atol(argv[i + 1]);
-    else if (a == "--steps")
-      steps = std::atol(argv[i + 1]);
-    else if (a == "--threads")
-      threads = std::atoi(argv[i + 1]);
-    else if (a == "--velocity")
-      velocity = std::atof(argv[i + 1]);
-    else if (a == "--contact")
-      contact = std::atoi(argv[i + 1]);
-    else if (a == "--report-every")
-      report = std::atol(argv[i + 1]);
-    else {
-      std::fprintf(stderr, "unknown option %s\n", a.c_str());
-      return 2;
-    }
-  }
+  if (!bench::read_options(argc, argv,
+                           {{"--triangles", &n_tri},
+                            {"--steps", &steps},
+                            {"--threads", &threads},
+                            {"--velocity", &velocity},
+                            {"--contact", &contact},
+                            {"--report-every", &report}},
+                           "bench_ucs [--triangles N] [--steps S] [--threads T] [--velocity V] "
+                           "[--report-every K] [--contact 0|1]"))
+    return 2;
   return bench::run_guarded([&] {
     const fdem::RectangleSpec grid = fdem::ucs_grid(0.05, 0.1, n_tri);
     fdem::ModelInput in = fdem::ucs_specimen(grid, bench::ucs_rock(), velocity);
