@@ -87,10 +87,11 @@ int run_specimen(const Scene& scene, const CommandLine& cli) {
   const bool disc = scene.mesh.kind == mesh::ModelKind::kBrazilian;
   const SpecimenSize size = specimen_size(scene);
   const int upper_tag = disc ? mesh::kLoadTop : mesh::kTop;
-  History history(output_path(cli.output_dir, "history.csv"),
-                  {"step", "time", "axial_strain", disc ? "tensile_stress" : "axial_stress",
-                   "platen_force", "kinetic_energy", "broken_I", "broken_II", "broken_mixed"});
-  history.extend(energy_columns());
+  std::vector<std::string> columns{"step", "time", "axial_strain",
+                                   disc ? "tensile_stress" : "axial_stress", "platen_force",
+                                   "kinetic_energy", "broken_I", "broken_II", "broken_mixed"};
+  for (const std::string& c : energy_columns()) columns.push_back(c);
+  History history(output_path(cli.output_dir, "history.csv"), columns);
   coupling::PvdCollection pvd(output_path(cli.output_dir, "fdem.pvd"));
   Progress progress(disc ? "brazilian" : "ucs", scene.engine.steps, cli.quiet);
   double peak = 0;

@@ -13,14 +13,6 @@ History::History(std::string path, std::vector<std::string> columns)
   text_ += '\n';
 }
 
-void History::extend(const std::vector<std::string>& columns) {
-  if (!rows_.empty()) throw std::logic_error("history columns are fixed once rows exist");
-  for (const std::string& c : columns) {
-    columns_.push_back(c);
-    text_.insert(text_.size() - 1, "," + c);  // before the header's newline
-  }
-}
-
 void History::append_text(const std::vector<double>& row) {
   if (row.size() != columns_.size()) throw std::logic_error("history row has the wrong width");
   char buf[32];

@@ -10,8 +10,6 @@ namespace rockfdem::workflows {
 class History {
  public:
   History(std::string path, std::vector<std::string> columns);
-  /// Adds columns before the first row.
-  void extend(const std::vector<std::string>& columns);
   /// Appends a row (as many values as columns) and rewrites the file.
   void add(const std::vector<double>& row);
   const std::vector<std::vector<double>>& rows() const { return rows_; }

@@ -217,15 +217,11 @@ void RunOutputs::restore(const nlohmann::json& s, const std::string& from_dir) {
 }
 
 void RunOutputs::lining_outputs(const fdem::Engine& e, const mesh::Mesh& m) {
-  long bonds = 0, broken = 0;
-  for (std::size_t c = 0; c < e.n_cracks(); ++c) {
-    const auto t = e.crack_triangles(c);
-    if ((m.zone[t[0]] == mesh::kLining) == (m.zone[t[1]] == mesh::kLining)) continue;
-    ++bonds;
-    broken += e.crack_state(c) == fdem::CrackState::kBroken;
-  }
-  if (bonds > 0)
-    summary_.json()["lining"] = {{"interface_cracks", bonds}, {"interface_broken", broken}};
+  const std::vector<std::size_t> bond = lining_interface_cracks(e, m);
+  long broken = 0;
+  for (std::size_t c : bond) broken += e.crack_state(c) == fdem::CrackState::kBroken;
+  if (!bond.empty())
+    summary_.json()["lining"] = {{"interface_cracks", bond.size()}, {"interface_broken", broken}};
 }
 
 void RunOutputs::bolt_outputs(const fdem::Engine& e, const fdem::BoltPlan& bolts) {

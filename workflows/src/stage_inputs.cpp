@@ -31,19 +31,6 @@ fdem::Material engine_material(const MaterialSpec& m, const EngineSettings& e) {
   return f;
 }
 
-}  // namespace
-
-std::map<int, fdem::Material> engine_materials(const Scene& s) {
-  std::map<int, fdem::Material> out;
-  const std::pair<const char*, int> zones[] = {
-      {"rock", mesh::kRock}, {"core", mesh::kCore}, {"lining", mesh::kLining}};
-  for (auto [name, zone] : zones)
-    if (s.materials.count(name)) out[zone] = engine_material(s.materials.at(name), s.engine);
-  return out;
-}
-
-namespace {
-
 fdem::Material bond_material(const BondSettings& g, double density, const Scene& s) {
   fdem::Material m;
   m.density = density;
@@ -58,18 +45,6 @@ fdem::Material bond_material(const BondSettings& g, double density, const Scene&
   return m;
 }
 
-}  // namespace
-
-fdem::Material grout_material(const Scene& s) {
-  return bond_material(s.grout, s.materials.at("rock").density, s);
-}
-
-fdem::Material lining_interface_material(const Scene& s) {
-  return bond_material(s.lining_interface, s.materials.at("rock").density, s);
-}
-
-namespace {
-
 fdem::BoltSteel steel_of(const SteelSettings& b) {
   fdem::BoltSteel steel;
   steel.young = b.young;
@@ -82,6 +57,32 @@ fdem::BoltSteel steel_of(const SteelSettings& b) {
 }
 
 }  // namespace
+
+std::map<int, fdem::Material> engine_materials(const Scene& s) {
+  std::map<int, fdem::Material> out;
+  const std::pair<const char*, int> zones[] = {
+      {"rock", mesh::kRock}, {"core", mesh::kCore}, {"lining", mesh::kLining}};
+  for (auto [name, zone] : zones)
+    if (s.materials.count(name)) out[zone] = engine_material(s.materials.at(name), s.engine);
+  return out;
+}
+
+std::vector<std::size_t> lining_interface_cracks(const fdem::Engine& e, const mesh::Mesh& m) {
+  std::vector<std::size_t> out;
+  for (std::size_t c = 0; c < e.n_cracks(); ++c) {
+    const auto t = e.crack_triangles(c);
+    if ((m.zone[t[0]] == mesh::kLining) != (m.zone[t[1]] == mesh::kLining)) out.push_back(c);
+  }
+  return out;
+}
+
+fdem::Material grout_material(const Scene& s) {
+  return bond_material(s.grout, s.materials.at("rock").density, s);
+}
+
+fdem::Material lining_interface_material(const Scene& s) {
+  return bond_material(s.lining_interface, s.materials.at("rock").density, s);
+}
 
 std::vector<fdem::BoltSpec> bolt_specs(const Scene& s) {
   std::vector<fdem::BoltSpec> specs;

@@ -22,6 +22,10 @@ fdem::Material grout_material(const Scene& scene);
 /// The shotcrete-rock bond as an engine material ([lining_interface]).
 fdem::Material lining_interface_material(const Scene& scene);
 
+/// Crack elements joining a lining triangle to a triangle of another zone
+/// (the shotcrete-rock bond), in crack order.
+std::vector<std::size_t> lining_interface_cracks(const fdem::Engine& engine, const mesh::Mesh& m);
+
 /// The scene's bolts as the engine's bolt records.
 std::vector<fdem::BoltSpec> bolt_specs(const Scene& scene);
 

@@ -5,6 +5,7 @@
 #include "interrupt.hpp"
 #include "output_dir.hpp"
 #include "progress.hpp"
+#include "stage_inputs.hpp"
 #include "rockfdem/coupling/atomic_file.hpp"
 #include "rockfdem/fdem/bolt_grouting.hpp"
 
@@ -27,17 +28,11 @@ void StageRunner::set_zone(int zone, bool active, fdem::ActivationReference ref)
 
 long StageRunner::bond_lining() {
   if (materials_.lining_interface < 0) return 0;
-  long n = 0;
-  for (std::size_t c = 0; c < engine_.n_cracks(); ++c) {
-    const auto t = engine_.crack_triangles(c);
-    const bool a = mesh_.zone[t[0]] == mesh::kLining, b = mesh_.zone[t[1]] == mesh::kLining;
-    if (a == b) continue;
-    // Sprayed onto the rock as it is now: the bond starts intact where the
-    // two faces are, whatever the rock's convergence so far.
-    engine_.rejoin_crack(c, materials_.lining_interface);
-    ++n;
-  }
-  return n;
+  // Sprayed onto the rock as it is now: the bond starts intact where the
+  // two faces are, whatever the rock's convergence so far.
+  const std::vector<std::size_t> bond = lining_interface_cracks(engine_, mesh_);
+  for (std::size_t c : bond) engine_.rejoin_crack(c, materials_.lining_interface);
+  return long(bond.size());
 }
 
 nlohmann::json StageRunner::apply(const StageSpec& stage) {
