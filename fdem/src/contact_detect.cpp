@@ -513,22 +513,25 @@ void contact_breaks(EngineData& d) {
   build_gather(d);
 }
 
-double contact_omega2(const EngineData& d) {
-  double min_rho_h2 = 1e300;
+double contact_triangle_omega2(const EngineData& d, std::size_t t) {
   const double* p = d.nodes.mesh_pos.data();
-  for (std::size_t t = 0; t < d.tris.size(); ++t) {
-    if (!d.tris.active[t]) continue;
-    double longest = 0;
-    for (int k = 0; k < 3; ++k) {
-      const int a = d.tris.nodes[3 * t + k], b = d.tris.nodes[3 * t + (k + 1) % 3];
-      longest = std::max(longest, std::hypot(p[2 * b] - p[2 * a], p[2 * b + 1] - p[2 * a + 1]));
-    }
-    const double h = 2.0 * d.tris.area0[t] / longest;
-    min_rho_h2 = std::min(min_rho_h2, d.materials[d.tris.material[t]].density * h * h);
+  double longest = 0;
+  for (int k = 0; k < 3; ++k) {
+    const int a = d.tris.nodes[3 * t + k], b = d.tris.nodes[3 * t + (k + 1) % 3];
+    longest = std::max(longest, std::hypot(p[2 * b] - p[2 * a], p[2 * b + 1] - p[2 * a + 1]));
   }
+  const double h = 2.0 * d.tris.area0[t] / longest;
+  const double rho = d.materials[d.tris.material[t]].density * d.tris.density_factor(t);
   // A sticking friction spring is as stiff as the normal penalty.
   const double springs = d.contact.settings.friction ? 2.0 : 1.0;
-  return springs * 36.0 * d.contact.penalty / min_rho_h2;
+  return springs * 36.0 * d.contact.penalty / (rho * h * h);
+}
+
+double contact_omega2(const EngineData& d) {
+  double w2 = 0;
+  for (std::size_t t = 0; t < d.tris.size(); ++t)
+    if (d.tris.active[t]) w2 = std::max(w2, contact_triangle_omega2(d, t));
+  return w2;
 }
 
 }  // namespace rockfdem::fdem::detail

@@ -122,6 +122,7 @@ Engine::Engine(const ModelInput& in) : impl_(std::make_unique<Impl>()) {
   }
   d.threads = in.threads;
   d.damping = in.damping;
+  d.mass_scaling = in.mass_scaling;
   d.gravity[0] = in.gravity_x;
   d.gravity[1] = in.gravity_y;
   detail::build_topology(in, d);
@@ -303,6 +304,7 @@ void Engine::set_stiffness_factor(std::size_t t, double alpha) {
   d.tris.alpha[t] = alpha;
   detail::book(d, &detail::EnergyLedger::softening, before,
                detail::triangle_stored_energy(d, t, at));
+  if (d.mass_scaling.enabled) d.masses_dirty = true;  // its density factor follows
   impl_->critical_dt = -1;
 }
 
@@ -356,7 +358,40 @@ void Engine::set_damping(const DampingSettings& damping) {
   if (!(damping.local >= 0 && damping.local < 1) || !(damping.mass_proportional >= 0))
     throw InputError("fdem: local damping must lie in [0, 1) and mass-proportional be >= 0");
   impl_->d.damping = damping;
+  if (impl_->d.mass_scaling.enabled) impl_->d.masses_dirty = true;
   impl_->critical_dt = -1;  // local and mass damping lower the limit
+}
+
+void Engine::set_mass_scaling(const MassScaling& scaling) {
+  if (!(scaling.dt >= 0) || !std::isfinite(scaling.dt))
+    throw InputError("fdem: mass scaling dt = " + fmt(scaling.dt) +
+                     " s must be >= 0 (0 selects the least constrained node's own limit)");
+  auto& d = impl_->d;
+  d.mass_scaling = scaling;
+  d.scaled_dt = 0;  // resolved again at the next refresh
+  if (!scaling.enabled) d.tris.mass_scale.clear();
+  d.masses_dirty = true;
+  impl_->critical_dt = -1;
+}
+
+MassScalingReport Engine::mass_scaling_report() const {
+  impl_->refresh();
+  const auto& d = impl_->d;
+  MassScalingReport r;
+  r.enabled = d.mass_scaling.enabled;
+  if (!r.enabled) return r;
+  r.target_dt = d.scaled_dt / std::sqrt(1.0 + d.damping.local);
+  double scaled = 0, real = 0;
+  for (std::size_t t = 0; t < d.tris.size(); ++t) {
+    if (!d.tris.active[t]) continue;
+    const double f = d.tris.density_factor(t), m = d.solids[d.tris.material[t]].rho * d.tris.area0[t];
+    r.max_factor = std::max(r.max_factor, f);
+    scaled += f * m;
+    real += m;
+    if (f > 1.0) ++r.scaled_triangles;
+  }
+  r.mass_ratio = real > 0 ? scaled / real : 1.0;
+  return r;
 }
 
 void Engine::set_crack_material(std::size_t c, int material) {
@@ -367,6 +402,7 @@ void Engine::set_crack_material(std::size_t c, int material) {
   const double before = detail::crack_element_energy(d, c, at);
   d.cracks.material[c] = static_cast<std::uint16_t>(material);
   detail::book(d, &detail::EnergyLedger::removed, before, detail::crack_element_energy(d, c, at));
+  if (d.mass_scaling.enabled) d.masses_dirty = true;  // a stiffer penalty needs more mass
   impl_->critical_dt = -1;
 }
 
@@ -409,6 +445,7 @@ void Engine::set_contact(const ContactSettings& contact) {
   d.contact.settings = contact;
   d.contact_on = contact.enabled;
   if (contact.enabled) detail::contact_setup(d);
+  if (d.mass_scaling.enabled) d.masses_dirty = true;  // contact joins the scaled frequencies
   detail::book(d, &detail::EnergyLedger::removed, before, detail::contact_energy(d, at));
   impl_->critical_dt = -1;
 }

@@ -61,6 +61,11 @@ void fields(Ar& ar, DampingSettings& s) {
 }
 
 template <class Ar>
+void fields(Ar& ar, MassScaling& s) {
+  each_member(ar, s, s.enabled, s.dt);
+}
+
+template <class Ar>
 void fields(Ar& ar, EnergyLedger& e) {
   each_member(ar, e, e.started, e.last_dt, e.initial, e.external, e.viscous, e.nodal_damping,
               e.contact_damping, e.absorbing, e.fracture, e.friction, e.softening, e.removed);
@@ -91,7 +96,7 @@ void fields(Ar& ar, Nodes& n) {
 
 template <class Ar>
 void fields(Ar& ar, Triangles& t) {
-  ROCKFDEM_CHECKPOINT_MEMBERS(Triangles, 9);
+  ROCKFDEM_CHECKPOINT_MEMBERS(Triangles, 10);
   ar.tag("TRIS");
   ar.model(t.nodes);
   ar.state(t.ref_inv);  // set_active(..., kCurrent) re-references
@@ -102,6 +107,7 @@ void fields(Ar& ar, Triangles& t) {
   ar.model(t.material);
   ar.state(t.active);
   ar.state(t.viscous_stress);  // the energy ledger books its work at the next step
+  ar.state(t.mass_scale);      // rebuilt only when masses_dirty, like the masses
 }
 
 template <class Ar>
@@ -160,7 +166,7 @@ void fields(Ar& ar, ContactData& c) {
 
 template <class Ar>
 void fields(Ar& ar, EngineData& d) {
-  ROCKFDEM_CHECKPOINT_MEMBERS(EngineData, 29);  // reversal and gravity count twice
+  ROCKFDEM_CHECKPOINT_MEMBERS(EngineData, 31);  // reversal and gravity count twice
   fields(ar, d.nodes);
   fields(ar, d.tris);
   fields(ar, d.cracks);
@@ -181,6 +187,8 @@ void fields(Ar& ar, EngineData& d) {
   ar.state(d.block_partial);
   ar.state(d.reversal);
   ar.state(d.damping);
+  ar.state(d.mass_scaling);  // set_mass_scaling may come after construction
+  ar.state(d.scaled_dt);     // resolved once, kept through stage changes
   ar.state(d.gravity);
   ar.state(d.contact_on);
   fields(ar, d.contact);

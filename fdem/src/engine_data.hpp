@@ -49,9 +49,11 @@ struct Triangles {
   std::vector<double> viscous_stress;  ///< dt/2 A alpha eta D of the last step (3 per
                                        ///< triangle; empty without viscous damping): the energy
                                        ///< ledger books its work with the next velocities
+  std::vector<double> mass_scale;  ///< density factor >= 1 (mass_scaling.cpp); empty when off
   std::vector<std::uint16_t> material;
   std::vector<std::uint8_t> active;
   std::size_t size() const { return area0.size(); }
+  double density_factor(std::size_t t) const { return mass_scale.empty() ? 1.0 : mass_scale[t]; }
 };
 
 struct Cracks {
@@ -113,6 +115,9 @@ struct EngineData {
   std::vector<double> energy_partial;  ///< triangle and crack loops: one per kEnergyBlock
   double reversal[2] = {0, 0};        ///< sum m v_old.v_new, sum m v_old^2 (free nodes)
   DampingSettings damping;
+  MassScaling mass_scaling;
+  double scaled_dt = 0;  ///< mass scaling's resolved target step without local damping;
+                         ///< 0 until resolved
   double gravity[2] = {0, 0};
   bool contact_on = false;  ///< ContactSettings::enabled
   ContactData contact;

@@ -97,6 +97,9 @@ void check_edges_and_bcs(const ModelInput& in) {
   if (!(in.damping.local >= 0 && in.damping.local < 1))
     fail("local damping " + str(in.damping.local) + " must lie in [0, 1)");
   if (!(in.damping.mass_proportional >= 0)) fail("mass-proportional damping must be >= 0");
+  if (!(in.mass_scaling.dt >= 0) || !std::isfinite(in.mass_scaling.dt))
+    fail("mass scaling dt " + str(in.mass_scaling.dt) +
+         " s must be >= 0 (0 selects the least constrained node's own limit)");
   if (in.threads < 0) fail("threads must be >= 0 (0 = OpenMP default)");
 }
 

@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "mass_scaling.hpp"
 #include "parallel.hpp"
 
 namespace rockfdem::fdem::detail {
@@ -20,37 +21,38 @@ constexpr int kNodeSums = 5;
 
 inline double sign(double v) { return v > 0.0 ? 1.0 : (v < 0.0 ? -1.0 : 0.0); }
 
-void refresh_masses(EngineData& d) {
-  const long nn = static_cast<long>(d.nodes.size());
+/// Mass of node i from its active triangles, with or without their
+/// density factors (mass scaling).
+double corner_mass(const EngineData& d, long i, bool scaled) {
   const long tri_slots = static_cast<long>(d.crack_slot0());
-  Nodes& n = d.nodes;
+  const Nodes& n = d.nodes;
   const Triangles& tr = d.tris;
-#pragma omp parallel for schedule(static) num_threads(thread_count(d.threads))
-  for (long i = 0; i < nn; ++i) {
-    double m = 0;
-    for (int k = n.slot_start[i]; k < n.slot_start[i + 1]; ++k) {
-      const int s = n.slot_index[k];
-      if (s >= tri_slots) break;  // slots are sorted: triangles come first
-      const int t = s / 3;
-      if (tr.active[t]) m += d.solids[tr.material[t]].rho * tr.area0[t] / 3.0;
-    }
-    n.mass[i] = m;
-    n.inv_mass[i] = m > 0 ? 1.0 / m : 0.0;
-    if (m == 0) n.vel[2 * i] = n.vel[2 * i + 1] = 0.0;
+  double m = 0;
+  for (int k = n.slot_start[i]; k < n.slot_start[i + 1]; ++k) {
+    const int s = n.slot_index[k];
+    if (s >= tri_slots) break;  // slots are sorted: triangles come first
+    const int t = s / 3;
+    if (tr.active[t])
+      m += d.solids[tr.material[t]].rho * (scaled ? tr.density_factor(t) : 1.0) * tr.area0[t] / 3.0;
   }
+  return m;
 }
 
+/// Gravity acts on the true masses, whatever the scaling of the inertia.
 void refresh_external_forces(EngineData& d) {
   Nodes& n = d.nodes;
+  const bool scaled = !d.tris.mass_scale.empty();
+  const bool gravity = d.gravity[0] != 0.0 || d.gravity[1] != 0.0;
   for (std::size_t i = 0; i < n.size(); ++i) {
-    n.fext[2 * i] = n.mass[i] * d.gravity[0];
-    n.fext[2 * i + 1] = n.mass[i] * d.gravity[1];
+    const double m = gravity && scaled ? corner_mass(d, long(i), false) : n.mass[i];
+    n.fext[2 * i] = m * d.gravity[0];
+    n.fext[2 * i + 1] = m * d.gravity[1];
   }
   for (const NodalLoad& l : d.loads) {
     n.fext[2 * l.node] += l.fx;
     n.fext[2 * l.node + 1] += l.fy;
   }
-  d.dead_loads = d.gravity[0] != 0.0 || d.gravity[1] != 0.0 || !d.loads.empty();
+  d.dead_loads = gravity || !d.loads.empty();
 }
 
 /// Crack elements act only between two active triangles; an element that
@@ -71,13 +73,29 @@ void refresh_crack_activity(EngineData& d) {
 
 }  // namespace
 
+void refresh_masses(EngineData& d) {
+  const long nn = static_cast<long>(d.nodes.size());
+  Nodes& n = d.nodes;
+#pragma omp parallel for schedule(static) num_threads(thread_count(d.threads))
+  for (long i = 0; i < nn; ++i) {
+    const double m = corner_mass(d, i, true);
+    n.mass[i] = m;
+    n.inv_mass[i] = m > 0 ? 1.0 / m : 0.0;
+    if (m == 0) n.vel[2 * i] = n.vel[2 * i + 1] = 0.0;
+  }
+}
+
 void refresh_nodes(EngineData& d) {
   // Masses and crack activity change the kinetic and crack energies without
   // work (a stage control): the energy ledger books the difference.
   const double before = d.energy.started ? kinetic_and_crack_energy(d) : 0.0;
-  refresh_masses(d);
-  refresh_external_forces(d);
+  // Crack activity first: the mass scaling's stability bound reads it.
   refresh_crack_activity(d);
+  if (d.mass_scaling.enabled)
+    scale_masses(d);  // ends with refresh_masses
+  else
+    refresh_masses(d);
+  refresh_external_forces(d);
   if (d.energy.started) book(d, &EnergyLedger::removed, before, kinetic_and_crack_energy(d));
   d.block_partial.assign(kNodeSums * ((d.nodes.size() + kNodeBlock - 1) / kNodeBlock), 0.0);
   const std::size_t blocks = std::max(d.tris.size(), d.cracks.size()) / kEnergyBlock + 1;

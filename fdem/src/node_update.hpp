@@ -12,6 +12,10 @@ namespace rockfdem::fdem::detail {
 /// active). A node left without mass is frozen with zero velocity.
 void refresh_nodes(EngineData& d);
 
+/// Node masses (and their inverses) from the active triangles and their
+/// density factors; a node left without mass is frozen with zero velocity.
+void refresh_masses(EngineData& d);
+
 /// Gathers each node's slots in CSR order, adds external, dashpot and
 /// damping forces, then v += f/m dt (kinematic conditions override), x += v dt.
 /// Returns the lowest node whose new velocity is not finite, or -1.

@@ -12,6 +12,7 @@
 #include <cmath>
 #include <limits>
 
+#include "contact.hpp"
 #include "parallel.hpp"
 #include "rockfdem/fdem/engine.hpp"
 
@@ -79,24 +80,25 @@ void triangle_frequency(const EngineData& d, std::size_t t, double& omega2, doub
   const SolidConstants& s = d.solids[d.tris.material[t]];
   const Eigen::Matrix3d bbt = gradient_product(&d.tris.ref_inv[4 * t]);
   const Eigen::Matrix3d root = elasticity_sqrt(s.lambda, s.mu);
-  const double alpha = d.tris.alpha[t];
-  omega2 = 3.0 / s.rho * alpha * largest_eigenvalue(root * bbt * root);
+  const double alpha = d.tris.alpha[t], rho = s.rho * d.tris.density_factor(t);
+  omega2 = 3.0 / rho * alpha * largest_eigenvalue(root * bbt * root);
   xi = 0;
   if (d.tris.eta[t] > 0 && omega2 > 0) {
     const Eigen::Vector3d v(1.0, 1.0, std::sqrt(0.5));
-    const double c_max = 3.0 * d.tris.eta[t] * alpha / s.rho *
+    const double c_max = 3.0 * d.tris.eta[t] * alpha / rho *
                          largest_eigenvalue(v.asDiagonal() * bbt * v.asDiagonal());
     xi = c_max / (2.0 * std::sqrt(omega2));
   }
 }
 
-double bound_critical_dt(const EngineData& d) {
+void node_limits(const EngineData& d, std::vector<double>& limit, bool with_contact) {
   const std::size_t nn = d.nodes.size();
   std::vector<double> tri_w2(nn, 0.0), tri_xi(nn, 0.0), crack_w2(nn, 0.0);
   for (std::size_t t = 0; t < d.tris.size(); ++t) {
     if (!d.tris.active[t]) continue;
     double w2, xi;
     triangle_frequency(d, t, w2, xi);
+    if (with_contact) w2 += contact_triangle_omega2(d, t);
     for (int k = 0; k < 3; ++k) {
       const int n = d.tris.nodes[3 * t + k];
       tri_w2[n] = std::max(tri_w2[n], w2);
@@ -104,11 +106,18 @@ double bound_critical_dt(const EngineData& d) {
     }
   }
   add_crack_rows(d, crack_w2);
-  double dt = std::numeric_limits<double>::infinity();
+  limit.assign(nn, std::numeric_limits<double>::infinity());
   for (std::size_t n = 0; n < nn; ++n) {
     const double w2 = tri_w2[n] + crack_w2[n];
-    if (w2 > 0) dt = std::min(dt, damped_limit(d, std::sqrt(w2), tri_xi[n]));
+    if (w2 > 0) limit[n] = damped_limit(d, std::sqrt(w2), tri_xi[n]);
   }
+}
+
+double bound_critical_dt(const EngineData& d) {
+  std::vector<double> limit;
+  node_limits(d, limit, false);
+  double dt = std::numeric_limits<double>::infinity();
+  for (double l : limit) dt = std::min(dt, l);
   return dt;
 }
 

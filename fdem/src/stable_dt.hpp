@@ -24,8 +24,14 @@ double power_critical_dt(const EngineData& d, int max_iterations);
 /// crack between rigid faces; see docs/engine.md for how tight it is.
 double bound_critical_dt(const EngineData& d);
 
+/// The bound above per node (infinity for a node without stiffness); with
+/// contact, each triangle's frequency^2 also takes its contact term
+/// (contact_triangle_omega2).
+void node_limits(const EngineData& d, std::vector<double>& limit, bool with_contact);
+
 /// Largest frequency^2 and damping ratio of triangle t in its stiffest mode
-/// (linearised at the reference configuration, lumped mass rho A0 / 3).
+/// (linearised at the reference configuration, lumped mass f rho A0 / 3 with
+/// the triangle's density factor f).
 void triangle_frequency(const EngineData& d, std::size_t t, double& omega2, double& xi);
 
 }  // namespace rockfdem::fdem::detail

@@ -98,10 +98,13 @@ double explicit_steps(const Scene& s) {
 }
 
 // Serial engine throughput measured on the 2-core development machine
-// (bench_ucs, docs/benchmarks.md): 11 M triangle-steps/s, 0.9 parallel
-// efficiency at 2 threads; mesh and implicit stage about 90 us per triangle.
+// (docs/benchmarks.md): 11 M triangle-steps/s for intact models (bench_ucs),
+// about 2.4 M for a fracturing tunnel with contact (the default tunnel: 4.2 M
+// on 2 threads); 0.9 parallel efficiency at 2 threads; mesh and implicit
+// stage about 90 us per triangle.
 double run_seconds(const Scene& s, const Estimate& e, int threads) {
-  const double rate = 11e6 * std::max(1, threads) * (threads > 1 ? 0.9 : 1.0);
+  const double serial = e.fracture_triangles > 0 && s.engine.contact ? 2.4e6 : 11e6;
+  const double rate = serial * std::max(1, threads) * (threads > 1 ? 0.9 : 1.0);
   return 90e-6 * e.triangles + explicit_steps(s) * e.triangles / rate;
 }
 
@@ -156,11 +159,25 @@ int command_check(const Scene& scene, const CommandLine& /*cli*/) {
     std::printf("  peak memory (estimate):     %.1f MiB of %.1f MiB on this machine\n",
                 peak_bytes(e) / 1048576.0, machine_bytes() / 1048576.0);
     std::printf("  explicit steps (at most):   %.0f\n", explicit_steps(scene));
-    std::printf("  run time (estimate):        %.0f s at most on %d threads\n",
+    std::printf("  run time (estimate):        %.0f s at most on %d idle threads\n",
                 run_seconds(scene, e, active_threads()), active_threads());
   }
   std::printf("  P-wave speed of rock:       %.1f m/s\n", cp);
-  std::printf("  stable time step (approx):  %.3g s\n", dt);
+  std::printf("  stable time step (approx):  %.3g s%s\n", dt,
+              scene.engine.mass_scaling ? " on true masses" : "");
+  if (scene.engine.mass_scaling) {
+    // Scaled to the least constrained node, among the coarsest triangles far
+    // out, less the tunnel's local damping (0.8 unless set: 1 / sqrt(1.8))
+    // and contact, which adds its frequency on top (1 / sqrt(2)).
+    const double local = scene.engine.local_damping > 0 ? scene.engine.local_damping : 0.8;
+    const double contact = scene.engine.contact ? std::sqrt(0.5) : 1.0;
+    const double scaled = scene.engine.mass_scaling_dt > 0
+                              ? scene.engine.mass_scaling_dt
+                              : scene.engine.dt_safety * 0.3 * scene.mesh.size.size_far / cp *
+                                    contact / std::sqrt(1 + local);
+    std::printf("  time step, mass-scaled:     %.3g s (quasi-static pseudo-time)\n",
+                std::max(dt, scaled));
+  }
   std::printf("  threads:                    %d\n", active_threads());
   return 0;
 }

@@ -80,6 +80,7 @@ int run_specimen(const Scene& scene, const CommandLine& cli) {
   in.damping.mass_proportional = scene.engine.mass_damping;
   in.gravity_y = -scene.engine.gravity;
   in.threads = threads;
+  in.mass_scaling = {scene.engine.mass_scaling, scene.engine.mass_scaling_dt};
   in.contact = contact_settings(scene);
   fdem::Engine engine = make_engine(in, scene, cli.force_dt);
   timer.stamp("fdem setup");

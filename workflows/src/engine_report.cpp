@@ -37,6 +37,17 @@ void report_engine(const fdem::Engine& e, const PhaseTimer& timer, RunSummary& s
     summary.skipped("contact: nothing could touch in " + std::to_string(c.steps_skipped) +
                     " of " + std::to_string(e.step_count()) + " steps");
   if (e.n_cracks() == 0) summary.skipped("crack elements: fracture is allowed nowhere");
+  const fdem::MassScalingReport ms = e.mass_scaling_report();
+  j["mass_scaling"] = {{"enabled", ms.enabled}};
+  if (ms.enabled)
+    j["mass_scaling"].update({{"target_dt", ms.target_dt},
+                              {"max_factor", ms.max_factor},
+                              {"mass_ratio", ms.mass_ratio},
+                              {"scaled_triangles", ms.scaled_triangles},
+                              {"note", "quasi-static: densities scaled, statics unchanged; "
+                                       "simulated_time is pseudo-time"}});
+  else
+    summary.skipped("mass scaling: off (engine.mass_scaling); dynamics at true masses");
   const fdem::EnergyBalance en = e.energy_balance();
   j["energy"] = {{"external_work", en.external_work},
                  {"kinetic", en.kinetic},

@@ -78,6 +78,7 @@ fdem::ModelInput engine_input(const Scene& scene, const mesh::Mesh& m,
   in.dt = scene.engine.dt;  // checked by make_engine
   in.dt_safety = scene.engine.dt_safety;
   in.threads = active_threads();
+  in.mass_scaling = {scene.engine.mass_scaling, scene.engine.mass_scaling_dt};
   in.contact = contact_settings(scene);
   return in;
 }

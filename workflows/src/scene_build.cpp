@@ -343,10 +343,10 @@ void read_stages(const Reader& r, Scene& s) {
                       s.mesh.tunnel.lining_thickness > 0;
   const bool bolts = !s.bolts.segments.empty();
   if (!list) {
-    if (lining) s.stages.push_back({"lining", 0, 0, 1e-3, 0, s.output.every_steps, 0});
-    if (bolts) s.stages.push_back({"bolts", 0, 0, 1e-3, 0, s.output.every_steps, 0});
-    s.stages.push_back({"remove_core", 0, 0, 1e-3, 0, s.output.every_steps, 0});
-    s.stages.push_back({"equilibrium", 0, s.engine.steps, 1e-3, 0, s.output.every_steps, 0});
+    if (lining) s.stages.push_back({"lining", 0, 0, 1e-3, 0, s.output.every_steps, 0, 1e-3});
+    if (bolts) s.stages.push_back({"bolts", 0, 0, 1e-3, 0, s.output.every_steps, 0, 1e-3});
+    s.stages.push_back({"remove_core", 0, 0, 1e-3, 0, s.output.every_steps, 0, 1e-3});
+    s.stages.push_back({"equilibrium", 0, s.engine.steps, 1e-3, 0, s.output.every_steps, 0, 1e-3});
     return;
   }
   bool bolted = false;
@@ -367,7 +367,8 @@ void read_stages(const Reader& r, Scene& s) {
                                                                      double(s.engine.steps))),
                  r.number_or(p + ".ratio", 1e-3), r.number_or(p + ".time", 0),
                  int(r.number_or(p + ".every_steps", s.output.every_steps)),
-                 long(r.number_or(p + ".trigger_broken", 0))};
+                 long(r.number_or(p + ".trigger_broken", 0)),
+                 r.number_or(p + ".settle", 1e-3)};
     if (kind == "bolts") {
       if (!bolts) r.fail(p + ".kind", "the scene has no [[bolt]] or [[bolt_fan]]");
       if (bolted) r.fail(p + ".kind", "the bolts are installed once");
@@ -441,6 +442,11 @@ Scene build_scene(const RawScene& raw, const std::string& base_dir) {
   s.engine.local_damping = r.number("engine.local_damping");
   s.engine.mass_damping = r.number("engine.mass_damping");
   s.engine.gravity = r.number("engine.gravity");
+  const std::string scaling = r.text("engine.mass_scaling");
+  const bool specimen =
+      s.mesh.kind == mesh::ModelKind::kUcs || s.mesh.kind == mesh::ModelKind::kBrazilian;
+  s.engine.mass_scaling = scaling == "on" || (scaling == "auto" && !specimen);
+  s.engine.mass_scaling_dt = r.number("engine.mass_scaling_dt");
   s.engine.platen_velocity = r.number("loading.platen_velocity");
   s.engine.contact = r.boolean("contact.enabled");
   s.engine.contact_penalty_factor = r.number("contact.penalty_factor");

@@ -213,6 +213,14 @@ std::vector<KeySpec> build_schema() {
                      "Cundall local damping coefficient for quasi-static stages."));
   s.push_back(non_negative("engine.mass_damping", "1/s", "0",
                            "Mass-proportional damping coefficient c (force -c m v)."));
+  s.push_back(choice("engine.mass_scaling", "auto", {"auto", "on", "off"},
+                     "Quasi-static mass scaling: densities raised until every node is stable "
+                     "at the least constrained node's step (statics unchanged, dynamics and "
+                     "simulated time not physical). auto: on for tunnels (and .msh models), off for "
+                     "UCS and Brazilian specimens."));
+  s.push_back(non_negative("engine.mass_scaling_dt", "s", "0",
+                           "Target step of the mass scaling; 0: the least constrained node's "
+                           "stability limit."));
   s.push_back(non_negative("engine.gravity", "m/s^2", "0",
                            "Gravitational acceleration acting in -y; 0: none."));
   // [loading]
@@ -310,7 +318,12 @@ std::vector<KeySpec> build_schema() {
   s.push_back(integer("stages[].max_steps", "engine.steps", 0, 1e12,
                       "Explicit steps at most in this stage."));
   s.push_back(number("stages[].ratio", "-", "1e-3", 0, true, 1, false,
-                     "Stop when the unbalanced-force ratio falls below this."));
+                     "Equilibrium: stop when the unbalanced-force ratio falls below this (and "
+                     "the monitors have settled, see settle)."));
+  s.push_back(number("stages[].settle", "-", "1e-3", 0, false, 1, false,
+                     "Equilibrium also needs the monitors settled: the largest monitor "
+                     "displacement change over the last output interval at most this fraction "
+                     "of the largest monitor displacement; 0: the ratio alone."));
   s.push_back(non_negative("stages[].time", "s", "0",
                            "Stop after this much simulated time in the stage; 0: no limit."));
   s.push_back(integer("stages[].trigger_broken", "0", 0, 1e12,

@@ -58,6 +58,7 @@ class StageRunner {
     long first = 0;         ///< the stage's first step
     double t0 = 0;          ///< the simulated time at its start
     nlohmann::json changes = nlohmann::json::object();
+    std::vector<double> monitor_u;  ///< monitors' (ux, uy) at the last output [m]
   };
   void run(const StageSpec& stage, PhaseTimer& timer);
   nlohmann::json apply(const StageSpec& stage);
@@ -66,6 +67,12 @@ class StageRunner {
   nlohmann::json grout(const StageSpec& stage, PhaseTimer& timer);
   /// Steps in output chunks until the stage's criterion; returns converged.
   bool step_until(const StageSpec& stage, PhaseTimer& timer, long broken_target);
+  /// Monitors' displacements (ux, uy per monitor) [m].
+  std::vector<double> monitor_displacements() const;
+  /// The settle measure of the last output interval: the largest monitor
+  /// displacement change over the largest monitor displacement (0 when
+  /// nothing moved); updates cursor_.monitor_u.
+  double settle_measure();
   /// Steps `n` times unless a signal arrives; false when one did.
   bool advance(long n);
   void set_zone(int zone, bool active, fdem::ActivationReference ref);
@@ -89,6 +96,7 @@ class StageRunner {
   bool lining_installed_;
   Cursor cursor_;
   long checkpoint_every_ = 0;
+  double last_settle_ = -1;   ///< settle_measure() of the stage's last interval; -1: none
   long last_checkpoint_ = 0;  ///< step of the last checkpoint (or of the start)
   std::function<void()> save_checkpoint_;
   nlohmann::json report_ = nlohmann::json::array();

@@ -84,6 +84,15 @@ struct ContactCounters {
   long updates = 0;           ///< local broad-phase updates after breakage (no detection)
 };
 
+/// What quasi-static mass scaling did (mass_scaling_report()).
+struct MassScalingReport {
+  bool enabled = false;
+  double target_dt = 0;     ///< the common step the masses were scaled for [s]
+  double max_factor = 1;    ///< largest triangle density factor
+  double mass_ratio = 1;    ///< scaled over true mass of the active triangles
+  long scaled_triangles = 0;  ///< active triangles with a factor above 1
+};
+
 /// Energy terms since the first step [J/m] (plane problems: per unit
 /// thickness). Each term is its own computation, so the balance is a check,
 /// not an identity: the stored terms are closed forms of the state, the
@@ -183,6 +192,12 @@ class Engine {
   void set_boundary_conditions(const std::vector<BoundaryCondition>& bcs);
   void set_gravity(double gx, double gy);
   void set_damping(const DampingSettings& damping);
+  /// Enables, retargets or disables quasi-static mass scaling (MassScaling).
+  /// Masses and the stability limit are rebuilt before the next step, and
+  /// again after every change of activity, stiffness factor or crack
+  /// material, with the same target step.
+  void set_mass_scaling(const MassScaling& scaling);
+  MassScalingReport mass_scaling_report() const;
   /// Assigns material m (and its crack law) to crack element c.
   void set_crack_material(std::size_t c, int material);
   /// Re-joins crack element c with material m (grouting, issue 7): damage,

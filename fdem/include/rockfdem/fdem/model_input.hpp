@@ -87,6 +87,19 @@ struct DampingSettings {
   double mass_proportional = 0;  ///< c [1/s]: f -= c m v
 };
 
+/// Quasi-static mass scaling (density scaling): each triangle's density is
+/// raised, never lowered, until its nodes are stable at one common time step,
+/// by default the step the least constrained node (coarsest triangle, with
+/// its crack penalties and damping) could take on its true mass. Static equilibria
+/// do not depend on the masses, so a quasi-static stage reaches the same
+/// state in far fewer steps (about one step per element across the model
+/// instead of one per smallest element); the dynamics, and with them the
+/// simulated time, are no longer physical. Gravity keeps the true masses.
+struct MassScaling {
+  bool enabled = false;
+  double dt = 0;  ///< target step [s]; 0 selects the least constrained node's limit
+};
+
 /// Contact between triangles (Munjiza's potential-based penalty contact with
 /// Coulomb friction, reference sec. 3). Off by default: a run enables it
 /// when fragments or separate bodies can touch. Only triangles on a free
@@ -124,6 +137,7 @@ struct ModelInput {
   std::vector<BoundaryCondition> boundary_conditions;
   double gravity_x = 0, gravity_y = 0;  ///< [m/s^2]
   DampingSettings damping;
+  MassScaling mass_scaling;
   ContactSettings contact;
 
   // Time step: dt > 0 is checked against the stability limit; dt = 0 takes

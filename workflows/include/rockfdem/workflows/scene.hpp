@@ -47,6 +47,8 @@ struct EngineSettings {
   double local_damping = 0;
   double mass_damping = 0;  ///< 1/s
   double gravity = 0;       ///< m/s^2, acting in -y
+  bool mass_scaling = false;     ///< quasi-static mass scaling (engine.mass_scaling resolved)
+  double mass_scaling_dt = 0;    ///< s; 0: automatic
   double platen_velocity = 0.5;  ///< m/s, each platen (specimens)
   bool contact = true;
   double contact_penalty_factor = 1;  ///< times the rock's Young's modulus
@@ -63,6 +65,10 @@ struct StageSpec {
   double time = 0;      ///< stop after this simulated time [s]; 0: no limit
   int every_steps = 1000;
   long trigger_broken = 0;  ///< grout: broken crack elements that trigger grouting
+  /// With the ratio, equilibrium needs the monitors settled: the largest
+  /// monitor displacement change over one output interval at most this
+  /// fraction of the largest monitor displacement; 0: the ratio alone.
+  double settle = 1e-3;
 };
 
 /// The steel of one kind of bolt (seed sec. 2.2).
