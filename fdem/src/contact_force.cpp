@@ -26,11 +26,12 @@
 namespace rockfdem::fdem::detail {
 namespace {
 
-struct Corners {
-  double x[3], y[3], vx[3], vy[3], m[3];
-};
+using Tri = ContactTriangle;
 
-inline void load(const EngineData& d, int t, Corners& c) {
+/// Packs triangle t (its gather row): corners, 2A, 1 / 2A, the smallest
+/// altitude and the bounding box, once per step instead of once per pair
+/// and role.
+inline void pack(const EngineData& d, int t, Tri& c) {
   const int* nd = &d.tris.nodes[3 * t];
   for (int k = 0; k < 3; ++k) {
     c.x[k] = d.nodes.pos[2 * nd[k]];
@@ -39,13 +40,33 @@ inline void load(const EngineData& d, int t, Corners& c) {
     c.vy[k] = d.nodes.vel[2 * nd[k] + 1];
     c.m[k] = d.nodes.mass[nd[k]];
   }
+  c.two_a = (c.x[1] - c.x[0]) * (c.y[2] - c.y[0]) - (c.x[2] - c.x[0]) * (c.y[1] - c.y[0]);
+  c.inv2a = 1.0 / c.two_a;
+  c.h = 0.0;
+  if (c.two_a > 0.0) {
+    double longest = 0;
+    for (int j = 0; j < 3; ++j)
+      longest =
+          std::max(longest, std::hypot(c.x[(j + 1) % 3] - c.x[j], c.y[(j + 1) % 3] - c.y[j]));
+    c.h = c.two_a / longest;
+  }
+  for (int k = 0; k < 3; ++k) {
+    const double ex = c.x[(k + 1) % 3] - c.x[k], ey = c.y[(k + 1) % 3] - c.y[k];
+    c.len[k] = std::sqrt(ex * ex + ey * ey);
+    c.tx[k] = ex / c.len[k];
+    c.ty[k] = ey / c.len[k];
+  }
+  c.x_lo = std::min({c.x[0], c.x[1], c.x[2]});
+  c.x_hi = std::max({c.x[0], c.x[1], c.x[2]});
+  c.y_lo = std::min({c.y[0], c.y[1], c.y[2]});
+  c.y_hi = std::max({c.y[0], c.y[1], c.y[2]});
 }
 
-/// Barycentric coordinates of (px, py) in triangle t (inv2a = 1 / 2A).
-inline void barycentric(const Corners& t, double inv2a, double px, double py, double l[3]) {
+/// Barycentric coordinates of (px, py) in triangle t.
+inline void barycentric(const Tri& t, double px, double py, double l[3]) {
   for (int i = 0; i < 3; ++i) {
     const int j = (i + 1) % 3, k = (i + 2) % 3;
-    l[i] = ((t.x[j] - px) * (t.y[k] - py) - (t.x[k] - px) * (t.y[j] - py)) * inv2a;
+    l[i] = ((t.x[j] - px) * (t.y[k] - py) - (t.x[k] - px) * (t.y[j] - py)) * t.inv2a;
   }
 }
 
@@ -77,18 +98,21 @@ inline bool integrate_edge(const double la[3], const double lb[3], EdgeIntegral&
     }
   for (int i = 1; i < n; ++i)  // insertion sort of at most 5 values
     for (int j = i; j > 0 && xs[j] < xs[j - 1]; --j) std::swap(xs[j], xs[j - 1]);
-  auto lambda = [&](int i, double x) { return la[i] + (lb[i] - la[i]) * x; };
-  auto phi = [&](double x) {
-    return 3.0 * std::max(0.0, std::min({lambda(0, x), lambda(1, x), lambda(2, x)}));
-  };
+  // lambda and phi at each breakpoint once (each inner one ends a segment
+  // and starts the next).
+  double q[5][3], ph[5];
+  for (int s = 0; s < n; ++s) {
+    for (int i = 0; i < 3; ++i) q[s][i] = la[i] + (lb[i] - la[i]) * xs[s];
+    ph[s] = 3.0 * std::max(0.0, std::min({q[s][0], q[s][1], q[s][2]}));
+  }
   for (int s = 0; s + 1 < n; ++s) {
     const double a = xs[s], b = xs[s + 1], w = b - a;
     if (!(w > 0.0)) continue;
-    const double pa = phi(a), pb = phi(b);
+    const double pa = ph[s], pb = ph[s + 1];
     out.i0 += 0.5 * w * (pa + pb);
     out.i1 += w / 6.0 * (pa * (2.0 * a + b) + pb * (a + 2.0 * b));
     for (int i = 0; i < 3; ++i) {
-      const double qa = lambda(i, a), qb = lambda(i, b);
+      const double qa = q[s][i], qb = q[s + 1][i];
       out.r[i] += w / 6.0 * (2.0 * pa * qa + pa * qb + pb * qa + 2.0 * pb * qb);
     }
   }
@@ -109,37 +133,32 @@ struct PairDissipation {
 /// Contactor c's three edges against target t; adds the forces to fc, ft
 /// (6 each: corner x, y), updates the three friction springs. Returns true
 /// when some edge overlaps.
-bool role(const Corners& c, const Corners& t, const RoleParams& rp, double* spring, double* fc,
+bool role(const Tri& c, const Tri& t, const RoleParams& rp, double* spring, double* fc,
           double* ft, PairDissipation& loss) {
-  const double two_a = (t.x[1] - t.x[0]) * (t.y[2] - t.y[0]) - (t.x[2] - t.x[0]) * (t.y[1] - t.y[0]);
-  if (!(two_a > 0.0)) return false;
-  const double inv2a = 1.0 / two_a;
-  // The smallest altitude, needed only once an edge overlaps: most
-  // candidate pairs do not touch, and three hypot calls per role cost them
-  // about a tenth of the contact phase.
-  double h_t = 0;
+  if (!(t.two_a > 0.0)) return false;
+  // The contactor's corners in the target's barycentric coordinates, once
+  // per corner (each starts one edge and ends another).
+  double lam[3][3];
+  for (int v = 0; v < 3; ++v) barycentric(t, c.x[v], c.y[v], lam[v]);
+  // All three corners outside one edge of the target: no edge can enter
+  // (integrate_edge would reject each one on that coordinate).
+  for (int i = 0; i < 3; ++i)
+    if (lam[0][i] < 0.0 && lam[1][i] < 0.0 && lam[2][i] < 0.0) {
+      spring[0] = spring[1] = spring[2] = 0.0;
+      return false;
+    }
   bool touching = false;
   for (int k = 0; k < 3; ++k) {
     const int a = k, b = (k + 1) % 3;
-    double la[3], lb[3];
-    barycentric(t, inv2a, c.x[a], c.y[a], la);
-    barycentric(t, inv2a, c.x[b], c.y[b], lb);
+    const double* la = lam[a];
+    const double* lb = lam[b];
     EdgeIntegral e;
     if (!integrate_edge(la, lb, e)) {
       spring[k] = 0.0;
       continue;
     }
-    if (!touching) {
-      double longest = 0;
-      for (int j = 0; j < 3; ++j)
-        longest =
-            std::max(longest, std::hypot(t.x[(j + 1) % 3] - t.x[j], t.y[(j + 1) % 3] - t.y[j]));
-      h_t = two_a / longest;
-    }
     touching = true;
-    const double ex = c.x[b] - c.x[a], ey = c.y[b] - c.y[a];
-    const double len = std::sqrt(ex * ex + ey * ey);
-    const double tx = ex / len, ty = ey / len, nx = ty, ny = -tx;  // n outward
+    const double len = c.len[k], tx = c.tx[k], ty = c.ty[k], nx = ty, ny = -tx;  // n outward
     const double s = rp.p * len;
     const double f_ab = s * e.i0, f_b = s * e.i1, f_a = f_ab - f_b;
     // Point of action and the relative velocity there.
@@ -152,7 +171,7 @@ bool role(const Corners& c, const Corners& t, const RoleParams& rp, double* spri
     }
     const double vrx = (1 - xi) * c.vx[a] + xi * c.vx[b] - vtx;
     const double vry = (1 - xi) * c.vy[a] + xi * c.vy[b] - vty;
-    const double k_n = 3.0 * s * e.inside / h_t;
+    const double k_n = 3.0 * s * e.inside / t.h;
     double f_d = 0.0;  // normal damping, > 0 while approaching (v_r . n > 0)
     if (rp.damping > 0.0) {
       const double m = std::min(c.m[a], c.m[b]);
@@ -184,27 +203,21 @@ bool role(const Corners& c, const Corners& t, const RoleParams& rp, double* spri
   return touching;
 }
 
-/// Both roles of pair q; its 12 corner forces go to its own buffer.
-bool pair_forces(const EngineData& d, std::size_t q, double* spring, double* out,
-                 PairDissipation& loss) {
+/// Both roles of pair q (its triangles packed in rows ra, rb); its 12
+/// corner forces go to its own buffer.
+bool pair_forces(const EngineData& d, std::size_t q, const Tri& a, const Tri& b, double* spring,
+                 double* out, PairDissipation& loss) {
   const ContactData& c = d.contact;
-  const int ta = c.pairs[q][0], tb = c.pairs[q][1];
-  Corners a, b;
-  load(d, ta, a);
-  load(d, tb, b);
   for (int k = 0; k < 12; ++k) out[k] = 0.0;
   // Most pairs lie within the buffer without touching: their boxes are
   // disjoint, and the edge clipping is skipped (springs reset, as apart).
-  if (std::max({a.x[0], a.x[1], a.x[2]}) < std::min({b.x[0], b.x[1], b.x[2]}) ||
-      std::max({b.x[0], b.x[1], b.x[2]}) < std::min({a.x[0], a.x[1], a.x[2]}) ||
-      std::max({a.y[0], a.y[1], a.y[2]}) < std::min({b.y[0], b.y[1], b.y[2]}) ||
-      std::max({b.y[0], b.y[1], b.y[2]}) < std::min({a.y[0], a.y[1], a.y[2]})) {
+  if (a.x_hi < b.x_lo || b.x_hi < a.x_lo || a.y_hi < b.y_lo || b.y_hi < a.y_lo) {
     for (int k = 0; k < 6; ++k) spring[k] = 0.0;
     return false;
   }
   RoleParams rp;
   rp.p = c.penalty;
-  rp.mu = std::min(c.mu[d.tris.material[ta]], c.mu[d.tris.material[tb]]);
+  rp.mu = std::min(c.mu[d.tris.material[c.pairs[q][0]]], c.mu[d.tris.material[c.pairs[q][1]]]);
   rp.dt = d.dt;
   rp.damping = c.settings.damping_ratio;
   rp.friction = c.settings.friction;
@@ -236,8 +249,8 @@ double watched_drift2(const EngineData& d) {
 inline void gather_triangle(const ContactData& c, long g, double* slots) {
   double sum[6] = {0, 0, 0, 0, 0, 0};
   for (int k = c.gather_start[g]; k < c.gather_start[g + 1]; ++k) {
-    const int entry = c.gather_entry[k];
-    const double* f = &c.pair_force[12 * (entry / 2) + 6 * (entry % 2)];
+    // entry = 2 q + side: its six values start at 12 q + 6 side = 6 entry.
+    const double* f = &c.pair_force[6 * static_cast<std::size_t>(c.gather_entry[k])];
     for (int i = 0; i < 6; ++i) sum[i] += f[i];
   }
   double* s = slots + 6 * c.gather_tri[g];
@@ -265,16 +278,31 @@ void contact_forces(EngineData& d) {
   const long n_blocks = (np + kPairBlock - 1) / kPairBlock;
   double* slots = d.slots.data();
   double* partial = c.energy_partial.data();
-  // One parallel region for both loops (the barrier between them is the
-  // for's), none at all for a handful of pairs.
+  // Sized with the pairs (a no-op unless a detection or update changed
+  // them, or a checkpoint was loaded); the capacity stays.
+  c.narrow.tris.resize(ng);
+  c.narrow.rows.resize(2 * np);
+  Tri* tris = c.narrow.tris.data();
+  int* rows = c.narrow.rows.data();
+  // One parallel region for the three loops (the barriers between them are
+  // the fors'), none at all for a handful of pairs.
 #pragma omp parallel num_threads(thread_count(d.threads)) if (np > 64)
   {
+    // Each contact triangle packed once, and its row written to the entries
+    // of its pairs.
+#pragma omp for schedule(static)
+    for (long g = 0; g < ng; ++g) {
+      pack(d, c.gather_tri[g], tris[g]);
+      for (int k = c.gather_start[g]; k < c.gather_start[g + 1]; ++k)
+        rows[c.gather_entry[k]] = static_cast<int>(g);
+    }
 #pragma omp for schedule(dynamic, 1) reduction(+ : touching)
     for (long b = 0; b < n_blocks; ++b) {
       PairDissipation loss;
       const long end = std::min(np, (b + 1) * kPairBlock);
       for (long q = b * kPairBlock; q < end; ++q)
-        touching += pair_forces(d, q, &c.friction[6 * q], &c.pair_force[12 * q], loss);
+        touching += pair_forces(d, q, tris[rows[2 * q]], tris[rows[2 * q + 1]],
+                                &c.friction[6 * q], &c.pair_force[12 * q], loss);
       partial[2 * b] = loss.friction;
       partial[2 * b + 1] = loss.damping;
     }
