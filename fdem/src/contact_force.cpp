@@ -71,10 +71,12 @@ inline void barycentric(const Tri& t, double px, double py, double l[3]) {
 }
 
 /// Exact integrals of phi = 3 min(lambda) over the part of the edge inside
-/// the target: i0 = int phi, i1 = int phi xi, r_i = int phi lambda_i, and the
-/// inside length fraction. lambda is linear from la (xi = 0) to lb (xi = 1).
+/// the target: i0 = int phi, i1 = int phi xi, and the inside length
+/// fraction. lambda is linear from la (xi = 0) to lb (xi = 1), so
+/// int phi lambda_i = la_i i0 + (lb_i - la_i) i1 = i0 lambda_i(xi_c) with
+/// xi_c = i1 / i0: the target's share needs no integral of its own.
 struct EdgeIntegral {
-  double i0 = 0, i1 = 0, r[3] = {0, 0, 0}, inside = 0;
+  double i0 = 0, i1 = 0, inside = 0;
 };
 
 inline bool integrate_edge(const double la[3], const double lb[3], EdgeIntegral& out) {
@@ -98,12 +100,13 @@ inline bool integrate_edge(const double la[3], const double lb[3], EdgeIntegral&
     }
   for (int i = 1; i < n; ++i)  // insertion sort of at most 5 values
     for (int j = i; j > 0 && xs[j] < xs[j - 1]; --j) std::swap(xs[j], xs[j - 1]);
-  // lambda and phi at each breakpoint once (each inner one ends a segment
-  // and starts the next).
-  double q[5][3], ph[5];
+  // phi at each breakpoint once (each inner one ends a segment and starts
+  // the next).
+  double ph[5];
   for (int s = 0; s < n; ++s) {
-    for (int i = 0; i < 3; ++i) q[s][i] = la[i] + (lb[i] - la[i]) * xs[s];
-    ph[s] = 3.0 * std::max(0.0, std::min({q[s][0], q[s][1], q[s][2]}));
+    double m = la[0] + (lb[0] - la[0]) * xs[s];
+    for (int i = 1; i < 3; ++i) m = std::min(m, la[i] + (lb[i] - la[i]) * xs[s]);
+    ph[s] = 3.0 * std::max(0.0, m);
   }
   for (int s = 0; s + 1 < n; ++s) {
     const double a = xs[s], b = xs[s + 1], w = b - a;
@@ -111,10 +114,6 @@ inline bool integrate_edge(const double la[3], const double lb[3], EdgeIntegral&
     const double pa = ph[s], pb = ph[s + 1];
     out.i0 += 0.5 * w * (pa + pb);
     out.i1 += w / 6.0 * (pa * (2.0 * a + b) + pb * (a + 2.0 * b));
-    for (int i = 0; i < 3; ++i) {
-      const double qa = q[s][i], qb = q[s + 1][i];
-      out.r[i] += w / 6.0 * (2.0 * pa * qa + pa * qb + pb * qa + 2.0 * pb * qb);
-    }
   }
   out.inside = hi - lo;
   return out.i0 > 0.0;
@@ -189,15 +188,18 @@ bool role(const Tri& c, const Tri& t, const RoleParams& rp, double* spring, doub
       // plastic and dissipates f_t times it (return mapping).
       if (f_t != trial) loss.friction += f_t * (trial - f_t) / k_n;
     }
-    // Contactor: potential force at A, B plus the point force (F_t t - F_d n) at xi.
+    // Contactor: potential force at A, B plus the point force (F_t t - F_d n)
+    // at xi. Target: the opposite of their sum, at the same point, shared by
+    // its barycentric coordinates there (p L int phi lambda_i = lc_i F_AB).
     const double px = f_t * tx - f_d * nx, py = f_t * ty - f_d * ny;
     fc[2 * a] += -f_a * nx + (1 - xi) * px;
     fc[2 * a + 1] += -f_a * ny + (1 - xi) * py;
     fc[2 * b] += -f_b * nx + xi * px;
     fc[2 * b + 1] += -f_b * ny + xi * py;
+    const double gx = f_ab * nx - px, gy = f_ab * ny - py;
     for (int i = 0; i < 3; ++i) {
-      ft[2 * i] += s * e.r[i] * nx - lc[i] * px;
-      ft[2 * i + 1] += s * e.r[i] * ny - lc[i] * py;
+      ft[2 * i] += lc[i] * gx;
+      ft[2 * i + 1] += lc[i] * gy;
     }
   }
   return touching;
