@@ -42,8 +42,8 @@ struct BreakScratch {
 struct ContactTriangle {
   double x[3], y[3], vx[3], vy[3], m[3];
   double two_a;              ///< twice the area (corners counter-clockwise: > 0)
-  double inv2a;              ///< 1 / two_a
-  double h;                  ///< smallest altitude (set when two_a > 0)
+  double gx[3], gy[3];       ///< gradients of the barycentric coordinates
+  double h;                  ///< smallest altitude (meaningful when two_a > 0)
   double len[3], tx[3], ty[3];  ///< edge k (corners k -> k+1): length, unit tangent
   double x_lo, x_hi, y_lo, y_hi;  ///< bounding box
 };

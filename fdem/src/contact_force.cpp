@@ -41,32 +41,36 @@ inline void pack(const EngineData& d, int t, Tri& c) {
     c.m[k] = d.nodes.mass[nd[k]];
   }
   c.two_a = (c.x[1] - c.x[0]) * (c.y[2] - c.y[0]) - (c.x[2] - c.x[0]) * (c.y[1] - c.y[0]);
-  c.inv2a = 1.0 / c.two_a;
-  c.h = 0.0;
-  if (c.two_a > 0.0) {
-    double longest = 0;
-    for (int j = 0; j < 3; ++j)
-      longest =
-          std::max(longest, std::hypot(c.x[(j + 1) % 3] - c.x[j], c.y[(j + 1) % 3] - c.y[j]));
-    c.h = c.two_a / longest;
+  const double inv2a = 1.0 / c.two_a;
+  for (int i = 0; i < 3; ++i) {
+    const int j = (i + 1) % 3, k = (i + 2) % 3;
+    c.gx[i] = (c.y[j] - c.y[k]) * inv2a;
+    c.gy[i] = (c.x[k] - c.x[j]) * inv2a;
   }
+  double longest2 = 0;
   for (int k = 0; k < 3; ++k) {
     const double ex = c.x[(k + 1) % 3] - c.x[k], ey = c.y[(k + 1) % 3] - c.y[k];
-    c.len[k] = std::sqrt(ex * ex + ey * ey);
+    const double len2 = ex * ex + ey * ey;
+    longest2 = std::max(longest2, len2);
+    c.len[k] = std::sqrt(len2);
     c.tx[k] = ex / c.len[k];
     c.ty[k] = ey / c.len[k];
   }
+  // The smallest altitude from the longest edge (no hypot: the lengths are
+  // those of a mesh, far from overflow).
+  c.h = c.two_a / std::sqrt(longest2);
   c.x_lo = std::min({c.x[0], c.x[1], c.x[2]});
   c.x_hi = std::max({c.x[0], c.x[1], c.x[2]});
   c.y_lo = std::min({c.y[0], c.y[1], c.y[2]});
   c.y_hi = std::max({c.y[0], c.y[1], c.y[2]});
 }
 
-/// Barycentric coordinates of (px, py) in triangle t.
+/// Barycentric coordinates of (px, py) in triangle t: lambda_i is 0 at
+/// corner i + 1 and grows with the gradient packed for it.
 inline void barycentric(const Tri& t, double px, double py, double l[3]) {
   for (int i = 0; i < 3; ++i) {
-    const int j = (i + 1) % 3, k = (i + 2) % 3;
-    l[i] = ((t.x[j] - px) * (t.y[k] - py) - (t.x[k] - px) * (t.y[j] - py)) * t.inv2a;
+    const int j = (i + 1) % 3;
+    l[i] = t.gx[i] * (px - t.x[j]) + t.gy[i] * (py - t.y[j]);
   }
 }
 
@@ -87,9 +91,11 @@ inline bool integrate_edge(const double la[3], const double lb[3], EdgeIntegral&
     else if (lb[i] < 0.0) hi = std::min(hi, la[i] / (la[i] - lb[i]));
   }
   if (!(hi > lo)) return false;
-  // Breakpoints of min(lambda): where two coordinates cross inside (lo, hi).
-  double xs[5] = {lo, hi, 0, 0, 0};
-  int n = 2;
+  // Breakpoints of min(lambda): lo, where two coordinates cross strictly
+  // inside (lo, hi) (at most three, sorted), hi.
+  double xs[5];
+  xs[0] = lo;
+  int n = 1;
   for (int i = 0; i < 3; ++i)
     for (int j = i + 1; j < 3; ++j) {
       const double d0 = la[i] - la[j], d1 = lb[i] - lb[j];
@@ -98,8 +104,9 @@ inline bool integrate_edge(const double la[3], const double lb[3], EdgeIntegral&
         if (x > lo && x < hi) xs[n++] = x;
       }
     }
-  for (int i = 1; i < n; ++i)  // insertion sort of at most 5 values
-    for (int j = i; j > 0 && xs[j] < xs[j - 1]; --j) std::swap(xs[j], xs[j - 1]);
+  for (int i = 2; i < n; ++i)  // insertion sort of the inner ones
+    for (int j = i; j > 1 && xs[j] < xs[j - 1]; --j) std::swap(xs[j], xs[j - 1]);
+  xs[n++] = hi;
   // phi at each breakpoint once (each inner one ends a segment and starts
   // the next).
   double ph[5];
@@ -108,9 +115,9 @@ inline bool integrate_edge(const double la[3], const double lb[3], EdgeIntegral&
     for (int i = 1; i < 3; ++i) m = std::min(m, la[i] + (lb[i] - la[i]) * xs[s]);
     ph[s] = 3.0 * std::max(0.0, m);
   }
+  // Sorted: a segment of two equal breakpoints adds zero.
   for (int s = 0; s + 1 < n; ++s) {
     const double a = xs[s], b = xs[s + 1], w = b - a;
-    if (!(w > 0.0)) continue;
     const double pa = ph[s], pb = ph[s + 1];
     out.i0 += 0.5 * w * (pa + pb);
     out.i1 += w / 6.0 * (pa * (2.0 * a + b) + pb * (a + 2.0 * b));
