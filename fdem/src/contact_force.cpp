@@ -9,8 +9,14 @@
 // push the contactor's nodes by -F n, and the target's nodes receive
 // p L int phi lambda_i dxi n, the same force distributed by the barycentric
 // coordinates of the points where it acts (so forces and moments balance
-// exactly). Then the roles are swapped. This is the boundary form of the
-// overlap integral of the two potentials' gradients.
+// exactly); lambda_i being linear along the edge, that is lambda_i(xi_c)
+// F_AB n at the force centre xi_c = F_B / F_AB. Then the roles are swapped.
+// This is the boundary form of the overlap integral of the two potentials'
+// gradients.
+//
+// Cost: every contact triangle is packed once per step (pack); the pair
+// loop reads two packed triangles, and a role computes the contactor's
+// three corners' barycentric coordinates once, for its three edges.
 //
 // Friction: per contactor edge and pair, an incremental tangential spring at
 // the edge's force centre xi_c = F_B / F_AB, F_t -= k_t v_t dt with
@@ -28,9 +34,10 @@ namespace {
 
 using Tri = ContactTriangle;
 
-/// Packs triangle t (its gather row): corners, 2A, 1 / 2A, the smallest
-/// altitude and the bounding box, once per step instead of once per pair
-/// and role.
+/// Packs triangle t (its gather row): corners, 2A, the gradients of its
+/// barycentric coordinates, the smallest altitude, the edges' lengths and
+/// unit tangents and the bounding box, once per step instead of once per
+/// pair and role.
 inline void pack(const EngineData& d, int t, Tri& c) {
   const int* nd = &d.tris.nodes[3 * t];
   for (int k = 0; k < 3; ++k) {
@@ -65,8 +72,9 @@ inline void pack(const EngineData& d, int t, Tri& c) {
   c.y_hi = std::max({c.y[0], c.y[1], c.y[2]});
 }
 
-/// Barycentric coordinates of (px, py) in triangle t: lambda_i is 0 at
-/// corner i + 1 and grows with the gradient packed for it.
+/// Barycentric coordinates of (px, py) in triangle t: lambda_i vanishes on
+/// the edge opposite corner i, so at corner i + 1, and grows from there
+/// with its packed gradient.
 inline void barycentric(const Tri& t, double px, double py, double l[3]) {
   for (int i = 0; i < 3; ++i) {
     const int j = (i + 1) % 3;
