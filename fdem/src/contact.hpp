@@ -35,6 +35,26 @@ struct BreakScratch {
   std::vector<int> gather_index;  ///< per triangle: its gather row, -1 between uses
 };
 
+/// A contact triangle as the narrow phase reads it, packed once per step
+/// (contact_force.cpp): its corners, the target-side constants of the
+/// clipping and its bounding box, so that no pair gathers nodes or
+/// recomputes them.
+struct ContactTriangle {
+  double x[3], y[3], vx[3], vy[3], m[3];
+  double two_a;              ///< twice the area (corners counter-clockwise: > 0)
+  double gx[3], gy[3];       ///< gradients of the barycentric coordinates
+  double h;                  ///< smallest altitude (meaningful when two_a > 0)
+  double len[3], tx[3], ty[3];  ///< edge k (corners k -> k+1): length, unit tangent
+  double x_lo, x_hi, y_lo, y_hi;  ///< bounding box
+};
+
+/// Per-step scratch of the narrow phase: rewritten at the start of every
+/// contact pass before it is read.
+struct NarrowScratch {
+  std::vector<ContactTriangle> tris;  ///< per gather row (gather_tri)
+  std::vector<int> rows;              ///< per pair entry 2 q + side: its gather row
+};
+
 struct ContactData {
   ContactSettings settings;
   double penalty = 0, buffer = 0;
@@ -58,6 +78,7 @@ struct ContactData {
   std::vector<int> gather_tri, gather_start, gather_entry;  ///< CSR triangle -> 2 pair + side
   GridScratch grid;
   BreakScratch breaks;
+  NarrowScratch narrow;
   bool dirty = true;           ///< re-detect before the next contact pass
   bool topology_dirty = true;  ///< candidates and components must be rebuilt
   long detections = 0, steps_with_pairs = 0, steps_skipped = 0, touching = 0;

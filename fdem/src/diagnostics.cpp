@@ -132,7 +132,8 @@ std::size_t contact_bytes(const detail::ContactData& c, Bytes b) {
          b(c.gather_entry) + b(c.grid.cell) + b(c.grid.cell_start) +
          b(c.grid.items) + b(c.grid.count) + b(c.grid.offset) + b(c.grid.found) +
          b(c.energy_partial) + b(s.cracks) + b(s.tris) + b(s.vertices) + b(s.ints) +
-         b(s.merged) + b(s.boxes) + b(s.trial) + b(s.found) + b(s.gather_index);
+         b(s.merged) + b(s.boxes) + b(s.trial) + b(s.found) + b(s.gather_index) +
+         b(c.narrow.tris) + b(c.narrow.rows);
 }
 
 }  // namespace

@@ -127,7 +127,7 @@ void fields(Ar& ar, Cracks& c) {
 
 template <class Ar>
 void fields(Ar& ar, ContactData& c) {
-  ROCKFDEM_CHECKPOINT_MEMBERS(ContactData, 33);
+  ROCKFDEM_CHECKPOINT_MEMBERS(ContactData, 34);
   ar.tag("CONT");
   ar.state(c.settings);
   ar.state(c.penalty);  // set_contact may come after construction: all of it is state
@@ -154,6 +154,7 @@ void fields(Ar& ar, ContactData& c) {
   ar.state(c.gather_entry);
   ar.skip(c.grid);  // scratch: every detection rewrites it before reading it
   ar.skip(c.breaks);  // scratch: every local update rewrites it before reading it
+  ar.skip(c.narrow);  // scratch: every contact pass rewrites it before reading it
   ar.state(c.dirty);
   ar.state(c.topology_dirty);
   ar.state(c.detections);
