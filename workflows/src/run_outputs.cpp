@@ -320,11 +320,14 @@ void RunOutputs::plots(const fdem::Engine& e, const mesh::Mesh& m) {
   const std::string& dir = cli_.output_dir;
   const History& h = *history_;
   const std::vector<double> t = h.column("time");
-  coupling::plot_xy_png("Convergence", "time [s]", "displacement [mm]",
+  // Scaled masses make the simulated time a pseudo-time: say so on the axis.
+  const std::string time_axis = e.mass_scaling_report().enabled ? "pseudo-time [s] (mass-scaled)"
+                                                                 : "time [s]";
+  coupling::plot_xy_png("Convergence", time_axis, "displacement [mm]",
                         {{"vault settlement", t, h.column("vault_settlement_mm")},
                          {"wall convergence", t, h.column("wall_convergence_mm")}},
                         output_path(dir, "convergence.png"));
-  coupling::plot_xy_png("Broken crack elements", "time [s]", "count",
+  coupling::plot_xy_png("Broken crack elements", time_axis, "count",
                         {{"mode I", t, h.column("broken_I")},
                          {"mode II", t, h.column("broken_II")},
                          {"mixed", t, h.column("broken_mixed")}},
