@@ -368,8 +368,7 @@ void Engine::set_mass_scaling(const MassScaling& scaling) {
                      " s must be >= 0 (0 selects the least constrained node's own limit)");
   auto& d = impl_->d;
   d.mass_scaling = scaling;
-  d.scaled_dt = 0;  // resolved again at the next refresh
-  if (!scaling.enabled) d.tris.mass_scale.clear();
+  d.scaled_dt = 0;  // resolved again at the next refresh (which also drops the factors)
   d.masses_dirty = true;
   impl_->critical_dt = -1;
 }

@@ -21,9 +21,9 @@ constexpr int kNodeSums = 5;
 
 inline double sign(double v) { return v > 0.0 ? 1.0 : (v < 0.0 ? -1.0 : 0.0); }
 
-/// Mass of node i from its active triangles, with or without their
-/// density factors (mass scaling).
-double corner_mass(const EngineData& d, long i, bool scaled) {
+/// Mass of node i from its active triangles with density factors `scale`
+/// (one per triangle; empty: the true masses).
+double corner_mass(const EngineData& d, long i, const std::vector<double>& scale) {
   const long tri_slots = static_cast<long>(d.crack_slot0());
   const Nodes& n = d.nodes;
   const Triangles& tr = d.tris;
@@ -33,9 +33,23 @@ double corner_mass(const EngineData& d, long i, bool scaled) {
     if (s >= tri_slots) break;  // slots are sorted: triangles come first
     const int t = s / 3;
     if (tr.active[t])
-      m += d.solids[tr.material[t]].rho * (scaled ? tr.density_factor(t) : 1.0) * tr.area0[t] / 3.0;
+      m += d.solids[tr.material[t]].rho * (scale.empty() ? 1.0 : scale[t]) * tr.area0[t] / 3.0;
   }
   return m;
+}
+
+/// A change of density factors keeps each node's momentum, m_old v_old =
+/// m_new v_new (m_old: the old factors on the current activity), so that
+/// rescaling never adds kinetic energy; the energy it takes out is booked
+/// with the stage change (refresh_nodes).
+void keep_momentum(EngineData& d, const std::vector<double>& old_scale) {
+  Nodes& n = d.nodes;
+  for (std::size_t i = 0; i < n.size(); ++i) {
+    const double m_old = corner_mass(d, long(i), old_scale), m_new = n.mass[i];
+    if (!(m_old > 0 && m_new > 0) || m_old == m_new) continue;
+    n.vel[2 * i] *= m_old / m_new;
+    n.vel[2 * i + 1] *= m_old / m_new;
+  }
 }
 
 /// Gravity acts on the true masses, whatever the scaling of the inertia.
@@ -44,7 +58,7 @@ void refresh_external_forces(EngineData& d) {
   const bool scaled = !d.tris.mass_scale.empty();
   const bool gravity = d.gravity[0] != 0.0 || d.gravity[1] != 0.0;
   for (std::size_t i = 0; i < n.size(); ++i) {
-    const double m = gravity && scaled ? corner_mass(d, long(i), false) : n.mass[i];
+    const double m = gravity && scaled ? corner_mass(d, long(i), {}) : n.mass[i];
     n.fext[2 * i] = m * d.gravity[0];
     n.fext[2 * i + 1] = m * d.gravity[1];
   }
@@ -78,7 +92,7 @@ void refresh_masses(EngineData& d) {
   Nodes& n = d.nodes;
 #pragma omp parallel for schedule(static) num_threads(thread_count(d.threads))
   for (long i = 0; i < nn; ++i) {
-    const double m = corner_mass(d, i, true);
+    const double m = corner_mass(d, i, d.tris.mass_scale);
     n.mass[i] = m;
     n.inv_mass[i] = m > 0 ? 1.0 / m : 0.0;
     if (m == 0) n.vel[2 * i] = n.vel[2 * i + 1] = 0.0;
@@ -87,16 +101,25 @@ void refresh_masses(EngineData& d) {
 
 void refresh_nodes(EngineData& d) {
   // Masses and crack activity change the kinetic and crack energies without
-  // work (a stage control): the energy ledger books the difference.
-  const double before = d.energy.started ? kinetic_and_crack_energy(d) : 0.0;
+  // work (a stage control): the energy ledger books the difference. With
+  // mass scaling the velocities change too (keep_momentum), and with them
+  // the half-step placement of the strain and contact energies: then the
+  // whole stored energy is compared.
+  const bool scaled = d.mass_scaling.enabled || !d.tris.mass_scale.empty();
+  const auto energy = [&] { return scaled ? stored_energy(d) : kinetic_and_crack_energy(d); };
+  const double before = d.energy.started ? energy() : 0.0;
   // Crack activity first: the mass scaling's stability bound reads it.
   refresh_crack_activity(d);
-  if (d.mass_scaling.enabled)
+  const std::vector<double> old_scale = d.tris.mass_scale;  // empty unless scaled
+  if (d.mass_scaling.enabled) {
     scale_masses(d);  // ends with refresh_masses
-  else
+  } else {
+    d.tris.mass_scale.clear();
     refresh_masses(d);
+  }
+  if (scaled) keep_momentum(d, old_scale);
   refresh_external_forces(d);
-  if (d.energy.started) book(d, &EnergyLedger::removed, before, kinetic_and_crack_energy(d));
+  if (d.energy.started) book(d, &EnergyLedger::removed, before, energy());
   d.block_partial.assign(kNodeSums * ((d.nodes.size() + kNodeBlock - 1) / kNodeBlock), 0.0);
   const std::size_t blocks = std::max(d.tris.size(), d.cracks.size()) / kEnergyBlock + 1;
   d.energy_partial.assign(blocks, 0.0);

@@ -91,26 +91,47 @@ void triangle_frequency(const EngineData& d, std::size_t t, double& omega2, doub
   }
 }
 
-void node_limits(const EngineData& d, std::vector<double>& limit, bool with_contact) {
+double dashpot_max(const EngineData& d, std::size_t n) {
+  const int b = d.nodes.bc[n];
+  if (b < 0) return 0.0;
+  const BoundaryRecord& r = d.bc_records[b];
+  const double mean = 0.5 * (r.cxx + r.cyy), half = 0.5 * (r.cxx - r.cyy);
+  return mean + std::sqrt(half * half + r.cxy * r.cxy);
+}
+
+void node_frequencies(const EngineData& d, bool with_contact, std::vector<double>& omega2,
+                      std::vector<double>& xi) {
   const std::size_t nn = d.nodes.size();
-  std::vector<double> tri_w2(nn, 0.0), tri_xi(nn, 0.0), crack_w2(nn, 0.0);
+  std::vector<double> crack_w2(nn, 0.0);
+  omega2.assign(nn, 0.0);
+  xi.assign(nn, 0.0);
   for (std::size_t t = 0; t < d.tris.size(); ++t) {
     if (!d.tris.active[t]) continue;
-    double w2, xi;
-    triangle_frequency(d, t, w2, xi);
+    double w2, x;
+    triangle_frequency(d, t, w2, x);
     if (with_contact) w2 += contact_triangle_omega2(d, t);
     for (int k = 0; k < 3; ++k) {
       const int n = d.tris.nodes[3 * t + k];
-      tri_w2[n] = std::max(tri_w2[n], w2);
-      tri_xi[n] = std::max(tri_xi[n], xi);
+      omega2[n] = std::max(omega2[n], w2);
+      xi[n] = std::max(xi[n], x);
     }
   }
   add_crack_rows(d, crack_w2);
-  limit.assign(nn, std::numeric_limits<double>::infinity());
   for (std::size_t n = 0; n < nn; ++n) {
-    const double w2 = tri_w2[n] + crack_w2[n];
-    if (w2 > 0) limit[n] = damped_limit(d, std::sqrt(w2), tri_xi[n]);
+    omega2[n] += crack_w2[n];
+    // An absorbing dashpot C is explicit (-C v_old): its ratio c / (2 m omega)
+    // shrinks the limit like viscous damping (c dt / m < 2 alone).
+    const double c = dashpot_max(d, n), m = d.nodes.mass[n];
+    if (c > 0 && m > 0 && omega2[n] > 0) xi[n] += c / (2.0 * m * std::sqrt(omega2[n]));
   }
+}
+
+void node_limits(const EngineData& d, std::vector<double>& limit, bool with_contact) {
+  std::vector<double> w2, xi;
+  node_frequencies(d, with_contact, w2, xi);
+  limit.assign(w2.size(), std::numeric_limits<double>::infinity());
+  for (std::size_t n = 0; n < w2.size(); ++n)
+    if (w2[n] > 0) limit[n] = damped_limit(d, std::sqrt(w2[n]), xi[n]);
 }
 
 double bound_critical_dt(const EngineData& d) {
@@ -264,9 +285,17 @@ double power_critical_dt(const EngineData& d, int max_iterations) {
 double critical_dt(const EngineData& d) {
   // The power estimate approaches omega_max from below (dt from above); the
   // element bound is safe but can be conservative by tens of percent. Take
-  // the power estimate, never beyond 1.5 times the bound.
-  const double bound = bound_critical_dt(d);
-  return std::min(power_critical_dt(d, 200), 1.5 * bound);
+  // the power estimate, never beyond 1.5 times the bound, and never beyond
+  // the bound of a node with an absorbing dashpot (which the power iteration
+  // does not see).
+  std::vector<double> limit;
+  node_limits(d, limit, false);
+  double bound = std::numeric_limits<double>::infinity(), dashpots = bound;
+  for (std::size_t n = 0; n < limit.size(); ++n) {
+    bound = std::min(bound, limit[n]);
+    if (dashpot_max(d, n) > 0) dashpots = std::min(dashpots, limit[n]);
+  }
+  return std::min({power_critical_dt(d, 200), 1.5 * bound, dashpots});
 }
 
 }  // namespace rockfdem::fdem::detail

@@ -7,7 +7,8 @@ namespace rockfdem::fdem::detail {
 
 /// The stability limit used by the engine: 2 / omega_max of the linearised
 /// model by power iteration (at most 200 iterations, Rayleigh quotient
-/// settled to 1e-4), reduced for damping, capped at 1.5 times the bound below.
+/// settled to 1e-4), reduced for damping, capped at 1.5 times the bound below
+/// and at the bound of the nodes with absorbing dashpots.
 double critical_dt(const EngineData& d);
 
 /// 2 / omega reduced for viscous, mass-proportional and local damping.
@@ -24,10 +25,18 @@ double power_critical_dt(const EngineData& d, int max_iterations);
 /// crack between rigid faces; see docs/engine.md for how tight it is.
 double bound_critical_dt(const EngineData& d);
 
-/// The bound above per node (infinity for a node without stiffness); with
-/// contact, each triangle's frequency^2 also takes its contact term
-/// (contact_triangle_omega2).
+/// Per node, the frequency^2 and damping ratio of the bound above: the
+/// stiffest active triangle (with its contact term, contact_triangle_omega2,
+/// when asked) plus the crack rows; the ratio is the triangles' viscous one
+/// plus an absorbing dashpot's c / (2 m omega).
+void node_frequencies(const EngineData& d, bool with_contact, std::vector<double>& omega2,
+                      std::vector<double>& xi);
+
+/// The bound above per node (infinity for a node without stiffness).
 void node_limits(const EngineData& d, std::vector<double>& limit, bool with_contact);
+
+/// Largest eigenvalue of node n's absorbing dashpot matrix [N s/m^2]; 0: none.
+double dashpot_max(const EngineData& d, std::size_t n);
 
 /// Largest frequency^2 and damping ratio of triangle t in its stiffest mode
 /// (linearised at the reference configuration, lumped mass f rho A0 / 3 with

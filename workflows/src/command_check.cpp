@@ -171,10 +171,9 @@ int command_check(const Scene& scene, const CommandLine& /*cli*/) {
     // and contact, which adds its frequency on top (1 / sqrt(2)).
     const double local = scene.engine.local_damping > 0 ? scene.engine.local_damping : 0.8;
     const double contact = scene.engine.contact ? std::sqrt(0.5) : 1.0;
-    const double scaled = scene.engine.mass_scaling_dt > 0
-                              ? scene.engine.mass_scaling_dt
-                              : scene.engine.dt_safety * 0.3 * scene.mesh.size.size_far / cp *
-                                    contact / std::sqrt(1 + local);
+    const double target = scene.engine.mass_scaling_dt > 0 ? scene.engine.mass_scaling_dt
+                                                            : 0.3 * scene.mesh.size.size_far / cp;
+    const double scaled = scene.engine.dt_safety * target * contact / std::sqrt(1 + local);
     std::printf("  time step, mass-scaled:     %.3g s (quasi-static pseudo-time)\n",
                 std::max(dt, scaled));
   }

@@ -219,8 +219,9 @@ std::vector<KeySpec> build_schema() {
                      "simulated time not physical). auto: on for tunnels (and .msh models), off for "
                      "UCS and Brazilian specimens."));
   s.push_back(non_negative("engine.mass_scaling_dt", "s", "0",
-                           "Target step of the mass scaling; 0: the least constrained node's "
-                           "stability limit."));
+                           "Target step of the mass scaling before local damping (which divides "
+                           "it by sqrt(1 + local_damping)) and dt_safety; 0: the least "
+                           "constrained node's stability limit."));
   s.push_back(non_negative("engine.gravity", "m/s^2", "0",
                            "Gravitational acceleration acting in -y; 0: none."));
   // [loading]
@@ -322,10 +323,13 @@ std::vector<KeySpec> build_schema() {
                      "the monitors have settled, see settle)."));
   s.push_back(number("stages[].settle", "-", "1e-3", 0, false, 1, false,
                      "Equilibrium also needs the monitors settled: the largest monitor "
-                     "displacement change over the last output interval at most this fraction "
-                     "of the largest monitor displacement; 0: the ratio alone."));
+                     "displacement change over the last output interval, per 1000 steps, at "
+                     "most this fraction of the largest monitor displacement; 0: the ratio "
+                     "alone."));
   s.push_back(non_negative("stages[].time", "s", "0",
-                           "Stop after this much simulated time in the stage; 0: no limit."));
+                           "Stop after this much simulated time in the stage (pseudo-time when "
+                           "engine.mass_scaling is on, as it is for tunnels by default: prefer "
+                           "max_steps then); 0: no limit."));
   s.push_back(integer("stages[].trigger_broken", "0", 0, 1e12,
                       "grout: step until this many crack elements are broken (or the stage's "
                       "time has passed), then grout; 0: at once."));

@@ -75,7 +75,7 @@ std::vector<double> StageRunner::monitor_displacements() const {
   return u;
 }
 
-double StageRunner::settle_measure() {
+double StageRunner::settle_measure(long steps) {
   const std::vector<double> now = monitor_displacements();
   double change = 0, size = 0;
   for (std::size_t i = 0; i + 1 < now.size(); i += 2) {
@@ -85,7 +85,8 @@ double StageRunner::settle_measure() {
     size = std::max(size, std::hypot(now[i], now[i + 1]));
   }
   cursor_.monitor_u = now;
-  return size > 0 ? change / size : 0.0;
+  // Per 1000 steps, so that the tolerance does not depend on every_steps.
+  return size > 0 && steps > 0 ? change / size * (1000.0 / double(steps)) : 0.0;
 }
 
 bool StageRunner::advance(long n) {
@@ -122,7 +123,7 @@ bool StageRunner::step_until(const StageSpec& stage, PhaseTimer& timer, long bro
     // Equilibrium: balanced forces alone are not enough while cracks keep
     // breaking and blocks keep sliding (the ratio then stalls near 1e-3
     // with the walls still converging); the monitors must have settled too.
-    const double settle = settle_measure();
+    const double settle = settle_measure(chunk);
     last_settle_ = settle;
     done = broken_target > 0 ? engine_.broken_counts().total() >= broken_target
                              : engine_.unbalanced_force_ratio() < stage.ratio &&

@@ -69,10 +69,10 @@ class StageRunner {
   bool step_until(const StageSpec& stage, PhaseTimer& timer, long broken_target);
   /// Monitors' displacements (ux, uy per monitor) [m].
   std::vector<double> monitor_displacements() const;
-  /// The settle measure of the last output interval: the largest monitor
-  /// displacement change over the largest monitor displacement (0 when
-  /// nothing moved); updates cursor_.monitor_u.
-  double settle_measure();
+  /// The settle measure of the last output interval of `steps` steps: the
+  /// largest monitor displacement change per 1000 steps over the largest
+  /// monitor displacement (0 when nothing moved); updates cursor_.monitor_u.
+  double settle_measure(long steps);
   /// Steps `n` times unless a signal arrives; false when one did.
   bool advance(long n);
   void set_zone(int zone, bool active, fdem::ActivationReference ref);

@@ -87,7 +87,7 @@ struct ContactCounters {
 /// What quasi-static mass scaling did (mass_scaling_report()).
 struct MassScalingReport {
   bool enabled = false;
-  double target_dt = 0;     ///< the common step the masses were scaled for [s]
+  double target_dt = 0;     ///< the step the masses were scaled for, with local damping [s]
   double max_factor = 1;    ///< largest triangle density factor
   double mass_ratio = 1;    ///< scaled over true mass of the active triangles
   long scaled_triangles = 0;  ///< active triangles with a factor above 1
@@ -197,6 +197,7 @@ class Engine {
   /// again after every change of activity, stiffness factor or crack
   /// material, with the same target step.
   void set_mass_scaling(const MassScaling& scaling);
+  /// Brings masses up to date first (like critical_dt()).
   MassScalingReport mass_scaling_report() const;
   /// Assigns material m (and its crack law) to crack element c.
   void set_crack_material(std::size_t c, int material);

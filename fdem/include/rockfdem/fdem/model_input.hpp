@@ -97,7 +97,9 @@ struct DampingSettings {
 /// simulated time, are no longer physical. Gravity keeps the true masses.
 struct MassScaling {
   bool enabled = false;
-  double dt = 0;  ///< target step [s]; 0 selects the least constrained node's limit
+  /// Target step [s] before local damping (which divides it by sqrt(1 + alpha))
+  /// and dt_safety; 0 selects the least constrained node's limit.
+  double dt = 0;
 };
 
 /// Contact between triangles (Munjiza's potential-based penalty contact with

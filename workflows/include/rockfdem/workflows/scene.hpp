@@ -66,8 +66,9 @@ struct StageSpec {
   int every_steps = 1000;
   long trigger_broken = 0;  ///< grout: broken crack elements that trigger grouting
   /// With the ratio, equilibrium needs the monitors settled: the largest
-  /// monitor displacement change over one output interval at most this
-  /// fraction of the largest monitor displacement; 0: the ratio alone.
+  /// monitor displacement change over one output interval, per 1000 steps,
+  /// at most this fraction of the largest monitor displacement; 0: the
+  /// ratio alone.
   double settle = 1e-3;
 };
 
