@@ -181,13 +181,15 @@ void StageRunner::run(const StageSpec& stage, PhaseTimer& timer) {
     done = grout(stage, timer);
   else
     converged = step_until(stage, timer, 0);
+  const long steps_taken = engine_.step_count() - cursor_.first;
   report_.push_back({{"kind", stage.kind},
                      {"changes", done},
-                     {"steps", engine_.step_count() - cursor_.first},
+                     {"steps", steps_taken},
                      {"simulated_time", engine_.time() - cursor_.t0},
                      {"unbalanced_ratio", engine_.unbalanced_force_ratio()},
                      {"settle", last_settle_ >= 0 ? nlohmann::json(last_settle_) : nlohmann::json()},
-                     {"converged", converged},
+                     // A stage that took no step has no equilibrium to report.
+                     {"converged", steps_taken > 0 ? nlohmann::json(converged) : nlohmann::json()},
                      {"support_pressure_ratio", support_ratio()}});
 }
 
