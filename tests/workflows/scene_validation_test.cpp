@@ -97,6 +97,12 @@ TEST(Scene, error_names_file_line_key_value_and_allowed) {
   EXPECT_NE(msg.find("tunnel.radius"), std::string::npos) << msg;
   EXPECT_NE(msg.find("-3"), std::string::npos) << msg;
   EXPECT_NE(msg.find("allowed: > 0 (m)"), std::string::npos) << msg;
+  // A choice key lists its choices.
+  const std::string choice = error_of(
+      [&] { load_scene(kTestDir + "/good_circular.toml", {"engine.mass_scaling=maybe"}); });
+  EXPECT_NE(choice.find("'engine.mass_scaling' = \"maybe\""), std::string::npos) << choice;
+  EXPECT_NE(choice.find("allowed: one of \"auto\", \"on\", \"off\""), std::string::npos)
+      << choice;
 }
 
 // Every file in bad_scenes/ starts with "# expect: TEXT"; loading it must

@@ -119,13 +119,13 @@ void check_value(const RawScene& s, const KeySpec& k, const std::string& path,
       if (!n.is_string()) fail_key(s, path, &n, "wrong type");
       return;
     case KeyType::kChoice:
-      if (!is_choice(k, n)) fail_key(s, path, &n, "not an allowed value");
+      if (!is_choice(k, n)) fail_key(s, path, &n, "not one of the choices");
       return;
     case KeyType::kStringMap:
       if (!n.is_table()) fail_key(s, path, &n, "wrong type");
       for (auto&& [name, v] : *n.as_table())
         if (!is_choice(k, v))
-          fail_key(s, path + "." + std::string(name.str()), &v, "not an allowed value");
+          fail_key(s, path + "." + std::string(name.str()), &v, "not one of the choices");
       return;
     case KeyType::kNumberArray:
       if (!n.is_array() || n.as_array()->empty()) fail_key(s, path, &n, "wrong type");
