@@ -134,14 +134,6 @@ void node_limits(const EngineData& d, std::vector<double>& limit, bool with_cont
     if (w2[n] > 0) limit[n] = damped_limit(d, std::sqrt(w2[n]), xi[n]);
 }
 
-double bound_critical_dt(const EngineData& d) {
-  std::vector<double> limit;
-  node_limits(d, limit, false);
-  double dt = std::numeric_limits<double>::infinity();
-  for (double l : limit) dt = std::min(dt, l);
-  return dt;
-}
-
 }  // namespace rockfdem::fdem::detail
 
 namespace rockfdem::fdem::detail {

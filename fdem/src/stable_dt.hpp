@@ -7,8 +7,8 @@ namespace rockfdem::fdem::detail {
 
 /// The stability limit used by the engine: 2 / omega_max of the linearised
 /// model by power iteration (at most 200 iterations, Rayleigh quotient
-/// settled to 1e-4), reduced for damping, capped at 1.5 times the bound below
-/// and at the bound of the nodes with absorbing dashpots.
+/// settled to 1e-4), reduced for damping, capped at 1.5 times the element
+/// bound below and at that bound of the nodes with absorbing dashpots.
 double critical_dt(const EngineData& d);
 
 /// 2 / omega reduced for viscous, mass-proportional and local damping.
@@ -17,22 +17,18 @@ double damped_limit(const EngineData& d, double omega, double xi_viscous);
 /// Power-iteration estimate alone.
 double power_critical_dt(const EngineData& d, int max_iterations);
 
-/// Conservative element bound: per node, omega^2 = (largest exact linearised
-/// frequency^2 of its active triangles, lumped mass) + (Gershgorin row sum of
-/// its live crack elements' penalty stiffness); dt = min over nodes of
-/// (2 / omega) (sqrt(1 + xi^2) - xi), with xi the triangles' viscous damping
-/// ratio in their stiffest mode. Exact for a lone triangle and for a lone
-/// crack between rigid faces; see docs/engine.md for how tight it is.
-double bound_critical_dt(const EngineData& d);
-
-/// Per node, the frequency^2 and damping ratio of the bound above: the
-/// stiffest active triangle (with its contact term, contact_triangle_omega2,
-/// when asked) plus the crack rows; the ratio is the triangles' viscous one
-/// plus an absorbing dashpot's c / (2 m omega).
+/// Conservative element bound, per node: omega^2 = (largest exact linearised
+/// frequency^2 of its active triangles, lumped mass; with their contact term,
+/// contact_triangle_omega2, when asked) + (Gershgorin row sum of its live
+/// crack elements' penalty stiffness); xi = the triangles' viscous damping
+/// ratio in their stiffest mode plus an absorbing dashpot's c / (2 m omega).
+/// Exact for a lone triangle and for a lone crack between rigid faces; see
+/// docs/engine.md for how tight it is.
 void node_frequencies(const EngineData& d, bool with_contact, std::vector<double>& omega2,
                       std::vector<double>& xi);
 
-/// The bound above per node (infinity for a node without stiffness).
+/// The bound above per node, (2 / omega) (sqrt(1 + xi^2) - xi) reduced for
+/// the other damping (damped_limit); infinity for a node without stiffness.
 void node_limits(const EngineData& d, std::vector<double>& limit, bool with_contact);
 
 /// Largest eigenvalue of node n's absorbing dashpot matrix [N s/m^2]; 0: none.
