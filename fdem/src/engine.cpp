@@ -304,8 +304,7 @@ void Engine::set_stiffness_factor(std::size_t t, double alpha) {
   d.tris.alpha[t] = alpha;
   detail::book(d, &detail::EnergyLedger::softening, before,
                detail::triangle_stored_energy(d, t, at));
-  if (d.mass_scaling.enabled) d.masses_dirty = true;  // its density factor follows
-  impl_->critical_dt = -1;
+  impl_->stiffness_changed();
 }
 
 double Engine::stiffness_factor(std::size_t t) const {
@@ -358,8 +357,7 @@ void Engine::set_damping(const DampingSettings& damping) {
   if (!(damping.local >= 0 && damping.local < 1) || !(damping.mass_proportional >= 0))
     throw InputError("fdem: local damping must lie in [0, 1) and mass-proportional be >= 0");
   impl_->d.damping = damping;
-  if (impl_->d.mass_scaling.enabled) impl_->d.masses_dirty = true;
-  impl_->critical_dt = -1;  // local and mass damping lower the limit
+  impl_->stiffness_changed();  // local and mass damping lower the limit
 }
 
 void Engine::set_mass_scaling(const MassScaling& scaling) {
@@ -401,8 +399,7 @@ void Engine::set_crack_material(std::size_t c, int material) {
   const double before = detail::crack_element_energy(d, c, at);
   d.cracks.material[c] = static_cast<std::uint16_t>(material);
   detail::book(d, &detail::EnergyLedger::removed, before, detail::crack_element_energy(d, c, at));
-  if (d.mass_scaling.enabled) d.masses_dirty = true;  // a stiffer penalty needs more mass
-  impl_->critical_dt = -1;
+  impl_->stiffness_changed();
 }
 
 void Engine::rejoin_crack(std::size_t c, int material) {
@@ -444,9 +441,8 @@ void Engine::set_contact(const ContactSettings& contact) {
   d.contact.settings = contact;
   d.contact_on = contact.enabled;
   if (contact.enabled) detail::contact_setup(d);
-  if (d.mass_scaling.enabled) d.masses_dirty = true;  // contact joins the scaled frequencies
   detail::book(d, &detail::EnergyLedger::removed, before, detail::contact_energy(d, at));
-  impl_->critical_dt = -1;
+  impl_->stiffness_changed();  // contact joins the limit and the scaled frequencies
 }
 
 bool Engine::contact_active() const {

@@ -19,6 +19,12 @@ struct Engine::Impl {
   bool prestress_pending = false;  ///< crack pre-stress is set before the first step
   long prestress_clipped = 0;  ///< crack points whose initial traction exceeded the strength        ///< consecutive steps with growing velocity reversal
   void refresh();
+  /// A stiffness, damping or contact change: the stability limit is
+  /// recomputed, and with mass scaling the density factors follow.
+  void stiffness_changed() {
+    critical_dt = -1;
+    if (d.mass_scaling.enabled) d.masses_dirty = true;
+  }
 };
 
 }  // namespace rockfdem::fdem

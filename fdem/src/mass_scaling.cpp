@@ -72,23 +72,18 @@ double largest_node_limit(const EngineData& d) {
 void scale_masses(EngineData& d) {
   Triangles& tr = d.tris;
   tr.mass_scale.assign(tr.size(), 1.0);
+  refresh_masses(d);  // the true masses
   // Local damping divides every limit by the same sqrt(1 + alpha): the
   // target is held without it, so a later change of local damping does not
   // scale every mass.
-  if (!(d.scaled_dt > 0)) {
-    refresh_masses(d);  // the true masses
+  if (!(d.scaled_dt > 0))
     d.scaled_dt = d.mass_scaling.dt > 0
                       ? d.mass_scaling.dt
                       : std::sqrt(1.0 + d.damping.local) * largest_node_limit(d);
-  }
-  if (!(d.scaled_dt > 0)) {  // nothing stiff yet: resolved at a later refresh
-    refresh_masses(d);
-    return;
-  }
+  if (!(d.scaled_dt > 0)) return;  // nothing stiff yet: resolved at a later refresh
   const double g = 2.0 / d.scaled_dt, c = d.damping.mass_proportional;
   std::vector<double> w2, xi;
   for (int pass = 0; pass < kPasses; ++pass) {
-    refresh_masses(d);
     node_frequencies(d, d.contact_on, w2, xi);
     bool raised = false;
     for (std::size_t t = 0; t < tr.size(); ++t) {
@@ -104,8 +99,8 @@ void scale_masses(EngineData& d) {
       }
     }
     if (!raised) break;
+    refresh_masses(d);
   }
-  refresh_masses(d);
 }
 
 }  // namespace rockfdem::fdem::detail

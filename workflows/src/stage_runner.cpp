@@ -78,10 +78,10 @@ std::vector<double> StageRunner::monitor_displacements() const {
 double StageRunner::settle_measure(long steps) {
   const std::vector<double> now = monitor_displacements();
   double change = 0, size = 0;
+  // cursor_.monitor_u holds the same monitors, set when the stage began.
   for (std::size_t i = 0; i + 1 < now.size(); i += 2) {
-    const double prev_x = i < cursor_.monitor_u.size() ? cursor_.monitor_u[i] : 0.0;
-    const double prev_y = i + 1 < cursor_.monitor_u.size() ? cursor_.monitor_u[i + 1] : 0.0;
-    change = std::max(change, std::hypot(now[i] - prev_x, now[i + 1] - prev_y));
+    const double* prev = &cursor_.monitor_u[i];
+    change = std::max(change, std::hypot(now[i] - prev[0], now[i + 1] - prev[1]));
     size = std::max(size, std::hypot(now[i], now[i + 1]));
   }
   cursor_.monitor_u = now;
@@ -123,11 +123,10 @@ bool StageRunner::step_until(const StageSpec& stage, PhaseTimer& timer, long bro
     // Equilibrium: balanced forces alone are not enough while cracks keep
     // breaking and blocks keep sliding (the ratio then stalls near 1e-3
     // with the walls still converging); the monitors must have settled too.
-    const double settle = settle_measure(chunk);
-    last_settle_ = settle;
+    last_settle_ = settle_measure(chunk);
     done = broken_target > 0 ? engine_.broken_counts().total() >= broken_target
                              : engine_.unbalanced_force_ratio() < stage.ratio &&
-                                   (stage.settle <= 0 || settle <= stage.settle);
+                                   (stage.settle <= 0 || last_settle_ <= stage.settle);
     progress.update(in_stage(), engine_.time() - t0);
     // Only where the loop goes on: a restart resumes inside this stage.
     const bool goes_on = !done && in_stage() < stage.max_steps && !out_of_time();
