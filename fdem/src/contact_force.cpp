@@ -14,9 +14,11 @@
 // This is the boundary form of the overlap integral of the two potentials'
 // gradients.
 //
-// Cost: every contact triangle is packed once per step (pack); the pair
-// loop reads two packed triangles, and a role computes the contactor's
-// three corners' barycentric coordinates once, for its three edges.
+// Cost: every contact triangle is packed once per step (pack). The pair
+// loop tests the two packed triangles' boxes and copies the roles of the
+// pairs that pass into a batch; the batch kernel (contact_roles.hpp)
+// computes a vector register's worth of roles at once without a branch,
+// and the pair loop adds its results to the pairs' buffers in scalar order.
 //
 // Friction: per contactor edge and pair, an incremental tangential spring at
 // the edge's force centre xi_c = F_B / F_AB, F_t -= k_t v_t dt with
@@ -26,6 +28,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "contact_roles.hpp"
 #include "engine_data.hpp"
 #include "parallel.hpp"
 
@@ -72,175 +75,118 @@ inline void pack(const EngineData& d, int t, Tri& c) {
   c.y_hi = std::max({c.y[0], c.y[1], c.y[2]});
 }
 
-/// Barycentric coordinates of (px, py) in triangle t: lambda_i vanishes on
-/// the edge opposite corner i, so at corner i + 1, and grows from there
-/// with its packed gradient.
-inline void barycentric(const Tri& t, double px, double py, double l[3]) {
-  for (int i = 0; i < 3; ++i) {
-    const int j = (i + 1) % 3;
-    l[i] = t.gx[i] * (px - t.x[j]) + t.gy[i] * (py - t.y[j]);
-  }
-}
-
-/// Exact integrals of phi = 3 min(lambda) over the part of the edge inside
-/// the target: i0 = int phi, i1 = int phi xi, and the inside length
-/// fraction. lambda is linear from la (xi = 0) to lb (xi = 1), so
-/// int phi lambda_i = la_i i0 + (lb_i - la_i) i1 = i0 lambda_i(xi_c) with
-/// xi_c = i1 / i0: the target's share needs no integral of its own.
-struct EdgeIntegral {
-  double i0 = 0, i1 = 0, inside = 0;
-};
-
-inline bool integrate_edge(const double la[3], const double lb[3], EdgeIntegral& out) {
-  double lo = 0.0, hi = 1.0;
-  for (int i = 0; i < 3; ++i) {
-    if (la[i] < 0.0 && lb[i] < 0.0) return false;
-    if (la[i] < 0.0) lo = std::max(lo, la[i] / (la[i] - lb[i]));
-    else if (lb[i] < 0.0) hi = std::min(hi, la[i] / (la[i] - lb[i]));
-  }
-  if (!(hi > lo)) return false;
-  // Breakpoints of min(lambda): lo, where two coordinates cross strictly
-  // inside (lo, hi) (at most three, sorted), hi.
-  double xs[5];
-  xs[0] = lo;
-  int n = 1;
-  for (int i = 0; i < 3; ++i)
-    for (int j = i + 1; j < 3; ++j) {
-      const double d0 = la[i] - la[j], d1 = lb[i] - lb[j];
-      if ((d0 < 0.0) != (d1 < 0.0) && d0 != d1) {
-        const double x = d0 / (d0 - d1);
-        if (x > lo && x < hi) xs[n++] = x;
-      }
-    }
-  for (int i = 2; i < n; ++i)  // insertion sort of the inner ones
-    for (int j = i; j > 1 && xs[j] < xs[j - 1]; --j) std::swap(xs[j], xs[j - 1]);
-  xs[n++] = hi;
-  // phi at each breakpoint once (each inner one ends a segment and starts
-  // the next).
-  double ph[5];
-  for (int s = 0; s < n; ++s) {
-    double m = la[0] + (lb[0] - la[0]) * xs[s];
-    for (int i = 1; i < 3; ++i) m = std::min(m, la[i] + (lb[i] - la[i]) * xs[s]);
-    ph[s] = 3.0 * std::max(0.0, m);
-  }
-  // Sorted: a segment of two equal breakpoints adds zero.
-  for (int s = 0; s + 1 < n; ++s) {
-    const double a = xs[s], b = xs[s + 1], w = b - a;
-    const double pa = ph[s], pb = ph[s + 1];
-    out.i0 += 0.5 * w * (pa + pb);
-    out.i1 += w / 6.0 * (pa * (2.0 * a + b) + pb * (a + 2.0 * b));
-  }
-  out.inside = hi - lo;
-  return out.i0 > 0.0;
-}
-
-struct RoleParams {
-  double p, mu, dt, damping;
-  bool friction;
-};
-
-/// Energy dissipated by one pair in one step (energy.hpp).
+/// Energy dissipated by the pairs of one block in one step (energy.hpp).
 struct PairDissipation {
   double friction = 0, damping = 0;
 };
 
-/// Contactor c's three edges against target t; adds the forces to fc, ft
-/// (6 each: corner x, y), updates the three friction springs. Returns true
-/// when some edge overlaps.
-bool role(const Tri& c, const Tri& t, const RoleParams& rp, double* spring, double* fc,
-          double* ft, PairDissipation& loss) {
-  if (!(t.two_a > 0.0)) return false;
-  // The contactor's corners in the target's barycentric coordinates, once
-  // per corner (each starts one edge and ends another).
-  double lam[3][3];
-  for (int v = 0; v < 3; ++v) barycentric(t, c.x[v], c.y[v], lam[v]);
-  // All three corners outside one edge of the target: no edge can enter
-  // (integrate_edge would reject each one on that coordinate).
-  for (int i = 0; i < 3; ++i)
-    if (lam[0][i] < 0.0 && lam[1][i] < 0.0 && lam[2][i] < 0.0) {
-      spring[0] = spring[1] = spring[2] = 0.0;
-      return false;
-    }
-  bool touching = false;
+/// One block's roles on their way through a RoleBatch: lane r holds role
+/// side[r] of pair pair[r] (0: A the contactor, 1: B).
+struct BlockRoles {
+  RoleBatch batch;
+  int pair[kRoleBatch], side[kRoleBatch];
+  int n = 0;
+};
+
+/// Copies the role (contactor c, target t) into the next lane.
+void load_role(const Tri& c, const Tri& t, double mu, const double* spring, long q, int side,
+               BlockRoles& br) {
+  RoleBatch& b = br.batch;
+  const int r = br.n++;
   for (int k = 0; k < 3; ++k) {
-    const int a = k, b = (k + 1) % 3;
-    const double* la = lam[a];
-    const double* lb = lam[b];
-    EdgeIntegral e;
-    if (!integrate_edge(la, lb, e)) {
-      spring[k] = 0.0;
-      continue;
-    }
-    touching = true;
-    const double len = c.len[k], tx = c.tx[k], ty = c.ty[k], nx = ty, ny = -tx;  // n outward
-    const double s = rp.p * len;
-    const double f_ab = s * e.i0, f_b = s * e.i1, f_a = f_ab - f_b;
-    // Point of action and the relative velocity there.
-    const double xi = e.i1 / e.i0;
-    double lc[3], vtx = 0, vty = 0;
-    for (int i = 0; i < 3; ++i) {
-      lc[i] = la[i] + (lb[i] - la[i]) * xi;
-      vtx += lc[i] * t.vx[i];
-      vty += lc[i] * t.vy[i];
-    }
-    const double vrx = (1 - xi) * c.vx[a] + xi * c.vx[b] - vtx;
-    const double vry = (1 - xi) * c.vy[a] + xi * c.vy[b] - vty;
-    const double k_n = 3.0 * s * e.inside / t.h;
-    double f_d = 0.0;  // normal damping, > 0 while approaching (v_r . n > 0)
-    if (rp.damping > 0.0) {
-      const double m = std::min(c.m[a], c.m[b]);
-      const double v_n = vrx * nx + vry * ny;
-      f_d = std::max(rp.damping * 2.0 * std::sqrt(k_n * m) * v_n, -f_ab);
-      loss.damping += f_d * v_n * rp.dt;
-    }
-    double f_t = 0.0;
-    if (rp.friction) {
-      const double trial = spring[k] - k_n * (vrx * tx + vry * ty) * rp.dt;
-      const double cap = rp.mu * (f_ab + f_d);
-      f_t = std::clamp(trial, -cap, cap);
-      spring[k] = f_t;
-      // Clipped: the slip beyond the spring's, (trial - f_t) / k_n, is
-      // plastic and dissipates f_t times it (return mapping).
-      if (f_t != trial) loss.friction += f_t * (trial - f_t) / k_n;
-    }
-    // Contactor: potential force at A, B plus the point force (F_t t - F_d n)
-    // at xi. Target: the opposite of their sum, at the same point, shared by
-    // its barycentric coordinates there (p L int phi lambda_i = lc_i F_AB).
-    const double px = f_t * tx - f_d * nx, py = f_t * ty - f_d * ny;
-    fc[2 * a] += -f_a * nx + (1 - xi) * px;
-    fc[2 * a + 1] += -f_a * ny + (1 - xi) * py;
-    fc[2 * b] += -f_b * nx + xi * px;
-    fc[2 * b + 1] += -f_b * ny + xi * py;
-    const double gx = f_ab * nx - px, gy = f_ab * ny - py;
-    for (int i = 0; i < 3; ++i) {
-      ft[2 * i] += lc[i] * gx;
-      ft[2 * i + 1] += lc[i] * gy;
-    }
+    b.cx[k][r] = c.x[k];
+    b.cy[k][r] = c.y[k];
+    b.cvx[k][r] = c.vx[k];
+    b.cvy[k][r] = c.vy[k];
+    b.cm[k][r] = c.m[k];
+    b.len[k][r] = c.len[k];
+    b.ex[k][r] = c.tx[k];
+    b.ey[k][r] = c.ty[k];
+    b.tx[k][r] = t.x[k];
+    b.ty[k][r] = t.y[k];
+    b.tvx[k][r] = t.vx[k];
+    b.tvy[k][r] = t.vy[k];
+    b.gx[k][r] = t.gx[k];
+    b.gy[k][r] = t.gy[k];
+    b.spring[k][r] = spring[k];
   }
-  return touching;
+  b.h[r] = t.h;
+  b.mu[r] = mu;
+  br.pair[r] = static_cast<int>(q);
+  br.side[r] = side;
 }
 
-/// Both roles of pair q (its triangles packed in rows ra, rb); its 12
-/// corner forces go to its own buffer.
-bool pair_forces(const EngineData& d, std::size_t q, const Tri& a, const Tri& b, double* spring,
-                 double* out, PairDissipation& loss) {
-  const ContactData& c = d.contact;
-  for (int k = 0; k < 12; ++k) out[k] = 0.0;
-  // Most pairs lie within the buffer without touching: their boxes are
-  // disjoint, and the edge clipping is skipped (springs reset, as apart).
-  if (a.x_hi < b.x_lo || b.x_hi < a.x_lo || a.y_hi < b.y_lo || b.y_hi < a.y_lo) {
-    for (int k = 0; k < 6; ++k) spring[k] = 0.0;
-    return false;
+/// Runs the batch, then adds each lane's edges to its pair's buffer in
+/// lane and edge order (the order of a scalar loop over pairs, roles and
+/// edges, so the sums are the same bits), and writes its springs back.
+void flush_roles(ContactData& c, const RoleParams& rp, BlockRoles& br, bool* touched,
+                 long block_start, PairDissipation& loss) {
+  RoleBatch& b = br.batch;
+  run_roles(b, br.n, rp);
+  for (int r = 0; r < br.n; ++r) {
+    const long q = br.pair[r];
+    const int side = br.side[r];
+    double* fc = &c.pair_force[12 * q + 6 * side];
+    double* ft = &c.pair_force[12 * q + 6 * (1 - side)];
+    double* spring = &c.friction[6 * q + 3 * side];
+    for (int k = 0; k < 3; ++k) {
+      spring[k] = b.spring[k][r];
+      if (b.hit[k][r] == 0.0) continue;
+      const int a = k, e = k == 2 ? 0 : k + 1;
+      fc[2 * a] += b.fc[k][0][r];
+      fc[2 * a + 1] += b.fc[k][1][r];
+      fc[2 * e] += b.fc[k][2][r];
+      fc[2 * e + 1] += b.fc[k][3][r];
+      for (int i = 0; i < 6; ++i) ft[i] += b.ft[k][i][r];
+      loss.damping += b.loss_damping[k][r];
+      loss.friction += b.loss_friction[k][r];
+      touched[q - block_start] = true;
+    }
   }
+  br.n = 0;
+}
+
+/// Block `blk` of the pairs: each pair's 12 corner forces go to its own
+/// buffer, its springs are updated; returns the number of touching pairs.
+long block_forces(EngineData& d, long blk, const Tri* tris, const int* rows, BlockRoles& br,
+                  PairDissipation& loss) {
+  ContactData& c = d.contact;
   RoleParams rp;
   rp.p = c.penalty;
-  rp.mu = std::min(c.mu[d.tris.material[c.pairs[q][0]]], c.mu[d.tris.material[c.pairs[q][1]]]);
   rp.dt = d.dt;
   rp.damping = c.settings.damping_ratio;
   rp.friction = c.settings.friction;
-  const bool t0 = role(a, b, rp, spring, out, out + 6, loss);
-  const bool t1 = role(b, a, rp, spring + 3, out + 6, out, loss);
-  return t0 || t1;
+  const long start = blk * kPairBlock;
+  const long end = std::min(static_cast<long>(c.pairs.size()), start + kPairBlock);
+  bool touched[kPairBlock] = {};
+  for (long q = start; q < end; ++q) {
+    const Tri& a = tris[rows[2 * q]];
+    const Tri& b = tris[rows[2 * q + 1]];
+    double* out = &c.pair_force[12 * q];
+    double* spring = &c.friction[6 * q];
+    for (int k = 0; k < 12; ++k) out[k] = 0.0;
+    // Most pairs lie within the buffer without touching: their boxes are
+    // disjoint, and the roles are skipped (springs reset, as apart).
+    if (a.x_hi < b.x_lo || b.x_hi < a.x_lo || a.y_hi < b.y_lo || b.y_hi < a.y_lo) {
+      for (int k = 0; k < 6; ++k) spring[k] = 0.0;
+      continue;
+    }
+    const double mu =
+        std::min(c.mu[d.tris.material[c.pairs[q][0]]], c.mu[d.tris.material[c.pairs[q][1]]]);
+    // A target of no positive area (inverted) receives no role.
+    if (b.two_a > 0.0) {
+      load_role(a, b, mu, spring, q, 0, br);
+      if (br.n == kRoleBatch) flush_roles(c, rp, br, touched, start, loss);
+    }
+    if (a.two_a > 0.0) {
+      load_role(b, a, mu, spring + 3, q, 1, br);
+      if (br.n == kRoleBatch) flush_roles(c, rp, br, touched, start, loss);
+    }
+  }
+  if (br.n > 0) flush_roles(c, rp, br, touched, start, loss);
+  long n_touching = 0;
+  for (long q = start; q < end; ++q) n_touching += touched[q - start];
+  return n_touching;
 }
 
 /// Largest squared displacement of a watched node since the detection.
@@ -251,7 +197,8 @@ double watched_drift2(const EngineData& d) {
   // Serial below a few thousand nodes (an intact body's outline): a
   // parallel region would cost more than the loop.
 #pragma omp parallel for schedule(static) num_threads(thread_count(d.threads)) \
-    reduction(max : worst) if (n > 16384)
+    reduction(max                                                              \
+              : worst) if (n > 16384)
   for (long i = 0; i < n; ++i) {
     const int node = c.watch_nodes[i];
     const double dx = d.nodes.pos[2 * node] - c.detect_pos[2 * node];
@@ -313,13 +260,11 @@ void contact_forces(EngineData& d) {
       for (int k = c.gather_start[g]; k < c.gather_start[g + 1]; ++k)
         rows[c.gather_entry[k]] = static_cast<int>(g);
     }
+    BlockRoles roles{};  // per thread, on its stack (zeroed: padding lanes are read)
 #pragma omp for schedule(dynamic, 1) reduction(+ : touching)
     for (long b = 0; b < n_blocks; ++b) {
       PairDissipation loss;
-      const long end = std::min(np, (b + 1) * kPairBlock);
-      for (long q = b * kPairBlock; q < end; ++q)
-        touching += pair_forces(d, q, tris[rows[2 * q]], tris[rows[2 * q + 1]],
-                                &c.friction[6 * q], &c.pair_force[12 * q], loss);
+      touching += block_forces(d, b, tris, rows, roles, loss);
       partial[2 * b] = loss.friction;
       partial[2 * b + 1] = loss.damping;
     }

@@ -1,0 +1,124 @@
+// run_roles: the narrow phase's per-edge arithmetic over a batch of roles
+// (contact_roles.hpp; the mathematics is in contact_force.cpp's header, the
+// kernel in contact_roles_kernel.hpp). This file instantiates the kernel
+// for each instruction set and picks the widest the processor has.
+#include "contact_roles.hpp"
+
+#include <cstdlib>
+#include <cstring>
+
+#define ROLE_INLINE inline __attribute__((always_inline))
+
+namespace rockfdem::fdem::detail {
+namespace {
+
+/// W doubles in one register (GCC vector extension): arithmetic and
+/// comparisons act lane by lane; `m ? a : b` selects by the mask m.
+typedef double V2 __attribute__((vector_size(16)));
+typedef double V4 __attribute__((vector_size(32)));
+typedef double V8 __attribute__((vector_size(64)));
+
+namespace baseline {
+#include "contact_roles_kernel.hpp"
+}  // namespace baseline
+
+#if defined(__x86_64__)
+#pragma GCC push_options
+#pragma GCC target("avx2")
+namespace avx2 {
+#include "contact_roles_kernel.hpp"
+}  // namespace avx2
+#pragma GCC pop_options
+
+#pragma GCC push_options
+#pragma GCC target("avx512f,avx512dq")
+namespace avx512 {
+#include "contact_roles_kernel.hpp"
+}  // namespace avx512
+#pragma GCC pop_options
+#endif
+
+void roles_baseline(RoleBatch& b, int n, const RoleParams& rp) {
+  baseline::roles_body<V2>(b, n, rp);
+}
+
+#if defined(__x86_64__)
+__attribute__((target("avx512f,avx512dq"))) void roles_avx512(RoleBatch& b, int n,
+                                                              const RoleParams& rp) {
+  avx512::roles_body<V8>(b, n, rp);
+}
+__attribute__((target("avx2"))) void roles_avx2(RoleBatch& b, int n, const RoleParams& rp) {
+  avx2::roles_body<V4>(b, n, rp);
+}
+bool has_avx512() {
+  return __builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512dq");
+}
+bool has_avx2() { return __builtin_cpu_supports("avx2"); }
+#else  // other processors: the baseline build of the loop (their own vector width)
+void roles_avx512(RoleBatch& b, int n, const RoleParams& rp) { roles_baseline(b, n, rp); }
+void roles_avx2(RoleBatch& b, int n, const RoleParams& rp) { roles_baseline(b, n, rp); }
+bool has_avx512() { return false; }
+bool has_avx2() { return false; }
+#endif
+
+/// The widest set the processor has, or a narrower one that the
+/// environment variable ROCKFDEM_CONTACT_ISA (sse2, avx2) asks for: the
+/// results are the same bits, only the speed differs (bench_contact
+/// measures each). Read once.
+RoleIsa resolve_isa() {
+  RoleIsa isa = has_avx512() ? RoleIsa::kAvx512 : has_avx2() ? RoleIsa::kAvx2 : RoleIsa::kBaseline;
+  if (const char* ask = std::getenv("ROCKFDEM_CONTACT_ISA")) {
+    if (std::strcmp(ask, "sse2") == 0)
+      isa = RoleIsa::kBaseline;
+    else if (std::strcmp(ask, "avx2") == 0 && isa == RoleIsa::kAvx512)
+      isa = RoleIsa::kAvx2;
+  }
+  return isa;
+}
+
+RoleIsa best_isa() {
+  static const RoleIsa best = resolve_isa();
+  return best;
+}
+
+}  // namespace
+
+bool role_isa_available(RoleIsa isa) {
+  switch (isa) {
+    case RoleIsa::kAvx512:
+      return has_avx512();
+    case RoleIsa::kAvx2:
+      return has_avx2();
+    default:
+      return true;
+  }
+}
+
+void run_roles(RoleBatch& b, int n, const RoleParams& rp, RoleIsa isa) {
+  switch (isa == RoleIsa::kBest ? best_isa() : isa) {
+    case RoleIsa::kAvx512:
+      roles_avx512(b, n, rp);
+      break;
+    case RoleIsa::kAvx2:
+      roles_avx2(b, n, rp);
+      break;
+    default:
+      roles_baseline(b, n, rp);
+      break;
+  }
+}
+
+void run_roles(RoleBatch& b, int n, const RoleParams& rp) { run_roles(b, n, rp, RoleIsa::kBest); }
+
+const char* role_isa_name() {
+  switch (best_isa()) {
+    case RoleIsa::kAvx512:
+      return "avx512";
+    case RoleIsa::kAvx2:
+      return "avx2";
+    default:
+      return "sse2";
+  }
+}
+
+}  // namespace rockfdem::fdem::detail
