@@ -80,75 +80,73 @@ struct PairDissipation {
   double friction = 0, damping = 0;
 };
 
-/// One block's roles on their way through a RoleBatch: lane r holds role
-/// side[r] of pair pair[r] (0: A the contactor, 1: B).
-struct BlockRoles {
-  RoleBatch batch;
-  int pair[kRoleBatch], side[kRoleBatch];
+/// One block's pairs on their way through a PairBatch: lane r holds pair
+/// pair[r].
+struct BlockPairs {
+  PairBatch batch;
+  int pair[kPairBatch];
   int n = 0;
 };
 
-/// Copies the role (contactor c, target t) into the next lane.
-void load_role(const Tri& c, const Tri& t, double mu, const double* spring, long q, int side,
-               BlockRoles& br) {
-  RoleBatch& b = br.batch;
-  const int r = br.n++;
+/// Copies packed triangle c into lane r of `lanes`.
+void load_triangle(const Tri& c, TriLanes& lanes, int r) {
   for (int k = 0; k < 3; ++k) {
-    b.cx[k][r] = c.x[k];
-    b.cy[k][r] = c.y[k];
-    b.cvx[k][r] = c.vx[k];
-    b.cvy[k][r] = c.vy[k];
-    b.cm[k][r] = c.m[k];
-    b.len[k][r] = c.len[k];
-    b.ex[k][r] = c.tx[k];
-    b.ey[k][r] = c.ty[k];
-    b.tx[k][r] = t.x[k];
-    b.ty[k][r] = t.y[k];
-    b.tvx[k][r] = t.vx[k];
-    b.tvy[k][r] = t.vy[k];
-    b.gx[k][r] = t.gx[k];
-    b.gy[k][r] = t.gy[k];
-    b.spring[k][r] = spring[k];
+    lanes.x[k][r] = c.x[k];
+    lanes.y[k][r] = c.y[k];
+    lanes.vx[k][r] = c.vx[k];
+    lanes.vy[k][r] = c.vy[k];
+    lanes.m[k][r] = c.m[k];
+    lanes.len[k][r] = c.len[k];
+    lanes.ex[k][r] = c.tx[k];
+    lanes.ey[k][r] = c.ty[k];
+    lanes.gx[k][r] = c.gx[k];
+    lanes.gy[k][r] = c.gy[k];
   }
-  b.h[r] = t.h;
-  b.mu[r] = mu;
-  br.pair[r] = static_cast<int>(q);
-  br.side[r] = side;
+  lanes.h[r] = c.h;
+  lanes.two_a[r] = c.two_a;
 }
 
-/// Runs the batch, then adds each lane's edges to its pair's buffer in
-/// lane and edge order (the order of a scalar loop over pairs, roles and
-/// edges, so the sums are the same bits), and writes its springs back.
-void flush_roles(ContactData& c, const RoleParams& rp, BlockRoles& br, bool* touched,
-                 long block_start, PairDissipation& loss) {
-  RoleBatch& b = br.batch;
-  run_roles(b, br.n, rp);
-  for (int r = 0; r < br.n; ++r) {
-    const long q = br.pair[r];
-    const int side = br.side[r];
-    double* fc = &c.pair_force[12 * q + 6 * side];
-    double* ft = &c.pair_force[12 * q + 6 * (1 - side)];
-    double* spring = &c.friction[6 * q + 3 * side];
-    for (int k = 0; k < 3; ++k) {
-      spring[k] = b.spring[k][r];
-      if (b.hit[k][r] == 0.0) continue;
-      const int a = k, e = k == 2 ? 0 : k + 1;
-      fc[2 * a] += b.fc[k][0][r];
-      fc[2 * a + 1] += b.fc[k][1][r];
-      fc[2 * e] += b.fc[k][2][r];
-      fc[2 * e + 1] += b.fc[k][3][r];
-      for (int i = 0; i < 6; ++i) ft[i] += b.ft[k][i][r];
-      loss.damping += b.loss_damping[k][r];
-      loss.friction += b.loss_friction[k][r];
-      touched[q - block_start] = true;
+/// Copies pair q (triangles a, b, friction mu, springs) into the next lane.
+void load_pair(const Tri& a, const Tri& b, double mu, const double* spring, long q,
+               BlockPairs& bp) {
+  PairBatch& pb = bp.batch;
+  const int r = bp.n++;
+  load_triangle(a, pb.tri[0], r);
+  load_triangle(b, pb.tri[1], r);
+  pb.mu[r] = mu;
+  for (int j = 0; j < 6; ++j) pb.spring[j][r] = spring[j];
+  bp.pair[r] = static_cast<int>(q);
+}
+
+/// Runs the batch, then copies each lane's forces and springs to its pair
+/// and adds its edges' dissipation in pair and edge order (the scalar
+/// loop's). Returns the number of touching pairs.
+long flush_pairs(ContactData& c, const RoleParams& rp, BlockPairs& bp, PairDissipation& loss) {
+  PairBatch& b = bp.batch;
+  run_roles(b, bp.n, rp);
+  long n_touching = 0;
+  for (int r = 0; r < bp.n; ++r) {
+    const long q = bp.pair[r];
+    double* out = &c.pair_force[12 * q];
+    double* spring = &c.friction[6 * q];
+    for (int i = 0; i < 12; ++i) out[i] = b.force[i][r];
+    for (int j = 0; j < 6; ++j) spring[j] = b.spring[j][r];
+    // Most edges dissipate nothing: adding their zeros to a sum that is
+    // never -0 would change no bit, so they are skipped.
+    for (int j = 0; j < 6; ++j) {
+      const double friction = b.loss_friction[j][r], damping = b.loss_damping[j][r];
+      if (friction != 0.0) loss.friction += friction;
+      if (damping != 0.0) loss.damping += damping;
     }
+    n_touching += b.touching[r] != 0.0;
   }
-  br.n = 0;
+  bp.n = 0;
+  return n_touching;
 }
 
 /// Block `blk` of the pairs: each pair's 12 corner forces go to its own
 /// buffer, its springs are updated; returns the number of touching pairs.
-long block_forces(EngineData& d, long blk, const Tri* tris, const int* rows, BlockRoles& br,
+long block_forces(EngineData& d, long blk, const Tri* tris, const int* rows, BlockPairs& bp,
                   PairDissipation& loss) {
   ContactData& c = d.contact;
   RoleParams rp;
@@ -158,34 +156,25 @@ long block_forces(EngineData& d, long blk, const Tri* tris, const int* rows, Blo
   rp.friction = c.settings.friction;
   const long start = blk * kPairBlock;
   const long end = std::min(static_cast<long>(c.pairs.size()), start + kPairBlock);
-  bool touched[kPairBlock] = {};
+  long n_touching = 0;
   for (long q = start; q < end; ++q) {
     const Tri& a = tris[rows[2 * q]];
     const Tri& b = tris[rows[2 * q + 1]];
-    double* out = &c.pair_force[12 * q];
-    double* spring = &c.friction[6 * q];
-    for (int k = 0; k < 12; ++k) out[k] = 0.0;
     // Most pairs lie within the buffer without touching: their boxes are
-    // disjoint, and the roles are skipped (springs reset, as apart).
+    // disjoint, and the roles are skipped (no force, springs reset).
     if (a.x_hi < b.x_lo || b.x_hi < a.x_lo || a.y_hi < b.y_lo || b.y_hi < a.y_lo) {
+      double* out = &c.pair_force[12 * q];
+      double* spring = &c.friction[6 * q];
+      for (int k = 0; k < 12; ++k) out[k] = 0.0;
       for (int k = 0; k < 6; ++k) spring[k] = 0.0;
       continue;
     }
     const double mu =
         std::min(c.mu[d.tris.material[c.pairs[q][0]]], c.mu[d.tris.material[c.pairs[q][1]]]);
-    // A target of no positive area (inverted) receives no role.
-    if (b.two_a > 0.0) {
-      load_role(a, b, mu, spring, q, 0, br);
-      if (br.n == kRoleBatch) flush_roles(c, rp, br, touched, start, loss);
-    }
-    if (a.two_a > 0.0) {
-      load_role(b, a, mu, spring + 3, q, 1, br);
-      if (br.n == kRoleBatch) flush_roles(c, rp, br, touched, start, loss);
-    }
+    load_pair(a, b, mu, &c.friction[6 * q], q, bp);
+    if (bp.n == kPairBatch) n_touching += flush_pairs(c, rp, bp, loss);
   }
-  if (br.n > 0) flush_roles(c, rp, br, touched, start, loss);
-  long n_touching = 0;
-  for (long q = start; q < end; ++q) n_touching += touched[q - start];
+  if (bp.n > 0) n_touching += flush_pairs(c, rp, bp, loss);
   return n_touching;
 }
 
@@ -260,11 +249,11 @@ void contact_forces(EngineData& d) {
       for (int k = c.gather_start[g]; k < c.gather_start[g + 1]; ++k)
         rows[c.gather_entry[k]] = static_cast<int>(g);
     }
-    BlockRoles roles{};  // per thread, on its stack (zeroed: padding lanes are read)
+    BlockPairs batch{};  // per thread, on its stack (zeroed: padding lanes are read)
 #pragma omp for schedule(dynamic, 1) reduction(+ : touching)
     for (long b = 0; b < n_blocks; ++b) {
       PairDissipation loss;
-      touching += block_forces(d, b, tris, rows, roles, loss);
+      touching += block_forces(d, b, tris, rows, batch, loss);
       partial[2 * b] = loss.friction;
       partial[2 * b + 1] = loss.damping;
     }

@@ -38,16 +38,16 @@ namespace avx512 {
 #pragma GCC pop_options
 #endif
 
-void roles_baseline(RoleBatch& b, int n, const RoleParams& rp) {
+void roles_baseline(PairBatch& b, int n, const RoleParams& rp) {
   baseline::roles_body<V2>(b, n, rp);
 }
 
 #if defined(__x86_64__)
-__attribute__((target("avx512f,avx512dq"))) void roles_avx512(RoleBatch& b, int n,
+__attribute__((target("avx512f,avx512dq"))) void roles_avx512(PairBatch& b, int n,
                                                               const RoleParams& rp) {
   avx512::roles_body<V8>(b, n, rp);
 }
-__attribute__((target("avx2"))) void roles_avx2(RoleBatch& b, int n, const RoleParams& rp) {
+__attribute__((target("avx2"))) void roles_avx2(PairBatch& b, int n, const RoleParams& rp) {
   avx2::roles_body<V4>(b, n, rp);
 }
 bool has_avx512() {
@@ -55,8 +55,8 @@ bool has_avx512() {
 }
 bool has_avx2() { return __builtin_cpu_supports("avx2"); }
 #else  // other processors: the baseline build of the loop (their own vector width)
-void roles_avx512(RoleBatch& b, int n, const RoleParams& rp) { roles_baseline(b, n, rp); }
-void roles_avx2(RoleBatch& b, int n, const RoleParams& rp) { roles_baseline(b, n, rp); }
+void roles_avx512(PairBatch& b, int n, const RoleParams& rp) { roles_baseline(b, n, rp); }
+void roles_avx2(PairBatch& b, int n, const RoleParams& rp) { roles_baseline(b, n, rp); }
 bool has_avx512() { return false; }
 bool has_avx2() { return false; }
 #endif
@@ -94,7 +94,7 @@ bool role_isa_available(RoleIsa isa) {
   }
 }
 
-void run_roles(RoleBatch& b, int n, const RoleParams& rp, RoleIsa isa) {
+void run_roles(PairBatch& b, int n, const RoleParams& rp, RoleIsa isa) {
   switch (isa == RoleIsa::kBest ? best_isa() : isa) {
     case RoleIsa::kAvx512:
       roles_avx512(b, n, rp);
@@ -108,7 +108,7 @@ void run_roles(RoleBatch& b, int n, const RoleParams& rp, RoleIsa isa) {
   }
 }
 
-void run_roles(RoleBatch& b, int n, const RoleParams& rp) { run_roles(b, n, rp, RoleIsa::kBest); }
+void run_roles(PairBatch& b, int n, const RoleParams& rp) { run_roles(b, n, rp, RoleIsa::kBest); }
 
 const char* role_isa_name() {
   switch (best_isa()) {

@@ -2,14 +2,13 @@
 // fdem/).
 //
 // A role is one contactor triangle's three edges against one target
-// triangle (contact_force.cpp explains the mathematics). The pair loop
-// copies the roles of the pairs whose boxes overlap into a RoleBatch, a
-// structure of arrays with one lane per role; run_roles computes every
-// lane's three edges without a data-dependent branch (clipping, the
-// breakpoints of the potential, the exact integrals, friction and damping
-// as selects), so the compiler maps the lanes onto the vector unit; the
-// pair loop then adds each edge's contributions to the pair's buffer in
-// the same order as a scalar loop would.
+// triangle (contact_force.cpp explains the mathematics); a pair has two.
+// The pair loop copies the pairs whose boxes overlap into a PairBatch, a
+// structure of arrays with one lane per pair; run_roles computes both roles
+// of every lane without a data-dependent branch (clipping, the breakpoints
+// of the potential, the exact integrals, friction and damping as selects),
+// so that the lanes map onto the vector unit, and sums each pair's forces
+// in the order a scalar loop over its roles and edges would.
 //
 // Same bits on every instruction set: the kernel is compiled once for
 // AVX-512, AVX2 and the x86-64 baseline (SSE2) and chosen at run time, and
@@ -20,39 +19,49 @@
 
 namespace rockfdem::fdem::detail {
 
-/// Roles per batch: the batch's arrays (about 23 kB) stay in the L1 cache.
-constexpr int kRoleBatch = 32;
+/// Pairs per batch: the batch's arrays (about 25 kB) stay in the L1 cache.
+constexpr int kPairBatch = 32;
 
-/// The settings every role of a step shares.
+/// The settings every pair of a step shares.
 struct RoleParams {
   double p = 0, dt = 0, damping = 0;  ///< penalty, step, contact damping ratio
   bool friction = false;
 };
 
-/// One batch of roles: inputs (contactor C, target T), then outputs per
-/// contactor edge k (corners k -> k + 1). [i][r]: component i of lane r.
-struct RoleBatch {
-  // Contactor corners and edges.
-  double cx[3][kRoleBatch], cy[3][kRoleBatch], cvx[3][kRoleBatch], cvy[3][kRoleBatch];
-  double cm[3][kRoleBatch];                                         ///< corner masses (damping)
-  double len[3][kRoleBatch], ex[3][kRoleBatch], ey[3][kRoleBatch];  ///< length, unit tangent
-  // Target corners, gradients of its barycentric coordinates, smallest altitude.
-  double tx[3][kRoleBatch], ty[3][kRoleBatch], tvx[3][kRoleBatch], tvy[3][kRoleBatch];
-  double gx[3][kRoleBatch], gy[3][kRoleBatch], h[kRoleBatch];
-  double mu[kRoleBatch];  ///< friction coefficient of the pair
-  /// Friction spring per edge: read, and written where the edge touches.
-  double spring[3][kRoleBatch];
-  // Outputs per edge k. hit: 1 where the edge overlaps the target (then the
-  // rest is meaningful), else 0.
-  double hit[3][kRoleBatch];
-  double fc[3][4][kRoleBatch];  ///< contactor corners k, k + 1: x, y
-  double ft[3][6][kRoleBatch];  ///< target corners 0, 1, 2: x, y
-  double loss_friction[3][kRoleBatch], loss_damping[3][kRoleBatch];
+/// One triangle of every lane's pair, as contact_force.cpp packs it.
+/// [i][r]: component i (corner or edge; edge k runs from corner k to
+/// k + 1) of lane r.
+struct TriLanes {
+  double x[3][kPairBatch], y[3][kPairBatch], vx[3][kPairBatch], vy[3][kPairBatch];
+  double m[3][kPairBatch];                                          ///< corner masses (damping)
+  double len[3][kPairBatch], ex[3][kPairBatch], ey[3][kPairBatch];  ///< length, unit tangent
+  double gx[3][kPairBatch], gy[3][kPairBatch];  ///< gradients of the barycentric coordinates
+  double h[kPairBatch];                         ///< smallest altitude
+  double two_a[kPairBatch];                     ///< twice the area (> 0: may be a target)
 };
 
-/// Lanes 0 .. n - 1 of `b`: every edge's overlap, forces, spring and
-/// dissipation. Targets must have a positive area (callers skip the others).
-void run_roles(RoleBatch& b, int n, const RoleParams& rp);
+/// One batch of pairs (A, B): role 0 is A's edges against B, role 1 B's
+/// against A. Row j = 3 role + k of the per-edge arrays is edge k of role
+/// `role`.
+struct PairBatch {
+  TriLanes tri[2];        ///< A, B
+  double mu[kPairBatch];  ///< friction coefficient of the pair
+  /// Friction springs: read, and written as the scalar loop would (set where
+  /// an edge touches, reset where it does not, kept where the role is
+  /// skipped because its target has no positive area).
+  double spring[6][kPairBatch];
+  /// Outputs: the pair's 12 corner forces (A's corners x, y, then B's),
+  /// summed in the scalar loop's order (role 0's edges, then role 1's), the
+  /// energy each edge dissipated (0 where it does not touch), and 1 where
+  /// some edge touches, else 0.
+  double force[12][kPairBatch];
+  double loss_friction[6][kPairBatch], loss_damping[6][kPairBatch];
+  double touching[kPairBatch];
+};
+
+/// Lanes 0 .. n - 1 of `b`: both roles of every pair, their forces,
+/// springs and dissipation.
+void run_roles(PairBatch& b, int n, const RoleParams& rp);
 
 /// Instruction sets run_roles may use; kBest is the widest this processor
 /// has. The others exist so that tests can compare them bit by bit.
@@ -62,7 +71,7 @@ enum class RoleIsa { kBaseline, kAvx2, kAvx512, kBest };
 bool role_isa_available(RoleIsa isa);
 
 /// run_roles on the given instruction set (must be available).
-void run_roles(RoleBatch& b, int n, const RoleParams& rp, RoleIsa isa);
+void run_roles(PairBatch& b, int n, const RoleParams& rp, RoleIsa isa);
 
 /// Name of the instruction set kBest resolves to ("avx512", "avx2", "sse2").
 const char* role_isa_name();

@@ -19,7 +19,7 @@
 // define them ((b < a) ? b : a, ...), so a lane gives exactly the bits of
 // the scalar formulas.
 //
-// Expects: RoleBatch, RoleParams (contact_roles.hpp), ROLE_INLINE, the vector
+// Expects: PairBatch, TriLanes, RoleParams (contact_roles.hpp), ROLE_INLINE, the vector
 // types V2, V4, V8.
 
 template <class V>
@@ -115,11 +115,19 @@ ROLE_INLINE void segment(V x0, V x1, V pa, V pb, V& i0, V& i1) {
   i1 += w / 6.0 * (pa * (2.0 * x0 + x1) + pb * (x0 + 2.0 * x1));
 }
 
-/// Edge k (corners a -> e) of the lanes from r: la, lb are the target's
-/// coordinates of corners a and e.
+/// A comparison's lane mask.
+template <class V>
+using Mask = decltype(V{} < V{});
+
+/// Edge k (corners a -> e) of contactor c against target t in the lanes
+/// from r: la, lb are the target's coordinates of corners a and e; `valid`
+/// marks lanes whose target has a positive area; row is the edge's row of
+/// the per-edge arrays. Adds the edge's forces to fc (contactor) and ft
+/// (target) where it touches, and returns where it does.
 template <class V, bool Damping, bool Friction>
-ROLE_INLINE void edge_lanes(RoleBatch& b, int r, int k, int a, int e, Coords<V> la, Coords<V> lb,
-                            const RoleParams& rp) {
+ROLE_INLINE Mask<V> edge_lanes(PairBatch& b, int r, const TriLanes& c, const TriLanes& t, int k,
+                               int a, int e, Coords<V> la, Coords<V> lb, Mask<V> valid, int row,
+                               V* fc, V* ft, const RoleParams& rp) {
   const V zero{};
   // Clipping.
   V lo = zero, hi = all<V>(1.0);
@@ -142,33 +150,36 @@ ROLE_INLINE void edge_lanes(RoleBatch& b, int r, int k, int a, int e, Coords<V> 
   segment(s1, s2, p1, p2, i0, i1);
   segment(s2, hi, p2, p_hi, i0, i1);
   const V inside = hi - lo;
+  // A hit: a valid target, a non-empty inside part, a positive integral.
+  const Mask<V> hit = valid & (hi > lo) & (i0 > zero);
   // Forces: the potential's at A and B, friction and damping at the centre.
-  const V len = load<V>(&b.len[k][r]), tx = load<V>(&b.ex[k][r]), ty = load<V>(&b.ey[k][r]);
+  const V len = load<V>(&c.len[k][r]), tx = load<V>(&c.ex[k][r]), ty = load<V>(&c.ey[k][r]);
   const V nx = ty, ny = -tx;  // outward normal
   const V s = rp.p * len;
   const V f_ab = s * i0, f_b = s * i1, f_a = f_ab - f_b;
   const V xi = i1 / i0;
   const Coords<V> lc = along(la, lb, xi);
   V vtx = zero, vty = zero;
-  vtx += lc.l0 * load<V>(&b.tvx[0][r]);
-  vty += lc.l0 * load<V>(&b.tvy[0][r]);
-  vtx += lc.l1 * load<V>(&b.tvx[1][r]);
-  vty += lc.l1 * load<V>(&b.tvy[1][r]);
-  vtx += lc.l2 * load<V>(&b.tvx[2][r]);
-  vty += lc.l2 * load<V>(&b.tvy[2][r]);
-  const V vrx = (1 - xi) * load<V>(&b.cvx[a][r]) + xi * load<V>(&b.cvx[e][r]) - vtx;
-  const V vry = (1 - xi) * load<V>(&b.cvy[a][r]) + xi * load<V>(&b.cvy[e][r]) - vty;
-  const V k_n = 3.0 * s * inside / load<V>(&b.h[r]);
+  vtx += lc.l0 * load<V>(&t.vx[0][r]);
+  vty += lc.l0 * load<V>(&t.vy[0][r]);
+  vtx += lc.l1 * load<V>(&t.vx[1][r]);
+  vty += lc.l1 * load<V>(&t.vy[1][r]);
+  vtx += lc.l2 * load<V>(&t.vx[2][r]);
+  vty += lc.l2 * load<V>(&t.vy[2][r]);
+  const V vrx = (1 - xi) * load<V>(&c.vx[a][r]) + xi * load<V>(&c.vx[e][r]) - vtx;
+  const V vry = (1 - xi) * load<V>(&c.vy[a][r]) + xi * load<V>(&c.vy[e][r]) - vty;
+  const V k_n = 3.0 * s * inside / load<V>(&t.h[r]);
   V f_d = zero, loss_d = zero;  // normal damping, > 0 while approaching
   if constexpr (Damping) {
-    const V m = min_of(load<V>(&b.cm[a][r]), load<V>(&b.cm[e][r]));
+    const V m = min_of(load<V>(&c.m[a][r]), load<V>(&c.m[e][r]));
     const V v_n = vrx * nx + vry * ny;
     V root = k_n * m;
     for (int i = 0; i < kWidth<V>; ++i) root[i] = __builtin_sqrt(root[i]);
     f_d = max_of(rp.damping * 2.0 * root * v_n, -f_ab);
     loss_d = f_d * v_n * rp.dt;
   }
-  V f_t = zero, loss_f = zero, spring = load<V>(&b.spring[k][r]);
+  const V spring_in = load<V>(&b.spring[row][r]);
+  V f_t = zero, loss_f = zero, spring = spring_in;
   if constexpr (Friction) {
     const V trial = spring - k_n * (vrx * tx + vry * ty) * rp.dt;
     const V cap = load<V>(&b.mu[r]) * (f_ab + f_d);
@@ -177,55 +188,76 @@ ROLE_INLINE void edge_lanes(RoleBatch& b, int r, int k, int a, int e, Coords<V> 
     // Clipped: the slip beyond the spring's is plastic (return mapping).
     loss_f = (f_t != trial) ? f_t * (trial - f_t) / k_n : zero;
   }
+  // Contactor: potential force at A, B plus the point force (F_t t - F_d n)
+  // at xi. Target: the opposite of their sum at the same point, shared by
+  // its barycentric coordinates there.
   const V px = f_t * tx - f_d * nx, py = f_t * ty - f_d * ny;
-  store(&b.fc[k][0][r], -f_a * nx + (1 - xi) * px);
-  store(&b.fc[k][1][r], -f_a * ny + (1 - xi) * py);
-  store(&b.fc[k][2][r], -f_b * nx + xi * px);
-  store(&b.fc[k][3][r], -f_b * ny + xi * py);
+  fc[2 * a] = hit ? fc[2 * a] + (-f_a * nx + (1 - xi) * px) : fc[2 * a];
+  fc[2 * a + 1] = hit ? fc[2 * a + 1] + (-f_a * ny + (1 - xi) * py) : fc[2 * a + 1];
+  fc[2 * e] = hit ? fc[2 * e] + (-f_b * nx + xi * px) : fc[2 * e];
+  fc[2 * e + 1] = hit ? fc[2 * e + 1] + (-f_b * ny + xi * py) : fc[2 * e + 1];
   const V gx = f_ab * nx - px, gy = f_ab * ny - py;
-  store(&b.ft[k][0][r], lc.l0 * gx);
-  store(&b.ft[k][1][r], lc.l0 * gy);
-  store(&b.ft[k][2][r], lc.l1 * gx);
-  store(&b.ft[k][3][r], lc.l1 * gy);
-  store(&b.ft[k][4][r], lc.l2 * gx);
-  store(&b.ft[k][5][r], lc.l2 * gy);
-  // A hit: a non-empty inside part with a positive integral.
-  const auto hit = (hi > lo) & (i0 > zero);
-  store(&b.hit[k][r], hit ? all<V>(1.0) : zero);
-  store(&b.spring[k][r], hit ? spring : zero);
-  store(&b.loss_friction[k][r], loss_f);
-  store(&b.loss_damping[k][r], loss_d);
+  ft[0] = hit ? ft[0] + lc.l0 * gx : ft[0];
+  ft[1] = hit ? ft[1] + lc.l0 * gy : ft[1];
+  ft[2] = hit ? ft[2] + lc.l1 * gx : ft[2];
+  ft[3] = hit ? ft[3] + lc.l1 * gy : ft[3];
+  ft[4] = hit ? ft[4] + lc.l2 * gx : ft[4];
+  ft[5] = hit ? ft[5] + lc.l2 * gy : ft[5];
+  // Springs: set where touching, reset where not, kept for a skipped role.
+  store(&b.spring[row][r], hit ? spring : (valid ? zero : spring_in));
+  store(&b.loss_friction[row][r], hit ? loss_f : zero);
+  store(&b.loss_damping[row][r], hit ? loss_d : zero);
+  return hit;
 }
 
-/// Contactor corner v of the lanes from r in the target's barycentric
-/// coordinates: lambda_i vanishes at target corner i + 1 and grows with its
+/// Corner v of contactor c in target t's barycentric coordinates (lanes
+/// from r): lambda_i vanishes at target corner i + 1 and grows with its
 /// gradient.
 template <class V>
-ROLE_INLINE Coords<V> corner_coords(const RoleBatch& b, int r, int v) {
-  const V px = load<V>(&b.cx[v][r]), py = load<V>(&b.cy[v][r]);
+ROLE_INLINE Coords<V> corner_coords(const TriLanes& c, const TriLanes& t, int r, int v) {
+  const V px = load<V>(&c.x[v][r]), py = load<V>(&c.y[v][r]);
   auto l = [&](int i, int j) {
-    return load<V>(&b.gx[i][r]) * (px - load<V>(&b.tx[j][r])) +
-           load<V>(&b.gy[i][r]) * (py - load<V>(&b.ty[j][r]));
+    return load<V>(&t.gx[i][r]) * (px - load<V>(&t.x[j][r])) +
+           load<V>(&t.gy[i][r]) * (py - load<V>(&t.y[j][r]));
   };
   return {l(0, 1), l(1, 2), l(2, 0)};
+}
+
+/// Contactor c's three edges against target t (role `role`); returns where
+/// some edge touches.
+template <class V, bool Damping, bool Friction>
+ROLE_INLINE Mask<V> role_lanes(PairBatch& b, int r, const TriLanes& c, const TriLanes& t, int role,
+                               V* fc, V* ft, const RoleParams& rp) {
+  const Mask<V> valid = load<V>(&t.two_a[r]) > V{};
+  const Coords<V> l0 = corner_coords<V>(c, t, r, 0), l1 = corner_coords<V>(c, t, r, 1),
+                  l2 = corner_coords<V>(c, t, r, 2);
+  const int row = 3 * role;
+  const Mask<V> h0 =
+      edge_lanes<V, Damping, Friction>(b, r, c, t, 0, 0, 1, l0, l1, valid, row, fc, ft, rp);
+  const Mask<V> h1 =
+      edge_lanes<V, Damping, Friction>(b, r, c, t, 1, 1, 2, l1, l2, valid, row + 1, fc, ft, rp);
+  const Mask<V> h2 =
+      edge_lanes<V, Damping, Friction>(b, r, c, t, 2, 2, 0, l2, l0, valid, row + 2, fc, ft, rp);
+  return h0 | h1 | h2;
 }
 
 /// The batch, W lanes at a time (lanes past n compute on whatever the batch
 /// holds there and are never read).
 template <class V, bool Damping, bool Friction>
-ROLE_INLINE void roles_loop(RoleBatch& b, int n, const RoleParams& rp) {
+ROLE_INLINE void roles_loop(PairBatch& b, int n, const RoleParams& rp) {
   for (int r = 0; r < n; r += kWidth<V>) {
-    const Coords<V> l0 = corner_coords<V>(b, r, 0), l1 = corner_coords<V>(b, r, 1),
-                    l2 = corner_coords<V>(b, r, 2);
-    edge_lanes<V, Damping, Friction>(b, r, 0, 0, 1, l0, l1, rp);
-    edge_lanes<V, Damping, Friction>(b, r, 1, 1, 2, l1, l2, rp);
-    edge_lanes<V, Damping, Friction>(b, r, 2, 2, 0, l2, l0, rp);
+    V f[12];
+    for (int i = 0; i < 12; ++i) f[i] = V{};
+    const Mask<V> t0 = role_lanes<V, Damping, Friction>(b, r, b.tri[0], b.tri[1], 0, f, f + 6, rp);
+    const Mask<V> t1 = role_lanes<V, Damping, Friction>(b, r, b.tri[1], b.tri[0], 1, f + 6, f, rp);
+    for (int i = 0; i < 12; ++i) store(&b.force[i][r], f[i]);
+    store(&b.touching[r], (t0 | t1) ? all<V>(1.0) : V{});
   }
 }
 
 /// The loop for the step's settings (no branch on them inside it).
 template <class V>
-ROLE_INLINE void roles_body(RoleBatch& b, int n, const RoleParams& rp) {
+ROLE_INLINE void roles_body(PairBatch& b, int n, const RoleParams& rp) {
   const bool damping = rp.damping > 0.0;
   if (damping && rp.friction)
     roles_loop<V, true, true>(b, n, rp);
