@@ -119,6 +119,14 @@ ROLE_INLINE void segment(V x0, V x1, V pa, V pb, V& i0, V& i1) {
 template <class V>
 using Mask = decltype(V{} < V{});
 
+/// Whether any lane of m is set.
+template <class M>
+ROLE_INLINE bool any_lane(M m) {
+  long set = 0;
+  for (int i = 0; i < static_cast<int>(sizeof(M) / sizeof(m[0])); ++i) set |= m[i];
+  return set != 0;
+}
+
 /// Edge k (corners a -> e) of contactor c against target t in the lanes
 /// from r: la, lb are the target's coordinates of corners a and e; `valid`
 /// marks lanes whose target has a positive area; row is the edge's row of
@@ -134,6 +142,17 @@ ROLE_INLINE Mask<V> edge_lanes(PairBatch& b, int r, const TriLanes& c, const Tri
   clip(la.l0, lb.l0, lo, hi);
   clip(la.l1, lb.l1, lo, hi);
   clip(la.l2, lb.l2, lo, hi);
+  // Where no lane's edge enters its target (fragments near but apart),
+  // the rest would only confirm it: springs reset (kept for a skipped
+  // role), nothing dissipated, no force.
+  const V spring_in = load<V>(&b.spring[row][r]);
+  const Mask<V> open = valid & (hi > lo);
+  if (!any_lane(open)) {
+    store(&b.spring[row][r], valid ? zero : spring_in);
+    store(&b.loss_friction[row][r], zero);
+    store(&b.loss_damping[row][r], zero);
+    return open;  // no lane
+  }
   // Breakpoints, sorted (three compare-exchanges).
   V s0 = crossing(la.l0, la.l1, lb.l0, lb.l1, lo, hi);
   V s1 = crossing(la.l0, la.l2, lb.l0, lb.l2, lo, hi);
@@ -151,7 +170,7 @@ ROLE_INLINE Mask<V> edge_lanes(PairBatch& b, int r, const TriLanes& c, const Tri
   segment(s2, hi, p2, p_hi, i0, i1);
   const V inside = hi - lo;
   // A hit: a valid target, a non-empty inside part, a positive integral.
-  const Mask<V> hit = valid & (hi > lo) & (i0 > zero);
+  const Mask<V> hit = open & (i0 > zero);
   // Forces: the potential's at A and B, friction and damping at the centre.
   const V len = load<V>(&c.len[k][r]), tx = load<V>(&c.ex[k][r]), ty = load<V>(&c.ey[k][r]);
   const V nx = ty, ny = -tx;  // outward normal
@@ -178,7 +197,6 @@ ROLE_INLINE Mask<V> edge_lanes(PairBatch& b, int r, const TriLanes& c, const Tri
     f_d = max_of(rp.damping * 2.0 * root * v_n, -f_ab);
     loss_d = f_d * v_n * rp.dt;
   }
-  const V spring_in = load<V>(&b.spring[row][r]);
   V f_t = zero, loss_f = zero, spring = spring_in;
   if constexpr (Friction) {
     const V trial = spring - k_n * (vrx * tx + vry * ty) * rp.dt;
