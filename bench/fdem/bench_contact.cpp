@@ -121,8 +121,8 @@ int main(int argc, char** argv) {
                 double(engine.n_triangles()) * steps / wall);
     std::printf("phases: triangles %.3f s cracks %.3f s contact %.3f s nodes %.3f s\n",
                 ph.triangles, ph.cracks, ph.contact, ph.nodes);
-    std::printf("contact: detections %ld updates %ld steps with pairs %ld\n", c.detections,
-                c.updates, c.steps_with_pairs);
+    std::printf("contact: detections %ld updates %ld steps with pairs %ld kernel %s\n",
+                c.detections, c.updates, c.steps_with_pairs, c.kernel);
     std::printf("broken %ld\n", engine.broken_counts().total());
     std::printf("state_hash %s\n", engine.state_hash().c_str());
     return 0;

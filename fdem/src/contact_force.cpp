@@ -15,10 +15,11 @@
 // gradients.
 //
 // Cost: every contact triangle is packed once per step (pack). The pair
-// loop tests the two packed triangles' boxes and copies the roles of the
-// pairs that pass into a batch; the batch kernel (contact_roles.hpp)
-// computes a vector register's worth of roles at once without a branch,
-// and the pair loop adds its results to the pairs' buffers in scalar order.
+// loop tests the two packed triangles' boxes and copies the pairs that
+// pass into a batch; the batch kernel (contact_roles.hpp) computes both
+// roles of a vector register's worth of pairs at once without a branch,
+// summing each pair's forces in the order of a scalar loop, and the pair
+// loop copies them to the pairs' buffers.
 //
 // Friction: per contactor edge and pair, an incremental tangential spring at
 // the edge's force centre xi_c = F_B / F_AB, F_t -= k_t v_t dt with

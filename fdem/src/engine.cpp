@@ -18,6 +18,7 @@
 
 #include "boundary.hpp"
 #include "contact.hpp"
+#include "contact_roles.hpp"
 #include "crack_elements.hpp"
 #include "crack_prestress.hpp"
 #include "energy.hpp"
@@ -460,6 +461,7 @@ ContactCounters Engine::contact_counters() const {
   r.steps_with_pairs = c.steps_with_pairs;
   r.steps_skipped = c.steps_skipped;
   r.updates = c.updates;
+  r.kernel = detail::role_isa_name();
   return r;
 }
 

@@ -27,7 +27,7 @@ void report_engine(const fdem::Engine& e, const PhaseTimer& timer, RunSummary& s
   j["contact"] = {{"enabled", c.enabled},          {"detections", c.detections},
                   {"steps_with_pairs", c.steps_with_pairs}, {"steps_skipped", c.steps_skipped},
                   {"last_candidates", c.candidates}, {"last_pairs", c.pairs},
-                  {"last_touching", c.touching}};
+                  {"last_touching", c.touching}, {"kernel", c.kernel}};
   if (!c.enabled)
     summary.skipped("contact: disabled by the scene (contact.enabled = false)");
   else if (c.steps_with_pairs == 0)

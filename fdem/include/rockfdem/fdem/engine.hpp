@@ -82,6 +82,9 @@ struct ContactCounters {
   long steps_with_pairs = 0;  ///< steps in which the narrow phase ran
   long steps_skipped = 0;     ///< steps in which nothing could touch (no narrow phase)
   long updates = 0;           ///< local broad-phase updates after breakage (no detection)
+  /// Instruction set of the narrow phase's kernel on this processor
+  /// ("avx512", "avx2", "sse2"): the same results on each, not the same speed.
+  const char* kernel = "";
 };
 
 /// What quasi-static mass scaling did (mass_scaling_report()).
