@@ -23,19 +23,37 @@ namespace baseline {
 }  // namespace baseline
 
 #if defined(__x86_64__)
+// Every function of the region is compiled for the set (GCC: target
+// pragmas; Clang: an attribute applied to each function).
+#if defined(__clang__)
+#pragma clang attribute push(__attribute__((target("avx2"))), apply_to = function)
+#else
 #pragma GCC push_options
 #pragma GCC target("avx2")
+#endif
 namespace avx2 {
 #include "contact_roles_kernel.hpp"
 }  // namespace avx2
+#if defined(__clang__)
+#pragma clang attribute pop
+#else
 #pragma GCC pop_options
+#endif
 
+#if defined(__clang__)
+#pragma clang attribute push(__attribute__((target("avx512f,avx512dq"))), apply_to = function)
+#else
 #pragma GCC push_options
 #pragma GCC target("avx512f,avx512dq")
+#endif
 namespace avx512 {
 #include "contact_roles_kernel.hpp"
 }  // namespace avx512
+#if defined(__clang__)
+#pragma clang attribute pop
+#else
 #pragma GCC pop_options
+#endif
 #endif
 
 void roles_baseline(PairBatch& b, int n, const RoleParams& rp) {
