@@ -7,6 +7,8 @@
 #include <cstdlib>
 #include <cstring>
 
+#include "rockfdem/error.hpp"
+
 #define ROLE_INLINE inline __attribute__((always_inline))
 
 namespace rockfdem::fdem::detail {
@@ -80,9 +82,10 @@ bool has_avx2() { return false; }
 #endif
 
 /// The widest set the processor has, or a narrower one that the
-/// environment variable ROCKFDEM_CONTACT_ISA (sse2, avx2) asks for: the
-/// results are the same bits, only the speed differs (bench_contact
-/// measures each). Read once.
+/// environment variable ROCKFDEM_CONTACT_ISA (sse2, avx2, avx512) asks for:
+/// the results are the same bits, only the speed differs (bench_contact
+/// measures each). A set the processor lacks falls back to the widest it
+/// has; an unknown name is an input error (check_role_isa_request).
 RoleIsa resolve_isa() {
   RoleIsa isa = has_avx512() ? RoleIsa::kAvx512 : has_avx2() ? RoleIsa::kAvx2 : RoleIsa::kBaseline;
   if (const char* ask = std::getenv("ROCKFDEM_CONTACT_ISA")) {
@@ -94,6 +97,8 @@ RoleIsa resolve_isa() {
   return isa;
 }
 
+/// Resolved once, at the first call (check_role_isa_request makes that a
+/// serial one, before any parallel contact pass).
 RoleIsa best_isa() {
   static const RoleIsa best = resolve_isa();
   return best;
@@ -135,8 +140,23 @@ const char* role_isa_name() {
     case RoleIsa::kAvx2:
       return "avx2";
     default:
+#if defined(__x86_64__)
       return "sse2";
+#else
+      return "baseline";
+#endif
   }
+}
+
+void check_role_isa_request() {
+  if (const char* ask = std::getenv("ROCKFDEM_CONTACT_ISA")) {
+    if (std::strcmp(ask, "sse2") != 0 && std::strcmp(ask, "avx2") != 0 &&
+        std::strcmp(ask, "avx512") != 0)
+      throw InputError(std::string("environment: ROCKFDEM_CONTACT_ISA = '") + ask +
+                       "': allowed sse2, avx2, avx512 (the widest instruction set the contact "
+                       "kernel may use), or unset");
+  }
+  best_isa();
 }
 
 }  // namespace rockfdem::fdem::detail

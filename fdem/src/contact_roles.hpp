@@ -5,22 +5,24 @@
 // triangle (contact_force.cpp explains the mathematics); a pair has two.
 // The pair loop copies the pairs whose boxes overlap into a PairBatch, a
 // structure of arrays with one lane per pair; run_roles computes both roles
-// of every lane without a data-dependent branch (clipping, the breakpoints
-// of the potential, the exact integrals, friction and damping as selects),
-// so that the lanes map onto the vector unit, and sums each pair's forces
-// in the order a scalar loop over its roles and edges would.
+// of every lane with selects where a scalar loop would branch (clipping,
+// the breakpoints of the potential, the exact integrals, friction and
+// damping), so that the lanes map onto the vector unit, and sums each
+// pair's forces in the order a scalar loop over its roles and edges would.
 //
 // Same bits on every instruction set: the kernel is compiled once for
 // AVX-512, AVX2 and the x86-64 baseline (SSE2) and chosen at run time, and
 // its file is compiled without floating-point contraction, so each lane
 // performs exactly the IEEE operations of the scalar formulas, in the same
-// order, whichever width runs it.
+// order, whichever width runs it (for finite potentials: docs/engine.md).
 #pragma once
 
 namespace rockfdem::fdem::detail {
 
 /// Pairs per batch: the batch's arrays (about 25 kB) stay in the L1 cache.
+/// The kernel runs whole registers of up to 8 lanes.
 constexpr int kPairBatch = 32;
+static_assert(kPairBatch % 8 == 0, "whole 8-lane registers");
 
 /// The settings every pair of a step shares.
 struct RoleParams {
@@ -73,7 +75,13 @@ bool role_isa_available(RoleIsa isa);
 /// run_roles on the given instruction set (must be available).
 void run_roles(PairBatch& b, int n, const RoleParams& rp, RoleIsa isa);
 
-/// Name of the instruction set kBest resolves to ("avx512", "avx2", "sse2").
+/// Name of the instruction set kBest resolves to ("avx512", "avx2", "sse2";
+/// "baseline" on other processors, at their own 128-bit width).
 const char* role_isa_name();
+
+/// Checks ROCKFDEM_CONTACT_ISA (unset, sse2, avx2 or avx512; else throws
+/// InputError) and resolves kBest, once per process, outside any parallel
+/// region.
+void check_role_isa_request();
 
 }  // namespace rockfdem::fdem::detail

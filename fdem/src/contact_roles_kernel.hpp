@@ -11,7 +11,8 @@
 //    coordinates lambda_i of the target are >= 0 (empty: no hit);
 //  - breakpoints: where two coordinates cross strictly inside (lo, hi); a
 //    crossing that does not count is replaced by lo, which after sorting
-//    only adds segments of zero width (+0 to both integrals, exactly);
+//    only adds segments of zero width (+0 to both integrals, exactly, as
+//    long as phi is finite: 0 * inf would be NaN);
 //  - phi = 3 max(0, min lambda) at the five points, and the exact integrals
 //    i0 = int phi, i1 = int phi xi segment by segment;
 //  - the force at A, B and at the centre xi = i1 / i0, friction and damping.

@@ -450,6 +450,8 @@ bool Engine::contact_active() const {
   return impl_->d.contact_on && !impl_->d.contact.pairs.empty();
 }
 
+void check_environment() { detail::check_role_isa_request(); }
+
 ContactCounters Engine::contact_counters() const {
   const auto& c = impl_->d.contact;
   ContactCounters r;

@@ -3,9 +3,11 @@
 #include <gtest/gtest.h>
 #include <sys/wait.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -53,6 +55,21 @@ TEST(Cli, malformed_scenes_exit_two_and_leave_nothing) {
     ++n;
   }
   EXPECT_GE(n, 15);
+}
+
+// An unknown instruction set for the contact kernel in the environment:
+// exit 2, one line naming the variable, its value and the allowed ones, no
+// directory made (the check runs before the mesh is written).
+TEST(Cli, unknown_contact_kernel_request_exits_two_and_leaves_nothing) {
+  const fs::path out = scratch("isa");
+  setenv("ROCKFDEM_CONTACT_ISA", "AVX2", 1);
+  const Result r = run("run " + kTestDir + "/good_circular.toml -o " + out.string());
+  unsetenv("ROCKFDEM_CONTACT_ISA");
+  EXPECT_EQ(r.code, 2) << r.output;
+  EXPECT_NE(r.output.find("ROCKFDEM_CONTACT_ISA = 'AVX2'"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("allowed sse2, avx2, avx512"), std::string::npos) << r.output;
+  EXPECT_EQ(std::count(r.output.begin(), r.output.end(), '\n'), 1) << r.output;
+  EXPECT_FALSE(fs::exists(out));
 }
 
 TEST(Cli, set_override_is_validated_like_the_file) {

@@ -5,6 +5,7 @@
 #include <iostream>
 
 #include "commands.hpp"
+#include "rockfdem/fdem/engine.hpp"
 #include "rockfdem/workflows/cli.hpp"
 #include "rockfdem/workflows/scene_schema.hpp"
 #include "rockfdem/workflows/version.hpp"
@@ -37,6 +38,7 @@ int run_command(const CommandLine& cli) {
   g_threads = cli.threads > 0 ? cli.threads : omp_get_num_procs();
   active_threads();
   refuse_if_too_large(scene);
+  fdem::check_environment();  // before anything is written
   if (cli.command == "check") return command_check(scene, cli);
   if (cli.command == "mesh") return command_mesh(scene, cli);
   if (cli.command == "insitu") return command_insitu(scene, cli);

@@ -87,6 +87,14 @@ struct ContactCounters {
   const char* kernel = "";
 };
 
+/// Checks the environment variables the engine reads: ROCKFDEM_CONTACT_ISA,
+/// unset or sse2, avx2, avx512 (the widest instruction set the contact
+/// kernel may use; the results are the same on each). Throws InputError
+/// naming the variable, its value and the allowed ones. Setting contact up
+/// checks too; a command line calls it first so that nothing is written
+/// before the error.
+void check_environment();
+
 /// What quasi-static mass scaling did (mass_scaling_report()).
 struct MassScalingReport {
   bool enabled = false;
