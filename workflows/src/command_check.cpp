@@ -98,12 +98,14 @@ double explicit_steps(const Scene& s) {
 }
 
 // Serial engine throughput measured on the 2-core development machine
-// (docs/benchmarks.md): 11 M triangle-steps/s for intact models (bench_ucs),
-// about 2.4 M for a fracturing tunnel with contact (the default tunnel: 4.2 M
-// on 2 threads); 0.9 parallel efficiency at 2 threads; mesh and implicit
-// stage about 90 us per triangle.
+// (docs/benchmarks.md, "A vector kernel for the narrow phase"): 11 M
+// triangle-steps/s for intact models (bench_ucs: 15 M), 8 M for a
+// fracturing model with contact (the default tunnel: 10.4 M on one idle
+// thread; a confined specimen after heavy fracture, every triangle
+// fracturing: 5.3 M); 0.9 parallel efficiency at 2 threads; mesh and
+// implicit stage about 90 us per triangle.
 double run_seconds(const Scene& s, const Estimate& e, int threads) {
-  const double serial = e.fracture_triangles > 0 && s.engine.contact ? 2.4e6 : 11e6;
+  const double serial = e.fracture_triangles > 0 && s.engine.contact ? 8e6 : 11e6;
   const double rate = serial * std::max(1, threads) * (threads > 1 ? 0.9 : 1.0);
   return 90e-6 * e.triangles + explicit_steps(s) * e.triangles / rate;
 }
@@ -159,8 +161,9 @@ int command_check(const Scene& scene, const CommandLine& /*cli*/) {
     std::printf("  peak memory (estimate):     %.1f MiB of %.1f MiB on this machine\n",
                 peak_bytes(e) / 1048576.0, machine_bytes() / 1048576.0);
     std::printf("  explicit steps (at most):   %.0f\n", explicit_steps(scene));
-    std::printf("  run time (estimate):        %.0f s at most on %d idle threads\n",
-                run_seconds(scene, e, active_threads()), active_threads());
+    std::printf("  run time (estimate):        %.0f s at most on %d idle thread%s\n",
+                run_seconds(scene, e, active_threads()), active_threads(),
+                active_threads() == 1 ? "" : "s");
   }
   std::printf("  P-wave speed of rock:       %.1f m/s\n", cp);
   std::printf("  stable time step (approx):  %.3g s%s\n", dt,
