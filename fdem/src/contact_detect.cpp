@@ -15,7 +15,6 @@
 #include <cmath>
 #include <cstdint>
 
-#include "contact_roles.hpp"
 #include "engine_data.hpp"
 #include "parallel.hpp"
 #include "rockfdem/fdem/engine.hpp"
@@ -395,7 +394,6 @@ double insert_pairs(EngineData& d) {
 }  // namespace
 
 void contact_setup(EngineData& d) {
-  check_role_isa_request();
   ContactData& c = d.contact;
   build_edge_neighbours(d);
   double e_max = 0;

@@ -82,13 +82,13 @@ bool has_avx2() { return false; }
 #endif
 
 /// The widest set the processor has, or a narrower one that the
-/// environment variable ROCKFDEM_CONTACT_ISA (sse2, avx2, avx512) asks for:
-/// the results are the same bits, only the speed differs (bench_contact
-/// measures each). A set the processor lacks falls back to the widest it
+/// environment variable ROCKFDEM_ISA (sse2, avx2, avx512) asks for, for
+/// the contact and crack kernels alike: the results are the same bits,
+/// only the speed differs (bench_contact measures each). A set the processor lacks falls back to the widest it
 /// has; an unknown name is an input error (check_role_isa_request).
 RoleIsa resolve_isa() {
   RoleIsa isa = has_avx512() ? RoleIsa::kAvx512 : has_avx2() ? RoleIsa::kAvx2 : RoleIsa::kBaseline;
-  if (const char* ask = std::getenv("ROCKFDEM_CONTACT_ISA")) {
+  if (const char* ask = std::getenv("ROCKFDEM_ISA")) {
     if (std::strcmp(ask, "sse2") == 0)
       isa = RoleIsa::kBaseline;
     else if (std::strcmp(ask, "avx2") == 0 && isa == RoleIsa::kAvx512)
@@ -148,13 +148,15 @@ const char* role_isa_name() {
   }
 }
 
+RoleIsa resolved_role_isa() { return best_isa(); }
+
 void check_role_isa_request() {
-  if (const char* ask = std::getenv("ROCKFDEM_CONTACT_ISA")) {
+  if (const char* ask = std::getenv("ROCKFDEM_ISA")) {
     if (std::strcmp(ask, "sse2") != 0 && std::strcmp(ask, "avx2") != 0 &&
         std::strcmp(ask, "avx512") != 0)
-      throw InputError(std::string("environment: ROCKFDEM_CONTACT_ISA = '") + ask +
-                       "': allowed sse2, avx2, avx512 (the widest instruction set the contact "
-                       "kernel may use), or unset");
+      throw InputError(std::string("environment: ROCKFDEM_ISA = '") + ask +
+                       "': allowed sse2, avx2, avx512 (the widest instruction set the engine's "
+                       "vector kernels may use), or unset");
   }
   best_isa();
 }

@@ -79,9 +79,12 @@ void run_roles(PairBatch& b, int n, const RoleParams& rp, RoleIsa isa);
 /// "baseline" on other processors, at their own 128-bit width).
 const char* role_isa_name();
 
-/// Checks ROCKFDEM_CONTACT_ISA (unset, sse2, avx2 or avx512; else throws
+/// The instruction set kBest resolves to (the crack kernel follows it).
+RoleIsa resolved_role_isa();
+
+/// Checks ROCKFDEM_ISA (unset, sse2, avx2 or avx512; else throws
 /// InputError) and resolves kBest, once per process, outside any parallel
-/// region.
+/// region (the Engine's constructor calls it).
 void check_role_isa_request();
 
 }  // namespace rockfdem::fdem::detail

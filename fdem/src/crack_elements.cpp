@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "crack_batch.hpp"
 #include "parallel.hpp"
 #include "rockfdem/fdem/engine.hpp"
 
@@ -209,8 +210,76 @@ FailureMode classify_failure(double sum_a2, double sum_b2) {
   return FailureMode::kMixed;
 }
 
+namespace {
+
+/// Whether element c takes the batch path: active, intact (no damage),
+/// rock law, material `material` (one per batch).
+inline bool batchable(const EngineData& d, long c, int material) {
+  if (!d.cracks.active[c] || d.cracks.state[c] != std::uint8_t(CrackState::kIntact)) return false;
+  if (d.cracks.material[c] != material) return false;
+  const double* dmg = &d.cracks.damage[3 * c];
+  return dmg[0] == 0.0 && dmg[1] == 0.0 && dmg[2] == 0.0;
+}
+
+/// Runs the batch; its lanes that stay below the peaks get their slots, the
+/// others are left to the scalar path.
+void flush_cracks(CrackBatch& b, int n, const int* element, const CrackConstants& k,
+                  double* slots, std::uint8_t* scalar, long begin) {
+  run_crack_batch(b, n, k);
+  for (int r = 0; r < n; ++r) {
+    const long c = element[r];
+    if (b.grows[r] != 0.0) {
+      scalar[c - begin] = 1;
+      continue;
+    }
+    double* out = slots + 8 * c;
+    for (int i = 0; i < 8; ++i) out[i] = b.out[i][r];
+  }
+}
+
+/// The batch pass over elements [begin, end): marks in `scalar` the ones the
+/// scalar loop must evaluate (all others have their slots).
+void batch_pass(const EngineData& d, long begin, long end, CrackBatch& b, int* element,
+                double* slots, std::uint8_t* scalar) {
+  for (long c = begin; c < end; ++c) scalar[c - begin] = 1;
+  int material = -1;
+  for (long c = begin; c < end && material < 0; ++c)
+    if (d.cracks.active[c] && d.cracks.state[c] == std::uint8_t(CrackState::kIntact) &&
+        d.crack_laws[d.cracks.material[c]].law == CrackLaw::kRock)
+      material = d.cracks.material[c];
+  if (material < 0) return;
+  const CrackConstants& k = d.crack_laws[material];
+  const double* p = d.nodes.pos.data();
+  const bool offsets = !d.cracks.offset.empty();
+  int n = 0;
+  for (long c = begin; c < end; ++c) {
+    if (!batchable(d, c, material)) continue;
+    scalar[c - begin] = 0;
+    const int* nd = &d.cracks.nodes[4 * c];
+    for (int j = 0; j < 4; ++j) {
+      b.x[j][n] = p[2 * nd[j]];
+      b.y[j][n] = p[2 * nd[j] + 1];
+    }
+    for (int i = 0; i < 3; ++i) {
+      b.off_o[i][n] = offsets ? d.cracks.offset[6 * c + 2 * i] : 0.0;
+      b.off_s[i][n] = offsets ? d.cracks.offset[6 * c + 2 * i + 1] : 0.0;
+    }
+    element[n++] = static_cast<int>(c);
+    if (n == kCrackBatch) {
+      flush_cracks(b, n, element, k, slots, scalar, begin);
+      n = 0;
+    }
+  }
+  if (n > 0) flush_cracks(b, n, element, k, slots, scalar, begin);
+}
+
+}  // namespace
+
 /// Fixed blocks of kEnergyBlock elements: the released potential is a
-/// deterministic block sum (energy.hpp).
+/// deterministic block sum (energy.hpp). In each block the undamaged rock
+/// elements go through the batch kernel first (crack_batch.hpp); the rest,
+/// and those whose points reach their peaks, through crack_element in
+/// element order.
 long crack_forces(EngineData& d) {
   const long nc = static_cast<long>(d.cracks.size());
   const long n_blocks = (nc + kEnergyBlock - 1) / kEnergyBlock;
@@ -221,28 +290,35 @@ long crack_forces(EngineData& d) {
   double* partial = d.energy_partial.data();
   const auto step = static_cast<std::int32_t>(d.step);
   long n_broken = 0;
-#pragma omp parallel for schedule(static) num_threads(thread_count(d.threads)) \
-    reduction(+ : n_broken)
-  for (long b = 0; b < n_blocks; ++b) {
-    double released = 0;
-    const long end = std::min(nc, (b + 1) * kEnergyBlock);
-    for (long c = b * kEnergyBlock; c < end; ++c) {
-      if (!active[c] || state[c] == std::uint8_t(CrackState::kBroken)) continue;
-      double sum_a2 = 0, sum_b2 = 0;
-      double* out = slots + 8 * c;
-      double* dmg = damage + 3 * c;
-      if (crack_element(d, c, dmg, out, sum_a2, sum_b2, released)) {
-        zero_slots(out);
-        state[c] = std::uint8_t(CrackState::kBroken);
-        d.cracks.mode[c] = std::uint8_t(classify_failure(sum_a2, sum_b2));
-        d.cracks.broken_step[c] = step;
-        ++n_broken;
-      } else if (state[c] == std::uint8_t(CrackState::kIntact) &&
-                 (dmg[0] > 0.0 || dmg[1] > 0.0 || dmg[2] > 0.0)) {
-        state[c] = std::uint8_t(CrackState::kYielding);
+#pragma omp parallel num_threads(thread_count(d.threads)) reduction(+ : n_broken)
+  {
+    CrackBatch batch{};  // per thread (zeroed: padding lanes are read)
+    int element[kCrackBatch];
+    std::uint8_t scalar[kEnergyBlock];
+#pragma omp for schedule(static)
+    for (long b = 0; b < n_blocks; ++b) {
+      double released = 0;
+      const long begin = b * kEnergyBlock, end = std::min(nc, (b + 1) * kEnergyBlock);
+      batch_pass(d, begin, end, batch, element, slots, scalar);
+      for (long c = begin; c < end; ++c) {
+        if (!scalar[c - begin]) continue;
+        if (!active[c] || state[c] == std::uint8_t(CrackState::kBroken)) continue;
+        double sum_a2 = 0, sum_b2 = 0;
+        double* out = slots + 8 * c;
+        double* dmg = damage + 3 * c;
+        if (crack_element(d, c, dmg, out, sum_a2, sum_b2, released)) {
+          zero_slots(out);
+          state[c] = std::uint8_t(CrackState::kBroken);
+          d.cracks.mode[c] = std::uint8_t(classify_failure(sum_a2, sum_b2));
+          d.cracks.broken_step[c] = step;
+          ++n_broken;
+        } else if (state[c] == std::uint8_t(CrackState::kIntact) &&
+                   (dmg[0] > 0.0 || dmg[1] > 0.0 || dmg[2] > 0.0)) {
+          state[c] = std::uint8_t(CrackState::kYielding);
+        }
       }
+      partial[b] = released;
     }
-    partial[b] = released;
   }
   double released = 0;
   for (long b = 0; b < n_blocks; ++b) released += partial[b];

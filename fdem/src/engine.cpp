@@ -115,6 +115,7 @@ void check_index(std::size_t i, std::size_t n, const char* what) {
 
 Engine::Engine(const ModelInput& in) : impl_(std::make_unique<Impl>()) {
   detail::validate_input(in);
+  detail::check_role_isa_request();  // resolves the vector kernels' set, serially
   auto& d = impl_->d;
   d.materials = in.materials;
   for (const Material& m : in.materials) {

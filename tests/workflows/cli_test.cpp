@@ -57,16 +57,16 @@ TEST(Cli, malformed_scenes_exit_two_and_leave_nothing) {
   EXPECT_GE(n, 15);
 }
 
-// An unknown instruction set for the contact kernel in the environment:
+// An unknown instruction set for the vector kernels in the environment:
 // exit 2, one line naming the variable, its value and the allowed ones, no
 // directory made (the check runs before the mesh is written).
-TEST(Cli, unknown_contact_kernel_request_exits_two_and_leaves_nothing) {
+TEST(Cli, unknown_instruction_set_request_exits_two_and_leaves_nothing) {
   const fs::path out = scratch("isa");
-  setenv("ROCKFDEM_CONTACT_ISA", "AVX2", 1);
+  setenv("ROCKFDEM_ISA", "AVX2", 1);
   const Result r = run("run " + kTestDir + "/good_circular.toml -o " + out.string());
-  unsetenv("ROCKFDEM_CONTACT_ISA");
+  unsetenv("ROCKFDEM_ISA");
   EXPECT_EQ(r.code, 2) << r.output;
-  EXPECT_NE(r.output.find("ROCKFDEM_CONTACT_ISA = 'AVX2'"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("ROCKFDEM_ISA = 'AVX2'"), std::string::npos) << r.output;
   EXPECT_NE(r.output.find("allowed sse2, avx2, avx512"), std::string::npos) << r.output;
   EXPECT_EQ(std::count(r.output.begin(), r.output.end(), '\n'), 1) << r.output;
   EXPECT_FALSE(fs::exists(out));

@@ -82,17 +82,18 @@ struct ContactCounters {
   long steps_with_pairs = 0;  ///< steps in which the narrow phase ran
   long steps_skipped = 0;     ///< steps in which nothing could touch (no narrow phase)
   long updates = 0;           ///< local broad-phase updates after breakage (no detection)
-  /// Instruction set of the narrow phase's kernel on this processor
-  /// ("avx512", "avx2", "sse2"): the same results on each, not the same speed.
+  /// Instruction set of the narrow phase's (and the crack elements')
+  /// kernel on this processor ("avx512", "avx2", "sse2", "baseline"): the
+  /// same results on each, not the same speed.
   const char* kernel = "";
 };
 
-/// Checks the environment variables the engine reads: ROCKFDEM_CONTACT_ISA,
-/// unset or sse2, avx2, avx512 (the widest instruction set the contact
-/// kernel may use; the results are the same on each). Throws InputError
-/// naming the variable, its value and the allowed ones. Setting contact up
-/// checks too; a command line calls it first so that nothing is written
-/// before the error.
+/// Checks the environment variables the engine reads: ROCKFDEM_ISA,
+/// unset or sse2, avx2, avx512 (the widest instruction set the vector
+/// kernels of contact and crack elements may use; the results are the same
+/// on each). Throws InputError naming the variable, its value and the
+/// allowed ones. The Engine's constructor checks too; a command line calls
+/// it first so that nothing is written before the error.
 void check_environment();
 
 /// What quasi-static mass scaling did (mass_scaling_report()).
