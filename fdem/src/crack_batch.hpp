@@ -1,14 +1,15 @@
 // The crack loop's common case, a batch of elements at a time (private to
 // fdem/).
 //
-// Most crack elements in a step are undamaged rock elements whose three
-// points stay below their peaks: no damage grows, nothing breaks, and the
-// law reduces to the pre-peak branches. crack_forces copies such elements
-// (one material per batch) into a CrackBatch; run_crack_batch evaluates
-// their geometry, law and forces lane by lane without a branch and flags
-// the lanes where some point would start to soften. Those, and every other
-// element (damaged, steel, another material), take the scalar path in
-// element order, so the sums and state changes are those of a scalar loop.
+// In most steps most crack elements are rock elements whose damage does
+// not grow: intact ones below their peaks, and softened ones whose
+// excursion stays within their history. crack_forces copies the rock
+// elements that are not broken (one material per batch) into a CrackBatch;
+// run_crack_batch evaluates their geometry, law and forces lane by lane
+// without a branch and flags the lanes where some point's damage would
+// grow. Those, and every other element (steel, another material), take the
+// scalar path in element order, so the released energy, histories and
+// state changes are those of a scalar loop.
 // Same bits: one lane performs the scalar formulas' IEEE operations in
 // their order (no contraction), as in contact_roles.hpp.
 #pragma once
@@ -22,17 +23,19 @@ constexpr int kCrackBatch = 32;
 static_assert(kCrackBatch % 8 == 0, "whole 8-lane registers");
 
 /// Inputs: the four nodes' positions, the per-point offsets (o, s) (zero
-/// when the model has none). Outputs: the eight slot values (node 0 x, y,
-/// node 1, node 2, node 3) and 1 where some point would soften (the lane's
-/// outputs are then meaningless and the scalar path redoes it).
+/// when the model has none) and damage histories. Outputs: the eight slot
+/// values (node 0 x, y, node 1, node 2, node 3) and 1 where some point's
+/// damage would grow (the lane's outputs are then meaningless and the
+/// scalar path redoes it).
 struct CrackBatch {
   double x[4][kCrackBatch], y[4][kCrackBatch];
   double off_o[3][kCrackBatch], off_s[3][kCrackBatch];
+  double damage[3][kCrackBatch];
   double out[8][kCrackBatch];
   double grows[kCrackBatch];
 };
 
-/// Lanes 0 .. n - 1 of `b`, all of rock law `k`, undamaged.
+/// Lanes 0 .. n - 1 of `b`, all of rock law `k`, none broken.
 void run_crack_batch(CrackBatch& b, int n, const CrackConstants& k, RoleIsa isa = RoleIsa::kBest);
 
 }  // namespace rockfdem::fdem::detail

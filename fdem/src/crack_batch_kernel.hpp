@@ -1,8 +1,10 @@
 // run_crack_batch's kernel (crack_batch.cpp), written once for any vector
 // width and included once per instruction set (see contact_roles_kernel.hpp
-// for why). It is crack_element() (crack_elements.cpp) for an undamaged
-// rock element with rock_point() (crack_law.hpp) at damage 0, every branch
-// a select; `grows` marks lanes where a point passes its peak (a or b > 0).
+// for why). It is crack_element() (crack_elements.cpp) for a rock element
+// with rock_point() (crack_law.hpp) at its points' damage histories, every
+// branch a select; `grows` marks lanes where accumulate_damage would raise
+// a history (a or b > 0 and sqrt(a^2 + b^2) above it). The softening z(D)
+// is the scalar table look-up, lane by lane.
 //
 // Expects: CrackBatch, CrackConstants, ROLE_INLINE, the vector types.
 
@@ -42,16 +44,25 @@ ROLE_INLINE V copysign_of(V m, V s) {
   return (V)(((Bits<V>)m & ~sign) | ((Bits<V>)s & sign));
 }
 
+/// Whether any lane of m is set.
+template <class M>
+ROLE_INLINE bool any_set(M m) {
+  long set = 0;
+  for (int i = 0; i < static_cast<int>(sizeof(M) / sizeof(m[0])); ++i) set |= m[i];
+  return set != 0;
+}
+
 /// pre_peak: (2 - x) x below the peak, 1 from x = 1 on.
 template <class V>
 ROLE_INLINE V pre_peak_of(V x) {
   return (x >= 1.0) ? splat<V>(1.0) : (2.0 - x) * x;
 }
 
-/// rock_point at damage 0 (z = 1): sigma, tau, and whether it softens.
+/// rock_point at the history `damage` where it does not grow: sigma, tau,
+/// and whether it would grow.
 template <class V>
-ROLE_INLINE void rock_point_lanes(const CrackConstants& k, V o, V s, V h, V inv_h, V& sigma, V& tau,
-                                  Bits<V>& grows) {
+ROLE_INLINE void rock_point_lanes(const CrackConstants& k, V o, V s, V h, V inv_h, V damage,
+                                  V& sigma, V& tau, Bits<V>& grows) {
   const V zero{};
   const Bits<V> closed = o < zero;
   const V sigma_c = closed ? k.pn * o * inv_h : zero;
@@ -63,8 +74,21 @@ ROLE_INLINE void rock_point_lanes(const CrackConstants& k, V o, V s, V h, V inv_
   const V abs_s = abs_of(s);
   const V a = (o > op) ? (o - op) * k.inv_open_range : zero;
   const V b = (abs_s > sp) ? (abs_s - sp) * fs * k.inv_slip_energy : zero;
-  grows = grows | (a > zero) | (b > zero);
-  const V z = splat<V>(1.0);
+  // Only registers with an excursion need its size, only softened ones z.
+  const Bits<V> excursion = (a > zero) | (b > zero);
+  if (any_set(excursion)) {
+    V trial = a * a + b * b;
+    for (int i = 0; i < kCrackWidth<V>; ++i) trial[i] = __builtin_sqrt(trial[i]);
+    grows = grows | (excursion & (trial > damage));
+  }
+  V z = splat<V>(1.0);
+  const Bits<V> softened = damage > zero;
+  if (any_set(softened)) {
+    const double* table = softening_table();
+    V table_z;
+    for (int i = 0; i < kCrackWidth<V>; ++i) table_z[i] = softening_z(table, damage[i]);
+    z = softened ? table_z : z;
+  }
   sigma = closed ? sigma_c : pre_peak_of(o * inv_h * k.h_per_op) * z * k.ft;
   tau = copysign_of(pre_peak_of(abs_s * inv_h * k.half_pt * inv_fs) * z * fs, s);
 }
@@ -92,7 +116,8 @@ ROLE_INLINE void crack_loop(CrackBatch& b, int n, const CrackConstants& k) {
     }
     V sigma[3], tau[3];
     Bits<V> grows{};
-    for (int i = 0; i < 3; ++i) rock_point_lanes(k, o[i], s[i], h, inv_h, sigma[i], tau[i], grows);
+    for (int i = 0; i < 3; ++i)
+      rock_point_lanes(k, o[i], s[i], h, inv_h, cload<V>(&b.damage[i][r]), sigma[i], tau[i], grows);
     const V w_end = h / 6.0, w_mid = h / 3.0;
     const V sn0 = w_end * sigma[0] + w_mid * sigma[1], st0 = w_end * tau[0] + w_mid * tau[1];
     const V sn1 = w_end * sigma[2] + w_mid * sigma[1], st1 = w_end * tau[2] + w_mid * tau[1];

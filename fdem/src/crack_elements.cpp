@@ -212,17 +212,15 @@ FailureMode classify_failure(double sum_a2, double sum_b2) {
 
 namespace {
 
-/// Whether element c takes the batch path: active, intact (no damage),
-/// rock law, material `material` (one per batch).
+/// Whether element c takes the batch path: active, not broken, material
+/// `material` (a rock one, one per batch).
 inline bool batchable(const EngineData& d, long c, int material) {
-  if (!d.cracks.active[c] || d.cracks.state[c] != std::uint8_t(CrackState::kIntact)) return false;
-  if (d.cracks.material[c] != material) return false;
-  const double* dmg = &d.cracks.damage[3 * c];
-  return dmg[0] == 0.0 && dmg[1] == 0.0 && dmg[2] == 0.0;
+  return d.cracks.active[c] && d.cracks.state[c] != std::uint8_t(CrackState::kBroken) &&
+         d.cracks.material[c] == material;
 }
 
-/// Runs the batch; its lanes that stay below the peaks get their slots, the
-/// others are left to the scalar path.
+/// Runs the batch; its lanes whose damage does not grow get their slots,
+/// the others are left to the scalar path.
 void flush_cracks(CrackBatch& b, int n, const int* element, const CrackConstants& k,
                   double* slots, std::uint8_t* scalar, long begin) {
   run_crack_batch(b, n, k);
@@ -244,7 +242,7 @@ void batch_pass(const EngineData& d, long begin, long end, CrackBatch& b, int* e
   for (long c = begin; c < end; ++c) scalar[c - begin] = 1;
   int material = -1;
   for (long c = begin; c < end && material < 0; ++c)
-    if (d.cracks.active[c] && d.cracks.state[c] == std::uint8_t(CrackState::kIntact) &&
+    if (d.cracks.active[c] && d.cracks.state[c] != std::uint8_t(CrackState::kBroken) &&
         d.crack_laws[d.cracks.material[c]].law == CrackLaw::kRock)
       material = d.cracks.material[c];
   if (material < 0) return;
@@ -263,6 +261,7 @@ void batch_pass(const EngineData& d, long begin, long end, CrackBatch& b, int* e
     for (int i = 0; i < 3; ++i) {
       b.off_o[i][n] = offsets ? d.cracks.offset[6 * c + 2 * i] : 0.0;
       b.off_s[i][n] = offsets ? d.cracks.offset[6 * c + 2 * i + 1] : 0.0;
+      b.damage[i][n] = d.cracks.damage[3 * c + i];
     }
     element[n++] = static_cast<int>(c);
     if (n == kCrackBatch) {
@@ -276,10 +275,9 @@ void batch_pass(const EngineData& d, long begin, long end, CrackBatch& b, int* e
 }  // namespace
 
 /// Fixed blocks of kEnergyBlock elements: the released potential is a
-/// deterministic block sum (energy.hpp). In each block the undamaged rock
-/// elements go through the batch kernel first (crack_batch.hpp); the rest,
-/// and those whose points reach their peaks, through crack_element in
-/// element order.
+/// deterministic block sum (energy.hpp). In each block the rock elements
+/// go through the batch kernel first (crack_batch.hpp); the rest, and those
+/// whose damage grows, through crack_element in element order.
 long crack_forces(EngineData& d) {
   const long nc = static_cast<long>(d.cracks.size());
   const long n_blocks = (nc + kEnergyBlock - 1) / kEnergyBlock;

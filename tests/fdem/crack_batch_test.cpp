@@ -17,7 +17,7 @@ using detail::kCrackBatch;
 using detail::RoleIsa;
 
 struct Element {
-  double x[4], y[4], off_o[3], off_s[3];
+  double x[4], y[4], off_o[3], off_s[3], damage[3];
 };
 
 /// An element of length 0.1-2 m at a random angle, its four nodes moved by
@@ -37,6 +37,7 @@ Element random_element(std::mt19937& rng, bool offsets) {
   for (int i = 0; i < 3; ++i) {
     e.off_o[i] = offsets ? 0.3 * scale * u(rng) : 0.0;
     e.off_s[i] = offsets ? 0.3 * scale * u(rng) : 0.0;
+    e.damage[i] = u(rng) > 0.0 ? 0.5 * (1.0 + u(rng)) : 0.0;  // half softened
   }
   return e;
 }
@@ -62,9 +63,9 @@ bool scalar_element(const CrackConstants& k, const Element& e, bool offsets, dou
     }
   CrackPoint p[3];
   for (int i = 0; i < 3; ++i) {
-    double damage = 0.0;
+    double damage = e.damage[i];
     p[i] = rock_point(k, o[i], s[i], h, inv_h, damage);
-    if (damage > 0.0) return false;
+    if (damage != e.damage[i]) return false;  // grew: the scalar path's case
   }
   const double w_end = h / 6.0, w_mid = h / 3.0;
   const double sn0 = w_end * p[0].sigma + w_mid * p[1].sigma;
@@ -102,6 +103,7 @@ TEST(CrackBatch, matches_the_scalar_element_bit_for_bit) {
         for (int i = 0; i < 3; ++i) {
           b.off_o[i][r] = e[r].off_o[i];
           b.off_s[i][r] = e[r].off_s[i];
+          b.damage[i][r] = e[r].damage[i];
         }
       }
       detail::run_crack_batch(b, n, k, isa);

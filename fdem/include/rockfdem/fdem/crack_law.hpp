@@ -34,19 +34,30 @@ inline double evans_marathe_z(double d) {
 /// evaluates it at every damaged point, and exp() there cost more than the
 /// rest of the law. Exact at D = 0 and 1; relative error below 1e-6 elsewhere
 /// (tested), far below anything the damage history resolves.
-inline double softening_z(double d) {
-  constexpr int n = 4096;
+constexpr int kSofteningIntervals = 4096;
+
+/// The table of softening_z: z at D = i / kSofteningIntervals, i = 0 .. n,
+/// and a guard entry 0 for D = 1 (built once).
+inline const double* softening_table() {
+  constexpr int n = kSofteningIntervals;
   static const auto table = [] {
     std::array<double, n + 2> t{};
     for (int i = 0; i <= n; ++i) t[i] = evans_marathe_z(double(i) / n);
     t[n + 1] = 0.0;  // guard for d == 1
     return t;
   }();
-  const double x = d * n;
+  return table.data();
+}
+
+/// softening_z with the table at hand (loops that call it often).
+inline double softening_z(const double* table, double d) {
+  const double x = d * kSofteningIntervals;
   const int i = static_cast<int>(x);
   const double f = x - i;
   return table[i] + f * (table[i + 1] - table[i]);
 }
+
+inline double softening_z(double d) { return softening_z(softening_table(), d); }
 
 /// Integral of z(D) over [0, 1] (about 0.3863), by composite Simpson with
 /// 2048 intervals, computed once. The softening ranges are chosen from it so
