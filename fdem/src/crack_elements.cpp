@@ -213,10 +213,17 @@ FailureMode classify_failure(double sum_a2, double sum_b2) {
 namespace {
 
 /// Whether element c takes the batch path: active, not broken, material
-/// `material` (a rock one, one per batch).
+/// `material` (a rock one, one per batch), and not an intact element with
+/// a damage history (the scalar loop would mark it yielding; growth marks
+/// it in the same step, so this is only a guard).
 inline bool batchable(const EngineData& d, long c, int material) {
-  return d.cracks.active[c] && d.cracks.state[c] != std::uint8_t(CrackState::kBroken) &&
-         d.cracks.material[c] == material;
+  const std::uint8_t state = d.cracks.state[c];
+  if (!d.cracks.active[c] || state == std::uint8_t(CrackState::kBroken) ||
+      d.cracks.material[c] != material)
+    return false;
+  const double* dmg = &d.cracks.damage[3 * c];
+  return state != std::uint8_t(CrackState::kIntact) ||
+         (dmg[0] == 0.0 && dmg[1] == 0.0 && dmg[2] == 0.0);
 }
 
 /// Runs the batch; its lanes whose damage does not grow get their slots,
