@@ -79,14 +79,17 @@ ROLE_INLINE void rock_point_lanes(const CrackConstants& k, V o, V s, V h, V inv_
   if (any_set(excursion)) {
     V trial = a * a + b * b;
     for (int i = 0; i < kCrackWidth<V>; ++i) trial[i] = __builtin_sqrt(trial[i]);
-    grows = grows | (excursion & (trial > damage));
+    // A history at 1 stays there (accumulate_damage caps at 1).
+    grows = grows | (excursion & (trial > damage) & (damage < 1.0));
   }
   V z = splat<V>(1.0);
   const Bits<V> softened = damage > zero;
   if (any_set(softened)) {
     const double* table = softening_table();
     V table_z;
-    for (int i = 0; i < kCrackWidth<V>; ++i) table_z[i] = softening_z(table, damage[i]);
+    // Lanes at 0 (or not a number) look up 0, not a stray index.
+    for (int i = 0; i < kCrackWidth<V>; ++i)
+      table_z[i] = softening_z(table, damage[i] > 0.0 ? damage[i] : 0.0);
     z = softened ? table_z : z;
   }
   sigma = closed ? sigma_c : pre_peak_of(o * inv_h * k.h_per_op) * z * k.ft;

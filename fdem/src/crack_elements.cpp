@@ -304,7 +304,11 @@ long crack_forces(EngineData& d) {
     for (long b = 0; b < n_blocks; ++b) {
       double released = 0;
       const long begin = b * kEnergyBlock, end = std::min(nc, (b + 1) * kEnergyBlock);
-      batch_pass(d, begin, end, batch, element, slots, scalar);
+      if (d.crack_batch) {
+        batch_pass(d, begin, end, batch, element, slots, scalar);
+      } else {
+        for (long c = begin; c < end; ++c) scalar[c - begin] = 1;
+      }
       for (long c = begin; c < end; ++c) {
         if (!scalar[c - begin]) continue;
         if (!active[c] || state[c] == std::uint8_t(CrackState::kBroken)) continue;

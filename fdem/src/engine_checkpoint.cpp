@@ -167,7 +167,7 @@ void fields(Ar& ar, ContactData& c) {
 
 template <class Ar>
 void fields(Ar& ar, EngineData& d) {
-  ROCKFDEM_CHECKPOINT_MEMBERS(EngineData, 31);  // reversal and gravity count twice
+  ROCKFDEM_CHECKPOINT_MEMBERS(EngineData, 32);  // reversal and gravity count twice
   fields(ar, d.nodes);
   fields(ar, d.tris);
   fields(ar, d.cracks);
@@ -200,6 +200,7 @@ void fields(Ar& ar, EngineData& d) {
   ar.state(d.energy_partial);  // scratch, kept for its size
   ar.state(d.energy);         // the energy ledger: a restart's balance continues
   ar.skip(d.threads);  // a setting, not state: a restart may use another count
+  ar.skip(d.crack_batch);  // a path, not state: both give the same bits
 }
 
 /// Engine::Impl is private to Engine: deduced here, never named.

@@ -126,6 +126,9 @@ struct EngineData {
   long step = 0;
   double time = 0;
   int threads = 0;
+  /// crack_forces sends rock elements through the batch kernel; off, every
+  /// element takes the scalar loop (the reference the tests compare with).
+  bool crack_batch = true;
   std::size_t crack_slot0() const { return 3 * tris.size(); }
 };
 

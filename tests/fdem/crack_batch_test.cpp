@@ -9,6 +9,12 @@
 #include <cstring>
 #include <random>
 
+#include "crack_elements.hpp"
+#include "engine_data.hpp"
+#include "rockfdem/fdem/structured_mesh.hpp"
+#include "test_models.hpp"
+#include "topology.hpp"
+
 namespace {
 
 using namespace rockfdem::fdem;
@@ -37,7 +43,8 @@ Element random_element(std::mt19937& rng, bool offsets) {
   for (int i = 0; i < 3; ++i) {
     e.off_o[i] = offsets ? 0.3 * scale * u(rng) : 0.0;
     e.off_s[i] = offsets ? 0.3 * scale * u(rng) : 0.0;
-    e.damage[i] = u(rng) > 0.0 ? 0.5 * (1.0 + u(rng)) : 0.0;  // half softened
+    const double pick = u(rng);  // half intact, some at 1, the rest softened
+    e.damage[i] = pick < 0.0 ? 0.0 : pick > 0.8 ? 1.0 : 0.5 * (1.0 + u(rng));
   }
   return e;
 }
@@ -125,6 +132,74 @@ TEST(CrackBatch, matches_the_scalar_element_bit_for_bit) {
   }
   EXPECT_GT(below, 1000);  // both branches exercised
   EXPECT_GT(past, 1000);
+}
+
+// crack_forces with the batch path against crack_forces with every element
+// on the scalar loop, bit for bit, over a fracturing mesh: two rock
+// materials and bolt steel mixed within the blocks, offsets on a third of
+// the elements, nodes moved further each round so that points soften,
+// histories grow and elements break, and a few intact elements carry a
+// damage history (the scalar loop marks them yielding). Compared after
+// each round: slots,
+// damage, state, mode, broken step, broken count, fracture energy.
+TEST(CrackBatch, crack_forces_equal_the_scalar_loop_over_a_fracturing_mesh) {
+  RectangleSpec spec;
+  spec.width = spec.height = 0.02;
+  spec.nx = spec.ny = 16;
+  Material weak = test::rock();
+  weak.tensile_strength *= 0.5;
+  weak.cohesion *= 0.7;
+  ModelInput in = structured_rectangle(spec, test::rock());
+  in.materials = {test::rock(), weak, test::bolt_steel()};
+  detail::EngineData a;
+  a.materials = in.materials;
+  for (const Material& m : in.materials) a.crack_laws.push_back(make_crack_constants(m));
+  detail::build_topology(in, a);
+  const int nc = static_cast<int>(a.cracks.size());
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  const double h = spec.width / spec.nx;
+  a.cracks.offset.assign(6 * nc, 0.0);
+  for (int e = 0; e < nc; ++e) {
+    const double pick = u(rng);
+    a.cracks.material[e] = pick > 0.6 ? 1 : pick < -0.9 ? 2 : 0;
+    if (u(rng) > 0.33) continue;
+    for (int i = 0; i < 6; ++i) a.cracks.offset[6 * e + i] = 2e-6 * h * u(rng);
+  }
+  for (int e = 0; e < nc; e += 97) a.cracks.damage[3 * e + 1] = 0.3;  // intact with a history
+  a.energy_partial.assign(nc / 128 + 2, 0.0);
+  a.energy.last_dt = 1e-7;
+  a.threads = 2;
+  detail::EngineData b = a;
+  b.crack_batch = false;
+  int batched_rounds = 0;
+  long broken = 0;
+  for (int round = 0; round < 30; ++round) {
+    const double step = 1e-5 * h * std::pow(2.0, round / 3.0);  // to beyond the softening
+    for (std::size_t i = 0; i < a.nodes.pos.size(); ++i) {
+      const double move = step * u(rng);
+      a.nodes.pos[i] += move;
+      b.nodes.pos[i] += move;
+    }
+    a.step = b.step = round;
+    const long na = detail::crack_forces(a), nb = detail::crack_forces(b);
+    broken += na;
+    ASSERT_EQ(na, nb) << "round " << round;
+    ASSERT_EQ(std::memcmp(a.slots.data(), b.slots.data(), a.slots.size() * sizeof(double)), 0)
+        << "round " << round;
+    ASSERT_EQ(a.cracks.damage, b.cracks.damage) << "round " << round;
+    ASSERT_EQ(a.cracks.state, b.cracks.state) << "round " << round;
+    ASSERT_EQ(a.cracks.mode, b.cracks.mode) << "round " << round;
+    ASSERT_EQ(a.cracks.broken_step, b.cracks.broken_step) << "round " << round;
+    ASSERT_EQ(std::memcmp(&a.energy.fracture, &b.energy.fracture, sizeof(double)), 0)
+        << "round " << round;
+    long yielding = 0;
+    for (int e = 0; e < nc; ++e)
+      yielding += a.cracks.state[e] == std::uint8_t(CrackState::kYielding);
+    batched_rounds += yielding > 0;
+  }
+  EXPECT_GT(broken, 10);          // breakage exercised
+  EXPECT_GT(batched_rounds, 10);  // softened elements in the batch exercised
 }
 
 }  // namespace
