@@ -9,54 +9,11 @@
 
 #include "rockfdem/error.hpp"
 
-#define ROLE_INLINE inline __attribute__((always_inline))
-
 namespace rockfdem::fdem::detail {
 namespace {
 
-/// W doubles in one register (GCC vector extension): arithmetic and
-/// comparisons act lane by lane; `m ? a : b` selects by the mask m.
-typedef double V2 __attribute__((vector_size(16)));
-typedef double V4 __attribute__((vector_size(32)));
-typedef double V8 __attribute__((vector_size(64)));
-
-namespace baseline {
-#include "contact_roles_kernel.hpp"
-}  // namespace baseline
-
-#if defined(__x86_64__)
-// Every function of the region is compiled for the set (GCC: target
-// pragmas; Clang: an attribute applied to each function).
-#if defined(__clang__)
-#pragma clang attribute push(__attribute__((target("avx2"))), apply_to = function)
-#else
-#pragma GCC push_options
-#pragma GCC target("avx2")
-#endif
-namespace avx2 {
-#include "contact_roles_kernel.hpp"
-}  // namespace avx2
-#if defined(__clang__)
-#pragma clang attribute pop
-#else
-#pragma GCC pop_options
-#endif
-
-#if defined(__clang__)
-#pragma clang attribute push(__attribute__((target("avx512f,avx512dq"))), apply_to = function)
-#else
-#pragma GCC push_options
-#pragma GCC target("avx512f,avx512dq")
-#endif
-namespace avx512 {
-#include "contact_roles_kernel.hpp"
-}  // namespace avx512
-#if defined(__clang__)
-#pragma clang attribute pop
-#else
-#pragma GCC pop_options
-#endif
-#endif
+#define ROCKFDEM_ISA_KERNEL "contact_roles_kernel.hpp"
+#include "isa_regions.hpp"
 
 void roles_baseline(PairBatch& b, int n, const RoleParams& rp) {
   baseline::roles_body<V2>(b, n, rp);
@@ -84,8 +41,8 @@ bool has_avx2() { return false; }
 /// The widest set the processor has, or a narrower one that the
 /// environment variable ROCKFDEM_ISA (sse2, avx2, avx512) asks for, for
 /// the contact and crack kernels alike: the results are the same bits,
-/// only the speed differs (bench_contact measures each). A set the processor lacks falls back to the widest it
-/// has; an unknown name is an input error (check_role_isa_request).
+/// only the speed differs (bench_contact measures each). A set the processor lacks falls back to
+/// the widest it has; an unknown name is an input error (check_role_isa_request).
 RoleIsa resolve_isa() {
   RoleIsa isa = has_avx512() ? RoleIsa::kAvx512 : has_avx2() ? RoleIsa::kAvx2 : RoleIsa::kBaseline;
   if (const char* ask = std::getenv("ROCKFDEM_ISA")) {

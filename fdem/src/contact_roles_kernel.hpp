@@ -1,9 +1,7 @@
 // The narrow phase's kernel (contact_roles.cpp), written once for any
-// vector width. No include guard on purpose: contact_roles.cpp includes it
-// once per instruction set, each time inside its own namespace and
-// `#pragma GCC target` region, so that every helper is compiled for the
-// same instruction set as the loop that inlines it (GCC lowers vector
-// operations per function, by that function's own target).
+// vector width. No include guard on purpose: isa_regions.hpp includes it
+// once per instruction set, each time inside its own namespace and target
+// region.
 //
 // Every lane evaluates every step of the scalar algorithm and keeps or
 // drops each result by a select:
@@ -20,42 +18,10 @@
 // define them ((b < a) ? b : a, ...), so a lane gives exactly the bits of
 // the scalar formulas.
 //
-// Expects: PairBatch, TriLanes, RoleParams (contact_roles.hpp), ROLE_INLINE, the vector
-// types V2, V4, V8.
+// Expects: PairBatch, TriLanes, RoleParams (contact_roles.hpp), the vector
+// types V2, V4, V8 (isa_regions.hpp).
 
-template <class V>
-constexpr int kWidth = sizeof(V) / sizeof(double);
-
-template <class V>
-ROLE_INLINE V load(const double* p) {
-  V v;
-  __builtin_memcpy(&v, p, sizeof v);
-  return v;
-}
-template <class V>
-ROLE_INLINE void store(double* p, V v) {
-  __builtin_memcpy(p, &v, sizeof v);
-}
-template <class V>
-ROLE_INLINE V all(double x) {
-  V v;
-  for (int i = 0; i < kWidth<V>; ++i) v[i] = x;
-  return v;
-}
-
-// The standard library's definitions, lane by lane.
-template <class V>
-ROLE_INLINE V min_of(V a, V b) {
-  return (b < a) ? b : a;
-}
-template <class V>
-ROLE_INLINE V max_of(V a, V b) {
-  return (a < b) ? b : a;
-}
-template <class V>
-ROLE_INLINE V clamp_to(V v, V lo, V hi) {
-  return (v < lo) ? lo : ((hi < v) ? hi : v);
-}
+#include "vector_lanes.hpp"
 
 /// The target's three barycentric coordinates at one point of each lane.
 template <class V>
@@ -65,13 +31,13 @@ struct Coords {
 
 /// lambda = la + (lb - la) xi, component by component.
 template <class V>
-ROLE_INLINE Coords<V> along(Coords<V> la, Coords<V> lb, V xi) {
+LANE_INLINE Coords<V> along(Coords<V> la, Coords<V> lb, V xi) {
   return {la.l0 + (lb.l0 - la.l0) * xi, la.l1 + (lb.l1 - la.l1) * xi, la.l2 + (lb.l2 - la.l2) * xi};
 }
 
 /// phi = 3 max(0, min_i lambda_i) at xi.
 template <class V>
-ROLE_INLINE V phi_at(Coords<V> la, Coords<V> lb, V xi) {
+LANE_INLINE V phi_at(Coords<V> la, Coords<V> lb, V xi) {
   const Coords<V> l = along(la, lb, xi);
   return 3.0 * max_of(V{}, min_of(min_of(l.l0, l.l1), l.l2));
 }
@@ -80,7 +46,7 @@ ROLE_INLINE V phi_at(Coords<V> la, Coords<V> lb, V xi) {
 /// they cross strictly inside (lo, hi), else lo. (A crossing needs exactly
 /// one negative difference, so the differences differ and x is defined.)
 template <class V>
-ROLE_INLINE V crossing(V ai, V aj, V bi, V bj, V lo, V hi) {
+LANE_INLINE V crossing(V ai, V aj, V bi, V bj, V lo, V hi) {
   const V zero{};
   const V d0 = ai - aj, d1 = bi - bj;
   const V x = d0 / (d0 - d1);
@@ -92,7 +58,7 @@ ROLE_INLINE V crossing(V ai, V aj, V bi, V bj, V lo, V hi) {
 /// Clips [lo, hi] by one coordinate going from la (xi = 0) to lb (1);
 /// negative at both ends empties it for good (hi = -1 < lo).
 template <class V>
-ROLE_INLINE void clip(V la, V lb, V& lo, V& hi) {
+LANE_INLINE void clip(V la, V lb, V& lo, V& hi) {
   const V zero{};
   const V x = la / (la - lb);
   const auto out_a = la < zero, out_b = lb < zero;
@@ -102,7 +68,7 @@ ROLE_INLINE void clip(V la, V lb, V& lo, V& hi) {
 
 /// Sorts a <= b.
 template <class V>
-ROLE_INLINE void order(V& a, V& b) {
+LANE_INLINE void order(V& a, V& b) {
   const V lo = min_of(a, b);
   b = max_of(a, b);
   a = lo;
@@ -110,22 +76,10 @@ ROLE_INLINE void order(V& a, V& b) {
 
 /// Adds segment [x0, x1] (phi pa, pb at its ends) to the integrals.
 template <class V>
-ROLE_INLINE void segment(V x0, V x1, V pa, V pb, V& i0, V& i1) {
+LANE_INLINE void segment(V x0, V x1, V pa, V pb, V& i0, V& i1) {
   const V w = x1 - x0;
   i0 += 0.5 * w * (pa + pb);
   i1 += w / 6.0 * (pa * (2.0 * x0 + x1) + pb * (x0 + 2.0 * x1));
-}
-
-/// A comparison's lane mask.
-template <class V>
-using Mask = decltype(V{} < V{});
-
-/// Whether any lane of m is set.
-template <class M>
-ROLE_INLINE bool any_lane(M m) {
-  long set = 0;
-  for (int i = 0; i < static_cast<int>(sizeof(M) / sizeof(m[0])); ++i) set |= m[i];
-  return set != 0;
 }
 
 /// Edge k (corners a -> e) of contactor c against target t in the lanes
@@ -134,7 +88,7 @@ ROLE_INLINE bool any_lane(M m) {
 /// the per-edge arrays. Adds the edge's forces to fc (contactor) and ft
 /// (target) where it touches, and returns where it does.
 template <class V, bool Damping, bool Friction>
-ROLE_INLINE Mask<V> edge_lanes(PairBatch& b, int r, const TriLanes& c, const TriLanes& t, int k,
+LANE_INLINE Mask<V> edge_lanes(PairBatch& b, int r, const TriLanes& c, const TriLanes& t, int k,
                                int a, int e, Coords<V> la, Coords<V> lb, Mask<V> valid, int row,
                                V* fc, V* ft, const RoleParams& rp) {
   const V zero{};
@@ -233,7 +187,7 @@ ROLE_INLINE Mask<V> edge_lanes(PairBatch& b, int r, const TriLanes& c, const Tri
 /// from r): lambda_i vanishes at target corner i + 1 and grows with its
 /// gradient.
 template <class V>
-ROLE_INLINE Coords<V> corner_coords(const TriLanes& c, const TriLanes& t, int r, int v) {
+LANE_INLINE Coords<V> corner_coords(const TriLanes& c, const TriLanes& t, int r, int v) {
   const V px = load<V>(&c.x[v][r]), py = load<V>(&c.y[v][r]);
   auto l = [&](int i, int j) {
     return load<V>(&t.gx[i][r]) * (px - load<V>(&t.x[j][r])) +
@@ -245,7 +199,7 @@ ROLE_INLINE Coords<V> corner_coords(const TriLanes& c, const TriLanes& t, int r,
 /// Contactor c's three edges against target t (role `role`); returns where
 /// some edge touches.
 template <class V, bool Damping, bool Friction>
-ROLE_INLINE Mask<V> role_lanes(PairBatch& b, int r, const TriLanes& c, const TriLanes& t, int role,
+LANE_INLINE Mask<V> role_lanes(PairBatch& b, int r, const TriLanes& c, const TriLanes& t, int role,
                                V* fc, V* ft, const RoleParams& rp) {
   const Mask<V> valid = load<V>(&t.two_a[r]) > V{};
   const Coords<V> l0 = corner_coords<V>(c, t, r, 0), l1 = corner_coords<V>(c, t, r, 1),
@@ -263,7 +217,7 @@ ROLE_INLINE Mask<V> role_lanes(PairBatch& b, int r, const TriLanes& c, const Tri
 /// The batch, W lanes at a time (lanes past n compute on whatever the batch
 /// holds there and are never read).
 template <class V, bool Damping, bool Friction>
-ROLE_INLINE void roles_loop(PairBatch& b, int n, const RoleParams& rp) {
+LANE_INLINE void roles_loop(PairBatch& b, int n, const RoleParams& rp) {
   for (int r = 0; r < n; r += kWidth<V>) {
     V f[12];
     for (int i = 0; i < 12; ++i) f[i] = V{};
@@ -276,7 +230,7 @@ ROLE_INLINE void roles_loop(PairBatch& b, int n, const RoleParams& rp) {
 
 /// The loop for the step's settings (no branch on them inside it).
 template <class V>
-ROLE_INLINE void roles_body(PairBatch& b, int n, const RoleParams& rp) {
+LANE_INLINE void roles_body(PairBatch& b, int n, const RoleParams& rp) {
   const bool damping = rp.damping > 0.0;
   if (damping && rp.friction)
     roles_loop<V, true, true>(b, n, rp);

@@ -2,50 +2,13 @@
 // for each instruction set, chosen as the contact kernel's is.
 #include "crack_batch.hpp"
 
-#define ROLE_INLINE inline __attribute__((always_inline))
-
 namespace rockfdem::fdem::detail {
 namespace {
 
-typedef double V2 __attribute__((vector_size(16)));
-typedef double V4 __attribute__((vector_size(32)));
-typedef double V8 __attribute__((vector_size(64)));
-
-namespace baseline {
-#include "crack_batch_kernel.hpp"
-}  // namespace baseline
+#define ROCKFDEM_ISA_KERNEL "crack_batch_kernel.hpp"
+#include "isa_regions.hpp"
 
 #if defined(__x86_64__)
-#if defined(__clang__)
-#pragma clang attribute push(__attribute__((target("avx2"))), apply_to = function)
-#else
-#pragma GCC push_options
-#pragma GCC target("avx2")
-#endif
-namespace avx2 {
-#include "crack_batch_kernel.hpp"
-}  // namespace avx2
-#if defined(__clang__)
-#pragma clang attribute pop
-#else
-#pragma GCC pop_options
-#endif
-
-#if defined(__clang__)
-#pragma clang attribute push(__attribute__((target("avx512f,avx512dq"))), apply_to = function)
-#else
-#pragma GCC push_options
-#pragma GCC target("avx512f,avx512dq")
-#endif
-namespace avx512 {
-#include "crack_batch_kernel.hpp"
-}  // namespace avx512
-#if defined(__clang__)
-#pragma clang attribute pop
-#else
-#pragma GCC pop_options
-#endif
-
 __attribute__((target("avx512f,avx512dq"))) void crack_avx512(CrackBatch& b, int n,
                                                               const CrackConstants& k) {
   avx512::crack_loop<V8>(b, n, k);
