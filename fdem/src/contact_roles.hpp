@@ -17,6 +17,8 @@
 // order, whichever width runs it (for finite potentials: docs/engine.md).
 #pragma once
 
+#include "simd_isa.hpp"
+
 namespace rockfdem::fdem::detail {
 
 /// Pairs per batch: the batch's arrays (about 25 kB) stay in the L1 cache.
@@ -62,29 +64,7 @@ struct PairBatch {
 };
 
 /// Lanes 0 .. n - 1 of `b`: both roles of every pair, their forces,
-/// springs and dissipation.
-void run_roles(PairBatch& b, int n, const RoleParams& rp);
-
-/// Instruction sets run_roles may use; kBest is the widest this processor
-/// has. The others exist so that tests can compare them bit by bit.
-enum class RoleIsa { kBaseline, kAvx2, kAvx512, kBest };
-
-/// Whether this processor can run `isa`.
-bool role_isa_available(RoleIsa isa);
-
-/// run_roles on the given instruction set (must be available).
-void run_roles(PairBatch& b, int n, const RoleParams& rp, RoleIsa isa);
-
-/// Name of the instruction set kBest resolves to ("avx512", "avx2", "sse2";
-/// "baseline" on other processors, at their own 128-bit width).
-const char* role_isa_name();
-
-/// The instruction set kBest resolves to (the crack kernel follows it).
-RoleIsa resolved_role_isa();
-
-/// Checks ROCKFDEM_ISA (unset, sse2, avx2 or avx512; else throws
-/// InputError) and resolves kBest, once per process, outside any parallel
-/// region (the Engine's constructor calls it).
-void check_role_isa_request();
+/// springs and dissipation, on instruction set `isa` (must be available).
+void run_roles(PairBatch& b, int n, const RoleParams& rp, SimdIsa isa = SimdIsa::kBest);
 
 }  // namespace rockfdem::fdem::detail

@@ -1,5 +1,5 @@
 // run_crack_batch (crack_batch.hpp): the kernel of crack_batch_kernel.hpp
-// for each instruction set, chosen as the contact kernel's is.
+// for each instruction set, chosen by simd_isa.hpp.
 #include "crack_batch.hpp"
 
 namespace rockfdem::fdem::detail {
@@ -20,14 +20,14 @@ __attribute__((target("avx2"))) void crack_avx2(CrackBatch& b, int n, const Crac
 
 }  // namespace
 
-void run_crack_batch(CrackBatch& b, int n, const CrackConstants& k, RoleIsa isa) {
-  if (isa == RoleIsa::kBest) isa = resolved_role_isa();
+void run_crack_batch(CrackBatch& b, int n, const CrackConstants& k, SimdIsa isa) {
+  if (isa == SimdIsa::kBest) isa = resolved_simd_isa();
   switch (isa) {
 #if defined(__x86_64__)
-    case RoleIsa::kAvx512:
+    case SimdIsa::kAvx512:
       crack_avx512(b, n, k);
       return;
-    case RoleIsa::kAvx2:
+    case SimdIsa::kAvx2:
       crack_avx2(b, n, k);
       return;
 #endif

@@ -14,8 +14,8 @@
 // their order (no contraction), as in contact_roles.hpp.
 #pragma once
 
-#include "contact_roles.hpp"
 #include "rockfdem/fdem/crack_law.hpp"
+#include "simd_isa.hpp"
 
 namespace rockfdem::fdem::detail {
 
@@ -36,6 +36,6 @@ struct CrackBatch {
 };
 
 /// Lanes 0 .. n - 1 of `b`, all of rock law `k`, none broken.
-void run_crack_batch(CrackBatch& b, int n, const CrackConstants& k, RoleIsa isa = RoleIsa::kBest);
+void run_crack_batch(CrackBatch& b, int n, const CrackConstants& k, SimdIsa isa = SimdIsa::kBest);
 
 }  // namespace rockfdem::fdem::detail

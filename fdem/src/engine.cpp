@@ -18,7 +18,7 @@
 
 #include "boundary.hpp"
 #include "contact.hpp"
-#include "contact_roles.hpp"
+#include "simd_isa.hpp"
 #include "crack_elements.hpp"
 #include "crack_prestress.hpp"
 #include "energy.hpp"
@@ -115,7 +115,7 @@ void check_index(std::size_t i, std::size_t n, const char* what) {
 
 Engine::Engine(const ModelInput& in) : impl_(std::make_unique<Impl>()) {
   detail::validate_input(in);
-  detail::check_role_isa_request();  // resolves the vector kernels' set, serially
+  detail::check_simd_isa_request();  // resolves the vector kernels' set, serially
   auto& d = impl_->d;
   d.materials = in.materials;
   for (const Material& m : in.materials) {
@@ -451,7 +451,7 @@ bool Engine::contact_active() const {
   return impl_->d.contact_on && !impl_->d.contact.pairs.empty();
 }
 
-void check_environment() { detail::check_role_isa_request(); }
+void check_environment() { detail::check_simd_isa_request(); }
 
 ContactCounters Engine::contact_counters() const {
   const auto& c = impl_->d.contact;
@@ -464,7 +464,7 @@ ContactCounters Engine::contact_counters() const {
   r.steps_with_pairs = c.steps_with_pairs;
   r.steps_skipped = c.steps_skipped;
   r.updates = c.updates;
-  r.kernel = detail::role_isa_name();
+  r.kernel = detail::simd_isa_name();
   return r;
 }
 

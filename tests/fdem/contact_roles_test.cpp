@@ -14,7 +14,7 @@ namespace {
 
 using rockfdem::fdem::detail::kPairBatch;
 using rockfdem::fdem::detail::PairBatch;
-using rockfdem::fdem::detail::RoleIsa;
+using rockfdem::fdem::detail::SimdIsa;
 using rockfdem::fdem::detail::RoleParams;
 using rockfdem::fdem::detail::TriLanes;
 
@@ -343,10 +343,10 @@ TEST(ContactRoles, every_instruction_set_gives_the_same_bits) {
     PairBatch input = random_batch(seed, n).b;
     input.tri[0].two_a[5] = -1.0;
     PairBatch reference = input;
-    rockfdem::fdem::detail::run_roles(reference, n, rp, RoleIsa::kBaseline);
+    rockfdem::fdem::detail::run_roles(reference, n, rp, SimdIsa::kBaseline);
     for (int r = 0; r < n; ++r) touching += reference.touching[r] != 0.0;
-    for (RoleIsa isa : {RoleIsa::kAvx2, RoleIsa::kAvx512}) {
-      if (!rockfdem::fdem::detail::role_isa_available(isa)) continue;
+    for (SimdIsa isa : {SimdIsa::kAvx2, SimdIsa::kAvx512}) {
+      if (!rockfdem::fdem::detail::simd_isa_available(isa)) continue;
       PairBatch wide = input;
       rockfdem::fdem::detail::run_roles(wide, n, rp, isa);
       for (int r = 0; r < n; ++r) {
@@ -451,8 +451,8 @@ Draw tricky_batch(unsigned seed, int n) {
 TEST(ContactRoles, matches_the_scalar_loop_bit_for_bit) {
   const int n = kPairBatch - 1;
   int touching = 0, compared = 0;
-  for (RoleIsa isa : {RoleIsa::kBaseline, RoleIsa::kAvx2, RoleIsa::kAvx512}) {
-    if (!rockfdem::fdem::detail::role_isa_available(isa)) continue;
+  for (SimdIsa isa : {SimdIsa::kBaseline, SimdIsa::kAvx2, SimdIsa::kAvx512}) {
+    if (!rockfdem::fdem::detail::simd_isa_available(isa)) continue;
     PairBatch b{};  // reused: lanes past n keep an earlier draw
     for (unsigned seed = 1; seed <= 40; ++seed)
       for (int setting = 0; setting < 4; ++setting) {

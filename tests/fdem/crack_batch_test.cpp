@@ -20,7 +20,7 @@ namespace {
 using namespace rockfdem::fdem;
 using detail::CrackBatch;
 using detail::kCrackBatch;
-using detail::RoleIsa;
+using detail::SimdIsa;
 
 struct Element {
   double x[4], y[4], off_o[3], off_s[3], damage[3];
@@ -93,8 +93,8 @@ bool scalar_element(const CrackConstants& k, const Element& e, bool offsets, dou
 TEST(CrackBatch, matches_the_scalar_element_bit_for_bit) {
   const CrackConstants k = make_crack_constants(Material{});
   int below = 0, past = 0;
-  for (RoleIsa isa : {RoleIsa::kBaseline, RoleIsa::kAvx2, RoleIsa::kAvx512}) {
-    if (!detail::role_isa_available(isa)) continue;
+  for (SimdIsa isa : {SimdIsa::kBaseline, SimdIsa::kAvx2, SimdIsa::kAvx512}) {
+    if (!detail::simd_isa_available(isa)) continue;
     std::mt19937 rng(11);
     CrackBatch b{};
     for (int draw = 0; draw < 200; ++draw) {
