@@ -181,9 +181,15 @@ void Engine::Impl::refresh() {
   if (critical_dt >= 0) return;
   critical_dt = detail::critical_dt(d);
   if (d.contact_on) {  // the contact penalty adds its frequency to the model's
-    const double omega = 2.0 / critical_dt, xi = d.contact.settings.damping_ratio;
-    critical_dt = 2.0 / std::sqrt(omega * omega + detail::contact_omega2(d)) *
-                  (std::sqrt(1.0 + xi * xi) - xi);
+    const double omega = 2.0 / critical_dt, w2 = detail::contact_omega2(d);
+    // Both terms as effective frequencies, damping included: the model's
+    // limit is already reduced for its damping; the contact's own ratio and
+    // the local damping (which acts on contact forces too) raise its
+    // frequency by damping_stiffening.
+    const double f = w2 > 0 ? detail::damping_stiffening(d, std::sqrt(w2),
+                                                         d.contact.settings.damping_ratio)
+                            : 1.0;
+    critical_dt = 2.0 / std::sqrt(omega * omega + w2 * f * f);
   }
   if (auto_dt) d.dt = dt_safety * critical_dt;
 }

@@ -224,6 +224,11 @@ double damped_limit(const EngineData& d, double omega, double xi_viscous) {
   return 2.0 / omega * (std::sqrt(1.0 + xi * xi) - xi) / std::sqrt(1.0 + d.damping.local);
 }
 
+double damping_stiffening(const EngineData& d, double omega, double xi_viscous) {
+  const double xi = xi_viscous + d.damping.mass_proportional / (2.0 * omega);
+  return std::sqrt(1.0 + d.damping.local) / (std::sqrt(1.0 + xi * xi) - xi);
+}
+
 double power_critical_dt(const EngineData& d, int max_iterations) {
   const long nn = static_cast<long>(d.nodes.size());
   const long n_blocks = (nn + kSumBlock - 1) / kSumBlock;

@@ -14,6 +14,11 @@ double critical_dt(const EngineData& d);
 /// 2 / omega reduced for viscous, mass-proportional and local damping.
 double damped_limit(const EngineData& d, double omega, double xi_viscous);
 
+/// The factor by which that damping raises omega's effective frequency,
+/// sqrt(1 + alpha) / (sqrt(1 + xi^2) - xi): 2 / (omega f) is damped_limit
+/// up to rounding, and exactly 1 without damping.
+double damping_stiffening(const EngineData& d, double omega, double xi_viscous);
+
 /// Power-iteration estimate alone.
 double power_critical_dt(const EngineData& d, int max_iterations);
 

@@ -6,6 +6,8 @@
 // = (2/3) ft op (pre-peak branch) + Gf (softening branch).
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include "rockfdem/fdem/crack_law.hpp"
 #include "test_models.hpp"
 
@@ -145,6 +147,106 @@ TEST(CrackElement, mixed_path_breaks_on_mixed_criterion) {
   drive(opening_only, h, 0, 1, r.u_at_break * o_range / len, 3000);
   EXPECT_NE(opening_only.crack_state(0), CrackState::kBroken);
   EXPECT_EQ(opening_only.crack_state(0), CrackState::kYielding);
+}
+
+/// Places triangle 1 rotated rigidly by theta about its corner at A (0, 0),
+/// triangle 0 as meshed, all at rest: the opening grows linearly from 0 at
+/// A to about h theta at B. The next step's forces are those of this
+/// placement.
+void rotate_upper(Engine& e, double h, double theta) {
+  const auto top = e.triangle_nodes(1), bottom = e.triangle_nodes(0);
+  const double ref[4][2] = {{0, 0}, {h, 0}, {h / 2, -h}, {h / 2, h}};  // A, B, C, D
+  const int top_vertex[3] = {0, 1, 3}, bottom_vertex[3] = {0, 2, 1};
+  const double c = std::cos(theta), s = std::sin(theta);
+  for (int k = 0; k < 3; ++k) {
+    const double* p = ref[top_vertex[k]];
+    e.set_node_state(top[k], c * p[0] - s * p[1], s * p[0] + c * p[1], 0, 0);
+    const double* q = ref[bottom_vertex[k]];
+    e.set_node_state(bottom[k], q[0], q[1], 0, 0);
+  }
+}
+
+// Simpson's weights h/6, 2h/3, h/6 with the midpoint split in half are
+// Simpson's rule for the consistent nodal forces int sigma N_i dx, exact
+// when the traction is quadratic along the element (pre-peak tension
+// under a linear opening). Reference: 400 Gauss-Legendre panels of the
+// point law at o(x) = o0 (1 - x/h) + o1 x/h, from the reference definitions
+// of t, e, n and delta. The trapezoid weights (h/2, 0, h/2) give the same
+// forces for a uniform opening (every other test here) but none at A,
+// against 35% of the total here.
+TEST(CrackElement, hinge_opening_gets_the_consistent_nodal_forces) {
+  const double h = 0.01;
+  const Material m = test::rock();
+  const CrackConstants k = make_crack_constants(m);
+  const double op = 2 * h * m.tensile_strength / k.pn;
+  Engine e(test::two_triangles(h, m));
+  rotate_upper(e, h, 0.6 * op / h);  // o at B: 0.6 op, pre-peak everywhere
+  const auto nd = e.crack_nodes(0);
+  double x[4], y[4];
+  for (int j = 0; j < 4; ++j) {
+    x[j] = e.positions()[2 * nd[j]];
+    y[j] = e.positions()[2 * nd[j] + 1];
+  }
+  e.step();
+  ASSERT_EQ(e.crack_state(0), CrackState::kIntact);
+  const double tx = 0.5 * (x[1] + x[2] - x[0] - x[3]), ty = 0.5 * (y[1] + y[2] - y[0] - y[3]);
+  const double len = std::hypot(tx, ty), ex = tx / len, ey = ty / len, nx = -ey, ny = ex;
+  const double o0 = (x[0] - x[3]) * nx + (y[0] - y[3]) * ny;
+  const double o1 = (x[1] - x[2]) * nx + (y[1] - y[2]) * ny;
+  const double s0 = (x[0] - x[3]) * ex + (y[0] - y[3]) * ey;
+  const double s1 = (x[1] - x[2]) * ex + (y[1] - y[2]) * ey;
+  // int_0^1 (sigma n + tau e) N_end(xi) h dxi for end 0 (N = 1 - xi) and 1.
+  const double gx[2] = {-1 / std::sqrt(3.0), 1 / std::sqrt(3.0)};
+  double fn[2] = {0, 0}, ft[2] = {0, 0};
+  const int panels = 400;
+  for (int i = 0; i < panels; ++i)
+    for (double g : gx) {
+      const double xi = (i + 0.5 + 0.5 * g) / panels, w = 0.5 / panels * len;
+      double damage = 0;
+      const CrackPoint p =
+          crack_point(k, o0 + (o1 - o0) * xi, s0 + (s1 - s0) * xi, len, damage);
+      fn[0] += w * p.sigma * (1 - xi);
+      fn[1] += w * p.sigma * xi;
+      ft[0] += w * p.tau * (1 - xi);
+      ft[1] += w * p.tau * xi;
+    }
+  // A real gradient (1.8x here; end 0 happens to be B).
+  ASSERT_GT(std::max(fn[0], fn[1]), 1.5 * std::min(fn[0], fn[1]));
+  // Face (0, 1) receives -(tau e + sigma n) N, face (3, 2) the opposite.
+  const int face[4] = {0, 1, 1, 0};
+  const double sign[4] = {-1, -1, 1, 1};
+  const double scale = fn[1];
+  for (int j = 0; j < 4; ++j) {
+    const int end = face[j];
+    const auto f = e.node_force(nd[j]);
+    EXPECT_NEAR(f[0], sign[j] * (ft[end] * ex + fn[end] * nx), 1e-9 * scale) << "node " << j;
+    EXPECT_NEAR(f[1], sign[j] * (ft[end] * ey + fn[end] * ny), 1e-9 * scale) << "node " << j;
+  }
+}
+
+// Breakage needs D >= 1 at two of the three points. Hinged open about A,
+// end B reaches D = 1 at o_B = op + (or - op) but the element holds; it
+// breaks only when the midpoint (o_B / 2) gets there, at o_B = 2 (or).
+// A one-point rule would break at half that, a three-point rule never.
+TEST(CrackElement, breaks_when_two_of_three_points_are_fully_damaged) {
+  const double h = 0.01;
+  const Material m = test::rock();
+  const CrackConstants k = make_crack_constants(m);
+  const double op = 2 * h * m.tensile_strength / k.pn, full = op + k.open_range;
+  Engine e(test::two_triangles(h, m));
+  const int n = 2000;
+  double o_break = -1;
+  for (int i = 1; i <= n && o_break < 0; ++i) {
+    const double o_b = 2.5 * full * i / n;
+    rotate_upper(e, h, std::asin(o_b / h));
+    e.step();
+    if (e.crack_state(0) == CrackState::kBroken) o_break = o_b;
+  }
+  ASSERT_GT(o_break, 0) << "never broke";
+  // The opening at B is h sin(theta) up to the tangent's tilt (theta / 2,
+  // a relative 3e-6 here); one increment is 0.125% of 2 (or).
+  EXPECT_NEAR(o_break, 2 * full, 0.003 * full);
+  EXPECT_EQ(e.crack_mode(0), FailureMode::kModeI);
 }
 
 }  // namespace

@@ -80,6 +80,14 @@ TEST(CrackLaw, rock_shear_strength_follows_mohr_coulomb) {
   EXPECT_NEAR(p.sigma, sigma, 1e-6 * std::fabs(sigma));
   EXPECT_NEAR(p.tau, fs, 1e-6 * fs);
   EXPECT_EQ(damage, 0.0);
+  // In tension (tension positive: sigma > 0) the strength stays c; the
+  // compression formula would lower it to c - sigma tan(phi).
+  const double op = 2 * h * m.tensile_strength / k.pn, sp = 2 * h * m.cohesion / k.pt;
+  double open_damage = 0;
+  const CrackPoint t = crack_point(k, 0.5 * op, sp, h, open_damage);
+  ASSERT_GT(t.sigma, 0.5 * m.tensile_strength);
+  EXPECT_NEAR(t.tau, m.cohesion, 1e-9 * m.cohesion);
+  EXPECT_EQ(open_damage, 0.0);
 }
 
 // Seed eqs. 11-19: yield at op, axial stress sigma_y + D (sigma_u - sigma_y),

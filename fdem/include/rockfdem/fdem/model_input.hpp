@@ -38,8 +38,9 @@ struct Material {
   double gf_II = 50;                  ///< mode II fracture energy [J/m^2]
   double normal_penalty = 0;          ///< crack penalty pn [Pa]; 0 selects 10 E
   double tangential_penalty = 0;      ///< crack penalty pt [Pa]; 0 selects pn
-  double damping_ratio = 0;           ///< triangle viscous damping as a fraction of critical:
-                                      ///< eta = ratio * 2 h sqrt(E rho), h = smallest altitude
+  double damping_ratio = 0;           ///< triangle viscous damping, a multiple of Munjiza's
+                                      ///< eta = 2 h sqrt(E rho) (h = smallest altitude); the
+                                      ///< stiffest mode's ratio is 1.7-1.8 times it
   CrackLaw crack_law = CrackLaw::kRock;
   // Bolt steel only (CrackLaw::kBoltSteel), seed eqs. 11-19.
   double yield_strength = 0;        ///< sigma_y [Pa]
