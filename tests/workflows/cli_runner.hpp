@@ -10,6 +10,7 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <sstream>
+#include <stdexcept>
 #include <string>
 
 namespace rockfdem::test {
@@ -52,5 +53,46 @@ inline std::string read_text(const std::filesystem::path& p) {
 }
 
 const std::string kTestDir = ROCKFDEM_TEST_DIR;
+
+/// A user's .msh scene: `dir`/mesh/mesh.msh meshed from restart_support.toml
+/// (a circular tunnel with a lining ring and a fracture zone, 1.7k
+/// triangles) and `dir`/scene.toml mapping its groups, with no [[stages]];
+/// `extra` is appended to the scene. Returns the scene's path.
+inline std::filesystem::path msh_scene(const std::filesystem::path& dir,
+                                       const std::string& extra = "") {
+  std::filesystem::create_directories(dir);
+  const Result meshed = run("mesh " + kTestDir + "/restart_support.toml -q -o " +
+                            (dir / "mesh").string());
+  if (meshed.code != 0) throw std::runtime_error("meshing failed: " + meshed.output);
+  const std::filesystem::path scene = dir / "scene.toml";
+  std::ofstream(scene) << R"([model]
+kind = "msh"
+[msh]
+file = "mesh/mesh.msh"
+zones = { rock = "rock", core = "core", lining = "lining" }
+edges = { bottom = "bottom", right = "right", top = "top", left = "left", excavation = "excavation", lining_inner = "lining_inner" }
+fracture_group = "fracture"
+[materials.rock]
+young = 3.0e9
+poisson = 0.25
+tensile_strength = 1.0e6
+cohesion = 3.0e6
+fracture_energy_I = 30.0
+fracture_energy_II = 150.0
+[materials.lining]
+young = 5.0e8
+poisson = 0.3
+[insitu]
+sigma_h = 18.2e6
+sigma_v = 11.4e6
+alpha = [1.0, 0.01]
+[engine]
+steps = 200
+[output]
+every_steps = 100
+plots = false
+)" << extra;
+  return scene;
+}
 
 }  // namespace rockfdem::test

@@ -401,3 +401,24 @@ TEST(Cli, lining_interface_debonds_when_weak_and_holds_when_strong) {
   EXPECT_EQ(lining[1]["interface_broken"].get<long>(), 0);
   EXPECT_LT(vault[1], vault[0]);
 }
+
+// A --set path into an array of tables needs a whole-number index the scene
+// has: anything else is bad input (exit 2, one line naming the path and the
+// indices allowed), not an internal error.
+TEST(Cli, set_with_a_bad_array_index_exits_two_naming_it) {
+  const std::string seed = std::string(ROCKFDEM_SOURCE_DIR) + "/scenes/tunnel-seed.toml";
+  const std::pair<const char*, const char*> cases[] = {
+      {"stages[x].max_steps=1", "allowed: stages[0] to stages[5]"},
+      {"stages[].max_steps=1", "allowed: stages[0] to stages[5]"},
+      {"stages[99999999999999999999].max_steps=1", "allowed: stages[0] to stages[5]"},
+      {"stages[-1].max_steps=1", "allowed: stages[0] to stages[5]"},
+      {"bolt_fan[a].count=1", "allowed: bolt_fan[0] to bolt_fan[1]"},
+      {"bolt[0].kind=cable", "the scene has no [[bolt]]"}};
+  for (const auto& [set, allowed] : cases) {
+    const Result r = run("check " + seed + " --set '" + set + "'");
+    EXPECT_EQ(r.code, 2) << set << ": " << r.output;
+    EXPECT_NE(r.output.find(std::string("--set ") + set), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find(allowed), std::string::npos) << set << ": " << r.output;
+    EXPECT_EQ(std::count(r.output.begin(), r.output.end(), '\n'), 1) << r.output;
+  }
+}

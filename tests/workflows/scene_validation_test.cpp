@@ -3,6 +3,8 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <functional>
+#include <set>
 #include <fstream>
 #include <sstream>
 
@@ -32,6 +34,11 @@ std::string error_of(const std::function<void()>& f) {
     return e.what();
   }
   return "";
+}
+
+// Every one of `parts` is in `msg`.
+void expect_contains(const std::string& msg, std::initializer_list<std::string> parts) {
+  for (const std::string& p : parts) EXPECT_NE(msg.find(p), std::string::npos) << p << " in: " << msg;
 }
 
 }  // namespace
@@ -143,4 +150,96 @@ TEST(Scene, override_reaches_array_of_tables) {
   EXPECT_EQ(s.stages.back().max_steps, 123);
   const std::string msg = error_of([&] { load_scene(seed, {"stages[9].max_steps=5"}); });
   EXPECT_NE(msg.find("stages[9]"), std::string::npos) << msg;
+}
+
+// A --set value is cited as the command-line override, never as a line of
+// the scene file (its TOML was parsed from the command line), and a choice
+// inside a table lists its choices.
+TEST(Scene, override_inside_a_table_is_cited_as_set_with_its_choices) {
+  const std::string good = kTestDir + "/good_circular.toml";
+  const std::string msg = error_of([&] { load_scene(good, {"msh.zones={ rock = \"granite\" }"}); });
+  expect_contains(msg, {"--set key 'msh.zones.rock' = \"granite\"",
+                        "allowed: one of \"rock\", \"core\", \"lining\""});
+  EXPECT_EQ(msg.find(good + ": --set "), 0u) << msg;
+}
+
+// Numbers in messages are the shortest text that reads back (8.8, not
+// 8.8000000000000007), and a check between two keys names the one the user
+// changed with --set: the seed tunnel widened to 200 m blames the span.
+TEST(Scene, cross_key_errors_name_the_changed_key_with_short_numbers) {
+  const std::string seed = std::string(ROCKFDEM_SOURCE_DIR) + "/scenes/tunnel-seed.toml";
+  expect_contains(error_of([&] { load_scene(seed, {"tunnel.span=200"}); }),
+                  {"--set key 'tunnel.span' = 200", "tunnel.height = 8.8 m",
+                   "allowed: at most 17.6 m"});
+  expect_contains(error_of([&] { load_scene(seed, {"tunnel.height=5"}); }),
+                  {"--set key 'tunnel.height' = 5", "span/2", "allowed: at least 5.65 m"});
+  // From the file, the key the check is about is named, with its value as written.
+  std::string text = read_file(seed);
+  text.replace(text.find("span = 11.3"), 11, "span = 20.0");
+  const std::string file = error_of([&] { parse_scene(text, "wide.toml", "."); });
+  EXPECT_NE(file.find("key 'tunnel.height' = 8.8:"), std::string::npos) << file;
+  EXPECT_EQ(file.find("00000"), std::string::npos) << file;
+  expect_contains(error_of([&] { load_scene(seed, {"mesh.size_near=9"}); }),
+                  {"key 'mesh.size_near' = 9", "must be at most mesh.size_far = 5 m"});
+}
+
+// The reference's default stage list is the one the reader builds: a
+// tunnel with a ring and bolts and no [[stages]] gets lining, bolts,
+// remove_core, equilibrium; a ring active in the implicit stage is not
+// installed again.
+TEST(Scene, default_stage_list_is_the_documented_one) {
+  std::string text = read_file(std::string(ROCKFDEM_SOURCE_DIR) + "/scenes/tunnel-seed.toml");
+  text = text.substr(0, text.find("[[stages]]"));
+  const auto kinds = [](const Scene& s) {
+    std::string out;
+    for (const StageSpec& st : s.stages) out += (out.empty() ? "" : ", ") + st.kind;
+    return out;
+  };
+  EXPECT_EQ(kinds(parse_scene(text, "seed", ".")), "lining, bolts, remove_core, equilibrium");
+  EXPECT_EQ(kinds(parse_scene(text, "seed", ".", {"insitu.lining_active=true"})),
+            "bolts, remove_core, equilibrium");
+  const KeySpec* kind = find_key("stages[].kind");
+  ASSERT_NE(kind, nullptr);
+  EXPECT_NE(kind->description.find("Without [[stages]]: insitu, lining (if the model has a ring "
+                                   "not already active in the implicit stage), bolts (if the "
+                                   "scene has any), remove_core, equilibrium."),
+            std::string::npos)
+      << kind->description;
+}
+
+// Each section of the reference appears once (the bolt tables did twice).
+TEST(Scene, reference_lists_each_section_once) {
+  const std::string md = scene_reference_markdown();
+  std::set<std::string> seen;
+  for (std::size_t at = md.find("\n## ["); at != std::string::npos; at = md.find("\n## [", at + 1)) {
+    const std::string header = md.substr(at + 1, md.find('\n', at + 1) - at - 1);
+    EXPECT_TRUE(seen.insert(header).second) << header << " twice";
+  }
+  EXPECT_GE(seen.size(), 20u);
+}
+
+// The documented range is the checked one: the implicit stage needs
+// compression, so 0 is refused for a tunnel and documented as such; a
+// specimen (which has no in-situ stress) needs neither key. A specimen has
+// no default element size: the reference says so and the reader asks for it.
+TEST(Scene, documented_defaults_and_ranges_are_the_checked_ones) {
+  for (const char* key : {"insitu.sigma_h", "insitu.sigma_v"}) {
+    const KeySpec* k = find_key(key);
+    ASSERT_NE(k, nullptr);
+    EXPECT_EQ(describe_allowed(*k), "> 0 (Pa)") << key;
+    expect_contains(error_of([&] {
+                      load_scene(kTestDir + "/good_circular.toml", {std::string(key) + "=0"});
+                    }),
+                    {key, "> 0 (Pa)"});
+  }
+  EXPECT_NO_THROW(load_scene(kTestDir + "/ucs_small.toml"));
+  const std::string ucs = "[model]\nkind = \"ucs\"\n[materials.rock]\nyoung = 1e10\n"
+                          "poisson = 0.2\ntensile_strength = 1e6\ncohesion = 2e6\n"
+                          "fracture_energy_I = 10\nfracture_energy_II = 50\n";
+  expect_contains(error_of([&] { parse_scene(ucs, "ucs.toml", "."); }),
+                  {"missing key 'mesh.size_near'", "at most 0.025 m"});
+  EXPECT_NO_THROW(parse_scene(ucs, "ucs.toml", ".", {"mesh.size_near=0.004"}));
+  const KeySpec* near = find_key("mesh.size_near");
+  ASSERT_NE(near, nullptr);
+  EXPECT_EQ(near->default_doc, "0.5 (tunnels); specimens: required");
 }

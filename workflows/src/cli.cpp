@@ -13,7 +13,7 @@ namespace {
 const char* const kUsage =
     "Usage:\n"
     "  rockfdem run [SCENE.toml] [-o OUTDIR] [-j THREADS] [--set section.key=value ...] [-q]\n"
-    "               [--checkpoint-every N] [--restart CHECKPOINT] [--force-dt]\n"
+    "               [--checkpoint-every N] [--restart CHECKPOINT] [--force-dt] [--force]\n"
     "  rockfdem check SCENE.toml     validate, print derived figures, run nothing\n"
     "  rockfdem mesh SCENE.toml      mesh only (mesh.msh, mesh.vtu, summary.json)\n"
     "  rockfdem insitu SCENE.toml    mesh + implicit in-situ stage\n"
@@ -29,7 +29,9 @@ po::options_description visible_options() {
       "set", po::value<std::vector<std::string>>()->composing(),
       "override a scene key: --set section.key=value (repeatable)")(
       "quiet,q", "no progress on stderr")(
-      "force", "overwrite results of another scene in the output directory")(
+      "force",
+      "write into an output directory holding another run's results: the files rockfdem "
+      "wrote there are removed first (others stay)")(
       "checkpoint-every", po::value<long>(),
       "write a checkpoint every N steps (at the next output step; keeps the newest two)")(
       "restart", po::value<std::string>(), "continue a run from a checkpoint file")(

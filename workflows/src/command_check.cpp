@@ -1,8 +1,9 @@
 // `rockfdem check SCENE`: the scene is valid (validation already ran), so
 // print the figures a user wants before committing to a run: estimated
 // triangle and crack-element counts, memory, run time and the stable time
-// step. No meshing, nothing written. Every command also refuses, before
-// meshing, a scene whose memory estimate exceeds this machine's memory.
+// step. No meshing (a .msh scene's file is read: its counts are exact, and a
+// bad file is refused here), nothing written. Every command also refuses,
+// before meshing, a scene whose memory estimate exceeds this machine's memory.
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -12,6 +13,7 @@
 
 #include "commands.hpp"
 #include "rockfdem/error.hpp"
+#include "rockfdem/mesh/build.hpp"
 #include "rockfdem/mesh/outline.hpp"
 
 namespace rockfdem::workflows {
@@ -20,6 +22,8 @@ namespace {
 struct Estimate {
   double triangles = 0;
   double fracture_triangles = 0;
+  double min_altitude = 0;  ///< [m]; 0: not known before meshing
+  bool exact = false;       ///< counted from a .msh file
 };
 
 // Area of an equilateral triangle of edge h, the element gmsh aims for.
@@ -57,6 +61,35 @@ Estimate estimate_tunnel(const Scene& s) {
   return e;
 }
 
+// The in-situ traction loads the box on its four sides: a mesh without one
+// of them cannot carry it.
+void require_box_sides(const Scene& s, const mesh::Mesh& m) {
+  const std::pair<int, const char*> sides[] = {
+      {mesh::kBottom, "bottom"}, {mesh::kRight, "right"}, {mesh::kTop, "top"}, {mesh::kLeft, "left"}};
+  for (const auto& [tag, name] : sides)
+    if (std::none_of(m.edges.begin(), m.edges.end(),
+                     [tag = tag](const mesh::TaggedEdge& e) { return e.tag == tag; }))
+      throw InputError(s.source + ": key 'msh.edges': no edge of " + s.mesh.msh.path +
+                       " is tagged \"" + name + "\", and the in-situ stress loads the box on "
+                       "its bottom, right, top and left sides; allowed: a table mapping the "
+                       "file's 1D physical groups to those four tags (and \"excavation\", "
+                       "\"lining_inner\"), e.g. { Floor = \"bottom\" }");
+}
+
+// A user's mesh is read (cheap next to a run): its counts, and a bad file,
+// group name or fracture group refused (InputError) before anything is written.
+Estimate read_msh_figures(const Scene& s) {
+  mesh::MeshReport report;
+  const mesh::Mesh m = mesh::build_mesh(s.mesh, &report);
+  require_box_sides(s, m);
+  Estimate e;
+  e.triangles = double(m.n_triangles());
+  e.fracture_triangles = double(std::count(m.fracture.begin(), m.fracture.end(), 1));
+  e.min_altitude = report.min_altitude;
+  e.exact = true;
+  return e;
+}
+
 Estimate estimate(const Scene& s) {
   const mesh::MeshSpec& m = s.mesh;
   const double a = triangle_area(m.size.size_near);
@@ -70,7 +103,7 @@ Estimate estimate(const Scene& s) {
       const double t = M_PI * m.specimen.diameter * m.specimen.diameter / 4 / a;
       return {t, t};
     }
-    case mesh::ModelKind::kMshFile: break;
+    case mesh::ModelKind::kMshFile: return read_msh_figures(s);
   }
   return {};
 }
@@ -91,7 +124,9 @@ double machine_bytes() {
 // Explicit steps at most: the step caps of the stages (tunnels) or the
 // specimen's step count.
 double explicit_steps(const Scene& s) {
-  if (s.mesh.kind != mesh::ModelKind::kTunnel) return double(s.engine.steps);
+  const bool staged =
+      s.mesh.kind == mesh::ModelKind::kTunnel || s.mesh.kind == mesh::ModelKind::kMshFile;
+  if (!staged) return double(s.engine.steps);
   double n = s.stages.empty() ? 0 : 1;  // the hand-off step
   for (const StageSpec& st : s.stages) n += double(st.max_steps);
   return n;
@@ -124,13 +159,20 @@ void refuse_if_too_large(const Scene& scene) {
   const Estimate e = estimate(scene);
   const double need = peak_bytes(e), have = machine_bytes();
   if (need <= have) return;
-  char msg[400];
-  std::snprintf(msg, sizeof msg,
-                "%s: key 'mesh.size_near' = %g: the model would have about %.3g triangles and "
-                "need about %.1f GiB, more than this machine's %.1f GiB; coarsen "
-                "mesh.size_near or shrink the domain",
-                scene.source.c_str(), scene.mesh.size.size_near, e.triangles,
-                need / 1073741824.0, have / 1073741824.0);
+  char msg[600];
+  if (e.exact)
+    std::snprintf(msg, sizeof msg,
+                  "%s: key 'msh.file' = \"%s\": the mesh has %.0f triangles and would need "
+                  "about %.1f GiB, more than this machine's %.1f GiB; give a coarser mesh",
+                  scene.source.c_str(), scene.mesh.msh.path.c_str(), e.triangles,
+                  need / 1073741824.0, have / 1073741824.0);
+  else
+    std::snprintf(msg, sizeof msg,
+                  "%s: key 'mesh.size_near' = %g: the model would have about %.3g triangles and "
+                  "need about %.1f GiB, more than this machine's %.1f GiB; coarsen "
+                  "mesh.size_near or shrink the domain",
+                  scene.source.c_str(), scene.mesh.size.size_near, e.triangles,
+                  need / 1073741824.0, have / 1073741824.0);
   throw InputError(msg);
 }
 
@@ -141,7 +183,7 @@ int command_check(const Scene& scene, const CommandLine& /*cli*/) {
   // A gmsh Frontal-Delaunay mesh's smallest altitude is about 0.3 of the
   // near size (measured: 0.095 m at 0.35 m); crack penalties p = f E stiffen
   // it further (dt ~ h sqrt(rho / p)). The engine computes the exact limit.
-  const double h = 0.3 * scene.mesh.size.size_near;
+  const double h = e.min_altitude > 0 ? e.min_altitude : 0.3 * scene.mesh.size.size_near;
   double dt = h / cp;
   if (e.fracture_triangles > 0)
     dt = std::min(dt, h * std::sqrt(rock.density / (rock.penalty_factor * rock.young)));
@@ -152,19 +194,21 @@ int command_check(const Scene& scene, const CommandLine& /*cli*/) {
   const double cracks = 1.5 * e.fracture_triangles;
   const double bytes = e.triangles * 1100;
   std::printf("scene %s: valid\n", scene.source.c_str());
-  if (scene.mesh.kind == mesh::ModelKind::kMshFile) {
-    std::printf("  mesh from %s (counts known after reading it)\n", scene.mesh.msh.path.c_str());
+  if (e.exact) {
+    std::printf("  mesh from %s\n", scene.mesh.msh.path.c_str());
+    std::printf("  triangles (in the file):    %.0f\n", e.triangles);
+    std::printf("  smallest altitude:          %.3g m\n", e.min_altitude);
   } else {
     std::printf("  triangles (estimate):       %.0f\n", e.triangles);
-    std::printf("  crack elements (estimate):  %.0f\n", cracks);
-    std::printf("  engine memory (estimate):   %.1f MiB\n", bytes / 1048576.0);
-    std::printf("  peak memory (estimate):     %.1f MiB of %.1f MiB on this machine\n",
-                peak_bytes(e) / 1048576.0, machine_bytes() / 1048576.0);
-    std::printf("  explicit steps (at most):   %.0f\n", explicit_steps(scene));
-    std::printf("  run time (estimate):        %.0f s at most on %d idle thread%s\n",
-                run_seconds(scene, e, active_threads()), active_threads(),
-                active_threads() == 1 ? "" : "s");
   }
+  std::printf("  crack elements (estimate):  %.0f\n", cracks);
+  std::printf("  engine memory (estimate):   %.1f MiB\n", bytes / 1048576.0);
+  std::printf("  peak memory (estimate):     %.1f MiB of %.1f MiB on this machine\n",
+              peak_bytes(e) / 1048576.0, machine_bytes() / 1048576.0);
+  std::printf("  explicit steps (at most):   %.0f\n", explicit_steps(scene));
+  std::printf("  run time (estimate):        %.0f s at most on %d idle thread%s\n",
+              run_seconds(scene, e, active_threads()), active_threads(),
+              active_threads() == 1 ? "" : "s");
   std::printf("  P-wave speed of rock:       %.1f m/s\n", cp);
   std::printf("  stable time step (approx):  %.3g s%s\n", dt,
               scene.engine.mass_scaling ? " on true masses" : "");

@@ -61,13 +61,11 @@ void write_frame(const fdem::Engine& e, const mesh::Mesh& m, const std::string& 
 
 int run_specimen(const Scene& scene, const CommandLine& cli) {
   PhaseTimer timer;
-  prepare_output_dir(cli.output_dir, scene, cli.force);
   const int threads = active_threads();
   RunSummary summary(scene, threads);
   mesh::MeshReport report;
   const mesh::Mesh m = mesh::build_mesh(scene.mesh, &report);
   active_threads();
-  mesh::write_msh(m, output_path(cli.output_dir, "mesh.msh"));
   timer.stamp("mesh");
 
   fdem::ModelInput in = coupling::model_input(m, engine_materials(scene),
@@ -84,6 +82,10 @@ int run_specimen(const Scene& scene, const CommandLine& cli) {
   in.contact = contact_settings(scene);
   fdem::Engine engine = make_engine(in, scene, cli.force_dt);
   timer.stamp("fdem setup");
+  // Only now, with engine.dt accepted, is anything written.
+  prepare_output_dir(cli.output_dir, scene, cli.force);
+  mesh::write_msh(m, output_path(cli.output_dir, "mesh.msh"));
+  timer.stamp("output");
 
   const bool disc = scene.mesh.kind == mesh::ModelKind::kBrazilian;
   const SpecimenSize size = specimen_size(scene);

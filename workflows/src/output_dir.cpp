@@ -1,5 +1,7 @@
 #include "output_dir.hpp"
 
+#include <algorithm>
+#include <cctype>
 #include <filesystem>
 #include <fstream>
 #include <functional>
@@ -16,6 +18,58 @@ namespace {
 
 constexpr const char* kOwnerFile = ".rockfdem-scene";
 
+// Every name a command writes into OUTDIR (workflow.md, "Monitors and
+// results"); numbered files are matched by prefix, digits and suffix.
+const char* const kFixedNames[] = {
+    "summary.json",      "history.csv",        "mesh.msh",           "mesh.vtu",
+    "insitu.vtu",        "insitu.pvd",         "insitu_vs_analytic.csv", "fdem.pvd",
+    "fdem_vs_continuum.csv", "grouted_cracks.csv", "convergence.png",  "broken.png",
+    "ground_reaction.png", "final_mesh.png"};
+
+struct Numbered {
+  const char *prefix, *suffix;
+};
+const Numbered kNumberedNames[] = {{"fdem_", ".vtu"}, {"insitu_", ".vtu"}, {"bolt_", ".csv"}};
+
+bool all_digits(const std::string& s) {
+  return !s.empty() && std::all_of(s.begin(), s.end(), [](unsigned char c) {
+    return std::isdigit(c) != 0;
+  });
+}
+
+bool numbered(const std::string& name, const std::string& prefix, const std::string& suffix) {
+  return name.size() > prefix.size() + suffix.size() && name.rfind(prefix, 0) == 0 &&
+         name.compare(name.size() - suffix.size(), suffix.size(), suffix) == 0 &&
+         all_digits(name.substr(prefix.size(), name.size() - prefix.size() - suffix.size()));
+}
+
+bool is_final_output(const std::string& name) {
+  for (const char* fixed : kFixedNames)
+    if (name == fixed) return true;
+  for (const Numbered& n : kNumberedNames)
+    if (numbered(name, n.prefix, n.suffix)) return true;
+  return false;
+}
+
+// ".history.tmp-<pid>-<n>.csv" (atomic_write) or ".mesh.msh.tmp<pid>.msh"
+// (write_msh): what an interrupted write of an output leaves.
+bool is_temporary_output(const std::string& name) {
+  const auto tmp = name.find(".tmp", 1);
+  const auto dot = name.find_last_of('.');
+  if (name[0] != '.' || tmp == std::string::npos || dot <= tmp) return false;
+  const std::string marks = name.substr(tmp + 4, dot - tmp - 4);
+  if (!std::all_of(marks.begin(), marks.end(), [](unsigned char c) {
+        return c == '-' || std::isdigit(c) != 0;
+      }))
+    return false;
+  const std::string stem = name.substr(1, tmp - 1);
+  return is_final_output(stem) || is_final_output(stem + name.substr(dot));
+}
+
+bool is_checkpoint_file(const std::string& name) {
+  return numbered(name, "checkpoint_", ".rfck") || name.rfind(".checkpoint_", 0) == 0;
+}
+
 std::string owner_record(const Scene& scene) {
   std::ostringstream out;
   out << scene.source << '\n' << std::hex << std::hash<std::string>{}(scene.canonical) << '\n';
@@ -28,7 +82,34 @@ std::string output_path(const std::string& dir, const std::string& name) {
   return (fs::path(dir) / name).string();
 }
 
-void prepare_output_dir(const std::string& dir, const Scene& scene, bool force) {
+bool is_rockfdem_output(const std::string& name) {
+  return !name.empty() && (is_final_output(name) || is_temporary_output(name));
+}
+
+void remove_checkpoints(const std::string& dir) {
+  const fs::path folder = fs::path(dir) / "checkpoints";
+  std::error_code ec;
+  for (const auto& entry : fs::directory_iterator(folder, ec))
+    if (entry.is_regular_file(ec) && is_checkpoint_file(entry.path().filename().string()))
+      fs::remove(entry.path(), ec);
+  if (fs::is_empty(folder, ec)) fs::remove(folder, ec);
+}
+
+void remove_previous_outputs(const std::string& dir) {
+  std::error_code ec;
+  for (const auto& entry : fs::directory_iterator(dir, ec))
+    if (entry.is_regular_file(ec) && is_rockfdem_output(entry.path().filename().string()))
+      fs::remove(entry.path(), ec);
+  remove_checkpoints(dir);
+}
+
+bool same_directory(const std::string& a, const std::string& b) {
+  std::error_code ec;
+  return fs::equivalent(a, b, ec);
+}
+
+void prepare_output_dir(const std::string& dir, const Scene& scene, bool force,
+                        bool keep_previous) {
   std::error_code ec;
   if (fs::exists(dir, ec) && !fs::is_directory(dir, ec))
     throw InputError("output directory " + dir + ": exists and is not a directory");
@@ -44,6 +125,8 @@ void prepare_output_dir(const std::string& dir, const Scene& scene, bool force) 
   }
   fs::create_directories(dir, ec);
   if (ec) throw InputError("output directory " + dir + ": cannot create: " + ec.message());
+  // Frames or plots of a longer earlier run must not sit beside the new ones.
+  if (force && !keep_previous) remove_previous_outputs(dir);
   coupling::atomic_write_text(owner, owner_record(scene));
 }
 

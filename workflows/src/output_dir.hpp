@@ -9,8 +9,29 @@ namespace rockfdem::workflows {
 struct Scene;
 
 /// Creates `dir` (and parents) or checks that an existing one holds nothing
-/// of another scene; records which scene owns it. Throws InputError.
-void prepare_output_dir(const std::string& dir, const Scene& scene, bool force);
+/// of another scene; records which scene owns it. With `force` it may hold
+/// another scene's results, and the outputs an earlier run wrote there
+/// (known by name, remove_previous_outputs) are removed first, unless
+/// `keep_previous` (a restart continuing the run in its own directory).
+/// Throws InputError.
+void prepare_output_dir(const std::string& dir, const Scene& scene, bool force,
+                        bool keep_previous = false);
+
+/// Whether `name` is a file rockfdem writes into an output directory
+/// (summary.json, fdem_0003.vtu, bolt_02.csv, ..., or a temporary file of an
+/// interrupted atomic write of one); nothing else is ever removed.
+bool is_rockfdem_output(const std::string& name);
+
+/// Removes every rockfdem output in `dir` (is_rockfdem_output) and the
+/// checkpoints in `dir`/checkpoints; other files stay.
+void remove_previous_outputs(const std::string& dir);
+
+/// Removes `dir`/checkpoints/checkpoint_*.rfck (and interrupted writes of
+/// them), then the folder if nothing else is in it.
+void remove_checkpoints(const std::string& dir);
+
+/// Whether two paths name the same existing directory.
+bool same_directory(const std::string& a, const std::string& b);
 
 /// `dir` + "/" + `name`.
 std::string output_path(const std::string& dir, const std::string& name);

@@ -3,14 +3,17 @@
 #pragma once
 
 #include <chrono>
+#include <cstdio>
 #include <string>
 
 namespace rockfdem::workflows {
 
 class Progress {
  public:
-  Progress(std::string stage, long total_steps, bool quiet);
+  /// Lines go to `out` (stderr unless a test captures them).
+  Progress(std::string stage, long total_steps, bool quiet, std::FILE* out = stderr);
   void update(long step, double simulated_time);
+  /// The stage's last line, unless update() has just printed that step.
   void finish(long step, double simulated_time);
 
  private:
@@ -19,6 +22,8 @@ class Progress {
   std::string stage_;
   long total_;
   bool quiet_;
+  std::FILE* out_;
+  long printed_step_ = -1;
   Clock::time_point start_, last_;
 };
 

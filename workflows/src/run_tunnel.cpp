@@ -34,6 +34,7 @@
 #include "rockfdem/mesh/build.hpp"
 #include "rockfdem/mesh/msh_io.hpp"
 #include "run_outputs.hpp"
+#include "scene_reader.hpp"
 #include "stage_runner.hpp"
 #include "stage_inputs.hpp"
 #include "summary.hpp"
@@ -100,11 +101,21 @@ std::string run_dir_of(const std::string& checkpoint) {
   return p.parent_path().parent_path().string();
 }
 
-// A signal between the implicit phases: nothing to checkpoint yet.
-void stop_if_interrupted(RunSummary& summary, const CommandLine& cli, const PhaseTimer& timer,
-                         const char* after) {
+// Makes (or claims) OUTDIR once the scene is accepted. --force clears an
+// earlier run's outputs first, except where a restart continues that run.
+void claim_output_dir(const Scene& scene, const CommandLine& cli) {
+  const bool continues_here =
+      !cli.restart.empty() && same_directory(cli.output_dir, run_dir_of(cli.restart));
+  prepare_output_dir(cli.output_dir, scene, cli.force, continues_here);
+}
+
+// A signal between the implicit phases: nothing to checkpoint yet. The
+// scene is valid, so the output directory may be made for the summary.
+void stop_if_interrupted(const Scene& scene, RunSummary& summary, const CommandLine& cli,
+                         const PhaseTimer& timer, const char* after) {
   const int sig = interrupt_requested();
   if (!sig) return;
+  claim_output_dir(scene, cli);
   summary.json()["status"] = "interrupted";
   summary.set_timings(timer);
   summary.write(output_path(cli.output_dir, "summary.json"));
@@ -112,40 +123,51 @@ void stop_if_interrupted(RunSummary& summary, const CommandLine& cli, const Phas
                              after + " (no explicit step yet, so no checkpoint)");
 }
 
+// The scene is accepted: make (or claim) OUTDIR and write what the mesh and
+// the implicit stage give.
+void write_first_outputs(const Scene& scene, const CommandLine& cli, bool restart,
+                         const mesh::Mesh& m, const std::vector<insitu::InsituField>& fields,
+                         RunOutputs& out) {
+  claim_output_dir(scene, cli);
+  // A fresh run's checkpoints must not mix with an earlier run's.
+  if (!restart) remove_checkpoints(cli.output_dir);
+  mesh::write_msh(m, output_path(cli.output_dir, "mesh.msh"));
+  out.record_insitu(m, fields);
+}
+
 }  // namespace
 
 int run_tunnel(const Scene& scene, const CommandLine& cli) {
   if (scene.insitu.unit_weight > 0)
     throw InputError(scene.source + ": key 'insitu.unit_weight' = " +
-                     std::to_string(scene.insitu.unit_weight) +
+                     detail::number_text(scene.insitu.unit_weight) +
                      ": `rockfdem run` of a tunnel needs a uniform in-situ stress (0); the "
                      "gradient is supported by `rockfdem insitu`");
   PhaseTimer timer;
   // A bad checkpoint is refused before anything is written.
   const bool restart = !cli.restart.empty();
   const Checkpoint resume = restart ? read_checkpoint(cli.restart, scene) : Checkpoint{};
-  prepare_output_dir(cli.output_dir, scene, cli.force);
-  // A fresh run's checkpoints must not mix with an earlier run's.
-  if (!restart) std::filesystem::remove_all(output_path(cli.output_dir, "checkpoints"));
   RunSummary summary(scene, active_threads());
   RunOutputs out(scene, cli, summary);
 
+  // Nothing is written until the engine has accepted the scene (engine.dt
+  // included): a refused run leaves OUTDIR as it found it.
   mesh::MeshReport report;
   const mesh::Mesh m = mesh::build_mesh(scene.mesh, &report);
   active_threads();
-  mesh::write_msh(m, output_path(cli.output_dir, "mesh.msh"));
   timer.stamp("mesh");
-  stop_if_interrupted(summary, cli, timer, "meshing");
+  stop_if_interrupted(scene, summary, cli, timer, "meshing");
 
   const std::vector<insitu::InsituField> fields = insitu::solve_insitu(m, insitu_spec(scene));
   active_threads();
-  out.record_insitu(m, fields);
   timer.stamp("insitu");
-  stop_if_interrupted(summary, cli, timer, "the implicit stage");
+  stop_if_interrupted(scene, summary, cli, timer, "the implicit stage");
 
   if (scene.stages.empty()) {
     // [[stages]] holds only "insitu": the scene asks for the elastic
     // implicit results alone.
+    write_first_outputs(scene, cli, restart, m, fields, out);
+    timer.stamp("output");
     summary.skipped("fdem: the scene's only stage is the implicit in-situ stage");
     summary.set_timings(timer);
     summary.write(output_path(cli.output_dir, "summary.json"));
@@ -163,6 +185,9 @@ int run_tunnel(const Scene& scene, const CommandLine& cli) {
   fdem::BoltPlan bolts;  // marks bolt triangles and allows fracture there
   if (!scene.bolts.segments.empty()) bolts = fdem::plan_bolts(in, bolt_specs(scene));
   fdem::Engine engine = make_engine(in, scene, cli.force_dt);
+  timer.stamp("fdem setup");
+  write_first_outputs(scene, cli, restart, m, fields, out);
+  timer.stamp("output");
   double start_ratio = 0;
   if (restart) {
     std::istringstream state(resume.engine_state);
@@ -224,8 +249,7 @@ int run_tunnel(const Scene& scene, const CommandLine& cli) {
     insitu::InsituSpec open = insitu_spec(scene);
     open.alphas = {0.0};
     open.lining.active = false;
-    const bool lined = scene.materials.count("lining") && scene.mesh.tunnel.lining_thickness > 0;
-    if (!lined) {
+    if (!has_lining_ring(scene)) {
       const insitu::InsituField reference = insitu::solve_insitu(m, open).back();
       active_threads();
       summary.json()["comparison"] = compare_with_continuum(

@@ -2,10 +2,12 @@
 // checks that involve several keys (tunnel inside the domain, a material for
 // every zone, decreasing alpha, ...).
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 
 #include "rockfdem/error.hpp"
+#include "rockfdem/mesh/mesh.hpp"
 #include "rockfdem/workflows/scene.hpp"
 #include "rockfdem/workflows/scene_schema.hpp"
 #include "scene_reader.hpp"
@@ -15,6 +17,8 @@ namespace {
 
 using detail::fail_key;
 using detail::RawScene;
+
+std::string num(double v) { return detail::number_text(v); }
 
 // Typed reads of validated keys; absent keys take the schema's default.
 class Reader {
@@ -68,6 +72,13 @@ class Reader {
   [[noreturn]] void fail(const std::string& path, const std::string& problem) const {
     fail_key(raw_, path, node(path), problem);
   }
+  /// Whether the user changed `path` with --set.
+  bool changed(const std::string& path) const { return detail::from_command_line(raw_, path); }
+  /// A check between two keys blames `second` when only it came from --set:
+  /// the key the user just changed is the one to name.
+  bool blame_second(const std::string& first, const std::string& second) const {
+    return changed(second) && !changed(first);
+  }
   const std::string& source() const { return raw_.source; }
 
  private:
@@ -86,28 +97,47 @@ mesh::TunnelShape tunnel_shape(const std::string& s) {
   return mesh::TunnelShape::kArched;  // "arched" and "d-shaped"
 }
 
+// The key to name when the opening does not fit the domain: the one the
+// user changed with --set, else the domain's size where the file gives it.
+std::string outside_key(const Reader& r, const std::string& domain, const std::string& tunnel) {
+  if (r.blame_second(domain, tunnel)) return tunnel;
+  return r.has(domain) || r.changed(domain) ? domain : tunnel;
+}
+
 void read_tunnel(const Reader& r, mesh::MeshSpec& m) {
   mesh::TunnelSpec& t = m.tunnel;
   t.shape = tunnel_shape(r.text("tunnel.shape"));
   t.lining_thickness = r.number("tunnel.lining_thickness");
   t.fracture_zone = r.number("tunnel.fracture_zone");
   double w = 0, h = 0;
-  if (t.shape == mesh::TunnelShape::kCircular) {
+  const bool circular = t.shape == mesh::TunnelShape::kCircular;
+  if (circular) {
     r.require("tunnel.radius", "tunnel.shape is \"circular\"");
     t.radius = r.number("tunnel.radius");
     w = h = 2 * t.radius;
   } else {
     w = t.span = r.number("tunnel.span");
     h = t.height = r.number("tunnel.height");
-    if (t.shape == mesh::TunnelShape::kHorseshoe && h < w / 2)
-      r.fail("tunnel.height", "a horseshoe's height must be at least span/2 = " +
-                                  std::to_string(w / 2) + " m");
+    if (t.shape == mesh::TunnelShape::kHorseshoe && h < w / 2) {
+      if (r.blame_second("tunnel.height", "tunnel.span"))
+        r.fail("tunnel.span", "a horseshoe's span is at most twice its height (tunnel.height = " +
+                                  num(h) + " m); allowed: at most " + num(2 * h) + " m");
+      r.fail("tunnel.height", "a horseshoe's height must be at least span/2 (tunnel.span = " +
+                                  num(w) + " m); allowed: at least " + num(w / 2) + " m");
+    }
     if (t.shape == mesh::TunnelShape::kArched) {
       r.require("tunnel.rise", "tunnel.shape is \"arched\"");
       t.rise = r.number("tunnel.rise");
-      if (t.rise > w / 2 || t.rise >= h)
-        r.fail("tunnel.rise", "must be at most span/2 = " + std::to_string(w / 2) +
-                                  " m and below the height " + std::to_string(h) + " m");
+      if (t.rise > w / 2 || t.rise >= h) {
+        const char* other = t.rise > w / 2 ? "tunnel.span" : "tunnel.height";
+        if (r.blame_second("tunnel.rise", other))
+          r.fail(other, std::string("leaves the arch's rise (tunnel.rise = ") + num(t.rise) +
+                            " m) above " + (t.rise > w / 2 ? "span/2" : "the height") +
+                            "; allowed: " + (t.rise > w / 2 ? "at least " + num(2 * t.rise)
+                                                            : "above " + num(t.rise)) + " m");
+        r.fail("tunnel.rise", "must be at most span/2 = " + num(w / 2) +
+                                  " m and below the height " + num(h) + " m");
+      }
     }
   }
   m.domain.width = r.number("domain.width");
@@ -118,20 +148,54 @@ void read_tunnel(const Reader& r, mesh::MeshSpec& m) {
   const double margin = t.fracture_zone;
   const double half_w = m.domain.width / 2, half_h = m.domain.height / 2;
   if (w / 2 + margin + std::abs(m.domain.center_x) >= half_w)
-    r.fail(r.has("domain.width") ? "domain.width" : "tunnel.span",
-           "the tunnel (width " + std::to_string(w) + " m plus fracture zone " +
-               std::to_string(margin) + " m each side) must lie inside the domain");
+    r.fail(outside_key(r, "domain.width", circular ? "tunnel.radius" : "tunnel.span"),
+           "the tunnel (width " + num(w) + " m plus fracture zone " + num(margin) +
+               " m each side) must lie inside the domain (width " + num(m.domain.width) + " m)");
   if (h / 2 + margin + std::abs(m.domain.center_y) >= half_h)
-    r.fail(r.has("domain.height") ? "domain.height" : "tunnel.height",
-           "the tunnel (height " + std::to_string(h) + " m plus fracture zone " +
-               std::to_string(margin) + " m each side) must lie inside the domain");
+    r.fail(outside_key(r, "domain.height", circular ? "tunnel.radius" : "tunnel.height"),
+           "the tunnel (height " + num(h) + " m plus fracture zone " + num(margin) +
+               " m each side) must lie inside the domain (height " + num(m.domain.height) +
+               " m)");
   if (t.lining_thickness > 0 && 2 * t.lining_thickness >= std::min(w, h) * 0.9)
     r.fail("tunnel.lining_thickness", "the lining must leave a core: thickness below 45% of "
                                       "the opening's smaller dimension " +
-                                          std::to_string(std::min(w, h)) + " m");
+                                          num(std::min(w, h)) + " m");
+}
+
+// The geometry's smallest feature, which two elements must span, and what it is.
+struct Feature {
+  double size = 0;  ///< 0: a mesh from a file
+  std::string what;
+};
+
+Feature smallest_feature(const mesh::MeshSpec& m) {
+  const mesh::TunnelSpec& t = m.tunnel;
+  switch (m.kind) {
+    case mesh::ModelKind::kTunnel: {
+      const bool circular = t.shape == mesh::TunnelShape::kCircular;
+      const Feature opening = circular ? Feature{2 * t.radius, "2 x tunnel.radius"}
+                                       : Feature{std::min(t.span, t.height),
+                                                 "the opening's smaller side"};
+      if (t.lining_thickness > 0 && 4 * t.lining_thickness < opening.size)
+        return {4 * t.lining_thickness, "4 x tunnel.lining_thickness"};
+      return opening;
+    }
+    case mesh::ModelKind::kUcs:
+      return {std::min(m.specimen.width, m.specimen.height), "the specimen's smaller side"};
+    case mesh::ModelKind::kBrazilian: return {m.specimen.diameter, "specimen.diameter"};
+    case mesh::ModelKind::kMshFile: break;
+  }
+  return {};
 }
 
 void read_mesh_sizes(const Reader& r, mesh::MeshSpec& m) {
+  const Feature feature = smallest_feature(m);
+  // 0.5 m suits tunnels; a specimen centimetres across has no size to default to.
+  const bool specimen = m.kind == mesh::ModelKind::kUcs || m.kind == mesh::ModelKind::kBrazilian;
+  if (specimen && !r.has("mesh.size_near"))
+    throw InputError(r.source() + ": missing key 'mesh.size_near' (a specimen has no default "
+                     "element size); allowed: > 0 and at most " + num(feature.size / 2) +
+                     " m (half " + feature.what + ")");
   m.size.size_near = r.number("mesh.size_near");
   m.size.size_far = r.number("mesh.size_far");
   m.size.grading_distance = r.number("mesh.grading_distance");
@@ -139,31 +203,28 @@ void read_mesh_sizes(const Reader& r, mesh::MeshSpec& m) {
   if (m.size.algorithm != 1 && m.size.algorithm != 5 && m.size.algorithm != 6)
     r.fail("mesh.algorithm", "only 1 (MeshAdapt), 5 (Delaunay) or 6 (Frontal-Delaunay) make "
                              "triangles");
-  if (m.size.size_far < m.size.size_near)
-    r.fail("mesh.size_far", "must be at least mesh.size_near = " +
-                                std::to_string(m.size.size_near) + " m");
-  double smallest = 0;
-  if (m.kind == mesh::ModelKind::kTunnel) {
-    const mesh::TunnelSpec& t = m.tunnel;
-    smallest = t.shape == mesh::TunnelShape::kCircular ? 2 * t.radius : std::min(t.span, t.height);
-    if (t.lining_thickness > 0) smallest = std::min(smallest, 4 * t.lining_thickness);
-  } else if (m.kind == mesh::ModelKind::kUcs) {
-    smallest = std::min(m.specimen.width, m.specimen.height);
-  } else if (m.kind == mesh::ModelKind::kBrazilian) {
-    smallest = m.specimen.diameter;
+  if (m.size.size_far < m.size.size_near) {
+    if (r.blame_second("mesh.size_far", "mesh.size_near"))
+      r.fail("mesh.size_near", "must be at most mesh.size_far = " + num(m.size.size_far) + " m");
+    r.fail("mesh.size_far", "must be at least mesh.size_near = " + num(m.size.size_near) + " m");
   }
-  if (smallest > 0 && m.size.size_near > smallest / 2)
-    r.fail("mesh.size_near", "must resolve the geometry: at most " + std::to_string(smallest / 2) +
-                                 " m here");
+  if (feature.size > 0 && m.size.size_near > feature.size / 2)
+    r.fail("mesh.size_near", "must resolve the geometry: at most " + num(feature.size / 2) +
+                                 " m here (half " + feature.what + " = " + num(feature.size) +
+                                 " m)");
 }
 
 void read_msh(const Reader& r, const std::string& base_dir, mesh::MeshSpec& m) {
   r.require("msh.file", "model.kind is \"msh\"");
   std::string file = r.text("msh.file");
   if (!file.empty() && file[0] != '/' && !base_dir.empty()) file = base_dir + "/" + file;
-  if (!std::ifstream(file)) r.fail("msh.file", "cannot open " + file);
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(file, ec) || !std::ifstream(file))
+    r.fail("msh.file", "cannot open " + file + " as a file; allowed: the path of a readable "
+                       "gmsh .msh file, relative to the scene file");
   m.msh.path = file;
-  static const std::map<std::string, int> zones{{"rock", 1}, {"core", 2}, {"lining", 3}};
+  static const std::map<std::string, int> zones{
+      {"rock", mesh::kRock}, {"core", mesh::kCore}, {"lining", mesh::kLining}};
   static const std::map<std::string, int> tags{
       {"bottom", 1}, {"right", 2},        {"top", 3},      {"left", 4},         {"excavation", 5},
       {"lining_inner", 6}, {"rim", 7}, {"load_top", 8}, {"load_bottom", 9}};
@@ -195,6 +256,15 @@ MaterialSpec read_material(const Reader& r, const std::string& name, const Mater
   return m;
 }
 
+// A ring in the geometry, whether or not the scene gives its material.
+bool has_ring(const mesh::MeshSpec& m) {
+  if (m.kind == mesh::ModelKind::kTunnel) return m.tunnel.lining_thickness > 0;
+  if (m.kind != mesh::ModelKind::kMshFile) return false;
+  for (const auto& [group, zone] : m.msh.zone_groups)
+    if (zone == mesh::kLining) return true;
+  return false;
+}
+
 bool needs_fracture(const mesh::MeshSpec& m) {
   return m.kind == mesh::ModelKind::kUcs || m.kind == mesh::ModelKind::kBrazilian ||
          (m.kind == mesh::ModelKind::kTunnel && m.tunnel.fracture_zone > 0);
@@ -210,16 +280,21 @@ void read_materials(const Reader& r, Scene& s) {
   const bool tunnel_like = s.mesh.kind == mesh::ModelKind::kTunnel ||
                            s.mesh.kind == mesh::ModelKind::kMshFile;
   if (tunnel_like) s.materials["core"] = read_material(r, "core", &s.materials["rock"]);
-  const bool lining = (s.mesh.kind == mesh::ModelKind::kTunnel &&
-                       s.mesh.tunnel.lining_thickness > 0) ||
-                      r.has("materials.lining");
-  if (lining) s.materials["lining"] = read_material(r, "lining", nullptr);
+  if (has_ring(s.mesh) || r.has("materials.lining"))
+    s.materials["lining"] = read_material(r, "lining", nullptr);
 }
 
 void read_insitu(const Reader& r, Scene& s) {
   InsituSettings& in = s.insitu;
-  in.sigma_h = r.number("insitu.sigma_h");
-  in.sigma_v = r.number("insitu.sigma_v");
+  // The implicit stage needs compression in both directions; specimens start stress-free.
+  const bool loaded = s.mesh.kind == mesh::ModelKind::kTunnel ||
+                      s.mesh.kind == mesh::ModelKind::kMshFile;
+  if (loaded) {
+    r.require("insitu.sigma_h", "a tunnel or .msh model is loaded by its in-situ stress");
+    r.require("insitu.sigma_v", "a tunnel or .msh model is loaded by its in-situ stress");
+  }
+  in.sigma_h = r.number_or("insitu.sigma_h", 0);
+  in.sigma_v = r.number_or("insitu.sigma_v", 0);
   in.angle_deg = r.number("insitu.angle");
   in.unit_weight = r.number("insitu.unit_weight");
   in.kirsch_boundary = r.text("insitu.boundary") == "kirsch";
@@ -231,8 +306,6 @@ void read_insitu(const Reader& r, Scene& s) {
     if (!(in.alpha[i] < in.alpha[i - 1]))
       r.fail("insitu.alpha", "must be strictly decreasing");
   if (s.mesh.kind == mesh::ModelKind::kTunnel) {
-    if (!(in.sigma_h > 0)) r.fail("insitu.sigma_h", "a tunnel needs a compressive in-situ stress");
-    if (!(in.sigma_v > 0)) r.fail("insitu.sigma_v", "a tunnel needs a compressive in-situ stress");
     if (in.kirsch_boundary && (s.mesh.tunnel.shape != mesh::TunnelShape::kCircular ||
                                in.unit_weight > 0 || in.angle_deg != 0))
       r.fail("insitu.boundary", "exact Kirsch tractions need a circular tunnel, no gradient "
@@ -339,11 +412,12 @@ void read_bolts(const Reader& r, Scene& s) {
 // only goes down, and only while the core is there.
 void read_stages(const Reader& r, Scene& s) {
   const toml::node* list = r.node("stages");
-  const bool lining = s.materials.count("lining") && s.mesh.kind == mesh::ModelKind::kTunnel &&
-                      s.mesh.tunnel.lining_thickness > 0;
+  const bool lining = has_lining_ring(s);
   const bool bolts = !s.bolts.segments.empty();
   if (!list) {
-    if (lining) s.stages.push_back({"lining", 0, 0, 1e-3, 0, s.output.every_steps, 0, 1e-3});
+    // A ring that carried load in the implicit stage is installed already.
+    if (lining && !s.insitu.lining_active)
+      s.stages.push_back({"lining", 0, 0, 1e-3, 0, s.output.every_steps, 0, 1e-3});
     if (bolts) s.stages.push_back({"bolts", 0, 0, 1e-3, 0, s.output.every_steps, 0, 1e-3});
     s.stages.push_back({"remove_core", 0, 0, 1e-3, 0, s.output.every_steps, 0, 1e-3});
     s.stages.push_back({"equilibrium", 0, s.engine.steps, 1e-3, 0, s.output.every_steps, 0, 1e-3});
@@ -378,11 +452,13 @@ void read_stages(const Reader& r, Scene& s) {
       r.require(p + ".alpha", "a soften stage needs its target alpha");
       if (!core) r.fail(p + ".kind", "the core is already removed (or alpha = 0)");
       if (!(st.alpha < alpha))
-        r.fail(p + ".alpha", "softening must go down from " + std::to_string(alpha));
+        r.fail(p + ".alpha", "softening must go down from " + num(alpha));
       alpha = st.alpha;
     }
     if (kind == "lining") {
-      if (!lining) r.fail(p + ".kind", "the model has no lining ring (tunnel.lining_thickness)");
+      if (!lining)
+        r.fail(p + ".kind", "the model has no lining ring (tunnel.lining_thickness, or a "
+                            "msh.zones group mapped to \"lining\")");
       if (lined || s.insitu.lining_active) r.fail(p + ".kind", "the lining is installed once");
       lined = true;
     }
@@ -476,6 +552,8 @@ std::string directory_of(const std::string& path) {
 }
 
 }  // namespace
+
+bool has_lining_ring(const Scene& s) { return s.materials.count("lining") && has_ring(s.mesh); }
 
 Scene parse_scene(const std::string& text, const std::string& source, const std::string& base_dir,
                   const std::vector<std::string>& overrides) {

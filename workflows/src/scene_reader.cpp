@@ -1,6 +1,8 @@
 #include "scene_reader.hpp"
 
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
 #include <sstream>
 
 #include "rockfdem/error.hpp"
@@ -46,6 +48,19 @@ toml::table parse_override_value(const std::string& key, const std::string& valu
   }
 }
 
+// "3]" -> 3: the digits of an array index and its closing bracket, nothing
+// else; anything else (or a number past any array's size) is no index.
+std::size_t table_index(const std::string& rest) {
+  constexpr std::size_t kNoIndex = std::size_t(-1);
+  if (rest.size() < 2 || rest.size() > 10 || rest.back() != ']') return kNoIndex;
+  std::size_t index = 0;
+  for (std::size_t i = 0; i + 1 < rest.size(); ++i) {
+    if (rest[i] < '0' || rest[i] > '9') return kNoIndex;
+    index = index * 10 + std::size_t(rest[i] - '0');
+  }
+  return index;
+}
+
 // One step down a --set path: "name" is a table (made if missing),
 // "name[i]" the i-th table of an existing array of tables.
 toml::table* descend(const RawScene& scene, const std::string& text, toml::table& table,
@@ -58,11 +73,14 @@ toml::table* descend(const RawScene& scene, const std::string& text, toml::table
     fail(scene.source + ": --set " + text + ": '" + part + "' is not a table");
   }
   const std::string name = part.substr(0, bracket);
-  const std::size_t index = std::stoul(part.substr(bracket + 1));
   toml::array* list = table[name].as_array();
-  if (!list || index >= list->size() || !(*list)[index].is_table())
-    fail(scene.source + ": --set " + text + ": the scene has no " + part + " (" +
-         std::to_string(list ? list->size() : 0) + " entries of [[" + name + "]])");
+  const std::size_t n = list ? list->size() : 0;
+  const std::size_t index = table_index(part.substr(bracket + 1));
+  if (index >= n || !(*list)[index].is_table())
+    fail(scene.source + ": --set " + text + ": '" + part + "' is not one of the scene's " +
+         std::to_string(n) + " entries of [[" + name + "]]; allowed: " +
+         (n ? name + "[0] to " + name + "[" + std::to_string(n - 1) + "]"
+            : "none (the scene has no [[" + name + "]] to change)"));
   return (*list)[index].as_table();
 }
 
@@ -102,6 +120,13 @@ bool in_range(const KeySpec& k, double v) {
   return true;
 }
 
+std::string choice_list(const KeySpec& k) {
+  std::string out = "one of ";
+  for (std::size_t i = 0; i < k.choices.size(); ++i)
+    out += (i ? ", \"" : "\"") + k.choices[i] + '"';
+  return out;
+}
+
 bool is_choice(const KeySpec& k, const toml::node& n) {
   if (!n.is_string()) return false;
   for (const std::string& c : k.choices)
@@ -125,7 +150,8 @@ void check_value(const RawScene& s, const KeySpec& k, const std::string& path,
       if (!n.is_table()) fail_key(s, path, &n, "wrong type");
       for (auto&& [name, v] : *n.as_table())
         if (!is_choice(k, v))
-          fail_key(s, path + "." + std::string(name.str()), &v, "not one of the choices");
+          fail_key(s, path + "." + std::string(name.str()), &v,
+                   "not one of the choices; allowed: " + choice_list(k));
       return;
     case KeyType::kNumberArray:
       if (!n.is_array() || n.as_array()->empty()) fail_key(s, path, &n, "wrong type");
@@ -178,11 +204,28 @@ void check_table(const RawScene& s, const toml::table& table, const std::string&
 
 }  // namespace
 
+std::string number_text(double v) {
+  char buf[32];
+  for (int digits = 1; digits <= 17; ++digits) {
+    std::snprintf(buf, sizeof buf, "%.*g", digits, v);
+    if (std::strtod(buf, nullptr) == v) break;
+  }
+  return buf;
+}
+
+bool from_command_line(const RawScene& s, const std::string& path) {
+  for (const std::string& set : s.overridden)
+    if (path == set || path.rfind(set + ".", 0) == 0) return true;
+  return false;
+}
+
 std::string node_text(const toml::node& node) {
   std::ostringstream out;
   node.visit([&](auto&& v) {
     if constexpr (toml::is_string<decltype(v)>)
       out << '"' << v.get() << '"';
+    else if constexpr (toml::is_floating_point<decltype(v)>)
+      out << number_text(v.get());
     else if constexpr (toml::is_table<decltype(v)>)
       out << "{...}";
     else if constexpr (toml::is_array<decltype(v)>)
@@ -196,7 +239,7 @@ std::string node_text(const toml::node& node) {
 void fail_key(const RawScene& s, const std::string& path, const toml::node* node,
               const std::string& problem) {
   std::ostringstream msg;
-  const bool from_cli = s.overridden.count(path) > 0;
+  const bool from_cli = from_command_line(s, path);
   msg << s.source;
   if (!from_cli && node && node->source().begin.line > 0) msg << ':' << node->source().begin.line;
   msg << ": " << (from_cli ? "--set " : "") << "key '" << path << "'";

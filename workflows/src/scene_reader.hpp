@@ -26,6 +26,12 @@ RawScene read_raw_scene(const std::string& text, const std::string& source,
 
 std::string node_text(const toml::node& node);
 
+/// The shortest decimal text that reads back as `v` (%g style: 8.8, 1e-06, 200).
+std::string number_text(double v);
+
+/// Whether `path` (or a table above it) was set with --set.
+bool from_command_line(const RawScene& scene, const std::string& path);
+
 /// "stages[2].kind" -> "stages[].kind" (the schema's form).
 std::string normalise(const std::string& path);
 

@@ -156,9 +156,14 @@ std::vector<KeySpec> build_schema() {
   s.push_back(text("msh.fracture_group", "\"\"",
                    "2D physical group where crack elements are allowed; empty: all rock."));
   // [mesh]
-  s.push_back(positive("mesh.size_near", "m", "0.5",
-                       "Element size at the tunnel boundary and in the fracture zone "
-                       "(specimens: everywhere)."));
+  KeySpec near = positive("mesh.size_near", "m", "0.5",
+                          "Element size at the tunnel boundary and in the fracture zone "
+                          "(specimens: everywhere); at most half the geometry's smallest "
+                          "feature: tunnels, the opening's smaller side (circular: its "
+                          "diameter) and twice tunnel.lining_thickness; UCS, the specimen's "
+                          "smaller side; Brazilian, its diameter. Unused by .msh models.");
+  near.default_doc = "0.5 (tunnels); specimens: required";
+  s.push_back(near);
   s.push_back(positive("mesh.size_far", "m", "5", "Element size at the outer boundary."));
   s.push_back(non_negative("mesh.grading_distance", "m", "0",
                            "Distance from the tunnel over which the size grows from near to "
@@ -172,12 +177,15 @@ std::vector<KeySpec> build_schema() {
   add_material(s, "core", "excavation core (defaults to the rock's values)");
   add_material(s, "lining", "shotcrete lining");
   // [insitu]
-  s.push_back(non_negative("insitu.sigma_h", "Pa", "0",
-                           "Horizontal far-field principal stress at the tunnel centre "
-                           "(compression positive)."));
-  s.push_back(non_negative("insitu.sigma_v", "Pa", "0",
-                           "Vertical far-field principal stress at the tunnel centre "
-                           "(compression positive)."));
+  // The implicit stage needs compression in both directions (insitu/).
+  s.push_back(positive("insitu.sigma_h", "Pa", "",
+                       "Horizontal far-field principal stress at the tunnel centre "
+                       "(compression positive); required for tunnels and .msh models, unused "
+                       "by specimens."));
+  s.push_back(positive("insitu.sigma_v", "Pa", "",
+                       "Vertical far-field principal stress at the tunnel centre "
+                       "(compression positive); required for tunnels and .msh models, unused "
+                       "by specimens."));
   s.push_back(number("insitu.angle", "deg", "0", -90, false, 90, false,
                      "Rotation of sigma_h from the x axis, counter-clockwise."));
   s.push_back(non_negative("insitu.unit_weight", "N/m^3", "0",
@@ -281,6 +289,9 @@ std::vector<KeySpec> build_schema() {
   point.path = "bolt[].end";
   point.description = "End of the bolt in the rock, [x, y].";
   s.push_back(point);
+  const KeySpec kind = choice("bolt[].kind", "bolt", {"bolt", "cable"},
+                              "`bolt` takes the steel of [bolts], `cable` that of [cables].");
+  s.push_back(kind);
   point.path = "bolt_fan[].centre";
   point.default_text = "[0.0, 0.0]";
   point.description = "Centre of the circle the bolt heads lie on, [x, y].";
@@ -292,9 +303,9 @@ std::vector<KeySpec> build_schema() {
                      "Angle of the last bolt."));
   s.push_back(integer("bolt_fan[].count", "", 1, 1000, "Number of bolts in the fan."));
   s.push_back(positive("bolt_fan[].length", "m", "", "Bolt length."));
-  for (const char* list : {"bolt[].kind", "bolt_fan[].kind"})
-    s.push_back(choice(list, "bolt", {"bolt", "cable"},
-                       "`bolt` takes the steel of [bolts], `cable` that of [cables]."));
+  KeySpec fan_kind = kind;
+  fan_kind.path = "bolt_fan[].kind";
+  s.push_back(fan_kind);
   // [contact]
   s.push_back(boolean("contact.enabled", "true",
                       "Penalty contact with friction between triangles on free surfaces and "
@@ -313,7 +324,8 @@ std::vector<KeySpec> build_schema() {
                      "stress-free), `bolts` (install every bolt stress-free), `remove_core`, "
                      "`grout` (re-join broken cracks with grout, once trigger_broken is "
                      "reached), `equilibrium`. Without [[stages]]: insitu, "
-                     "lining (if any), remove_core, equilibrium."));
+                     "lining (if the model has a ring not already active in the implicit "
+                     "stage), bolts (if the scene has any), remove_core, equilibrium."));
   s.push_back(number("stages[].alpha", "-", "", 0, true, 1, false,
                      "soften: target core stiffness factor, below the implicit hand-off's."));
   s.push_back(integer("stages[].max_steps", "engine.steps", 0, 1e12,
@@ -428,8 +440,10 @@ std::string scene_reference_markdown() {
       md << "\n## [" << section << "]\n\n| key | unit | default | allowed | meaning |\n"
             "|---|---|---|---|---|\n";
     }
-    md << "| `" << k.path.substr(section.size() + 1) << "` | " << k.unit << " | "
-       << (k.default_text.empty() ? "required where used" : k.default_text) << " | "
+    const std::string def = !k.default_doc.empty()    ? k.default_doc
+                            : k.default_text.empty() ? "required where used"
+                                                     : k.default_text;
+    md << "| `" << k.path.substr(section.size() + 1) << "` | " << k.unit << " | " << def << " | "
        << describe_allowed(k) << " | " << k.description << " |\n";
   }
   return md.str();

@@ -120,6 +120,10 @@ struct Scene {
   std::string restart_key;
 };
 
+/// Whether the model has a lining ring with its material: a generated
+/// tunnel's tunnel.lining_thickness > 0, or a .msh group mapped to "lining".
+bool has_lining_ring(const Scene& scene);
+
 /// Reads and validates a scene file; `overrides` are "section.key=value" strings.
 Scene load_scene(const std::string& path, const std::vector<std::string>& overrides = {});
 

@@ -15,6 +15,7 @@ struct KeySpec {
   KeyType type = KeyType::kNumber;
   std::string unit;          ///< SI unit, "-" for dimensionless
   std::string default_text;  ///< documented default; empty: none (required where the model needs it)
+  std::string default_doc;   ///< the reference's default where it depends on the model; empty: default_text
   double min = -1e300;       ///< lower bound for numbers (and array elements)
   double max = 1e300;        ///< upper bound
   bool min_open = false;     ///< true: value must be > min (else >=)

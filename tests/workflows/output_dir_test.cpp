@@ -1,0 +1,117 @@
+// What a command leaves in OUTDIR: nothing at all when it refuses its input
+// (exit 2), and after --force the new run's outputs beside the user's own
+// files, with none of an earlier run's left over.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <functional>
+#include <map>
+#include <set>
+
+#include "cli_runner.hpp"
+
+namespace fs = std::filesystem;
+using namespace rockfdem::test;
+
+namespace {
+
+const std::string kCircular = kTestDir + "/good_circular.toml";
+
+// Every file under `dir` with a hash of its bytes, to compare a folder
+// before and after.
+std::map<std::string, std::size_t> snapshot(const fs::path& dir) {
+  std::map<std::string, std::size_t> files;
+  for (const auto& e : fs::recursive_directory_iterator(dir))
+    if (e.is_regular_file())
+      files[fs::relative(e.path(), dir).string()] = std::hash<std::string>{}(read_text(e.path()));
+  return files;
+}
+
+std::set<std::string> names_in(const fs::path& dir) {
+  std::set<std::string> names;
+  for (const auto& e : fs::directory_iterator(dir)) names.insert(e.path().filename().string());
+  return names;
+}
+
+// The frames fdem_NNNN.vtu in `dir`.
+std::set<std::string> frames_in(const fs::path& dir) {
+  std::set<std::string> frames;
+  for (const std::string& n : names_in(dir))
+    if (n.rfind("fdem_", 0) == 0 && n.size() == 13 && n.substr(9) == ".vtu") frames.insert(n);
+  return frames;
+}
+
+}  // namespace
+
+// engine.dt is checked against the engine's stability limit, known only once
+// the mesh and the implicit stage exist; the refused run still writes
+// nothing, tunnel or specimen.
+TEST(OutputDir, run_refusing_dt_leaves_no_directory) {
+  const fs::path out = scratch("refused-dt");
+  for (const std::string& scene : {kCircular + " --set engine.dt=1",
+                                  kTestDir + "/ucs_small.toml --set engine.dt=2e-6"}) {
+    const Result r = run("run " + scene + " -q -o " + out.string());
+    EXPECT_EQ(r.code, 2) << scene << ": " << r.output;
+    EXPECT_NE(r.output.find("engine.dt"), std::string::npos) << r.output;
+    EXPECT_FALSE(fs::exists(out)) << scene;
+  }
+}
+
+// A refused run into an existing results folder leaves every file as it
+// was: into the same scene's folder, and with --force into another's (whose
+// .rockfdem-scene must still match the summary.json beside it).
+TEST(OutputDir, refused_run_leaves_an_existing_directory_untouched) {
+  const fs::path out = scratch("untouched");
+  const std::string dt = " --set engine.dt=1";
+  ASSERT_EQ(run("mesh " + kCircular + dt + " -q -o " + out.string()).code, 0);
+  const auto before = snapshot(out);
+  for (const std::string& args : {dt, dt + " --set tunnel.radius=2.5 --force"}) {
+    const Result r = run("run " + kCircular + args + " -q -o " + out.string());
+    EXPECT_EQ(r.code, 2) << args << ": " << r.output;
+    EXPECT_NE(r.output.find("engine.dt"), std::string::npos) << r.output;
+    EXPECT_EQ(snapshot(out), before) << args;
+  }
+  fs::remove_all(out);
+}
+
+// --force clears what an earlier, longer run wrote (frames the new fdem.pvd
+// does not list) and keeps every file rockfdem does not write.
+TEST(OutputDir, force_removes_an_earlier_runs_outputs_and_nothing_else) {
+  const fs::path out = scratch("force");
+  const std::string run_args = " -q --set output.every_steps=100 --set output.plots=false";
+  ASSERT_EQ(run("run " + kCircular + run_args + " --set engine.steps=400 -o " + out.string()).code,
+            0);
+  const std::set<std::string> long_frames = frames_in(out);
+  std::ofstream(out / "notes.txt") << "mine\n";
+  std::ofstream(out / "fdem_notes.vtu") << "mine\n";
+  fs::create_directories(out / "sub");
+  std::ofstream(out / "sub" / "fdem_0009.vtu") << "mine\n";
+
+  const Result again = run("run " + kCircular + run_args + " --set engine.steps=100 --force -o " +
+                           out.string());
+  ASSERT_EQ(again.code, 0) << again.output;
+  const std::string pvd = read_text(out / "fdem.pvd");
+  std::size_t listed = 0;
+  for (std::size_t at = pvd.find("fdem_"); at != std::string::npos; at = pvd.find("fdem_", at + 1))
+    ++listed;
+  ASSERT_LT(listed, long_frames.size());  // the second run is the shorter one
+  for (const std::string& f : frames_in(out))
+    EXPECT_NE(pvd.find("\"" + f + "\""), std::string::npos) << f << " is not in fdem.pvd";
+  for (const char* mine : {"notes.txt", "fdem_notes.vtu", "sub/fdem_0009.vtu"})
+    EXPECT_TRUE(fs::exists(out / mine)) << mine;
+
+  // A supported run writes bolt tables and checkpoints too; `mesh --force`
+  // of another scene leaves its three outputs and the user's files alone.
+  const Result supported = run("run " + kTestDir + "/restart_support.toml -q --force"
+                               " --set stages[4].max_steps=200 --set stages[5].max_steps=200"
+                               " --set output.every_steps=100 --checkpoint-every 100 -o " +
+                               out.string());
+  ASSERT_EQ(supported.code, 0) << supported.output;
+  ASSERT_TRUE(fs::exists(out / "bolt_00.csv"));
+  ASSERT_TRUE(fs::exists(out / "checkpoints"));
+  ASSERT_EQ(run("mesh " + kCircular + " -q --force -o " + out.string()).code, 0);
+  const std::set<std::string> left{".rockfdem-scene", "mesh.msh",  "mesh.vtu", "summary.json",
+                                   "notes.txt",       "fdem_notes.vtu", "sub"};
+  EXPECT_EQ(names_in(out), left);
+  fs::remove_all(out);
+}
