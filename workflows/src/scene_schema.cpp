@@ -215,8 +215,9 @@ std::vector<KeySpec> build_schema() {
   s.push_back(number("engine.dt_safety", "-", "0.8", 0, true, 1, false,
                      "Fraction of the computed critical time step used when engine.dt = 0."));
   s.push_back(number("engine.damping_ratio", "-", "0.1", 0, false, 2, false,
-                     "Viscous damping of the triangles as a fraction of critical for one "
-                     "element (eta = ratio 2 h sqrt(E rho))."));
+                     "Viscous damping of the triangles, a multiple of Munjiza's element "
+                     "viscosity eta = 2 h sqrt(E rho) (h: smallest altitude); the stiffest "
+                     "element mode then has 1.7-1.8 times this ratio of critical damping."));
   s.push_back(number("engine.local_damping", "-", "0", 0, false, 1, true,
                      "Cundall local damping coefficient for quasi-static stages."));
   s.push_back(non_negative("engine.mass_damping", "1/s", "0",
