@@ -133,6 +133,7 @@ int run_tunnel(const Scene& scene, const CommandLine& cli) {
   mesh::MeshReport report;
   const mesh::Mesh m = mesh::build_mesh(scene.mesh, &report);
   active_threads();
+  summary.record_mesh(m, report);
   mesh::write_msh(m, output_path(cli.output_dir, "mesh.msh"));
   timer.stamp("mesh");
   stop_if_interrupted(summary, cli, timer, "meshing");
@@ -147,6 +148,7 @@ int run_tunnel(const Scene& scene, const CommandLine& cli) {
     // [[stages]] holds only "insitu": the scene asks for the elastic
     // implicit results alone.
     summary.skipped("fdem: the scene's only stage is the implicit in-situ stage");
+    summary.json()["status"] = "completed";
     summary.set_timings(timer);
     summary.write(output_path(cli.output_dir, "summary.json"));
     return 0;
@@ -211,11 +213,8 @@ int run_tunnel(const Scene& scene, const CommandLine& cli) {
     throw;
   } catch (const NumericalError& e) {
     // The frames and history rows written so far are the last good output.
-    summary.json()["status"] = "failed";
-    summary.json()["failure"] = e.what();
     summary.json()["fdem"] = {{"stages", stages.report()}};
-    summary.set_timings(timer);
-    summary.write(output_path(cli.output_dir, "summary.json"));
+    out.report_failure(engine, timer, e.what());
     throw;
   }
 
