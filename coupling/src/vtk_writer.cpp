@@ -14,6 +14,8 @@
 #include <vtkXMLUnstructuredGridWriter.h>
 
 #include <algorithm>
+#include <cmath>
+#include <limits>
 #include <stdexcept>
 #include <type_traits>
 
@@ -32,6 +34,18 @@ int file_components(const VtkArray& a) {
   return 1;
 }
 
+// What a vector or tensor gains out of the plane: 0, or NaN where the
+// tuple is padding (all NaN: the array does not apply to this cell kind),
+// so that such a cell reads NaN in every component, not a zero stress.
+template <typename T>
+T out_of_plane(const VtkArray& a, const T* in) {
+  if constexpr (std::is_floating_point_v<T>) {
+    if (std::all_of(in, in + a.n_components, [](T v) { return std::isnan(v); }))
+      return std::numeric_limits<T>::quiet_NaN();
+  }
+  return T(0);
+}
+
 // One tuple of the record -> one tuple of the file. Vectors gain z = 0;
 // symmetric tensors (xx, yy, xy) or (xx, yy, zz, xy) become the full,
 // row-major 3x3 tensor.
@@ -39,15 +53,18 @@ template <typename T>
 void expand_tuple(const VtkArray& a, const T* in, T* out) {
   if (a.kind == VtkKind::scalar) {
     out[0] = in[0];
-  } else if (a.kind == VtkKind::vector) {
+    return;
+  }
+  const T o = out_of_plane(a, in);
+  if (a.kind == VtkKind::vector) {
     out[0] = in[0];
     out[1] = in[1];
-    out[2] = a.n_components == 3 ? in[2] : T(0);
+    out[2] = a.n_components == 3 ? in[2] : o;
   } else {
     const T xx = in[0], yy = in[1];
-    const T zz = a.n_components == 4 ? in[2] : T(0);
+    const T zz = a.n_components == 4 ? in[2] : o;
     const T xy = a.n_components == 4 ? in[3] : in[2];
-    const T full[9] = {xx, xy, 0, xy, yy, 0, 0, 0, zz};
+    const T full[9] = {xx, xy, o, xy, yy, o, o, o, zz};
     std::copy(full, full + 9, out);
   }
 }

@@ -7,6 +7,7 @@
 #include <cstring>
 
 #include "crack_elements.hpp"
+#include "rockfdem/fdem/bits_hash.hpp"
 #include "engine_impl.hpp"
 #include "node_update.hpp"
 #include "parallel.hpp"
@@ -103,18 +104,7 @@ std::array<double, 2> Engine::boundary_force(int tag) const {
   return {sx, sy};
 }
 
-std::string Engine::state_hash() const {
-  std::uint64_t h = 1469598103934665603ull;  // FNV-1a 64 offset basis
-  const auto& p = impl_->d.nodes.pos;
-  const auto* bytes = reinterpret_cast<const unsigned char*>(p.data());
-  for (std::size_t i = 0; i < p.size() * sizeof(double); ++i) {
-    h ^= bytes[i];
-    h *= 1099511628211ull;
-  }
-  char buf[17];
-  std::snprintf(buf, sizeof buf, "%016llx", static_cast<unsigned long long>(h));
-  return buf;
-}
+std::string Engine::state_hash() const { return bits_hash(impl_->d.nodes.pos); }
 
 PhaseTimes Engine::phase_times() const { return impl_->times; }
 

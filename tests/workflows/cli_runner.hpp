@@ -20,10 +20,11 @@ struct Result {
   std::string output;
 };
 
-/// `rockfdem ARGS` with stderr merged into the output.
-inline Result run(const std::string& args) {
+/// `rockfdem ARGS` with stderr merged into the output; `prefix` runs it
+/// through another command (`env -u DISPLAY`, `xvfb-run -a`).
+inline Result run(const std::string& args, const std::string& prefix = "") {
   Result r;
-  const std::string cmd = std::string(ROCKFDEM_BINARY) + " " + args + " 2>&1";
+  const std::string cmd = prefix + " " + std::string(ROCKFDEM_BINARY) + " " + args + " 2>&1";
   FILE* pipe = popen(cmd.c_str(), "r");
   std::array<char, 4096> buf{};
   while (std::fgets(buf.data(), buf.size(), pipe)) r.output += buf.data();

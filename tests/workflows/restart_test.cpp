@@ -123,6 +123,12 @@ TEST_F(Restart, continues_bit_identically_with_another_thread_count) {
   EXPECT_EQ(k["state_hash"].get<std::string>(), reference_hash());
   EXPECT_EQ(k["steps"].get<long>(), j["steps"].get<long>());
   EXPECT_EQ(k["broken"], j["broken"]);
+  // The time step figures carry over too: the hand-off's, each stage's, the range.
+  EXPECT_EQ(k["fdem"]["handoff_step"], j["fdem"]["handoff_step"]);
+  for (std::size_t s = 0; s < j["fdem"]["stages"].size(); ++s)
+    EXPECT_EQ(k["fdem"]["stages"][s]["dt"], j["fdem"]["stages"][s]["dt"]) << "stage " << s;
+  EXPECT_EQ(k["dt_min"], j["dt_min"]);
+  EXPECT_EQ(k["dt_max"], j["dt_max"]);
   EXPECT_EQ(k["restarted_from"]["step"].get<long>(), at);
   EXPECT_EQ(history_rows(out), history_rows(*reference_dir_));
   EXPECT_TRUE(fs::exists(out / "fdem_0000.vtu")) << "earlier frames come along";

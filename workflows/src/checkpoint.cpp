@@ -11,6 +11,7 @@
 #include "output_dir.hpp"
 #include "rockfdem/coupling/atomic_file.hpp"
 #include "rockfdem/error.hpp"
+#include "rockfdem/fdem/bits_hash.hpp"
 #include "rockfdem/workflows/scene.hpp"
 
 namespace fs = std::filesystem;
@@ -21,15 +22,6 @@ namespace {
 constexpr char kMagic[8] = {'R', 'F', 'D', 'M', 'C', 'K', 'P', 'T'};
 constexpr const char* kPrefix = "checkpoint_";
 constexpr const char* kSuffix = ".rfck";
-
-std::uint64_t fnv1a(const char* data, std::size_t n) {
-  std::uint64_t h = 1469598103934665603ull;
-  for (std::size_t i = 0; i < n; ++i) {
-    h ^= static_cast<unsigned char>(data[i]);
-    h *= 1099511628211ull;
-  }
-  return h;
-}
 
 template <class T>
 void put(std::string& out, T value) {
@@ -94,7 +86,7 @@ void prune(const fs::path& dir, std::size_t keep) {
 }  // namespace
 
 std::uint64_t scene_key(const Scene& scene) {
-  return fnv1a(scene.restart_key.data(), scene.restart_key.size());
+  return fdem::fnv1a(scene.restart_key.data(), scene.restart_key.size());
 }
 
 std::string write_checkpoint(const std::string& output_dir, long step, const Scene& scene,
@@ -108,7 +100,7 @@ std::string write_checkpoint(const std::string& output_dir, long step, const Sce
   put<std::uint64_t>(bytes, scene_key(scene));
   put_block(bytes, checkpoint.run.dump());
   put_block(bytes, checkpoint.engine_state);
-  put<std::uint64_t>(bytes, fnv1a(bytes.data(), bytes.size()));
+  put<std::uint64_t>(bytes, fdem::fnv1a(bytes.data(), bytes.size()));
   char name[64];
   std::snprintf(name, sizeof name, "%s%012ld%s", kPrefix, step, kSuffix);
   const std::string path = (dir / name).string();
@@ -135,7 +127,7 @@ Checkpoint read_checkpoint(const std::string& path, const Scene& scene) {
   const std::size_t body = bytes.size() - sizeof(std::uint64_t);
   std::uint64_t stored;
   std::memcpy(&stored, bytes.data() + body, sizeof stored);
-  if (stored != fnv1a(bytes.data(), body))
+  if (stored != fdem::fnv1a(bytes.data(), body))
     throw InputError("checkpoint " + path + ": checksum mismatch (" +
                      std::to_string(bytes.size()) +
                      " bytes, truncated or corrupt); use the previous checkpoint");

@@ -1,6 +1,6 @@
 // `rockfdem mesh SCENE -o DIR`: gmsh meshing alone; writes mesh.msh (for
-// gmsh and reuse), mesh.vtu (zones and quality, for ParaView) and
-// summary.json.
+// gmsh and reuse), mesh.vtu (zones and quality, for ParaView; unless
+// output.vtk = false) and summary.json.
 #include <iostream>
 
 #include "commands.hpp"
@@ -24,18 +24,14 @@ int command_mesh(const Scene& scene, const CommandLine& cli) {
   timer.stamp("mesh");
 
   mesh::write_msh(m, output_path(cli.output_dir, "mesh.msh"));
-  coupling::write_vtu(coupling::mesh_grid(m), output_path(cli.output_dir, "mesh.vtu"));
+  if (scene.output.vtk)
+    coupling::write_vtu(coupling::mesh_grid(m), output_path(cli.output_dir, "mesh.vtu"));
   timer.stamp("output");
 
-  auto& j = summary.json();
-  j["counts"]["triangles"] = m.n_triangles();
-  j["counts"]["nodes"] = m.n_vertices();
-  j["mesh"] = {{"triangles", report.n_triangles},
-               {"vertices", report.n_vertices},
-               {"min_altitude", report.min_altitude},
-               {"min_angle_deg", report.min_angle_deg},
-               {"seconds", report.seconds}};
+  summary.record_mesh(m, report);
+  summary.note_turned_off(scene.output, "mesh.vtu", false);
   summary.skipped("insitu, fdem: `rockfdem mesh` meshes only");
+  summary.json()["status"] = "completed";
   summary.set_timings(timer);
   summary.write(output_path(cli.output_dir, "summary.json"));
   if (!cli.quiet) {

@@ -10,9 +10,11 @@
 #include "engine_report.hpp"
 #include "history.hpp"
 #include "interrupt.hpp"
+#include "last_good.hpp"
 #include "output_dir.hpp"
 #include "phase_timer.hpp"
 #include "progress.hpp"
+#include "run_plots.hpp"
 #include "rockfdem/coupling/fdem_model.hpp"
 #include "rockfdem/coupling/vtk_writer.hpp"
 #include "rockfdem/error.hpp"
@@ -63,9 +65,11 @@ int run_specimen(const Scene& scene, const CommandLine& cli) {
   PhaseTimer timer;
   const int threads = active_threads();
   RunSummary summary(scene, threads);
+  summary.note_turned_off(scene.output, "fdem.pvd, fdem_NNNN.vtu", true);
   mesh::MeshReport report;
   const mesh::Mesh m = mesh::build_mesh(scene.mesh, &report);
   active_threads();
+  summary.record_mesh(m, report);
   timer.stamp("mesh");
 
   fdem::ModelInput in = coupling::model_input(m, engine_materials(scene),
@@ -99,6 +103,7 @@ int run_specimen(const Scene& scene, const CommandLine& cli) {
   Progress progress(disc ? "brazilian" : "ucs", scene.engine.steps, cli.quiet);
   double peak = 0;
   int frame = 0;
+  LastGoodState last_good;
   const auto record = [&] {
     const double force = -engine.boundary_force(upper_tag)[1];  // compression positive
     // UCS: mean axial stress; disc: the Brazilian tensile stress 2P/(pi D t).
@@ -114,6 +119,7 @@ int run_specimen(const Scene& scene, const CommandLine& cli) {
     history.add(row);
     check_energy(energy, engine.step_count());  // before the frame: keep the last good one
     if (scene.output.vtk) write_frame(engine, m, cli.output_dir, frame++, pvd);
+    last_good.take(engine, energy);
   };
   auto& j = summary.json();
   const auto stop = [&](const char* status, const std::string& why) {
@@ -132,6 +138,7 @@ int run_specimen(const Scene& scene, const CommandLine& cli) {
       timer.stamp("fdem");
       record();
     } catch (const NumericalError& e) {
+      last_good.report_failure(engine, timer, e.what(), summary);
       stop("failed", e.what());  // history and frames so far are the last good output
       throw;
     }
@@ -144,6 +151,8 @@ int run_specimen(const Scene& scene, const CommandLine& cli) {
       throw Interrupted(sig, why);
     }
   }
+  if (scene.output.plots)
+    specimen_plots(engine, m, history, disc, cli.output_dir, summary, cli.quiet);
   timer.stamp("output");
   progress.finish(engine.step_count(), engine.time());
   j["status"] = "completed";

@@ -7,19 +7,40 @@
 
 namespace rockfdem::workflows {
 
+nlohmann::json state_figures(const fdem::Engine& e, const fdem::EnergyBalance& en) {
+  const fdem::BrokenCounts b = e.broken_counts();
+  return {{"steps", e.step_count()},
+          {"dt", e.dt()},
+          {"simulated_time", e.time()},
+          {"broken", {{"mode_I", b.mode_I}, {"mode_II", b.mode_II}, {"mixed", b.mixed}}},
+          {"energy", {{"external_work", en.external_work},
+                      {"kinetic", en.kinetic},
+                      {"strain", en.strain},
+                      {"crack_elastic", en.crack_elastic},
+                      {"contact_elastic", en.contact_elastic},
+                      {"initial_stored", en.initial_stored},
+                      {"damping", en.damping},
+                      {"fracture", en.fracture},
+                      {"friction", en.friction},
+                      {"absorbing", en.absorbing},
+                      {"softening", en.softening},
+                      {"removed_by_stages", en.removed},
+                      {"residual", en.residual()},
+                      {"relative_imbalance", en.imbalance()}}},
+          {"state_hash", e.state_hash()}};
+}
+
 void report_engine(const fdem::Engine& e, const PhaseTimer& timer, RunSummary& summary) {
   auto& j = summary.json();
   j["counts"]["triangles"] = e.n_triangles();
   j["counts"]["nodes"] = e.n_nodes();
   j["counts"]["crack_elements"] = e.n_cracks();
-  j["steps"] = e.step_count();
-  j["dt"] = e.dt();
-  j["simulated_time"] = e.time();
+  j.update(state_figures(e, e.energy_balance()));
+  // One dt throughout, unless a staged run widens the range (RunOutputs).
+  j["dt_min"] = j["dt_max"] = e.dt();
   const double fdem = timer.seconds("fdem");
   j["throughput"]["triangle_steps_per_second"] =
       fdem > 0 ? double(e.n_triangles()) * double(e.step_count()) / fdem : 0.0;
-  const fdem::BrokenCounts b = e.broken_counts();
-  j["broken"] = {{"mode_I", b.mode_I}, {"mode_II", b.mode_II}, {"mixed", b.mixed}};
   const fdem::PhaseTimes p = e.phase_times();
   j["fdem_modules"] = {{"triangles", p.triangles}, {"cracks", p.cracks}, {"nodes", p.nodes},
                        {"contact", p.contact}};
@@ -48,24 +69,8 @@ void report_engine(const fdem::Engine& e, const PhaseTimer& timer, RunSummary& s
                                        "simulated_time is pseudo-time"}});
   else
     summary.skipped("mass scaling: off (engine.mass_scaling); dynamics at true masses");
-  const fdem::EnergyBalance en = e.energy_balance();
-  j["energy"] = {{"external_work", en.external_work},
-                 {"kinetic", en.kinetic},
-                 {"strain", en.strain},
-                 {"crack_elastic", en.crack_elastic},
-                 {"contact_elastic", en.contact_elastic},
-                 {"initial_stored", en.initial_stored},
-                 {"damping", en.damping},
-                 {"fracture", en.fracture},
-                 {"friction", en.friction},
-                 {"absorbing", en.absorbing},
-                 {"softening", en.softening},
-                 {"removed_by_stages", en.removed},
-                 {"residual", en.residual()},
-                 {"relative_imbalance", en.imbalance()}};
   j["memory_bytes"] = e.memory_bytes();
   j["memory_bytes_per_triangle"] = double(e.memory_bytes()) / double(e.n_triangles());
-  j["state_hash"] = e.state_hash();
 }
 
 std::vector<std::string> energy_columns() {

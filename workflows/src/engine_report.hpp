@@ -14,6 +14,11 @@ namespace rockfdem::workflows {
 
 void report_engine(const fdem::Engine& e, const PhaseTimer& timer, RunSummary& summary);
 
+/// The summary keys that describe one state of the engine: steps, dt (the
+/// last step's), simulated_time, broken, energy (`en`, the state's balance)
+/// and state_hash.
+nlohmann::json state_figures(const fdem::Engine& e, const fdem::EnergyBalance& en);
+
 /// history.csv's energy columns and one row of them (energy since the
 /// first step [J/m]: external work, change of stored energy, dissipated and
 /// taken out by stage controls, residual and relative imbalance).

@@ -8,12 +8,12 @@
 
 #include "engine_report.hpp"
 #include "output_dir.hpp"
+#include "run_plots.hpp"
 #include "stage_inputs.hpp"
 #include "rockfdem/coupling/atomic_file.hpp"
 #include "rockfdem/coupling/fdem_model.hpp"
 #include "rockfdem/fdem/bolt_output.hpp"
 #include "rockfdem/coupling/insitu_grid.hpp"
-#include "rockfdem/coupling/plot.hpp"
 
 namespace rockfdem::workflows {
 namespace {
@@ -27,37 +27,6 @@ const Monitor& find(const std::vector<Monitor>& ms, const std::string& name) {
   for (const Monitor& m : ms)
     if (m.name == name) return m;
   throw std::logic_error("no monitor " + name);
-}
-
-// The picture of the final state shows broken cracks only: intact crack
-// elements lie on every edge of the fracture zone and would hide the mesh.
-coupling::VtkGrid broken_crack_grid(const fdem::Engine& e, const mesh::Mesh& m,
-                                    const insitu::InsituField* implicit) {
-  coupling::VtkGrid g = coupling::fdem_grid(e, m, implicit);
-  std::vector<std::array<int, 2>> lines;
-  for (std::size_t c = 0; c < e.n_cracks(); ++c)
-    if (e.crack_state(c) == fdem::CrackState::kBroken) lines.push_back(g.lines[c]);
-  const std::size_t n_tri = g.n_triangles();
-  g.lines = lines;
-  for (coupling::VtkArray& a : g.cell_arrays) {
-    if (a.is_int()) {
-      auto& v = std::get<std::vector<std::int32_t>>(a.values);
-      v.resize(n_tri * a.n_components);
-    } else {
-      auto& v = std::get<std::vector<double>>(a.values);
-      v.resize(n_tri * a.n_components);
-    }
-    a = coupling::triangle_cell_array(g, std::move(a));
-  }
-  // Excavated triangles are drawn grey (NaN), not as stress-free rock.
-  for (coupling::VtkArray& a : g.cell_arrays) {
-    if (a.is_int()) continue;
-    auto& v = std::get<std::vector<double>>(a.values);
-    for (std::size_t t = 0; t < n_tri; ++t)
-      if (!e.active(t))
-        for (int k = 0; k < a.n_components; ++k) v[t * a.n_components + k] = std::nan("");
-  }
-  return g;
 }
 
 }  // namespace
@@ -104,7 +73,9 @@ double RunOutputs::convergence(const fdem::Engine& e, const std::vector<Monitor>
 
 RunOutputs::RunOutputs(const Scene& scene, const CommandLine& cli, RunSummary& summary)
     : scene_(scene), cli_(cli), summary_(summary),
-      pvd_(output_path(cli.output_dir, "fdem.pvd")) {}
+      pvd_(output_path(cli.output_dir, "fdem.pvd")) {
+  summary_.note_turned_off(scene.output, "fdem.pvd, fdem_NNNN.vtu, insitu.vtu", true);
+}
 
 void RunOutputs::record_insitu(const mesh::Mesh& m, const std::vector<insitu::InsituField>& fields) {
   fields_ = fields;
@@ -115,8 +86,10 @@ void RunOutputs::record_insitu(const mesh::Mesh& m, const std::vector<insitu::In
     j["alpha"].push_back(f.alpha);
     j["solver_iterations"].push_back(f.iterations);
   }
-  coupling::write_vtu(coupling::insitu_grid(m, fields.back()),
-                      output_path(cli_.output_dir, "insitu.vtu"));
+  summary_.record_insitu_state(fields.back());
+  if (scene_.output.vtk)
+    coupling::write_vtu(coupling::insitu_grid(m, fields.back()),
+                        output_path(cli_.output_dir, "insitu.vtu"));
   insitu::KirschCase k;
   if (kirsch_case(scene_, &k) && fields.back().alpha == 0.0)
     j["kirsch_rel_l2"] = insitu::compare_kirsch(m, fields.back(), k).stress_rel_l2;
@@ -146,6 +119,7 @@ void RunOutputs::begin_history(const std::vector<Monitor>& monitors, const mesh:
 void RunOutputs::record_step(const fdem::Engine& e, const mesh::Mesh& m,
                              const std::vector<Monitor>& monitors, PhaseTimer& timer,
                              const std::string& stage, double support_ratio) {
+  if (stage_names_.empty() && stage == "handoff") handoff_dt_ = e.dt();  // its one step's
   if (stage_names_.empty() || stage_names_.back() != stage) stage_names_.push_back(stage);
   const fdem::BrokenCounts b = e.broken_counts();
   std::vector<double> row{double(stage_names_.size() - 1), double(e.step_count()), e.time(),
@@ -171,7 +145,47 @@ void RunOutputs::record_step(const fdem::Engine& e, const mesh::Mesh& m,
     pvd_.add(e.time(), name);
     pvd_.write();
   }
+  last_good_.take(e, energy, monitors_json(e, monitors));
   timer.stamp("output");
+}
+
+nlohmann::json RunOutputs::monitors_json(const fdem::Engine& e,
+                                         const std::vector<Monitor>& monitors) const {
+  nlohmann::json j = nlohmann::json::object();
+  for (const Monitor& mon : monitors) {
+    const auto u = displacement(e, mon);
+    j[mon.name] = {{"ux_mm", mm(u[0])}, {"uy_mm", mm(u[1])}, {"x", mon.x}, {"y", mon.y}};
+  }
+  j["vault_settlement_mm"] = -mm(displacement(e, find(monitors, "vault"))[1]);
+  j["wall_convergence_mm"] = mm(convergence(e, monitors, "left_wall", "right_wall"));
+  j["shoulder_convergence_mm"] = mm(convergence(e, monitors, "left_shoulder", "right_shoulder"));
+  return j;
+}
+
+void RunOutputs::report_dt() {
+  auto& j = summary_.json();
+  // Steps and time add up: the hand-off step, then each stage's (dt is
+  // constant within a stage: the limit changes only with a stage's changes).
+  double lo = j["dt"].get<double>(), hi = lo;
+  if (handoff_dt_ > 0) {
+    j["fdem"]["handoff_step"] = {{"steps", 1}, {"dt", handoff_dt_},
+                                 {"simulated_time", handoff_dt_}};
+    lo = std::min(lo, handoff_dt_);
+    hi = std::max(hi, handoff_dt_);
+  }
+  for (const auto& stage : j["fdem"]["stages"])
+    if (stage.contains("dt") && stage["dt"].is_number()) {
+      lo = std::min(lo, stage["dt"].get<double>());
+      hi = std::max(hi, stage["dt"].get<double>());
+    }
+  j["dt_min"] = lo;
+  j["dt_max"] = hi;
+}
+
+void RunOutputs::report_failure(const fdem::Engine& e, PhaseTimer& timer, const std::string& why) {
+  last_good_.report_failure(e, timer, why, summary_);
+  report_dt();
+  summary_.write(output_path(cli_.output_dir, "summary.json"));
 }
 
 coupling::VtkGrid RunOutputs::frame_grid(const fdem::Engine& e, const mesh::Mesh& m) const {
@@ -191,13 +205,15 @@ coupling::VtkGrid RunOutputs::frame_grid(const fdem::Engine& e, const mesh::Mesh
 nlohmann::json RunOutputs::state() const {
   nlohmann::json frames = nlohmann::json::array();
   for (const coupling::PvdEntry& f : pvd_.entries()) frames.push_back({f.time, f.file});
-  return {{"history", history_->rows()}, {"stages", stage_names_}, {"frames", frames}};
+  return {{"history", history_->rows()}, {"stages", stage_names_}, {"frames", frames},
+          {"handoff_dt", handoff_dt_}};
 }
 
 void RunOutputs::restore(const nlohmann::json& s, const std::string& from_dir) {
   namespace fs = std::filesystem;
   history_->restore(s.at("history").get<std::vector<std::vector<double>>>());
   stage_names_ = s.at("stages").get<std::vector<std::string>>();
+  handoff_dt_ = s.value("handoff_dt", 0.0);  // 0: a checkpoint from before it was kept
   std::error_code same_ec;
   const bool same_dir = fs::equivalent(from_dir, cli_.output_dir, same_ec);
   for (const auto& f : s.at("frames")) {
@@ -276,16 +292,9 @@ void RunOutputs::finish(const fdem::Engine& e, const mesh::Mesh& m,
                         const fdem::BoltPlan& bolts) {
   auto& j = summary_.json();
   report_engine(e, timer, summary_);
+  report_dt();
   bolt_outputs(e, bolts);
-  for (const Monitor& mon : monitors) {
-    const auto u = displacement(e, mon);
-    j["monitors"][mon.name] = {{"ux_mm", mm(u[0])}, {"uy_mm", mm(u[1])}, {"x", mon.x},
-                               {"y", mon.y}};
-  }
-  j["monitors"]["vault_settlement_mm"] = -mm(displacement(e, find(monitors, "vault"))[1]);
-  j["monitors"]["wall_convergence_mm"] = mm(convergence(e, monitors, "left_wall", "right_wall"));
-  j["monitors"]["shoulder_convergence_mm"] =
-      mm(convergence(e, monitors, "left_shoulder", "right_shoulder"));
+  j["monitors"] = monitors_json(e, monitors);
   // Ground reaction curve, implicit part: the core's share of the in-situ
   // stress (alpha) against the vault settlement it allows.
   const int vault_vertex = vertex_of(e, find(monitors, "vault"));
@@ -311,39 +320,23 @@ void RunOutputs::finish(const fdem::Engine& e, const mesh::Mesh& m,
 }
 
 void RunOutputs::plots(const fdem::Engine& e, const mesh::Mesh& m) {
-  std::string why;
-  if (!coupling::rendering_available(&why)) {
-    summary_.skipped("plots: " + why + " (run under xvfb-run -a)");
-    if (!cli_.quiet) std::cerr << "rockfdem: plots skipped: " << why << '\n';
-    return;
-  }
-  const std::string& dir = cli_.output_dir;
+  PlotWriter plots(cli_.output_dir, summary_, cli_.quiet);
+  if (!plots.available()) return;
   const History& h = *history_;
   const std::vector<double> t = h.column("time");
-  // Scaled masses make the simulated time a pseudo-time: say so on the axis.
-  const std::string time_axis = e.mass_scaling_report().enabled ? "pseudo-time [s] (mass-scaled)"
-                                                                 : "time [s]";
-  coupling::plot_xy_png("Convergence", time_axis, "displacement [mm]",
-                        {{"vault settlement", t, h.column("vault_settlement_mm")},
-                         {"wall convergence", t, h.column("wall_convergence_mm")}},
-                        output_path(dir, "convergence.png"));
-  coupling::plot_xy_png("Broken crack elements", time_axis, "count",
-                        {{"mode I", t, h.column("broken_I")},
-                         {"mode II", t, h.column("broken_II")},
-                         {"mixed", t, h.column("broken_mixed")}},
-                        output_path(dir, "broken.png"));
+  plots.xy("convergence.png", "Convergence", time_axis_label(e), "displacement [mm]",
+           {{"vault settlement", t, h.column("vault_settlement_mm")},
+            {"wall convergence", t, h.column("wall_convergence_mm")}});
+  plots.broken_cracks(e, h);
   std::vector<double> ratio, settlement;
   for (const auto& p : summary_.json()["ground_reaction_curve"]) {
     ratio.push_back(p["support_pressure_ratio"].get<double>());
     settlement.push_back(p["vault_settlement_mm"].get<double>());
   }
-  coupling::plot_xy_png("Ground reaction curve (vault)", "vault settlement [mm]",
-                        "support pressure / in-situ stress", {{"vault", settlement, ratio}},
-                        output_path(dir, "ground_reaction.png"));
-  coupling::render_mesh_png(broken_crack_grid(e, m, fields_.empty() ? nullptr : &fields_.back()),
-                            "principal_stress", 1,
-                            output_path(dir, "final_mesh.png"),
-                            "Minor principal stress [Pa], broken cracks in black");
+  plots.xy("ground_reaction.png", "Ground reaction curve (vault)", "vault settlement [mm]",
+           "support pressure / in-situ stress", {{"vault", settlement, ratio}});
+  plots.final_mesh(e, m, fields_.empty() ? nullptr : &fields_.back(), 1,
+                   "Minor principal stress [Pa], broken cracks in black");
 }
 
 }  // namespace rockfdem::workflows

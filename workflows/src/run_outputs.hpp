@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "history.hpp"
+#include "last_good.hpp"
 #include "monitors.hpp"
 #include "phase_timer.hpp"
 #include "rockfdem/coupling/vtk_writer.hpp"
@@ -40,8 +41,17 @@ class RunOutputs {
   /// Counts, monitors, broken cracks, hash, plots, timings; writes summary.json.
   void finish(const fdem::Engine& e, const mesh::Mesh& m, const std::vector<Monitor>& monitors,
               PhaseTimer& timer, const fdem::BoltPlan& bolts);
+  /// summary.json of a run a NumericalError stopped (`why`): the last good
+  /// state's figures (LastGoodState), the dt range, status and diagnostic.
+  void report_failure(const fdem::Engine& e, PhaseTimer& timer, const std::string& why);
 
  private:
+  /// summary "monitors": each monitor's ux, uy [mm] and position, vault
+  /// settlement, wall and shoulder convergence [mm].
+  nlohmann::json monitors_json(const fdem::Engine& e, const std::vector<Monitor>& monitors) const;
+  /// fdem.handoff_step and dt_min, dt_max over it, the stages' dt and the
+  /// last step's (summary "fdem" holds the stage reports by then).
+  void report_dt();
   void plots(const fdem::Engine& e, const mesh::Mesh& m);
   /// The engine grid plus, with bolts installed, "bolt_axial_stress" (steel
   /// stress along the axis per bolt triangle, NaN elsewhere).
@@ -69,6 +79,8 @@ class RunOutputs {
   mutable long translation_step_ = -1;   ///< step the cached translation belongs to
   mutable std::array<double, 2> translation_{0, 0};
   std::vector<std::string> stage_names_;
+  double handoff_dt_ = 0;  ///< dt of the hand-off step (0: not taken by this run's record)
+  LastGoodState last_good_;
   double fdem_seconds_at_start_ = 0;
 };
 

@@ -155,6 +155,7 @@ int run_tunnel(const Scene& scene, const CommandLine& cli) {
   mesh::MeshReport report;
   const mesh::Mesh m = mesh::build_mesh(scene.mesh, &report);
   active_threads();
+  summary.record_mesh(m, report);
   timer.stamp("mesh");
   stop_if_interrupted(scene, summary, cli, timer, "meshing");
 
@@ -169,6 +170,7 @@ int run_tunnel(const Scene& scene, const CommandLine& cli) {
     write_first_outputs(scene, cli, restart, m, fields, out);
     timer.stamp("output");
     summary.skipped("fdem: the scene's only stage is the implicit in-situ stage");
+    summary.json()["status"] = "completed";
     summary.set_timings(timer);
     summary.write(output_path(cli.output_dir, "summary.json"));
     return 0;
@@ -236,11 +238,8 @@ int run_tunnel(const Scene& scene, const CommandLine& cli) {
     throw;
   } catch (const NumericalError& e) {
     // The frames and history rows written so far are the last good output.
-    summary.json()["status"] = "failed";
-    summary.json()["failure"] = e.what();
     summary.json()["fdem"] = {{"stages", stages.report()}};
-    summary.set_timings(timer);
-    summary.write(output_path(cli.output_dir, "summary.json"));
+    out.report_failure(engine, timer, e.what());
     throw;
   }
 

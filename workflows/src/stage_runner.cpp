@@ -138,6 +138,7 @@ bool StageRunner::step_until(const StageSpec& stage, PhaseTimer& timer, long bro
     }
   }
   progress.finish(in_stage(), engine_.time() - t0);
+  stage_dt_ = engine_.dt();  // before a grout stage re-joins cracks (a new limit)
   return done;
 }
 
@@ -185,6 +186,7 @@ void StageRunner::run(const StageSpec& stage, PhaseTimer& timer) {
                      {"changes", done},
                      {"steps", steps_taken},
                      {"simulated_time", engine_.time() - cursor_.t0},
+                     {"dt", steps_taken > 0 ? nlohmann::json(stage_dt_) : nlohmann::json()},
                      {"unbalanced_ratio", engine_.unbalanced_force_ratio()},
                      {"settle", last_settle_ >= 0 ? nlohmann::json(last_settle_) : nlohmann::json()},
                      // A stage that took no step has no equilibrium to report.

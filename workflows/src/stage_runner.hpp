@@ -45,7 +45,7 @@ class StageRunner {
   /// Runs the stages from the cursor to the end. Throws Interrupted (after
   /// a checkpoint and a last history row) when SIGINT or SIGTERM arrives.
   void run_all(PhaseTimer& timer);
-  /// One entry per stage run: kind, steps, simulated time, final ratio, converged.
+  /// One entry per stage run: kind, steps, simulated time, dt, final ratio, converged.
   const nlohmann::json& report() const { return report_; }
   bool core_present() const { return core_present_; }
   nlohmann::json state() const;
@@ -97,6 +97,7 @@ class StageRunner {
   Cursor cursor_;
   long checkpoint_every_ = 0;
   double last_settle_ = -1;   ///< settle_measure() of the stage's last interval; -1: none
+  double stage_dt_ = 0;       ///< the dt of the stage's steps (one limit per stage)
   long last_checkpoint_ = 0;  ///< step of the last checkpoint (or of the start)
   std::function<void()> save_checkpoint_;
   nlohmann::json report_ = nlohmann::json::array();

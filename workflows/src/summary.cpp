@@ -1,10 +1,26 @@
 #include "summary.hpp"
 
 #include "rockfdem/coupling/atomic_file.hpp"
+#include "rockfdem/fdem/bits_hash.hpp"
+#include "rockfdem/insitu/insitu.hpp"
+#include "rockfdem/mesh/build.hpp"
 #include "rockfdem/workflows/scene.hpp"
 #include "rockfdem/workflows/version.hpp"
 
 namespace rockfdem::workflows {
+namespace {
+
+// (a0, b0, a1, b1, ...): the engine's layout, so the hashes read alike.
+std::vector<double> interleave(const std::vector<double>& a, const std::vector<double>& b) {
+  std::vector<double> out(2 * a.size());
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    out[2 * i] = a[i];
+    out[2 * i + 1] = b[i];
+  }
+  return out;
+}
+
+}  // namespace
 
 RunSummary::RunSummary(const Scene& scene, int threads) {
   using nlohmann::json;
@@ -12,7 +28,8 @@ RunSummary::RunSummary(const Scene& scene, int threads) {
            {"scene", scene.source},
            {"title", scene.title},
            {"threads", threads},
-           {"counts", {{"triangles", 0}, {"nodes", 0}, {"crack_elements", 0}, {"bolts", 0}}},
+           {"counts", {{"triangles", 0}, {"nodes", 0}, {"crack_elements", 0},
+                       {"bolts", scene.bolts.segments.size()}}},
            {"steps", 0},
            {"dt", 0.0},
            {"simulated_time", 0.0},
@@ -29,6 +46,27 @@ RunSummary::RunSummary(const Scene& scene, int threads) {
 
 void RunSummary::skipped(const std::string& what_and_why) {
   root_["skipped"].push_back(what_and_why);
+}
+
+void RunSummary::note_turned_off(const OutputSettings& output, const std::string& paraview_files,
+                                 bool renders_plots) {
+  if (!output.vtk) skipped("ParaView files (" + paraview_files + "): output.vtk = false");
+  if (renders_plots && !output.plots) skipped("plots: output.plots = false");
+}
+
+void RunSummary::record_mesh(const mesh::Mesh& m, const mesh::MeshReport& report) {
+  root_["counts"]["triangles"] = m.n_triangles();
+  root_["counts"]["nodes"] = m.n_vertices();
+  root_["mesh"] = {{"triangles", report.n_triangles},
+                   {"vertices", report.n_vertices},
+                   {"min_altitude", report.min_altitude},
+                   {"min_angle_deg", report.min_angle_deg},
+                   {"seconds", report.seconds}};
+  root_["state_hash"] = fdem::bits_hash(interleave(m.x, m.y));
+}
+
+void RunSummary::record_insitu_state(const insitu::InsituField& field) {
+  root_["state_hash"] = fdem::bits_hash(interleave(field.ux, field.uy));
 }
 
 void RunSummary::set_timings(const PhaseTimer& timer) {

@@ -10,7 +10,8 @@
 //   is line j;
 // - a cell array covers every cell. An array meaningful for one kind only
 //   holds NaN (double) or -1 (int32) on the other kind: use
-//   triangle_cell_array() / line_cell_array() to pad it;
+//   triangle_cell_array() / line_cell_array() to pad it. A double tuple of
+//   all NaN stays all NaN in the file (the writer's z components too);
 // - vectors of 2 components are written as 3 (z = 0) so ParaView can warp
 //   and glyph with them; symmetric tensors of 3 (xx, yy, xy) or 4
 //   (xx, yy, zz, xy) components are written as full 9-component tensors

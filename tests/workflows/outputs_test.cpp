@@ -1,0 +1,270 @@
+// What the summary and the output files say, as a user (or a script) reads
+// them: a failed run reports its last good state, the time step figures add
+// up, every command leaves a hash and a status, turned-off outputs are not
+// written and are listed in `skipped`, specimens get their plots.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <map>
+#include <sstream>
+#include <vector>
+
+#include "cli_runner.hpp"
+
+namespace fs = std::filesystem;
+using namespace rockfdem::test;
+
+namespace {
+
+const std::string kSeed = std::string(ROCKFDEM_SOURCE_DIR) + "/scenes/tunnel-seed.toml";
+
+// history.csv's last row, by column name.
+std::map<std::string, double> last_history_row(const fs::path& csv) {
+  std::istringstream in(read_text(csv));
+  std::string header, line, last;
+  std::getline(in, header);
+  while (std::getline(in, line))
+    if (!line.empty()) last = line;
+  std::map<std::string, double> row;
+  std::istringstream names(header), values(last);
+  std::string name, value;
+  while (std::getline(names, name, ',') && std::getline(values, value, ','))
+    row[name] = std::stod(value);
+  return row;
+}
+
+// The time of fdem.pvd's last frame (printed with 17 digits: exact).
+double last_frame_time(const fs::path& pvd) {
+  const std::string text = read_text(pvd);
+  const std::size_t at = text.rfind("timestep=\"");
+  return std::stod(text.substr(at + 10));
+}
+
+bool is_hash(const nlohmann::json& h) {
+  if (!h.is_string()) return false;
+  const std::string s = h.get<std::string>();
+  return s.size() == 16 && s.find_first_not_of("0123456789abcdef") == std::string::npos;
+}
+
+long count_of(const std::string& text, const std::string& what) {
+  long n = 0;
+  for (std::size_t at = text.find(what); at != std::string::npos; at = text.find(what, at + 1)) ++n;
+  return n;
+}
+
+// The `skipped` entries that contain `what`.
+std::vector<std::string> skipped_with(const nlohmann::json& j, const std::string& what) {
+  std::vector<std::string> out;
+  for (const auto& s : j["skipped"])
+    if (s.get<std::string>().find(what) != std::string::npos) out.push_back(s.get<std::string>());
+  return out;
+}
+
+bool is_png(const fs::path& p) {
+  const std::string bytes = read_text(p);
+  return bytes.size() > 1000 && bytes.compare(0, 8, "\x89PNG\r\n\x1a\n") == 0;
+}
+
+// `rockfdem ARGS -q -o OUT` (through `prefix`), which must exit with `code`;
+// returns the summary it left (null where none).
+nlohmann::json summary_of(const std::string& args, const fs::path& out, int code = 0,
+                          const std::string& prefix = "") {
+  const Result r = run(args + " -q -o " + out.string(), prefix);
+  EXPECT_EQ(r.code, code) << args << ": " << r.output;
+  return fs::exists(out / "summary.json") ? read_json(out / "summary.json") : nlohmann::json();
+}
+
+// `rockfdem run SCENE_ARGS --force-dt` into `out`, which must fail (exit 3)
+// naming `step` and leave a summary saying so; returns the summary.
+nlohmann::json failed_summary(const std::string& scene_args, const fs::path& out,
+                              const std::string& step) {
+  const nlohmann::json j =
+      summary_of("run " + scene_args + " -j 1 --force-dt --set output.plots=false", out, 3);
+  EXPECT_EQ(j["status"], "failed");
+  EXPECT_NE(j["failure"].get<std::string>().find(step), std::string::npos) << j["failure"];
+  return j;
+}
+
+}  // namespace
+
+// Each test writes into `out`, removed afterwards however the test ends.
+class Outputs : public ::testing::Test {
+ protected:
+  const fs::path out = scratch(std::string("outputs-") +
+                               testing::UnitTest::GetInstance()->current_test_info()->name());
+  void TearDown() override { fs::remove_all(out); }
+};
+
+// A forced dt of 2 ms diverges in the grout stage (step 6) after the
+// hand-off frame (step 1). The summary keeps what is known: the model's
+// counts (the seed tunnel: 8798 triangles, 13 bolts and cables) and the
+// last good state, the one the last frame shows: its steps, dt, time,
+// monitors and state hash; status and diagnostic say why it stopped.
+TEST_F(Outputs, failed_tunnel_run_reports_counts_and_the_last_good_state) {
+  const nlohmann::json j = failed_summary(kSeed +
+                                              " --set engine.dt=0.002 --set "
+                                              "'stages[5].max_steps=3000'",
+                                          out, "step 6");
+  EXPECT_EQ(j["counts"]["triangles"].get<long>(), 8798);
+  EXPECT_GT(j["counts"]["nodes"].get<long>(), 8798);  // duplicated where cracks may open
+  EXPECT_GT(j["counts"]["crack_elements"].get<long>(), 1000);
+  EXPECT_EQ(j["counts"]["bolts"].get<long>(), 13);
+  // history.csv holds 10 significant digits.
+  const auto row = last_history_row(out / "history.csv");
+  const auto near = [](double a, double b) { return std::abs(a - b) <= 1e-9 * std::abs(b); };
+  EXPECT_EQ(j["steps"].get<long>(), 1);
+  EXPECT_EQ(j["steps"].get<double>(), row.at("step"));
+  EXPECT_EQ(j["dt"].get<double>(), 0.002);
+  EXPECT_EQ(j["simulated_time"].get<double>(), last_frame_time(out / "fdem.pvd"));
+  EXPECT_TRUE(near(j["simulated_time"].get<double>(), row.at("time")));
+  EXPECT_TRUE(near(j["monitors"]["vault"]["uy_mm"].get<double>(), row.at("vault_uy_mm")))
+      << j["monitors"]["vault"] << " against " << row.at("vault_uy_mm");
+  EXPECT_TRUE(
+      near(j["monitors"]["vault_settlement_mm"].get<double>(), row.at("vault_settlement_mm")));
+  EXPECT_NE(j["monitors"]["vault_settlement_mm"].get<double>(), 0.0);
+  EXPECT_TRUE(is_hash(j["state_hash"])) << j["state_hash"];
+  EXPECT_TRUE(j.contains("mesh"));
+}
+
+// A specimen whose energy check fails at the first output (step 100, 3x
+// the stability limit) has written that row, but no frame: the last good
+// state is step 0, and the summary reports it, not the diverged one.
+TEST_F(Outputs, failed_specimen_run_reports_the_last_frame_state) {
+  const nlohmann::json j =
+      failed_summary(kTestDir + "/ucs_small.toml --set engine.dt=3.07062e-07", out, "step 100");
+  EXPECT_GT(j["counts"]["triangles"].get<long>(), 100);
+  EXPECT_GT(j["counts"]["crack_elements"].get<long>(), 100);
+  EXPECT_EQ(j["steps"].get<long>(), 0);
+  EXPECT_EQ(j["simulated_time"].get<double>(), 0.0);
+  EXPECT_EQ(j["simulated_time"].get<double>(), last_frame_time(out / "fdem.pvd"));
+  EXPECT_EQ(j["dt"].get<double>(), 3.07062e-07);
+  EXPECT_EQ(j["broken"]["mode_I"].get<long>(), 0);
+  EXPECT_TRUE(is_hash(j["state_hash"])) << j["state_hash"];
+  EXPECT_EQ(last_history_row(out / "history.csv").at("step"), 100.0);
+}
+
+// The automatic dt follows the stability limit, which changes with the
+// stages (grouting re-joins cracks with another material): `dt` is the
+// last step's, dt_min and dt_max the range, and each stage (and the
+// hand-off step, which belongs to no stage) reports its own, so that
+// steps and simulated time add up exactly.
+TEST_F(Outputs, dt_figures_account_for_steps_and_simulated_time) {
+  const nlohmann::json j = summary_of("run " + kSeed +
+                                          " -j 2 --set 'stages[5].max_steps=1000' --set "
+                                          "output.plots=false --set output.vtk=false",
+                                      out);
+  const nlohmann::json& handoff = j["fdem"]["handoff_step"];
+  ASSERT_EQ(handoff["steps"].get<long>(), 1);
+  long steps = handoff["steps"].get<long>();
+  double time = handoff["simulated_time"].get<double>();
+  double lo = handoff["dt"].get<double>(), hi = lo, last = lo;
+  EXPECT_EQ(time, lo);
+  for (const auto& s : j["fdem"]["stages"]) {
+    const long n = s["steps"].get<long>();
+    steps += n;
+    time += s["simulated_time"].get<double>();
+    if (n == 0) {
+      EXPECT_TRUE(s["dt"].is_null()) << s;
+      continue;
+    }
+    const double dt = s["dt"].get<double>();
+    EXPECT_NEAR(s["simulated_time"].get<double>(), n * dt, 1e-9 * n * dt) << s;
+    lo = std::min(lo, dt);
+    hi = std::max(hi, dt);
+    last = dt;
+  }
+  EXPECT_EQ(steps, j["steps"].get<long>());
+  EXPECT_NEAR(time, j["simulated_time"].get<double>(), 1e-12 * time);
+  EXPECT_EQ(j["dt"].get<double>(), last);
+  EXPECT_EQ(j["dt_min"].get<double>(), lo);
+  EXPECT_EQ(j["dt_max"].get<double>(), hi);
+  EXPECT_LT(lo, hi);  // measured 3.58e-4 to 4.54e-4 s
+  EXPECT_TRUE(j["mesh"]["min_angle_deg"].get<double>() > 0) << j["mesh"];
+  EXPECT_EQ(j["status"], "completed");
+}
+
+// `mesh` and `insitu` leave a status and a state hash like `run`: the
+// mesh's vertex coordinates, the in-situ displacement field (so the two
+// differ); counts.bolts is the scene's bolts and cables (the mesh holds
+// their triangles), 13 in the seed tunnel.
+TEST_F(Outputs, mesh_and_insitu_summaries_have_status_hash_and_bolts) {
+  std::string hashes[2];
+  const char* commands[2] = {"mesh", "insitu"};
+  for (int k = 0; k < 2; ++k) {
+    const nlohmann::json j = summary_of(std::string(commands[k]) + " " + kSeed + " -j 1", out);
+    EXPECT_EQ(j["status"], "completed") << commands[k];
+    EXPECT_TRUE(is_hash(j["state_hash"])) << commands[k] << ": " << j["state_hash"];
+    EXPECT_EQ(j["counts"]["bolts"].get<long>(), 13) << commands[k];
+    EXPECT_GT(j["mesh"]["triangles"].get<long>(), 0) << commands[k];
+    hashes[k] = j["state_hash"].get<std::string>();
+    fs::remove_all(out);
+  }
+  EXPECT_NE(hashes[0], hashes[1]);
+  // The same mesh again: the same hash.
+  EXPECT_EQ(summary_of("mesh " + kSeed + " -j 2", out)["state_hash"], hashes[0]);
+}
+
+// A run of the implicit stage alone completes with the in-situ field's hash.
+TEST_F(Outputs, insitu_only_run_has_status_hash_and_mesh) {
+  const nlohmann::json j = summary_of("run " + kTestDir + "/elastic_only.toml -j 1", out);
+  EXPECT_EQ(j["status"], "completed");
+  EXPECT_TRUE(is_hash(j["state_hash"])) << j["state_hash"];
+  EXPECT_TRUE(j.contains("mesh"));
+}
+
+// output.vtk = false and output.plots = false: no ParaView file at all (the
+// implicit stage's insitu.vtu included) and `skipped` names both settings.
+TEST_F(Outputs, turned_off_outputs_are_not_written_and_are_listed) {
+  const std::string off = " --set output.vtk=false --set output.plots=false -j 1";
+  for (const std::string& scene : {kTestDir + "/elastic_only.toml", kTestDir + "/ucs_small.toml"}) {
+    const nlohmann::json j = summary_of("run " + scene + off, out);
+    for (const auto& e : fs::directory_iterator(out)) {
+      const std::string ext = e.path().extension().string();
+      EXPECT_TRUE(ext != ".vtu" && ext != ".pvd" && ext != ".png") << e.path();
+    }
+    EXPECT_EQ(skipped_with(j, "output.vtk = false").size(), 1u) << scene << j["skipped"];
+    EXPECT_EQ(skipped_with(j, "output.plots = false").size(), 1u) << scene << j["skipped"];
+    fs::remove_all(out);
+  }
+  const nlohmann::json j = summary_of("insitu " + kTestDir + "/good_circular.toml" + off, out);
+  EXPECT_FALSE(fs::exists(out / "insitu.vtu"));
+  EXPECT_FALSE(fs::exists(out / "insitu.pvd"));
+  EXPECT_EQ(skipped_with(j, "output.vtk = false").size(), 1u);
+}
+
+// Without a display a specimen run says why it has no plots, giving the
+// advice once.
+TEST_F(Outputs, specimen_run_without_a_display_says_why_it_has_no_plots) {
+  const nlohmann::json j = summary_of("run " + kTestDir +
+                                          "/ucs_small.toml -j 1 --set output.plots=true"
+                                          " --set output.vtk=false",
+                                      out, 0, "env -u DISPLAY");
+  const auto plots = skipped_with(j, "plots:");
+  ASSERT_EQ(plots.size(), 1u);
+  EXPECT_NE(plots[0].find("DISPLAY"), std::string::npos) << plots[0];
+  EXPECT_EQ(count_of(plots[0], "xvfb-run -a"), 1) << plots[0];
+  EXPECT_FALSE(fs::exists(out / "stress_strain.png"));
+}
+
+// Under Xvfb both specimens get the pictures a person looks at: the
+// stress-strain curve, broken cracks against time and the cracked mesh.
+TEST_F(Outputs, specimen_runs_render_their_plots_under_xvfb) {
+  if (std::string(ROCKFDEM_XVFB_RUN).empty()) GTEST_SKIP() << "xvfb-run is not installed";
+  // A display number of our own: concurrent `xvfb-run -a` race for the first free one.
+  const std::string xvfb =
+      std::string(ROCKFDEM_XVFB_RUN) + " -n " + std::to_string(100 + getpid() % 800) + " -a";
+  const std::string scenes[2] = {kTestDir + "/ucs_small.toml --set engine.steps=600",
+                                 std::string(ROCKFDEM_SOURCE_DIR) +
+                                     "/scenes/brazilian-disc.toml --set mesh.size_near=0.004"
+                                     " --set engine.steps=600 --set output.every_steps=100"};
+  for (const std::string& scene : scenes) {
+    const nlohmann::json j = summary_of(
+        "run " + scene + " -j 1 --set output.plots=true --set output.vtk=false", out, 0, xvfb);
+    for (const char* png : {"stress_strain.png", "broken.png", "final_mesh.png"})
+      EXPECT_TRUE(is_png(out / png)) << scene << ": " << png;
+    EXPECT_TRUE(skipped_with(j, "plots").empty()) << scene << j["skipped"];
+    fs::remove_all(out);
+  }
+}
