@@ -145,6 +145,17 @@ TEST_F(Outputs, failed_specimen_run_reports_the_last_frame_state) {
   EXPECT_EQ(last_history_row(out / "history.csv").at("step"), 100.0);
 }
 
+// A failure in the hand-off step itself (here its energy check, at a
+// forced dt far above the limit) still writes summary.json, with the
+// hand-off state before any explicit step as the last good one.
+TEST_F(Outputs, failure_in_the_handoff_step_reports_the_start_state) {
+  const nlohmann::json j = failed_summary(kSeed + " --set engine.dt=1", out, "step 1");
+  EXPECT_EQ(j["counts"]["triangles"].get<long>(), 8798);
+  EXPECT_EQ(j["steps"].get<long>(), 0);
+  EXPECT_EQ(j["simulated_time"].get<double>(), 0.0);
+  EXPECT_TRUE(is_hash(j["state_hash"])) << j["state_hash"];
+}
+
 // The automatic dt follows the stability limit, which changes with the
 // stages (grouting re-joins cracks with another material): `dt` is the
 // last step's, dt_min and dt_max the range, and each stage (and the

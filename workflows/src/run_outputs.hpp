@@ -41,6 +41,9 @@ class RunOutputs {
   /// Counts, monitors, broken cracks, hash, plots, timings; writes summary.json.
   void finish(const fdem::Engine& e, const mesh::Mesh& m, const std::vector<Monitor>& monitors,
               PhaseTimer& timer, const fdem::BoltPlan& bolts);
+  /// The hand-off state, before the first explicit step: what a failure in
+  /// that step reports as the last good state (nothing is written yet).
+  void keep_start(const fdem::Engine& e) { last_good_.take(e, e.energy_balance()); }
   /// summary.json of a run a NumericalError stopped (`why`): the last good
   /// state's figures (LastGoodState), the dt range, status and diagnostic.
   void report_failure(const fdem::Engine& e, PhaseTimer& timer, const std::string& why);

@@ -135,6 +135,18 @@ void write_first_outputs(const Scene& scene, const CommandLine& cli, bool restar
   out.record_insitu(m, fields);
 }
 
+/// Runs `f`; a NumericalError in it (the hand-off step, before the stages
+/// report their own) writes the failure summary first.
+template <class F>
+void reporting_failure(RunOutputs& out, const fdem::Engine& e, PhaseTimer& timer, F&& f) {
+  try {
+    f();
+  } catch (const NumericalError& err) {
+    out.report_failure(e, timer, err.what());
+    throw;
+  }
+}
+
 }  // namespace
 
 int run_tunnel(const Scene& scene, const CommandLine& cli) {
@@ -199,7 +211,8 @@ int run_tunnel(const Scene& scene, const CommandLine& cli) {
   } else {
     for (std::size_t t = 0; t < m.n_triangles(); ++t)
       if (!handoff.active[t]) engine.set_active(t, false);
-    engine.step();
+    out.keep_start(engine);
+    reporting_failure(out, engine, timer, [&] { engine.step(); });
     start_ratio = engine.unbalanced_force_ratio();
     engine.set_damping({scene.engine.local_damping > 0 ? scene.engine.local_damping : 0.8,
                         scene.engine.mass_damping});
@@ -216,7 +229,8 @@ int run_tunnel(const Scene& scene, const CommandLine& cli) {
     summary.json()["restarted_from"] = {{"checkpoint", cli.restart},
                                         {"step", engine.step_count()}};
   } else {
-    out.record_step(engine, m, monitors, timer, "handoff", handoff.alpha);
+    reporting_failure(out, engine, timer,
+                      [&] { out.record_step(engine, m, monitors, timer, "handoff", handoff.alpha); });
   }
   stages.set_checkpoint(
       cli.checkpoint_every >= 0 ? cli.checkpoint_every : scene.output.checkpoint_every, [&] {
