@@ -156,6 +156,22 @@ TEST_F(Outputs, failure_in_the_handoff_step_reports_the_start_state) {
   EXPECT_TRUE(is_hash(j["state_hash"])) << j["state_hash"];
 }
 
+// A lining ring whose stage is left out is never installed: its bond
+// elements never act, so the summary reports no lining entry (it reported
+// 103 bond elements before) and says why in `skipped`.
+TEST_F(Outputs, lining_never_installed_is_reported_as_skipped) {
+  const nlohmann::json j = summary_of("run " + kTestDir +
+                                          "/support_pair_supported.toml -j 1 --set "
+                                          "'stages[1].kind=\"equilibrium\"' --set "
+                                          "'stages[4].max_steps=50' --set output.vtk=false "
+                                          "--set output.plots=false",
+                                      out);
+  EXPECT_FALSE(j.contains("lining")) << j["lining"];
+  bool said = false;
+  for (const auto& s : j["skipped"]) said |= s.get<std::string>().rfind("lining:", 0) == 0;
+  EXPECT_TRUE(said) << j["skipped"];
+}
+
 // The automatic dt follows the stability limit, which changes with the
 // stages (grouting re-joins cracks with another material): `dt` is the
 // last step's, dt_min and dt_max the range, and each stage (and the

@@ -233,11 +233,19 @@ void RunOutputs::restore(const nlohmann::json& s, const std::string& from_dir) {
 }
 
 void RunOutputs::lining_outputs(const fdem::Engine& e, const mesh::Mesh& m) {
-  const std::vector<std::size_t> bond = lining_interface_cracks(e, m);
-  long broken = 0;
-  for (std::size_t c : bond) broken += e.crack_state(c) == fdem::CrackState::kBroken;
-  if (!bond.empty())
-    summary_.json()["lining"] = {{"interface_cracks", bond.size()}, {"interface_broken", broken}};
+  // A bond acts only between two active triangles: a ring that was never
+  // installed (or was removed) has none.
+  long n_bond = 0, broken = 0;
+  for (std::size_t c : lining_interface_cracks(e, m)) {
+    const auto t = e.crack_triangles(c);
+    if (!e.active(t[0]) || !e.active(t[1])) continue;
+    ++n_bond;
+    broken += e.crack_state(c) == fdem::CrackState::kBroken;
+  }
+  if (n_bond > 0)
+    summary_.json()["lining"] = {{"interface_cracks", n_bond}, {"interface_broken", broken}};
+  else if (has_lining_ring(scene_))
+    summary_.skipped("lining: the ring is not installed at the end of the run");
 }
 
 void RunOutputs::bolt_outputs(const fdem::Engine& e, const fdem::BoltPlan& bolts) {
