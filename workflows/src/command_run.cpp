@@ -104,6 +104,7 @@ int run_specimen(const Scene& scene, const CommandLine& cli) {
   double peak = 0;
   int frame = 0;
   LastGoodState last_good;
+  const double floor = energy_floor(scene, m);
   const auto record = [&] {
     const double force = -engine.boundary_force(upper_tag)[1];  // compression positive
     // UCS: mean axial stress; disc: the Brazilian tensile stress 2P/(pi D t).
@@ -117,7 +118,7 @@ int run_specimen(const Scene& scene, const CommandLine& cli) {
     const fdem::EnergyBalance energy = engine.energy_balance();
     for (double v : energy_row(energy)) row.push_back(v);
     history.add(row);
-    check_energy(energy, engine.step_count());  // before the frame: keep the last good one
+    check_energy(energy, engine.step_count(), floor);  // before the frame: keep the last good one
     if (scene.output.vtk) write_frame(engine, m, cli.output_dir, frame++, pvd);
     last_good.take(engine, energy);
   };

@@ -137,7 +137,8 @@ void RunOutputs::record_step(const fdem::Engine& e, const mesh::Mesh& m,
   const fdem::EnergyBalance energy = e.energy_balance();
   for (double v : energy_row(energy)) row.push_back(v);
   history_->add(row);
-  check_energy(energy, e.step_count());  // before the frame: keep the last good one
+  // Before the frame: the last frame stays the last good state.
+  check_energy(energy, e.step_count(), energy_floor(scene_, m));
   if (scene_.output.vtk) {
     char name[32];
     std::snprintf(name, sizeof name, "fdem_%04d.vtu", frame_++);
