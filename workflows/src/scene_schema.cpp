@@ -311,8 +311,12 @@ std::vector<KeySpec> build_schema() {
   s.push_back(boolean("contact.enabled", "true",
                       "Penalty contact with friction between triangles on free surfaces and "
                       "next to broken cracks; costs nothing while nothing can touch."));
-  s.push_back(number("contact.penalty_factor", "-", "1", 0.1, false, 1000, false,
-                     "Contact penalty as a multiple of the rock's Young's modulus."));
+  s.push_back(number("contact.penalty_factor", "-", "1", 0.1, false, 10, false,
+                     "Contact penalty as a multiple of the rock's Young's modulus. At most "
+                     "10: where contact takes over a compressed broken crack its overlap "
+                     "energy is booked against fracture, and a penalty far stiffer than "
+                     "the crack's creates energy there (factor 100: 12 MJ/m in the default "
+                     "tunnel; 1000: the run blew up)."));
   s.push_back(number("contact.damping_ratio", "-", "0", 0, false, 1, false,
                      "Normal contact damping as a fraction of critical."));
   s.push_back(boolean("contact.friction", "true",
