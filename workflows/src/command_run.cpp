@@ -149,7 +149,7 @@ int run_specimen(const Scene& scene, const CommandLine& cli) {
                               std::to_string(engine.step_count());
       report_engine(engine, timer, summary);
       stop("interrupted", why);
-      throw Interrupted(sig, why);
+      throw Interrupted(sig, why + "; outputs are written (specimen runs keep no checkpoint)");
     }
   }
   if (scene.output.plots)

@@ -17,7 +17,7 @@ int main(int argc, char** argv) {
     const workflows::CommandLine cli = workflows::parse_command_line(argc, argv);
     return workflows::run_command(cli);
   } catch (const workflows::Interrupted& e) {
-    std::cerr << "rockfdem: " << e.what() << "; outputs and a checkpoint are written\n";
+    std::cerr << "rockfdem: " << e.what() << '\n';  // it says what was written
     return e.exit_code();
   } catch (const InputError& e) {
     std::cerr << "rockfdem: error: " << e.what() << '\n';

@@ -120,7 +120,8 @@ void stop_if_interrupted(const Scene& scene, RunSummary& summary, const CommandL
   summary.set_timings(timer);
   summary.write(output_path(cli.output_dir, "summary.json"));
   throw Interrupted(sig, std::string("interrupted by signal ") + std::to_string(sig) + " after " +
-                             after + " (no explicit step yet, so no checkpoint)");
+                             after +
+                             "; summary.json is written (no explicit step yet, so no checkpoint)");
 }
 
 // The scene is accepted: make (or claim) OUTDIR and write what the mesh and

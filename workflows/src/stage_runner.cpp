@@ -117,7 +117,7 @@ bool StageRunner::step_until(const StageSpec& stage, PhaseTimer& timer, long bro
       const int sig = interrupt_requested();
       throw Interrupted(sig, "interrupted by signal " + std::to_string(sig) + " at step " +
                                  std::to_string(engine_.step_count()) + " in stage '" +
-                                 stage.kind + "'");
+                                 stage.kind + "'; outputs and a checkpoint are written");
     }
     out_.record_step(engine_, mesh_, monitors_, timer, stage.kind, support_ratio());
     // Equilibrium: balanced forces alone are not enough while cracks keep
