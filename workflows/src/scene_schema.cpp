@@ -160,7 +160,7 @@ std::vector<KeySpec> build_schema() {
                           "Element size at the tunnel boundary and in the fracture zone "
                           "(specimens: everywhere); at most half the geometry's smallest "
                           "feature: tunnels, the opening's smaller side (circular: its "
-                          "diameter) and twice tunnel.lining_thickness; UCS, the specimen's "
+                          "diameter) and 4 x tunnel.lining_thickness; UCS, the specimen's "
                           "smaller side; Brazilian, its diameter. Unused by .msh models.");
   near.default_doc = "0.5 (tunnels); specimens: required";
   s.push_back(near);
@@ -169,8 +169,9 @@ std::vector<KeySpec> build_schema() {
                            "Distance from the tunnel over which the size grows from near to "
                            "far; 0: half the domain's smaller side."));
   KeySpec algo = integer("mesh.algorithm", "6", 1, 9,
-                         "gmsh 2D algorithm: 1 MeshAdapt, 5 Delaunay, 6 Frontal-Delaunay, 8 "
-                         "Frontal-Delaunay for quads (not used).");
+                         "gmsh 2D algorithm: 1 MeshAdapt, 5 Delaunay or 6 Frontal-Delaunay; "
+                         "gmsh's other numbers in the range are refused (they make no "
+                         "triangles fit for this engine, or none at all).");
   s.push_back(algo);
   // [materials.*]
   add_material(s, "rock", "host rock (or the specimen)");
