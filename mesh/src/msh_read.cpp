@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <fstream>
 #include <numeric>
 #include <set>
@@ -231,6 +232,38 @@ void check_areas(const Reader& r, const std::vector<std::size_t>& element_tags,
   detail::orient_counter_clockwise(m);
 }
 
+// Turned counter-clockwise, two triangles side by side run through their
+// shared edge in opposite directions. The same direction means they lie on
+// one side of it, overlapping: the mesh folds (a node moved past the
+// opposite edge), which no renumbering mends. So does an edge of three.
+void check_folds(const Reader& r, const std::vector<std::size_t>& element_tags,
+                 const std::vector<std::size_t>& tags, const Mesh& m) {
+  struct Use {
+    std::uint64_t key;
+    bool forward;
+    std::size_t tri;
+  };
+  std::vector<Use> uses;
+  uses.reserve(3 * m.n_triangles());
+  for (std::size_t t = 0; t < m.n_triangles(); ++t)
+    for (int k = 0; k < 3; ++k) {
+      const auto a = std::uint64_t(m.triangles[t][k]), b = std::uint64_t(m.triangles[t][(k + 1) % 3]);
+      uses.push_back({(std::min(a, b) << 32) | std::max(a, b), a < b, t});
+    }
+  std::sort(uses.begin(), uses.end(),
+            [](const Use& p, const Use& q) { return p.key != q.key ? p.key < q.key : p.tri < q.tri; });
+  for (std::size_t i = 0; i + 1 < uses.size(); ++i) {
+    if (uses[i].key != uses[i + 1].key) continue;
+    const bool three = i + 2 < uses.size() && uses[i + 2].key == uses[i].key;
+    if (!three && uses[i].forward != uses[i + 1].forward) continue;
+    const auto a = std::size_t(uses[i].key >> 32), b = std::size_t(uses[i].key & 0xffffffffu);
+    r.fail("triangles " + std::to_string(element_tags[uses[i].tri]) + " and " +
+           std::to_string(element_tags[uses[i + 1].tri]) + " overlap at their edge (nodes " +
+           std::to_string(tags[a]) + ", " + std::to_string(tags[b]) + "): the mesh folds over " +
+           "itself there; triangles may share an edge only side by side");
+  }
+}
+
 }  // namespace
 
 Mesh read_msh(const MshFileSpec& spec) {
@@ -245,6 +278,7 @@ Mesh read_msh(const MshFileSpec& spec) {
     const std::vector<std::size_t> triangle_tags = read_triangles(r, index, m);
     read_edges(r, index, m);
     check_areas(r, triangle_tags, node_tags, m);
+    check_folds(r, triangle_tags, node_tags, m);
   });
   detail::compact_vertices(m);
   return m;

@@ -153,6 +153,15 @@ TEST(MshUserFile, degenerate_triangle_is_refused) {
                  "zero area");
 }
 
+// Node 3 moved past the diagonal 1-3's far side: triangle 1-3-4 turns
+// clockwise and, turned back, lies over triangle 1-2-3. Renumbering cannot
+// mend that (it did silently before); the file is refused naming both.
+TEST(MshUserFile, folded_mesh_is_refused) {
+  expect_refused("rockfdem_fold.msh",
+                 square_msh("4\n1 0 0 0\n2 1 0 0\n3 -0.5 0.5 0\n4 0 1 0\n", kElements),
+                 "overlap at their edge (nodes 1, 3)");
+}
+
 TEST(MshUserFile, quadrangle_is_refused) {
   expect_refused("rockfdem_quad.msh", square_msh(kNodes, "1\n1 3 2 7 1 1 2 3 4\n"),
                  "gmsh type 3");
