@@ -72,6 +72,25 @@ TEST(Cli, unknown_instruction_set_request_exits_two_and_leaves_nothing) {
   EXPECT_FALSE(fs::exists(out));
 }
 
+// A bolt design the engine cannot model on the mesh (steel 16,600 times
+// stiffer than a 1 MPa rock) is refused before anything is written, with
+// the scene and the keys to change; the engine's reason alone named
+// neither. Steel whose hardening range is empty is refused by the scene.
+TEST(Cli, bolt_design_the_engine_refuses_names_the_scene_and_keys) {
+  const fs::path out = scratch("bolts");
+  const std::string seed = std::string(ROCKFDEM_SOURCE_DIR) + "/scenes/tunnel-seed.toml";
+  Result r = run("run " + seed + " --set materials.rock.young=1e6 -o " + out.string());
+  EXPECT_EQ(r.code, 2) << r.output;
+  EXPECT_NE(r.output.find(seed + ": the bolt design cannot be modelled"), std::string::npos)
+      << r.output;
+  EXPECT_NE(r.output.find("materials.rock.young"), std::string::npos) << r.output;
+  EXPECT_EQ(std::count(r.output.begin(), r.output.end(), '\n'), 1) << r.output;
+  EXPECT_FALSE(fs::exists(out));
+  r = run("check " + seed + " --set bolts.ultimate_strength=400e6");
+  EXPECT_EQ(r.code, 2) << r.output;
+  EXPECT_NE(r.output.find("must be above bolts.yield_strength"), std::string::npos) << r.output;
+}
+
 TEST(Cli, set_override_is_validated_like_the_file) {
   const fs::path out = scratch("set");
   const Result r = run("mesh " + kTestDir + "/good_circular.toml --set mesh.size_near=0 -o " +

@@ -136,6 +136,20 @@ void write_first_outputs(const Scene& scene, const CommandLine& cli, bool restar
   out.record_insitu(m, fields);
 }
 
+/// The bolts marked on the mesh and their steel models. The engine's
+/// refusals (a strip too stiff or too soft for the rock around it, a bolt
+/// crossing no triangle edge) arise from the design and the mesh together;
+/// they get the scene and its keys here, before anything is written.
+fdem::BoltPlan planned_bolts(const Scene& scene, fdem::ModelInput& in) {
+  try {
+    return fdem::plan_bolts(in, bolt_specs(scene));
+  } catch (const InputError& e) {
+    throw InputError(scene.source + ": the bolt design cannot be modelled on this mesh (" +
+                     e.what() + "); adjust [bolts] / [cables] (young, diameter, row_spacing, "
+                     "strengths), materials.rock.young or mesh.size_near");
+  }
+}
+
 /// Runs `f`; a NumericalError in it (the hand-off step, before the stages
 /// report their own) writes the failure summary first.
 template <class F>
@@ -198,7 +212,7 @@ int run_tunnel(const Scene& scene, const CommandLine& cli) {
     in.materials.push_back(lining_interface_material(scene));
   }
   fdem::BoltPlan bolts;  // marks bolt triangles and allows fracture there
-  if (!scene.bolts.segments.empty()) bolts = fdem::plan_bolts(in, bolt_specs(scene));
+  if (!scene.bolts.segments.empty()) bolts = planned_bolts(scene, in);
   fdem::Engine engine = make_engine(in, scene, cli.force_dt);
   timer.stamp("fdem setup");
   write_first_outputs(scene, cli, restart, m, fields, out);

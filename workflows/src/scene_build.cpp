@@ -333,8 +333,12 @@ SteelSettings read_steel(const Reader& r, const std::string& section) {
   b.tangent_modulus = r.number(section + ".tangent_modulus");
   b.shear_yield_strength = r.number(section + ".shear_yield_strength");
   b.shear_fracture_energy = r.number(section + ".shear_fracture_energy");
-  if (b.ultimate_strength < b.yield_strength)
-    r.fail(section + ".ultimate_strength", "must be at least " + section + ".yield_strength");
+  // The hardening law runs from sigma_y to sigma_u over a positive range
+  // with a modulus below the elastic one (seed eqs. 11-19; fdem checks it too).
+  if (b.ultimate_strength <= b.yield_strength)
+    r.fail(section + ".ultimate_strength", "must be above " + section + ".yield_strength");
+  if (b.tangent_modulus >= b.young)
+    r.fail(section + ".tangent_modulus", "must be below " + section + ".young");
   return b;
 }
 

@@ -255,8 +255,9 @@ std::vector<KeySpec> build_schema() {
     s.push_back(positive(p + "young", "Pa", k.young, "Steel Young's modulus Eb."));
     s.push_back(positive(p + "yield_strength", "Pa", k.yield, "Steel yield strength."));
     s.push_back(positive(p + "ultimate_strength", "Pa", k.ultimate,
-                         "Steel ultimate strength (at least the yield strength)."));
-    s.push_back(positive(p + "tangent_modulus", "Pa", k.tangent, "Hardening modulus ET."));
+                         "Steel ultimate strength (above the yield strength)."));
+    s.push_back(positive(p + "tangent_modulus", "Pa", k.tangent,
+                         "Hardening modulus ET (below the steel's Young's modulus)."));
     s.push_back(positive(p + "shear_yield_strength", "Pa", k.shear,
                          "Steel shear strength (brittle in shear)."));
     s.push_back(positive(p + "shear_fracture_energy", "J/m^2", "1e4",
