@@ -158,6 +158,7 @@ int run_specimen(const Scene& scene, const CommandLine& cli) {
   progress.finish(engine.step_count(), engine.time());
   j["status"] = "completed";
   report_engine(engine, timer, summary);
+  warn_if_unbalanced(engine, floor, cli.quiet, summary);
   j["specimen"] = {{"peak_stress", peak},
                    {"strain_rate", 2 * scene.engine.platen_velocity / size.length},
                    {"kind", disc ? "brazilian" : "ucs"}};

@@ -93,6 +93,19 @@ double energy_floor(const Scene& scene, const mesh::Mesh& m) {
   return 1e-6 * stress * stress / (2 * rock.young) * area;
 }
 
+void warn_if_unbalanced(const fdem::Engine& e, double floor, bool quiet, RunSummary& summary) {
+  const fdem::EnergyBalance b = e.energy_balance();
+  if (!(std::abs(b.imbalance()) > kEnergyWarningLimit) || std::abs(b.residual()) <= floor) return;
+  char msg[400];
+  std::snprintf(msg, sizeof msg,
+                "energy: the balance closes only within %.1f%% (sound runs: a few tenths of a "
+                "per cent, at most 3%%): extreme parameters or penalties far stiffer than the "
+                "rock; treat the results with care (docs/reliability.md)",
+                100 * std::abs(b.imbalance()));
+  summary.json()["warnings"].push_back(msg);
+  if (!quiet) std::fprintf(stderr, "rockfdem: warning: %s\n", msg);
+}
+
 void check_energy(const fdem::EnergyBalance& b, long step, double floor) {
   const bool sound = !(std::abs(b.imbalance()) > kEnergyImbalanceLimit) ||
                      std::abs(b.residual()) <= floor;

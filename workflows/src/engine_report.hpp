@@ -41,6 +41,16 @@ constexpr double kEnergyImbalanceLimit = 0.10;
 /// divergence passes it within a few steps.
 double energy_floor(const Scene& scene, const mesh::Mesh& m);
 
+/// Sound runs close their energy balance within a few tenths of a per cent
+/// (at most 3% measured, docs/reliability.md); above this a run that
+/// completed carries a warning.
+constexpr double kEnergyWarningLimit = 0.03;
+
+/// Adds to summary.json "warnings" (and says on stderr unless `quiet`) when
+/// the run's final imbalance exceeds kEnergyWarningLimit with a residual
+/// above `floor` (energy_floor).
+void warn_if_unbalanced(const fdem::Engine& e, double floor, bool quiet, RunSummary& summary);
+
 /// Throws NumericalError naming the step and the terms when the balance's
 /// relative imbalance exceeds kEnergyImbalanceLimit and its residual
 /// exceeds `floor` (energy_floor).

@@ -301,6 +301,7 @@ void RunOutputs::finish(const fdem::Engine& e, const mesh::Mesh& m,
                         const fdem::BoltPlan& bolts) {
   auto& j = summary_.json();
   report_engine(e, timer, summary_);
+  warn_if_unbalanced(e, energy_floor(scene_, m), cli_.quiet, summary_);
   report_dt();
   bolt_outputs(e, bolts);
   j["monitors"] = monitors_json(e, monitors);
