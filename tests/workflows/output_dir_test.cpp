@@ -76,6 +76,19 @@ TEST(OutputDir, refused_run_leaves_an_existing_directory_untouched) {
 
 // --force clears what an earlier, longer run wrote (frames the new fdem.pvd
 // does not list) and keeps every file rockfdem does not write.
+// --force cleans only a folder an earlier run claimed (its owner record):
+// in a user's own folder, files that merely look like outputs stay.
+TEST(OutputDir, force_leaves_a_folder_no_run_claimed_untouched) {
+  const fs::path out = scratch("unclaimed");
+  fs::create_directories(out / "checkpoints");
+  const char* mine[] = {"notes.txt", "bolt_01.csv", "fdem_0042.vtu", "convergence.png",
+                        "stress_strain.png", "checkpoints/checkpoint_00000100.rfck"};
+  for (const char* f : mine) std::ofstream(out / f) << "mine\n";
+  const Result r = run("mesh " + kCircular + " -q --force -o " + out.string());
+  ASSERT_EQ(r.code, 0) << r.output;
+  for (const char* f : mine) EXPECT_TRUE(fs::exists(out / f)) << f;
+}
+
 TEST(OutputDir, force_removes_an_earlier_runs_outputs_and_nothing_else) {
   const fs::path out = scratch("force");
   const std::string run_args = " -q --set output.every_steps=100 --set output.plots=false";

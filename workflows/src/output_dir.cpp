@@ -24,7 +24,7 @@ const char* const kFixedNames[] = {
     "summary.json",      "history.csv",        "mesh.msh",           "mesh.vtu",
     "insitu.vtu",        "insitu.pvd",         "insitu_vs_analytic.csv", "fdem.pvd",
     "fdem_vs_continuum.csv", "grouted_cracks.csv", "convergence.png",  "broken.png",
-    "ground_reaction.png", "final_mesh.png"};
+    "ground_reaction.png", "final_mesh.png", "stress_strain.png"};
 
 struct Numbered {
   const char *prefix, *suffix;
@@ -108,13 +108,14 @@ bool same_directory(const std::string& a, const std::string& b) {
   return fs::equivalent(a, b, ec);
 }
 
-void prepare_output_dir(const std::string& dir, const Scene& scene, bool force,
+bool prepare_output_dir(const std::string& dir, const Scene& scene, bool force,
                         bool keep_previous) {
   std::error_code ec;
   if (fs::exists(dir, ec) && !fs::is_directory(dir, ec))
     throw InputError("output directory " + dir + ": exists and is not a directory");
   const std::string owner = output_path(dir, kOwnerFile);
-  if (fs::exists(owner, ec) && !force) {
+  const bool claimed = fs::exists(owner, ec);
+  if (claimed && !force) {
     std::ifstream in(owner);
     std::stringstream held;
     held << in.rdbuf();
@@ -126,8 +127,9 @@ void prepare_output_dir(const std::string& dir, const Scene& scene, bool force,
   fs::create_directories(dir, ec);
   if (ec) throw InputError("output directory " + dir + ": cannot create: " + ec.message());
   // Frames or plots of a longer earlier run must not sit beside the new ones.
-  if (force && !keep_previous) remove_previous_outputs(dir);
+  if (force && claimed && !keep_previous) remove_previous_outputs(dir);
   coupling::atomic_write_text(owner, owner_record(scene));
+  return claimed;
 }
 
 }  // namespace rockfdem::workflows

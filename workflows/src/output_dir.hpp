@@ -13,8 +13,10 @@ struct Scene;
 /// another scene's results, and the outputs an earlier run wrote there
 /// (known by name, remove_previous_outputs) are removed first, unless
 /// `keep_previous` (a restart continuing the run in its own directory).
-/// Throws InputError.
-void prepare_output_dir(const std::string& dir, const Scene& scene, bool force,
+/// Only a directory an earlier run claimed (its owner record present) is
+/// ever cleaned: a user's folder keeps every file, whatever its name.
+/// Returns whether it was such a directory. Throws InputError.
+bool prepare_output_dir(const std::string& dir, const Scene& scene, bool force,
                         bool keep_previous = false);
 
 /// Whether `name` is a file rockfdem writes into an output directory

@@ -103,10 +103,10 @@ std::string run_dir_of(const std::string& checkpoint) {
 
 // Makes (or claims) OUTDIR once the scene is accepted. --force clears an
 // earlier run's outputs first, except where a restart continues that run.
-void claim_output_dir(const Scene& scene, const CommandLine& cli) {
+bool claim_output_dir(const Scene& scene, const CommandLine& cli) {
   const bool continues_here =
       !cli.restart.empty() && same_directory(cli.output_dir, run_dir_of(cli.restart));
-  prepare_output_dir(cli.output_dir, scene, cli.force, continues_here);
+  return prepare_output_dir(cli.output_dir, scene, cli.force, continues_here);
 }
 
 // A signal between the implicit phases: nothing to checkpoint yet. The
@@ -129,9 +129,10 @@ void stop_if_interrupted(const Scene& scene, RunSummary& summary, const CommandL
 void write_first_outputs(const Scene& scene, const CommandLine& cli, bool restart,
                          const mesh::Mesh& m, const std::vector<insitu::InsituField>& fields,
                          RunOutputs& out) {
-  claim_output_dir(scene, cli);
-  // A fresh run's checkpoints must not mix with an earlier run's.
-  if (!restart) remove_checkpoints(cli.output_dir);
+  const bool claimed = claim_output_dir(scene, cli);
+  // A fresh run's checkpoints must not mix with an earlier run's (and a
+  // folder no run claimed keeps whatever it holds).
+  if (!restart && claimed) remove_checkpoints(cli.output_dir);
   mesh::write_msh(m, output_path(cli.output_dir, "mesh.msh"));
   out.record_insitu(m, fields);
 }
