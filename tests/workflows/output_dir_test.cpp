@@ -57,6 +57,27 @@ TEST(OutputDir, run_refusing_dt_leaves_no_directory) {
   }
 }
 
+// An explicit dt below the limit of the engine as built but above the one
+// the stages' local damping brings (0.8: sqrt(1.8) lower) was refused only
+// at the first stage step, after the outputs were written. It is refused
+// up front now; a dt that only a later stage's stiffening makes too large
+// can still only be found there, and then leaves a summary naming the key.
+TEST(OutputDir, dt_above_the_damped_limit_is_refused_before_writing) {
+  const fs::path out = scratch("damped-dt");
+  const std::string seed = std::string(ROCKFDEM_SOURCE_DIR) + "/scenes/tunnel-seed.toml";
+  Result r = run("run " + seed + " -j 1 -q --set engine.dt=0.0005 -o " + out.string());
+  EXPECT_EQ(r.code, 2) << r.output;
+  EXPECT_NE(r.output.find("with the stages' damping"), std::string::npos) << r.output;
+  EXPECT_FALSE(fs::exists(out));
+  r = run("run " + seed + " -j 1 -q --set engine.dt=0.00041 --set output.plots=false -o " +
+          out.string());
+  EXPECT_EQ(r.code, 2) << r.output;
+  EXPECT_NE(r.output.find("key 'engine.dt' = 0.00041 s"), std::string::npos) << r.output;
+  const std::string summary = read_text(out / "summary.json");
+  EXPECT_NE(summary.find("\"status\": \"failed\""), std::string::npos) << summary;
+  fs::remove_all(out);
+}
+
 // A refused run into an existing results folder leaves every file as it
 // was: into the same scene's folder, and with --force into another's (whose
 // .rockfdem-scene must still match the summary.json beside it).

@@ -152,6 +152,8 @@ TEST_F(Outputs, failure_in_the_handoff_step_reports_the_start_state) {
   const nlohmann::json j = failed_summary(kSeed + " --set engine.dt=1", out, "step 1");
   EXPECT_EQ(j["counts"]["triangles"].get<long>(), 8798);
   EXPECT_EQ(j["steps"].get<long>(), 0);
+  // The failed step is no good state: no hand-off step, no null stage list.
+  EXPECT_FALSE(j.contains("fdem")) << j["fdem"];
   EXPECT_EQ(j["simulated_time"].get<double>(), 0.0);
   EXPECT_TRUE(is_hash(j["state_hash"])) << j["state_hash"];
 }

@@ -119,7 +119,6 @@ void RunOutputs::begin_history(const std::vector<Monitor>& monitors, const mesh:
 void RunOutputs::record_step(const fdem::Engine& e, const mesh::Mesh& m,
                              const std::vector<Monitor>& monitors, PhaseTimer& timer,
                              const std::string& stage, double support_ratio) {
-  if (stage_names_.empty() && stage == "handoff") handoff_dt_ = e.dt();  // its one step's
   if (stage_names_.empty() || stage_names_.back() != stage) stage_names_.push_back(stage);
   const fdem::BrokenCounts b = e.broken_counts();
   std::vector<double> row{double(stage_names_.size() - 1), double(e.step_count()), e.time(),
@@ -139,6 +138,8 @@ void RunOutputs::record_step(const fdem::Engine& e, const mesh::Mesh& m,
   history_->add(row);
   // Before the frame: the last frame stays the last good state.
   check_energy(energy, e.step_count(), energy_floor(scene_, m));
+  // The hand-off step's dt, once it passed (a failed one is no good state).
+  if (stage == "handoff" && stage_names_.size() == 1) handoff_dt_ = e.dt();
   if (scene_.output.vtk) {
     char name[32];
     std::snprintf(name, sizeof name, "fdem_%04d.vtu", frame_++);
@@ -174,7 +175,9 @@ void RunOutputs::report_dt() {
     lo = std::min(lo, handoff_dt_);
     hi = std::max(hi, handoff_dt_);
   }
-  for (const auto& stage : j["fdem"]["stages"])
+  const nlohmann::json none = nlohmann::json::array();
+  const auto fdem = j.find("fdem");
+  for (const auto& stage : fdem != j.end() ? fdem->value("stages", none) : none)
     if (stage.contains("dt") && stage["dt"].is_number()) {
       lo = std::min(lo, stage["dt"].get<double>());
       hi = std::max(hi, stage["dt"].get<double>());

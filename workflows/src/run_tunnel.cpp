@@ -215,6 +215,14 @@ int run_tunnel(const Scene& scene, const CommandLine& cli) {
   fdem::BoltPlan bolts;  // marks bolt triangles and allows fracture there
   if (!scene.bolts.segments.empty()) bolts = planned_bolts(scene, in);
   fdem::Engine engine = make_engine(in, scene, cli.force_dt);
+  if (scene.engine.dt > 0 && !cli.force_dt) {
+    // The stages' local damping lowers the limit by sqrt(1 + alpha): an
+    // explicit dt must hold then too, and is refused before anything is written.
+    engine.set_damping(stage_damping(scene));
+    refuse_dt_above(scene, scene.engine.dt, engine.critical_dt(),
+                    "this mesh and its penalties with the stages' damping");
+    engine.set_damping(in.damping);
+  }
   timer.stamp("fdem setup");
   write_first_outputs(scene, cli, restart, m, fields, out);
   timer.stamp("output");
@@ -230,8 +238,7 @@ int run_tunnel(const Scene& scene, const CommandLine& cli) {
     out.keep_start(engine);
     reporting_failure(out, engine, timer, [&] { engine.step(); });
     start_ratio = engine.unbalanced_force_ratio();
-    engine.set_damping({scene.engine.local_damping > 0 ? scene.engine.local_damping : 0.8,
-                        scene.engine.mass_damping});
+    engine.set_damping(stage_damping(scene));
   }
   timer.stamp("fdem setup");
 
@@ -271,6 +278,17 @@ int run_tunnel(const Scene& scene, const CommandLine& cli) {
     summary.json()["fdem"] = {{"stages", stages.report()}};
     out.report_failure(engine, timer, e.what());
     throw;
+  } catch (const InputError& e) {
+    // An explicit dt above the limit a later stage brings (lining, bolts,
+    // grout stiffen the model): found only there, after outputs exist.
+    const bool dt = std::string(e.what()).find("stability limit") != std::string::npos;
+    const std::string why = dt ? scene.source + ": key 'engine.dt' = " +
+                                     detail::number_text(scene.engine.dt) + " s: " + e.what() +
+                                     " (engine.dt = 0 follows the limit through every stage)"
+                               : scene.source + ": " + e.what();
+    summary.json()["fdem"] = {{"stages", stages.report()}};
+    out.report_failure(engine, timer, why);
+    throw InputError(why);
   }
 
   if (!stages.core_present()) {

@@ -130,23 +130,29 @@ insitu::InsituSpec insitu_spec(const Scene& s) {
   return spec;
 }
 
+void refuse_dt_above(const Scene& scene, double dt, double limit, const char* model) {
+  if (!(dt > limit)) return;
+  char msg[500];
+  std::snprintf(msg, sizeof msg,
+                "%s: key 'engine.dt' = %g s: above the stability limit %.6g s of %s; allowed "
+                "0 < dt <= %.6g s (engine.dt = 0 takes engine.dt_safety = %g of it), or pass "
+                "--force-dt to run with it anyway",
+                scene.source.c_str(), dt, limit, model, limit, scene.engine.dt_safety);
+  throw InputError(msg);
+}
+
 fdem::Engine make_engine(fdem::ModelInput in, const Scene& scene, bool force_dt) {
   const double dt = in.dt;
   in.dt = 0;  // built with the automatic step, then given the scene's
   fdem::Engine engine(in);
   if (dt <= 0) return engine;
-  const double limit = engine.critical_dt();
-  if (dt > limit && !force_dt) {
-    char msg[400];
-    std::snprintf(msg, sizeof msg,
-                  "%s: key 'engine.dt' = %g s: above the stability limit %.6g s of this mesh "
-                  "and its penalties; allowed 0 < dt <= %.6g s (engine.dt = 0 takes "
-                  "engine.dt_safety = %g of it), or pass --force-dt to run with it anyway",
-                  scene.source.c_str(), dt, limit, limit, scene.engine.dt_safety);
-    throw InputError(msg);
-  }
+  if (!force_dt) refuse_dt_above(scene, dt, engine.critical_dt(), "this mesh and its penalties");
   engine.set_dt(dt, force_dt ? fdem::DtCheck::kForce : fdem::DtCheck::kRefuseAboveLimit);
   return engine;
+}
+
+fdem::DampingSettings stage_damping(const Scene& s) {
+  return {s.engine.local_damping > 0 ? s.engine.local_damping : 0.8, s.engine.mass_damping};
 }
 
 bool kirsch_case(const Scene& s, insitu::KirschCase* k) {

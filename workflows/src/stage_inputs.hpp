@@ -37,6 +37,14 @@ fdem::ContactSettings contact_settings(const Scene& scene);
 /// and stops with a diagnostic if it diverges.
 fdem::Engine make_engine(fdem::ModelInput in, const Scene& scene, bool force_dt);
 
+/// Throws the scene's InputError for an explicit engine.dt above `limit`
+/// (the stability limit of `model`, in words); nothing when dt <= limit.
+void refuse_dt_above(const Scene& scene, double dt, double limit, const char* model);
+
+/// The damping of the explicit stages after the hand-off step: the scene's
+/// local damping (0.8 unless set) and mass-proportional damping.
+fdem::DampingSettings stage_damping(const Scene& s);
+
 /// Whether the scene's geometry has the Kirsch closed form (circular opening,
 /// uniform stress, no lining) and its parameters.
 bool kirsch_case(const Scene& scene, insitu::KirschCase* k);
