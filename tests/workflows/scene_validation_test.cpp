@@ -181,6 +181,11 @@ TEST(Scene, cross_key_errors_name_the_changed_key_with_short_numbers) {
   EXPECT_EQ(file.find("00000"), std::string::npos) << file;
   expect_contains(error_of([&] { load_scene(seed, {"mesh.size_near=9"}); }),
                   {"key 'mesh.size_near' = 9", "must be at most mesh.size_far = 5 m"});
+  // The fracture zone pushes the opening out of the domain: it is named,
+  // and round numbers print plainly (40, not 4e+01).
+  expect_contains(error_of([&] { load_scene(seed, {"tunnel.fracture_zone=40"}); }),
+                  {"--set key 'tunnel.fracture_zone' = 40:", "fracture zone 40 m",
+                   "(width 80 m)"});
 }
 
 // The reference's default stage list is the one the reader builds: a

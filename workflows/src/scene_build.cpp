@@ -98,9 +98,12 @@ mesh::TunnelShape tunnel_shape(const std::string& s) {
 }
 
 // The key to name when the opening does not fit the domain: the one the
-// user changed with --set, else the domain's size where the file gives it.
-std::string outside_key(const Reader& r, const std::string& domain, const std::string& tunnel) {
-  if (r.blame_second(domain, tunnel)) return tunnel;
+// user changed with --set (the opening's size, the fracture zone or the
+// domain's centre), else the domain's size where the file gives it.
+std::string outside_key(const Reader& r, const std::string& domain, const std::string& tunnel,
+                        const std::string& center) {
+  for (const std::string& k : {tunnel, std::string("tunnel.fracture_zone"), center})
+    if (r.blame_second(domain, k)) return k;
   return r.has(domain) || r.changed(domain) ? domain : tunnel;
 }
 
@@ -148,11 +151,13 @@ void read_tunnel(const Reader& r, mesh::MeshSpec& m) {
   const double margin = t.fracture_zone;
   const double half_w = m.domain.width / 2, half_h = m.domain.height / 2;
   if (w / 2 + margin + std::abs(m.domain.center_x) >= half_w)
-    r.fail(outside_key(r, "domain.width", circular ? "tunnel.radius" : "tunnel.span"),
+    r.fail(outside_key(r, "domain.width", circular ? "tunnel.radius" : "tunnel.span",
+                       "domain.center_x"),
            "the tunnel (width " + num(w) + " m plus fracture zone " + num(margin) +
                " m each side) must lie inside the domain (width " + num(m.domain.width) + " m)");
   if (h / 2 + margin + std::abs(m.domain.center_y) >= half_h)
-    r.fail(outside_key(r, "domain.height", circular ? "tunnel.radius" : "tunnel.height"),
+    r.fail(outside_key(r, "domain.height", circular ? "tunnel.radius" : "tunnel.height",
+                       "domain.center_y"),
            "the tunnel (height " + num(h) + " m plus fracture zone " + num(margin) +
                " m each side) must lie inside the domain (height " + num(m.domain.height) +
                " m)");

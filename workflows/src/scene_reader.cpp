@@ -1,5 +1,6 @@
 #include "scene_reader.hpp"
 
+#include <charconv>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -205,12 +206,11 @@ void check_table(const RawScene& s, const toml::table& table, const std::string&
 }  // namespace
 
 std::string number_text(double v) {
+  // The shortest text that reads back as v, in plain notation where that
+  // is as short (40, not 4e+01; 8.8, not 8.8000000000000007).
   char buf[32];
-  for (int digits = 1; digits <= 17; ++digits) {
-    std::snprintf(buf, sizeof buf, "%.*g", digits, v);
-    if (std::strtod(buf, nullptr) == v) break;
-  }
-  return buf;
+  const auto r = std::to_chars(buf, buf + sizeof buf, v);
+  return std::string(buf, r.ptr);
 }
 
 bool from_command_line(const RawScene& s, const std::string& path) {
