@@ -219,13 +219,18 @@ void apply_stiffness(const EngineData& d, const std::vector<double>& u, std::vec
 /// Local damping raises a decelerating force to (1 + alpha) |f|, i.e. the
 /// stiffness seen by the stiffest mode, so it divides the limit by
 /// sqrt(1 + alpha).
+/// The viscous ratio plus the mass-proportional one, c / (2 omega).
+static double total_ratio(const EngineData& d, double omega, double xi_viscous) {
+  return xi_viscous + d.damping.mass_proportional / (2.0 * omega);
+}
+
 double damped_limit(const EngineData& d, double omega, double xi_viscous) {
-  const double xi = xi_viscous + d.damping.mass_proportional / (2.0 * omega);
+  const double xi = total_ratio(d, omega, xi_viscous);
   return 2.0 / omega * (std::sqrt(1.0 + xi * xi) - xi) / std::sqrt(1.0 + d.damping.local);
 }
 
 double damping_stiffening(const EngineData& d, double omega, double xi_viscous) {
-  const double xi = xi_viscous + d.damping.mass_proportional / (2.0 * omega);
+  const double xi = total_ratio(d, omega, xi_viscous);
   return std::sqrt(1.0 + d.damping.local) / (std::sqrt(1.0 + xi * xi) - xi);
 }
 

@@ -96,6 +96,7 @@ void RunOutputs::record_insitu(const mesh::Mesh& m, const std::vector<insitu::In
 }
 
 void RunOutputs::begin_history(const std::vector<Monitor>& monitors, const mesh::Mesh& m) {
+  energy_floor_ = energy_floor(scene_, m);
   for (const mesh::TaggedEdge& edge : m.edges)
     if (edge.tag >= mesh::kBottom && edge.tag <= mesh::kLeft) {
       boundary_vertices_.push_back(edge.a);
@@ -137,7 +138,7 @@ void RunOutputs::record_step(const fdem::Engine& e, const mesh::Mesh& m,
   for (double v : energy_row(energy)) row.push_back(v);
   history_->add(row);
   // Before the frame: the last frame stays the last good state.
-  check_energy(energy, e.step_count(), energy_floor(scene_, m));
+  check_energy(energy, e.step_count(), energy_floor_);
   // The hand-off step's dt, once it passed (a failed one is no good state).
   if (stage == "handoff" && stage_names_.size() == 1) handoff_dt_ = e.dt();
   if (scene_.output.vtk) {
@@ -304,7 +305,7 @@ void RunOutputs::finish(const fdem::Engine& e, const mesh::Mesh& m,
                         const fdem::BoltPlan& bolts) {
   auto& j = summary_.json();
   report_engine(e, timer, summary_);
-  warn_if_unbalanced(e, energy_floor(scene_, m), cli_.quiet, summary_);
+  warn_if_unbalanced(e, energy_floor_, cli_.quiet, summary_);
   report_dt();
   bolt_outputs(e, bolts);
   j["monitors"] = monitors_json(e, monitors);

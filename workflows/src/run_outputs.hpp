@@ -83,6 +83,7 @@ class RunOutputs {
   mutable std::array<double, 2> translation_{0, 0};
   std::vector<std::string> stage_names_;
   double handoff_dt_ = 0;  ///< dt of the hand-off step (0: not taken by this run's record)
+  double energy_floor_ = 0;  ///< energy_floor of the model (set by begin_history)
   LastGoodState last_good_;
   double fdem_seconds_at_start_ = 0;
 };

@@ -281,7 +281,7 @@ int run_tunnel(const Scene& scene, const CommandLine& cli) {
   } catch (const InputError& e) {
     // An explicit dt above the limit a later stage brings (lining, bolts,
     // grout stiffen the model): found only there, after outputs exist.
-    const bool dt = std::string(e.what()).find("stability limit") != std::string::npos;
+    const bool dt = scene.engine.dt > 0 && engine.critical_dt() < scene.engine.dt;
     const std::string why = dt ? scene.source + ": key 'engine.dt' = " +
                                      detail::number_text(scene.engine.dt) + " s: " + e.what() +
                                      " (engine.dt = 0 follows the limit through every stage)"
