@@ -328,7 +328,13 @@ void Engine::set_active(std::size_t t, bool on, ActivationReference ref) {
   const detail::Placement at = detail::half_step_placement(d);
   double before = detail::triangle_stored_energy(d, t, at);
   if (!on && d.tris.active[t]) before += detail::contact_energy_of_triangle(d, int(t), at);
-  if (on && ref == ActivationReference::kCurrent) detail::set_reference_to_current(d, t);
+  if (on && ref == ActivationReference::kCurrent) {
+    // Stress-free in the shape it has now: neither strain nor the initial
+    // stress it carried as part of a softened core counts any more.
+    detail::set_reference_to_current(d, t);
+    if (!d.tris.sigma0.empty())
+      for (int k = 0; k < 3; ++k) d.tris.sigma0[3 * t + k] = 0.0;
+  }
   d.tris.active[t] = on ? 1 : 0;
   if (!d.tris.viscous_stress.empty())
     for (int k = 0; k < 3; ++k) d.tris.viscous_stress[3 * t + k] = 0.0;

@@ -11,7 +11,9 @@
 
 #include <unistd.h>
 
+#include "broken_zone.hpp"
 #include "commands.hpp"
+#include "stage_inputs.hpp"
 #include "rockfdem/error.hpp"
 #include "rockfdem/mesh/build.hpp"
 #include "rockfdem/mesh/outline.hpp"
@@ -202,6 +204,18 @@ int command_check(const Scene& scene, const CommandLine& /*cli*/) {
     std::printf("  triangles (estimate):       %.0f\n", e.triangles);
   }
   std::printf("  crack elements (estimate):  %.0f\n", cracks);
+  if (e.fracture_triangles > 0) {
+    const Resolution r = fracture_resolution(scene, nullptr);
+    std::printf("  fracture resolution:        h / l_ch = %.3g (h = %.3g m, l_ch = E GfI / "
+                "ft^2 = %.3g m; limit %g)\n",
+                r.ratio, r.h, r.l_ch, kResolutionLimit);
+    if (r.ratio > kResolutionLimit)
+      std::fprintf(stderr,
+                   "warning: the fracture zone's elements are %.2g times the rock's l_ch "
+                   "(limit %g): crack pattern and displacements depend on the mesh; refine "
+                   "mesh.size_near\n",
+                   r.ratio, kResolutionLimit);
+  }
   std::printf("  engine memory (estimate):   %.1f MiB\n", bytes / 1048576.0);
   std::printf("  peak memory (estimate):     %.1f MiB of %.1f MiB on this machine\n",
               peak_bytes(e) / 1048576.0, machine_bytes() / 1048576.0);
@@ -216,7 +230,7 @@ int command_check(const Scene& scene, const CommandLine& /*cli*/) {
     // Scaled to the least constrained node, among the coarsest triangles far
     // out, less the tunnel's local damping (0.8 unless set: 1 / sqrt(1.8))
     // and contact, which adds its frequency on top (1 / sqrt(2)).
-    const double local = scene.engine.local_damping > 0 ? scene.engine.local_damping : 0.8;
+    const double local = stage_damping(scene).local;
     const double contact = scene.engine.contact ? std::sqrt(0.5) : 1.0;
     const double target = scene.engine.mass_scaling_dt > 0 ? scene.engine.mass_scaling_dt
                                                             : 0.3 * scene.mesh.size.size_far / cp;

@@ -2,6 +2,7 @@
 // Brazilian disc): mesh, then the explicit engine loading the specimen
 // between platens for engine.steps steps, with the stress-strain (or
 // load-displacement) history, ParaView frames and a summary.
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <iostream>
@@ -78,7 +79,7 @@ int run_specimen(const Scene& scene, const CommandLine& cli) {
   in.boundary_conditions = platens(scene);
   in.dt = scene.engine.dt;  // checked by make_engine
   in.dt_safety = scene.engine.dt_safety;
-  in.damping.local = scene.engine.local_damping;
+  in.damping.local = std::max(scene.engine.local_damping, 0.0);  // -1: not given, none
   in.damping.mass_proportional = scene.engine.mass_damping;
   in.gravity_y = -scene.engine.gravity;
   in.threads = threads;

@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <iostream>
 
+#include "broken_zone.hpp"
 #include "engine_report.hpp"
 #include "output_dir.hpp"
 #include "run_plots.hpp"
@@ -29,26 +30,46 @@ const Monitor& find(const std::vector<Monitor>& ms, const std::string& name) {
   throw std::logic_error("no monitor " + name);
 }
 
+// The opening's centre as its key points span it.
+std::array<double, 2> opening_centre(const std::vector<Monitor>& ms) {
+  return {(find(ms, "left_wall").x + find(ms, "right_wall").x) / 2,
+          (find(ms, "vault").y + find(ms, "invert").y) / 2};
+}
+
+// Unit vector from a key point towards the opening's centre: a positive
+// component of the displacement along it is convergence.
+std::array<double, 2> inward_direction(const Monitor& mon, const std::array<double, 2>& c) {
+  const double dx = c[0] - mon.x, dy = c[1] - mon.y, len = std::hypot(dx, dy);
+  return len > 0 ? std::array<double, 2>{dx / len, dy / len} : std::array<double, 2>{0, 0};
+}
+
 }  // namespace
 
-std::array<double, 2> RunOutputs::boundary_translation(const fdem::Engine& e) const {
-  if (boundary_vertices_.empty()) return {0, 0};
-  // Every monitor of a step needs the same mean: compute it once per step.
-  if (translation_step_ == e.step_count()) return translation_;
-  std::array<double, 2> mean{0, 0};
+RigidFit RunOutputs::boundary_fit(const fdem::Engine& e) const {
+  if (boundary_vertices_.empty()) return {};
+  // Every monitor of a step needs the same fit: compute it once per step.
+  if (fit_step_ == e.step_count()) return fit_;
+  std::vector<double> x, y, ux, uy;
   const std::vector<int>& vertex = e.node_vertex();
-  std::size_t n = 0;
+  const std::vector<double>& pos = e.positions();
   for (std::size_t node = 0; node < e.n_nodes(); ++node) {
     if (!std::binary_search(boundary_vertices_.begin(), boundary_vertices_.end(), vertex[node]))
       continue;
     const auto d = e.displacement(node);
-    mean[0] += d[0];
-    mean[1] += d[1];
-    ++n;
+    x.push_back(pos[2 * node] - d[0]);
+    y.push_back(pos[2 * node + 1] - d[1]);
+    ux.push_back(d[0]);
+    uy.push_back(d[1]);
   }
-  translation_ = {mean[0] / double(n), mean[1] / double(n)};
-  translation_step_ = e.step_count();
-  return translation_;
+  fit_ = rigid_fit(x, y, ux, uy);
+  fit_step_ = e.step_count();
+  return fit_;
+}
+
+void RunOutputs::check_rigid_motion(const fdem::Engine& e, long step) {
+  const RigidFit fit = boundary_fit(e);
+  max_rotation_deg_ = std::max(max_rotation_deg_, std::abs(fit.rotation) * 180 / M_PI);
+  check_rigid_rotation(fit, scene_.insitu.rollers, step);
 }
 
 std::array<double, 2> RunOutputs::displacement(const fdem::Engine& e, const Monitor& mon) const {
@@ -57,10 +78,16 @@ std::array<double, 2> RunOutputs::displacement(const fdem::Engine& e, const Moni
                                                  fields_.empty() ? none : fields_.back().uy);
   // Remove the engine's mean translation of the outer boundary (the
   // implicit part already has its rigid motion removed).
-  const std::array<double, 2> shift = boundary_translation(e);
-  u[0] -= shift[0];
-  u[1] -= shift[1];
+  const RigidFit fit = boundary_fit(e);
+  u[0] -= fit.tx;
+  u[1] -= fit.ty;
   return u;
+}
+
+std::array<double, 4> RunOutputs::key_point(const fdem::Engine& e, const Monitor& mon) const {
+  const std::array<double, 2> u = displacement(e, mon);
+  const std::array<double, 2> in = inward_direction(mon, opening_centre_);
+  return {mm(u[0]), mm(u[1]), mm(std::hypot(u[0], u[1])), mm(u[0] * in[0] + u[1] * in[1])};
 }
 
 double RunOutputs::convergence(const fdem::Engine& e, const std::vector<Monitor>& ms,
@@ -69,6 +96,16 @@ double RunOutputs::convergence(const fdem::Engine& e, const std::vector<Monitor>
   const auto ua = displacement(e, ma), ub = displacement(e, mb);
   const double dx = mb.x - ma.x, dy = mb.y - ma.y, len = std::hypot(dx, dy);
   return ((ua[0] - ub[0]) * dx + (ua[1] - ub[1]) * dy) / len;
+}
+
+std::pair<std::string, double> RunOutputs::largest_key_point(
+    const fdem::Engine& e, const std::vector<Monitor>& monitors) const {
+  std::pair<std::string, double> most{"", 0.0};
+  for (const Monitor& mon : monitors) {
+    const auto u = displacement(e, mon);
+    if (std::hypot(u[0], u[1]) > most.second) most = {mon.name, std::hypot(u[0], u[1])};
+  }
+  return most;
 }
 
 RunOutputs::RunOutputs(const Scene& scene, const CommandLine& cli, RunSummary& summary)
@@ -105,13 +142,14 @@ void RunOutputs::begin_history(const std::vector<Monitor>& monitors, const mesh:
   std::sort(boundary_vertices_.begin(), boundary_vertices_.end());
   boundary_vertices_.erase(std::unique(boundary_vertices_.begin(), boundary_vertices_.end()),
                            boundary_vertices_.end());
+  opening_centre_ = opening_centre(monitors);
+  for (const Monitor& mon : monitors) monitor_names_.push_back(mon.name);
   std::vector<std::string> cols{"stage", "step", "time", "kinetic_energy", "unbalanced_ratio",
                                 "broken_I", "broken_II", "broken_mixed"};
-  for (const Monitor& mon : monitors) {
-    cols.push_back(mon.name + "_ux_mm");
-    cols.push_back(mon.name + "_uy_mm");
-  }
-  cols.insert(cols.end(), {"vault_settlement_mm", "wall_convergence_mm",
+  for (const Monitor& mon : monitors)
+    for (const char* c : {"_ux_mm", "_uy_mm", "_u_mm", "_radial_mm"}) cols.push_back(mon.name + c);
+  cols.insert(cols.end(), {"vault_settlement_mm", "wall_chord_convergence_mm",
+                           "shoulder_chord_convergence_mm", "outer_rotation_deg",
                            "support_pressure_ratio"});
   for (const std::string& c : energy_columns()) cols.push_back(c);
   history_ = std::make_unique<History>(output_path(cli_.output_dir, "history.csv"), cols);
@@ -126,19 +164,19 @@ void RunOutputs::record_step(const fdem::Engine& e, const mesh::Mesh& m,
                           e.kinetic_energy(),
                           e.unbalanced_force_ratio(), double(b.mode_I), double(b.mode_II),
                           double(b.mixed)};
-  for (const Monitor& mon : monitors) {
-    const auto u = displacement(e, mon);
-    row.push_back(mm(u[0]));
-    row.push_back(mm(u[1]));
-  }
+  for (const Monitor& mon : monitors)
+    for (double v : key_point(e, mon)) row.push_back(v);
   row.push_back(-mm(displacement(e, find(monitors, "vault"))[1]));
   row.push_back(mm(convergence(e, monitors, "left_wall", "right_wall")));
+  row.push_back(mm(convergence(e, monitors, "left_shoulder", "right_shoulder")));
+  row.push_back(boundary_fit(e).rotation * 180 / M_PI);
   row.push_back(support_ratio);
   const fdem::EnergyBalance energy = e.energy_balance();
   for (double v : energy_row(energy)) row.push_back(v);
   history_->add(row);
   // Before the frame: the last frame stays the last good state.
   check_energy(energy, e.step_count(), energy_floor_);
+  check_rigid_motion(e, e.step_count());
   // The hand-off step's dt, once it passed (a failed one is no good state).
   if (stage == "handoff" && stage_names_.size() == 1) handoff_dt_ = e.dt();
   if (scene_.output.vtk) {
@@ -156,12 +194,16 @@ nlohmann::json RunOutputs::monitors_json(const fdem::Engine& e,
                                          const std::vector<Monitor>& monitors) const {
   nlohmann::json j = nlohmann::json::object();
   for (const Monitor& mon : monitors) {
-    const auto u = displacement(e, mon);
-    j[mon.name] = {{"ux_mm", mm(u[0])}, {"uy_mm", mm(u[1])}, {"x", mon.x}, {"y", mon.y}};
+    const auto k = key_point(e, mon);
+    j[mon.name] = {{"ux_mm", k[0]}, {"uy_mm", k[1]}, {"u_mm", k[2]}, {"radial_mm", k[3]},
+                   {"x", mon.x}, {"y", mon.y}};
   }
+  // Per point (as field convergence points are read) and, apart, the
+  // change of length of two chords between points.
   j["vault_settlement_mm"] = -mm(displacement(e, find(monitors, "vault"))[1]);
-  j["wall_convergence_mm"] = mm(convergence(e, monitors, "left_wall", "right_wall"));
-  j["shoulder_convergence_mm"] = mm(convergence(e, monitors, "left_shoulder", "right_shoulder"));
+  j["wall_chord_convergence_mm"] = mm(convergence(e, monitors, "left_wall", "right_wall"));
+  j["shoulder_chord_convergence_mm"] =
+      mm(convergence(e, monitors, "left_shoulder", "right_shoulder"));
   return j;
 }
 
@@ -211,7 +253,7 @@ nlohmann::json RunOutputs::state() const {
   nlohmann::json frames = nlohmann::json::array();
   for (const coupling::PvdEntry& f : pvd_.entries()) frames.push_back({f.time, f.file});
   return {{"history", history_->rows()}, {"stages", stage_names_}, {"frames", frames},
-          {"handoff_dt", handoff_dt_}};
+          {"handoff_dt", handoff_dt_}, {"max_rotation_deg", max_rotation_deg_}};
 }
 
 void RunOutputs::restore(const nlohmann::json& s, const std::string& from_dir) {
@@ -219,6 +261,7 @@ void RunOutputs::restore(const nlohmann::json& s, const std::string& from_dir) {
   history_->restore(s.at("history").get<std::vector<std::vector<double>>>());
   stage_names_ = s.at("stages").get<std::vector<std::string>>();
   handoff_dt_ = s.value("handoff_dt", 0.0);  // 0: a checkpoint from before it was kept
+  max_rotation_deg_ = s.value("max_rotation_deg", 0.0);
   std::error_code same_ec;
   const bool same_dir = fs::equivalent(from_dir, cli_.output_dir, same_ec);
   for (const auto& f : s.at("frames")) {
@@ -309,6 +352,11 @@ void RunOutputs::finish(const fdem::Engine& e, const mesh::Mesh& m,
   report_dt();
   bolt_outputs(e, bolts);
   j["monitors"] = monitors_json(e, monitors);
+  j["outer_boundary"] = {{"rotation_deg", boundary_fit(e).rotation * 180 / M_PI},
+                         {"max_rotation_deg", max_rotation_deg_},
+                         {"limit_deg", kRigidRotationLimitDeg},
+                         {"translation_mm", {mm(boundary_fit(e).tx), mm(boundary_fit(e).ty)}},
+                         {"support", scene_.insitu.rollers ? "rollers" : "tractions"}};
   // Ground reaction curve, implicit part: the core's share of the in-situ
   // stress (alpha) against the vault settlement it allows.
   const int vault_vertex = vertex_of(e, find(monitors, "vault"));
@@ -320,6 +368,7 @@ void RunOutputs::finish(const fdem::Engine& e, const mesh::Mesh& m,
                  {"vault_settlement_mm", j["monitors"]["vault_settlement_mm"]}});
   j["ground_reaction_curve"] = grc;
   lining_outputs(e, m);
+  damage_outputs(e, m);
   j["history_stages"] = stage_names_;  // history.csv's "stage" column indexes this list
   if (scene_.output.plots) plots(e, m);
   timer.stamp("output");
@@ -328,9 +377,44 @@ void RunOutputs::finish(const fdem::Engine& e, const mesh::Mesh& m,
   const fdem::BrokenCounts b = e.broken_counts();
   if (!cli_.quiet)
     std::cout << "vault settlement " << j["monitors"]["vault_settlement_mm"].get<double>()
-              << " mm, wall convergence " << j["monitors"]["wall_convergence_mm"].get<double>()
+              << " mm, wall chord convergence "
+              << j["monitors"]["wall_chord_convergence_mm"].get<double>()
               << " mm, broken cracks " << b.total() << ", state hash " << e.state_hash() << '\n'
               << timer.table();
+}
+
+void RunOutputs::damage_outputs(const fdem::Engine& e, const mesh::Mesh& m) {
+  auto& j = summary_.json();
+  const Resolution r = fracture_resolution(scene_, &m);
+  j["resolution"] = {{"h_m", r.h}, {"l_ch_m", r.l_ch}, {"h_over_l_ch", r.ratio},
+                     {"limit", kResolutionLimit}};
+  const auto warn = [&](const std::string& msg) {
+    j["warnings"].push_back(msg);
+    if (!cli_.quiet) std::cerr << "warning: " << msg << '\n';
+  };
+  char msg[500];
+  if (r.ratio > kResolutionLimit) {
+    std::snprintf(msg, sizeof msg,
+                  "the fracture zone's elements (h = %.3g m) are %.2g times the rock's "
+                  "characteristic length l_ch = E GfI / ft^2 = %.3g m (limit %g): crack "
+                  "pattern and displacements depend on the mesh; refine mesh.size_near",
+                  r.h, r.ratio, r.l_ch, kResolutionLimit);
+    warn(msg);
+  }
+  const BrokenZone z = broken_zone(e, m, r.h);
+  j["broken_zone"] = {{"broken_rock_cracks", z.broken}, {"depth_m", z.depth},
+                      {"fracture_zone_m", z.zone_depth},
+                      {"clearance_m", z.clearance >= 0 ? nlohmann::json(z.clearance)
+                                                       : nlohmann::json()},
+                      {"capped", z.at_edge}};
+  if (z.at_edge) {
+    std::snprintf(msg, sizeof msg,
+                  "broken crack elements reach %.2g m from the fracture zone's outer edge "
+                  "(less than %g elements of %.3g m): the zone caps the damage; widen "
+                  "tunnel.fracture_zone (now %.3g m deep)",
+                  z.clearance, kEdgeElements, r.h, z.zone_depth);
+    warn(msg);
+  }
 }
 
 void RunOutputs::plots(const fdem::Engine& e, const mesh::Mesh& m) {
@@ -338,9 +422,15 @@ void RunOutputs::plots(const fdem::Engine& e, const mesh::Mesh& m) {
   if (!plots.available()) return;
   const History& h = *history_;
   const std::vector<double> t = h.column("time");
-  plots.xy("convergence.png", "Convergence", time_axis_label(e), "displacement [mm]",
-           {{"vault settlement", t, h.column("vault_settlement_mm")},
-            {"wall convergence", t, h.column("wall_convergence_mm")}});
+  // Per key point, the displacement towards the opening; the chords apart.
+  std::vector<coupling::PlotSeries> points;
+  for (const std::string& name : monitor_names_)
+    points.push_back({name, t, h.column(name + "_radial_mm")});
+  plots.xy("convergence.png", "Key points: displacement towards the opening",
+           time_axis_label(e), "radial displacement [mm]", points);
+  plots.xy("chord_convergence.png", "Chord convergence", time_axis_label(e), "closure [mm]",
+           {{"walls (chord)", t, h.column("wall_chord_convergence_mm")},
+            {"shoulders (chord)", t, h.column("shoulder_chord_convergence_mm")}});
   plots.broken_cracks(e, h);
   std::vector<double> ratio, settlement;
   for (const auto& p : summary_.json()["ground_reaction_curve"]) {

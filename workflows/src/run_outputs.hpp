@@ -9,6 +9,7 @@
 #include "history.hpp"
 #include "last_good.hpp"
 #include "monitors.hpp"
+#include "outer_boundary.hpp"
 #include "phase_timer.hpp"
 #include "rockfdem/coupling/vtk_writer.hpp"
 #include "rockfdem/fdem/bolt_install.hpp"
@@ -32,6 +33,9 @@ class RunOutputs {
   /// One history row and (if enabled) one ParaView frame.
   void record_step(const fdem::Engine& e, const mesh::Mesh& m, const std::vector<Monitor>& monitors,
                    PhaseTimer& timer, const std::string& stage, double support_ratio);
+  /// The key point displaced most from the in-situ state and |u| [m].
+  std::pair<std::string, double> largest_key_point(const fdem::Engine& e,
+                                                   const std::vector<Monitor>& monitors) const;
   /// What a restart needs to continue the outputs: history rows, stage
   /// names, frames written.
   nlohmann::json state() const;
@@ -61,10 +65,18 @@ class RunOutputs {
   coupling::VtkGrid frame_grid(const fdem::Engine& e, const mesh::Mesh& m) const;
   /// bolt_NN.csv (axial stress and force along each bolt) and summary "bolts".
   void bolt_outputs(const fdem::Engine& e, const fdem::BoltPlan& bolts);
+  /// summary "resolution" (h / l_ch) and "broken_zone" (depth, clearance to
+  /// the fracture zone's edge), with warnings when either limits the answer.
+  void damage_outputs(const fdem::Engine& e, const mesh::Mesh& m);
   /// summary "lining": the lining-rock crack elements and how many broke.
   void lining_outputs(const fdem::Engine& e, const mesh::Mesh& m);
-  /// Mean engine displacement of the outer boundary (the rigid translation).
-  std::array<double, 2> boundary_translation(const fdem::Engine& e) const;
+  /// Rigid motion of the outer boundary in the engine (fit to its nodes).
+  RigidFit boundary_fit(const fdem::Engine& e) const;
+  /// Stops the run (NumericalError) when the boundary turns as a rigid body.
+  void check_rigid_motion(const fdem::Engine& e, long step);
+  /// One key point's figures [mm]: ux, uy, |u| and the component towards
+  /// the opening (convergence positive).
+  std::array<double, 4> key_point(const fdem::Engine& e, const Monitor& mon) const;
   /// Monitor displacement from the in-situ state (implicit part + engine increment).
   std::array<double, 2> displacement(const fdem::Engine& e, const Monitor& mon) const;
   /// Closure between two monitors along the line joining them, positive inwards [m].
@@ -79,8 +91,11 @@ class RunOutputs {
   int frame_ = 0;
   const fdem::BoltPlan* bolts_ = nullptr;
   std::vector<int> boundary_vertices_;  ///< outer boundary, for the rigid translation
-  mutable long translation_step_ = -1;   ///< step the cached translation belongs to
-  mutable std::array<double, 2> translation_{0, 0};
+  mutable long fit_step_ = -1;          ///< step the cached fit belongs to
+  mutable RigidFit fit_;
+  double max_rotation_deg_ = 0;         ///< largest |rotation| of the outer boundary so far
+  std::array<double, 2> opening_centre_{0, 0};  ///< between the key points
+  std::vector<std::string> monitor_names_;
   std::vector<std::string> stage_names_;
   double handoff_dt_ = 0;  ///< dt of the hand-off step (0: not taken by this run's record)
   double energy_floor_ = 0;  ///< energy_floor of the model (set by begin_history)

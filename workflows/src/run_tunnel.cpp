@@ -9,9 +9,14 @@
 //
 // Outer boundary: the in-situ traction sigma0 . n on all four sides, as in
 // the implicit stage, so the box is in equilibrium with the initial stress
-// at step 0; the loads are self-equilibrated and local damping removes any
-// drift. Reported displacements have the mean translation of the outer
-// boundary removed, as the implicit stage removes its rigid motion.
+// at step 0. With insitu.rollers (the default) each side is also a roller:
+// its normal displacement stays at the hand-off's, so the traction there
+// becomes the roller's reaction (the same at step 0) and the model has no
+// rigid-body mode left. Tractions alone leave three: the loads are
+// self-equilibrated, but once a ring around the opening is broken the outer
+// block can turn on it (outer_boundary.hpp guards against it). Reported
+// displacements have the mean translation of the outer boundary removed, as
+// the implicit stage removes its rigid motion.
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -49,7 +54,8 @@ std::array<double, 3> insitu_tensor(const InsituSettings& s) {
           -(s.sigma_h - s.sigma_v) * n * c};
 }
 
-// Traction sigma0 . n on each side of the box (outward normals).
+// Traction sigma0 . n on each side of the box (outward normals); with
+// rollers, the normal velocity held at zero too.
 std::vector<fdem::BoundaryCondition> box_conditions(const InsituSettings& s) {
   const auto sig = insitu_tensor(s);
   const std::pair<int, std::array<double, 2>> sides[] = {
@@ -61,6 +67,7 @@ std::vector<fdem::BoundaryCondition> box_conditions(const InsituSettings& s) {
     bc.tag = tag;
     bc.tx = sig[0] * n[0] + sig[2] * n[1];
     bc.ty = sig[2] * n[0] + sig[1] * n[1];
+    if (s.rollers) (n[0] != 0 ? bc.x : bc.y) = fdem::Constraint::kFixed;
     bcs.push_back(bc);
   }
   return bcs;
@@ -306,12 +313,26 @@ int run_tunnel(const Scene& scene, const CommandLine& cli) {
     }
     timer.stamp("insitu");
   }
-  summary.json()["status"] = "completed";
+  const RunVerdict verdict = stages.verdict();
+  summary.json()["status"] = verdict.status;
+  if (!verdict.message.empty()) {
+    summary.json()["status_reason"] = verdict.message;
+    summary.json()["warnings"].push_back(verdict.status + ": " + verdict.message);
+    std::cerr << "warning: " << verdict.status << ": " << verdict.message << '\n';
+  }
+  summary.json()["damping"] = {{"local", stage_damping(scene).local},
+                               {"mass_proportional", scene.engine.mass_damping},
+                               {"local_given", scene.engine.local_damping >= 0}};
   summary.json()["fdem"] = {{"unbalanced_ratio_at_start", start_ratio},
                             {"unbalanced_ratio_at_end", engine.unbalanced_force_ratio()},
                             {"handoff_alpha", handoff.alpha},
                             {"stages", stages.report()}};
   out.finish(engine, m, monitors, timer, bolts);
+  if (!cli.quiet)
+    std::cout << "status: " << verdict.status
+              << (verdict.message.empty() ? " (every stage met its criteria)"
+                                          : " (" + verdict.message + ")")
+              << '\n';
   return 0;
 }
 

@@ -304,6 +304,7 @@ void read_insitu(const Reader& r, Scene& s) {
   in.unit_weight = r.number("insitu.unit_weight");
   in.kirsch_boundary = r.text("insitu.boundary") == "kirsch";
   in.lining_active = r.boolean("insitu.lining_active");
+  in.rollers = r.boolean("insitu.rollers");
   in.solver = r.text("insitu.solver");
   in.tolerance = r.number("insitu.tolerance");
   if (r.has("insitu.alpha")) in.alpha = r.numbers("insitu.alpha");
@@ -424,12 +425,18 @@ void read_stages(const Reader& r, Scene& s) {
   const bool lining = has_lining_ring(s);
   const bool bolts = !s.bolts.segments.empty();
   if (!list) {
+    const auto stage = [&](const char* kind, long max_steps) {
+      StageSpec st;
+      st.kind = kind;
+      st.max_steps = max_steps;
+      st.every_steps = s.output.every_steps;
+      return st;
+    };
     // A ring that carried load in the implicit stage is installed already.
-    if (lining && !s.insitu.lining_active)
-      s.stages.push_back({"lining", 0, 0, 1e-3, 0, s.output.every_steps, 0, 1e-3});
-    if (bolts) s.stages.push_back({"bolts", 0, 0, 1e-3, 0, s.output.every_steps, 0, 1e-3});
-    s.stages.push_back({"remove_core", 0, 0, 1e-3, 0, s.output.every_steps, 0, 1e-3});
-    s.stages.push_back({"equilibrium", 0, s.engine.steps, 1e-3, 0, s.output.every_steps, 0, 1e-3});
+    if (lining && !s.insitu.lining_active) s.stages.push_back(stage("lining", 0));
+    if (bolts) s.stages.push_back(stage("bolts", 0));
+    s.stages.push_back(stage("remove_core", 0));
+    s.stages.push_back(stage("equilibrium", s.engine.steps));
     return;
   }
   bool bolted = false;
@@ -446,12 +453,17 @@ void read_stages(const Reader& r, Scene& s) {
       if (i != 0) r.fail(p + ".kind", "the implicit in-situ stage comes first");
       continue;
     }
-    StageSpec st{kind, r.number_or(p + ".alpha", 0), long(r.number_or(p + ".max_steps",
-                                                                     double(s.engine.steps))),
-                 r.number_or(p + ".ratio", 1e-3), r.number_or(p + ".time", 0),
-                 int(r.number_or(p + ".every_steps", s.output.every_steps)),
-                 long(r.number_or(p + ".trigger_broken", 0)),
-                 r.number_or(p + ".settle", 1e-3)};
+    StageSpec st;
+    st.kind = kind;
+    st.alpha = r.number_or(p + ".alpha", 0);
+    st.max_steps = long(r.number_or(p + ".max_steps", double(s.engine.steps)));
+    st.ratio = r.number_or(p + ".ratio", st.ratio);
+    st.time = r.number_or(p + ".time", 0);
+    st.every_steps = int(r.number_or(p + ".every_steps", s.output.every_steps));
+    st.trigger_broken = long(r.number_or(p + ".trigger_broken", 0));
+    st.settle = r.number_or(p + ".settle", st.settle);
+    st.hold = int(r.number_or(p + ".hold", st.hold));
+    st.unstable_fraction = r.number_or(p + ".unstable_fraction", st.unstable_fraction);
     if (kind == "bolts") {
       if (!bolts) r.fail(p + ".kind", "the scene has no [[bolt]] or [[bolt_fan]]");
       if (bolted) r.fail(p + ".kind", "the bolts are installed once");
@@ -524,7 +536,7 @@ Scene build_scene(const RawScene& raw, const std::string& base_dir) {
   s.engine.dt = r.number("engine.dt");
   s.engine.dt_safety = r.number("engine.dt_safety");
   s.engine.damping_ratio = r.number("engine.damping_ratio");
-  s.engine.local_damping = r.number("engine.local_damping");
+  s.engine.local_damping = r.number_or("engine.local_damping", -1);
   s.engine.mass_damping = r.number("engine.mass_damping");
   s.engine.gravity = r.number("engine.gravity");
   const std::string scaling = r.text("engine.mass_scaling");

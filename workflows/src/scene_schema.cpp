@@ -199,6 +199,13 @@ std::vector<KeySpec> build_schema() {
   s.push_back(choice("insitu.boundary", "far_field", {"far_field", "kirsch"},
                      "Loading on the box: the far-field tractions, or exact Kirsch tractions "
                      "(circular tunnel only, for verification)."));
+  s.push_back(boolean("insitu.rollers", "true",
+                      "Explicit stages: each side of the box is a roller, its normal "
+                      "displacement held at the implicit hand-off's (where the box stood in "
+                      "equilibrium with the in-situ stress), so the model has no rigid-body "
+                      "mode; false: the in-situ tractions alone load the box, as in the "
+                      "implicit stage, and the run stops if the outer boundary turns by more "
+                      "than 0.01 deg as a rigid body."));
   KeySpec alpha = number("insitu.alpha", "-", "[1.0]", 0, false, 1, false,
                          "Core softening factors solved implicitly, strictly decreasing in "
                          "[0, 1]; 0 removes the core.");
@@ -222,8 +229,12 @@ std::vector<KeySpec> build_schema() {
                      "Viscous damping of the triangles, a multiple of Munjiza's element "
                      "viscosity eta = 2 h sqrt(E rho) (h: smallest altitude); the stiffest "
                      "element mode then has 1.7-1.8 times this ratio of critical damping."));
-  s.push_back(number("engine.local_damping", "-", "0", 0, false, 1, true,
-                     "Cundall local damping coefficient for quasi-static stages."));
+  s.push_back(number("engine.local_damping", "-", "0.8 (tunnel stages), 0 (specimens)", 0,
+                     false, 1, true,
+                     "Cundall local damping coefficient: f -= alpha |f| sign(v) per node "
+                     "component. Tunnel stages are quasi-static and take 0.8 unless given (0 "
+                     "runs them undamped but for the triangles' viscosity); specimen runs "
+                     "take 0. The summary's `damping` entry shows the value used."));
   s.push_back(non_negative("engine.mass_damping", "1/s", "0",
                            "Mass-proportional damping coefficient c (force -c m v)."));
   s.push_back(choice("engine.mass_scaling", "auto", {"auto", "on", "off"},
@@ -348,6 +359,14 @@ std::vector<KeySpec> build_schema() {
                      "displacement change over the last output interval, per 1000 steps, at "
                      "most this fraction of the largest monitor displacement; 0: the ratio "
                      "alone."));
+  s.push_back(integer("stages[].hold", "2", 1, 1000,
+                      "Equilibrium: ratio and settle must both hold at this many consecutive "
+                      "outputs (a ratio met once on the way to a collapse is no equilibrium)."));
+  s.push_back(number("stages[].unstable_fraction", "-", "0.05", 0, true, 1, false,
+                     "A monitor displaced by more than this fraction of the opening's span "
+                     "stops the run as `unstable`: 0.05 of the span is a radial strain of "
+                     "10% on a round opening, the threshold of extreme squeezing (Hoek and "
+                     "Marinos 2000)."));
   s.push_back(non_negative("stages[].time", "s", "0",
                            "Stop after this much simulated time in the stage (pseudo-time when "
                            "engine.mass_scaling is on, as it is for tunnels by default: prefer "

@@ -152,7 +152,8 @@ fdem::Engine make_engine(fdem::ModelInput in, const Scene& scene, bool force_dt)
 }
 
 fdem::DampingSettings stage_damping(const Scene& s) {
-  return {s.engine.local_damping > 0 ? s.engine.local_damping : 0.8, s.engine.mass_damping};
+  return {s.engine.local_damping >= 0 ? s.engine.local_damping : kTunnelLocalDamping,
+          s.engine.mass_damping};
 }
 
 bool kirsch_case(const Scene& s, insitu::KirschCase* k) {

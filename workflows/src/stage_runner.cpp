@@ -81,19 +81,81 @@ double StageRunner::settle_measure(long steps) {
   // cursor_.monitor_u holds the same monitors, set when the stage began.
   for (std::size_t i = 0; i + 1 < now.size(); i += 2) {
     const double* prev = &cursor_.monitor_u[i];
-    change = std::max(change, std::hypot(now[i] - prev[0], now[i + 1] - prev[1]));
+    const double moved = std::hypot(now[i] - prev[0], now[i + 1] - prev[1]);
+    if (moved > change) {
+      change = moved;
+      moving_most_ = monitors_[i / 2].name;
+    }
     size = std::max(size, std::hypot(now[i], now[i + 1]));
   }
   cursor_.monitor_u = now;
   // Per 1000 steps, so that the tolerance does not depend on every_steps.
+  last_rate_ = steps > 0 ? change * (1000.0 / double(steps)) : 0.0;
   return size > 0 && steps > 0 ? change / size * (1000.0 / double(steps)) : 0.0;
 }
 
-bool StageRunner::advance(long n) {
+bool StageRunner::advance(long n, long broken_target, bool* reached) {
   for (long i = 0; i < n; ++i) {
     if (interrupt_requested()) return false;
     engine_.step();
+    if (broken_target > 0 && engine_.broken_counts().total() >= broken_target) {
+      *reached = true;
+      return true;
+    }
   }
+  return true;
+}
+
+namespace {
+
+// The opening's span as its wall key points measure it [m].
+double key_point_span(const std::vector<Monitor>& ms) {
+  double lo = 0, hi = 0;
+  for (const Monitor& m : ms) {
+    if (m.name == "left_wall") lo = m.x;
+    if (m.name == "right_wall") hi = m.x;
+  }
+  return hi - lo;
+}
+
+// Accelerating: the largest monitor move per 1000 steps, averaged over the
+// last kWindow outputs, is more than 1.5 times its average over the kWindow
+// before (a mean over windows, so that the output-to-output scatter of a
+// cracking model does not count as acceleration).
+constexpr std::size_t kWindow = 5;
+bool accelerating(const std::vector<double>& rates) {
+  if (rates.size() < 2 * kWindow) return false;
+  double before = 0, last = 0;
+  for (std::size_t i = 0; i < kWindow; ++i) {
+    before += rates[rates.size() - 2 * kWindow + i];
+    last += rates[rates.size() - kWindow + i];
+  }
+  return last > 1.5 * before;
+}
+
+}  // namespace
+
+bool StageRunner::unstable(const StageSpec& stage) {
+  cursor_.rates.push_back(last_rate_);
+  if (cursor_.rates.size() > 2 * kWindow) cursor_.rates.erase(cursor_.rates.begin());
+  const auto [name, u] = out_.largest_key_point(engine_, monitors_);
+  const double span = key_point_span(monitors_);
+  const bool beyond = span > 0 && u > stage.unstable_fraction * span;
+  // An acceleration only counts once the stage is past its first transient
+  // (ten outputs) and while the monitors are far from settled.
+  const bool speeding = engine_.step_count() - cursor_.first >= 10L * stage.every_steps &&
+                        accelerating(cursor_.rates) && last_settle_ > 10 * stage.settle;
+  if (!beyond && !speeding) return false;
+  char msg[600];
+  std::snprintf(msg, sizeof msg,
+                "stage '%s', step %ld: key point %s has moved %.0f mm (%.3g of the span %.2f m; "
+                "limit %g) and %s moves %.3g mm per 1000 steps%s: the opening is closing, not "
+                "stabilising",
+                stage.kind.c_str(), engine_.step_count(), name.c_str(), 1000 * u,
+                span > 0 ? u / span : 0.0, span, stage.unstable_fraction, moving_most_.c_str(),
+                1000 * last_rate_,
+                speeding ? ", 1.5 times faster over the last 5 outputs than the 5 before" : "");
+  unstable_ = {"unstable", msg};
   return true;
 }
 
@@ -108,7 +170,9 @@ bool StageRunner::step_until(const StageSpec& stage, PhaseTimer& timer, long bro
     const long chunk = std::min<long>(stage.every_steps - in_stage() % stage.every_steps,
                                       stage.max_steps - in_stage());
     timer.stamp("output");
-    const bool whole = advance(chunk);
+    const long before = engine_.step_count();
+    bool reached = false;
+    const bool whole = advance(chunk, broken_target, &reached);
     timer.stamp("fdem");
     if (!whole) {
       // Checkpoint first: the extra row below is not one an uninterrupted run writes.
@@ -122,12 +186,23 @@ bool StageRunner::step_until(const StageSpec& stage, PhaseTimer& timer, long bro
     out_.record_step(engine_, mesh_, monitors_, timer, stage.kind, support_ratio());
     // Equilibrium: balanced forces alone are not enough while cracks keep
     // breaking and blocks keep sliding (the ratio then stalls near 1e-3
-    // with the walls still converging); the monitors must have settled too.
-    last_settle_ = settle_measure(chunk);
-    done = broken_target > 0 ? engine_.broken_counts().total() >= broken_target
-                             : engine_.unbalanced_force_ratio() < stage.ratio &&
-                                   (stage.settle <= 0 || last_settle_ <= stage.settle);
+    // with the walls still converging); the monitors must have settled
+    // too, and both must hold at `hold` consecutive outputs, so that a
+    // ratio met once on the way to a collapse does not count.
+    last_settle_ = settle_measure(engine_.step_count() - before);
+    if (broken_target > 0) {
+      done = reached;
+    } else {
+      const bool met = engine_.unbalanced_force_ratio() < stage.ratio &&
+                       (stage.settle <= 0 || last_settle_ <= stage.settle);
+      cursor_.held = met ? cursor_.held + 1 : 0;
+      done = cursor_.held >= stage.hold;
+    }
     progress.update(in_stage(), engine_.time() - t0);
+    if (!done && unstable(stage)) {
+      stopped_ = true;
+      break;
+    }
     // Only where the loop goes on: a restart resumes inside this stage.
     const bool goes_on = !done && in_stage() < stage.max_steps && !out_of_time();
     if (goes_on && checkpoint_every_ > 0 && save_checkpoint_ &&
@@ -148,7 +223,7 @@ nlohmann::json StageRunner::grout(const StageSpec& stage, PhaseTimer& timer) {
   // Triggered by the broken count, or by the stage's time when one is given.
   if (!triggered)
     triggered = step_until(stage, timer, stage.trigger_broken) ||
-                (stage.time > 0 && engine_.time() - cursor_.t0 >= stage.time);
+                (!stopped_ && stage.time > 0 && engine_.time() - cursor_.t0 >= stage.time);
   nlohmann::json done = {{"triggered", triggered},
                          {"broken_before", engine_.broken_counts().total()}};
   if (!triggered) return done;
@@ -191,16 +266,56 @@ void StageRunner::run(const StageSpec& stage, PhaseTimer& timer) {
                      {"settle", last_settle_ >= 0 ? nlohmann::json(last_settle_) : nlohmann::json()},
                      // A stage that took no step has no equilibrium to report.
                      {"converged", steps_taken > 0 ? nlohmann::json(converged) : nlohmann::json()},
+                     {"max_steps", stage.max_steps},
+                     {"criteria", {{"ratio", stage.ratio}, {"settle", stage.settle},
+                                   {"hold", stage.hold},
+                                   {"unstable_fraction", stage.unstable_fraction}}},
+                     {"moving_most", last_settle_ >= 0
+                                         ? nlohmann::json{{"key_point", moving_most_},
+                                                          {"mm_per_1000_steps", 1000 * last_rate_}}
+                                         : nlohmann::json()},
                      {"support_pressure_ratio", support_ratio()}});
 }
 
 void StageRunner::run_all(PhaseTimer& timer) {
-  for (; cursor_.index < scene_.stages.size(); ++cursor_.index) {
+  for (; cursor_.index < scene_.stages.size() && !stopped_; ++cursor_.index) {
     run(scene_.stages[cursor_.index], timer);
+    if (stopped_) break;
     Cursor next;  // the next stage starts afresh
     next.index = cursor_.index;
     cursor_ = next;
   }
+}
+
+RunVerdict StageRunner::verdict() const {
+  if (stopped_) return unstable_;
+  // The last stage that stepped decides: its end is the state reported.
+  for (auto it = report_.rbegin(); it != report_.rend(); ++it) {
+    const nlohmann::json& r = *it;
+    if (r["steps"].get<long>() == 0) continue;
+    if (r["converged"].is_boolean() && r["converged"].get<bool>()) return {};
+    const std::string kind = r["kind"].get<std::string>();
+    char msg[600];
+    if (kind == "grout") {
+      std::snprintf(msg, sizeof msg,
+                    "the last stage that stepped, 'grout', stops on its trigger, not on "
+                    "equilibrium: add an equilibrium stage after it");
+    } else {
+      const nlohmann::json& m = r["moving_most"];
+      std::snprintf(msg, sizeof msg,
+                    "stage '%s' stopped after %ld steps (cap %ld) without equilibrium: "
+                    "unbalanced ratio %.3g (limit %g), settle %.3g (limit %g), key point "
+                    "moving most: %s, %.3g mm per 1000 steps",
+                    kind.c_str(), r["steps"].get<long>(), r["max_steps"].get<long>(),
+                    r["unbalanced_ratio"].get<double>(), r["criteria"]["ratio"].get<double>(),
+                    r["settle"].is_number() ? r["settle"].get<double>() : -1.0,
+                    r["criteria"]["settle"].get<double>(),
+                    m.is_object() ? m["key_point"].get<std::string>().c_str() : "none",
+                    m.is_object() ? m["mm_per_1000_steps"].get<double>() : 0.0);
+    }
+    return {"not_at_equilibrium", msg};
+  }
+  return {};
 }
 
 void StageRunner::set_checkpoint(long every, std::function<void()> save) {
@@ -213,6 +328,7 @@ nlohmann::json StageRunner::state() const {
   return {{"stage_index", cursor_.index}, {"stage_started", cursor_.started},
           {"stage_first_step", cursor_.first}, {"stage_t0", cursor_.t0},
           {"stage_changes", cursor_.changes}, {"stage_monitor_u", cursor_.monitor_u},
+          {"stage_held", cursor_.held}, {"stage_rates", cursor_.rates},
           {"alpha", alpha_},
           {"core_present", core_present_}, {"lining_installed", lining_installed_},
           {"report", report_}, {"last_checkpoint", engine_.step_count()}};
@@ -225,6 +341,8 @@ void StageRunner::restore(const nlohmann::json& s) {
   cursor_.t0 = s.at("stage_t0").get<double>();
   cursor_.changes = s.at("stage_changes");
   cursor_.monitor_u = s.at("stage_monitor_u").get<std::vector<double>>();
+  cursor_.held = s.value("stage_held", 0);
+  cursor_.rates = s.value("stage_rates", std::vector<double>{});
   alpha_ = s.at("alpha").get<double>();
   core_present_ = s.at("core_present").get<bool>();
   lining_installed_ = s.at("lining_installed").get<bool>();

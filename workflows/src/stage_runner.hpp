@@ -27,6 +27,16 @@
 
 namespace rockfdem::workflows {
 
+/// Where a run stands once its stages end (summary.json "status"):
+/// completed (the last stage that stepped met its equilibrium criteria),
+/// not_at_equilibrium (it stopped at its cap or time first), unstable (a
+/// key point moved beyond the stage's fraction of the span, or accelerated:
+/// the opening is closing, an engineering answer rather than a failure).
+struct RunVerdict {
+  std::string status = "completed";
+  std::string message;  ///< what a not-completed status rests on; empty when completed
+};
+
 /// Engine materials the support stages assign to crack elements.
 struct SupportMaterials {
   int grout = -1;             ///< re-joins broken cracks (grout stage)
@@ -48,6 +58,8 @@ class StageRunner {
   /// One entry per stage run: kind, steps, simulated time, dt, final ratio, converged.
   const nlohmann::json& report() const { return report_; }
   bool core_present() const { return core_present_; }
+  /// The run's status from the stages run so far.
+  RunVerdict verdict() const;
   nlohmann::json state() const;
   void restore(const nlohmann::json& state);
 
@@ -59,7 +71,12 @@ class StageRunner {
     double t0 = 0;          ///< the simulated time at its start
     nlohmann::json changes = nlohmann::json::object();
     std::vector<double> monitor_u;  ///< monitors' (ux, uy) at the last output [m]
+    int held = 0;                   ///< consecutive outputs meeting ratio and settle
+    std::vector<double> rates;      ///< largest monitor move per 1000 steps, per output [m]
   };
+  /// Stops the run as unstable when a key point passed the stage's fraction
+  /// of the span or has been accelerating; true when it did.
+  bool unstable(const StageSpec& stage);
   void run(const StageSpec& stage, PhaseTimer& timer);
   nlohmann::json apply(const StageSpec& stage);
   /// grout: steps until `trigger` crack elements are broken (within the
@@ -73,8 +90,11 @@ class StageRunner {
   /// largest monitor displacement change per 1000 steps over the largest
   /// monitor displacement (0 when nothing moved); updates cursor_.monitor_u.
   double settle_measure(long steps);
-  /// Steps `n` times unless a signal arrives; false when one did.
-  bool advance(long n);
+  /// Steps `n` times unless a signal arrives (false) or, with a
+  /// `broken_target` > 0, that many crack elements are broken (checked
+  /// after every step, so the trigger does not depend on the output
+  /// interval or the mesh; *reached set).
+  bool advance(long n, long broken_target, bool* reached);
   void set_zone(int zone, bool active, fdem::ActivationReference ref);
   /// Re-joins the crack elements between the lining and the rock with the
   /// interface's bond, intact where they are; returns how many.
@@ -97,6 +117,10 @@ class StageRunner {
   Cursor cursor_;
   long checkpoint_every_ = 0;
   double last_settle_ = -1;   ///< settle_measure() of the stage's last interval; -1: none
+  double last_rate_ = 0;      ///< the largest monitor move per 1000 steps then [m]
+  std::string moving_most_;   ///< the monitor that moved most then
+  RunVerdict unstable_;       ///< set when a stage found the opening unstable
+  bool stopped_ = false;      ///< an unstable opening ended the stages
   double stage_dt_ = 0;       ///< the dt of the stage's steps (one limit per stage)
   long last_checkpoint_ = 0;  ///< step of the last checkpoint (or of the start)
   std::function<void()> save_checkpoint_;

@@ -37,6 +37,9 @@ struct InsituSettings {
   bool lining_active = false;
   std::string solver = "auto";
   double tolerance = 1e-10;
+  /// Outer boundary in the explicit stages: rollers (normal displacement
+  /// held at the hand-off's) or the in-situ tractions alone.
+  bool rollers = true;
 };
 
 struct EngineSettings {
@@ -44,7 +47,9 @@ struct EngineSettings {
   double dt = 0;            ///< s; 0: automatic
   double dt_safety = 0.8;
   double damping_ratio = 0.1;
-  double local_damping = 0;
+  /// Cundall local damping; -1: the kind's default (kTunnelLocalDamping in
+  /// tunnel stages, none in specimen runs). Shown in the run summary.
+  double local_damping = -1;
   double mass_damping = 0;  ///< 1/s
   double gravity = 0;       ///< m/s^2, acting in -y
   bool mass_scaling = false;     ///< quasi-static mass scaling (engine.mass_scaling resolved)
@@ -70,7 +75,15 @@ struct StageSpec {
   /// at most this fraction of the largest monitor displacement; 0: the
   /// ratio alone.
   double settle = 1e-3;
+  /// Consecutive outputs at which ratio and settle must both hold.
+  int hold = 2;
+  /// A monitor displaced by more than this fraction of the opening's span
+  /// makes the run unstable (the opening is closing, not stabilising).
+  double unstable_fraction = 0.05;
 };
+
+/// Local damping of tunnel stages when engine.local_damping is not given.
+constexpr double kTunnelLocalDamping = 0.8;
 
 /// The steel of one kind of bolt (seed sec. 2.2).
 struct SteelSettings {

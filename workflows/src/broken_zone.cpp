@@ -1,0 +1,111 @@
+#include "broken_zone.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <map>
+#include <utility>
+#include <vector>
+
+#include "rockfdem/workflows/scene.hpp"
+
+namespace rockfdem::workflows {
+namespace {
+
+using Segment = std::array<double, 4>;  // x0, y0, x1, y1
+
+double distance_to_segment(double px, double py, const Segment& s) {
+  const double dx = s[2] - s[0], dy = s[3] - s[1], len2 = dx * dx + dy * dy;
+  const double t =
+      len2 > 0 ? std::clamp(((px - s[0]) * dx + (py - s[1]) * dy) / len2, 0.0, 1.0) : 0.0;
+  return std::hypot(px - s[0] - t * dx, py - s[1] - t * dy);
+}
+
+double nearest(double px, double py, const std::vector<Segment>& segs) {
+  double d = std::numeric_limits<double>::infinity();
+  for (const Segment& s : segs) d = std::min(d, distance_to_segment(px, py, s));
+  return d;
+}
+
+Segment segment(const mesh::Mesh& m, int a, int b) { return {m.x[a], m.y[a], m.x[b], m.y[b]}; }
+
+// Edges between a fracture triangle and a rock triangle without fracture:
+// the fracture zone's outer edge.
+std::vector<Segment> fracture_zone_edge(const mesh::Mesh& m) {
+  std::map<std::pair<int, int>, int> sides;  // edge -> bit 1: fracture side, bit 2: other rock
+  for (std::size_t t = 0; t < m.n_triangles(); ++t) {
+    if (m.zone[t] != mesh::kRock) continue;
+    const auto& v = m.triangles[t];
+    for (int k = 0; k < 3; ++k) {
+      const int a = v[k], b = v[(k + 1) % 3];
+      sides[{std::min(a, b), std::max(a, b)}] |= m.fracture[t] ? 1 : 2;
+    }
+  }
+  std::vector<Segment> out;
+  for (const auto& [edge, bits] : sides)
+    if (bits == 3) out.push_back(segment(m, edge.first, edge.second));
+  return out;
+}
+
+std::vector<Segment> excavation_boundary(const mesh::Mesh& m) {
+  std::vector<Segment> out;
+  for (const mesh::TaggedEdge& e : m.edges)
+    if (e.tag == mesh::kExcavation) out.push_back(segment(m, e.a, e.b));
+  return out;
+}
+
+}  // namespace
+
+Resolution fracture_resolution(const Scene& scene, const mesh::Mesh* m) {
+  Resolution r;
+  const MaterialSpec& rock = scene.materials.at("rock");
+  if (rock.tensile_strength > 0 && rock.fracture_energy_I > 0)
+    r.l_ch = rock.young * rock.fracture_energy_I / (rock.tensile_strength * rock.tensile_strength);
+  double sum = 0;
+  long n = 0;
+  if (m)
+    for (std::size_t t = 0; t < m->n_triangles(); ++t) {
+      if (m->fracture.empty() || !m->fracture[t]) continue;
+      const auto& v = m->triangles[t];
+      for (int k = 0; k < 3; ++k) {
+        const int a = v[k], b = v[(k + 1) % 3];
+        sum += std::hypot(m->x[b] - m->x[a], m->y[b] - m->y[a]);
+        ++n;
+      }
+    }
+  r.h = n > 0 ? sum / double(n) : scene.mesh.size.size_near;
+  r.ratio = r.l_ch > 0 ? r.h / r.l_ch : 0.0;
+  return r;
+}
+
+BrokenZone broken_zone(const fdem::Engine& e, const mesh::Mesh& m, double h) {
+  BrokenZone z;
+  const std::vector<Segment> opening = excavation_boundary(m);
+  const std::vector<Segment> edge = fracture_zone_edge(m);
+  if (opening.empty()) return z;
+  for (const Segment& s : edge)
+    z.zone_depth = std::max(z.zone_depth, nearest(s[0], s[1], opening));
+  const std::vector<int>& vertex = e.node_vertex();
+  double clearance = std::numeric_limits<double>::infinity();
+  for (std::size_t c = 0; c < e.n_cracks(); ++c) {
+    if (e.crack_state(c) != fdem::CrackState::kBroken) continue;
+    const auto t = e.crack_triangles(c);
+    // Rock on both sides, in the fracture zone: bolts carry crack elements
+    // of their own beyond it.
+    const auto in_zone = [&](int tri) { return m.zone[tri] == mesh::kRock && m.fracture[tri]; };
+    if (!in_zone(t[0]) || !in_zone(t[1])) continue;
+    const auto nodes = e.crack_nodes(c);
+    const double px = (m.x[vertex[nodes[0]]] + m.x[vertex[nodes[1]]]) / 2;
+    const double py = (m.y[vertex[nodes[0]]] + m.y[vertex[nodes[1]]]) / 2;
+    ++z.broken;
+    z.depth = std::max(z.depth, nearest(px, py, opening));
+    if (!edge.empty()) clearance = std::min(clearance, nearest(px, py, edge));
+  }
+  if (z.broken > 0 && std::isfinite(clearance)) {
+    z.clearance = clearance;
+    z.at_edge = clearance < kEdgeElements * h;
+  }
+  return z;
+}
+
+}  // namespace rockfdem::workflows

@@ -1,0 +1,52 @@
+// How far the damage reaches, and whether the mesh resolves it.
+//
+// Crack elements exist only in the fracture zone (tunnel.fracture_zone, or
+// a .msh group): damage that reaches the zone's outer edge is capped by
+// construction, and the answer depends on the zone's size. The broken-zone
+// depth is measured from the excavation boundary to the farthest broken
+// rock crack element; a warning goes out when broken elements come within
+// kEdgeElements element sizes of the zone's outer edge.
+//
+// A cohesive crack needs its process zone resolved: its length is a
+// fraction (0.2-1) of Hillerborg's characteristic length l_ch = E GfI / ft^2,
+// and cohesive-zone practice asks for about three elements in it. Coarser
+// elements make strength and fracture pattern depend on the mesh. The run
+// reports h / l_ch and warns above kResolutionLimit.
+#pragma once
+
+#include "rockfdem/fdem/engine.hpp"
+#include "rockfdem/mesh/mesh.hpp"
+
+namespace rockfdem::workflows {
+
+struct Scene;
+
+/// Broken elements closer than this many element sizes to the fracture
+/// zone's outer edge mean the zone caps the damage.
+constexpr double kEdgeElements = 2;
+
+/// h / l_ch above which the run warns that fracture is not resolved.
+constexpr double kResolutionLimit = 1.0;
+
+struct Resolution {
+  double h = 0;      ///< mean edge length of the fracture zone's triangles [m]
+  double l_ch = 0;   ///< E GfI / ft^2 of the rock [m]
+  double ratio = 0;  ///< h / l_ch
+};
+
+/// The fracture zone's element size against the rock's l_ch; h from `m`
+/// when given, else from mesh.size_near (what `check` knows before meshing).
+Resolution fracture_resolution(const Scene& scene, const mesh::Mesh* m);
+
+struct BrokenZone {
+  long broken = 0;           ///< broken crack elements between two rock triangles
+  double depth = 0;          ///< farthest of them from the excavation boundary [m]
+  double zone_depth = 0;     ///< the fracture zone's outer edge from the boundary, at most [m]
+  double clearance = -1;     ///< nearest of them to the zone's outer edge [m]; -1: none broken
+  bool at_edge = false;      ///< clearance below kEdgeElements h
+};
+
+/// The broken zone of the engine's state on mesh `m` (fracture zone element size h).
+BrokenZone broken_zone(const fdem::Engine& e, const mesh::Mesh& m, double h);
+
+}  // namespace rockfdem::workflows
