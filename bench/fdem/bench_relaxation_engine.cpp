@@ -70,14 +70,7 @@ ModelInput plate(const Options& o, Model model, const Damping& damping) {
     rock.heterogeneity_seed = 1;
   }
   ModelInput in = structured_rectangle(spec, rock);
-  BoundaryCondition bottom, left, top;
-  bottom.tag = kTagBottom;
-  bottom.y = Constraint::kFixed;
-  left.tag = kTagLeft;
-  left.x = Constraint::kFixed;
-  top.tag = kTagTop;
-  top.ty = model == Model::kCracking ? 2e6 : -1e6;
-  in.boundary_conditions = {bottom, left, top};
+  in.boundary_conditions = rollers_with_top_traction(model == Model::kCracking ? 2e6 : -1e6);
   in.damping.local = damping.local;
   in.damping.kinetic = damping.kinetic;
   in.mass_scaling.enabled = true;

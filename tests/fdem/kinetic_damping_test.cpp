@@ -27,14 +27,7 @@ ModelInput plate(int n, double local, int threads) {
   spec.nx = spec.ny = n;
   spec.fracture = false;
   ModelInput in = structured_rectangle(spec, test::rock());
-  BoundaryCondition bottom, left, top;
-  bottom.tag = kTagBottom;
-  bottom.y = Constraint::kFixed;
-  left.tag = kTagLeft;
-  left.x = Constraint::kFixed;
-  top.tag = kTagTop;
-  top.ty = -kPressure;
-  in.boundary_conditions = {bottom, left, top};
+  in.boundary_conditions = rollers_with_top_traction(-kPressure);
   in.damping.kinetic = true;
   in.damping.local = local;
   in.mass_scaling.enabled = true;
