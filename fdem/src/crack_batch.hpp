@@ -23,7 +23,8 @@ constexpr int kCrackBatch = 32;
 static_assert(kCrackBatch % 8 == 0, "whole 8-lane registers");
 
 /// Inputs: the four nodes' positions, the per-point offsets (o, s) (zero
-/// when the model has none) and damage histories. Outputs: the eight slot
+/// when the model has none), damage histories and, in a heterogeneous
+/// model, the strength factors (scaled_strength_terms). Outputs: the eight slot
 /// values (node 0 x, y, node 1, node 2, node 3) and 1 where some point's
 /// damage would grow (the lane's outputs are then meaningless and the
 /// scalar path redoes it).
@@ -31,11 +32,14 @@ struct CrackBatch {
   double x[4][kCrackBatch], y[4][kCrackBatch];
   double off_o[3][kCrackBatch], off_s[3][kCrackBatch];
   double damage[3][kCrackBatch];
+  double strength[kCrackBatch];  ///< read only when `scaled`
   double out[8][kCrackBatch];
   double grows[kCrackBatch];
 };
 
-/// Lanes 0 .. n - 1 of `b`, all of rock law `k`, none broken.
-void run_crack_batch(CrackBatch& b, int n, const CrackConstants& k, SimdIsa isa = SimdIsa::kBest);
+/// Lanes 0 .. n - 1 of `b`, all of rock law `k`, none broken; `scaled`:
+/// each lane's strengths are its factor times k's.
+void run_crack_batch(CrackBatch& b, int n, const CrackConstants& k, bool scaled,
+                     SimdIsa isa = SimdIsa::kBest);
 
 }  // namespace rockfdem::fdem::detail

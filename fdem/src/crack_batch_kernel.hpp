@@ -4,7 +4,9 @@
 // with rock_point() (crack_law.hpp) at its points' damage histories, every
 // branch a select; `grows` marks lanes where accumulate_damage would raise
 // a history (a or b > 0 and sqrt(a^2 + b^2) above it). The softening z(D)
-// is the scalar table look-up, lane by lane.
+// is the scalar table look-up, lane by lane. kScaled: each lane's strength
+// terms are its factor's (scaled_strength_terms, as the scalar loop's
+// scale_crack_strength); otherwise k's own, broadcast once.
 //
 // Expects: CrackBatch, CrackConstants (crack_batch.hpp), the vector types
 // V2, V4, V8 (isa_regions.hpp).
@@ -20,18 +22,18 @@ LANE_INLINE V pre_peak_of(V x) {
 /// rock_point at the history `damage` where it does not grow: sigma, tau,
 /// and whether it would grow.
 template <class V>
-LANE_INLINE void rock_point_lanes(const CrackConstants& k, V o, V s, V h, V inv_h, V damage,
-                                  V& sigma, V& tau, Mask<V>& grows) {
+LANE_INLINE void rock_point_lanes(const CrackConstants& k, const StrengthTerms<V>& st, V o, V s,
+                                  V h, V inv_h, V damage, V& sigma, V& tau, Mask<V>& grows) {
   const V zero{};
   const Mask<V> closed = o < zero;
   const V sigma_c = closed ? k.pn * o * inv_h : zero;
-  const V fs = k.c - sigma_c * k.tan_phi;
+  const V fs = st.c - sigma_c * k.tan_phi;
   V inv_fs = 1.0 / fs;
-  inv_fs = closed ? inv_fs : all<V>(k.inv_c);
-  const V op = h * k.op_per_h;
+  inv_fs = closed ? inv_fs : st.inv_c;
+  const V op = h * st.op_per_h;
   const V sp = h * fs * k.two_over_pt;
   const V abs_s = abs_of(s);
-  const V a = (o > op) ? (o - op) * k.inv_open_range : zero;
+  const V a = (o > op) ? (o - op) * st.inv_open_range : zero;
   const V b = (abs_s > sp) ? (abs_s - sp) * fs * k.inv_slip_energy : zero;
   // Only registers with an excursion need its size, only softened ones z.
   const Mask<V> excursion = (a > zero) | (b > zero);
@@ -51,13 +53,24 @@ LANE_INLINE void rock_point_lanes(const CrackConstants& k, V o, V s, V h, V inv_
       table_z[i] = softening_z(table, damage[i] > 0.0 ? damage[i] : 0.0);
     z = softened ? table_z : z;
   }
-  sigma = closed ? sigma_c : pre_peak_of(o * inv_h * k.h_per_op) * z * k.ft;
+  sigma = closed ? sigma_c : pre_peak_of(o * inv_h * st.h_per_op) * z * st.ft;
   tau = copysign_of(pre_peak_of(abs_s * inv_h * k.half_pt * inv_fs) * z * fs, s);
 }
 
+/// scaled_strength_terms (crack_law.hpp) for a register of factors f: the
+/// same operations, compiled here inside the instruction set's region.
 template <class V>
+LANE_INLINE StrengthTerms<V> scaled_strength_lanes(const CrackConstants& k, V f) {
+  return {k.ft * f, k.c * f, k.inv_c / f, k.op_per_h * f, k.h_per_op / f, k.inv_open_range * f};
+}
+
+template <class V, bool kScaled>
 LANE_INLINE void crack_loop(CrackBatch& b, int n, const CrackConstants& k) {
+  const StrengthTerms<V> material{all<V>(k.ft),       all<V>(k.c),        all<V>(k.inv_c),
+                                  all<V>(k.op_per_h), all<V>(k.h_per_op), all<V>(k.inv_open_range)};
   for (int r = 0; r < n; r += kWidth<V>) {
+    const StrengthTerms<V> st =
+        kScaled ? scaled_strength_lanes(k, load<V>(&b.strength[r])) : material;
     const V x0 = load<V>(&b.x[0][r]), y0 = load<V>(&b.y[0][r]);
     const V x1 = load<V>(&b.x[1][r]), y1 = load<V>(&b.y[1][r]);
     const V x2 = load<V>(&b.x[2][r]), y2 = load<V>(&b.y[2][r]);
@@ -79,7 +92,8 @@ LANE_INLINE void crack_loop(CrackBatch& b, int n, const CrackConstants& k) {
     V sigma[3], tau[3];
     Mask<V> grows{};
     for (int i = 0; i < 3; ++i)
-      rock_point_lanes(k, o[i], s[i], h, inv_h, load<V>(&b.damage[i][r]), sigma[i], tau[i], grows);
+      rock_point_lanes(k, st, o[i], s[i], h, inv_h, load<V>(&b.damage[i][r]), sigma[i], tau[i],
+                       grows);
     const V w_end = h / 6.0, w_mid = h / 3.0;
     const V sn0 = w_end * sigma[0] + w_mid * sigma[1], st0 = w_end * tau[0] + w_mid * tau[1];
     const V sn1 = w_end * sigma[2] + w_mid * sigma[1], st1 = w_end * tau[2] + w_mid * tau[1];

@@ -12,6 +12,7 @@
 #include "crack_batch.hpp"
 #include "parallel.hpp"
 #include "rockfdem/fdem/engine.hpp"
+#include "strength_heterogeneity.hpp"
 
 namespace rockfdem::fdem::detail {
 namespace {
@@ -60,7 +61,7 @@ inline double element_potential(const CrackConstants& k, const double o[3], cons
   const double h = crack_point_openings(d, c, at, os);
   if (!d.cracks.offset.empty())
     for (int i = 0; i < 6; ++i) os[i] -= d.cracks.offset[6 * c + i];
-  const CrackConstants& k = d.crack_laws[d.cracks.material[c]];
+  const CrackConstants k = crack_constants(d, c);
   const double weight[3] = {h / 6.0, 2.0 * h / 3.0, h / 6.0};
   double released = 0.0;
   for (int i = 0; i < 3; ++i) {
@@ -90,7 +91,15 @@ inline double element_potential(const CrackConstants& k, const double o[3], cons
   const double d0x = x0 - x3, d0y = y0 - y3, d1x = x1 - x2, d1y = y1 - y2;
   double o0 = d0x * nx + d0y * ny, s0 = d0x * ex + d0y * ey;
   double o1 = d1x * nx + d1y * ny, s1 = d1x * ex + d1y * ey;
-  const CrackConstants& k = d.crack_laws[d.cracks.material[c]];
+  // The material's constants, or this element's with scaled strengths
+  // (a copy only in heterogeneous models).
+  const CrackConstants* law = &d.crack_laws[d.cracks.material[c]];
+  CrackConstants own;
+  if (!d.cracks.strength.empty()) {
+    own = scale_crack_strength(*law, d.cracks.strength[c]);
+    law = &own;
+  }
+  const CrackConstants& k = *law;
   double o[3] = {o0, 0.5 * (o0 + o1), o1}, s[3] = {s0, 0.5 * (s0 + s1), s1};
   if (!d.cracks.offset.empty()) {  // re-joined or pre-stressed elements (per point)
     const double* off = &d.cracks.offset[6 * c];
@@ -194,7 +203,7 @@ double crack_element_energy(const EngineData& d, std::size_t c, const Placement&
   if (!d.cracks.offset.empty())
     for (int i = 0; i < 6; ++i) os[i] -= d.cracks.offset[6 * c + i];
   const double o[3] = {os[0], os[2], os[4]}, s[3] = {os[1], os[3], os[5]};
-  return element_potential(d.crack_laws[d.cracks.material[c]], o, s, h, &d.cracks.damage[3 * c]);
+  return element_potential(crack_constants(d, c), o, s, h, &d.cracks.damage[3 * c]);
 }
 
 double crack_element_energy(const EngineData& d, std::size_t c) {
@@ -228,9 +237,9 @@ inline bool batchable(const EngineData& d, long c, int material) {
 
 /// Runs the batch; its lanes whose damage does not grow get their slots,
 /// the others are left to the scalar path.
-void flush_cracks(CrackBatch& b, int n, const int* element, const CrackConstants& k,
+void flush_cracks(CrackBatch& b, int n, const int* element, const CrackConstants& k, bool scaled,
                   double* slots, std::uint8_t* scalar, long begin) {
-  run_crack_batch(b, n, k);
+  run_crack_batch(b, n, k, scaled);
   for (int r = 0; r < n; ++r) {
     const long c = element[r];
     if (b.grows[r] != 0.0) {
@@ -256,6 +265,7 @@ void batch_pass(const EngineData& d, long begin, long end, CrackBatch& b, int* e
   const CrackConstants& k = d.crack_laws[material];
   const double* p = d.nodes.pos.data();
   const bool offsets = !d.cracks.offset.empty();
+  const bool scaled = !d.cracks.strength.empty();
   int n = 0;
   for (long c = begin; c < end; ++c) {
     if (!batchable(d, c, material)) continue;
@@ -270,13 +280,14 @@ void batch_pass(const EngineData& d, long begin, long end, CrackBatch& b, int* e
       b.off_s[i][n] = offsets ? d.cracks.offset[6 * c + 2 * i + 1] : 0.0;
       b.damage[i][n] = d.cracks.damage[3 * c + i];
     }
+    if (scaled) b.strength[n] = d.cracks.strength[c];
     element[n++] = static_cast<int>(c);
     if (n == kCrackBatch) {
-      flush_cracks(b, n, element, k, slots, scalar, begin);
+      flush_cracks(b, n, element, k, scaled, slots, scalar, begin);
       n = 0;
     }
   }
-  if (n > 0) flush_cracks(b, n, element, k, slots, scalar, begin);
+  if (n > 0) flush_cracks(b, n, element, k, scaled, slots, scalar, begin);
 }
 
 }  // namespace

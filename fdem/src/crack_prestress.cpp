@@ -26,6 +26,7 @@
 #include "crack_elements.hpp"
 #include "node_update.hpp"
 #include "rockfdem/fdem/crack_law.hpp"
+#include "strength_heterogeneity.hpp"
 #include "triangle_force.hpp"
 
 namespace rockfdem::fdem::detail {
@@ -104,7 +105,7 @@ void balance_vertex(const EngineData& d, int v, const int* ends, int n_ends,
 long set_point_offsets(EngineData& d, std::size_t c, const double tp[6], const double cur[6]) {
   double e[2], n[2];
   const double h = crack_frame(d, c, e, n);
-  const CrackConstants& k = d.crack_laws[d.cracks.material[c]];
+  const CrackConstants k = crack_constants(d, c);
   long clipped = 0;
   for (int i = 0; i < 3; ++i) {
     const double sigma = tp[2 * i] * n[0] + tp[2 * i + 1] * n[1];

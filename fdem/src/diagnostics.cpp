@@ -7,21 +7,18 @@
 #include <cstring>
 
 #include "crack_elements.hpp"
-#include "rockfdem/fdem/bits_hash.hpp"
+#include "energy.hpp"
 #include "engine_impl.hpp"
 #include "node_update.hpp"
 #include "parallel.hpp"
+#include "rockfdem/fdem/bits_hash.hpp"
 #include "triangle_force.hpp"
 
 namespace rockfdem::fdem {
 
-double Engine::kinetic_energy() const {
-  const auto& n = impl_->d.nodes;
-  return detail::block_sum(static_cast<long>(n.size()), impl_->d.threads, [&](long i) {
-    const double vx = n.vel[2 * i], vy = n.vel[2 * i + 1];
-    return 0.5 * n.mass[i] * (vx * vx + vy * vy);
-  });
-}
+double Engine::kinetic_energy() const { return detail::kinetic_energy(impl_->d); }
+
+long Engine::kinetic_damping_resets() const { return impl_->d.kinetic_damping.resets; }
 
 double Engine::strain_energy() const {
   const auto& d = impl_->d;

@@ -14,15 +14,16 @@
 
 namespace rockfdem::fdem {
 namespace detail {
-namespace {
 
-double kinetic(const EngineData& d) {
+double kinetic_energy(const EngineData& d) {
   const auto& n = d.nodes;
   return block_sum(static_cast<long>(n.size()), d.threads, [&](long i) {
     const double vx = n.vel[2 * i], vy = n.vel[2 * i + 1];
     return 0.5 * n.mass[i] * (vx * vx + vy * vy);
   });
 }
+
+namespace {
 
 double strain(const EngineData& d, const Placement& at) {
   return block_sum(static_cast<long>(d.tris.size()), d.threads,
@@ -42,11 +43,11 @@ Placement half_step_placement(const EngineData& d) {
 
 double stored_energy(const EngineData& d) {
   const Placement at = half_step_placement(d);
-  return kinetic(d) + strain(d, at) + crack(d, at) + contact_energy(d, at);
+  return kinetic_energy(d) + strain(d, at) + crack(d, at) + contact_energy(d, at);
 }
 
 double kinetic_and_crack_energy(const EngineData& d) {
-  return kinetic(d) + crack(d, half_step_placement(d));
+  return kinetic_energy(d) + crack(d, half_step_placement(d));
 }
 
 void start_ledger(EngineData& d) {
@@ -110,7 +111,7 @@ EnergyBalance Engine::energy_balance() const {
   const auto& e = d.energy;
   const detail::Placement at = detail::half_step_placement(d);
   EnergyBalance b;
-  b.kinetic = detail::kinetic(d);
+  b.kinetic = detail::kinetic_energy(d);
   b.strain = detail::strain(d, at);
   b.crack_elastic = detail::crack(d, at);
   b.contact_elastic = detail::contact_energy(d, at);
@@ -127,7 +128,7 @@ EnergyBalance Engine::energy_balance() const {
           ? 0.0
           : detail::block_sum(static_cast<long>(d.tris.size()), d.threads,
                               [&](long t) { return detail::triangle_viscous_pending(d, t); });
-  b.damping = e.viscous + pending + e.nodal_damping + e.contact_damping;
+  b.damping = e.viscous + pending + e.nodal_damping + e.contact_damping + e.kinetic_damping;
   b.fracture = e.fracture;
   b.friction = e.friction;
   b.absorbing = e.absorbing;

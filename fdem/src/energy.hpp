@@ -13,6 +13,8 @@
 //             kept per triangle (Triangles::viscous_stress)
 //   nodal     local and mass-proportional damping f . v(n) dt (node loop)
 //   absorbing dashpots f . v(n) dt (node loop)
+//   kinetic_damping  what zeroing the velocities at a kinetic-energy peak
+//             takes out of the stored energy (kinetic_damping.hpp)
 //   fracture  the crack law's potential released when damage grows
 //             (phi(D_old) - phi(D_new) at the opening and slip of x(n-1/2)),
 //             an element's whole potential when it breaks, less the contact
@@ -46,6 +48,7 @@ struct EnergyLedger {
   double initial = 0;    ///< kinetic + stored energy when the first step began
   double external = 0;
   double viscous = 0, nodal_damping = 0, contact_damping = 0;
+  double kinetic_damping = 0;  ///< stored energy taken out at kinetic-energy peaks
   double absorbing = 0;
   double fracture = 0;  ///< released crack potential, net of the contact handover
   double friction = 0;
@@ -69,6 +72,10 @@ constexpr long kEnergyBlock = 128;
 
 /// Current positions, moved back to the half step of the last velocities.
 Placement half_step_placement(const EngineData& d);
+
+/// Kinetic energy of the nodes' (half-step) velocities, sum m v^2 / 2 as a
+/// fixed-block sum.
+double kinetic_energy(const EngineData& d);
 
 /// Kinetic + strain + crack + contact energy at the half step.
 double stored_energy(const EngineData& d);

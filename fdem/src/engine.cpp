@@ -18,14 +18,16 @@
 
 #include "boundary.hpp"
 #include "contact.hpp"
-#include "simd_isa.hpp"
 #include "crack_elements.hpp"
 #include "crack_prestress.hpp"
 #include "energy.hpp"
 #include "engine_impl.hpp"
+#include "kinetic_damping.hpp"
 #include "node_update.hpp"
 #include "parallel.hpp"
+#include "simd_isa.hpp"
 #include "stable_dt.hpp"
+#include "strength_heterogeneity.hpp"
 #include "topology.hpp"
 #include "triangle_force.hpp"
 
@@ -128,6 +130,7 @@ Engine::Engine(const ModelInput& in) : impl_(std::make_unique<Impl>()) {
   d.gravity[0] = in.gravity_x;
   d.gravity[1] = in.gravity_y;
   detail::build_topology(in, d);
+  detail::assign_strength_factors(d);
   set_viscous_damping(d);
   detail::resolve_edges(in, d);
   detail::apply_boundary_conditions(in.boundary_conditions, d);
@@ -245,11 +248,12 @@ void Engine::step() {
     t2 = t3;
   }
   const long bad_node = detail::node_update(d);
-  impl_->times.nodes += omp_get_wtime() - t2;
   d.energy.last_dt = d.dt;
   ++d.step;
   d.time += d.dt;
   if (bad_node >= 0) raise_bad_node(d, bad_node);
+  if (d.damping.kinetic) detail::kinetic_damping(d);  // after the step, at its velocities
+  impl_->times.nodes += omp_get_wtime() - t2;
   check_reversal();
 }
 
@@ -370,6 +374,11 @@ void Engine::set_gravity(double gx, double gy) {
 void Engine::set_damping(const DampingSettings& damping) {
   if (!(damping.local >= 0 && damping.local < 1) || !(damping.mass_proportional >= 0))
     throw InputError("fdem: local damping must lie in [0, 1) and mass-proportional be >= 0");
+  // Switched on: the peak test starts afresh (its memory may be stale).
+  if (damping.kinetic && !impl_->d.damping.kinetic) {
+    impl_->d.kinetic_damping.previous = 0;
+    impl_->d.kinetic_damping.rising = false;
+  }
   impl_->d.damping = damping;
   impl_->stiffness_changed();  // local and mass damping lower the limit
 }
@@ -412,6 +421,7 @@ void Engine::set_crack_material(std::size_t c, int material) {
   const detail::Placement at = detail::half_step_placement(d);
   const double before = detail::crack_element_energy(d, c, at);
   d.cracks.material[c] = static_cast<std::uint16_t>(material);
+  detail::assign_strength_factor(d, c);  // the new material's strengths (and its factor)
   detail::book(d, &detail::EnergyLedger::removed, before, detail::crack_element_energy(d, c, at));
   impl_->stiffness_changed();
 }
@@ -534,6 +544,12 @@ double Engine::crack_damage(std::size_t c) const {
   check_index(c, n_cracks(), "crack element");
   const double* d = &impl_->d.cracks.damage[3 * c];
   return std::max({d[0], d[1], d[2]});
+}
+
+double Engine::crack_strength_factor(std::size_t c) const {
+  check_index(c, n_cracks(), "crack element");
+  const auto& k = impl_->d.cracks.strength;
+  return k.empty() ? 1.0 : k[c];
 }
 
 CrackState Engine::crack_state(std::size_t c) const {

@@ -32,7 +32,7 @@ void fields(Ar& ar, Material& m) {
   each_member(ar, m, m.density, m.young, m.poisson, m.tensile_strength, m.cohesion, m.friction_deg,
               m.residual_friction_deg, m.gf_I, m.gf_II, m.normal_penalty, m.tangential_penalty,
               m.damping_ratio, m.crack_law, m.yield_strength, m.ultimate_strength,
-              m.shear_yield_strength);
+              m.shear_yield_strength, m.weibull_modulus, m.heterogeneity_seed);
 }
 
 template <class Ar>
@@ -57,7 +57,12 @@ void fields(Ar& ar, TagNodes& t) {
 
 template <class Ar>
 void fields(Ar& ar, DampingSettings& s) {
-  each_member(ar, s, s.local, s.mass_proportional);
+  each_member(ar, s, s.local, s.mass_proportional, s.kinetic);
+}
+
+template <class Ar>
+void fields(Ar& ar, KineticDampingState& s) {
+  each_member(ar, s, s.previous, s.rising, s.resets);
 }
 
 template <class Ar>
@@ -68,7 +73,8 @@ void fields(Ar& ar, MassScaling& s) {
 template <class Ar>
 void fields(Ar& ar, EnergyLedger& e) {
   each_member(ar, e, e.started, e.last_dt, e.initial, e.external, e.viscous, e.nodal_damping,
-              e.contact_damping, e.absorbing, e.fracture, e.friction, e.softening, e.removed);
+              e.contact_damping, e.kinetic_damping, e.absorbing, e.fracture, e.friction,
+              e.softening, e.removed);
 }
 
 template <class Ar>
@@ -112,7 +118,7 @@ void fields(Ar& ar, Triangles& t) {
 
 template <class Ar>
 void fields(Ar& ar, Cracks& c) {
-  ROCKFDEM_CHECKPOINT_MEMBERS(Cracks, 9);
+  ROCKFDEM_CHECKPOINT_MEMBERS(Cracks, 10);
   ar.tag("CRAK");
   ar.model(c.nodes);
   ar.model(c.tri);
@@ -123,6 +129,7 @@ void fields(Ar& ar, Cracks& c) {
   ar.state(c.active);
   ar.state(c.broken_step);
   ar.state(c.offset);
+  ar.state(c.strength);  // set_crack_material draws again with the new material
 }
 
 template <class Ar>
@@ -167,7 +174,7 @@ void fields(Ar& ar, ContactData& c) {
 
 template <class Ar>
 void fields(Ar& ar, EngineData& d) {
-  ROCKFDEM_CHECKPOINT_MEMBERS(EngineData, 32);  // reversal and gravity count twice
+  ROCKFDEM_CHECKPOINT_MEMBERS(EngineData, 33);  // reversal and gravity count twice
   fields(ar, d.nodes);
   fields(ar, d.tris);
   fields(ar, d.cracks);
@@ -188,6 +195,7 @@ void fields(Ar& ar, EngineData& d) {
   ar.state(d.block_partial);
   ar.state(d.reversal);
   ar.state(d.damping);
+  ar.state(d.kinetic_damping);  // the peak test continues across a restart
   ar.state(d.mass_scaling);  // set_mass_scaling may come after construction
   ar.state(d.scaled_dt);     // resolved once, kept through stage changes
   ar.state(d.gravity);

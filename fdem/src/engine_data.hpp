@@ -68,6 +68,9 @@ struct Cracks {
   std::vector<double> offset;  ///< (o, s) taken as zero at end 0, midpoint, end 1
                                ///< (6 per element); empty until an element is
                                ///< re-joined or pre-stressed (crack_prestress.cpp)
+  std::vector<double> strength;  ///< strength factor k (ft and c times k) per element;
+                                 ///< empty while every factor is 1
+                                 ///< (strength_heterogeneity.hpp)
   std::size_t size() const { return material.size(); }
 };
 
@@ -96,6 +99,13 @@ struct TagNodes {
   std::vector<int> nodes;
 };
 
+/// Kinetic damping's memory between steps (kinetic_damping.hpp).
+struct KineticDampingState {
+  double previous = 0;  ///< total kinetic energy after the last step
+  bool rising = false;  ///< it rose in the last step
+  long resets = 0;      ///< peaks at which the velocities were zeroed
+};
+
 struct EngineData {
   Nodes nodes;
   Triangles tris;
@@ -115,6 +125,7 @@ struct EngineData {
   std::vector<double> energy_partial;  ///< triangle and crack loops: one per kEnergyBlock
   double reversal[2] = {0, 0};        ///< sum m v_old.v_new, sum m v_old^2 (free nodes)
   DampingSettings damping;
+  KineticDampingState kinetic_damping;
   MassScaling mass_scaling;
   double scaled_dt = 0;  ///< mass scaling's resolved target step without local damping;
                          ///< 0 until resolved

@@ -29,6 +29,13 @@ void check_material(const Material& m, std::size_t i) {
   if (m.normal_penalty < 0 || m.tangential_penalty < 0)
     fail(name + "penalties must be >= 0 (0 selects 10 E)");
   if (!(m.gf_I > 0 && m.gf_II > 0)) fail(name + "fracture energies GfI, GfII must be > 0");
+  if (!(m.weibull_modulus >= 0) || !std::isfinite(m.weibull_modulus))
+    fail(name + "Weibull modulus " + str(m.weibull_modulus) +
+         " must be >= 0 (0 = homogeneous strengths)");
+  if (m.weibull_modulus > 0 && m.crack_law != CrackLaw::kRock)
+    fail(name +
+         "a Weibull modulus (strength heterogeneity) applies to the rock crack law "
+         "only; set it to 0 for bolt steel");
   if (m.crack_law == CrackLaw::kRock) {
     if (!(m.tensile_strength > 0 && m.cohesion > 0))
       fail(name + "tensile strength and cohesion must be > 0 for the rock crack law");

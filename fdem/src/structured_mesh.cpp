@@ -81,4 +81,15 @@ RectangleSpec ucs_grid(double width, double height, long n_triangles) {
   return s;
 }
 
+std::vector<BoundaryCondition> rollers_with_top_traction(double ty) {
+  BoundaryCondition bottom, left, top;
+  bottom.tag = kTagBottom;
+  bottom.y = Constraint::kFixed;
+  left.tag = kTagLeft;
+  left.x = Constraint::kFixed;
+  top.tag = kTagTop;
+  top.ty = ty;
+  return {bottom, left, top};
+}
+
 }  // namespace rockfdem::fdem

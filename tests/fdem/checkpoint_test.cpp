@@ -3,10 +3,10 @@
 // foreign-model states without touching the engine, and round-trip exactly.
 //
 // The scenario exercises every kind of state: a fracturing UCS specimen
-// with an initial stress (crack pre-stress), contact and friction (enabled
-// mid-run with its own settings), bolt-steel crack elements, triangles excavated and re-activated
-// in their deformed shape (kCurrent), grout re-joining broken cracks, an explicit dt, and damping,
-// stiffness, gravity and boundary conditions changed before and after the restarts.
+// with heterogeneous strengths and an initial stress (crack pre-stress), contact and friction
+// (enabled mid-run with its own settings), bolt-steel crack elements, triangles excavated and
+// re-activated in their deformed shape (kCurrent), grout re-joining broken cracks, an explicit dt,
+// and damping, stiffness, gravity and boundary conditions changed before and after the restarts.
 #include <gtest/gtest.h>
 
 #include <array>
@@ -30,14 +30,18 @@ constexpr long kSave = 600, kEnd = 1200;  // first cracks break near step 500
 ModelInput scenario(int threads) {
   Material rock = test::rock();
   rock.damping_ratio = 0.1;
+  rock.weibull_modulus = 3;  // heterogeneous strengths
+  rock.heterogeneity_seed = 11;
   Material bolt = rock;  // a weak steel, so that it yields in so few steps
   bolt.crack_law = CrackLaw::kBoltSteel;
   bolt.yield_strength = 6e6;
   bolt.ultimate_strength = 8e6;
   bolt.shear_yield_strength = 8e6;
-  Material grout = rock;
+  bolt.weibull_modulus = 0;
+  Material grout = rock;  // its own factors: a rejoined element draws again
   grout.tensile_strength = 1e6;
   grout.cohesion = 3e6;
+  grout.heterogeneity_seed = 12;
   ModelInput in = ucs_specimen(ucs_grid(0.02, 0.04, 400), rock, 2.0);
   in.materials = {rock, bolt, grout};
   in.initial_stress.assign(in.triangles.size(), {-2e6, -2e6, 0.0});
@@ -99,7 +103,7 @@ void stage(Engine& e, long s) {
     e.set_active(core_b, true, ActivationReference::kCurrent);
   } else if (s == 800) {
     e.set_boundary_conditions(sides(1.0, false, 0.0));
-    e.set_damping({0.0, 10.0});
+    e.set_damping({0.0, 10.0, true});  // with kinetic damping from here on
   } else if (s == 900) {
     e.rejoin_crack(first_broken(e), kGrout);
     e.set_gravity(0.0, -19.62);
@@ -145,10 +149,11 @@ struct Figures {
   long mode_I, mode_II, mixed, clipped;
   double damage, broken_steps;
   long pairs, touching, detections, with_pairs, skipped;
+  long kinetic_resets;
   auto tie() const {
     return std::tie(hash, step, time, dt, kinetic, unbalanced, strain, crack, top, left, mode_I,
                     mode_II, mixed, clipped, damage, broken_steps, pairs, touching, detections,
-                    with_pairs, skipped);
+                    with_pairs, skipped, kinetic_resets);
   }
   bool operator==(const Figures& o) const { return tie() == o.tie(); }
   long broken() const { return mode_I + mode_II + mixed; }
@@ -188,6 +193,7 @@ Figures figures(const Engine& e) {
   f.detections = c.detections;
   f.with_pairs = c.steps_with_pairs;
   f.skipped = c.steps_skipped;
+  f.kinetic_resets = e.kinetic_damping_resets();
   return f;
 }
 
@@ -245,12 +251,15 @@ TEST(Checkpoint, restart_continues_bit_for_bit_with_another_thread_count) {
   const Figures& f = at.at(kSave);
   std::printf(
       "at step %ld: %ld broken, %ld pairs, %ld touching, %ld pre-stress points "
-      "clipped; at the end: %s, %ld broken\n",
+      "clipped; at the end: %s, %ld broken, kinetic damping resets %ld (%ld at step 900)\n",
       kSave, f.broken(), f.pairs, f.touching, f.clipped, at.at(kEnd).hash.c_str(),
-      at.at(kEnd).broken());
+      at.at(kEnd).broken(), at.at(kEnd).kinetic_resets, at.at(900).kinetic_resets);
   EXPECT_GT(f.broken(), 0) << "nothing broke by the save";
   EXPECT_GT(f.touching, 0) << "no contact pair touches at the save";
   EXPECT_GT(f.clipped, 0) << "no crack point was clipped by the pre-stress";
+  EXPECT_GT(at.at(900).kinetic_resets, 0) << "kinetic damping never reset before step 900";
+  EXPECT_GT(at.at(kEnd).kinetic_resets, at.at(1100).kinetic_resets)
+      << "kinetic damping never reset after the last restart";
   Engine e(scenario(1));
   load(e, saved_at_kSave());
   double bolt_damage = 0;

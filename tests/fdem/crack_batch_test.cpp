@@ -88,50 +88,57 @@ bool scalar_element(const CrackConstants& k, const Element& e, bool offsets, dou
 
 // Every lane's eight slot values equal the scalar evaluation's bit for bit,
 // and exactly the lanes where a point passes its peak are flagged, with and
-// without offsets, on every instruction set the processor has, for lane
-// counts that leave a partial last register.
+// without offsets, with and without per-lane strength factors (0.05-5, the
+// scalar side on scale_crack_strength), on every instruction set the
+// processor has, for lane counts that leave a partial last register.
 TEST(CrackBatch, matches_the_scalar_element_bit_for_bit) {
   const CrackConstants k = make_crack_constants(Material{});
   int below = 0, past = 0;
-  for (SimdIsa isa : {SimdIsa::kBaseline, SimdIsa::kAvx2, SimdIsa::kAvx512}) {
-    if (!detail::simd_isa_available(isa)) continue;
-    std::mt19937 rng(11);
-    CrackBatch b{};
-    for (int draw = 0; draw < 200; ++draw) {
-      const bool offsets = draw % 2;
-      const int n = kCrackBatch - draw % 5;
-      Element e[kCrackBatch];
-      for (int r = 0; r < n; ++r) {
-        e[r] = random_element(rng, offsets);
-        for (int j = 0; j < 4; ++j) {
-          b.x[j][r] = e[r].x[j];
-          b.y[j][r] = e[r].y[j];
+  for (bool scaled : {false, true})
+    for (SimdIsa isa : {SimdIsa::kBaseline, SimdIsa::kAvx2, SimdIsa::kAvx512}) {
+      if (!detail::simd_isa_available(isa)) continue;
+      std::mt19937 rng(11);
+      CrackBatch b{};
+      for (int draw = 0; draw < 200; ++draw) {
+        const bool offsets = draw % 2;
+        const int n = kCrackBatch - draw % 5;
+        Element e[kCrackBatch];
+        for (int r = 0; r < n; ++r) {
+          e[r] = random_element(rng, offsets);
+          for (int j = 0; j < 4; ++j) {
+            b.x[j][r] = e[r].x[j];
+            b.y[j][r] = e[r].y[j];
+          }
+          for (int i = 0; i < 3; ++i) {
+            b.off_o[i][r] = e[r].off_o[i];
+            b.off_s[i][r] = e[r].off_s[i];
+            b.damage[i][r] = e[r].damage[i];
+          }
+          b.strength[r] = scaled ? std::pow(10.0, std::uniform_real_distribution<double>(
+                                                      std::log10(kMinStrengthFactor),
+                                                      std::log10(kMaxStrengthFactor))(rng))
+                                 : 1.0;
         }
-        for (int i = 0; i < 3; ++i) {
-          b.off_o[i][r] = e[r].off_o[i];
-          b.off_s[i][r] = e[r].off_s[i];
-          b.damage[i][r] = e[r].damage[i];
+        detail::run_crack_batch(b, n, k, scaled, isa);
+        for (int r = 0; r < n; ++r) {
+          double want[8];
+          const bool ok =
+              scalar_element(scale_crack_strength(k, b.strength[r]), e[r], offsets, want);
+          EXPECT_EQ(b.grows[r], ok ? 0.0 : 1.0) << "draw " << draw << " lane " << r;
+          if (!ok) {
+            ++past;
+            continue;
+          }
+          ++below;
+          for (int i = 0; i < 8; ++i)
+            EXPECT_EQ(std::memcmp(&b.out[i][r], &want[i], sizeof(double)), 0)
+                << "draw " << draw << " lane " << r << " slot " << i << ": " << b.out[i][r]
+                << " against " << want[i];
         }
-      }
-      detail::run_crack_batch(b, n, k, isa);
-      for (int r = 0; r < n; ++r) {
-        double want[8];
-        const bool ok = scalar_element(k, e[r], offsets, want);
-        EXPECT_EQ(b.grows[r], ok ? 0.0 : 1.0) << "draw " << draw << " lane " << r;
-        if (!ok) {
-          ++past;
-          continue;
-        }
-        ++below;
-        for (int i = 0; i < 8; ++i)
-          EXPECT_EQ(std::memcmp(&b.out[i][r], &want[i], sizeof(double)), 0)
-              << "draw " << draw << " lane " << r << " slot " << i << ": " << b.out[i][r]
-              << " against " << want[i];
       }
     }
-  }
-  EXPECT_GT(below, 1000);  // both branches exercised
-  EXPECT_GT(past, 1000);
+  EXPECT_GT(below, 2000);  // both branches exercised
+  EXPECT_GT(past, 2000);
 }
 
 // crack_forces with the batch path against crack_forces with every element
@@ -141,8 +148,9 @@ TEST(CrackBatch, matches_the_scalar_element_bit_for_bit) {
 // histories grow and elements break, and a few intact elements carry a
 // damage history (the scalar loop marks them yielding). Compared after
 // each round: slots,
-// damage, state, mode, broken step, broken count, fracture energy.
-TEST(CrackBatch, crack_forces_equal_the_scalar_loop_over_a_fracturing_mesh) {
+// damage, state, mode, broken step, broken count, fracture energy. With
+// `factors`, every element has its own strength factor (0.3-3).
+void expect_batch_equals_scalar_loop(bool factors) {
   RectangleSpec spec;
   spec.width = spec.height = 0.02;
   spec.nx = spec.ny = 16;
@@ -167,6 +175,10 @@ TEST(CrackBatch, crack_forces_equal_the_scalar_loop_over_a_fracturing_mesh) {
     for (int i = 0; i < 6; ++i) a.cracks.offset[6 * e + i] = 2e-6 * h * u(rng);
   }
   for (int e = 0; e < nc; e += 97) a.cracks.damage[3 * e + 1] = 0.3;  // intact with a history
+  if (factors) {
+    a.cracks.strength.resize(nc);
+    for (int e = 0; e < nc; ++e) a.cracks.strength[e] = std::pow(10.0, 0.48 * u(rng));
+  }
   a.energy_partial.assign(nc / 128 + 2, 0.0);
   a.energy.last_dt = 1e-7;
   a.threads = 2;
@@ -200,6 +212,14 @@ TEST(CrackBatch, crack_forces_equal_the_scalar_loop_over_a_fracturing_mesh) {
   }
   EXPECT_GT(broken, 10);          // breakage exercised
   EXPECT_GT(batched_rounds, 10);  // softened elements in the batch exercised
+}
+
+TEST(CrackBatch, crack_forces_equal_the_scalar_loop_over_a_fracturing_mesh) {
+  expect_batch_equals_scalar_loop(false);
+}
+
+TEST(CrackBatch, crack_forces_with_strength_factors_equal_the_scalar_loop) {
+  expect_batch_equals_scalar_loop(true);
 }
 
 }  // namespace

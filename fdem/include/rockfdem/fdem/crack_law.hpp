@@ -127,6 +127,43 @@ inline CrackConstants make_crack_constants(const Material& m) {
   return k;
 }
 
+/// Range of a crack element's strength factor (Material::weibull_modulus):
+/// a Weibull draw outside it is clamped, so that no element is without
+/// strength and none is far stronger than any laboratory scatter suggests.
+constexpr double kMinStrengthFactor = 0.05;
+constexpr double kMaxStrengthFactor = 5.0;
+
+/// The rock-law terms a strength factor f scales: ft and c by f, and with
+/// them (the penalties and fracture energies unchanged) op / h = 2 ft / pn,
+/// h / op, 1 / c and 1 / (or - op) = I ft / GfI. (sr - sp = (GfII / I) / fs
+/// follows from the scaled fs by itself.) The batch kernel performs the same
+/// operations on a register of factors (crack_batch_kernel.hpp,
+/// scaled_strength_lanes), so that both paths compute the same bits; f = 1
+/// leaves every term's bits as they are.
+template <class T>
+struct StrengthTerms {
+  T ft, c, inv_c, op_per_h, h_per_op, inv_open_range;
+};
+
+inline StrengthTerms<double> scaled_strength_terms(const CrackConstants& k, double f) {
+  return {k.ft * f, k.c * f, k.inv_c / f, k.op_per_h * f, k.h_per_op / f, k.inv_open_range * f};
+}
+
+/// Rock-law constants of one crack element whose strengths are f times its
+/// material's (heterogeneity); everything the law reads is consistent.
+inline CrackConstants scale_crack_strength(const CrackConstants& k, double f) {
+  CrackConstants s = k;
+  const StrengthTerms<double> t = scaled_strength_terms(k, f);
+  s.ft = t.ft;
+  s.c = t.c;
+  s.inv_c = t.inv_c;
+  s.op_per_h = t.op_per_h;
+  s.h_per_op = t.h_per_op;
+  s.inv_open_range = t.inv_open_range;
+  s.open_range = k.open_range / f;
+  return s;
+}
+
 /// Result of one integration point. No default initialisers: the laws set
 /// every field, and zeroing three of these per element cost 4% of the loop.
 struct CrackPoint {

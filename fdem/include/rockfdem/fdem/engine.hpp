@@ -251,6 +251,9 @@ class Engine {
   std::array<double, 3> triangle_stress(std::size_t t) const;
   /// Largest damage of the element's three integration points.
   double crack_damage(std::size_t c) const;
+  /// Factor k on the element's tensile strength and cohesion (strength
+  /// heterogeneity, Material::weibull_modulus); 1 for a homogeneous material.
+  double crack_strength_factor(std::size_t c) const;
   CrackState crack_state(std::size_t c) const;
   FailureMode crack_mode(std::size_t c) const;
   /// Crack integration points whose share of the initial stress reached
@@ -264,6 +267,9 @@ class Engine {
 
   // --- Global figures (deterministic block sums) ----------------------------
   double kinetic_energy() const;
+  /// Kinetic-energy peaks at which kinetic damping (DampingSettings::kinetic)
+  /// zeroed the velocities, since construction.
+  long kinetic_damping_resets() const;
   /// Hyperelastic energy of Munjiza's law (initial stress excluded).
   double strain_energy() const;
   /// Energy stored in the crack elements: the Simpson-integrated potential

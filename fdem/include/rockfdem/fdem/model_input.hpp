@@ -46,6 +46,16 @@ struct Material {
   double yield_strength = 0;        ///< sigma_y [Pa]
   double ultimate_strength = 0;     ///< sigma_u [Pa] (>= sigma_y)
   double shear_yield_strength = 0;  ///< tau_y = tau_u [Pa]
+  // Strength heterogeneity (rock law only). With weibull_modulus m > 0 each
+  // rock crack element of this material draws one factor k from a Weibull
+  // distribution of shape m and mean 1 (scale 1 / Gamma(1 + 1/m)), clamped
+  // to [kMinStrengthFactor, kMaxStrengthFactor] (crack_law.hpp), and carries
+  // k ft and k c; the fracture energies stay, so the softening ranges follow
+  // from the scaled strengths. The draw is a hash of (heterogeneity_seed,
+  // the element's two mesh vertex ids, sorted): the same for any thread
+  // count, element order or engine numbering. m = 0: every factor is 1.
+  double weibull_modulus = 0;            ///< Weibull shape m (0 = homogeneous)
+  std::uint64_t heterogeneity_seed = 0;  ///< seed of the factors' hash
 };
 
 /// An edge of the mesh carrying an integer tag (the mesh's EdgeTag values).
@@ -86,6 +96,11 @@ struct DampingSettings {
   double local =
       0;  ///< Cundall local damping alpha in [0, 1): f -= alpha |f| sign(v) per component
   double mass_proportional = 0;  ///< c [1/s]: f -= c m v
+  /// Cundall's kinetic damping (dynamic relaxation): after each step, when
+  /// the total kinetic energy has passed a peak (lower than at the step
+  /// before, after rising), every free velocity component is set to zero
+  /// (prescribed ones keep their value). May be combined with the others.
+  bool kinetic = false;
 };
 
 /// Quasi-static mass scaling (density scaling): each triangle's density is

@@ -8,6 +8,8 @@
 //                   +--+--+ (x0+width, y0)
 #pragma once
 
+#include <vector>
+
 #include "rockfdem/fdem/model_input.hpp"
 
 namespace rockfdem::fdem {
@@ -35,6 +37,10 @@ ModelInput structured_rectangle(const RectangleSpec& spec, const Material& mater
 /// x fixed: fully rough platens).
 ModelInput ucs_specimen(const RectangleSpec& spec, const Material& material,
                         double platen_velocity);
+
+/// Rollers on the bottom (y fixed) and left (x fixed) sides and a dead-load
+/// traction (0, ty) [Pa] on the top: uniaxial stress in a rectangle.
+std::vector<BoundaryCondition> rollers_with_top_traction(double ty);
 
 /// Grid with about `n_triangles` triangles and a 1:2 aspect (UCS shape).
 RectangleSpec ucs_grid(double width, double height, long n_triangles);
