@@ -1,58 +1,85 @@
 #include "monitors.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 
-#include "rockfdem/mesh/outline.hpp"
+#include "rockfdem/error.hpp"
+#include "rockfdem/mesh/opening.hpp"
 
 namespace rockfdem::workflows {
 namespace {
 
-// Points on the outline: crown, shoulders at 45 degrees of the arch (the
-// wall top for flat-roofed shapes), walls at mid-height, invert.
-std::vector<Monitor> monitor_points(const mesh::TunnelSpec& t) {
-  const mesh::HalfExtent h = mesh::opening_half_extent(t);
-  const double hx = h.hx, hy = h.hy;
-  double shoulder_x = hx, shoulder_y = hy;
-  if (t.shape == mesh::TunnelShape::kCircular || t.shape == mesh::TunnelShape::kHorseshoe) {
-    const double r = t.shape == mesh::TunnelShape::kCircular ? t.radius : t.span / 2;
-    const double cy = hy - r;
-    shoulder_x = r * std::sqrt(0.5);
-    shoulder_y = cy + r * std::sqrt(0.5);
-  } else if (t.shape == mesh::TunnelShape::kArched) {
-    shoulder_y = hy - t.rise;  // the springing line
+mesh::OpeningBoundary require_opening(const mesh::Mesh& m, const std::string& source) {
+  std::optional<mesh::OpeningBoundary> b = mesh::find_opening(m);
+  if (!b)
+    throw InputError(source + ": no excavation boundary was found (no rock triangle edge faces "
+                     "a core or lining triangle or an inner hole), so there is nowhere to put "
+                     "the tunnel monitors; give the rock a hole or mark the opening's triangles "
+                     "with a core zone group (see msh.zones)");
+  return *b;
+}
+
+// Each key point is tied to the nearest vertex of the boundary (ties: the
+// lower vertex id) and there to the lowest-numbered node of a rock
+// triangle: the core goes, the lining is support.
+std::vector<Monitor> tie_to_nodes(const std::vector<mesh::KeyPoint>& points,
+                                  const mesh::OpeningBoundary& b, const mesh::Mesh& m,
+                                  const fdem::Engine& e) {
+  std::vector<int> on_boundary;
+  for (const auto& edge : b.edges) on_boundary.push_back(edge[0]);
+  std::sort(on_boundary.begin(), on_boundary.end());
+  on_boundary.erase(std::unique(on_boundary.begin(), on_boundary.end()), on_boundary.end());
+
+  std::vector<int> node_of_vertex(m.n_vertices(), -1);
+  const std::vector<int>& vertex = e.node_vertex();
+  for (std::size_t tri = 0; tri < e.n_triangles(); ++tri) {
+    if (m.zone[tri] != mesh::kRock) continue;
+    for (int node : e.triangle_nodes(tri)) {
+      int& best = node_of_vertex[vertex[node]];
+      if (best < 0 || node < best) best = node;
+    }
   }
-  const double wall_y = t.shape == mesh::TunnelShape::kCircular ? 0.0 : (shoulder_y - hy) / 2;
-  return {{"vault", 0, hy},
-          {"left_shoulder", -shoulder_x, shoulder_y},
-          {"right_shoulder", shoulder_x, shoulder_y},
-          {"left_wall", -hx, wall_y},
-          {"right_wall", hx, wall_y},
-          {"invert", 0, -hy}};
+
+  std::vector<Monitor> monitors;
+  for (const mesh::KeyPoint& p : points) {
+    int nearest = on_boundary.front();
+    double best = std::numeric_limits<double>::max();
+    for (int v : on_boundary) {
+      const double d = std::hypot(m.x[v] - p.x, m.y[v] - p.y);
+      if (d < best) best = d, nearest = v;
+    }
+    Monitor mon;
+    mon.name = p.name;
+    mon.x = p.x, mon.y = p.y;
+    mon.node = node_of_vertex[nearest];
+    mon.node_x = m.x[nearest], mon.node_y = m.y[nearest];
+    mon.inward_x = p.inward_x, mon.inward_y = p.inward_y;
+    monitors.push_back(mon);
+  }
+  return monitors;
 }
 
 }  // namespace
 
+std::vector<Monitor> tunnel_monitors(const mesh::MeshSpec& spec, const mesh::Mesh& m,
+                                     const fdem::Engine& e) {
+  const bool generated = spec.kind == mesh::ModelKind::kTunnel;
+  const mesh::OpeningBoundary b = require_opening(m, generated ? "the tunnel mesh" : spec.msh.path);
+  return tie_to_nodes(mesh::opening_key_points(m, b, generated ? &spec.tunnel : nullptr), b, m, e);
+}
+
 std::vector<Monitor> tunnel_monitors(const mesh::TunnelSpec& t, const mesh::Mesh& m,
                                      const fdem::Engine& e) {
-  std::vector<Monitor> monitors = monitor_points(t);
-  const std::vector<int>& vertex = e.node_vertex();
-  std::vector<double> best(monitors.size(), std::numeric_limits<double>::max());
-  // Only nodes of rock triangles: the core goes, the lining is support.
-  for (std::size_t tri = 0; tri < e.n_triangles(); ++tri) {
-    if (m.zone[tri] != mesh::kRock) continue;
-    for (int node : e.triangle_nodes(tri)) {
-      const int v = vertex[node];
-      for (std::size_t k = 0; k < monitors.size(); ++k) {
-        const double d = std::hypot(m.x[v] - monitors[k].x, m.y[v] - monitors[k].y);
-        if (d < best[k] || (d == best[k] && node < monitors[k].node)) {
-          best[k] = d;
-          monitors[k].node = node;
-        }
-      }
-    }
-  }
-  return monitors;
+  const mesh::OpeningBoundary b = require_opening(m, "the mesh");
+  const double size = std::max(b.xmax - b.xmin, b.ymax - b.ymin);
+  const bool built_from_t = mesh::boundary_matches(m, b, t, 1e-6 * size);
+  return tie_to_nodes(mesh::opening_key_points(m, b, built_from_t ? &t : nullptr), b, m, e);
+}
+
+double radial_convergence(const Monitor& mon, const std::array<double, 2>& u) {
+  return u[0] * mon.inward_x + u[1] * mon.inward_y;
 }
 
 std::array<double, 2> monitor_displacement(const fdem::Engine& e, const Monitor& mon,

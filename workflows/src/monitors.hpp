@@ -1,10 +1,14 @@
 // Monitor points on the tunnel boundary: vault (crown), shoulders,
-// sidewalls and invert, each tied to the engine node of a rock triangle
-// nearest to its point on the opening's outline. Displacements include the
-// implicit stage's excavation-induced part (they are measured from the
-// in-situ state).
+// sidewalls and invert. They are placed on the excavation boundary found in
+// the mesh itself (rockfdem/mesh/opening.hpp: the rock's inner boundary,
+// against core, lining or nothing), by the rules of the tunnel's shape, or
+// from the opening's centroid for a user's mesh; each is tied to the engine
+// node of a rock triangle at the boundary vertex nearest to its point.
+// Displacements include the implicit stage's excavation-induced part (they
+// are measured from the in-situ state).
 #pragma once
 
+#include <array>
 #include <string>
 #include <vector>
 
@@ -15,14 +19,31 @@
 namespace rockfdem::workflows {
 
 struct Monitor {
-  std::string name;   ///< vault, left_shoulder, right_shoulder, left_wall, right_wall, invert
-  double x = 0, y = 0;  ///< point on the outline [m]
+  std::string name;     ///< vault, left_shoulder, right_shoulder, left_wall, right_wall, invert
+  double x = 0, y = 0;  ///< key point on the mesh's excavation boundary [m]
   int node = -1;        ///< engine node followed
+  double node_x = 0, node_y = 0;      ///< where that node is: the actual monitor position [m]
+  double inward_x = 0, inward_y = 0;  ///< unit vector towards the opening's centre: u . inward
+                                      ///< is the radial convergence (> 0 into the opening)
 };
 
-/// The standard monitor points of the tunnel shape, tied to engine nodes.
+/// The standard monitor points, tied to engine nodes. A generated tunnel
+/// (spec.kind kTunnel) uses the rules of spec.tunnel's shape; a user's mesh
+/// (kMshFile) the shape-free rules (docs/meshing.md, "Key points").
+/// Throws rockfdem::InputError naming spec.msh.path when the mesh has no
+/// excavation boundary (no rock triangle edge faces core, lining or a hole).
+std::vector<Monitor> tunnel_monitors(const mesh::MeshSpec& spec, const mesh::Mesh& m,
+                                     const fdem::Engine& e);
+
+/// Older form, kept so callers compile: the shape rules of `t` apply when
+/// the mesh's boundary lies on t's outline (within 1e-6 of the opening's
+/// size), the shape-free rules otherwise; the error cannot name the file.
+/// Prefer the MeshSpec form.
 std::vector<Monitor> tunnel_monitors(const mesh::TunnelSpec& t, const mesh::Mesh& m,
                                      const fdem::Engine& e);
+
+/// Radial convergence of a displacement at a monitor: u . inward [m].
+double radial_convergence(const Monitor& mon, const std::array<double, 2>& u);
 
 /// Displacement of a monitor from the in-situ state: the implicit stage's
 /// part (per mesh vertex, may be empty) plus the engine's increment [m].

@@ -46,7 +46,7 @@ struct MeshSizeSpec {
   double size_near = 0.5;       ///< element size at the tunnel boundary (specimens: everywhere)
   double size_far = 5.0;        ///< element size at the outer boundary
   double grading_distance = 0;  ///< distance from the tunnel over which size grows; 0: automatic
-  int algorithm = 6;            ///< gmsh Mesh.Algorithm (6 = Frontal-Delaunay)
+  int algorithm = 5;            ///< gmsh Mesh.Algorithm (5 = Delaunay: unstructured, see docs/meshing.md)
   int threads = 0;              ///< gmsh General.NumThreads (0 = OpenMP default)
 };
 
