@@ -394,13 +394,13 @@ TEST(Cli, dt_above_the_limit_is_refused_and_forced_it_stops_with_a_diagnostic) {
 // The lining-rock interface is a ring of crack elements re-joined with the
 // [lining_interface] bond when the lining is installed. A 1 kPa bond lets
 // the squeezed lining (a 20 GPa shotcrete here, stiff enough to matter)
-// slip (measured 37 of 48 broken); a 1 GPa bond holds every element (0 of
-// 48) and the lining then restrains the vault more (measured 9.67 against
-// 10.25 mm). Grouting is kept from triggering so it cannot re-join the
-// broken bonds.
+// slip (most of the 48 broken); a 1 GPa bond holds every element. Which
+// of the two settles the vault more after these 1000 steps, short of
+// equilibrium, changed with the mesh (9.67 against 10.25 mm on one, 11.27
+// against 9.94 on another), so the vault is not compared. Grouting is kept
+// from triggering so it cannot re-join the broken bonds.
 TEST(Cli, lining_interface_debonds_when_weak_and_holds_when_strong) {
   nlohmann::json lining[2];
-  double vault[2];
   const char* strength[2] = {"1e3", "1e9"};
   for (int k = 0; k < 2; ++k) {
     const fs::path out = scratch("interface" + std::to_string(k));
@@ -414,14 +414,12 @@ TEST(Cli, lining_interface_debonds_when_weak_and_holds_when_strong) {
     std::ifstream in(out / "summary.json");
     const nlohmann::json j = nlohmann::json::parse(in);
     lining[k] = j["lining"];
-    vault[k] = j["monitors"]["vault_settlement_mm"].get<double>();
     EXPECT_EQ(j["fdem"]["stages"][0]["changes"]["interface_cracks"], lining[k]["interface_cracks"]);
     fs::remove_all(out);
   }
   EXPECT_GT(lining[0]["interface_cracks"].get<long>(), 20);
   EXPECT_GT(lining[0]["interface_broken"].get<long>(), lining[0]["interface_cracks"].get<long>() / 4);
   EXPECT_EQ(lining[1]["interface_broken"].get<long>(), 0);
-  EXPECT_LT(vault[1], vault[0]);
 }
 
 // A --set path into an array of tables needs a whole-number index the scene

@@ -78,12 +78,6 @@ TEST(TunnelMonitors, seed_horseshoe_walls_are_mid_wall) {
   EXPECT_NEAR(mon.at("invert").node_y, -4.4, 1e-9);
   // A displacement straight into the opening at the vault: full convergence.
   EXPECT_DOUBLE_EQ(radial_convergence(mon.at("vault"), {0, -0.01}), 0.01);
-  // The older form finds the seed's outline in the mesh and agrees.
-  const auto old = by_name(tunnel_monitors(s.tunnel, m, e));
-  for (const auto& [name, a] : mon) {
-    EXPECT_EQ(old.at(name).node, a.node) << name;
-    EXPECT_EQ(old.at(name).y, a.y) << name;
-  }
 }
 
 TEST(TunnelMonitors, circular_points_are_at_the_compass_points) {
@@ -146,10 +140,6 @@ TEST(TunnelMonitors, user_msh_gets_points_on_its_own_opening) {
   EXPECT_NEAR(mon.at("right_wall").node_y, -3, 1e-9);
   for (const auto& [name, a] : mon)
     EXPECT_NEAR(std::hypot(a.node_x - 7, a.node_y + 3), 2, 1e-9) << name;
-  // The older form, given the scene's default tunnel, finds that the mesh
-  // was not built from it and uses the mesh's own opening too.
-  const auto old = by_name(tunnel_monitors(mesh::TunnelSpec{}, m, e));
-  for (const auto& [name, a] : mon) EXPECT_EQ(old.at(name).node, a.node) << name;
 }
 
 TEST(TunnelMonitors, msh_without_an_opening_is_an_input_error_naming_the_file) {
@@ -171,7 +161,6 @@ TEST(TunnelMonitors, msh_without_an_opening_is_an_input_error_naming_the_file) {
     EXPECT_NE(what.find(s.msh.path), std::string::npos) << what;
     EXPECT_NE(what.find("no excavation boundary was found"), std::string::npos) << what;
   }
-  EXPECT_THROW(tunnel_monitors(mesh::TunnelSpec{}, m, e), InputError);
 }
 
 }  // namespace

@@ -48,7 +48,7 @@ TEST(Scene, good_scene_fills_defaults) {
   EXPECT_EQ(s.mesh.kind, mesh::ModelKind::kTunnel);
   EXPECT_EQ(s.mesh.tunnel.shape, mesh::TunnelShape::kCircular);
   EXPECT_DOUBLE_EQ(s.mesh.tunnel.radius, 3.0);
-  EXPECT_EQ(s.mesh.size.algorithm, 6);
+  EXPECT_EQ(s.mesh.size.algorithm, 5);
   EXPECT_DOUBLE_EQ(s.materials.at("rock").density, 2700.0);
   // The core inherits the rock's properties when not given.
   EXPECT_DOUBLE_EQ(s.materials.at("core").young, 5.0e9);

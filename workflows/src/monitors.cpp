@@ -70,14 +70,6 @@ std::vector<Monitor> tunnel_monitors(const mesh::MeshSpec& spec, const mesh::Mes
   return tie_to_nodes(mesh::opening_key_points(m, b, generated ? &spec.tunnel : nullptr), b, m, e);
 }
 
-std::vector<Monitor> tunnel_monitors(const mesh::TunnelSpec& t, const mesh::Mesh& m,
-                                     const fdem::Engine& e) {
-  const mesh::OpeningBoundary b = require_opening(m, "the mesh");
-  const double size = std::max(b.xmax - b.xmin, b.ymax - b.ymin);
-  const bool built_from_t = mesh::boundary_matches(m, b, t, 1e-6 * size);
-  return tie_to_nodes(mesh::opening_key_points(m, b, built_from_t ? &t : nullptr), b, m, e);
-}
-
 double radial_convergence(const Monitor& mon, const std::array<double, 2>& u) {
   return u[0] * mon.inward_x + u[1] * mon.inward_y;
 }

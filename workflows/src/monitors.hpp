@@ -35,13 +35,6 @@ struct Monitor {
 std::vector<Monitor> tunnel_monitors(const mesh::MeshSpec& spec, const mesh::Mesh& m,
                                      const fdem::Engine& e);
 
-/// Older form, kept so callers compile: the shape rules of `t` apply when
-/// the mesh's boundary lies on t's outline (within 1e-6 of the opening's
-/// size), the shape-free rules otherwise; the error cannot name the file.
-/// Prefer the MeshSpec form.
-std::vector<Monitor> tunnel_monitors(const mesh::TunnelSpec& t, const mesh::Mesh& m,
-                                     const fdem::Engine& e);
-
 /// Radial convergence of a displacement at a monitor: u . inward [m].
 double radial_convergence(const Monitor& mon, const std::array<double, 2>& u);
 

@@ -30,19 +30,6 @@ const Monitor& find(const std::vector<Monitor>& ms, const std::string& name) {
   throw std::logic_error("no monitor " + name);
 }
 
-// The opening's centre as its key points span it.
-std::array<double, 2> opening_centre(const std::vector<Monitor>& ms) {
-  return {(find(ms, "left_wall").x + find(ms, "right_wall").x) / 2,
-          (find(ms, "vault").y + find(ms, "invert").y) / 2};
-}
-
-// Unit vector from a key point towards the opening's centre: a positive
-// component of the displacement along it is convergence.
-std::array<double, 2> inward_direction(const Monitor& mon, const std::array<double, 2>& c) {
-  const double dx = c[0] - mon.x, dy = c[1] - mon.y, len = std::hypot(dx, dy);
-  return len > 0 ? std::array<double, 2>{dx / len, dy / len} : std::array<double, 2>{0, 0};
-}
-
 }  // namespace
 
 RigidFit RunOutputs::boundary_fit(const fdem::Engine& e) const {
@@ -86,8 +73,7 @@ std::array<double, 2> RunOutputs::displacement(const fdem::Engine& e, const Moni
 
 std::array<double, 4> RunOutputs::key_point(const fdem::Engine& e, const Monitor& mon) const {
   const std::array<double, 2> u = displacement(e, mon);
-  const std::array<double, 2> in = inward_direction(mon, opening_centre_);
-  return {mm(u[0]), mm(u[1]), mm(std::hypot(u[0], u[1])), mm(u[0] * in[0] + u[1] * in[1])};
+  return {mm(u[0]), mm(u[1]), mm(std::hypot(u[0], u[1])), mm(radial_convergence(mon, u))};
 }
 
 double RunOutputs::convergence(const fdem::Engine& e, const std::vector<Monitor>& ms,
@@ -142,7 +128,6 @@ void RunOutputs::begin_history(const std::vector<Monitor>& monitors, const mesh:
   std::sort(boundary_vertices_.begin(), boundary_vertices_.end());
   boundary_vertices_.erase(std::unique(boundary_vertices_.begin(), boundary_vertices_.end()),
                            boundary_vertices_.end());
-  opening_centre_ = opening_centre(monitors);
   for (const Monitor& mon : monitors) monitor_names_.push_back(mon.name);
   std::vector<std::string> cols{"stage", "step", "time", "kinetic_energy", "unbalanced_ratio",
                                 "broken_I", "broken_II", "broken_mixed"};
@@ -196,7 +181,8 @@ nlohmann::json RunOutputs::monitors_json(const fdem::Engine& e,
   for (const Monitor& mon : monitors) {
     const auto k = key_point(e, mon);
     j[mon.name] = {{"ux_mm", k[0]}, {"uy_mm", k[1]}, {"u_mm", k[2]}, {"radial_mm", k[3]},
-                   {"x", mon.x}, {"y", mon.y}};
+                   {"x", mon.node_x}, {"y", mon.node_y},
+                   {"inward", {mon.inward_x, mon.inward_y}}};
   }
   // Per point (as field convergence points are read) and, apart, the
   // change of length of two chords between points.

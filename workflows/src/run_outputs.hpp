@@ -94,7 +94,6 @@ class RunOutputs {
   mutable long fit_step_ = -1;          ///< step the cached fit belongs to
   mutable RigidFit fit_;
   double max_rotation_deg_ = 0;         ///< largest |rotation| of the outer boundary so far
-  std::array<double, 2> opening_centre_{0, 0};  ///< between the key points
   std::vector<std::string> monitor_names_;
   std::vector<std::string> stage_names_;
   double handoff_dt_ = 0;  ///< dt of the hand-off step (0: not taken by this run's record)

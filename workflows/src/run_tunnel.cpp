@@ -249,7 +249,7 @@ int run_tunnel(const Scene& scene, const CommandLine& cli) {
   }
   timer.stamp("fdem setup");
 
-  const std::vector<Monitor> monitors = tunnel_monitors(scene.mesh.tunnel, m, engine);
+  const std::vector<Monitor> monitors = tunnel_monitors(scene.mesh, m, engine);
   out.begin_history(monitors, m);
   out.set_bolts(&bolts);
   StageRunner stages(engine, m, handoff, scene, cli, out, monitors, bolts, support);
@@ -322,6 +322,7 @@ int run_tunnel(const Scene& scene, const CommandLine& cli) {
   }
   summary.json()["damping"] = {{"local", stage_damping(scene).local},
                                {"mass_proportional", scene.engine.mass_damping},
+                               {"kinetic", scene.engine.kinetic_damping},
                                {"local_given", scene.engine.local_damping >= 0}};
   summary.json()["fdem"] = {{"unbalanced_ratio_at_start", start_ratio},
                             {"unbalanced_ratio_at_end", engine.unbalanced_force_ratio()},

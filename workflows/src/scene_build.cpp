@@ -258,6 +258,9 @@ MaterialSpec read_material(const Reader& r, const std::string& name, const Mater
   m.fracture_energy_I = r.number_or(p + "fracture_energy_I", m.fracture_energy_I);
   m.fracture_energy_II = r.number_or(p + "fracture_energy_II", m.fracture_energy_II);
   m.penalty_factor = r.number_or(p + "penalty_factor", base ? base->penalty_factor : 10);
+  m.heterogeneity = r.number_or(p + "heterogeneity", base ? base->heterogeneity : 0);
+  m.heterogeneity_seed =
+      std::uint64_t(r.number_or(p + "heterogeneity_seed", base ? double(base->heterogeneity_seed) : 1));
   return m;
 }
 
@@ -538,6 +541,7 @@ Scene build_scene(const RawScene& raw, const std::string& base_dir) {
   s.engine.damping_ratio = r.number("engine.damping_ratio");
   s.engine.local_damping = r.number_or("engine.local_damping", -1);
   s.engine.mass_damping = r.number("engine.mass_damping");
+  s.engine.kinetic_damping = r.boolean("engine.kinetic_damping");
   s.engine.gravity = r.number("engine.gravity");
   const std::string scaling = r.text("engine.mass_scaling");
   const bool specimen =

@@ -27,6 +27,8 @@ fdem::Material engine_material(const MaterialSpec& m, const EngineSettings& e) {
   if (f.gf_I <= 0) f.gf_I = 1e9;
   if (f.gf_II <= 0) f.gf_II = 1e9;
   f.normal_penalty = m.penalty_factor * m.young;
+  f.weibull_modulus = m.heterogeneity;
+  f.heterogeneity_seed = m.heterogeneity_seed;
   f.damping_ratio = e.damping_ratio;
   return f;
 }
@@ -152,8 +154,11 @@ fdem::Engine make_engine(fdem::ModelInput in, const Scene& scene, bool force_dt)
 }
 
 fdem::DampingSettings stage_damping(const Scene& s) {
-  return {s.engine.local_damping >= 0 ? s.engine.local_damping : kTunnelLocalDamping,
-          s.engine.mass_damping};
+  fdem::DampingSettings d;
+  d.local = s.engine.local_damping >= 0 ? s.engine.local_damping : kTunnelLocalDamping;
+  d.mass_proportional = s.engine.mass_damping;
+  d.kinetic = s.engine.kinetic_damping;
+  return d;
 }
 
 bool kirsch_case(const Scene& s, insitu::KirschCase* k) {

@@ -25,6 +25,8 @@ struct MaterialSpec {
   double fracture_energy_I = 0;         ///< J/m^2 (0: not given)
   double fracture_energy_II = 0;        ///< J/m^2 (0: not given)
   double penalty_factor = 10;           ///< penalty / Young's modulus
+  double heterogeneity = 0;             ///< Weibull modulus of crack strengths; 0: homogeneous
+  std::uint64_t heterogeneity_seed = 1;
 };
 
 struct InsituSettings {
@@ -51,6 +53,7 @@ struct EngineSettings {
   /// tunnel stages, none in specimen runs). Shown in the run summary.
   double local_damping = -1;
   double mass_damping = 0;  ///< 1/s
+  bool kinetic_damping = false;  ///< Cundall's kinetic damping in tunnel stages
   double gravity = 0;       ///< m/s^2, acting in -y
   bool mass_scaling = false;     ///< quasi-static mass scaling (engine.mass_scaling resolved)
   double mass_scaling_dt = 0;    ///< s; 0: automatic
