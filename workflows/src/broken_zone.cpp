@@ -78,7 +78,8 @@ Resolution fracture_resolution(const Scene& scene, const mesh::Mesh* m) {
   return r;
 }
 
-BrokenZone broken_zone(const fdem::Engine& e, const mesh::Mesh& m, double h) {
+BrokenZone broken_zone(const fdem::Engine& e, const mesh::Mesh& m, double h,
+                       const std::vector<char>& bolt_triangle) {
   BrokenZone z;
   const std::vector<Segment> opening = excavation_boundary(m);
   const std::vector<Segment> edge = fracture_zone_edge(m);
@@ -90,9 +91,12 @@ BrokenZone broken_zone(const fdem::Engine& e, const mesh::Mesh& m, double h) {
   for (std::size_t c = 0; c < e.n_cracks(); ++c) {
     if (e.crack_state(c) != fdem::CrackState::kBroken) continue;
     const auto t = e.crack_triangles(c);
-    // Rock on both sides, in the fracture zone: bolts carry crack elements
-    // of their own beyond it.
-    const auto in_zone = [&](int tri) { return m.zone[tri] == mesh::kRock && m.fracture[tri]; };
+    // Rock on both sides, in the fracture zone, no bolt: bolts carry crack
+    // elements of their own, beyond the zone too.
+    const auto in_zone = [&](int tri) {
+      return m.zone[tri] == mesh::kRock && m.fracture[tri] &&
+             (bolt_triangle.empty() || !bolt_triangle[tri]);
+    };
     if (!in_zone(t[0]) || !in_zone(t[1])) continue;
     const auto nodes = e.crack_nodes(c);
     const double px = (m.x[vertex[nodes[0]]] + m.x[vertex[nodes[1]]]) / 2;

@@ -14,6 +14,8 @@
 // reports h / l_ch and warns above kResolutionLimit.
 #pragma once
 
+#include <vector>
+
 #include "rockfdem/fdem/engine.hpp"
 #include "rockfdem/mesh/mesh.hpp"
 
@@ -46,7 +48,10 @@ struct BrokenZone {
   bool at_edge = false;      ///< clearance below kEdgeElements h
 };
 
-/// The broken zone of the engine's state on mesh `m` (fracture zone element size h).
-BrokenZone broken_zone(const fdem::Engine& e, const mesh::Mesh& m, double h);
+/// The broken zone of the engine's state on mesh `m` (fracture zone element
+/// size h). Crack elements next to a triangle with `bolt_triangle` set
+/// (bolt steel and grout, which reach beyond the fracture zone) are left out.
+BrokenZone broken_zone(const fdem::Engine& e, const mesh::Mesh& m, double h,
+                       const std::vector<char>& bolt_triangle);
 
 }  // namespace rockfdem::workflows

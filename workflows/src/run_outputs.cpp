@@ -387,7 +387,13 @@ void RunOutputs::damage_outputs(const fdem::Engine& e, const mesh::Mesh& m) {
                   r.h, r.ratio, r.l_ch, kResolutionLimit);
     warn(msg);
   }
-  const BrokenZone z = broken_zone(e, m, r.h);
+  std::vector<char> bolt_triangle;
+  if (bolts_ && !bolts_->specs.empty()) {
+    bolt_triangle.assign(m.n_triangles(), 0);
+    for (const std::vector<int>& owned : bolts_->owned)
+      for (int t : owned) bolt_triangle[std::size_t(t)] = 1;
+  }
+  const BrokenZone z = broken_zone(e, m, r.h, bolt_triangle);
   j["broken_zone"] = {{"broken_rock_cracks", z.broken}, {"depth_m", z.depth},
                       {"fracture_zone_m", z.zone_depth},
                       {"clearance_m", z.clearance >= 0 ? nlohmann::json(z.clearance)

@@ -118,45 +118,58 @@ double key_point_span(const std::vector<Monitor>& ms) {
   return hi - lo;
 }
 
-// Accelerating: the largest monitor move per 1000 steps, averaged over the
-// last kWindow outputs, is more than 1.5 times its average over the kWindow
-// before. A mean over long windows, because a cracking model moves in
+// The key points' trend: the largest monitor move per 1000 steps averaged
+// over the last kWindow outputs against its average over the kWindow
+// before. Means over long windows, because a cracking model moves in
 // bursts: the default tunnel's floor, heaving at a steady 2 mm per 1000
 // steps, moved 0.5 to 3.8 mm from one output to the next, and 5-output
 // means differed by 2x with no trend.
 constexpr std::size_t kWindow = 10;
-bool accelerating(const std::vector<double>& rates) {
-  if (rates.size() < 2 * kWindow) return false;
+constexpr double kAccelerating = 1.5;  ///< last / before above this: accelerating
+constexpr double kNotSlowing = 0.9;    ///< last / before above this: not slowing down
+
+// last / before, or 0 while fewer than 2 kWindow outputs are known.
+double trend(const std::vector<double>& rates) {
+  if (rates.size() < 2 * kWindow) return 0.0;
   double before = 0, last = 0;
   for (std::size_t i = 0; i < kWindow; ++i) {
     before += rates[rates.size() - 2 * kWindow + i];
     last += rates[rates.size() - kWindow + i];
   }
-  return last > 1.5 * before;
+  return before > 0 ? last / before : 0.0;
 }
 
 }  // namespace
 
-bool StageRunner::unstable(const StageSpec& stage) {
+bool StageRunner::unstable(const StageSpec& stage, bool criteria) {
   cursor_.rates.push_back(last_rate_);
   if (cursor_.rates.size() > 2 * kWindow) cursor_.rates.erase(cursor_.rates.begin());
   const auto [name, u] = out_.largest_key_point(engine_, monitors_);
   const double span = key_point_span(monitors_);
   const bool beyond = span > 0 && u > stage.unstable_fraction * span;
-  // An acceleration only counts once the stage is past its first transient
-  // (ten outputs) and while the monitors are far from settled.
-  const bool speeding = engine_.step_count() - cursor_.first >= long(2 * kWindow) * stage.every_steps &&
-                        accelerating(cursor_.rates) && last_settle_ > 10 * stage.settle;
-  if (!beyond && !speeding) return false;
-  char msg[600];
+  // Both trends count only once the stage is 2 kWindow outputs old (past
+  // its first transient). Accelerating while far from settled is a
+  // collapse under way. Not slowing down while the forces are balanced
+  // (ratio met, settle not) is a mechanism flowing at the limit of
+  // equilibrium, as explicit codes read a steady velocity field at a low
+  // unbalanced-force ratio: the ground is not arresting it.
+  const double r = trend(cursor_.rates);
+  const bool speeding = r > kAccelerating && last_settle_ > 10 * stage.settle;
+  const bool flowing = criteria && r > kNotSlowing && last_settle_ > stage.settle &&
+                       engine_.unbalanced_force_ratio() < stage.ratio;
+  if (!beyond && !speeding && !flowing) return false;
+  const char* why = beyond     ? ""
+                    : speeding ? ", faster over the last 10 outputs than over the 10 before"
+                               : ", as fast over the last 10 outputs as over the 10 before "
+                                 "with the forces balanced: a mechanism flowing";
+  char msg[700];
   std::snprintf(msg, sizeof msg,
                 "stage '%s', step %ld: key point %s has moved %.0f mm (%.3g of the span %.2f m; "
-                "limit %g) and %s moves %.3g mm per 1000 steps%s: the opening is closing, not "
-                "stabilising",
+                "limit %g) and %s moves %.3g mm per 1000 steps (%.2f times the rate of the 10 "
+                "outputs before)%s: the opening is closing, not stabilising",
                 stage.kind.c_str(), engine_.step_count(), name.c_str(), 1000 * u,
                 span > 0 ? u / span : 0.0, span, stage.unstable_fraction, moving_most_.c_str(),
-                1000 * last_rate_,
-                speeding ? ", 1.5 times faster over the last 10 outputs than the 10 before" : "");
+                1000 * last_rate_, r, why);
   unstable_ = {"unstable", msg};
   return true;
 }
@@ -201,7 +214,7 @@ bool StageRunner::step_until(const StageSpec& stage, PhaseTimer& timer, long bro
       done = cursor_.held >= stage.hold;
     }
     progress.update(in_stage(), engine_.time() - t0);
-    if (!done && unstable(stage)) {
+    if (!done && unstable(stage, broken_target == 0)) {
       stopped_ = true;
       break;
     }

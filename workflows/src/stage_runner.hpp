@@ -75,8 +75,9 @@ class StageRunner {
     std::vector<double> rates;      ///< largest monitor move per 1000 steps, per output [m]
   };
   /// Stops the run as unstable when a key point passed the stage's fraction
-  /// of the span or has been accelerating; true when it did.
-  bool unstable(const StageSpec& stage);
+  /// of the span, has been accelerating, or (for a stage that stops on its
+  /// `criteria`) keeps moving as fast with the forces balanced; true when it did.
+  bool unstable(const StageSpec& stage, bool criteria);
   void run(const StageSpec& stage, PhaseTimer& timer);
   nlohmann::json apply(const StageSpec& stage);
   /// grout: steps until `trigger` crack elements are broken (within the
