@@ -17,6 +17,7 @@
 
 #include "engine_data.hpp"
 #include "parallel.hpp"
+#include "rockfdem/fdem/constants.hpp"
 #include "rockfdem/fdem/engine.hpp"
 
 namespace rockfdem::fdem::detail {
@@ -398,7 +399,6 @@ void contact_setup(EngineData& d) {
   build_edge_neighbours(d);
   double e_max = 0;
   c.mu.clear();
-  constexpr double kPi = 3.14159265358979323846;
   for (const Material& m : d.materials) {
     e_max = std::max(e_max, m.young);
     c.mu.push_back(std::tan(m.residual_friction_deg * kPi / 180.0));
