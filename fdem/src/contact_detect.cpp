@@ -19,6 +19,7 @@
 #include "parallel.hpp"
 #include "rockfdem/fdem/constants.hpp"
 #include "rockfdem/fdem/engine.hpp"
+#include "triangle_geometry.hpp"
 
 namespace rockfdem::fdem::detail {
 namespace {
@@ -514,13 +515,8 @@ void contact_breaks(EngineData& d) {
 }
 
 double contact_triangle_omega2(const EngineData& d, std::size_t t) {
-  const double* p = d.nodes.mesh_pos.data();
-  double longest = 0;
-  for (int k = 0; k < 3; ++k) {
-    const int a = d.tris.nodes[3 * t + k], b = d.tris.nodes[3 * t + (k + 1) % 3];
-    longest = std::max(longest, std::hypot(p[2 * b] - p[2 * a], p[2 * b + 1] - p[2 * a + 1]));
-  }
-  const double h = 2.0 * d.tris.area0[t] / longest;
+  const double h =
+      smallest_altitude(d.nodes.mesh_pos.data(), &d.tris.nodes[3 * t], d.tris.area0[t]);
   const double rho = d.materials[d.tris.material[t]].density * d.tris.density_factor(t);
   // A sticking friction spring is as stiff as the normal penalty.
   const double springs = d.contact.settings.friction ? 2.0 : 1.0;

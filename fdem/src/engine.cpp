@@ -30,6 +30,7 @@
 #include "strength_heterogeneity.hpp"
 #include "topology.hpp"
 #include "triangle_force.hpp"
+#include "triangle_geometry.hpp"
 
 namespace rockfdem::fdem {
 namespace {
@@ -51,14 +52,8 @@ void set_viscous_damping(detail::EngineData& d) {
   for (std::size_t t = 0; t < d.tris.size(); ++t) {
     const Material& m = d.materials[d.tris.material[t]];
     if (m.damping_ratio <= 0) continue;
-    const int* nd = &d.tris.nodes[3 * t];
-    const double* p = d.nodes.pos.data();
-    double longest = 0;
-    for (int k = 0; k < 3; ++k) {
-      const int a = nd[k], b = nd[(k + 1) % 3];
-      longest = std::max(longest, std::hypot(p[2 * b] - p[2 * a], p[2 * b + 1] - p[2 * a + 1]));
-    }
-    const double h = 2.0 * d.tris.area0[t] / longest;
+    const double h =
+        detail::smallest_altitude(d.nodes.pos.data(), &d.tris.nodes[3 * t], d.tris.area0[t]);
     d.tris.eta[t] = m.damping_ratio * 2.0 * h * std::sqrt(m.young * m.density);
   }
   // The energy ledger books each step's viscous force again with the next
