@@ -19,7 +19,6 @@
 #include "parallel.hpp"
 #include "rockfdem/fdem/constants.hpp"
 #include "rockfdem/fdem/engine.hpp"
-#include "triangle_geometry.hpp"
 
 namespace rockfdem::fdem::detail {
 namespace {
@@ -512,22 +511,6 @@ void contact_breaks(EngineData& d) {
   c.pair_force.resize(12 * c.pairs.size());
   c.energy_partial.resize(2 * ((c.pairs.size() + kPairBlock - 1) / kPairBlock));
   build_gather(d);
-}
-
-double contact_triangle_omega2(const EngineData& d, std::size_t t) {
-  const double h =
-      smallest_altitude(d.nodes.mesh_pos.data(), &d.tris.nodes[3 * t], d.tris.area0[t]);
-  const double rho = d.materials[d.tris.material[t]].density * d.tris.density_factor(t);
-  // A sticking friction spring is as stiff as the normal penalty.
-  const double springs = d.contact.settings.friction ? 2.0 : 1.0;
-  return springs * 36.0 * d.contact.penalty / (rho * h * h);
-}
-
-double contact_omega2(const EngineData& d) {
-  double w2 = 0;
-  for (std::size_t t = 0; t < d.tris.size(); ++t)
-    if (d.tris.active[t]) w2 = std::max(w2, contact_triangle_omega2(d, t));
-  return w2;
 }
 
 }  // namespace rockfdem::fdem::detail
