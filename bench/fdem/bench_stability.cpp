@@ -24,6 +24,7 @@
 #include <random>
 #include <string>
 
+#include "rockfdem/fdem/constants.hpp"
 #include "rockfdem/fdem/engine.hpp"
 #include "rockfdem/fdem/structured_mesh.hpp"
 
@@ -46,7 +47,7 @@ fdem::Engine make_engine(const Case& c) {
   fdem::RectangleSpec spec;
   spec.nx = spec.ny = 8;
   spec.width = 0.08;
-  spec.height = c.sliver ? 0.08 * std::tan(5 * M_PI / 180) : 0.08;
+  spec.height = c.sliver ? 0.08 * std::tan(5 * fdem::kPi / 180) : 0.08;
   return fdem::Engine(fdem::structured_rectangle(spec, m));
 }
 

@@ -15,12 +15,12 @@
 #include <string>
 
 #include "rockfdem/error.hpp"
+#include "rockfdem/fdem/constants.hpp"
 
 namespace rockfdem::fdem {
 namespace {
 
 constexpr double kRelTol = 1e-12;
-constexpr double kPi = 3.14159265358979323846;
 
 double cross(const Point2& o, const Point2& a, const Point2& b) {
   return (a[0] - o[0]) * (b[1] - o[1]) - (a[1] - o[1]) * (b[0] - o[0]);

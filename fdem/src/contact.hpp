@@ -120,13 +120,4 @@ double contact_pair_energy(const EngineData& d, int ta, int tb, const double* sp
 /// Sum over all pairs (0 with contact off).
 double contact_energy(const EngineData& d, const Placement& at);
 
-/// Square of the largest angular frequency contact can add to a node of
-/// triangle t: two roles of normal stiffness 3 p / H per unit length (H its
-/// smallest altitude), Gershgorin-bounded, doubled when friction adds its
-/// tangential spring of the same stiffness.
-double contact_triangle_omega2(const EngineData& d, std::size_t t);
-
-/// The largest contact_triangle_omega2 over the active triangles.
-double contact_omega2(const EngineData& d);
-
 }  // namespace rockfdem::fdem::detail

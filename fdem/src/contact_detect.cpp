@@ -17,6 +17,7 @@
 
 #include "engine_data.hpp"
 #include "parallel.hpp"
+#include "rockfdem/fdem/constants.hpp"
 #include "rockfdem/fdem/engine.hpp"
 
 namespace rockfdem::fdem::detail {
@@ -398,7 +399,6 @@ void contact_setup(EngineData& d) {
   build_edge_neighbours(d);
   double e_max = 0;
   c.mu.clear();
-  constexpr double kPi = 3.14159265358979323846;
   for (const Material& m : d.materials) {
     e_max = std::max(e_max, m.young);
     c.mu.push_back(std::tan(m.residual_friction_deg * kPi / 180.0));
@@ -511,27 +511,6 @@ void contact_breaks(EngineData& d) {
   c.pair_force.resize(12 * c.pairs.size());
   c.energy_partial.resize(2 * ((c.pairs.size() + kPairBlock - 1) / kPairBlock));
   build_gather(d);
-}
-
-double contact_triangle_omega2(const EngineData& d, std::size_t t) {
-  const double* p = d.nodes.mesh_pos.data();
-  double longest = 0;
-  for (int k = 0; k < 3; ++k) {
-    const int a = d.tris.nodes[3 * t + k], b = d.tris.nodes[3 * t + (k + 1) % 3];
-    longest = std::max(longest, std::hypot(p[2 * b] - p[2 * a], p[2 * b + 1] - p[2 * a + 1]));
-  }
-  const double h = 2.0 * d.tris.area0[t] / longest;
-  const double rho = d.materials[d.tris.material[t]].density * d.tris.density_factor(t);
-  // A sticking friction spring is as stiff as the normal penalty.
-  const double springs = d.contact.settings.friction ? 2.0 : 1.0;
-  return springs * 36.0 * d.contact.penalty / (rho * h * h);
-}
-
-double contact_omega2(const EngineData& d) {
-  double w2 = 0;
-  for (std::size_t t = 0; t < d.tris.size(); ++t)
-    if (d.tris.active[t]) w2 = std::max(w2, contact_triangle_omega2(d, t));
-  return w2;
 }
 
 }  // namespace rockfdem::fdem::detail

@@ -81,10 +81,6 @@ double contact_energy_of_triangle(const EngineData& d, int t, const Placement& a
   return e;
 }
 
-void book(EngineData& d, double EnergyLedger::*term, double before, double after) {
-  if (d.energy.started) d.energy.*term += before - after;
-}
-
 }  // namespace detail
 
 double EnergyBalance::stored() const { return kinetic + strain + crack_elastic + contact_elastic; }

@@ -97,8 +97,20 @@ double node_energy(const EngineData& d, std::size_t n);
 /// Stored energy of the contact pairs that involve triangle t.
 double contact_energy_of_triangle(const EngineData& d, int t, const Placement& at);
 
-/// Books `before - after` (energy a stage control took out) in `term`, once
-/// the ledger has started.
-void book(EngineData& d, double EnergyLedger::*term, double before, double after);
+/// Runs `change` (a stage control) and books the energy it took out in
+/// `term`: `stored()` before the change minus `stored()` after it. Before the
+/// ledger has started nothing is measured and `change` alone runs (what it
+/// does belongs to the initial state).
+template <class Stored, class Change>
+void book_change(EnergyLedger& ledger, double EnergyLedger::*term, const Stored& stored,
+                 const Change& change) {
+  if (!ledger.started) {
+    change();
+    return;
+  }
+  const double before = stored();
+  change();
+  ledger.*term += before - stored();
+}
 
 }  // namespace rockfdem::fdem::detail

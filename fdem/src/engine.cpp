@@ -30,6 +30,7 @@
 #include "strength_heterogeneity.hpp"
 #include "topology.hpp"
 #include "triangle_force.hpp"
+#include "triangle_geometry.hpp"
 
 namespace rockfdem::fdem {
 namespace {
@@ -51,14 +52,8 @@ void set_viscous_damping(detail::EngineData& d) {
   for (std::size_t t = 0; t < d.tris.size(); ++t) {
     const Material& m = d.materials[d.tris.material[t]];
     if (m.damping_ratio <= 0) continue;
-    const int* nd = &d.tris.nodes[3 * t];
-    const double* p = d.nodes.pos.data();
-    double longest = 0;
-    for (int k = 0; k < 3; ++k) {
-      const int a = nd[k], b = nd[(k + 1) % 3];
-      longest = std::max(longest, std::hypot(p[2 * b] - p[2 * a], p[2 * b + 1] - p[2 * a + 1]));
-    }
-    const double h = 2.0 * d.tris.area0[t] / longest;
+    const double h =
+        detail::smallest_altitude(d.nodes.pos.data(), &d.tris.nodes[3 * t], d.tris.area0[t]);
     d.tris.eta[t] = m.damping_ratio * 2.0 * h * std::sqrt(m.young * m.density);
   }
   // The energy ledger books each step's viscous force again with the next
@@ -103,6 +98,26 @@ std::string fmt(double v) {
       << d.nodes.vel[2 * n + 1] << "). Reduce dt (now " << fmt(d.dt)
       << " s) or check the loads on that node.";
   throw NumericalError(msg.str());
+}
+
+/// Runs `change` on triangle t and books the change of its stored energy
+/// (at the half step) in `term`.
+template <class Change>
+void book_triangle_change(detail::EngineData& d, std::size_t t, double detail::EnergyLedger::*term,
+                          const Change& change) {
+  const detail::Placement at = detail::half_step_placement(d);
+  detail::book_change(
+      d.energy, term, [&] { return detail::triangle_stored_energy(d, t, at); }, change);
+}
+
+/// Runs `change` on crack element c and books the change of its energy (at
+/// the half step) as removed.
+template <class Change>
+void book_crack_change(detail::EngineData& d, std::size_t c, const Change& change) {
+  const detail::Placement at = detail::half_step_placement(d);
+  detail::book_change(
+      d.energy, &detail::EnergyLedger::removed,
+      [&] { return detail::crack_element_energy(d, c, at); }, change);
 }
 
 void check_index(std::size_t i, std::size_t n, const char* what) {
@@ -311,11 +326,7 @@ void Engine::set_stiffness_factor(std::size_t t, double alpha) {
     throw InputError("fdem: stiffness factor " + fmt(alpha) + " for triangle " + std::to_string(t) +
                      " must lie in [0, 1000]");
   auto& d = impl_->d;
-  const detail::Placement at = detail::half_step_placement(d);
-  const double before = detail::triangle_stored_energy(d, t, at);
-  d.tris.alpha[t] = alpha;
-  detail::book(d, &detail::EnergyLedger::softening, before,
-               detail::triangle_stored_energy(d, t, at));
+  book_triangle_change(d, t, &detail::EnergyLedger::softening, [&] { d.tris.alpha[t] = alpha; });
   impl_->stiffness_changed();
 }
 
@@ -328,22 +339,27 @@ void Engine::set_active(std::size_t t, bool on, ActivationReference ref) {
   check_index(t, n_triangles(), "triangle");
   auto& d = impl_->d;
   // Its strain energy and its contacts go (or its strain energy comes); its
-  // nodes' kinetic energy and its crack elements follow at the refresh.
+  // nodes' kinetic energy and its crack elements follow at the refresh. The
+  // contacts count while the triangle is active and about to go: once
+  // inactive it has none (they leave at the next detection).
   const detail::Placement at = detail::half_step_placement(d);
-  double before = detail::triangle_stored_energy(d, t, at);
-  if (!on && d.tris.active[t]) before += detail::contact_energy_of_triangle(d, int(t), at);
-  if (on && ref == ActivationReference::kCurrent) {
-    // Stress-free in the shape it has now: neither strain nor the initial
-    // stress it carried as part of a softened core counts any more.
-    detail::set_reference_to_current(d, t);
-    if (!d.tris.sigma0.empty())
-      for (int k = 0; k < 3; ++k) d.tris.sigma0[3 * t + k] = 0.0;
-  }
-  d.tris.active[t] = on ? 1 : 0;
-  if (!d.tris.viscous_stress.empty())
-    for (int k = 0; k < 3; ++k) d.tris.viscous_stress[3 * t + k] = 0.0;
-  detail::book(d, &detail::EnergyLedger::removed, before,
-               detail::triangle_stored_energy(d, t, at));
+  const auto stored = [&] {
+    double e = detail::triangle_stored_energy(d, t, at);
+    if (!on && d.tris.active[t]) e += detail::contact_energy_of_triangle(d, int(t), at);
+    return e;
+  };
+  detail::book_change(d.energy, &detail::EnergyLedger::removed, stored, [&] {
+    if (on && ref == ActivationReference::kCurrent) {
+      // Stress-free in the shape it has now: neither strain nor the initial
+      // stress it carried as part of a softened core counts any more.
+      detail::set_reference_to_current(d, t);
+      if (!d.tris.sigma0.empty())
+        for (int k = 0; k < 3; ++k) d.tris.sigma0[3 * t + k] = 0.0;
+    }
+    d.tris.active[t] = on ? 1 : 0;
+    if (!d.tris.viscous_stress.empty())
+      for (int k = 0; k < 3; ++k) d.tris.viscous_stress[3 * t + k] = 0.0;
+  });
   d.masses_dirty = true;
   d.contact.topology_dirty = d.contact.dirty = true;  // free surfaces change
   impl_->critical_dt = -1;
@@ -418,40 +434,36 @@ void Engine::set_crack_material(std::size_t c, int material) {
   check_index(c, n_cracks(), "crack element");
   check_index(static_cast<std::size_t>(material), impl_->d.materials.size(), "material");
   auto& d = impl_->d;
-  const detail::Placement at = detail::half_step_placement(d);
-  const double before = detail::crack_element_energy(d, c, at);
-  d.cracks.material[c] = static_cast<std::uint16_t>(material);
-  detail::assign_strength_factor(d, c);  // the new material's strengths (and its factor)
-  detail::book(d, &detail::EnergyLedger::removed, before, detail::crack_element_energy(d, c, at));
+  book_crack_change(d, c, [&] {
+    d.cracks.material[c] = static_cast<std::uint16_t>(material);
+    detail::assign_strength_factor(d, c);  // the new material's strengths (and its factor)
+  });
   impl_->stiffness_changed();
 }
 
 void Engine::rejoin_crack(std::size_t c, int material) {
   set_crack_material(c, material);
-  const detail::Placement at = detail::half_step_placement(impl_->d);
-  const double before = detail::crack_element_energy(impl_->d, c, at);
-  auto& cr = impl_->d.cracks;
-  if (cr.offset.empty()) cr.offset.assign(6 * cr.size(), 0.0);
-  detail::crack_point_openings(impl_->d, c, &cr.offset[6 * c]);
-  for (int k = 0; k < 3; ++k) cr.damage[3 * c + k] = 0.0;
-  cr.state[c] = std::uint8_t(CrackState::kIntact);
-  cr.mode[c] = std::uint8_t(FailureMode::kNone);
-  cr.broken_step[c] = -1;
-  detail::book(impl_->d, &detail::EnergyLedger::removed, before,
-               detail::crack_element_energy(impl_->d, c, at));
-  impl_->d.contact.topology_dirty = impl_->d.contact.dirty = true;
+  auto& d = impl_->d;
+  book_crack_change(d, c, [&] {
+    auto& cr = d.cracks;
+    if (cr.offset.empty()) cr.offset.assign(6 * cr.size(), 0.0);
+    detail::crack_point_openings(d, c, &cr.offset[6 * c]);
+    for (int k = 0; k < 3; ++k) cr.damage[3 * c + k] = 0.0;
+    cr.state[c] = std::uint8_t(CrackState::kIntact);
+    cr.mode[c] = std::uint8_t(FailureMode::kNone);
+    cr.broken_step[c] = -1;
+  });
+  d.contact.topology_dirty = d.contact.dirty = true;
 }
 
 void Engine::set_initial_stress(std::size_t t, const std::array<double, 3>& stress) {
   check_index(t, n_triangles(), "triangle");
   auto& d = impl_->d;
-  const detail::Placement at = detail::half_step_placement(d);
-  const double before = detail::triangle_stored_energy(d, t, at);
-  auto& s0 = d.tris.sigma0;
-  if (s0.empty()) s0.assign(3 * n_triangles(), 0.0);
-  for (int k = 0; k < 3; ++k) s0[3 * t + k] = stress[k];
-  detail::book(d, &detail::EnergyLedger::removed, before,
-               detail::triangle_stored_energy(d, t, at));
+  book_triangle_change(d, t, &detail::EnergyLedger::removed, [&] {
+    auto& s0 = d.tris.sigma0;
+    if (s0.empty()) s0.assign(3 * n_triangles(), 0.0);
+    for (int k = 0; k < 3; ++k) s0[3 * t + k] = stress[k];
+  });
 }
 
 void Engine::set_contact(const ContactSettings& contact) {
@@ -461,11 +473,13 @@ void Engine::set_contact(const ContactSettings& contact) {
                      "damping ratio in [0, 1]");
   auto& d = impl_->d;
   const detail::Placement at = detail::half_step_placement(d);
-  const double before = detail::contact_energy(d, at);
-  d.contact.settings = contact;
-  d.contact_on = contact.enabled;
-  if (contact.enabled) detail::contact_setup(d);
-  detail::book(d, &detail::EnergyLedger::removed, before, detail::contact_energy(d, at));
+  detail::book_change(
+      d.energy, &detail::EnergyLedger::removed, [&] { return detail::contact_energy(d, at); },
+      [&] {
+        d.contact.settings = contact;
+        d.contact_on = contact.enabled;
+        if (contact.enabled) detail::contact_setup(d);
+      });
   impl_->stiffness_changed();  // contact joins the limit and the scaled frequencies
 }
 
@@ -509,16 +523,16 @@ const std::vector<double>& Engine::node_mass() const {
 
 void Engine::set_node_state(std::size_t node, double x, double y, double vx, double vy) {
   check_index(node, n_nodes(), "node");
-  auto& n = impl_->d.nodes;
-  const double before = impl_->d.energy.started ? detail::node_energy(impl_->d, node) : 0.0;
-  n.pos[2 * node] = x;
-  n.pos[2 * node + 1] = y;
-  n.vel[2 * node] = vx;
-  n.vel[2 * node + 1] = vy;
-  if (impl_->d.energy.started)
-    detail::book(impl_->d, &detail::EnergyLedger::removed, before,
-                 detail::node_energy(impl_->d, node));
-  impl_->d.contact.dirty = true;  // a jump the drift check does not bound
+  auto& d = impl_->d;
+  detail::book_change(
+      d.energy, &detail::EnergyLedger::removed, [&] { return detail::node_energy(d, node); },
+      [&] {
+        d.nodes.pos[2 * node] = x;
+        d.nodes.pos[2 * node + 1] = y;
+        d.nodes.vel[2 * node] = vx;
+        d.nodes.vel[2 * node + 1] = vy;
+      });
+  d.contact.dirty = true;  // a jump the drift check does not bound
 }
 
 std::array<double, 2> Engine::node_force(std::size_t node) const {

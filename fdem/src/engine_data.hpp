@@ -1,6 +1,6 @@
 // The engine's state as structure-of-arrays. Private to fdem/: the kernels
 // (triangle_force, crack_elements, node_update) read and write these arrays
-// directly; engine.cpp owns one EngineData behind the public Engine.
+// directly; Engine::Impl (engine_impl.hpp) holds one behind the public Engine.
 //
 // Force slots: every triangle writes its three nodal forces into its own
 // slots [3t, 3t+3), every crack element its four into

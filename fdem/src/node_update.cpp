@@ -107,19 +107,19 @@ void refresh_nodes(EngineData& d) {
   // whole stored energy is compared.
   const bool scaled = d.mass_scaling.enabled || !d.tris.mass_scale.empty();
   const auto energy = [&] { return scaled ? stored_energy(d) : kinetic_and_crack_energy(d); };
-  const double before = d.energy.started ? energy() : 0.0;
-  // Crack activity first: the mass scaling's stability bound reads it.
-  refresh_crack_activity(d);
-  const std::vector<double> old_scale = d.tris.mass_scale;  // empty unless scaled
-  if (d.mass_scaling.enabled) {
-    scale_masses(d);  // ends with refresh_masses
-  } else {
-    d.tris.mass_scale.clear();
-    refresh_masses(d);
-  }
-  if (scaled) keep_momentum(d, old_scale);
-  refresh_external_forces(d);
-  if (d.energy.started) book(d, &EnergyLedger::removed, before, energy());
+  book_change(d.energy, &EnergyLedger::removed, energy, [&] {
+    // Crack activity first: the mass scaling's stability bound reads it.
+    refresh_crack_activity(d);
+    const std::vector<double> old_scale = d.tris.mass_scale;  // empty unless scaled
+    if (d.mass_scaling.enabled) {
+      scale_masses(d);  // ends with refresh_masses
+    } else {
+      d.tris.mass_scale.clear();
+      refresh_masses(d);
+    }
+    if (scaled) keep_momentum(d, old_scale);
+    refresh_external_forces(d);
+  });
   d.block_partial.assign(kNodeSums * ((d.nodes.size() + kNodeBlock - 1) / kNodeBlock), 0.0);
   const std::size_t blocks = std::max(d.tris.size(), d.cracks.size()) / kEnergyBlock + 1;
   d.energy_partial.assign(blocks, 0.0);

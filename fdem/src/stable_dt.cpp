@@ -15,6 +15,7 @@
 #include "contact.hpp"
 #include "parallel.hpp"
 #include "rockfdem/fdem/engine.hpp"
+#include "triangle_geometry.hpp"
 
 namespace rockfdem::fdem::detail {
 
@@ -89,6 +90,22 @@ void triangle_frequency(const EngineData& d, std::size_t t, double& omega2, doub
                          largest_eigenvalue(v.asDiagonal() * bbt * v.asDiagonal());
     xi = c_max / (2.0 * std::sqrt(omega2));
   }
+}
+
+double contact_triangle_omega2(const EngineData& d, std::size_t t) {
+  const double h =
+      smallest_altitude(d.nodes.mesh_pos.data(), &d.tris.nodes[3 * t], d.tris.area0[t]);
+  const double rho = d.materials[d.tris.material[t]].density * d.tris.density_factor(t);
+  // A sticking friction spring is as stiff as the normal penalty.
+  const double springs = d.contact.settings.friction ? 2.0 : 1.0;
+  return springs * 36.0 * d.contact.penalty / (rho * h * h);
+}
+
+double contact_omega2(const EngineData& d) {
+  double w2 = 0;
+  for (std::size_t t = 0; t < d.tris.size(); ++t)
+    if (d.tris.active[t]) w2 = std::max(w2, contact_triangle_omega2(d, t));
+  return w2;
 }
 
 double dashpot_max(const EngineData& d, std::size_t n) {

@@ -39,6 +39,15 @@ void node_limits(const EngineData& d, std::vector<double>& limit, bool with_cont
 /// Largest eigenvalue of node n's absorbing dashpot matrix [N s/m^2]; 0: none.
 double dashpot_max(const EngineData& d, std::size_t n);
 
+/// Square of the largest angular frequency contact can add to a node of
+/// triangle t: two roles of normal stiffness 3 p / H per unit length (H its
+/// smallest altitude), Gershgorin-bounded, doubled when friction adds its
+/// tangential spring of the same stiffness.
+double contact_triangle_omega2(const EngineData& d, std::size_t t);
+
+/// The largest contact_triangle_omega2 over the active triangles.
+double contact_omega2(const EngineData& d);
+
 /// Largest frequency^2 and damping ratio of triangle t in its stiffest mode
 /// (linearised at the reference configuration, lumped mass f rho A0 / 3 with
 /// the triangle's density factor f).

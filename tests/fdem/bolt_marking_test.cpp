@@ -15,12 +15,11 @@
 
 #include "rockfdem/error.hpp"
 #include "rockfdem/fdem/bolt_marking.hpp"
+#include "rockfdem/fdem/constants.hpp"
 #include "rockfdem/fdem/structured_mesh.hpp"
 
 namespace rockfdem::fdem {
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
 
 ModelInput grid(double size, int n) {
   RectangleSpec spec;

@@ -8,6 +8,7 @@
 #include "boundary.hpp"
 #include "contact_grid.hpp"
 #include "engine_data.hpp"
+#include "rockfdem/fdem/constants.hpp"
 #include "test_models.hpp"
 #include "topology.hpp"
 
@@ -123,7 +124,7 @@ double slide(double theta_deg, double friction_deg, double T, double& expected) 
   Material m = test::rock();
   m.residual_friction_deg = friction_deg;
   ModelInput in = test::two_blocks(0.0, m);
-  const double th = theta_deg * 3.14159265358979323846 / 180, g = 9.81;
+  const double th = theta_deg * kPi / 180, g = 9.81;
   in.gravity_x = g * std::sin(th);
   in.gravity_y = -g * std::cos(th);
   in.contact = contact_on();
@@ -135,7 +136,7 @@ double slide(double theta_deg, double friction_deg, double T, double& expected) 
   const long steps = std::lround(T / e.dt());
   e.run(steps);
   const double t = steps * e.dt();
-  const double mu = std::tan(friction_deg * 3.14159265358979323846 / 180);
+  const double mu = std::tan(friction_deg * kPi / 180);
   expected = 0.5 * g * (std::sin(th) - mu * std::cos(th)) * t * t;
   return upper_shift(e, upper);
 }
@@ -151,7 +152,7 @@ TEST(Contact, block_on_incline_slides_or_sticks_by_coulomb) {
   std::printf("incline 30 deg, friction 20 deg: slid %.6g m, closed form %.6g m\n", s, expected);
   EXPECT_NEAR(s, expected, 0.01 * expected);
   const double stuck = slide(15, 20, 0.02, expected);
-  const double free_slide = 0.5 * 9.81 * std::sin(15 * 3.14159265358979323846 / 180) * 0.02 * 0.02;
+  const double free_slide = 0.5 * 9.81 * std::sin(15 * kPi / 180) * 0.02 * 0.02;
   std::printf("incline 15 deg, friction 20 deg: moved %.3g m (free %.3g m)\n", stuck, free_slide);
   EXPECT_LT(std::fabs(stuck), 0.01 * free_slide);
 }
@@ -192,7 +193,7 @@ TEST(Contact, broken_crack_resists_interpenetration_and_slides_with_friction) {
   std::printf("pressed by %g m: %.5g N/m up (6 p delta = %.5g)\n", delta, f[1], 6 * p * delta);
   EXPECT_NEAR(f[1], 6 * p * delta, 0.05 * 6 * p * delta);
   // Slide to +x at 10 m/s while pressed: the spring saturates at mu F_n.
-  const double mu = std::tan(25 * 3.14159265358979323846 / 180);
+  const double mu = std::tan(25 * kPi / 180);
   for (int i = 0; i < 50; ++i) {  // 10 m/s: the velocity reset never reverses it
     place_top(e, in, 1e-4 + 10 * e.dt() * i, -delta, 10);
     e.step();

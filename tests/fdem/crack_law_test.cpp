@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include "rockfdem/fdem/constants.hpp"
 #include "test_models.hpp"
 
 namespace rockfdem::fdem {
@@ -74,7 +75,7 @@ TEST(CrackLaw, rock_shear_strength_follows_mohr_coulomb) {
   const CrackConstants k = make_crack_constants(m);
   const double h = 0.01, o = -1e-7;  // closed: sigma = pn o / h
   const double sigma = k.pn * o / h;
-  const double fs = m.cohesion - sigma * std::tan(m.friction_deg * M_PI / 180);
+  const double fs = m.cohesion - sigma * std::tan(m.friction_deg * kPi / 180);
   double damage = 0;
   const CrackPoint p = crack_point(k, o, 2 * h * fs / k.pt, h, damage);  // s = sp: peak
   EXPECT_NEAR(p.sigma, sigma, 1e-6 * std::fabs(sigma));

@@ -12,6 +12,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "rockfdem/fdem/constants.hpp"
 #include "rockfdem/fdem/crack_law.hpp"
 #include "test_models.hpp"
 
@@ -203,7 +204,7 @@ TEST(EnergyBalance, damping_dissipates_what_the_vibration_loses) {
     for (std::size_t n = 0; n < e.n_nodes(); ++n) {
       const int v = e.node_vertex()[n];
       const double x = in.x[v], y = in.y[v];
-      e.set_node_state(n, x, y, 0.5 * std::sin(M_PI * x / 0.2) + 0.4 * std::sin(6 * M_PI * x / 0.2),
+      e.set_node_state(n, x, y, 0.5 * std::sin(kPi * x / 0.2) + 0.4 * std::sin(6 * kPi * x / 0.2),
                        0.05 * std::cos(17 * x / 0.2 + y));
     }
     const double e0 = e.kinetic_energy();  // at rest position: all kinetic
@@ -245,7 +246,7 @@ TEST(EnergyBalance, friction_dissipates_the_sliding_blocks_energy) {
     if (upper[n]) e.set_node_state(n, e.positions()[2 * n], e.positions()[2 * n + 1], v0, 0);
   const double k0 = e.kinetic_energy();
   const std::vector<double> y0 = e.positions();
-  const double t_stop = v0 / (g * std::tan(20 * M_PI / 180));
+  const double t_stop = v0 / (g * std::tan(20 * kPi / 180));
   e.run(std::lround(1.3 * t_stop / e.dt()));
   double gravity_work = 0;
   for (std::size_t n = 0; n < e.n_nodes(); ++n)

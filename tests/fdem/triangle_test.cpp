@@ -5,6 +5,7 @@
 
 #include <random>
 
+#include "rockfdem/fdem/constants.hpp"
 #include "test_models.hpp"
 
 namespace rockfdem::fdem {
@@ -146,14 +147,14 @@ TEST(Triangle, rigid_rotation_objectivity) {
   const double U[4] = {1.003, 0.001, 0.001, 0.998};
   place(e, in, U);
   const Stress s0 = e.triangle_stress(0);
-  const double q = M_PI / 2;
+  const double q = kPi / 2;
   const double RU[4] = {
       std::cos(q) * U[0] - std::sin(q) * U[2], std::cos(q) * U[1] - std::sin(q) * U[3],
       std::sin(q) * U[0] + std::cos(q) * U[2], std::sin(q) * U[1] + std::cos(q) * U[3]};
   place(e, in, RU);
   const Stress s1 = e.triangle_stress(0), expect = rotate(s0, q);
   for (int k = 0; k < 3; ++k) EXPECT_NEAR(s1[k], expect[k], 1e-9 * std::fabs(s0[0]));
-  for (double angle : {0.3, M_PI / 2, 2.5}) {
+  for (double angle : {0.3, kPi / 2, 2.5}) {
     const double R[4] = {std::cos(angle), -std::sin(angle), std::sin(angle), std::cos(angle)};
     place(e, in, R);
     const Stress s = e.triangle_stress(0);
@@ -172,7 +173,7 @@ TEST(Triangle, initial_stress_rotates_with_element) {
   Engine later(single_triangle(m));  // the same stress set after construction
   later.set_initial_stress(0, in.initial_stress[0]);
   for (int k = 0; k < 3; ++k) EXPECT_DOUBLE_EQ(later.triangle_stress(0)[k], s0[k]);
-  const double q = M_PI / 2;
+  const double q = kPi / 2;
   const double R[4] = {std::cos(q), -std::sin(q), std::sin(q), std::cos(q)};
   place(e, in, R);
   const Stress s1 = e.triangle_stress(0), expect = rotate(s0, q);

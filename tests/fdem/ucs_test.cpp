@@ -13,6 +13,7 @@
 // tensile strength, falls outside).
 #include <gtest/gtest.h>
 
+#include "rockfdem/fdem/constants.hpp"
 #include "test_models.hpp"
 
 namespace rockfdem::fdem {
@@ -33,7 +34,7 @@ TEST(Ucs, peak_strength_in_expected_band) {
     if (-s > peak) peak = -s, peak_step = e.step_count();
     if (e.step_count() > peak_step + 3000) break;  // well past the peak
   }
-  const double mc = 2 * m.cohesion * std::cos(M_PI / 6) / (1 - std::sin(M_PI / 6));
+  const double mc = 2 * m.cohesion * std::cos(kPi / 6) / (1 - std::sin(kPi / 6));
   std::printf("peak %.3f MPa (Mohr-Coulomb %.3f MPa) at step %ld, broken %ld\n", peak / 1e6,
               mc / 1e6, peak_step, e.broken_counts().total());
   EXPECT_GT(peak, 0.9 * mc);

@@ -1,6 +1,7 @@
 // Dynamics: wave speed and energy conservation of the undamped scheme.
 #include <gtest/gtest.h>
 
+#include "rockfdem/fdem/constants.hpp"
 #include "test_models.hpp"
 
 namespace rockfdem::fdem {
@@ -80,7 +81,7 @@ TEST(Wave, undamped_vibration_conserves_energy) {
     for (std::size_t n = 0; n < e.n_nodes(); ++n) {
       const int v = e.node_vertex()[n];
       const double x = in.x[v], y = in.y[v];
-      e.set_node_state(n, x, y, 0.5 * std::sin(M_PI * x / 0.2), 0.05 * std::cos(7 * x / 0.2 + y));
+      e.set_node_state(n, x, y, 0.5 * std::sin(kPi * x / 0.2), 0.05 * std::cos(7 * x / 0.2 + y));
     }
     const double e0 = test::energy_around_step(e);
     double worst = 0;

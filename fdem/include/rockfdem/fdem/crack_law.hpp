@@ -15,6 +15,7 @@
 #include <array>
 #include <cmath>
 
+#include "rockfdem/fdem/constants.hpp"
 #include "rockfdem/fdem/model_input.hpp"
 
 namespace rockfdem::fdem {
@@ -112,7 +113,6 @@ inline CrackConstants make_crack_constants(const Material& m) {
     const double integral = rock_softening_integral();
     k.ft = m.tensile_strength;
     k.c = m.cohesion;
-    constexpr double kPi = 3.14159265358979323846;  // M_PI is not standard C++
     k.tan_phi = std::tan(m.friction_deg * kPi / 180.0);
     k.open_range = m.gf_I / (integral * m.tensile_strength);
     k.slip_energy = m.gf_II / integral;

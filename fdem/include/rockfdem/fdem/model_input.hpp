@@ -143,7 +143,8 @@ struct ModelInput {
   std::vector<Material> materials;
   Plane plane = Plane::kStrain;
 
-  // State handed over by the implicit in-situ stage.
+  // Initial state. The implicit in-situ stage hands over the stress alone,
+  // on the undeformed mesh (its displacements are not passed on).
   std::vector<std::array<double, 3>>
       initial_stress;  ///< per triangle (sxx, syy, sxy) [Pa], tension positive
   std::vector<std::array<double, 2>>
