@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "interrupt.hpp"
 #include "output_dir.hpp"
@@ -126,7 +127,6 @@ double key_point_span(const std::vector<Monitor>& ms) {
 // means differed by 2x with no trend.
 constexpr std::size_t kWindow = 10;
 constexpr double kAccelerating = 1.5;  ///< last / before above this: accelerating
-constexpr double kNotSlowing = 0.9;    ///< last / before above this: not slowing down
 
 // last / before, or 0 while fewer than 2 kWindow outputs are known.
 double trend(const std::vector<double>& rates) {
@@ -139,6 +139,18 @@ double trend(const std::vector<double>& rates) {
   return before > 0 ? last / before : 0.0;
 }
 
+// What the key points still move if their rate keeps falling by the trend
+// r per window: the geometric series d r / (1 - r) of the last window's
+// move d [m]; unbounded when the rate does not fall.
+double remaining_move(const std::vector<double>& rates, double r, long every_steps) {
+  if (rates.size() < kWindow) return 0.0;
+  if (r >= 1) return std::numeric_limits<double>::infinity();
+  double per_1000 = 0;
+  for (std::size_t i = rates.size() - kWindow; i < rates.size(); ++i) per_1000 += rates[i];
+  const double window_move = per_1000 * double(every_steps) / 1000.0;
+  return window_move * r / (1 - r);
+}
+
 }  // namespace
 
 bool StageRunner::unstable(const StageSpec& stage, bool criteria) {
@@ -146,30 +158,41 @@ bool StageRunner::unstable(const StageSpec& stage, bool criteria) {
   if (cursor_.rates.size() > 2 * kWindow) cursor_.rates.erase(cursor_.rates.begin());
   const auto [name, u] = out_.largest_key_point(engine_, monitors_);
   const double span = key_point_span(monitors_);
-  const bool beyond = span > 0 && u > stage.unstable_fraction * span;
+  const double limit = stage.unstable_fraction * span;
+  const bool beyond = span > 0 && u > limit;
   // Both trends count only once the stage is 2 kWindow outputs old (past
   // its first transient). Accelerating while far from settled is a
-  // collapse under way. Not slowing down while the forces are balanced
-  // (ratio met, settle not) is a mechanism flowing at the limit of
-  // equilibrium, as explicit codes read a steady velocity field at a low
-  // unbalanced-force ratio: the ground is not arresting it.
+  // collapse under way. With the forces balanced (ratio met, settle not),
+  // a rate that does not fall fast enough to stop within the limit is a
+  // mechanism flowing at the limit of equilibrium, as explicit codes read
+  // a steady velocity field at a low unbalanced-force ratio: projected
+  // forward at its trend, the motion passes the span fraction (or never
+  // stops).
   const double r = trend(cursor_.rates);
   const bool speeding = r > kAccelerating && last_settle_ > 10 * stage.settle;
-  const bool flowing = criteria && r > kNotSlowing && last_settle_ > stage.settle &&
-                       engine_.unbalanced_force_ratio() < stage.ratio;
+  const double projected = u + remaining_move(cursor_.rates, r, stage.every_steps);
+  const bool flowing = criteria && r > 0 && last_settle_ > stage.settle &&
+                       engine_.unbalanced_force_ratio() < stage.ratio && span > 0 &&
+                       projected > limit;
   if (!beyond && !speeding && !flowing) return false;
-  const char* why = beyond     ? ""
-                    : speeding ? ", faster over the last 10 outputs than over the 10 before"
-                               : ", as fast over the last 10 outputs as over the 10 before "
-                                 "with the forces balanced: a mechanism flowing";
-  char msg[700];
+  char projection[200] = "";
+  if (flowing && !beyond && !speeding && std::isfinite(projected))
+    std::snprintf(projection, sizeof projection,
+                  "; with the forces balanced, at that trend it would stop only after %.0f mm, "
+                  "beyond the limit: a mechanism flowing",
+                  1000 * projected);
+  else if (flowing && !beyond && !speeding)
+    std::snprintf(projection, sizeof projection,
+                  "; with the forces balanced and the rate not falling: a mechanism flowing");
+  char msg[800];
   std::snprintf(msg, sizeof msg,
                 "stage '%s', step %ld: key point %s has moved %.0f mm (%.3g of the span %.2f m; "
                 "limit %g) and %s moves %.3g mm per 1000 steps (%.2f times the rate of the 10 "
-                "outputs before)%s: the opening is closing, not stabilising",
+                "outputs before)%s%s: the opening is closing, not stabilising",
                 stage.kind.c_str(), engine_.step_count(), name.c_str(), 1000 * u,
                 span > 0 ? u / span : 0.0, span, stage.unstable_fraction, moving_most_.c_str(),
-                1000 * last_rate_, r, why);
+                1000 * last_rate_, r,
+                speeding && !beyond ? ", accelerating" : "", projection);
   unstable_ = {"unstable", msg};
   return true;
 }
