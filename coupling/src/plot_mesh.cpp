@@ -138,13 +138,30 @@ vtkSmartPointer<vtkActor> crack_actor(const VtkGrid& grid, double lift) {
   return actor;
 }
 
-// Looks straight down z with a parallel projection just large enough for
-// the grid's bounding box in a viewport of the given pixel size.
-void fit_camera(vtkRenderer* renderer, const VtkGrid& grid, double view_w, double view_h) {
+// The grid's bounding box.
+MeshView whole(const VtkGrid& grid) {
   const auto [x0, x1] = std::minmax_element(grid.x.begin(), grid.x.end());
   const auto [y0, y1] = std::minmax_element(grid.y.begin(), grid.y.end());
-  const double cx = 0.5 * (*x0 + *x1), cy = 0.5 * (*y0 + *y1);
-  const double half_w = 0.5 * (*x1 - *x0), half_h = 0.5 * (*y1 - *y0);
+  return {*x0, *x1, *y0, *y1};
+}
+
+// NaN for the triangles whose centroid lies outside `v`: the colour scale
+// then spans what the picture shows.
+std::vector<double> inside_only(const VtkGrid& grid, std::vector<double> values, const MeshView& v) {
+  for (std::size_t t = 0; t < grid.n_triangles(); ++t) {
+    const auto& tri = grid.triangles[t];
+    const double cx = (grid.x[tri[0]] + grid.x[tri[1]] + grid.x[tri[2]]) / 3;
+    const double cy = (grid.y[tri[0]] + grid.y[tri[1]] + grid.y[tri[2]]) / 3;
+    if (cx < v.x0 || cx > v.x1 || cy < v.y0 || cy > v.y1) values[t] = std::nan("");
+  }
+  return values;
+}
+
+// Looks straight down z with a parallel projection just large enough for
+// the window `v` in a viewport of the given pixel size.
+void fit_camera(vtkRenderer* renderer, const MeshView& v, double view_w, double view_h) {
+  const double cx = 0.5 * (v.x0 + v.x1), cy = 0.5 * (v.y0 + v.y1);
+  const double half_w = 0.5 * (v.x1 - v.x0), half_h = 0.5 * (v.y1 - v.y0);
   vtkCamera* camera = renderer->GetActiveCamera();
   camera->ParallelProjectionOn();
   camera->SetFocalPoint(cx, cy, 0.0);
@@ -210,7 +227,7 @@ const VtkArray& field_to_draw(const VtkGrid& grid, const std::string& name, int 
 
 bool render_mesh_png(const VtkGrid& grid, const std::string& cell_field, int component,
                      const std::string& path, const std::string& title, int width, int height,
-                     std::string* why) {
+                     std::string* why, const MeshView* view) {
   grid.validate();
   const VtkArray& field = field_to_draw(grid, cell_field, component);
   check_image_size(width, height);
@@ -222,13 +239,14 @@ bool render_mesh_png(const VtkGrid& grid, const std::string& cell_field, int com
   }
 
   const std::vector<double> values = triangle_values(grid, field, component);
-  const auto lut = blue_to_red(finite_range(values));
+  const MeshView shown = view ? *view : whole(grid);
+  const auto lut = blue_to_red(finite_range(view ? inside_only(grid, values, shown) : values));
 
   vtkNew<vtkRenderer> mesh;
   mesh->SetViewport(0.0, 0.0, kMeshRight, kMeshTop);
   mesh->SetBackground(1.0, 1.0, 1.0);
   mesh->AddActor(triangle_actor(grid, values, lut));
-  fit_camera(mesh, grid, kMeshRight * width, kMeshTop * height);
+  fit_camera(mesh, shown, kMeshRight * width, kMeshTop * height);
   const double lift = 1e-3 * mesh->GetActiveCamera()->GetParallelScale();
   mesh->AddActor(crack_actor(grid, lift));
   mesh->ResetCameraClippingRange();

@@ -24,7 +24,7 @@ const char* const kFixedNames[] = {
     "summary.json",      "history.csv",        "mesh.msh",           "mesh.vtu",
     "insitu.vtu",        "insitu.pvd",         "insitu_vs_analytic.csv", "fdem.pvd",
     "fdem_vs_continuum.csv", "grouted_cracks.csv", "convergence.png", "chord_convergence.png", "broken.png",
-    "ground_reaction.png", "final_mesh.png", "stress_strain.png"};
+    "ground_reaction.png", "final_mesh.png", "broken_zone.png", "stress_strain.png"};
 
 struct Numbered {
   const char *prefix, *suffix;

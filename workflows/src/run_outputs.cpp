@@ -129,6 +129,7 @@ void RunOutputs::begin_history(const std::vector<Monitor>& monitors, const mesh:
   boundary_vertices_.erase(std::unique(boundary_vertices_.begin(), boundary_vertices_.end()),
                            boundary_vertices_.end());
   for (const Monitor& mon : monitors) monitor_names_.push_back(mon.name);
+  monitors_ = monitors;
   std::vector<std::string> cols{"stage", "step", "time", "kinetic_energy", "unbalanced_ratio",
                                 "broken_I", "broken_II", "broken_mixed"};
   for (const Monitor& mon : monitors)
@@ -433,6 +434,16 @@ void RunOutputs::plots(const fdem::Engine& e, const mesh::Mesh& m) {
            "support pressure / in-situ stress", {{"vault", settlement, ratio}});
   plots.final_mesh(e, m, fields_.empty() ? nullptr : &fields_.back(), 1,
                    "Minor principal stress [Pa], broken cracks in black");
+  // The opening and its fracture zone, where the crack pattern shows.
+  const auto& z = summary_.json()["broken_zone"];
+  const double reach = z.is_object() ? z.value("fracture_zone_m", 0.0) + 1.0 : 0.0;
+  double x0 = 1e300, x1 = -1e300, y0 = 1e300, y1 = -1e300;
+  for (const Monitor& mon : monitors_)
+    x0 = std::min(x0, mon.x), x1 = std::max(x1, mon.x), y0 = std::min(y0, mon.y),
+    y1 = std::max(y1, mon.y);
+  if (reach > 1.0 && x0 < x1)
+    plots.broken_zone(e, m, fields_.empty() ? nullptr : &fields_.back(),
+                      {x0 - reach, x1 + reach, y0 - reach, y1 + reach});
 }
 
 }  // namespace rockfdem::workflows

@@ -85,6 +85,17 @@ void PlotWriter::final_mesh(const fdem::Engine& e, const mesh::Mesh& m,
        "final_mesh.png", why);
 }
 
+void PlotWriter::broken_zone(const fdem::Engine& e, const mesh::Mesh& m,
+                             const insitu::InsituField* implicit, const coupling::MeshView& view) {
+  std::string why;
+  note(coupling::render_mesh_png(broken_crack_grid(e, m, implicit), "principal_stress", 1,
+                                 output_path(dir_, "broken_zone.png"),
+                                 "Around the opening: most compressive principal stress [Pa], "
+                                 "broken cracks in black",
+                                 1000, 800, &why, &view),
+       "broken_zone.png", why);
+}
+
 std::string time_axis_label(const fdem::Engine& e) {
   // Scaled masses make the simulated time a pseudo-time: say so on the axis.
   return e.mass_scaling_report().enabled ? "pseudo-time [s] (mass-scaled)" : "time [s]";

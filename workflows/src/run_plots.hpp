@@ -32,6 +32,10 @@ class PlotWriter {
   /// excavated triangles grey. `implicit`: the implicit displacement to add.
   void final_mesh(const fdem::Engine& e, const mesh::Mesh& m, const insitu::InsituField* implicit,
                   int principal, const std::string& title);
+  /// broken_zone.png: the same picture in the window `view` (around the
+  /// opening and its fracture zone), where the crack pattern can be seen.
+  void broken_zone(const fdem::Engine& e, const mesh::Mesh& m,
+                   const insitu::InsituField* implicit, const coupling::MeshView& view);
 
  private:
   void note(bool rendered, const std::string& file, const std::string& why);

@@ -467,6 +467,8 @@ void read_stages(const Reader& r, Scene& s) {
     st.settle = r.number_or(p + ".settle", st.settle);
     st.hold = int(r.number_or(p + ".hold", st.hold));
     st.unstable_fraction = r.number_or(p + ".unstable_fraction", st.unstable_fraction);
+    if (r.has(p + ".stop_when_unstable"))
+      st.stop_when_unstable = r.boolean(p + ".stop_when_unstable");
     if (kind == "bolts") {
       if (!bolts) r.fail(p + ".kind", "the scene has no [[bolt]] or [[bolt_fan]]");
       if (bolted) r.fail(p + ".kind", "the bolts are installed once");

@@ -383,6 +383,10 @@ std::vector<KeySpec> build_schema() {
                      "stops the run as `unstable`: 0.05 of the span is a radial strain of "
                      "10% on a round opening, the threshold of extreme squeezing (Hoek and "
                      "Marinos 2000)."));
+  s.push_back(boolean("stages[].stop_when_unstable", "true",
+                      "Whether the run stops where the opening is found unstable; false runs "
+                      "on to the stage's cap (to watch the collapse), the status staying "
+                      "`unstable` with the first finding."));
   s.push_back(non_negative("stages[].time", "s", "0",
                            "Stop after this much simulated time in the stage (pseudo-time when "
                            "engine.mass_scaling is on, as it is for tunnels by default: prefer "

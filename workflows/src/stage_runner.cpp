@@ -193,7 +193,7 @@ bool StageRunner::unstable(const StageSpec& stage, bool criteria) {
                 span > 0 ? u / span : 0.0, span, stage.unstable_fraction, moving_most_.c_str(),
                 1000 * last_rate_, r,
                 speeding && !beyond ? ", accelerating" : "", projection);
-  unstable_ = {"unstable", msg};
+  if (unstable_.message.empty()) unstable_ = {"unstable", msg};  // the first finding stands
   return true;
 }
 
@@ -237,7 +237,7 @@ bool StageRunner::step_until(const StageSpec& stage, PhaseTimer& timer, long bro
       done = cursor_.held >= stage.hold;
     }
     progress.update(in_stage(), engine_.time() - t0);
-    if (!done && unstable(stage, broken_target == 0)) {
+    if (!done && unstable(stage, broken_target == 0) && stage.stop_when_unstable) {
       stopped_ = true;
       break;
     }
@@ -326,7 +326,7 @@ void StageRunner::run_all(PhaseTimer& timer) {
 }
 
 RunVerdict StageRunner::verdict() const {
-  if (stopped_) return unstable_;
+  if (!unstable_.message.empty()) return unstable_;
   // The last stage that stepped decides: its end is the state reported.
   for (auto it = report_.rbegin(); it != report_.rend(); ++it) {
     const nlohmann::json& r = *it;
@@ -367,6 +367,7 @@ nlohmann::json StageRunner::state() const {
           {"stage_first_step", cursor_.first}, {"stage_t0", cursor_.t0},
           {"stage_changes", cursor_.changes}, {"stage_monitor_u", cursor_.monitor_u},
           {"stage_held", cursor_.held}, {"stage_rates", cursor_.rates},
+          {"unstable", unstable_.message},
           {"alpha", alpha_},
           {"core_present", core_present_}, {"lining_installed", lining_installed_},
           {"report", report_}, {"last_checkpoint", engine_.step_count()}};
@@ -381,6 +382,8 @@ void StageRunner::restore(const nlohmann::json& s) {
   cursor_.monitor_u = s.at("stage_monitor_u").get<std::vector<double>>();
   cursor_.held = s.value("stage_held", 0);
   cursor_.rates = s.value("stage_rates", std::vector<double>{});
+  const std::string unstable = s.value("unstable", std::string());
+  if (!unstable.empty()) unstable_ = {"unstable", unstable};
   alpha_ = s.at("alpha").get<double>();
   core_present_ = s.at("core_present").get<bool>();
   lining_installed_ = s.at("lining_installed").get<bool>();

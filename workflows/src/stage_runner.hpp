@@ -120,7 +120,7 @@ class StageRunner {
   double last_settle_ = -1;   ///< settle_measure() of the stage's last interval; -1: none
   double last_rate_ = 0;      ///< the largest monitor move per 1000 steps then [m]
   std::string moving_most_;   ///< the monitor that moved most then
-  RunVerdict unstable_;       ///< set when a stage found the opening unstable
+  RunVerdict unstable_;       ///< the first finding that the opening is unstable
   bool stopped_ = false;      ///< an unstable opening ended the stages
   double stage_dt_ = 0;       ///< the dt of the stage's steps (one limit per stage)
   long last_checkpoint_ = 0;  ///< step of the last checkpoint (or of the start)

@@ -48,8 +48,16 @@ bool plot_xy_png(const std::string& title, const std::string& x_label, const std
 /// @return false (reason in *why) when rendering is not available; nothing written.
 /// @throws std::invalid_argument naming the field when it is missing or the
 ///         component is out of range; std::runtime_error naming `path`.
+/// A window of the model to draw [m]: x0 < x1, y0 < y1.
+struct MeshView {
+  double x0 = 0, x1 = 0, y0 = 0, y1 = 0;
+};
+
+/// With a `view`, the picture shows that window and the colour scale spans
+/// the triangles whose centroid lies in it; without, the whole grid.
 bool render_mesh_png(const VtkGrid& grid, const std::string& cell_field, int component,
                      const std::string& path, const std::string& title, int width = 1000,
-                     int height = 800, std::string* why = nullptr);
+                     int height = 800, std::string* why = nullptr,
+                     const MeshView* view = nullptr);
 
 }  // namespace rockfdem::coupling

@@ -83,6 +83,9 @@ struct StageSpec {
   /// A monitor displaced by more than this fraction of the opening's span
   /// makes the run unstable (the opening is closing, not stabilising).
   double unstable_fraction = 0.05;
+  /// Whether finding the opening unstable ends the run there; false runs
+  /// on to the cap, the status stays unstable with the first finding.
+  bool stop_when_unstable = true;
 };
 
 /// Local damping of tunnel stages when engine.local_damping is not given.
