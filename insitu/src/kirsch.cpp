@@ -141,15 +141,4 @@ KirschComparison compare_kirsch(const mesh::Mesh& mesh, const InsituField& field
   return out;
 }
 
-KirschComparison compare_kirsch(const mesh::Mesh& mesh, const InsituField& field, double a,
-                                double sH, double sV, double nu, double E) {
-  KirschCase k;
-  k.a = a;
-  k.sH = sH;
-  k.sV = sV;
-  k.nu = nu;
-  k.E = E;
-  return compare_kirsch(mesh, field, k);
-}
-
 }  // namespace rockfdem::insitu

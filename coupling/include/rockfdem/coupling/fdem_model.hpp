@@ -20,9 +20,10 @@ namespace rockfdem::coupling {
 fdem::ModelInput model_input(const mesh::Mesh& m, const std::map<int, fdem::Material>& by_zone,
                              fdem::Plane plane);
 
-/// The implicit field as the engine's initial state: per-triangle stress
-/// and per-vertex displacement (the displaced configuration is the
-/// reference the engine measures strain from).
+/// The implicit field as the engine's initial state: its per-triangle
+/// stress. The engine starts on the undeformed mesh (the linear implicit
+/// solution is in equilibrium there); the implicit displacement is added
+/// back at output (fdem_grid's `implicit`, the key points).
 void apply_insitu(const insitu::InsituField& field, fdem::ModelInput& in);
 
 /// The engine's state: its own nodes (duplicated where cracks may open) with

@@ -236,8 +236,4 @@ struct KirschComparison {
 KirschComparison compare_kirsch(const mesh::Mesh& mesh, const InsituField& field,
                                 const KirschCase& k);
 
-/// The same with the argument list of the issue (angle 0).
-KirschComparison compare_kirsch(const mesh::Mesh& mesh, const InsituField& field, double a,
-                                double sH, double sV, double nu, double E);
-
 }  // namespace rockfdem::insitu
