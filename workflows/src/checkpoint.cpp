@@ -305,6 +305,7 @@ class RunStateCheck {
     // Optional: checkpoints from before they were kept lack them.
     if (s.contains("stage_held")) integer(s["stage_held"], at + ".stage_held");
     if (s.contains("stage_rates")) numbers(s["stage_rates"], at + ".stage_rates");
+    if (s.contains("unstable")) string(s["unstable"], at + ".unstable");
     number(member(s, at, "alpha"), at + ".alpha");
     boolean(member(s, at, "core_present"), at + ".core_present");
     boolean(member(s, at, "lining_installed"), at + ".lining_installed");
