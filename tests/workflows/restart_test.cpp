@@ -433,6 +433,8 @@ TEST(CheckpointRead, forged_run_states_name_the_checkpoint_and_the_field) {
     std::string expect;
   };
   const nlohmann::json removed;  // null
+  nlohmann::json deep = 1;       // 1,000 arrays deep (a written run state nests 5)
+  for (int i = 0; i < 1000; ++i) deep = nlohmann::json::array({std::move(deep)});
   const std::vector<Case> cases = {
       {"", nlohmann::json::object(), "field 'stages' is missing (expected an object)"},
       {"/stages/stage_index", "3", "field 'stages.stage_index' = \"3\" is not a stage index"},
@@ -465,6 +467,7 @@ TEST(CheckpointRead, forged_run_states_name_the_checkpoint_and_the_field) {
       {"/bolts/installed_stress", nlohmann::json::array({nlohmann::json::array()}),
        "field 'bolts.installed_stress' = [[]] is not an array of 2 entries, one per bolt"},
       {"/start_ratio", "0.2", "field 'start_ratio' = \"0.2\" is not a number"},
+      {"/stages/stage_changes/deep", deep, "nested more than 32 levels deep"},
   };
   for (const Case& c : cases) {
     nlohmann::json run = valid_run_state();

@@ -194,6 +194,12 @@ class RunStateCheck {
 
   void all(const json& run) {
     object(run, "run state");
+    // nlohmann parses without recursion but dumps (the summary, a message)
+    // with it: a run state nested deeper than any the writer makes is
+    // refused before anything dumps it.
+    if (nesting(run) > kMaxNesting)
+      refuse(path_, "corrupt run state: nested more than " + std::to_string(kMaxNesting) +
+                        " levels deep (a written run state nests 5); use the previous checkpoint");
     stages(member(run, "", "stages"));
     outputs(member(run, "", "outputs"));
     bolts(member(run, "", "bolts"));
@@ -213,6 +219,23 @@ class RunStateCheck {
 
   // A value for a message: JSON with every control character and non-ASCII
   // byte escaped, cut to 60 characters.
+  static constexpr std::size_t kMaxNesting = 32;
+
+  // The deepest nesting of arrays and objects in `v`, without recursion.
+  static std::size_t nesting(const json& v) {
+    std::size_t deepest = 0;
+    std::vector<std::pair<const json*, std::size_t>> todo{{&v, 1}};
+    while (!todo.empty()) {
+      const auto [node, depth] = todo.back();
+      todo.pop_back();
+      if (!node->is_structured()) continue;
+      deepest = std::max(deepest, depth);
+      if (depth > kMaxNesting) break;
+      for (const json& child : *node) todo.push_back({&child, depth + 1});
+    }
+    return deepest;
+  }
+
   static std::string shown(const json& v) {
     std::string text = v.dump(-1, ' ', true, json::error_handler_t::replace);
     if (text.size() > 60) text = text.substr(0, 57) + "...";
