@@ -3,10 +3,14 @@
 // such a file is that it declares more nodes than gmsh ends up holding.
 #include "msh_header.hpp"
 
+#include <algorithm>
 #include <cerrno>
 #include <climits>
+#include <cstdint>
 #include <cstdlib>
 #include <fstream>
+#include <limits>
+#include <optional>
 #include <sstream>
 #include <string>
 
@@ -71,6 +75,164 @@ std::optional<std::string> tag_out_of_int_range(const std::string& path) {
     }
   }
   return std::nullopt;
+}
+
+namespace {
+
+// Every node, element or entity takes at least 2 bytes of text: a digit and
+// a separator. A count above (bytes left) / 2 cannot be what the file holds.
+constexpr std::uint64_t kMinBytesPerItem = 2;
+
+// Scans the counts of an ASCII .msh (count_beyond_file).
+class CountScan {
+ public:
+  explicit CountScan(const std::string& path) : in_(path, std::ios::binary) {
+    in_.seekg(0, std::ios::end);
+    size_ = in_ ? std::uint64_t(in_.tellg()) : 0;
+    in_.seekg(0);
+  }
+
+  std::optional<std::string> first_problem() {
+    std::string line;
+    while (!problem_ && std::getline(in_, line)) {
+      while (!line.empty() && (line.back() == '\r' || line.back() == ' ')) line.pop_back();
+      if (line.rfind("$MeshFormat", 0) == 0) {
+        if (!std::getline(in_, line)) return std::nullopt;
+        int file_type = -1;
+        std::istringstream(line) >> version_ >> file_type;
+        if (file_type != 0) return std::nullopt;  // binary: counts are not text
+      } else if (line == "$Nodes" || line == "$NOD") {
+        section("$Nodes", "nodes", version_ >= 4 ? 4 : 0, &CountScan::skip_node_block);
+      } else if (line == "$Elements" || line == "$ELM") {
+        section("$Elements", "elements", version_ >= 4 ? 4 : 0, &CountScan::skip_element_block);
+      } else if (line == "$Entities") {
+        entities();
+      }
+    }
+    return problem_;
+  }
+
+ private:
+  using BlockSkip = bool (CountScan::*)(const std::string (&)[4], std::uint64_t n);
+
+  std::uint64_t left() {
+    const auto at = in_.tellg();
+    return at < 0 ? 0 : size_ - std::uint64_t(at);
+  }
+
+  // A count token: false (and no count) when it is not a whole number,
+  // which gmsh's own reader answers.
+  bool count_of(const std::string& token, const std::string& where, const std::string& what,
+                std::uint64_t& n) {
+    if (token.empty()) return false;
+    if (token[0] == '-' && token.size() > 1 &&
+        token.find_first_not_of("0123456789", 1) == std::string::npos) {
+      problem_ = where + " declares " + token + " " + what +
+                 "; a count must be a whole number of 0 or more";
+      return false;
+    }
+    if (token.find_first_not_of("0123456789") != std::string::npos) return false;
+    errno = 0;
+    n = std::strtoull(token.c_str(), nullptr, 10);
+    if (errno == ERANGE) n = std::numeric_limits<std::uint64_t>::max();
+    return true;
+  }
+
+  // Whether `n` items fit the bytes after the current position.
+  bool fits(const std::string& where, std::uint64_t n, const std::string& what) {
+    const std::uint64_t bytes = left();
+    if (n <= bytes / kMinBytesPerItem) return true;
+    problem_ = where + " declares " + std::to_string(n) + " " + what + ", but the " +
+               std::to_string(bytes) + " bytes after it can hold at most " +
+               std::to_string(bytes / kMinBytesPerItem) + " (each takes at least " +
+               std::to_string(kMinBytesPerItem) + "); the count must be the number of " + what +
+               " the section lists";
+    return false;
+  }
+
+  // A $Nodes or $Elements section: MSH 1 and 2 give the total alone; MSH 4
+  // the number of blocks and the total, then each block's count in its
+  // header, which the walk checks and adds up.
+  void section(const std::string& name, const std::string& what, int header_words, BlockSkip skip) {
+    std::string line;
+    if (!std::getline(in_, line)) return;
+    const std::string where = "the " + name + " section";
+    std::istringstream words(line);
+    std::string first, second;
+    words >> first >> second;
+    std::uint64_t n_blocks = 0, total = 0;
+    if (header_words == 0) {  // MSH 1 and 2: the total
+      if (count_of(first, where, what, total)) fits(where, total, what);
+      return;
+    }
+    if (!count_of(first, where, "blocks", n_blocks) || !count_of(second, where, what, total))
+      return;
+    if (!fits(where, n_blocks, "blocks") || !fits(where, total, what)) return;
+    std::uint64_t sum = 0;
+    for (std::uint64_t b = 0; b < n_blocks; ++b) {
+      std::string head[4];
+      for (std::string& w : head) in_ >> w;
+      std::uint64_t n = 0;
+      const std::string block = "block " + std::to_string(b + 1) + " of " + where;
+      if (!in_ || !count_of(head[3], block, what, n)) return;  // gmsh answers a malformed block
+      if (!fits(block, n, what)) return;
+      sum += n;
+      if (!(this->*skip)(head, n)) return;
+    }
+    if (sum != total)
+      problem_ = where + " declares " + std::to_string(total) + " " + what + ", but its " +
+                 std::to_string(n_blocks) + " blocks hold " + std::to_string(sum) +
+                 "; the count must be the sum of the blocks' counts";
+  }
+
+  // A node block: n tags and n coordinate triples (with the entity's
+  // dimension in parametric coordinates more), read as gmsh reads them, by
+  // token.
+  bool skip_node_block(const std::string (&head)[4], std::uint64_t n) {
+    // MSH 4.1: dim tag parametric n; MSH 4.0: tag dim parametric n.
+    const std::string& dim = version_ >= 4.1 ? head[0] : head[1];
+    const int extra = head[2] != "0" ? std::atoi(dim.c_str()) : 0;
+    const std::uint64_t per_node = 4 + std::uint64_t(std::max(0, std::min(extra, 3)));
+    std::string token;
+    for (std::uint64_t k = 0; k < n * per_node; ++k)
+      if (!(in_ >> token)) return false;
+    return true;
+  }
+
+  // An element block: one line per element, as gmsh reads them.
+  bool skip_element_block(const std::string (&)[4], std::uint64_t n) {
+    std::string line;
+    std::getline(in_, line);  // the rest of the block's header line
+    for (std::uint64_t k = 0; k < n; ++k)
+      if (!std::getline(in_, line)) return false;
+    return true;
+  }
+
+  // MSH 4: the numbers of points, curves, surfaces and volumes.
+  void entities() {
+    std::string line;
+    if (!std::getline(in_, line)) return;
+    std::istringstream words(line);
+    static const char* const kinds[4] = {"points", "curves", "surfaces", "volumes"};
+    for (const char* kind : kinds) {
+      std::string token;
+      std::uint64_t n = 0;
+      const std::string what = std::string("entity ") + kind;
+      if (!(words >> token) || !count_of(token, "the $Entities section", what, n)) return;
+      if (!fits("the $Entities section", n, what)) return;
+    }
+  }
+
+  std::ifstream in_;
+  std::uint64_t size_ = 0;
+  double version_ = 0;
+  std::optional<std::string> problem_;
+};
+
+}  // namespace
+
+std::optional<std::string> count_beyond_file(const std::string& path) {
+  return CountScan(path).first_problem();
 }
 
 }  // namespace rockfdem::mesh::detail

@@ -23,4 +23,15 @@ bool starts_as_msh(const std::string& path);
 /// int, so such a number crashes its reader (found by tests/fuzz/fuzz_msh).
 std::optional<std::string> tag_out_of_int_range(const std::string& path);
 
+/// In an ASCII .msh, the first count that the file cannot hold, as
+/// "the $Nodes section declares 999999999999 nodes, but ...": a total in a
+/// $Nodes, $Elements or $Entities header, or an MSH 4 block's count, above
+/// what the bytes after it can hold (every node, element or entity takes at
+/// least 2), or an MSH 4 total that is not the sum of its blocks' counts.
+/// gmsh 4.8 allocates by the declared total before it reads a node (a huge
+/// one ends in std::bad_alloc) and fills that allocation with whatever the
+/// blocks hold (past its end when they hold more). nullopt when every count
+/// fits (or the file is binary).
+std::optional<std::string> count_beyond_file(const std::string& path);
+
 }  // namespace rockfdem::mesh::detail

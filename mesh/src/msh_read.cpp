@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstdint>
 #include <fstream>
+#include <new>
 #include <numeric>
 #include <set>
 #include <string>
@@ -37,11 +38,23 @@ struct Reader {
     if (!detail::starts_as_msh(spec.path))
       fail("does not start with $MeshFormat (or $NOD); give a gmsh .msh mesh file (gmsh "
            "reads other text as a .geo script, which is never run here)");
+    if (const auto bad = detail::count_beyond_file(spec.path))
+      fail(*bad + " (refused before gmsh reads it)");
     if (const auto bad = detail::tag_out_of_int_range(spec.path))
       fail(*bad + " is not a node, element or entity tag gmsh can read; tags in $Elements "
            "and $Periodic must be integers from 0 to 2147483647");
     detail::gmsh_guarded(spec.path + ": not a readable gmsh mesh", detail::GmshFailure::kInput,
-                         [&] { gmsh::open(spec.path); });
+                         [&] {
+                           // A backstop for what count_beyond_file cannot see
+                           // (binary counts): gmsh allocates by a declared count.
+                           try {
+                             gmsh::open(spec.path);
+                           } catch (const std::bad_alloc&) {
+                             fail(
+                                 "gmsh ran out of memory reading it: a count in the file is "
+                                 "larger than the file holds; give a complete gmsh .msh file");
+                           }
+                         });
     std::string last;
     gmsh::logger::getLastError(last);
     if (!last.empty()) fail("not a readable gmsh mesh: " + last);

@@ -198,6 +198,47 @@ TEST(MshUserFile, negative_node_tag_is_refused) {
   expect_refused("rockfdem_negtag.msh", msh4_triangle("-7"), "from 0 to 2147483647");
 }
 
+// A count in a section header is checked against what the rest of the file
+// can hold before gmsh sees it: gmsh 4.8 allocates by the declared count
+// first, so $Nodes claiming 999,999,999,999 nodes ended in std::bad_alloc
+// (exit 1, no file named), and an MSH 4 total below its blocks' counts
+// made it write past its allocation.
+TEST(MshUserFile, node_count_beyond_the_file_is_refused) {
+  expect_refused("rockfdem_hugenodes.msh",
+                 square_msh("999999999999\n1 0 0 0\n2 1 0 0\n3 1 1 0\n4 0 1 0\n", kElements),
+                 "the $Nodes section declares 999999999999 nodes, but the");
+}
+
+TEST(MshUserFile, element_count_beyond_the_file_is_refused) {
+  expect_refused("rockfdem_hugeelements.msh",
+                 square_msh(kNodes, "88888888888\n1 1 2 1 1 1 2\n2 2 2 7 1 1 2 3\n"),
+                 "the $Elements section declares 88888888888 elements");
+}
+
+TEST(MshUserFile, msh4_counts_beyond_the_file_are_refused) {
+  const std::string good = msh4_triangle("3");
+  const auto with = [&](const std::string& from, const std::string& to) {
+    std::string text = good;
+    text.replace(text.find(from), from.size(), to);
+    return text;
+  };
+  expect_refused("rockfdem_msh4_total.msh",
+                 with("$Nodes\n1 3 1 3\n", "$Nodes\n1 999999999999 1 3\n"),
+                 "the $Nodes section declares 999999999999 nodes");
+  expect_refused("rockfdem_msh4_block.msh", with("2 1 0 3\n", "2 1 0 77777777777\n"),
+                 "block 1 of the $Nodes section declares 77777777777 nodes");
+  expect_refused("rockfdem_msh4_sum.msh", with("$Nodes\n1 3 1 3\n", "$Nodes\n1 2 1 3\n"),
+                 "the $Nodes section declares 2 nodes, but its 1 blocks hold 3");
+  expect_refused("rockfdem_msh4_elements.msh",
+                 with("$Elements\n1 1 1 1\n", "$Elements\n1 5555555555 1 1\n"),
+                 "the $Elements section declares 5555555555 elements");
+  expect_refused("rockfdem_msh4_entities.msh",
+                 with("$Nodes\n", "$Entities\n0 0 444444444444 0\n$EndEntities\n$Nodes\n"),
+                 "the $Entities section declares 444444444444 entity surfaces");
+  expect_refused("rockfdem_msh4_negative.msh", with("2 1 0 3\n", "2 1 0 -3\n"),
+                 "declares -3 nodes");
+}
+
 // Found by tests/fuzz/fuzz_msh: gmsh::open reads a file that does not start
 // as a mesh as a .geo script, and a script can run shell commands. Such a
 // file is refused before gmsh sees it, and its command never runs.

@@ -4,21 +4,32 @@
 // SIGTERM writes outputs and a checkpoint and exits 143; SIGKILL at any
 // moment leaves a readable checkpoint; bad checkpoints are refused with
 // exit 2 and nothing written.
+#include <fcntl.h>
 #include <gtest/gtest.h>
 #include <signal.h>
+#include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
 #include <algorithm>
 #include <chrono>
+#include <cstring>
 #include <filesystem>
+#include <future>
 #include <thread>
 #include <vector>
 
+#include "checkpoint.hpp"
 #include "cli_runner.hpp"
+#include "rockfdem/error.hpp"
+#include "rockfdem/workflows/scene.hpp"
 
 namespace fs = std::filesystem;
 using namespace rockfdem::test;
+using rockfdem::InputError;
+using rockfdem::workflows::Checkpoint;
+using rockfdem::workflows::read_checkpoint;
+using rockfdem::workflows::write_checkpoint;
 
 namespace {
 
@@ -70,6 +81,76 @@ bool wait_for(Pred ready) {
 std::size_t history_rows(const fs::path& run_dir) {
   const std::string h = read_text(run_dir / "history.csv");
   return h.empty() ? 0 : std::count(h.begin(), h.end(), '\n') - 1;
+}
+
+}  // namespace
+
+// ---- Bounded checkpoint reads -----------------------------------------------
+// read_checkpoint refuses what is not a regular file before opening it for
+// reading, checks the header's declared sizes against the file's size
+// before reading the body, and checks the run state's structure before
+// anything restores it. It used to read the whole file first: /dev/urandom
+// grew without bound, a FIFO hung, a 1 GiB sparse file took 15 s and 3.3 GB
+// before the refusal; and a run state forged to {} (checksum recomputed)
+// exited 1 with nlohmann's raw out_of_range.
+namespace {
+
+const rockfdem::workflows::Scene& restart_scene() {
+  static const rockfdem::workflows::Scene s = rockfdem::workflows::load_scene(kScene);
+  return s;
+}
+
+std::string refusal(const std::string& path) {
+  try {
+    read_checkpoint(path, restart_scene());
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+// A run state as run_tunnel.cpp writes one: one finished stage, one frame, one bolt.
+nlohmann::json valid_run_state() {
+  const nlohmann::json report = {
+      {"kind", "equilibrium"},
+      {"changes", nlohmann::json::object()},
+      {"steps", 400},
+      {"simulated_time", 0.01},
+      {"dt", 2.5e-5},
+      {"unbalanced_ratio", 1e-4},
+      {"settle", nullptr},
+      {"converged", true},
+      {"max_steps", 5000},
+      {"criteria", {{"ratio", 1e-3}, {"settle", 1e-3}, {"hold", 3}, {"unstable_fraction", 0.1}}},
+      {"moving_most", {{"key_point", "crown"}, {"mm_per_1000_steps", 0.5}}},
+      {"support_pressure_ratio", 0.0}};
+  return {{"stages",
+           {{"stage_index", 1},
+            {"stage_started", true},
+            {"stage_first_step", 401},
+            {"stage_t0", 0.01},
+            {"stage_changes", nlohmann::json::object()},
+            {"stage_monitor_u", {0.0, 1e-4}},
+            {"stage_held", 0},
+            {"stage_rates", {0.1, 0.2}},
+            {"alpha", 0.5},
+            {"core_present", false},
+            {"lining_installed", true},
+            {"report", nlohmann::json::array({report})},
+            {"last_checkpoint", 800},
+            {"unstable", ""}}},
+          {"outputs",
+           {{"history", {{0.0, 1.0}, {1.0, 2.0}}},
+            {"stages", {"handoff", "equilibrium"}},
+            {"frames", nlohmann::json::array({nlohmann::json::array({0.01, "fdem_0000.vtu"})})},
+            {"handoff_dt", 2.5e-5},
+            {"max_rotation_deg", 0.0}}},
+          {"bolts",
+           {{"installed", {1, 0}},
+            {"installed_stress",
+             nlohmann::json::array({nlohmann::json::array({nlohmann::json::array({1.0, 2.0, 3.0})}),
+                                    nlohmann::json::array()})}}},
+          {"start_ratio", 0.2}};
 }
 
 }  // namespace
@@ -166,6 +247,26 @@ TEST_F(Restart, refuses_truncated_corrupt_foreign_and_other_version_checkpoints)
   fs::remove_all(dir);
 }
 
+// A checkpoint whose run state is {} with a recomputed checksum (the
+// issue's forgery): exit 2 naming the file and the field, nothing written.
+TEST_F(Restart, forged_empty_run_state_is_refused_with_exit_2) {
+  const Checkpoint good =
+      read_checkpoint(checkpoints(*reference_dir_).back().string(), restart_scene());
+  const fs::path dir = scratch("restart-forged");
+  const std::string forged = write_checkpoint(dir.string(), 1, restart_scene(),
+                                              {nlohmann::json::object(), good.engine_state});
+  const fs::path out = dir / "out";
+  const Result r = run("run " + kScene + " -q --restart " + forged + " -o " + out.string());
+  EXPECT_EQ(r.code, 2) << r.output;
+  EXPECT_NE(
+      r.output.find("checkpoint " + forged + ": corrupt run state: field 'stages' is missing"),
+      std::string::npos)
+      << r.output;
+  EXPECT_EQ(r.output.find("json.exception"), std::string::npos) << r.output;
+  EXPECT_FALSE(fs::exists(out)) << "nothing written";
+  fs::remove_all(dir);
+}
+
 TEST_F(Restart, sigterm_writes_outputs_and_a_checkpoint_then_exit_143_and_restarts) {
   const fs::path out = scratch("restart-sigterm");
   const pid_t pid = spawn("run " + kScene + " -q -j 2 -o " + out.string(), out.string() + ".log");
@@ -242,4 +343,147 @@ TEST_F(Restart, second_sigint_exits_at_once_leaving_complete_files) {
   fs::remove_all(again);
   fs::remove_all(out);
   fs::remove(out.string() + ".log");
+}
+
+TEST(CheckpointRead, fifo_is_refused_without_blocking) {
+  const fs::path dir = scratch("ckpt-fifo");
+  fs::create_directories(dir);
+  const std::string fifo = (dir / "checkpoint.rfck").string();
+  ASSERT_EQ(mkfifo(fifo.c_str(), 0600), 0) << std::strerror(errno);
+  restart_scene();
+  auto reading = std::async(std::launch::async, [&] { return refusal(fifo); });
+  if (reading.wait_for(std::chrono::seconds(10)) != std::future_status::ready) {
+    ADD_FAILURE() << "read_checkpoint blocked on a FIFO";
+    // Unblock it: a writer that opens and closes gives the reader an end of file.
+    while (reading.wait_for(std::chrono::milliseconds(50)) != std::future_status::ready) {
+      const int fd = ::open(fifo.c_str(), O_WRONLY | O_NONBLOCK);
+      if (fd >= 0) ::close(fd);
+    }
+  }
+  const std::string msg = reading.get();
+  EXPECT_NE(msg.find("checkpoint " + fifo + ": is a FIFO (named pipe), not a regular file"),
+            std::string::npos)
+      << msg;
+  fs::remove_all(dir);
+}
+
+TEST(CheckpointRead, directories_and_devices_are_refused_before_reading) {
+  const fs::path dir = scratch("ckpt-dir");
+  fs::create_directories(dir);
+  // (On the old reader this case fails first and ends the test before the
+  // devices, which it would read without end.)
+  const std::string msg = refusal(dir.string());
+  ASSERT_NE(msg.find("is a directory, not a regular file"), std::string::npos) << msg;
+  for (const std::string device : {"/dev/urandom", "/dev/zero"}) {
+    if (!fs::exists(device)) continue;
+    const auto start = std::chrono::steady_clock::now();
+    const std::string m = refusal(device);
+    EXPECT_NE(m.find("checkpoint " + device + ": is a character device, not a regular file"),
+              std::string::npos)
+        << m;
+    EXPECT_LT(std::chrono::steady_clock::now() - start, std::chrono::seconds(2));
+  }
+  fs::remove_all(dir);
+}
+
+TEST(CheckpointRead, declared_sizes_beyond_the_file_are_refused_before_the_body_is_read) {
+  const fs::path dir = scratch("ckpt-sizes");
+  const std::string good =
+      read_text(write_checkpoint(dir.string(), 7, restart_scene(), {valid_run_state(), "ENGINE"}));
+  ASSERT_EQ(refusal((dir / "checkpoints" / "checkpoint_000000000007.rfck").string()), "");
+  const auto put_u64 = [](std::string& b, std::size_t at, std::uint64_t v) {
+    std::memcpy(&b[at], &v, sizeof v);
+  };
+  // A sparse 64 MiB file whose header claims a 1 TiB run state: refused
+  // from its first 28 bytes, whatever follows.
+  const std::string sparse = (dir / "sparse.rfck").string();
+  {
+    std::string header = good.substr(0, 28);
+    put_u64(header, 20, std::uint64_t(1) << 40);
+    std::ofstream(sparse, std::ios::binary) << header;
+    fs::resize_file(sparse, std::uintmax_t(64) << 20);
+  }
+  std::string msg = refusal(sparse);
+  EXPECT_NE(msg.find("checkpoint " + sparse +
+                     ": truncated or corrupt: the header declares a run "
+                     "state of 1099511627776 bytes, but the file holds 67108864 bytes"),
+            std::string::npos)
+      << msg;
+  // An engine state's size that does not fill the file exactly.
+  std::uint64_t n_run = 0;
+  std::memcpy(&n_run, good.data() + 20, sizeof n_run);
+  for (const std::uint64_t n_engine : {std::uint64_t(5), std::uint64_t(7), ~std::uint64_t(0)}) {
+    std::string bytes = good;
+    put_u64(bytes, 28 + n_run, n_engine);
+    const std::string path = (dir / "engine.rfck").string();
+    std::ofstream(path, std::ios::binary | std::ios::trunc) << bytes;
+    msg = refusal(path);
+    EXPECT_NE(msg.find("an engine state of " + std::to_string(n_engine) + " bytes"),
+              std::string::npos)
+        << msg;
+  }
+  fs::remove_all(dir);
+}
+
+TEST(CheckpointRead, forged_run_states_name_the_checkpoint_and_the_field) {
+  const fs::path dir = scratch("ckpt-forged");
+  struct Case {
+    std::string pointer;   // JSON pointer to change ("" for the whole state)
+    nlohmann::json value;  // null: remove the field
+    std::string expect;
+  };
+  const nlohmann::json removed;  // null
+  nlohmann::json deep = 1;       // 1,000 arrays deep (a written run state nests 5)
+  for (int i = 0; i < 1000; ++i) deep = nlohmann::json::array({std::move(deep)});
+  const std::vector<Case> cases = {
+      {"", nlohmann::json::object(), "field 'stages' is missing (expected an object)"},
+      {"/stages/stage_index", "3", "field 'stages.stage_index' = \"3\" is not a stage index"},
+      {"/stages/stage_index", -1, "field 'stages.stage_index' = -1 is not a stage index"},
+      {"/stages/stage_index", 99, "field 'stages.stage_index' = 99 is not a stage index from 0 to"},
+      {"/stages/stage_started", 1, "field 'stages.stage_started' = 1 is not true or false"},
+      {"/stages/stage_first_step", 1.5, "field 'stages.stage_first_step' = 1.5 is not an integer"},
+      {"/stages/stage_monitor_u/1", "x",
+       "field 'stages.stage_monitor_u[1]' = \"x\" is not a number"},
+      {"/stages/stage_held", "2", "field 'stages.stage_held' = \"2\" is not an integer"},
+      {"/stages/unstable", false, "field 'stages.unstable' = false is not a string"},
+      {"/stages/alpha", removed, "field 'stages.alpha' is missing (expected a number)"},
+      {"/stages/report/0/steps", removed, "field 'stages.report[0].steps' is missing"},
+      {"/stages/report/0/criteria", 1, "field 'stages.report[0].criteria' = 1 is not an object"},
+      {"/stages/report/0/moving_most/key_point", 7,
+       "field 'stages.report[0].moving_most.key_point' = 7 is not a string"},
+      {"/stages/last_checkpoint", removed, "field 'stages.last_checkpoint' is missing"},
+      {"/outputs/history/1", nlohmann::json::array({1.0}),
+       "field 'outputs.history[1]' = [1.0] is not a row of 2 numbers"},
+      {"/outputs/stages/0", nullptr, "field 'outputs.stages[0]' = null is not a string"},
+      {"/outputs/frames/0", nlohmann::json::array({0.0}),
+       "field 'outputs.frames[0]' = [0.0] is not a [time, file name] pair"},
+      {"/outputs/frames/0/1", "../../etc/passwd",
+       "field 'outputs.frames[0][1]' = \"../../etc/passwd\" is not a plain file name"},
+      {"/outputs/frames/0/1", "\x1b[2J",
+       "field 'outputs.frames[0][1]' = \"\\u001b[2J\" is not a plain file name"},
+      {"/bolts/installed/0", 2, "field 'bolts.installed[0]' = 2 is not 0 or 1"},
+      {"/bolts/installed_stress/0/0", nlohmann::json::array({1.0, 2.0}),
+       "field 'bolts.installed_stress[0][0]' = [1.0,2.0] is not an [xx, yy, xy] stress"},
+      {"/bolts/installed_stress", nlohmann::json::array({nlohmann::json::array()}),
+       "field 'bolts.installed_stress' = [[]] is not an array of 2 entries, one per bolt"},
+      {"/start_ratio", "0.2", "field 'start_ratio' = \"0.2\" is not a number"},
+      {"/stages/stage_changes/deep", deep, "nested more than 32 levels deep"},
+  };
+  for (const Case& c : cases) {
+    nlohmann::json run = valid_run_state();
+    if (c.pointer.empty())
+      run = c.value;
+    else if (c.value.is_null() && c.expect.find("missing") != std::string::npos)
+      run[nlohmann::json::json_pointer(c.pointer).parent_pointer()].erase(
+          nlohmann::json::json_pointer(c.pointer).back());
+    else
+      run[nlohmann::json::json_pointer(c.pointer)] = c.value;
+    const std::string path = write_checkpoint(dir.string(), 1, restart_scene(), {run, "ENGINE"});
+    const std::string msg = refusal(path);
+    EXPECT_NE(msg.find("checkpoint " + path + ": corrupt run state: " + c.expect),
+              std::string::npos)
+        << c.pointer << ": " << msg;
+    EXPECT_EQ(msg.find('\x1b'), std::string::npos) << msg;
+  }
+  fs::remove_all(dir);
 }

@@ -3,10 +3,12 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <fstream>
 #include <functional>
 #include <set>
-#include <fstream>
 #include <sstream>
+#include <string>
+#include <vector>
 
 #include "rockfdem/error.hpp"
 #include "rockfdem/workflows/scene.hpp"
@@ -247,4 +249,86 @@ TEST(Scene, documented_defaults_and_ranges_are_the_checked_ones) {
   const KeySpec* near = find_key("mesh.size_near");
   ASSERT_NE(near, nullptr);
   EXPECT_EQ(near->default_doc, "0.5 (tunnels); specimens: required");
+}
+
+// Scene text is bounded before toml++ parses it: its parser recurses per
+// dotted part and per nesting level, so a 200 KB header [a.a.a...] of 50,000
+// parts overflowed the stack (SIGSEGV), and a 200-deep array in
+// insitu.alpha came back as a 707-line message.
+namespace {
+
+std::string bounded_error(const std::string& text, const std::vector<std::string>& sets = {}) {
+  return error_of([&] { parse_scene(text, "bounded.toml", ".", sets); });
+}
+
+std::string dotted(std::size_t n_parts) {
+  std::string key = "a";
+  for (std::size_t i = 1; i < n_parts; ++i) key += ".a";
+  return key;
+}
+
+}  // namespace
+
+TEST(SceneBounds, header_of_50000_dotted_parts_is_refused_before_parsing) {
+  const std::string msg = bounded_error("# line 1\n[" + dotted(50000) + "]\nx = 1\n");
+  expect_contains(msg, {"bounded.toml:2:", "more than 16 dotted parts", "at most 16"});
+  EXPECT_LT(msg.size(), 300u) << msg;
+}
+
+TEST(SceneBounds, dotted_keys_past_16_parts_are_refused_where_they_are) {
+  expect_contains(bounded_error("[model]\nkind = \"tunnel\"\n" + dotted(17) + " = 1\n"),
+                  {"bounded.toml:3:", "more than 16 dotted parts"});
+  expect_contains(bounded_error("x = { " + dotted(20) + " = 1 }\n"),
+                  {"bounded.toml:1:", "more than 16 dotted parts"});
+  // 16 parts pass the bound (and are then an unknown key).
+  expect_contains(bounded_error("[" + dotted(16) + "]\n"), {"unknown key"});
+  // Dots in values, strings and comments are no key parts.
+  std::string good = read_file(kTestDir + "/good_circular.toml");
+  good.replace(good.find("kind = \"tunnel\""), 15,
+               "kind = \"tunnel\"  # " + dotted(40) + "\ntitle = '" + dotted(40) + "'");
+  EXPECT_EQ(bounded_error(good), "");
+}
+
+TEST(SceneBounds, deep_nesting_is_refused_in_one_short_line) {
+  const std::string deep = std::string(200, '[') + "1.0" + std::string(200, ']');
+  const std::string msg = bounded_error("[insitu]\nalpha = " + deep + "\n");
+  expect_contains(msg, {"bounded.toml:2:", "nest more than 32 levels", "at most 32"});
+  EXPECT_EQ(msg.find('\n'), std::string::npos) << msg;
+  EXPECT_LT(msg.size(), 300u) << msg;
+  // The same through --set.
+  const std::string set =
+      bounded_error(read_file(kTestDir + "/good_circular.toml"), {"insitu.alpha=" + deep});
+  expect_contains(set, {"--set insitu.alpha=", "nest more than 32 levels"});
+  EXPECT_LT(set.size(), 900u) << set;
+  // Brackets inside strings do not count.
+  expect_contains(bounded_error("[tunnel]\nshape = \"" + deep + "\"\n"),
+                  {"tunnel.shape", "not one of the choices"});
+}
+
+TEST(SceneBounds, long_keys_and_large_scenes_are_refused) {
+  expect_contains(bounded_error("[model]\n" + std::string(300, 'k') + " = 1\n"),
+                  {"bounded.toml:2:", "longer than 256 characters", "at most 256"});
+  expect_contains(bounded_error("[model]\n\"" + std::string(300, 'q') + "\" = 1\n"),
+                  {"bounded.toml:2:", "longer than 256 characters"});
+  std::string big = read_file(kTestDir + "/good_circular.toml");
+  while (big.size() <= (1u << 20)) big += "# " + std::string(1000, 'x') + "\n";
+  expect_contains(bounded_error(big), {"bounded.toml", "bytes; allowed: at most 1048576 bytes"});
+}
+
+// Keys and values from a scene are echoed with their control characters
+// escaped: an ESC sequence in a key must not clear the user's terminal, a
+// NUL must not cut the message short.
+TEST(SceneBounds, control_characters_in_echoed_keys_and_values_are_escaped) {
+  const std::string key = bounded_error("[tunnel]\n\"x\\u001b[2Jy\" = 1\n");
+  expect_contains(key, {"bounded.toml:2", "x\\x1b[2Jy", "unknown key"});
+  EXPECT_EQ(key.find('\x1b'), std::string::npos) << key;
+  const std::string value =
+      bounded_error("[tunnel]\nshape = \"c\\u001b]0;pwned\\u0007\\u0000z\"\n");
+  expect_contains(value, {"tunnel.shape", "c\\x1b]0;pwned\\x07\\x00z\"", "not one of the choices"});
+  EXPECT_EQ(value.find('\x1b'), std::string::npos) << value;
+  EXPECT_EQ(value.find('\x07'), std::string::npos) << value;
+  // A C1 control (U+009B, a CSI on some terminals) too.
+  const std::string c1 = bounded_error("[tunnel]\nshape = \"\\u009b2J\"\n");
+  expect_contains(c1, {"\\u009b2J"});
+  EXPECT_EQ(c1.find("\xc2\x9b"), std::string::npos) << c1;
 }

@@ -8,6 +8,8 @@
 //   without output.checkpoint_every)  u64 n + n bytes: the run's state as
 //   JSON (stage cursor, history rows, frames, bolt installation)
 //   u64 n + n bytes: Engine::save_state()  u64 FNV-1a of everything before
+// (fdem::fnv1a: FNV-1a 64 with the offset basis 1469598103934665603, not
+// the standard 14695981039346656037; see docs/reliability.md)
 //
 // Written atomically (temp file, fsync, rename): a run killed while writing
 // leaves the previous checkpoints intact.
@@ -37,8 +39,17 @@ std::string write_checkpoint(const std::string& output_dir, long step, const Sce
                              const Checkpoint& checkpoint);
 
 /// Reads and verifies a checkpoint written for `scene`. Throws InputError
-/// naming the file for a missing, truncated or corrupt file, another format
-/// version or another scene.
+/// naming the file for a missing file, anything but a regular file (FIFO,
+/// device, directory: refused before it is opened for reading), a header
+/// whose declared sizes do not add up to the file's size (refused before
+/// the body is read), a bad checksum, another format version or another
+/// scene, and a run state that validate_run_state() refuses.
 Checkpoint read_checkpoint(const std::string& path, const Scene& scene);
+
+/// Checks that `run` has every field the restart reads (run_tunnel.cpp,
+/// RunOutputs::restore, StageRunner::restore and verdict()) with its type,
+/// a stage index within `scene`'s stages and frame names that are plain
+/// file names. Throws InputError naming the checkpoint `path` and the field.
+void validate_run_state(const std::string& path, const nlohmann::json& run, const Scene& scene);
 
 }  // namespace rockfdem::workflows

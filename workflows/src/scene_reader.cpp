@@ -18,9 +18,199 @@ std::string join(const std::vector<std::string>& items) {
   return out;
 }
 
-[[noreturn]] void fail(const std::string& message) { throw InputError(message); }
+[[noreturn]] void fail(const std::string& message) { throw InputError(printable(message)); }
 
 }  // namespace
+
+std::string printable(const std::string& text) {
+  // C0 controls, DEL and the C1 controls (U+0080 to U+009F, two bytes in
+  // UTF-8: 0xC2 0x80-0x9F; U+009B is a CSI on some terminals) are shown as
+  // escapes, so that text from a scene (a key, a value, a file name) cannot
+  // move the cursor, clear the screen or cut a message short (NUL).
+  static const char* const kHex = "0123456789abcdef";
+  std::string out;
+  out.reserve(text.size());
+  for (std::size_t i = 0; i < text.size(); ++i) {
+    const auto c = static_cast<unsigned char>(text[i]);
+    if (c == 0xC2 && i + 1 < text.size() &&
+        (static_cast<unsigned char>(text[i + 1]) & 0xE0) == 0x80) {
+      const auto d = static_cast<unsigned char>(text[++i]);
+      out += "\\u00";
+      out += kHex[d >> 4];
+      out += kHex[d & 15];
+    } else if (c == '\n') {
+      out += "\\n";
+    } else if (c == '\t') {
+      out += "\\t";
+    } else if (c == '\r') {
+      out += "\\r";
+    } else if (c < 0x20 || c == 0x7F) {
+      out += "\\x";
+      out += kHex[c >> 4];
+      out += kHex[c & 15];
+    } else {
+      out += char(c);
+    }
+  }
+  return out;
+}
+
+namespace {
+
+// Scene text past these bounds is refused before toml++ sees it: its
+// parser recurses per nesting level and per dotted part (a 200 KB header
+// [a.a.a...] of 50,000 parts overflows the stack), and a scene needs far
+// less: its deepest key has 3 parts, its deepest value (a bolt fan's
+// points) nests 2 brackets.
+constexpr std::size_t kMaxSceneBytes = std::size_t(1) << 20;
+constexpr std::size_t kMaxNesting = 32;
+constexpr std::size_t kMaxKeyParts = 16;
+constexpr std::size_t kMaxKeyLength = 256;
+
+// A light TOML lexer: just enough to tell keys from values and strings and
+// comments from brackets, braces and dots. What it cannot place is left to
+// toml++, which answers it with its own message.
+class SceneBounds {
+ public:
+  SceneBounds(const std::string& text, const std::string& source) : t_(text), source_(source) {}
+
+  void check() {
+    if (t_.size() > kMaxSceneBytes)
+      fail(source_ + ": the scene holds " + std::to_string(t_.size()) +
+           " bytes; allowed: at most " + std::to_string(kMaxSceneBytes) +
+           " bytes (1 MiB) of scene text");
+    while (i_ < t_.size()) step();
+  }
+
+ private:
+  [[noreturn]] void exceed(const std::string& what) const {
+    fail(source_ + ":" + std::to_string(line_) + ": " + what);
+  }
+
+  void step() {
+    const char c = t_[i_];
+    if (c == '#') {  // a comment runs to the end of the line
+      while (i_ < t_.size() && t_[i_] != '\n') ++i_;
+      return;
+    }
+    if (c == '\n') {
+      ++line_;
+      ++i_;
+      if (open_.empty()) start_key();  // each top-level line starts a key or header
+      return;
+    }
+    if (in_key_) return key_char(c);
+    value_char(c);
+  }
+
+  void start_key() {
+    in_key_ = true;
+    header_ = false;
+    parts_ = 0;
+    in_segment_ = false;
+  }
+
+  void key_char(char c) {
+    const bool bare = (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') ||
+                      c == '_' || c == '-';
+    if (bare) {
+      if (!in_segment_) begin_segment();
+      if (++segment_length_ > kMaxKeyLength) long_key(i_ + 1 - segment_length_);
+      ++i_;
+      return;
+    }
+    in_segment_ = false;
+    if (c == '"' || c == '\'') {
+      begin_segment();
+      const std::size_t start = i_;
+      skip_string();
+      if (i_ - start > kMaxKeyLength + 2) long_key(start);
+      return;
+    }
+    ++i_;
+    if (c == '[' && open_.empty() && parts_ == 0 && !header_) {
+      header_ = true;  // [table] or [[array of tables]]: a key follows
+    } else if (c == ']' && header_) {
+      in_key_ = false;  // the header is closed; only a comment may follow
+      header_ = false;
+    } else if (c == '=') {
+      in_key_ = false;
+    } else if (c == '}' && !open_.empty() && open_.back() == '{') {
+      open_.pop_back();  // an empty inline table, {}
+      in_key_ = false;
+    }
+  }
+
+  void begin_segment() {
+    in_segment_ = true;
+    segment_length_ = 0;
+    if (++parts_ > kMaxKeyParts)
+      exceed("a key or table header of more than " + std::to_string(kMaxKeyParts) +
+             " dotted parts; allowed: at most " + std::to_string(kMaxKeyParts) +
+             " parts (a scene's deepest key, materials.rock.young, has 3)");
+  }
+
+  [[noreturn]] void long_key(std::size_t start) const {
+    exceed("key '" + t_.substr(start, 40) + "...' is longer than " + std::to_string(kMaxKeyLength) +
+           " characters; allowed: keys of at most " + std::to_string(kMaxKeyLength) +
+           " characters");
+  }
+
+  void value_char(char c) {
+    if (c == '"' || c == '\'') return skip_string();
+    ++i_;
+    if (c == '[' || c == '{') {
+      open_.push_back(c);
+      if (open_.size() > kMaxNesting)
+        exceed("brackets and braces nest more than " + std::to_string(kMaxNesting) +
+               " levels deep; allowed: at most " + std::to_string(kMaxNesting) +
+               " levels (a scene's values nest at most 2)");
+      if (c == '{') start_key();
+    } else if ((c == ']' || c == '}') && !open_.empty()) {
+      open_.pop_back();
+    } else if (c == ',' && !open_.empty() && open_.back() == '{') {
+      start_key();  // the next key of an inline table
+    }
+  }
+
+  // Skips a basic ("..."), literal ('...') or multi-line ("""...""",
+  // '\'\'...\'\'\') string starting at i_, counting its lines.
+  void skip_string() {
+    const char q = t_[i_];
+    const bool multi = t_.compare(i_, 3, std::string(3, q)) == 0;
+    i_ += multi ? 3 : 1;
+    while (i_ < t_.size()) {
+      const char c = t_[i_];
+      if (c == '\\' && q == '"') {
+        if (i_ + 1 < t_.size() && t_[i_ + 1] == '\n') ++line_;
+        i_ += 2;
+        continue;
+      }
+      if (c == '\n') {
+        ++line_;
+        if (!multi) return;  // an unterminated string: toml++ says so
+      }
+      if (c == q && (!multi || t_.compare(i_, 3, std::string(3, q)) == 0)) {
+        i_ += multi ? 3 : 1;
+        return;
+      }
+      ++i_;
+    }
+  }
+
+  const std::string& t_;
+  const std::string& source_;
+  std::size_t i_ = 0, line_ = 1;
+  std::vector<char> open_;  // '[' arrays and '{' inline tables around i_
+  bool in_key_ = true, header_ = false, in_segment_ = false;
+  std::size_t parts_ = 0, segment_length_ = 0;
+};
+
+}  // namespace
+
+void check_scene_bounds(const std::string& text, const std::string& source) {
+  SceneBounds(text, source).check();
+}
 
 // "stages[2].kind" -> "stages[].kind": array-of-table indices do not matter to the schema.
 std::string normalise(const std::string& path) {
@@ -94,6 +284,7 @@ void apply_override(RawScene& scene, const std::string& text) {
   if (!find_key(normalise(path)))
     fail(scene.source + ": --set " + text + ": unknown key '" + path +
          "'; see docs/scene-reference.md for the keys");
+  check_scene_bounds("v = " + value, scene.source + ": --set " + text);
   toml::table parsed = parse_override_value(path, value);
   toml::table* table = &scene.root;
   std::size_t start = 0;
@@ -233,7 +424,15 @@ std::string node_text(const toml::node& node) {
     else
       out << v;
   });
-  return out.str();
+  // One line, and short: the formatter breaks long arrays over lines.
+  std::string text;
+  for (const char c : out.str()) {
+    const bool space = c == '\n' || c == '\r' || c == ' ' || c == '\t';
+    if (!space || (!text.empty() && text.back() != ' ')) text += space ? ' ' : c;
+  }
+  constexpr std::size_t kShown = 120;
+  if (text.size() > kShown) text = text.substr(0, kShown - 3) + "...";
+  return text;
 }
 
 void fail_key(const RawScene& s, const std::string& path, const toml::node* node,
@@ -247,11 +446,12 @@ void fail_key(const RawScene& s, const std::string& path, const toml::node* node
   msg << ": " << problem;
   if (const KeySpec* k = find_key(normalise(path)); k && problem.find("allowed") == std::string::npos)
     msg << "; allowed: " << describe_allowed(*k);
-  throw InputError(msg.str());
+  throw InputError(printable(msg.str()));
 }
 
 RawScene read_raw_scene(const std::string& text, const std::string& source,
                         const std::vector<std::string>& overrides) {
+  check_scene_bounds(text, source);
   RawScene scene;
   scene.source = source;
   try {
@@ -260,7 +460,7 @@ RawScene read_raw_scene(const std::string& text, const std::string& source,
     std::ostringstream msg;
     msg << source << ':' << e.source().begin.line << ':' << e.source().begin.column
         << ": not valid TOML: " << e.description();
-    throw InputError(msg.str());
+    throw InputError(printable(msg.str()));
   }
   for (const std::string& o : overrides) apply_override(scene, o);
   check_table(scene, scene.root, "");

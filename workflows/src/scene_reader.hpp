@@ -17,6 +17,18 @@ struct RawScene {
   std::set<std::string> overridden;  ///< dotted paths set with --set
 };
 
+/// Refuses, before any TOML parsing, scene text that toml++ could not parse
+/// safely or that no scene needs: over 1 MiB, brackets and braces nested
+/// over 32 deep, a key or table header of over 16 dotted parts, a key of
+/// over 256 characters. Throws InputError "<source>:<line>: <what>; allowed: <limit>".
+void check_scene_bounds(const std::string& text, const std::string& source);
+
+/// `text` with its control characters (C0, DEL, C1) shown as escapes
+/// (\n, \x1b, \u009b): every message that echoes a scene's text goes
+/// through it.
+std::string printable(const std::string& text);
+
+/// check_scene_bounds(), then toml++.
 RawScene read_raw_scene(const std::string& text, const std::string& source,
                         const std::vector<std::string>& overrides);
 
