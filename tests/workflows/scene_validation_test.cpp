@@ -332,3 +332,14 @@ TEST(SceneBounds, control_characters_in_echoed_keys_and_values_are_escaped) {
   expect_contains(c1, {"\\u009b2J"});
   EXPECT_EQ(c1.find("\xc2\x9b"), std::string::npos) << c1;
 }
+
+// A scene path that is a device (or a FIFO) is refused before anything is
+// read: reading /dev/zero first never ended.
+TEST(Scene, device_path_is_refused_unread) {
+  try {
+    load_scene("/dev/zero");
+    FAIL() << "no InputError";
+  } catch (const rockfdem::InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("not a regular file"), std::string::npos) << e.what();
+  }
+}

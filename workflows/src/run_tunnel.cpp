@@ -96,10 +96,22 @@ nlohmann::json bolt_state(const fdem::BoltPlan& bolts) {
   return {{"installed", bolts.installed}, {"installed_stress", bolts.installed_stress}};
 }
 
-void restore_bolts(const nlohmann::json& s, fdem::BoltPlan& bolts) {
-  bolts.installed = s.at("installed").get<std::vector<char>>();
-  bolts.installed_stress =
-      s.at("installed_stress").get<std::vector<std::vector<std::array<double, 3>>>>();
+void restore_bolts(const nlohmann::json& s, fdem::BoltPlan& bolts, const std::string& file) {
+  std::vector<char> installed = s.at("installed").get<std::vector<char>>();
+  auto stress = s.at("installed_stress").get<std::vector<std::vector<std::array<double, 3>>>>();
+  // The plan comes from the scene: a checkpoint of another plan would be
+  // indexed out of its bounds.
+  if (installed.size() != bolts.specs.size() || stress.size() != bolts.specs.size())
+    throw InputError(file + ": corrupt run state: field 'bolts' holds " +
+                     std::to_string(installed.size()) + " bolts; the scene has " +
+                     std::to_string(bolts.specs.size()));
+  for (std::size_t b = 0; b < stress.size(); ++b)
+    if (!stress[b].empty() && stress[b].size() != bolts.owned[b].size())
+      throw InputError(file + ": corrupt run state: field 'bolts.installed_stress' of bolt " +
+                       std::to_string(b) + " has " + std::to_string(stress[b].size()) +
+                       " triangles; the bolt owns " + std::to_string(bolts.owned[b].size()));
+  bolts.installed = std::move(installed);
+  bolts.installed_stress = std::move(stress);
 }
 
 // The run directory a checkpoint belongs to: OUTDIR/checkpoints/FILE -> OUTDIR.
@@ -237,7 +249,7 @@ int run_tunnel(const Scene& scene, const CommandLine& cli) {
   if (restart) {
     std::istringstream state(resume.engine_state);
     engine.load_state(state);
-    restore_bolts(resume.run.at("bolts"), bolts);
+    restore_bolts(resume.run.at("bolts"), bolts, cli.restart);
     start_ratio = resume.run.at("start_ratio").get<double>();
   } else {
     for (std::size_t t = 0; t < m.n_triangles(); ++t)
@@ -254,8 +266,12 @@ int run_tunnel(const Scene& scene, const CommandLine& cli) {
   out.set_bolts(&bolts);
   StageRunner stages(engine, m, handoff, scene, cli, out, monitors, bolts, support);
   if (restart) {
-    out.restore(resume.run.at("outputs"), run_dir_of(cli.restart));
-    stages.restore(resume.run.at("stages"));
+    try {
+      out.restore(resume.run.at("outputs"), run_dir_of(cli.restart));
+      stages.restore(resume.run.at("stages"));
+    } catch (const InputError& e) {
+      throw InputError(cli.restart + ": " + e.what());
+    }
     summary.json()["restarted_from"] = {{"checkpoint", cli.restart},
                                         {"step", engine.step_count()}};
   } else {

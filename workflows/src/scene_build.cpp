@@ -589,6 +589,17 @@ Scene parse_scene(const std::string& text, const std::string& source, const std:
 }
 
 Scene load_scene(const std::string& path, const std::vector<std::string>& overrides) {
+  // A FIFO, a device or a huge file is refused before anything is read:
+  // reading first would block or grow without bound.
+  std::error_code ec;
+  const auto status = std::filesystem::status(path, ec);
+  if (!ec && std::filesystem::exists(status) && !std::filesystem::is_regular_file(status))
+    throw InputError(path + ": not a regular file; a scene is a TOML text file");
+  constexpr std::uintmax_t kMaxBytes = std::uintmax_t(1) << 20;  // as the scene reader's bound
+  const std::uintmax_t size = std::filesystem::file_size(path, ec);
+  if (!ec && size > kMaxBytes)
+    throw InputError(path + ": the scene file has " + std::to_string(size) +
+                     " bytes; allowed: at most " + std::to_string(kMaxBytes) + " bytes (1 MiB)");
   std::ifstream in(path);
   if (!in) throw InputError(path + ": cannot open the scene file");
   std::ostringstream text;

@@ -5,6 +5,7 @@
 #include <limits>
 
 #include "interrupt.hpp"
+#include "rockfdem/error.hpp"
 #include "output_dir.hpp"
 #include "progress.hpp"
 #include "stage_inputs.hpp"
@@ -380,6 +381,12 @@ void StageRunner::restore(const nlohmann::json& s) {
   cursor_.t0 = s.at("stage_t0").get<double>();
   cursor_.changes = s.at("stage_changes");
   cursor_.monitor_u = s.at("stage_monitor_u").get<std::vector<double>>();
+  // settle_measure() reads a pair per monitor.
+  if (cursor_.monitor_u.size() != 2 * monitors_.size())
+    throw InputError("corrupt run state: field 'stages.stage_monitor_u' holds " +
+                     std::to_string(cursor_.monitor_u.size()) + " values; the model's " +
+                     std::to_string(monitors_.size()) + " key points need " +
+                     std::to_string(2 * monitors_.size()));
   cursor_.held = s.value("stage_held", 0);
   cursor_.rates = s.value("stage_rates", std::vector<double>{});
   const std::string unstable = s.value("unstable", std::string());
