@@ -30,8 +30,8 @@
 #include <cmath>
 #include <cstdio>
 
-#include "rockfdem/fdem/engine.hpp"
 #include "bench_main.hpp"
+#include "rockfdem/fdem/engine.hpp"
 #include "ucs_setup.hpp"
 
 using namespace rockfdem;
@@ -57,17 +57,17 @@ int main(int argc, char** argv) {
   long n_tri = 8800, steps = 20000, report = 1000;
   int threads = 0;
   double velocity = 1.0, confinement = 20.0, buffer = 0.0;
-  const bool ok = bench::read_options(
-      argc, argv,
-      {{"--triangles", &n_tri},
-       {"--steps", &steps},
-       {"--threads", &threads},
-       {"--velocity", &velocity},
-       {"--confinement", &confinement},
-       {"--buffer", &buffer},
-       {"--report-every", &report}},
-      "bench_contact [--triangles N] [--steps S] [--threads T] [--velocity V] "
-      "[--confinement MPa] [--buffer F] [--report-every K]");
+  const bool ok =
+      bench::read_options(argc, argv,
+                          {{"--triangles", &n_tri},
+                           {"--steps", &steps},
+                           {"--threads", &threads},
+                           {"--velocity", &velocity},
+                           {"--confinement", &confinement},
+                           {"--buffer", &buffer},
+                           {"--report-every", &report}},
+                          "bench_contact [--triangles N] [--steps S] [--threads T] [--velocity V] "
+                          "[--confinement MPa] [--buffer F] [--report-every K]");
   if (!ok) return 2;
   if (report <= 0) report = steps;
   return bench::run_guarded([&] {
@@ -103,8 +103,8 @@ int main(int argc, char** argv) {
       done += n;
       const long broken = engine.broken_counts().total();
       const double contact = ph1.contact - ph0.contact;
-      const double all = ph1.triangles - ph0.triangles + ph1.cracks - ph0.cracks + contact +
-                         ph1.nodes - ph0.nodes;
+      const double all =
+          ph1.triangles - ph0.triangles + ph1.cracks - ph0.cracks + contact + ph1.nodes - ph0.nodes;
       std::printf(
           "step %6ld broken %5ld (+%4ld) contact %4.1f%% detections/1000 %6.1f updates/1000 "
           "%6.1f candidates %5ld pairs %6ld touching %5ld triangle-steps/s %.4g\n",

@@ -116,11 +116,13 @@ int main(int argc, char** argv) {
   }
   std::printf("bench_relaxation_engine --cells %d --max-steps %ld --threads %d\n", o.cells,
               o.max_steps, o.threads);
-  std::printf("plate 1 x 1 m, %d triangles, mass scaling on; steps to the unbalanced-force "
-              "ratio (checked every 10 steps)\n\n",
-              2 * o.cells * o.cells);
-  std::printf("| model    | damping            | to 1e-3  | to 1e-5  | resets  | broken | "
-              "ratio     | imbalance |\n");
+  std::printf(
+      "plate 1 x 1 m, %d triangles, mass scaling on; steps to the unbalanced-force "
+      "ratio (checked every 10 steps)\n\n",
+      2 * o.cells * o.cells);
+  std::printf(
+      "| model    | damping            | to 1e-3  | to 1e-5  | resets  | broken | "
+      "ratio     | imbalance |\n");
   std::printf("|---|---|---|---|---|---|---|---|\n");
   const Damping dampings[] = {{"local 0.8", 0.8, false},
                               {"local 0.5", 0.5, false},

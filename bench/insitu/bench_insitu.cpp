@@ -56,9 +56,9 @@ void kirsch_table(int levels, bool with_direct) {
   insitu::KirschCase k{a, 18.2e6, 11.4e6, 0.0, 10e9, 0.25};
 
   std::printf("\n2. Kirsch, a = 5 m, 100 m box, exact tractions, alpha = 0\n");
-  std::printf("%7s %9s %9s %8s %-7s %5s %8s %8s %8s %8s %8s %11s %9s\n", "h_near",
-              "triangles", "rock", "dofs", "solver", "iter", "setup s", "assem s", "solve s",
-              "post s", "total s", "stress L2 %", "wall ur %");
+  std::printf("%7s %9s %9s %8s %-7s %5s %8s %8s %8s %8s %8s %11s %9s\n", "h_near", "triangles",
+              "rock", "dofs", "solver", "iter", "setup s", "assem s", "solve s", "post s",
+              "total s", "stress L2 %", "wall ur %");
   double h = 0.8;
   for (int level = 0; level < levels; ++level, h *= 0.5) {
     mesh::MeshSpec ms;
@@ -74,8 +74,8 @@ void kirsch_table(int levels, bool with_direct) {
       spec.solver.kind = kind;
       const insitu::InsituField f = insitu::solve_insitu(m, spec).at(0);
       const insitu::KirschComparison c = insitu::compare_kirsch(m, f, k);
-      std::printf("%7.3f %9zu %9zu %8zu %-7s %5d %8.3f %8.3f %8.3f %8.3f %8.3f %11.4f %9.4f\n",
-                  h, m.n_triangles(), f.n_cells, f.n_dofs,
+      std::printf("%7.3f %9zu %9zu %8zu %-7s %5d %8.3f %8.3f %8.3f %8.3f %8.3f %11.4f %9.4f\n", h,
+                  m.n_triangles(), f.n_cells, f.n_dofs,
                   kind == insitu::LinearSolver::kDirect ? "direct" : "amg-cg", f.iterations,
                   f.setup_seconds, f.assembly_seconds, f.solve_seconds, f.postprocess_seconds,
                   f.total_seconds, 100 * c.stress_rel_l2, 100 * c.wall_ur_rel_l2);
@@ -106,16 +106,17 @@ void default_tunnel(double size_near) {
   spec.lining.install_alpha = 0.01;
   spec.alphas = {1.0, 0.5, 0.2, 0.1, 0.05, 0.01};
 
-  std::printf("\n1. Default tunnel: %zu triangles, %zu vertices, size_near %.2f m "
-              "(mesh %.2f s, peak RSS before the stage %.0f MiB)\n",
-              m.n_triangles(), m.n_vertices(), size_near, mesh_s, peak_rss_mib());
+  std::printf(
+      "\n1. Default tunnel: %zu triangles, %zu vertices, size_near %.2f m "
+      "(mesh %.2f s, peak RSS before the stage %.0f MiB)\n",
+      m.n_triangles(), m.n_vertices(), size_near, mesh_s, peak_rss_mib());
   const auto t1 = std::chrono::steady_clock::now();
   const auto fields = insitu::solve_insitu(m, spec);
   const double stage_s =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - t1).count();
   std::printf("%s", insitu::timing_table(fields).c_str());
-  std::printf("in-situ stage: %.3f s for %zu alphas, peak RSS %.0f MiB\n", stage_s,
-              fields.size(), peak_rss_mib());
+  std::printf("in-situ stage: %.3f s for %zu alphas, peak RSS %.0f MiB\n", stage_s, fields.size(),
+              peak_rss_mib());
 }
 
 }  // namespace
@@ -126,10 +127,12 @@ int main(int argc, char** argv) {
   std::vector<double> tunnel_sizes;
   bool with_direct = true;
   for (int i = 1; i < argc; ++i) {
-    if (!std::strcmp(argv[i], "--levels") && i + 1 < argc) levels = std::atoi(argv[++i]);
+    if (!std::strcmp(argv[i], "--levels") && i + 1 < argc)
+      levels = std::atoi(argv[++i]);
     else if (!std::strcmp(argv[i], "--tunnel-size") && i + 1 < argc)
       tunnel_sizes.push_back(std::atof(argv[++i]));
-    else if (!std::strcmp(argv[i], "--skip-direct")) with_direct = false;
+    else if (!std::strcmp(argv[i], "--skip-direct"))
+      with_direct = false;
     else {
       std::fprintf(stderr, "usage: %s [--levels N] [--tunnel-size H] [--skip-direct]\n", argv[0]);
       return 2;

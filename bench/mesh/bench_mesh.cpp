@@ -43,10 +43,14 @@ Options parse(int argc, char** argv) {
   for (int i = 1; i + 1 < argc; i += 2) {
     const std::string key = argv[i];
     const double value = std::atof(argv[i + 1]);
-    if (key == "--near") o.near.push_back(value);
-    else if (key == "--far") o.far = value;
-    else if (key == "--threads") o.threads = static_cast<int>(value);
-    else std::fprintf(stderr, "unknown option %s\n", key.c_str()), std::exit(2);
+    if (key == "--near")
+      o.near.push_back(value);
+    else if (key == "--far")
+      o.far = value;
+    else if (key == "--threads")
+      o.threads = static_cast<int>(value);
+    else
+      std::fprintf(stderr, "unknown option %s\n", key.c_str()), std::exit(2);
   }
   if (o.near.empty()) o.near = {0.22, 0.06, 0.019};
   return o;
@@ -68,15 +72,17 @@ int main(int argc, char** argv) {
   const Options o = parse(argc, argv);
   std::printf("# command:");
   for (int i = 0; i < argc; ++i) std::printf(" %s", argv[i]);
-  std::printf("\n# horseshoe 11.3 x 8.8 m, lining 0.2 m, fracture zone 4 m, domain 100 x 100 m,"
-              " size_far %g m, OpenMP threads %d\n", o.far, omp_get_max_threads());
-  std::printf("%10s %12s %12s %12s %12s %10s %8s\n", "near_m", "triangles", "vertices",
-              "min_alt_m", "min_angle", "seconds", "threads");
+  std::printf(
+      "\n# horseshoe 11.3 x 8.8 m, lining 0.2 m, fracture zone 4 m, domain 100 x 100 m,"
+      " size_far %g m, OpenMP threads %d\n",
+      o.far, omp_get_max_threads());
+  std::printf("%10s %12s %12s %12s %12s %10s %8s\n", "near_m", "triangles", "vertices", "min_alt_m",
+              "min_angle", "seconds", "threads");
   for (double near : o.near) {
     rockfdem::mesh::MeshReport r;
     rockfdem::mesh::build_mesh(seed_tunnel(near, o.far, o.threads), &r);
-    std::printf("%10.4g %12zu %12zu %12.4g %12.2f %10.3f %8d\n", near, r.n_triangles,
-                r.n_vertices, r.min_altitude, r.min_angle_deg, r.seconds, r.gmsh_threads);
+    std::printf("%10.4g %12zu %12zu %12.4g %12.2f %10.3f %8d\n", near, r.n_triangles, r.n_vertices,
+                r.min_altitude, r.min_angle_deg, r.seconds, r.gmsh_threads);
     std::fflush(stdout);
   }
   return 0;

@@ -71,10 +71,12 @@ fdem::ModelInput model(const mesh::Mesh& m) {
   rock.density = 2700;
   rock.tensile_strength = rock.cohesion = 10 * kE;  // elastic: no crack elements anyway
   rock.gf_I = rock.gf_II = 1e9;
-  fdem::ModelInput in = coupling::model_input(m, {{mesh::kRock, rock}, {mesh::kCore, rock}},
-                                              fdem::Plane::kStrain);
-  const std::pair<int, std::array<double, 2>> sides[] = {
-      {mesh::kLeft, {-1, 0}}, {mesh::kRight, {1, 0}}, {mesh::kBottom, {0, -1}}, {mesh::kTop, {0, 1}}};
+  fdem::ModelInput in =
+      coupling::model_input(m, {{mesh::kRock, rock}, {mesh::kCore, rock}}, fdem::Plane::kStrain);
+  const std::pair<int, std::array<double, 2>> sides[] = {{mesh::kLeft, {-1, 0}},
+                                                         {mesh::kRight, {1, 0}},
+                                                         {mesh::kBottom, {0, -1}},
+                                                         {mesh::kTop, {0, 1}}};
   for (const auto& [tag, n] : sides) {
     fdem::BoundaryCondition bc;
     bc.tag = tag;
@@ -128,7 +130,8 @@ int main(int argc, char** argv) {
   auto t0 = Clock::now();
   const std::vector<insitu::InsituField> fields = insitu::solve_insitu(m, is);
   const double implicit_seconds = seconds_since(t0);
-  const insitu::KirschComparison c = insitu::compare_kirsch(m, fields.back(), {kA, kSH, kSV, 0, kE, kNu});
+  const insitu::KirschComparison c =
+      insitu::compare_kirsch(m, fields.back(), {kA, kSH, kSV, 0, kE, kNu});
   std::printf("%-34s %10s %10s %10.3f %12.4f%%\n", "implicit (one solve)", "-", "-",
               implicit_seconds, 100 * c.stress_rel_l2);
 
@@ -145,12 +148,11 @@ int main(int argc, char** argv) {
     }
     {  // explicit from the implicit hand-off at alpha = 0.2
       t0 = Clock::now();
-      const std::vector<insitu::InsituField> handoff = insitu::solve_insitu(
-          m, [&] {
-            insitu::InsituSpec s = is;
-            s.alphas = {1.0, 0.2};
-            return s;
-          }());
+      const std::vector<insitu::InsituField> handoff = insitu::solve_insitu(m, [&] {
+        insitu::InsituSpec s = is;
+        s.alphas = {1.0, 0.2};
+        return s;
+      }());
       fdem::ModelInput in = model(m);
       in.mass_scaling.enabled = scaled;
       coupling::apply_insitu(handoff.back(), in);

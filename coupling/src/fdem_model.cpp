@@ -90,8 +90,7 @@ void add_crack_arrays(const fdem::Engine& e, VtkGrid& g) {
 
 }  // namespace
 
-VtkGrid fdem_grid(const fdem::Engine& e, const mesh::Mesh& m,
-                  const insitu::InsituField* implicit) {
+VtkGrid fdem_grid(const fdem::Engine& e, const mesh::Mesh& m, const insitu::InsituField* implicit) {
   VtkGrid g;
   const std::vector<double>& pos = e.positions();
   const std::size_t n = e.n_nodes();

@@ -54,7 +54,8 @@ VtkGrid mesh_grid(const mesh::Mesh& m) {
   g.cell_arrays.push_back(triangle_cell_array(g, scalar_array("fracture", std::move(fracture))));
   g.cell_arrays.push_back(triangle_cell_array(g, scalar_array("area", std::move(area))));
   g.cell_arrays.push_back(triangle_cell_array(g, scalar_array("min_angle_deg", std::move(angle))));
-  g.cell_arrays.push_back(triangle_cell_array(g, scalar_array("min_altitude", std::move(altitude))));
+  g.cell_arrays.push_back(
+      triangle_cell_array(g, scalar_array("min_altitude", std::move(altitude))));
   g.cell_arrays.push_back(line_cell_array(g, scalar_array("edge_tag", std::move(tag))));
   return g;
 }

@@ -53,8 +53,10 @@ std::string component_name(const VtkArray& a, int component) {
   static const char* tensor3[] = {"xx", "yy", "xy"};
   static const char* tensor4[] = {"xx", "yy", "zz", "xy"};
   switch (a.kind) {
-    case VtkKind::scalar: return a.name;
-    case VtkKind::vector: return a.name + " " + vector[component];
+    case VtkKind::scalar:
+      return a.name;
+    case VtkKind::vector:
+      return a.name + " " + vector[component];
     case VtkKind::symmetric_tensor:
       return a.name + " " + (a.n_components == 3 ? tensor3 : tensor4)[component];
   }
@@ -68,7 +70,8 @@ std::pair<double, double> finite_range(const std::vector<double>& v) {
     if (std::isfinite(x)) lo = std::min(lo, x), hi = std::max(hi, x);
   }
   if (lo > hi) return {0.0, 1.0};
-  if (lo == hi) return {lo - 0.5 * std::max(1.0, std::abs(lo)), hi + 0.5 * std::max(1.0, std::abs(hi))};
+  if (lo == hi)
+    return {lo - 0.5 * std::max(1.0, std::abs(lo)), hi + 0.5 * std::max(1.0, std::abs(hi))};
   return {lo, hi};
 }
 
@@ -110,7 +113,8 @@ vtkSmartPointer<vtkActor> triangle_actor(const VtkGrid& grid, const std::vector<
   poly->SetPolys(cell_array(grid.triangles));
   vtkNew<vtkDoubleArray> field;
   field->SetNumberOfValues(static_cast<vtkIdType>(values.size()));
-  for (std::size_t t = 0; t < values.size(); ++t) field->SetValue(static_cast<vtkIdType>(t), values[t]);
+  for (std::size_t t = 0; t < values.size(); ++t)
+    field->SetValue(static_cast<vtkIdType>(t), values[t]);
   poly->GetCellData()->SetScalars(field);
   vtkNew<vtkPolyDataMapper> mapper;
   mapper->SetInputData(poly);
@@ -147,7 +151,8 @@ MeshView whole(const VtkGrid& grid) {
 
 // NaN for the triangles whose centroid lies outside `v`: the colour scale
 // then spans what the picture shows.
-std::vector<double> inside_only(const VtkGrid& grid, std::vector<double> values, const MeshView& v) {
+std::vector<double> inside_only(const VtkGrid& grid, std::vector<double> values,
+                                const MeshView& v) {
   for (std::size_t t = 0; t < grid.n_triangles(); ++t) {
     const auto& tri = grid.triangles[t];
     const double cx = (grid.x[tri[0]] + grid.x[tri[1]] + grid.x[tri[2]]) / 3;

@@ -23,9 +23,12 @@ std::size_t n_values(const VtkArray& a) {
 
 bool components_fit_kind(const VtkArray& a) {
   switch (a.kind) {
-    case VtkKind::scalar: return a.n_components == 1;
-    case VtkKind::vector: return a.n_components == 2 || a.n_components == 3;
-    case VtkKind::symmetric_tensor: return a.n_components == 3 || a.n_components == 4;
+    case VtkKind::scalar:
+      return a.n_components == 1;
+    case VtkKind::vector:
+      return a.n_components == 2 || a.n_components == 3;
+    case VtkKind::symmetric_tensor:
+      return a.n_components == 3 || a.n_components == 4;
   }
   return false;
 }
@@ -33,19 +36,20 @@ bool components_fit_kind(const VtkArray& a) {
 void validate_array(const std::string& where, const VtkArray& a, std::size_t n_tuples) {
   if (a.name.empty()) throw std::invalid_argument(where + " array with an empty name");
   if (!components_fit_kind(a)) {
-    throw bad_array(where, a, std::to_string(a.n_components) +
-                                  " components do not fit its kind (scalar 1, vector 2|3, "
-                                  "symmetric tensor 3|4)");
+    throw bad_array(where, a,
+                    std::to_string(a.n_components) +
+                        " components do not fit its kind (scalar 1, vector 2|3, "
+                        "symmetric tensor 3|4)");
   }
   if (a.kind == VtkKind::symmetric_tensor && a.is_int()) {
     throw bad_array(where, a, "a tensor must hold doubles");
   }
   const std::size_t expected = n_tuples * static_cast<std::size_t>(a.n_components);
   if (n_values(a) != expected) {
-    throw bad_array(where, a, "has " + std::to_string(n_values(a)) + " values, expected " +
-                                  std::to_string(expected) + " (" + std::to_string(n_tuples) +
-                                  " tuples x " + std::to_string(a.n_components) +
-                                  " components)");
+    throw bad_array(where, a,
+                    "has " + std::to_string(n_values(a)) + " values, expected " +
+                        std::to_string(expected) + " (" + std::to_string(n_tuples) + " tuples x " +
+                        std::to_string(a.n_components) + " components)");
   }
 }
 
@@ -64,8 +68,8 @@ void validate_cells(const char* kind, const std::vector<std::array<int, N>>& cel
   for (std::size_t c = 0; c < cells.size(); ++c) {
     for (int id : cells[c]) {
       if (id < 0 || static_cast<std::size_t>(id) >= n_points) {
-        throw std::invalid_argument(std::string(kind) + " " + std::to_string(c) +
-                                    ": point id " + std::to_string(id) + " outside [0, " +
+        throw std::invalid_argument(std::string(kind) + " " + std::to_string(c) + ": point id " +
+                                    std::to_string(id) + " outside [0, " +
                                     std::to_string(n_points) + ")");
       }
     }
@@ -81,8 +85,9 @@ VtkArray pad_to_cells(const VtkGrid& grid, VtkArray part, std::size_t n_part, st
   std::visit(
       [&](auto& v) {
         using T = typename std::decay_t<decltype(v)>::value_type;
-        const T fill = std::is_same_v<T, double> ? static_cast<T>(std::numeric_limits<double>::quiet_NaN())
-                                                 : static_cast<T>(-1);
+        const T fill = std::is_same_v<T, double>
+                           ? static_cast<T>(std::numeric_limits<double>::quiet_NaN())
+                           : static_cast<T>(-1);
         std::vector<T> all(grid.n_cells() * nc, fill);
         std::copy(v.begin(), v.end(), all.begin() + static_cast<std::ptrdiff_t>(first * nc));
         v = std::move(all);

@@ -27,9 +27,12 @@ namespace {
 // Number of components in the file for an array of the record (see vtk_grid.hpp).
 int file_components(const VtkArray& a) {
   switch (a.kind) {
-    case VtkKind::scalar: return 1;
-    case VtkKind::vector: return 3;
-    case VtkKind::symmetric_tensor: return 9;
+    case VtkKind::scalar:
+      return 1;
+    case VtkKind::vector:
+      return 3;
+    case VtkKind::symmetric_tensor:
+      return 9;
   }
   return 1;
 }
@@ -78,7 +81,8 @@ vtkSmartPointer<vtkDataArray> to_vtk_array(const VtkArray& a, const std::vector<
   const vtkIdType n = static_cast<vtkIdType>(a.n_tuples());
   out->SetNumberOfTuples(n);
   auto* dst = out->GetPointer(0);
-  for (vtkIdType t = 0; t < n; ++t) expand_tuple(a, values.data() + t * a.n_components, dst + t * nc);
+  for (vtkIdType t = 0; t < n; ++t)
+    expand_tuple(a, values.data() + t * a.n_components, dst + t * nc);
   return out;
 }
 

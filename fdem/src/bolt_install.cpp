@@ -46,8 +46,8 @@ BoltPlan plan_bolts(ModelInput& in, const std::vector<BoltSpec>& specs) {
     plan.grout_material.push_back(int(in.materials.size()));
     in.materials.push_back(s.grout);
     for (int t : plan.owned[b]) {
-      const double alpha = plan.steel[b].triangle_modulus /
-                           uniaxial_modulus(in.materials[in.material[t]], in.plane);
+      const double alpha =
+          plan.steel[b].triangle_modulus / uniaxial_modulus(in.materials[in.material[t]], in.plane);
       if (!(alpha > 0 && alpha <= 1e3))
         throw InputError("fdem bolts: bolt " + std::to_string(b) + " needs stiffness factor " +
                          std::to_string(alpha) + " on triangle " + std::to_string(t) +

@@ -28,15 +28,13 @@ double cross(const Point2& o, const Point2& a, const Point2& b) {
 
 struct Box {
   double x0, y0, x1, y1;
-  bool overlaps(const Box& o) const {
-    return x0 <= o.x1 && o.x0 <= x1 && y0 <= o.y1 && o.y0 <= y1;
-  }
+  bool overlaps(const Box& o) const { return x0 <= o.x1 && o.x0 <= x1 && y0 <= o.y1 && o.y0 <= y1; }
 };
 
 /// The three segments of a bolt (long sides and centre line) and its frame.
 struct BoltGeometry {
-  Point2 a, b;      // axis
-  Point2 u, n;      // unit axis and normal
+  Point2 a, b;  // axis
+  Point2 u, n;  // unit axis and normal
   double length, half_width;
   std::array<std::array<Point2, 2>, 3> segments;
   Box box;
@@ -49,8 +47,8 @@ BoltGeometry bolt_geometry(const Bolt& bolt, std::size_t index) {
   g.length = std::hypot(bolt.b[0] - bolt.a[0], bolt.b[1] - bolt.a[1]);
   if (!(g.length > 0) || !(bolt.diameter > 0))
     throw InputError("fdem bolts: bolt " + std::to_string(index) + " has length " +
-                     std::to_string(g.length) + " m and diameter " +
-                     std::to_string(bolt.diameter) + " m; both must be positive");
+                     std::to_string(g.length) + " m and diameter " + std::to_string(bolt.diameter) +
+                     " m; both must be positive");
   g.u = {(bolt.b[0] - bolt.a[0]) / g.length, (bolt.b[1] - bolt.a[1]) / g.length};
   g.n = {-g.u[1], g.u[0]};
   g.half_width = 0.5 * bolt.diameter;
@@ -200,8 +198,10 @@ bool segment_enters_triangle(const Point2& p, const Point2& q, const Point2& v0,
 Bolt bolt_from_head(const Point2& head, const Point2& direction, double length, double diameter) {
   const double norm = std::hypot(direction[0], direction[1]);
   if (!(norm > 0) || !(length > 0))
-    throw InputError("fdem bolts: a bolt from its head needs a non-zero direction and a positive "
-                     "length (got length " + std::to_string(length) + " m)");
+    throw InputError(
+        "fdem bolts: a bolt from its head needs a non-zero direction and a positive "
+        "length (got length " +
+        std::to_string(length) + " m)");
   const Point2 u{direction[0] / norm, direction[1] / norm};
   return {head, {head[0] + length * u[0], head[1] + length * u[1]}, diameter};
 }
@@ -301,10 +301,9 @@ BoltMarks mark_bolts(const std::vector<double>& x, const std::vector<double>& y,
   std::vector<Box> boxes(triangles.size());
   for (std::size_t t = 0; t < triangles.size(); ++t) {
     const auto& tri = triangles[t];
-    boxes[t] = {std::min({x[tri[0]], x[tri[1]], x[tri[2]]}),
-                std::min({y[tri[0]], y[tri[1]], y[tri[2]]}),
-                std::max({x[tri[0]], x[tri[1]], x[tri[2]]}),
-                std::max({y[tri[0]], y[tri[1]], y[tri[2]]})};
+    boxes[t] = {
+        std::min({x[tri[0]], x[tri[1]], x[tri[2]]}), std::min({y[tri[0]], y[tri[1]], y[tri[2]]}),
+        std::max({x[tri[0]], x[tri[1]], x[tri[2]]}), std::max({y[tri[0]], y[tri[1]], y[tri[2]]})};
   }
   const CellGrid grid = build_grid(boxes);
   std::vector<std::size_t> stamp(triangles.size(), 0);  // last bolt (+1) that listed t

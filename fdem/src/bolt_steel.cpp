@@ -31,15 +31,15 @@ Material steel_crack_material(const BoltSteel& s, double f, double e_tri, double
 }
 
 void check_steel(const BoltSteel& s, double row_spacing) {
-  const bool ok = s.young > 0 && s.yield_strength > 0 &&
-                  s.ultimate_strength > s.yield_strength && s.tangent_modulus > 0 &&
-                  s.tangent_modulus < s.young && s.shear_yield_strength > 0 && s.gf_II > 0 &&
-                  s.penalty_factor > 0 && row_spacing > 0;
+  const bool ok = s.young > 0 && s.yield_strength > 0 && s.ultimate_strength > s.yield_strength &&
+                  s.tangent_modulus > 0 && s.tangent_modulus < s.young &&
+                  s.shear_yield_strength > 0 && s.gf_II > 0 && s.penalty_factor > 0 &&
+                  row_spacing > 0;
   if (!ok)
     throw InputError(
         "fdem bolts: steel needs E > 0, 0 < sigma_y < sigma_u, 0 < ET < E, tau_y > 0, "
-        "GfII > 0, penalty factor > 0 and row spacing > 0 (got E " + std::to_string(s.young) +
-        ", sigma_y " + std::to_string(s.yield_strength) + ", sigma_u " +
+        "GfII > 0, penalty factor > 0 and row spacing > 0 (got E " +
+        std::to_string(s.young) + ", sigma_y " + std::to_string(s.yield_strength) + ", sigma_u " +
         std::to_string(s.ultimate_strength) + ", ET " + std::to_string(s.tangent_modulus) +
         ", s_b " + std::to_string(row_spacing) + ")");
 }
@@ -94,7 +94,8 @@ BoltSteelModel bolt_steel_model(const BoltSteel& s, double row_spacing, const Bo
       throw InputError("fdem bolts: a crack element inside a bolt strip lies at " +
                        std::to_string(std::acos(std::min(1.0, c.cos_n)) * 57.29577951308232) +
                        " deg to the bolt's cross-section and would fail in shear (tau_y / "
-                       "sigma_y = " + std::to_string(r) +
+                       "sigma_y = " +
+                       std::to_string(r) +
                        ") before the bolt yields; mesh the strip with edges across the bolt");
     const double opening = c.cos_n * c.cos_n * (1 - std::sqrt(1 - c.cos_n * c.cos_n));
     const double slip = r * shear * (1 - std::sqrt(1 - shear / r));
@@ -102,8 +103,9 @@ BoltSteelModel bolt_steel_model(const BoltSteel& s, double row_spacing, const Bo
     if (c.cos_n * c.cos_n >= 0.5) sum_q += c.length * c.cos_n * c.cos_n;
   }
   if (!(sum_q > 0))
-    throw InputError("fdem bolts: a bolt strip has no crack element across its axis, so it "
-                     "could not yield; allow fracture in its triangles (or refine the mesh)");
+    throw InputError(
+        "fdem bolts: a bolt strip has no crack element across its axis, so it "
+        "could not yield; allow fracture in its triangles (or refine the mesh)");
   m.yield_flexibility = 2 * sum_g / strip.area;
   m.transverse_density = sum_q / strip.area;
   const double e_tri = s.young * (1 + m.yield_flexibility / s.penalty_factor);

@@ -41,10 +41,10 @@ struct BreakScratch {
 /// recomputes them.
 struct ContactTriangle {
   double x[3], y[3], vx[3], vy[3], m[3];
-  double two_a;              ///< twice the area (corners counter-clockwise: > 0)
-  double gx[3], gy[3];       ///< gradients of the barycentric coordinates
-  double h;                  ///< smallest altitude (meaningful when two_a > 0)
-  double len[3], tx[3], ty[3];  ///< edge k (corners k -> k+1): length, unit tangent
+  double two_a;                   ///< twice the area (corners counter-clockwise: > 0)
+  double gx[3], gy[3];            ///< gradients of the barycentric coordinates
+  double h;                       ///< smallest altitude (meaningful when two_a > 0)
+  double len[3], tx[3], ty[3];    ///< edge k (corners k -> k+1): length, unit tangent
   double x_lo, x_hi, y_lo, y_hi;  ///< bounding box
 };
 
@@ -60,20 +60,20 @@ struct ContactData {
   double penalty = 0, buffer = 0;
   std::vector<double> mu;  ///< per material: tan(residual friction angle)
   // Static topology (setup): per triangle edge k (corners k -> k+1).
-  std::vector<int> edge_nbr;    ///< neighbouring triangle or -1
-  std::vector<int> edge_crack;  ///< crack element on the edge or -1
+  std::vector<int> edge_nbr;                          ///< neighbouring triangle or -1
+  std::vector<int> edge_crack;                        ///< crack element on the edge or -1
   std::vector<int> vertex_tri_start, vertex_tri;      ///< CSR mesh vertex -> its triangles
   std::vector<int> vertex_crack_start, vertex_crack;  ///< CSR mesh vertex -> crack elements
                                                       ///< with an end there
   // Detection results.
-  std::vector<int> candidates;        ///< free-surface triangles, ascending
-  std::vector<int> component;         ///< per node: intact-crack component at its vertex
-  std::vector<double> boxes;          ///< 4 per candidate, grown by buffer / 2
-  std::vector<int> watch_nodes;       ///< nodes of the candidates (displacement check)
-  std::vector<double> detect_pos;     ///< per node: position at the last detection
+  std::vector<int> candidates;     ///< free-surface triangles, ascending
+  std::vector<int> component;      ///< per node: intact-crack component at its vertex
+  std::vector<double> boxes;       ///< 4 per candidate, grown by buffer / 2
+  std::vector<int> watch_nodes;    ///< nodes of the candidates (displacement check)
+  std::vector<double> detect_pos;  ///< per node: position at the last detection
   std::vector<std::array<int, 2>> pairs, old_pairs;  ///< triangle ids, canonical order
-  std::vector<double> friction, old_friction;         ///< 6 per pair: role x contactor edge
-  std::vector<double> pair_force;                     ///< 12 per pair: A's corners, B's corners
+  std::vector<double> friction, old_friction;        ///< 6 per pair: role x contactor edge
+  std::vector<double> pair_force;                    ///< 12 per pair: A's corners, B's corners
   std::vector<double> energy_partial;  ///< 2 per block of kPairBlock pairs: friction, damping
   std::vector<int> gather_tri, gather_start, gather_entry;  ///< CSR triangle -> 2 pair + side
   GridScratch grid;

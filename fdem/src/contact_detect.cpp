@@ -133,8 +133,7 @@ void build_candidates(EngineData& d) {
   for (int t : c.candidates)
     for (int k = 0; k < 3; ++k) c.watch_nodes.push_back(d.tris.nodes[3 * t + k]);
   std::sort(c.watch_nodes.begin(), c.watch_nodes.end());
-  c.watch_nodes.erase(std::unique(c.watch_nodes.begin(), c.watch_nodes.end()),
-                      c.watch_nodes.end());
+  c.watch_nodes.erase(std::unique(c.watch_nodes.begin(), c.watch_nodes.end()), c.watch_nodes.end());
 }
 
 /// True when an edge normal of either triangle separates them by more than
@@ -227,8 +226,8 @@ double carry_friction(EngineData& d) {
   std::size_t o = 0;
   for (std::size_t i = 0; i < c.pairs.size(); ++i) {
     for (; o < c.old_pairs.size() && c.old_pairs[o] < c.pairs[i]; ++o)
-      change += contact_pair_energy(d, c.old_pairs[o][0], c.old_pairs[o][1],
-                                    &c.old_friction[6 * o], at);
+      change +=
+          contact_pair_energy(d, c.old_pairs[o][0], c.old_pairs[o][1], &c.old_friction[6 * o], at);
     if (o < c.old_pairs.size() && c.old_pairs[o] == c.pairs[i]) {
       std::copy_n(&c.old_friction[6 * o], 6, &c.friction[6 * i]);
       ++o;
@@ -237,8 +236,8 @@ double carry_friction(EngineData& d) {
     }
   }
   for (; o < c.old_pairs.size(); ++o)
-    change += contact_pair_energy(d, c.old_pairs[o][0], c.old_pairs[o][1],
-                                  &c.old_friction[6 * o], at);
+    change +=
+        contact_pair_energy(d, c.old_pairs[o][0], c.old_pairs[o][1], &c.old_friction[6 * o], at);
   return change;
 }
 
@@ -353,8 +352,7 @@ void trial_pairs(EngineData& d) {
   for (int e : s.cracks) add(d.cracks.tri[2 * e], d.cracks.tri[2 * e + 1]);
   for (int v : s.vertices)
     for (int i = c.vertex_tri_start[v]; i < c.vertex_tri_start[v + 1]; ++i)
-      for (int j = i + 1; j < c.vertex_tri_start[v + 1]; ++j)
-        add(c.vertex_tri[i], c.vertex_tri[j]);
+      for (int j = i + 1; j < c.vertex_tri_start[v + 1]; ++j) add(c.vertex_tri[i], c.vertex_tri[j]);
   std::sort(s.trial.begin(), s.trial.end());
   s.trial.erase(std::unique(s.trial.begin(), s.trial.end()), s.trial.end());
 }
@@ -472,8 +470,7 @@ void contact_breaks(EngineData& d) {
   s.tris.clear();
   s.vertices.clear();
   for (int e = 0; e < static_cast<int>(d.cracks.size()); ++e) {
-    if (d.cracks.broken_step[e] != d.step ||
-        d.cracks.state[e] != std::uint8_t(CrackState::kBroken))
+    if (d.cracks.broken_step[e] != d.step || d.cracks.state[e] != std::uint8_t(CrackState::kBroken))
       continue;
     s.cracks.push_back(e);
     for (int side = 0; side < 2; ++side) {

@@ -61,7 +61,8 @@ void clip_left(Polygon& p, double ax, double ay, double bx, double by) {
 
 /// int_{A n B} phi_A dA.
 double potential_integral(const Tri& a, const Tri& b) {
-  const double two_a = (a.x[1] - a.x[0]) * (a.y[2] - a.y[0]) - (a.x[2] - a.x[0]) * (a.y[1] - a.y[0]);
+  const double two_a =
+      (a.x[1] - a.x[0]) * (a.y[2] - a.y[0]) - (a.x[2] - a.x[0]) * (a.y[1] - a.y[0]);
   if (!(two_a > 0.0)) return 0.0;
   const double gx = (a.x[0] + a.x[1] + a.x[2]) / 3.0, gy = (a.y[0] + a.y[1] + a.y[2]) / 3.0;
   double sum = 0.0;
@@ -98,7 +99,8 @@ double potential_integral(const Tri& a, const Tri& b) {
 /// Stored energy of the three friction springs of contactor c's edges on
 /// target t: F^2 / (2 k_t) with k_t = 3 p L_in / H.
 double spring_energy(const Tri& c, const Tri& t, double p, const double* spring) {
-  const double two_a = (t.x[1] - t.x[0]) * (t.y[2] - t.y[0]) - (t.x[2] - t.x[0]) * (t.y[1] - t.y[0]);
+  const double two_a =
+      (t.x[1] - t.x[0]) * (t.y[2] - t.y[0]) - (t.x[2] - t.x[0]) * (t.y[1] - t.y[0]);
   if (!(two_a > 0.0)) return 0.0;
   double longest = 0;
   for (int k = 0; k < 3; ++k)
@@ -116,9 +118,12 @@ double spring_energy(const Tri& c, const Tri& t, double p, const double* spring)
         return ((t.x[j] - px) * (t.y[m] - py) - (t.x[m] - px) * (t.y[j] - py)) / two_a;
       };
       const double la = lam(c.x[a], c.y[a]), lb = lam(c.x[b], c.y[b]);
-      if (la < 0.0 && lb < 0.0) hi = lo;
-      else if (la < 0.0) lo = std::max(lo, la / (la - lb));
-      else if (lb < 0.0) hi = std::min(hi, la / (la - lb));
+      if (la < 0.0 && lb < 0.0)
+        hi = lo;
+      else if (la < 0.0)
+        lo = std::max(lo, la / (la - lb));
+      else if (lb < 0.0)
+        hi = std::min(hi, la / (la - lb));
     }
     if (!(hi > lo)) continue;
     const double len = std::hypot(c.x[b] - c.x[a], c.y[b] - c.y[a]);

@@ -187,7 +187,8 @@ double watched_drift2(const EngineData& d) {
   // Serial below a few thousand nodes (an intact body's outline): a
   // parallel region would cost more than the loop.
 #pragma omp parallel for schedule(static) num_threads(thread_count(d.threads)) \
-    reduction(max : worst) if (n > 16384)
+    reduction(max                                                              \
+              : worst) if (n > 16384)
   for (long i = 0; i < n; ++i) {
     const int node = c.watch_nodes[i];
     const double dx = d.nodes.pos[2 * node] - c.detect_pos[2 * node];

@@ -59,8 +59,10 @@ void bucket(const std::vector<double>& boxes, long n, const Grid& g, GridScratch
   s.cell_start.assign(n_cells + 1, 0);
   for (long i = 0; i < n; ++i) {
     const double* b = &boxes[4 * i];
-    const long cx = std::min(g.nx - 1, static_cast<long>((0.5 * (b[0] + b[2]) - g.x0) * g.inv_cell));
-    const long cy = std::min(g.ny - 1, static_cast<long>((0.5 * (b[1] + b[3]) - g.y0) * g.inv_cell));
+    const long cx =
+        std::min(g.nx - 1, static_cast<long>((0.5 * (b[0] + b[2]) - g.x0) * g.inv_cell));
+    const long cy =
+        std::min(g.ny - 1, static_cast<long>((0.5 * (b[1] + b[3]) - g.y0) * g.inv_cell));
     s.cell[i] = static_cast<int>(cy * g.nx + cx);
     ++s.cell_start[s.cell[i] + 1];
   }
@@ -87,8 +89,7 @@ int partners(const std::vector<double>& boxes, const Grid& g, const GridScratch&
         ++n;
       }
     }
-  if (kWrite)
-    std::sort(out, out + n, [](const auto& p, const auto& q) { return p[1] < q[1]; });
+  if (kWrite) std::sort(out, out + n, [](const auto& p, const auto& q) { return p[1] < q[1]; });
   return n;
 }
 

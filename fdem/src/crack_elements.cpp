@@ -76,9 +76,9 @@ inline double element_potential(const CrackConstants& k, const double o[3], cons
 /// Evaluates one element; returns true when it broke this step. Adds to
 /// `released` the potential the law released: phi(D_old) - phi(D_new) when
 /// damage grew, the whole phi(D_old) when the element broke.
-[[gnu::always_inline]] inline bool crack_element(const EngineData& d, std::size_t c,
-                                                double* damage, double* out, double& sum_a2,
-                                                double& sum_b2, double& released) {
+[[gnu::always_inline]] inline bool crack_element(const EngineData& d, std::size_t c, double* damage,
+                                                 double* out, double& sum_a2, double& sum_b2,
+                                                 double& released) {
   const int* nd = &d.cracks.nodes[4 * c];
   const double* p = d.nodes.pos.data();
   const double x0 = p[2 * nd[0]], y0 = p[2 * nd[0] + 1], x1 = p[2 * nd[1]], y1 = p[2 * nd[1] + 1];
@@ -157,8 +157,7 @@ inline double element_potential(const CrackConstants& k, const double o[3], cons
 
 }  // namespace
 
-double crack_end_openings(const EngineData& d, std::size_t c, const Placement& at,
-                          double out[4]) {
+double crack_end_openings(const EngineData& d, std::size_t c, const Placement& at, double out[4]) {
   const int* nd = &d.cracks.nodes[4 * c];
   double x[4], y[4];
   for (int k = 0; k < 4; ++k) {

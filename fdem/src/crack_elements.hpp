@@ -21,14 +21,12 @@ double crack_element_energy(const EngineData& d, std::size_t c);
 /// Current (opening, slip) at end 0 and end 1 of element c, without
 /// offsets; returns the element length h.
 double crack_end_openings(const EngineData& d, std::size_t c, double out[4]);
-double crack_end_openings(const EngineData& d, std::size_t c, const Placement& at,
-                          double out[4]);
+double crack_end_openings(const EngineData& d, std::size_t c, const Placement& at, double out[4]);
 
 /// Current (opening, slip) at end 0, the midpoint and end 1 of element c
 /// (the three integration points), without offsets; returns h.
 double crack_point_openings(const EngineData& d, std::size_t c, double out[6]);
-double crack_point_openings(const EngineData& d, std::size_t c, const Placement& at,
-                            double out[6]);
+double crack_point_openings(const EngineData& d, std::size_t c, const Placement& at, double out[6]);
 
 /// Failure mode from the summed squared excursions at breakage: mode I when
 /// opening carries at least 90% of a^2 + b^2, mode II when slip does, else

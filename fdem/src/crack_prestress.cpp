@@ -60,7 +60,9 @@ void mean_traction(const EngineData& d, std::size_t c, const double n[2], double
 void ends_by_vertex(const EngineData& d, std::vector<int>& start, std::vector<int>& ends) {
   const std::size_t nv = d.vertex_node_start.size() - 1, nc = d.cracks.size();
   start.assign(nv + 1, 0);
-  auto vertex_of = [&](std::size_t end) { return d.nodes.vertex[d.cracks.nodes[4 * (end / 2) + end % 2]]; };
+  auto vertex_of = [&](std::size_t end) {
+    return d.nodes.vertex[d.cracks.nodes[4 * (end / 2) + end % 2]];
+  };
   for (std::size_t end = 0; end < 2 * nc; ++end)
     if (d.cracks.active[end / 2]) ++start[vertex_of(end) + 1];
   for (std::size_t v = 0; v < nv; ++v) start[v + 1] += start[v];
@@ -91,9 +93,8 @@ void balance_vertex(const EngineData& d, int v, const int* ends, int n_ends,
   for (int j = 0; j < n_ends; ++j)
     for (int x = 0; x < 2; ++x) t0(j, x) = T[2 * ends[j] + x];
   b -= A * t0;
-  const Eigen::MatrixXd lambda = Eigen::CompleteOrthogonalDecomposition<Eigen::MatrixXd>(
-                                     A * A.transpose())
-                                     .solve(b);
+  const Eigen::MatrixXd lambda =
+      Eigen::CompleteOrthogonalDecomposition<Eigen::MatrixXd>(A * A.transpose()).solve(b);
   const Eigen::MatrixXd t = t0 + A.transpose() * lambda;
   for (int j = 0; j < n_ends; ++j)
     for (int x = 0; x < 2; ++x) T[2 * ends[j] + x] = t(j, x);
@@ -124,7 +125,7 @@ long prestress_cracks(EngineData& d) {
   const std::size_t nc = d.cracks.size(), nn = d.nodes.size();
   if (nc == 0 || d.tris.sigma0.empty()) return 0;
   if (d.masses_dirty) refresh_nodes(d);  // masses, external loads, crack activity
-  triangle_forces(d);  // an inverted start is reported by the first step
+  triangle_forces(d);                    // an inverted start is reported by the first step
   std::vector<double> need(2 * nn);
   for (std::size_t i = 0; i < nn; ++i) {
     double fx, fy;

@@ -114,13 +114,12 @@ std::size_t contact_bytes(const detail::ContactData& c, Bytes b) {
   const auto& s = c.breaks;
   return b(c.edge_nbr) + b(c.edge_crack) + b(c.vertex_tri_start) + b(c.vertex_tri) +
          b(c.vertex_crack_start) + b(c.vertex_crack) + b(c.component) + b(c.candidates) +
-         b(c.boxes) + b(c.watch_nodes) + b(c.detect_pos) + b(c.pairs) + b(c.old_pairs) + b(c.friction) +
-         b(c.old_friction) + b(c.pair_force) + b(c.gather_tri) + b(c.gather_start) +
-         b(c.gather_entry) + b(c.grid.cell) + b(c.grid.cell_start) +
-         b(c.grid.items) + b(c.grid.count) + b(c.grid.offset) + b(c.grid.found) +
-         b(c.energy_partial) + b(s.cracks) + b(s.tris) + b(s.vertices) + b(s.ints) +
-         b(s.merged) + b(s.boxes) + b(s.trial) + b(s.found) + b(s.gather_index) +
-         b(c.narrow.tris) + b(c.narrow.rows);
+         b(c.boxes) + b(c.watch_nodes) + b(c.detect_pos) + b(c.pairs) + b(c.old_pairs) +
+         b(c.friction) + b(c.old_friction) + b(c.pair_force) + b(c.gather_tri) + b(c.gather_start) +
+         b(c.gather_entry) + b(c.grid.cell) + b(c.grid.cell_start) + b(c.grid.items) +
+         b(c.grid.count) + b(c.grid.offset) + b(c.grid.found) + b(c.energy_partial) + b(s.cracks) +
+         b(s.tris) + b(s.vertices) + b(s.ints) + b(s.merged) + b(s.boxes) + b(s.trial) +
+         b(s.found) + b(s.gather_index) + b(c.narrow.tris) + b(c.narrow.rows);
 }
 
 }  // namespace
@@ -133,10 +132,10 @@ std::size_t Engine::memory_bytes() const {
   const auto& c = d.cracks;
   return b(n.pos) + b(n.vel) + b(n.mesh_pos) + b(n.mass) + b(n.inv_mass) + b(n.fext) + b(n.bc) +
          b(n.vertex) + b(n.slot_start) + b(n.slot_index) + b(t.nodes) + b(t.ref_inv) + b(t.area0) +
-         b(t.eta) + b(t.alpha) + b(t.sigma0) + b(t.viscous_stress) + b(t.material) +
-         b(t.active) + b(c.nodes) + b(c.tri) + b(c.damage) + b(c.material) + b(c.state) +
-         b(c.mode) + b(c.active) + b(c.broken_step) + b(c.offset) + b(d.slots) +
-         b(d.block_partial) + b(d.energy_partial) + b(d.vertex_nodes) + b(d.vertex_node_start) +
+         b(t.eta) + b(t.alpha) + b(t.sigma0) + b(t.viscous_stress) + b(t.material) + b(t.active) +
+         b(c.nodes) + b(c.tri) + b(c.damage) + b(c.material) + b(c.state) + b(c.mode) +
+         b(c.active) + b(c.broken_step) + b(c.offset) + b(d.slots) + b(d.block_partial) +
+         b(d.energy_partial) + b(d.vertex_nodes) + b(d.vertex_node_start) +
          contact_bytes(d.contact, b);
 }
 

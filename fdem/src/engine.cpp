@@ -204,9 +204,9 @@ void Engine::Impl::refresh() {
     // limit is already reduced for its damping; the contact's own ratio and
     // the local damping (which acts on contact forces too) raise its
     // frequency by damping_stiffening.
-    const double f = w2 > 0 ? detail::damping_stiffening(d, std::sqrt(w2),
-                                                         d.contact.settings.damping_ratio)
-                            : 1.0;
+    const double f =
+        w2 > 0 ? detail::damping_stiffening(d, std::sqrt(w2), d.contact.settings.damping_ratio)
+               : 1.0;
     critical_dt = 2.0 / std::sqrt(omega * omega + w2 * f * f);
   }
   if (auto_dt) d.dt = dt_safety * critical_dt;
@@ -255,7 +255,7 @@ void Engine::step() {
   const long n_broken = detail::crack_forces(d);
   double t2 = omp_get_wtime();
   impl_->times.cracks += t2 - t1;
-  if (d.contact_on) {  // one branch per step while contact is off
+  if (d.contact_on) {                             // one branch per step while contact is off
     if (n_broken > 0) detail::contact_breaks(d);  // a local update, not a new detection
     detail::contact_forces(d);
     const double t3 = omp_get_wtime();
@@ -420,7 +420,8 @@ MassScalingReport Engine::mass_scaling_report() const {
   double scaled = 0, real = 0;
   for (std::size_t t = 0; t < d.tris.size(); ++t) {
     if (!d.tris.active[t]) continue;
-    const double f = d.tris.density_factor(t), m = d.solids[d.tris.material[t]].rho * d.tris.area0[t];
+    const double f = d.tris.density_factor(t),
+                 m = d.solids[d.tris.material[t]].rho * d.tris.area0[t];
     r.max_factor = std::max(r.max_factor, f);
     scaled += f * m;
     real += m;
@@ -469,8 +470,9 @@ void Engine::set_initial_stress(std::size_t t, const std::array<double, 3>& stre
 void Engine::set_contact(const ContactSettings& contact) {
   if (!(contact.penalty >= 0) || !(contact.buffer >= 0) || !(contact.damping_ratio >= 0) ||
       !(contact.damping_ratio <= 1))
-    throw InputError("fdem: contact penalty and buffer must be >= 0 (0 = default) and the "
-                     "damping ratio in [0, 1]");
+    throw InputError(
+        "fdem: contact penalty and buffer must be >= 0 (0 = default) and the "
+        "damping ratio in [0, 1]");
   auto& d = impl_->d;
   const detail::Placement at = detail::half_step_placement(d);
   detail::book_change(

@@ -151,7 +151,7 @@ void fields(Ar& ar, ContactData& c) {
   ar.state(c.boxes);
   ar.state(c.watch_nodes);
   ar.state(c.detect_pos);  // boxes of later candidates and the drift check start here
-  ar.state(c.pairs);  // in their canonical order, not detected again
+  ar.state(c.pairs);       // in their canonical order, not detected again
   ar.state(c.old_pairs);
   ar.state(c.friction);  // the tangential springs
   ar.state(c.old_friction);
@@ -159,7 +159,7 @@ void fields(Ar& ar, ContactData& c) {
   ar.state(c.gather_tri);
   ar.state(c.gather_start);
   ar.state(c.gather_entry);
-  ar.skip(c.grid);  // scratch: every detection rewrites it before reading it
+  ar.skip(c.grid);    // scratch: every detection rewrites it before reading it
   ar.skip(c.breaks);  // scratch: every local update rewrites it before reading it
   ar.skip(c.narrow);  // scratch: every contact pass rewrites it before reading it
   ar.state(c.dirty);
@@ -196,8 +196,8 @@ void fields(Ar& ar, EngineData& d) {
   ar.state(d.reversal);
   ar.state(d.damping);
   ar.state(d.kinetic_damping);  // the peak test continues across a restart
-  ar.state(d.mass_scaling);  // set_mass_scaling may come after construction
-  ar.state(d.scaled_dt);     // resolved once, kept through stage changes
+  ar.state(d.mass_scaling);     // set_mass_scaling may come after construction
+  ar.state(d.scaled_dt);        // resolved once, kept through stage changes
   ar.state(d.gravity);
   ar.state(d.contact_on);
   fields(ar, d.contact);
@@ -206,9 +206,9 @@ void fields(Ar& ar, EngineData& d) {
   ar.state(d.time);
   ar.state(d.dead_loads);
   ar.state(d.energy_partial);  // scratch, kept for its size
-  ar.state(d.energy);         // the energy ledger: a restart's balance continues
-  ar.skip(d.threads);  // a setting, not state: a restart may use another count
-  ar.skip(d.crack_batch);  // a path, not state: both give the same bits
+  ar.state(d.energy);          // the energy ledger: a restart's balance continues
+  ar.skip(d.threads);          // a setting, not state: a restart may use another count
+  ar.skip(d.crack_batch);      // a path, not state: both give the same bits
 }
 
 /// Engine::Impl is private to Engine: deduced here, never named.

@@ -40,16 +40,16 @@ struct Nodes {
 };
 
 struct Triangles {
-  std::vector<int> nodes;       ///< 3 per triangle
-  std::vector<double> ref_inv;  ///< F0^-1 row-major, 4 per triangle
-  std::vector<double> area0;    ///< reference area
-  std::vector<double> eta;      ///< viscous damping coefficient [Pa s]
-  std::vector<double> alpha;    ///< stiffness factor
-  std::vector<double> sigma0;   ///< initial stress (sxx, syy, sxy); empty if none
+  std::vector<int> nodes;              ///< 3 per triangle
+  std::vector<double> ref_inv;         ///< F0^-1 row-major, 4 per triangle
+  std::vector<double> area0;           ///< reference area
+  std::vector<double> eta;             ///< viscous damping coefficient [Pa s]
+  std::vector<double> alpha;           ///< stiffness factor
+  std::vector<double> sigma0;          ///< initial stress (sxx, syy, sxy); empty if none
   std::vector<double> viscous_stress;  ///< dt/2 A alpha eta D of the last step (3 per
                                        ///< triangle; empty without viscous damping): the energy
                                        ///< ledger books its work with the next velocities
-  std::vector<double> mass_scale;  ///< density factor >= 1 (mass_scaling.cpp); empty when off
+  std::vector<double> mass_scale;      ///< density factor >= 1 (mass_scaling.cpp); empty when off
   std::vector<std::uint16_t> material;
   std::vector<std::uint8_t> active;
   std::size_t size() const { return area0.size(); }
@@ -65,9 +65,9 @@ struct Cracks {
   std::vector<std::uint8_t> mode;    ///< FailureMode
   std::vector<std::uint8_t> active;  ///< both triangles active
   std::vector<std::int32_t> broken_step;
-  std::vector<double> offset;  ///< (o, s) taken as zero at end 0, midpoint, end 1
-                               ///< (6 per element); empty until an element is
-                               ///< re-joined or pre-stressed (crack_prestress.cpp)
+  std::vector<double> offset;    ///< (o, s) taken as zero at end 0, midpoint, end 1
+                                 ///< (6 per element); empty until an element is
+                                 ///< re-joined or pre-stressed (crack_prestress.cpp)
   std::vector<double> strength;  ///< strength factor k (ft and c times k) per element;
                                  ///< empty while every factor is 1
                                  ///< (strength_heterogeneity.hpp)
@@ -118,12 +118,12 @@ struct EngineData {
   std::vector<int> vertex_node_start, vertex_nodes;  ///< CSR mesh vertex -> engine nodes
   std::vector<NodalLoad> loads;
   std::vector<TagNodes> tag_nodes;
-  bool masses_dirty = true;           ///< rebuild masses, fext, crack activity before stepping
-  bool dead_loads = false;            ///< some fext is not zero (gravity or boundary loads)
-  std::vector<double> slots;          ///< interleaved fx, fy per slot
-  std::vector<double> block_partial;  ///< node loop: kNodeSums partial sums per node block
+  bool masses_dirty = true;            ///< rebuild masses, fext, crack activity before stepping
+  bool dead_loads = false;             ///< some fext is not zero (gravity or boundary loads)
+  std::vector<double> slots;           ///< interleaved fx, fy per slot
+  std::vector<double> block_partial;   ///< node loop: kNodeSums partial sums per node block
   std::vector<double> energy_partial;  ///< triangle and crack loops: one per kEnergyBlock
-  double reversal[2] = {0, 0};        ///< sum m v_old.v_new, sum m v_old^2 (free nodes)
+  double reversal[2] = {0, 0};         ///< sum m v_old.v_new, sum m v_old^2 (free nodes)
   DampingSettings damping;
   KineticDampingState kinetic_damping;
   MassScaling mass_scaling;

@@ -12,12 +12,12 @@ struct Engine::Impl {
   detail::EngineData d;
   PhaseTimes times;
   double dt_safety = 0.8;
-  double critical_dt = -1;  ///< cached; < 0 when it must be recomputed
-  bool auto_dt = true;      ///< dt follows dt_safety * critical_dt
-  bool forced_dt = false;   ///< an explicit dt above the limit was forced
+  double critical_dt = -1;         ///< cached; < 0 when it must be recomputed
+  bool auto_dt = true;             ///< dt follows dt_safety * critical_dt
+  bool forced_dt = false;          ///< an explicit dt above the limit was forced
   int reversals = 0;               ///< consecutive steps with growing velocity reversal
   bool prestress_pending = false;  ///< crack pre-stress is set before the first step
-  long prestress_clipped = 0;  ///< crack points whose initial traction exceeded the strength
+  long prestress_clipped = 0;      ///< crack points whose initial traction exceeded the strength
   void refresh();
   /// A stiffness, damping or contact change: the stability limit is
   /// recomputed, and with mass scaling the density factors follow.

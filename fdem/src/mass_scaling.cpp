@@ -77,9 +77,8 @@ void scale_masses(EngineData& d) {
   // target is held without it, so a later change of local damping does not
   // scale every mass.
   if (!(d.scaled_dt > 0))
-    d.scaled_dt = d.mass_scaling.dt > 0
-                      ? d.mass_scaling.dt
-                      : std::sqrt(1.0 + d.damping.local) * largest_node_limit(d);
+    d.scaled_dt = d.mass_scaling.dt > 0 ? d.mass_scaling.dt
+                                        : std::sqrt(1.0 + d.damping.local) * largest_node_limit(d);
   if (!(d.scaled_dt > 0)) return;  // nothing stiff yet: resolved at a later refresh
   const double g = 2.0 / d.scaled_dt, c = d.damping.mass_proportional;
   std::vector<double> w2, xi;

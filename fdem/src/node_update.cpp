@@ -140,9 +140,8 @@ struct NodeSums {
 /// dead load's is inside it), and the damping and dashpot it overrode did
 /// nothing; a free component books its dead load, dashpot and damping.
 [[gnu::noinline]] void boundary_node_work(const EngineData& d, long i, double vx0, double vy0,
-                                          double vx, double vy, bool free_x, bool free_y,
-                                          double cx, double cy, double lx, double ly,
-                                          NodeSums& sum) {
+                                          double vx, double vy, bool free_x, bool free_y, double cx,
+                                          double cy, double lx, double ly, NodeSums& sum) {
   const double half_dt = 0.5 * d.dt;
   const double hx = (vx0 + vx) * half_dt, hy = (vy0 + vy) * half_dt;
   const double m = d.nodes.mass[i], gx = d.nodes.fext[2 * i], gy = d.nodes.fext[2 * i + 1];

@@ -47,8 +47,7 @@ inline void load_state(const EngineData& d, std::size_t t, TriangleState& s) {
   deformation(d, t, s);
 }
 
-inline void load_state(const EngineData& d, std::size_t t, const Placement& at,
-                       TriangleState& s) {
+inline void load_state(const EngineData& d, std::size_t t, const Placement& at, TriangleState& s) {
   const int* nd = &d.tris.nodes[3 * t];
   for (int k = 0; k < 3; ++k) {
     s.x[k] = at.x(nd[k]);
@@ -79,7 +78,7 @@ inline VelocityGradient velocity_gradient(const EngineData& d, std::size_t t,
 
 /// What the force loop needs to book the viscous stress's work (energy.hpp).
 struct ViscousWork {
-  double* last;     ///< w of the last step, 3 per triangle (Triangles::viscous_stress)
+  double* last;       ///< w of the last step, 3 per triangle (Triangles::viscous_stress)
   double quarter_dt;  ///< dt / 4: dt/2 times the area's 1/2 of the Jacobian determinant
 };
 
@@ -224,8 +223,7 @@ double triangle_strain_energy(const EngineData& d, std::size_t t) {
   TriangleState s;
   load_state(d, t, s);
   if (!(s.J > 0.0)) return 0.0;
-  return d.tris.alpha[t] * d.tris.area0[t] *
-         hyperelastic_density(d.solids[d.tris.material[t]], s);
+  return d.tris.alpha[t] * d.tris.area0[t] * hyperelastic_density(d.solids[d.tris.material[t]], s);
 }
 
 double triangle_stored_energy(const EngineData& d, std::size_t t, const Placement& at) {

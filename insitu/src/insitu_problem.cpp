@@ -83,7 +83,6 @@
 // translations ML coarsens elasticity poorly. If CG does not converge the
 // direct solver takes over and the record says so.
 #include <Epetra_MultiVector.h>
-#include <Teuchos_ParameterList.hpp>
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/base/symmetric_tensor.h>
@@ -107,6 +106,7 @@
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/vector.h>
 
+#include <Teuchos_ParameterList.hpp>
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -164,14 +164,12 @@ SymmetricTensor<4, 2> elasticity_tensor(const ElasticMaterial& m) {
     for (unsigned int j = 0; j < 2; ++j)
       for (unsigned int k = 0; k < 2; ++k)
         for (unsigned int l = 0; l < 2; ++l)
-          C[i][j][k][l] = (i == j && k == l ? lambda : 0.0) +
-                          ((i == k && j == l) ? mu : 0.0) + ((i == l && j == k) ? mu : 0.0);
+          C[i][j][k][l] = (i == j && k == l ? lambda : 0.0) + ((i == k && j == l) ? mu : 0.0) +
+                          ((i == l && j == k) ? mu : 0.0);
   return C;
 }
 
-double lame_lambda(const ElasticMaterial& m) {
-  return m.E * m.nu / ((1 + m.nu) * (1 - 2 * m.nu));
-}
+double lame_lambda(const ElasticMaterial& m) { return m.E * m.nu / ((1 + m.nu) * (1 - 2 * m.nu)); }
 
 std::uint64_t edge_key(int a, int b) {
   const auto lo = static_cast<std::uint64_t>(std::min(a, b));
@@ -218,9 +216,9 @@ class InsituProblem {
   std::vector<Role> role_;                         ///< per mesh triangle, this stage
   std::vector<std::uint8_t> grid_removed_;         ///< removal pattern the grid was built for
   bool have_grid_ = false;
-  bool have_system_ = false;                       ///< dofs and sparsity match the grid
-  std::vector<int> cell_to_triangle_;              ///< active cell index -> mesh triangle
-  std::vector<int> grid_to_mesh_vertex_;           ///< triangulation vertex -> mesh vertex
+  bool have_system_ = false;              ///< dofs and sparsity match the grid
+  std::vector<int> cell_to_triangle_;     ///< active cell index -> mesh triangle
+  std::vector<int> grid_to_mesh_vertex_;  ///< triangulation vertex -> mesh vertex
 
   // The finite element machinery of step-8, on simplices.
   Triangulation<2> triangulation_;
@@ -399,7 +397,8 @@ void InsituProblem::make_grid() {
   for (const auto& c : cells)
     for (int k = 1; k < 3; ++k) parent[find(c.vertices[k])] = find(c.vertices[0]);
   std::size_t n_parts = 0;
-  for (std::size_t v = 0; v < vertices.size(); ++v) n_parts += find(static_cast<int>(v)) == static_cast<int>(v);
+  for (std::size_t v = 0; v < vertices.size(); ++v)
+    n_parts += find(static_cast<int>(v)) == static_cast<int>(v);
   if (n_parts != 1)
     throw InputError("insitu: the cells left in the system form " + std::to_string(n_parts) +
                      " disconnected parts: the system is singular (a zone floats free once "
@@ -422,20 +421,19 @@ void InsituProblem::make_grid() {
   for (const auto& cell : triangulation_.active_cell_iterators()) {
     const auto i = cell->active_cell_index();
     const auto& c = cells[i];
-    same_order = same_order &&
-                 sorted_vertices({cell->vertex_index(0), cell->vertex_index(1),
-                                  cell->vertex_index(2)}) ==
-                     sorted_vertices({c.vertices[0], c.vertices[1], c.vertices[2]});
+    same_order = same_order && sorted_vertices({cell->vertex_index(0), cell->vertex_index(1),
+                                                cell->vertex_index(2)}) ==
+                                   sorted_vertices({c.vertices[0], c.vertices[1], c.vertices[2]});
     cell_to_triangle_[i] = cell_triangles[i];
   }
   if (!same_order) {
     std::map<std::array<unsigned int, 3>, int> by_vertices;
     for (std::size_t i = 0; i < cells.size(); ++i)
-      by_vertices[sorted_vertices({cells[i].vertices[0], cells[i].vertices[1],
-                                   cells[i].vertices[2]})] = cell_triangles[i];
+      by_vertices[sorted_vertices(
+          {cells[i].vertices[0], cells[i].vertices[1], cells[i].vertices[2]})] = cell_triangles[i];
     for (const auto& cell : triangulation_.active_cell_iterators())
-      cell_to_triangle_[cell->active_cell_index()] = by_vertices.at(sorted_vertices(
-          {cell->vertex_index(0), cell->vertex_index(1), cell->vertex_index(2)}));
+      cell_to_triangle_[cell->active_cell_index()] = by_vertices.at(
+          sorted_vertices({cell->vertex_index(0), cell->vertex_index(1), cell->vertex_index(2)}));
   }
 
   // Boundary ids from the mesh's tags; the load kind (see FaceLoad) from
@@ -566,8 +564,7 @@ double InsituProblem::initial_szz(const Point<2>& x) const {
   return ground->nu * trace(initial_stress(x));
 }
 
-Tensor<1, 2> InsituProblem::boundary_traction(const Point<2>& x,
-                                              const Tensor<1, 2>& normal) const {
+Tensor<1, 2> InsituProblem::boundary_traction(const Point<2>& x, const Tensor<1, 2>& normal) const {
   SymmetricTensor<2, 2> sigma;
   if (spec_.loading == BoundaryLoading::kKirschExact) {
     KirschCase k;
@@ -618,8 +615,8 @@ void InsituProblem::add_boundary_tractions(const DoFHandler<2>::active_cell_iter
       Tensor<1, 2> t = boundary_traction(x, fe_face_values.normal_vector(q));
       if (base) t[1] += base_q0_ + base_q1_ * (x[0] - base_x_);
       for (const unsigned int i : fe_face_values.dof_indices())
-        cell_vector(i) += sign * (fe_face_values[displacement].value(i, q) * t) *
-                          fe_face_values.JxW(q);
+        cell_vector(i) +=
+            sign * (fe_face_values[displacement].value(i, q) * t) * fe_face_values.JxW(q);
     }
   }
 }
@@ -637,10 +634,16 @@ void InsituProblem::balance_removed_weight(const double alpha) {
   for (std::size_t t = 0; t < mesh_.n_triangles(); ++t) {
     double kept = 1;  // fraction of the in-situ weight still acting
     switch (role_[t]) {
-      case Role::kRock: kept = 1; break;
-      case Role::kGround: kept = alpha; break;
+      case Role::kRock:
+        kept = 1;
+        break;
+      case Role::kGround:
+        kept = alpha;
+        break;
       case Role::kLining:
-      case Role::kRemoved: kept = 0; break;
+      case Role::kRemoved:
+        kept = 0;
+        break;
     }
     if (kept == 1) continue;
     const auto& tri = mesh_.triangles[t];
@@ -711,8 +714,7 @@ void InsituProblem::assemble_system(const double alpha) {
         const SymmetricTensor<2, 2> D_eps_i = law.D * eps_phi[i];
         for (const unsigned int j : fe_values.dof_indices())
           cell_matrix(i, j) += (D_eps_i * eps_phi[j]) * JxW;
-        cell_rhs(i) +=
-            (fe_values[displacement].value(i, q) * law.b - eps_phi[i] * law.s0) * JxW;
+        cell_rhs(i) += (fe_values[displacement].value(i, q) * law.b - eps_phi[i] * law.s0) * JxW;
         cell_insitu(i) += (eps_phi[i] * sigma0) * JxW;
       }
     }
@@ -736,8 +738,7 @@ void InsituProblem::solve(InsituField& field) {
 
   const SolverSpec& s = spec_.solver;
   const bool small = field.n_dofs < s.direct_below_dofs;
-  const bool want_cg =
-      s.kind == LinearSolver::kAmgCg || (s.kind == LinearSolver::kAuto && !small);
+  const bool want_cg = s.kind == LinearSolver::kAmgCg || (s.kind == LinearSolver::kAuto && !small);
   // CG stops at an absolute residual scaled by the in-situ nodal forces, not
   // by the right-hand side: at alpha = 1 the latter is round-off, and nothing
   // is to be gained by reducing it further.
@@ -787,7 +788,8 @@ int InsituProblem::solve_amg_cg(const double target_residual) {
   Point<2> center;
   double extent = 0;
   for (const auto& v : triangulation_.get_vertices()) center += v / triangulation_.n_vertices();
-  for (const auto& v : triangulation_.get_vertices()) extent = std::max(extent, (v - center).norm());
+  for (const auto& v : triangulation_.get_vertices())
+    extent = std::max(extent, (v - center).norm());
   bool node_blocks = true;  // x and y dofs of a vertex next to each other?
   for (const auto& cell : dof_handler_.active_cell_iterators())
     for (const unsigned int v : cell->vertex_indices()) {
@@ -907,7 +909,8 @@ void InsituProblem::output_results(const double alpha, InsituField& field) {
     for (const unsigned int f : cell->face_indices())
       if (loaded(cell->face(f))) {
         const double half = 0.5 * cell->face(f)->measure();
-        for (unsigned int k = 0; k < 2; ++k) boundary.emplace_back(cell->face(f)->vertex_index(k), half);
+        for (unsigned int k = 0; k < 2; ++k)
+          boundary.emplace_back(cell->face(f)->vertex_index(k), half);
       }
   for (const auto& [v, w] : boundary) {
     w_sum += w;
@@ -940,11 +943,10 @@ void InsituProblem::output_results(const double alpha, InsituField& field) {
   // not a result.
   const double allowed = std::max(1e-6, 100 * spec_.solver.tolerance);
   if (!(field.unbalanced_ratio <= allowed))
-    throw NumericalError("insitu: alpha = " + std::to_string(alpha) +
-                         ": the solution is out of balance by " +
-                         std::to_string(field.unbalanced_ratio) +
-                         " of the in-situ nodal forces (allowed " + std::to_string(allowed) +
-                         "); solver: " + field.solver);
+    throw NumericalError(
+        "insitu: alpha = " + std::to_string(alpha) + ": the solution is out of balance by " +
+        std::to_string(field.unbalanced_ratio) + " of the in-situ nodal forces (allowed " +
+        std::to_string(allowed) + "); solver: " + field.solver);
 }
 
 }  // namespace

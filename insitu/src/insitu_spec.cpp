@@ -22,8 +22,7 @@ std::string num(double v) {
 }
 
 void check_material(const std::optional<ElasticMaterial>& m, const char* key, const char* why) {
-  if (!m)
-    fail(std::string("no material for ") + why + ": set materials." + key + " (E, nu)");
+  if (!m) fail(std::string("no material for ") + why + ": set materials." + key + " (E, nu)");
   if (!(m->E > 0) || !std::isfinite(m->E))
     fail(std::string("materials.") + key + ".E = " + num(m->E) + " Pa: must be > 0");
   if (!(m->nu > -1 && m->nu < 0.5))
@@ -56,9 +55,8 @@ void validate(const mesh::Mesh& mesh, const InsituSpec& spec) {
     const double area2 = (mesh.x[tri[1]] - mesh.x[tri[0]]) * (mesh.y[tri[2]] - mesh.y[tri[0]]) -
                          (mesh.x[tri[2]] - mesh.x[tri[0]]) * (mesh.y[tri[1]] - mesh.y[tri[0]]);
     if (!(area2 > 0))
-      fail("triangle " + std::to_string(t) +
-           " is not counter-clockwise (signed area " + num(0.5 * area2) +
-           "): fix the mesh generator");
+      fail("triangle " + std::to_string(t) + " is not counter-clockwise (signed area " +
+           num(0.5 * area2) + "): fix the mesh generator");
   }
 
   // 2. Far field: compression is required everywhere in the model.
@@ -76,11 +74,13 @@ void validate(const mesh::Mesh& mesh, const InsituSpec& spec) {
     fail("gravity.unit_weight = " + num(g.unit_weight) + " N/m^3: must be >= 0");
   if (g.unit_weight > 0) {
     if (ff.angle_deg != 0)
-      fail("gravity needs vertical principal stresses: set far_field.angle_deg = 0 or "
-           "gravity.unit_weight = 0");
+      fail(
+          "gravity needs vertical principal stresses: set far_field.angle_deg = 0 or "
+          "gravity.unit_weight = 0");
     if (spec.loading == BoundaryLoading::kKirschExact)
-      fail("gravity cannot be combined with exact Kirsch tractions (uniform far field "
-           "only): set gravity.unit_weight = 0");
+      fail(
+          "gravity cannot be combined with exact Kirsch tractions (uniform far field "
+          "only): set gravity.unit_weight = 0");
     double y_top = mesh.y[0];
     for (const double y : mesh.y) y_top = std::max(y_top, y);
     const double dz = g.reference_y - y_top;  // negative above the reference
@@ -104,8 +104,7 @@ void validate(const mesh::Mesh& mesh, const InsituSpec& spec) {
       fail("alphas[" + std::to_string(i) + "] = " + num(a) + ": must lie in [0, 1]");
     if (i > 0 && !(a < spec.alphas[i - 1]))
       fail("alphas must be strictly decreasing: alphas[" + std::to_string(i - 1) +
-           "] = " + num(spec.alphas[i - 1]) + ", alphas[" + std::to_string(i) +
-           "] = " + num(a));
+           "] = " + num(spec.alphas[i - 1]) + ", alphas[" + std::to_string(i) + "] = " + num(a));
   }
   if (spec.lining.active && !(spec.lining.install_alpha >= 0 && spec.lining.install_alpha <= 1))
     fail("lining.install_alpha = " + num(spec.lining.install_alpha) + ": must lie in [0, 1]");
@@ -120,13 +119,15 @@ void validate(const mesh::Mesh& mesh, const InsituSpec& spec) {
                    "the lining ring before installation (it is ground to excavate)");
   if (spec.lining.active) {
     if (!has_zone[mesh::kLining])
-      fail("lining.active = true but the mesh has no lining ring: set "
-           "tunnel.lining_thickness > 0 or lining.active = false");
+      fail(
+          "lining.active = true but the mesh has no lining ring: set "
+          "tunnel.lining_thickness > 0 or lining.active = false");
     check_material(spec.materials.lining, "lining", "the installed lining");
   }
   if (!has_zone[mesh::kRock] && spec.alphas.back() == 0 && !spec.lining.active)
-    fail("everything would be removed at alpha = 0 (the mesh has no rock zone): "
-         "the system is singular");
+    fail(
+        "everything would be removed at alpha = 0 (the mesh has no rock zone): "
+        "the system is singular");
 
   // 5. The solver.
   if (!(spec.solver.tolerance > 0 && spec.solver.tolerance < 1))
@@ -139,9 +140,8 @@ void validate(const mesh::Mesh& mesh, const InsituSpec& spec) {
 std::string timing_table(const std::vector<InsituField>& fields) {
   std::ostringstream os;
   char line[256];
-  std::snprintf(line, sizeof line, "%8s %9s %9s %-26s %5s %9s %9s %9s %9s %10s\n", "alpha",
-                "cells", "dofs", "solver", "iter", "setup s", "assem s", "solve s", "total s",
-                "unbalance");
+  std::snprintf(line, sizeof line, "%8s %9s %9s %-26s %5s %9s %9s %9s %9s %10s\n", "alpha", "cells",
+                "dofs", "solver", "iter", "setup s", "assem s", "solve s", "total s", "unbalance");
   os << line;
   for (const auto& f : fields) {
     std::snprintf(line, sizeof line, "%8.4g %9zu %9zu %-26s %5d %9.3f %9.3f %9.3f %9.3f %10.2e\n",

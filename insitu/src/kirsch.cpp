@@ -26,8 +26,7 @@ Polar kirsch_polar(const KirschCase& k, double r, double t) {
   const double a4 = a2 * a2;
   const double c2 = std::cos(2 * t), s2 = std::sin(2 * t);
   // Reference section 5 is written compression positive: negate for output.
-  return {-(p * (1 - a2) + q * (1 - 4 * a2 + 3 * a4) * c2),
-          -(p * (1 + a2) - q * (1 + 3 * a4) * c2),
+  return {-(p * (1 - a2) + q * (1 - 4 * a2 + 3 * a4) * c2), -(p * (1 + a2) - q * (1 + 3 * a4) * c2),
           -(-q * (1 + 2 * a2 - 3 * a4) * s2)};
 }
 
@@ -63,8 +62,7 @@ double kirsch_radial_displacement(const KirschCase& k, double r, double theta) {
          ((k.sH + k.sV) + (k.sH - k.sV) * (4 * (1 - k.nu) - a2) * std::cos(2 * t));
 }
 
-double core_softening_wall_displacement(double alpha, double p, double a, double E,
-                                        double nu) {
+double core_softening_wall_displacement(double alpha, double p, double a, double E, double nu) {
   const double mu = E / (2 * (1 + nu));
   const double lambda = E * nu / ((1 + nu) * (1 - 2 * nu));
   const double K = lambda + mu;  // plane-strain bulk modulus
@@ -104,8 +102,8 @@ KirschComparison compare_kirsch(const mesh::Mesh& mesh, const InsituField& field
 
     const double phi = std::atan2(cy, cx);
     const auto ph = to_polar(h, phi), pe = to_polar(e, phi);
-    out.rows.push_back({static_cast<int>(t), cx, cy, r, phi, ph.srr, ph.stt, ph.srt, pe.srr,
-                        pe.stt, pe.srt});
+    out.rows.push_back(
+        {static_cast<int>(t), cx, cy, r, phi, ph.srr, ph.stt, ph.srt, pe.srr, pe.stt, pe.srt});
   }
   out.n_triangles = out.rows.size();
   out.stress_rel_l2 = den > 0 ? std::sqrt(num / den) : 0;

@@ -9,10 +9,9 @@
 //   * The OpenMP thread count must survive. deal.II leaves OpenMP alone, but
 //     Kokkos' initialisation inside Trilinos may not, so the count in force
 //     before construction is put back afterwards.
+#include <deal.II/base/mpi.h>
 #include <mpi.h>
 #include <omp.h>
-
-#include <deal.II/base/mpi.h>
 
 #include "rockfdem/insitu/insitu.hpp"
 
@@ -34,7 +33,8 @@ ScopedParallelInit::ScopedParallelInit(int& argc, char**& argv) : impl_(new Impl
   const int omp_threads = omp_get_max_threads();
   // A second owner (another ScopedParallelInit, or a caller that started MPI
   // itself) keeps the runtime; this object then does nothing.
-  if (!active()) impl_->mpi = std::make_unique<dealii::Utilities::MPI::MPI_InitFinalize>(argc, argv, 1);
+  if (!active())
+    impl_->mpi = std::make_unique<dealii::Utilities::MPI::MPI_InitFinalize>(argc, argv, 1);
   omp_set_num_threads(omp_threads);
 }
 

@@ -24,8 +24,7 @@ void check_sizes(const MeshSpec& spec) {
                      " must be >= size_near = " + std::to_string(s.size_near));
   if (s.grading_distance < 0)
     throw InputError("mesh: grading_distance must be >= 0 (0: automatic)");
-  if (spec.tunnel.fracture_zone < 0)
-    throw InputError("tunnel: fracture_zone must be >= 0");
+  if (spec.tunnel.fracture_zone < 0) throw InputError("tunnel: fracture_zone must be >= 0");
 }
 
 detail::GmshModelMap add_model(const MeshSpec& spec) {

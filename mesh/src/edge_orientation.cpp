@@ -19,7 +19,8 @@ constexpr double kPi = 3.14159265358979323846;
 // boundary is tangential by construction (it would add about 1.5 x 12 = 18%
 // to the tangential bin of the default tunnel) and the outer rim is a
 // zig-zag of edges no crack joins on both sides.
-std::vector<std::pair<int, int>> band_edges(const Mesh& m, const std::vector<std::uint8_t>& in_band) {
+std::vector<std::pair<int, int>> band_edges(const Mesh& m,
+                                            const std::vector<std::uint8_t>& in_band) {
   std::vector<std::pair<int, int>> all, edges;
   for (std::size_t t = 0; t < m.n_triangles(); ++t) {
     if (!in_band[t]) continue;

@@ -31,7 +31,7 @@ std::optional<std::size_t> declared_node_count(const std::string& path) {
       std::istringstream header(line);
       std::size_t first = 0, second = 0;
       header >> first;
-      if (version < 4) return first;  // MSH 2: the node count
+      if (version < 4) return first;        // MSH 2: the node count
       if (header >> second) return second;  // MSH 4: blocks, nodes, min, max tag
       return std::nullopt;
     }

@@ -36,12 +36,14 @@ struct Reader {
     if (!std::ifstream(spec.path).good())
       fail("cannot open the file; give the path of a readable gmsh .msh file");
     if (!detail::starts_as_msh(spec.path))
-      fail("does not start with $MeshFormat (or $NOD); give a gmsh .msh mesh file (gmsh "
-           "reads other text as a .geo script, which is never run here)");
+      fail(
+          "does not start with $MeshFormat (or $NOD); give a gmsh .msh mesh file (gmsh "
+          "reads other text as a .geo script, which is never run here)");
     if (const auto bad = detail::count_beyond_file(spec.path))
       fail(*bad + " (refused before gmsh reads it)");
     if (const auto bad = detail::tag_out_of_int_range(spec.path))
-      fail(*bad + " is not a node, element or entity tag gmsh can read; tags in $Elements "
+      fail(*bad +
+           " is not a node, element or entity tag gmsh can read; tags in $Elements "
            "and $Periodic must be integers from 0 to 2147483647");
     detail::gmsh_guarded(spec.path + ": not a readable gmsh mesh", detail::GmshFailure::kInput,
                          [&] {
@@ -73,7 +75,8 @@ struct Reader {
       gmsh::model::mesh::getElementProperties(types[k], name, dim, order, n_nodes, local,
                                               n_primary);
       fail("element " + std::to_string(tags[k].front()) + " is a " + name + " (gmsh type " +
-           std::to_string(types[k]) + "); allowed: 3-node triangles (type 2), 2-node lines "
+           std::to_string(types[k]) +
+           "); allowed: 3-node triangles (type 2), 2-node lines "
            "(type 1) and points (type 15)");
     }
     if (std::find(types.begin(), types.end(), 2) == types.end())
@@ -90,7 +93,8 @@ struct Reader {
     std::vector<std::size_t> sorted_tags;
     for (std::size_t i : order) {
       if (!std::isfinite(m.x[i]) || !std::isfinite(m.y[i]))
-        fail("node " + std::to_string(tags[i]) + " has a coordinate that is not a finite "
+        fail("node " + std::to_string(tags[i]) +
+             " has a coordinate that is not a finite "
              "number; every coordinate must be finite");
       sorted.x.push_back(m.x[i]), sorted.y.push_back(m.y[i]), sorted_tags.push_back(tags[i]);
     }
@@ -111,7 +115,8 @@ struct Reader {
     for (std::size_t k = 1; k < order.size(); ++k)
       if (key(order[k]) == key(order[k - 1]))
         fail("nodes " + std::to_string(tags[order[k - 1]]) + " and " +
-             std::to_string(tags[order[k]]) + " lie at the same position; each position may "
+             std::to_string(tags[order[k]]) +
+             " lie at the same position; each position may "
              "hold one node only (merge duplicate nodes)");
   }
 
@@ -139,8 +144,7 @@ struct Reader {
     const auto it = present.find(name);
     if (it == present.end())
       fail(std::string(role) + " physical group '" + name + "' (" + std::to_string(dim) +
-           "D) is not in the file; its " + std::to_string(dim) + "D groups are: " +
-           list(present));
+           "D) is not in the file; its " + std::to_string(dim) + "D groups are: " + list(present));
     std::vector<int> tags;
     gmsh::model::getEntitiesForPhysicalGroup(dim, it->second, tags);
     return tags;
@@ -188,8 +192,10 @@ std::vector<std::size_t> read_triangles(const Reader& r, const TagIndex& index, 
   const auto present = r.groups(2);
   const auto zones = zone_groups_to_read(r.spec, present);
   if (zones.empty())
-    r.fail("no zone groups to read: name the 2D physical groups to use (zone_groups); the "
-           "file's 2D groups are: " + Reader::list(present));
+    r.fail(
+        "no zone groups to read: name the 2D physical groups to use (zone_groups); the "
+        "file's 2D groups are: " +
+        Reader::list(present));
   std::set<int> fractured;
   std::string fracture_group = r.spec.fracture_group;
   if (fracture_group.empty() && present.count(detail::kFractureGroup))
@@ -235,11 +241,12 @@ void check_areas(const Reader& r, const std::vector<std::size_t>& element_tags,
     const auto& v = m.triangles[t];
     double longest = 0;
     for (int k = 0; k < 3; ++k)
-      longest = std::max(longest, std::hypot(m.x[v[k]] - m.x[v[(k + 1) % 3]],
-                                             m.y[v[k]] - m.y[v[(k + 1) % 3]]));
+      longest = std::max(
+          longest, std::hypot(m.x[v[k]] - m.x[v[(k + 1) % 3]], m.y[v[k]] - m.y[v[(k + 1) % 3]]));
     if (std::abs(signed_area(m, t)) <= 1e-12 * longest * longest)
-      r.fail("triangle " + std::to_string(element_tags[t]) + " (nodes " + std::to_string(tags[v[0]]) +
-             ", " + std::to_string(tags[v[1]]) + ", " + std::to_string(tags[v[2]]) +
+      r.fail("triangle " + std::to_string(element_tags[t]) + " (nodes " +
+             std::to_string(tags[v[0]]) + ", " + std::to_string(tags[v[1]]) + ", " +
+             std::to_string(tags[v[2]]) +
              ") has zero area; every triangle must have positive area");
   }
   detail::orient_counter_clockwise(m);
@@ -260,11 +267,13 @@ void check_folds(const Reader& r, const std::vector<std::size_t>& element_tags,
   uses.reserve(3 * m.n_triangles());
   for (std::size_t t = 0; t < m.n_triangles(); ++t)
     for (int k = 0; k < 3; ++k) {
-      const auto a = std::uint64_t(m.triangles[t][k]), b = std::uint64_t(m.triangles[t][(k + 1) % 3]);
+      const auto a = std::uint64_t(m.triangles[t][k]),
+                 b = std::uint64_t(m.triangles[t][(k + 1) % 3]);
       uses.push_back({(std::min(a, b) << 32) | std::max(a, b), a < b, t});
     }
-  std::sort(uses.begin(), uses.end(),
-            [](const Use& p, const Use& q) { return p.key != q.key ? p.key < q.key : p.tri < q.tri; });
+  std::sort(uses.begin(), uses.end(), [](const Use& p, const Use& q) {
+    return p.key != q.key ? p.key < q.key : p.tri < q.tri;
+  });
   for (std::size_t i = 0; i + 1 < uses.size(); ++i) {
     if (uses[i].key != uses[i + 1].key) continue;
     const bool three = i + 2 < uses.size() && uses[i + 2].key == uses[i].key;

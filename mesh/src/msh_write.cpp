@@ -72,8 +72,7 @@ void add_edges(const Mesh& m) {
   for (const auto& [tag, block] : blocks) {
     const int c = gmsh::model::addDiscreteEntity(1);
     gmsh::model::mesh::addElementsByType(c, 1, block.element_tags, block.node_tags);
-    gmsh::model::setPhysicalName(1, gmsh::model::addPhysicalGroup(1, {c}, tag),
-                                 edge_tag_name(tag));
+    gmsh::model::setPhysicalName(1, gmsh::model::addPhysicalGroup(1, {c}, tag), edge_tag_name(tag));
   }
 }
 
@@ -108,7 +107,8 @@ void write_msh(const Mesh& m, const std::string& path) {
   // must exist before it replaces anything.
   if (!std::ifstream(tmp).good() || std::rename(tmp.c_str(), path.c_str()) != 0) {
     std::remove(tmp.c_str());
-    throw std::runtime_error("writing " + path + ": cannot write the file; check that its "
+    throw std::runtime_error("writing " + path +
+                             ": cannot write the file; check that its "
                              "folder exists and is writable");
   }
 }

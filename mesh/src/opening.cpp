@@ -149,14 +149,15 @@ std::optional<OpeningBoundary> find_opening(const Mesh& m) {
 std::vector<KeyPoint> opening_key_points(const Mesh& m, const OpeningBoundary& b,
                                          const TunnelSpec* shape) {
   const double diagonal = std::sqrt(0.5);
-  const Centres c = shape ? shape_centres(b, *shape)
-                          : Centres{b.cx, b.cy, b.cy, b.cx, b.cy, -diagonal, diagonal};
-  return {farthest_on_ray(m, b, "vault", c.axis_x, c.axis_y, 0, 1),
-          farthest_on_ray(m, b, "left_shoulder", c.shoulder_x, c.shoulder_y, c.left_dx, c.left_dy),
-          farthest_on_ray(m, b, "right_shoulder", c.shoulder_x, c.shoulder_y, -c.left_dx, c.left_dy),
-          farthest_on_ray(m, b, "left_wall", c.axis_x, c.wall_y, -1, 0),
-          farthest_on_ray(m, b, "right_wall", c.axis_x, c.wall_y, 1, 0),
-          farthest_on_ray(m, b, "invert", c.axis_x, c.axis_y, 0, -1)};
+  const Centres c =
+      shape ? shape_centres(b, *shape) : Centres{b.cx, b.cy, b.cy, b.cx, b.cy, -diagonal, diagonal};
+  return {
+      farthest_on_ray(m, b, "vault", c.axis_x, c.axis_y, 0, 1),
+      farthest_on_ray(m, b, "left_shoulder", c.shoulder_x, c.shoulder_y, c.left_dx, c.left_dy),
+      farthest_on_ray(m, b, "right_shoulder", c.shoulder_x, c.shoulder_y, -c.left_dx, c.left_dy),
+      farthest_on_ray(m, b, "left_wall", c.axis_x, c.wall_y, -1, 0),
+      farthest_on_ray(m, b, "right_wall", c.axis_x, c.wall_y, 1, 0),
+      farthest_on_ray(m, b, "invert", c.axis_x, c.axis_y, 0, -1)};
 }
 
 bool boundary_matches(const Mesh& m, const OpeningBoundary& b, const TunnelSpec& t,

@@ -30,9 +30,8 @@ TriangleShape shape(const Mesh& m, std::size_t t) {
   }
   std::sort(len, len + 3);
   const double area = std::abs(signed_area(m, t));
-  const double cos_min =
-      std::clamp((len[1] * len[1] + len[2] * len[2] - len[0] * len[0]) / (2 * len[1] * len[2]),
-                 -1.0, 1.0);
+  const double cos_min = std::clamp(
+      (len[1] * len[1] + len[2] * len[2] - len[0] * len[0]) / (2 * len[1] * len[2]), -1.0, 1.0);
   return {area, len[2] > 0 ? 2 * area / len[2] : 0, std::acos(cos_min)};
 }
 

@@ -37,8 +37,7 @@ GmshModelMap add_disc_model(const SpecimenSpec& s) {
     throw InputError("specimen: load_arc_deg = " + std::to_string(s.load_arc_deg) +
                      " must be in (0, 180)");
   const double r = s.diameter / 2, half = s.load_arc_deg * kPi / 360;
-  const double angles[4] = {kPi / 2 - half, kPi / 2 + half, 3 * kPi / 2 - half,
-                            3 * kPi / 2 + half};
+  const double angles[4] = {kPi / 2 - half, kPi / 2 + half, 3 * kPi / 2 - half, 3 * kPi / 2 + half};
   const int tags[4] = {kLoadTop, kRim, kLoadBottom, kRim};
   const int centre = gmsh::model::occ::addPoint(0, 0, 0);
   int points[4];

@@ -2,8 +2,6 @@
 // (and, with a lining, the opening's inward offset). Fragmenting rather than
 // cutting keeps the core (and lining) as surfaces of their own that share
 // the boundary curves with the rock, so the mesh is conformal across them.
-#include "gmsh_model.hpp"
-
 #include <gmsh.h>
 
 #include <algorithm>
@@ -11,6 +9,7 @@
 #include <set>
 #include <string>
 
+#include "gmsh_model.hpp"
 #include "rockfdem/error.hpp"
 #include "rockfdem/mesh/mesh.hpp"
 
@@ -37,10 +36,9 @@ int add_arc_points(const OutlinePiece& p, std::vector<int>& curves, int start, i
 void check_fits_domain(const MeshSpec& spec) {
   const HalfExtent e = opening_half_extent(spec.tunnel);
   const DomainSpec& d = spec.domain;
-  if (!(d.width > 0 && d.height > 0))
-    throw InputError("domain: width and height must be > 0");
-  const double margin = std::min({d.width / 2 - std::abs(d.center_x) - e.hx,
-                                  d.height / 2 - std::abs(d.center_y) - e.hy});
+  if (!(d.width > 0 && d.height > 0)) throw InputError("domain: width and height must be > 0");
+  const double margin = std::min(
+      {d.width / 2 - std::abs(d.center_x) - e.hx, d.height / 2 - std::abs(d.center_y) - e.hy});
   if (margin <= 0)
     throw InputError("domain: the tunnel opening (half size " + std::to_string(e.hx) + " x " +
                      std::to_string(e.hy) + " m) does not fit inside the " +
@@ -92,7 +90,8 @@ void classify_curves(const DomainSpec& d, GmshModelMap& out) {
 
 int add_outline_surface(const Outline& o) {
   std::vector<int> starts;
-  for (const OutlinePiece& p : o.pieces) starts.push_back(gmsh::model::occ::addPoint(p.x0, p.y0, 0));
+  for (const OutlinePiece& p : o.pieces)
+    starts.push_back(gmsh::model::occ::addPoint(p.x0, p.y0, 0));
   std::vector<int> curves, centres;
   for (std::size_t i = 0; i < o.pieces.size(); ++i) {
     const int a = starts[i], b = starts[(i + 1) % starts.size()];

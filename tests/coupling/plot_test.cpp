@@ -22,8 +22,8 @@ using testing::TempDir;
 
 struct Picture {
   int width = 0, height = 0;
-  double variance = 0;      ///< of the grey level over all pixels
-  int n_black = 0;          ///< pixels with every channel below 40 (cracks, text)
+  double variance = 0;  ///< of the grey level over all pixels
+  int n_black = 0;      ///< pixels with every channel below 40 (cracks, text)
 };
 
 Picture read_png(const std::string& path) {
@@ -85,13 +85,13 @@ VtkGrid cracked_square(int n) {
 
 // Skips the test when VTK cannot render here, unless the environment demands
 // rendering (ROCKFDEM_REQUIRE_RENDERING, set by the xvfb-run CTest test).
-#define SKIP_UNLESS_RENDERING()                                         \
-  do {                                                                  \
-    std::string reason;                                                 \
-    if (!rendering_available(&reason)) {                                \
-      if (std::getenv("ROCKFDEM_REQUIRE_RENDERING")) FAIL() << reason;  \
-      GTEST_SKIP() << reason;                                           \
-    }                                                                   \
+#define SKIP_UNLESS_RENDERING()                                        \
+  do {                                                                 \
+    std::string reason;                                                \
+    if (!rendering_available(&reason)) {                               \
+      if (std::getenv("ROCKFDEM_REQUIRE_RENDERING")) FAIL() << reason; \
+      GTEST_SKIP() << reason;                                          \
+    }                                                                  \
   } while (false)
 
 // Restores DISPLAY on scope exit.
@@ -117,10 +117,12 @@ TEST(Plot, without_display_rendering_is_refused_with_a_reason_and_nothing_writte
   EXPECT_NE(why.find("DISPLAY"), std::string::npos) << why;
   const TempDir dir;
   why.clear();
-  EXPECT_FALSE(plot_xy_png("t", "x", "y", {{"s", {0, 1}, {0, 1}}}, dir.file("p.png"), 320, 240, &why));
+  EXPECT_FALSE(
+      plot_xy_png("t", "x", "y", {{"s", {0, 1}, {0, 1}}}, dir.file("p.png"), 320, 240, &why));
   EXPECT_FALSE(why.empty());
   why.clear();
-  EXPECT_FALSE(render_mesh_png(cracked_square(4), "field", 0, dir.file("m.png"), "t", 320, 240, &why));
+  EXPECT_FALSE(
+      render_mesh_png(cracked_square(4), "field", 0, dir.file("m.png"), "t", 320, 240, &why));
   EXPECT_FALSE(why.empty());
   EXPECT_TRUE(dir.entries().empty());
 }
@@ -173,8 +175,8 @@ TEST(Plot, pictures_in_a_row_survive_xvfb_resets) {
     std::string why;
     ASSERT_TRUE(rendering_available(&why)) << "picture " << i << ": " << why;
     const std::string name = "p" + std::to_string(i) + ".png";
-    ASSERT_TRUE(plot_xy_png("t", "x", "y", {{"s", {0, 1, 2}, {0, 1, 4}}}, dir.file(name), 200,
-                            150, &why))
+    ASSERT_TRUE(
+        plot_xy_png("t", "x", "y", {{"s", {0, 1, 2}, {0, 1, 4}}}, dir.file(name), 200, 150, &why))
         << "picture " << i << ": " << why;
     EXPECT_EQ(read_png(dir.file(name)).width, 200);
   }
@@ -206,8 +208,7 @@ TEST(Plot, mesh_png_of_an_uncracked_int_field_renders) {
   std::vector<std::int32_t> zone(g.n_triangles());
   for (std::size_t t = 0; t < zone.size(); ++t) zone[t] = 1 + static_cast<int>(t % 3);
   g.cell_arrays.push_back(scalar_array("zone", zone));
-  ASSERT_TRUE(render_mesh_png(g, "zone", 0, dir.file("zones.png"), "Zones", 400, 300, &why))
-      << why;
+  ASSERT_TRUE(render_mesh_png(g, "zone", 0, dir.file("zones.png"), "Zones", 400, 300, &why)) << why;
   const Picture p = read_png(dir.file("zones.png"));
   EXPECT_EQ(p.width, 400);
   EXPECT_GT(p.variance, 10.0);

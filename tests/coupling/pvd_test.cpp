@@ -26,9 +26,10 @@ TEST(Pvd, lists_files_and_exact_times_in_order_and_parses_as_xml) {
   const TempDir dir;
   PvdCollection pvd(dir.file("fdem.pvd"));
   // Not sorted on purpose: the writer keeps the caller's order.
-  const std::vector<PvdEntry> want = {
-      {0.0, "fdem_0000.vtu"}, {0.1, "fdem_0001.vtu"}, {1.0 / 3.0, "fdem_0002.vtu"},
-      {0.25, "out dir/fdem & <3>.vtu"}};
+  const std::vector<PvdEntry> want = {{0.0, "fdem_0000.vtu"},
+                                      {0.1, "fdem_0001.vtu"},
+                                      {1.0 / 3.0, "fdem_0002.vtu"},
+                                      {0.25, "out dir/fdem & <3>.vtu"}};
   for (const PvdEntry& e : want) pvd.add(e.time, e.file);
   pvd.write();
 

@@ -1,5 +1,7 @@
 // write_vtu: what ParaView reads back is exactly what the record held, the
 // file is compressed appended binary, and writes are atomic.
+#include "rockfdem/coupling/vtk_writer.hpp"
+
 #include <gtest/gtest.h>
 #include <sys/stat.h>
 #include <vtkCellArray.h>
@@ -21,7 +23,6 @@
 #include <limits>
 #include <sstream>
 
-#include "rockfdem/coupling/vtk_writer.hpp"
 #include "temp_dir.hpp"
 
 namespace rockfdem::coupling {
@@ -37,8 +38,8 @@ std::uint64_t bits(double v) {
 
 // Values whose every bit matters: thirds, a subnormal, -0, huge and tiny.
 double awkward(int i) {
-  const double pool[] = {1.0 / 3.0, -2.0 / 7.0, 4.9e-324, -0.0, 1.2e308,
-                         -1.82e7, 1e-300, 0.1, 11.4e6 + 1.0 / 9.0, -3.0e-9};
+  const double pool[] = {1.0 / 3.0, -2.0 / 7.0, 4.9e-324,           -0.0,   1.2e308, -1.82e7,
+                         1e-300,    0.1,        11.4e6 + 1.0 / 9.0, -3.0e-9};
   return pool[i % 10] * (1.0 + i * 1e-13);
 }
 
@@ -57,12 +58,17 @@ VtkGrid sample_grid() {
   g.lines = {{0, 2}, {2, 3}};
   g.point_arrays.push_back(vector_array("displacement", 2, awkward_values(10, 1)));
   g.point_arrays.push_back(vector_array("velocity", 3, awkward_values(15, 2)));
-  g.point_arrays.push_back(scalar_array("node_id", std::vector<std::int32_t>{7, -1, 0, 2147483647, -2147483647 - 1}));
+  g.point_arrays.push_back(
+      scalar_array("node_id", std::vector<std::int32_t>{7, -1, 0, 2147483647, -2147483647 - 1}));
   g.cell_arrays.push_back(triangle_cell_array(g, tensor_array("stress", 3, awkward_values(9, 3))));
-  g.cell_arrays.push_back(triangle_cell_array(g, tensor_array("stress_3d", 4, awkward_values(12, 4))));
-  g.cell_arrays.push_back(triangle_cell_array(g, scalar_array("zone", std::vector<std::int32_t>{1, 2, 3})));
-  g.cell_arrays.push_back(line_cell_array(g, scalar_array("damage", std::vector<double>{0.25, 1.0})));
-  g.cell_arrays.push_back(line_cell_array(g, scalar_array("mode", std::vector<std::int32_t>{1, 3})));
+  g.cell_arrays.push_back(
+      triangle_cell_array(g, tensor_array("stress_3d", 4, awkward_values(12, 4))));
+  g.cell_arrays.push_back(
+      triangle_cell_array(g, scalar_array("zone", std::vector<std::int32_t>{1, 2, 3})));
+  g.cell_arrays.push_back(
+      line_cell_array(g, scalar_array("damage", std::vector<double>{0.25, 1.0})));
+  g.cell_arrays.push_back(
+      line_cell_array(g, scalar_array("mode", std::vector<std::int32_t>{1, 3})));
   g.cell_arrays.push_back(scalar_array("everywhere", awkward_values(5, 5)));
   return g;
 }
@@ -111,8 +117,8 @@ void expect_array_equal(const VtkArray& a, vtkDataArray* got, std::size_t n_tupl
     for (std::size_t c = 0; c < want.size(); ++c) {
       const double v = got->GetComponent(static_cast<vtkIdType>(t), static_cast<int>(c));
       const bool same = std::isnan(want[c]) ? std::isnan(v) : bits(v) == bits(want[c]);
-      EXPECT_TRUE(same) << a.name << " tuple " << t << " component " << c
-                                        << ": " << v << " != " << want[c];
+      EXPECT_TRUE(same) << a.name << " tuple " << t << " component " << c << ": " << v
+                        << " != " << want[c];
     }
   }
 }
@@ -167,7 +173,8 @@ TEST(VtkWriter, one_kind_arrays_are_padded_with_nan_or_minus_one) {
 TEST(VtkWriter, arrays_of_one_cell_kind_are_all_nan_on_the_other_kind_in_the_file) {
   const TempDir dir;
   VtkGrid g = sample_grid();
-  g.cell_arrays.push_back(triangle_cell_array(g, vector_array("principal", 2, awkward_values(6, 6))));
+  g.cell_arrays.push_back(
+      triangle_cell_array(g, vector_array("principal", 2, awkward_values(6, 6))));
   write_vtu(g, dir.file("grid.vtu"));
   const auto ug = read_vtu(dir.file("grid.vtu"));
   for (const char* name : {"stress", "stress_3d", "principal"}) {
@@ -175,8 +182,8 @@ TEST(VtkWriter, arrays_of_one_cell_kind_are_all_nan_on_the_other_kind_in_the_fil
     ASSERT_NE(a, nullptr) << name;
     for (vtkIdType line = 3; line < 5; ++line)
       for (int c = 0; c < a->GetNumberOfComponents(); ++c)
-        EXPECT_TRUE(std::isnan(a->GetComponent(line, c))) << name << " line cell " << line
-                                                          << " component " << c;
+        EXPECT_TRUE(std::isnan(a->GetComponent(line, c)))
+            << name << " line cell " << line << " component " << c;
     // Triangles keep their zeros out of the plane.
     EXPECT_EQ(a->GetComponent(0, 2), 0.0) << name;
   }

@@ -3,11 +3,12 @@
 // zone selects one of them; it is re-joined with grout (ft = 1 MPa) and,
 // pulled again, carries tension from its new zero up to the grout strength
 // (closed form: peak traction = ft_grout, 1%), while the other stays broken.
+#include "rockfdem/fdem/bolt_grouting.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
 
-#include "rockfdem/fdem/bolt_grouting.hpp"
 #include "test_models.hpp"
 
 namespace rockfdem::fdem {

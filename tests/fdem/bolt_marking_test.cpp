@@ -5,6 +5,8 @@
 // the clipped piece is longer than 1e-9 of the bolt. The touching cases
 // (through a vertex, along an edge, long sides on mesh lines) have their
 // expected sets worked out by hand in the comments.
+#include "rockfdem/fdem/bolt_marking.hpp"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -14,7 +16,6 @@
 #include <set>
 
 #include "rockfdem/error.hpp"
-#include "rockfdem/fdem/bolt_marking.hpp"
 #include "rockfdem/fdem/constants.hpp"
 #include "rockfdem/fdem/structured_mesh.hpp"
 
@@ -94,7 +95,8 @@ bool generic(const ModelInput& in, const Bolt& bolt) {
   const double len = std::hypot(bolt.b[0] - bolt.a[0], bolt.b[1] - bolt.a[1]);
   for (std::size_t v = 0; v < in.x.size(); ++v) {
     const double d = ((bolt.b[0] - bolt.a[0]) * (in.y[v] - bolt.a[1]) -
-                      (bolt.b[1] - bolt.a[1]) * (in.x[v] - bolt.a[0])) / len;
+                      (bolt.b[1] - bolt.a[1]) * (in.x[v] - bolt.a[0])) /
+                     len;
     for (double off : {0.0, bolt.diameter / 2, -bolt.diameter / 2})
       if (std::fabs(d - off) < 1e-9) return false;
   }
@@ -130,8 +132,8 @@ bool ordered_along_axis(const ModelInput& in, const Bolt& bolt, const std::vecto
   for (int t : tris) {
     const auto v = corners(in, t);
     const double cx = (v[0][0] + v[1][0] + v[2][0]) / 3, cy = (v[0][1] + v[1][1] + v[2][1]) / 3;
-    const double along = (cx - bolt.a[0]) * (bolt.b[0] - bolt.a[0]) +
-                         (cy - bolt.a[1]) * (bolt.b[1] - bolt.a[1]);
+    const double along =
+        (cx - bolt.a[0]) * (bolt.b[0] - bolt.a[0]) + (cy - bolt.a[1]) * (bolt.b[1] - bolt.a[1]);
     if (along < prev) return false;
     prev = along;
   }
@@ -145,9 +147,9 @@ TEST(BoltMarking, generic_orientations_match_brute_force) {
   const double c30 = std::cos(kPi / 6), s30 = std::sin(kPi / 6);
   std::vector<Bolt> bolts;
   for (double d : {0.05, 1.3}) {
-    bolts.push_back({{0.3, 2.37}, {4.1, 2.37}, d});                    // horizontal
-    bolts.push_back({{1.83, 0.2}, {1.83, 4.6}, d});                    // vertical
-    bolts.push_back(bolt_from_head({0.41, 0.33}, {c30, s30}, 4.5, d));  // 30 degrees
+    bolts.push_back({{0.3, 2.37}, {4.1, 2.37}, d});                      // horizontal
+    bolts.push_back({{1.83, 0.2}, {1.83, 4.6}, d});                      // vertical
+    bolts.push_back(bolt_from_head({0.41, 0.33}, {c30, s30}, 4.5, d));   // 30 degrees
     bolts.push_back(bolt_from_head({4.47, 0.61}, {-s30, c30}, 4.0, d));  // 120 degrees
   }
   const BoltMarks marks = mark_bolts(in, bolts);

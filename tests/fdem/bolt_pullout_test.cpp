@@ -86,14 +86,15 @@ TEST(BoltPullout, load_rises_peaks_at_grout_capacity_and_drops) {
     }
   }
   const BoltCounts counts = bolt_counts(e, plan, 0);
-  std::printf("pull-out: peak %.1f kN/m at %.3e m (2 c L_b = %.1f kN/m), head strip %.1f kN/m, "
-              "end load %.1f kN/m, grout broken %ld of %ld\n",
-              peak / 1e3, u_peak, capacity / 1e3, steel_at_peak / 1e3, load / 1e3,
-              counts.grout_broken, counts.grout_cracks);
+  std::printf(
+      "pull-out: peak %.1f kN/m at %.3e m (2 c L_b = %.1f kN/m), head strip %.1f kN/m, "
+      "end load %.1f kN/m, grout broken %ld of %ld\n",
+      peak / 1e3, u_peak, capacity / 1e3, steel_at_peak / 1e3, load / 1e3, counts.grout_broken,
+      counts.grout_cracks);
   EXPECT_NEAR(peak, capacity, 0.03 * capacity);
-  EXPECT_GT(u_peak, 1e-6);          // it rose first
-  EXPECT_LT(load, 0.3 * peak);      // and dropped
-  EXPECT_EQ(counts.yielding, 0);    // the steel stayed elastic (44 MPa)
+  EXPECT_GT(u_peak, 1e-6);        // it rose first
+  EXPECT_LT(load, 0.3 * peak);    // and dropped
+  EXPECT_EQ(counts.yielding, 0);  // the steel stayed elastic (44 MPa)
   EXPECT_EQ(counts.broken, 0);
   EXPECT_GT(counts.grout_broken, 20);
   // The free cell carries the pull: its force per metre matches the load (3%).

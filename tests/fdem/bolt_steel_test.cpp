@@ -120,7 +120,8 @@ TEST(BoltSteel, bar_in_tension_reproduces_the_bilinear_law) {
   const BoltSteel steel;
   const BarRun r = pull_bar(1.0, steel);
   const double eps_y = steel.yield_strength / steel.young;
-  const double eps_u = eps_y + (steel.ultimate_strength - steel.yield_strength) / steel.tangent_modulus;
+  const double eps_u =
+      eps_y + (steel.ultimate_strength - steel.yield_strength) / steel.tangent_modulus;
   ASSERT_GT(r.yield_strain, 0);
   ASSERT_GT(r.break_strain, 0);
   std::printf("yield at strain %.6f stress %.2f MPa (profile %.2f), break at %.5f\n",

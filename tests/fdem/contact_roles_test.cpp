@@ -14,8 +14,8 @@ namespace {
 
 using rockfdem::fdem::detail::kPairBatch;
 using rockfdem::fdem::detail::PairBatch;
-using rockfdem::fdem::detail::SimdIsa;
 using rockfdem::fdem::detail::RoleParams;
+using rockfdem::fdem::detail::SimdIsa;
 using rockfdem::fdem::detail::TriLanes;
 
 struct Tri {

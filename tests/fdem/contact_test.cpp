@@ -58,8 +58,8 @@ TEST(Contact, two_triangles_pressed_together_match_the_potential_closed_form) {
     // Moment about the origin of all contact forces vanishes.
     double moment = 0;
     for (std::size_t n = 0; n < e.n_nodes(); ++n)
-      moment += e.positions()[2 * n] * e.node_force(n)[1] -
-                e.positions()[2 * n + 1] * e.node_force(n)[0];
+      moment +=
+          e.positions()[2 * n] * e.node_force(n)[1] - e.positions()[2 * n + 1] * e.node_force(n)[0];
     EXPECT_NEAR(moment, 0.0, 1e-9 * std::max(expected, 1.0) * L);
     EXPECT_EQ(e.contact_counters().pairs, 1);
     EXPECT_EQ(e.contact_counters().touching, gap < 0 ? 1 : 0);
@@ -89,8 +89,10 @@ TEST(Contact, elastic_block_bounces_with_energy_conserved) {
   long steps = 0;
   for (; steps < 200000 && !separated; ++steps) {
     e.step();
-    if (e.contact_counters().touching > 0) touched = true;
-    else if (touched) separated = true;
+    if (e.contact_counters().touching > 0)
+      touched = true;
+    else if (touched)
+      separated = true;
   }
   ASSERT_TRUE(separated) << "no bounce within " << steps << " steps";
   e.run(200);

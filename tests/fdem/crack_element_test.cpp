@@ -203,8 +203,7 @@ TEST(CrackElement, hinge_opening_gets_the_consistent_nodal_forces) {
     for (double g : gx) {
       const double xi = (i + 0.5 + 0.5 * g) / panels, w = 0.5 / panels * len;
       double damage = 0;
-      const CrackPoint p =
-          crack_point(k, o0 + (o1 - o0) * xi, s0 + (s1 - s0) * xi, len, damage);
+      const CrackPoint p = crack_point(k, o0 + (o1 - o0) * xi, s0 + (s1 - s0) * xi, len, damage);
       fn[0] += w * p.sigma * (1 - xi);
       fn[1] += w * p.sigma * xi;
       ft[0] += w * p.tau * (1 - xi);

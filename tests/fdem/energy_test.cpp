@@ -131,9 +131,9 @@ double broken_fracture_energy(const Engine& e, const Material& m) {
     if (e.crack_state(c) != CrackState::kBroken) continue;
     const auto n = e.crack_nodes(c);
     const auto& p = e.positions();
-    const double h = 0.5 * std::hypot(p[2 * n[1]] + p[2 * n[2]] - p[2 * n[0]] - p[2 * n[3]],
-                                      p[2 * n[1] + 1] + p[2 * n[2] + 1] - p[2 * n[0] + 1] -
-                                          p[2 * n[3] + 1]);
+    const double h =
+        0.5 * std::hypot(p[2 * n[1]] + p[2 * n[2]] - p[2 * n[0]] - p[2 * n[3]],
+                         p[2 * n[1] + 1] + p[2 * n[2] + 1] - p[2 * n[0] + 1] - p[2 * n[3] + 1]);
     const FailureMode mode = e.crack_mode(c);
     sum += h * (mode == FailureMode::kModeI    ? m.gf_I
                 : mode == FailureMode::kModeII ? m.gf_II
@@ -170,9 +170,10 @@ TEST(EnergyBalance, fracturing_ucs_closes_within_3_percent) {
     }
     const EnergyBalance b = e.energy_balance();
     const double gf_h = broken_fracture_energy(e, in.materials[0]);
-    std::printf("phi %g: largest |imbalance| %.3g; fracture %.4g J/m, broken elements' Gf h %.4g "
-                "(ratio %.3f)\n",
-                friction_deg, worst, b.fracture, gf_h, b.fracture / gf_h);
+    std::printf(
+        "phi %g: largest |imbalance| %.3g; fracture %.4g J/m, broken elements' Gf h %.4g "
+        "(ratio %.3f)\n",
+        friction_deg, worst, b.fracture, gf_h, b.fracture / gf_h);
     EXPECT_GT(e.broken_counts().total(), 100);
     EXPECT_GT(e.contact_counters().touching, 0);
     EXPECT_GT(b.friction, 0.0);
@@ -254,10 +255,11 @@ TEST(EnergyBalance, friction_dissipates_the_sliding_blocks_energy) {
   const EnergyBalance b = e.energy_balance();
   const double lost =
       k0 + gravity_work - e.kinetic_energy() - e.strain_energy() - b.contact_elastic;
-  std::printf("block: K0 %.6g, gravity work %.4g, left K %.4g U %.4g contact %.4g; lost %.6g, "
-              "friction %.6g (%.3g%%)\n",
-              k0, gravity_work, e.kinetic_energy(), e.strain_energy(), b.contact_elastic, lost,
-              b.friction, 100 * (b.friction - lost) / lost);
+  std::printf(
+      "block: K0 %.6g, gravity work %.4g, left K %.4g U %.4g contact %.4g; lost %.6g, "
+      "friction %.6g (%.3g%%)\n",
+      k0, gravity_work, e.kinetic_energy(), e.strain_energy(), b.contact_elastic, lost, b.friction,
+      100 * (b.friction - lost) / lost);
   print("  balance", b);
   EXPECT_LT(e.kinetic_energy(), 0.01 * k0) << "the block must have stopped";
   EXPECT_NEAR(b.friction, lost, 0.02 * lost);
@@ -282,11 +284,12 @@ TEST(EnergyBalance, identical_for_1_and_2_threads) {
   EXPECT_GT(one.fracture, 0.0);
   EXPECT_GT(one.friction, 0.0);
   const double EnergyBalance::*terms[] = {
-      &EnergyBalance::external_work, &EnergyBalance::kinetic,   &EnergyBalance::strain,
-      &EnergyBalance::crack_elastic, &EnergyBalance::contact_elastic,
-      &EnergyBalance::initial_stored, &EnergyBalance::damping,  &EnergyBalance::fracture,
-      &EnergyBalance::friction,      &EnergyBalance::absorbing, &EnergyBalance::softening,
-      &EnergyBalance::removed};
+      &EnergyBalance::external_work,   &EnergyBalance::kinetic,
+      &EnergyBalance::strain,          &EnergyBalance::crack_elastic,
+      &EnergyBalance::contact_elastic, &EnergyBalance::initial_stored,
+      &EnergyBalance::damping,         &EnergyBalance::fracture,
+      &EnergyBalance::friction,        &EnergyBalance::absorbing,
+      &EnergyBalance::softening,       &EnergyBalance::removed};
   for (auto term : terms) EXPECT_EQ(one.*term, two.*term);
 }
 
@@ -371,7 +374,8 @@ TEST(EnergyBalance, crack_point_potential_derivatives_are_the_tractions) {
   for (const Material& mat : {test::rock(), test::bolt_steel()}) {
     const CrackConstants k = make_crack_constants(mat);
     const double op = h * k.op_per_h, sp = h * k.c * k.two_over_pt;
-    const double points[][3] = {{0.4 * op, 0.3 * sp, 0.0}, {-0.5 * op, -0.6 * sp, 0.0},
+    const double points[][3] = {{0.4 * op, 0.3 * sp, 0.0},
+                                {-0.5 * op, -0.6 * sp, 0.0},
                                 {1.0 * op + 0.1 * k.open_range, 0.2 * sp, 0.3},
                                 {0.2 * op, -0.5 * sp, 0.6}};
     for (const auto& pt : points) {

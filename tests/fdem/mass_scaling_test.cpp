@@ -60,7 +60,8 @@ EquilibriumCriteria tight() {
 double max_abs_difference(const Engine& a, const Engine& b) {
   double d = 0;
   for (std::size_t n = 0; n < a.n_nodes(); ++n)
-    for (int k = 0; k < 2; ++k) d = std::max(d, std::fabs(a.displacement(n)[k] - b.displacement(n)[k]));
+    for (int k = 0; k < 2; ++k)
+      d = std::max(d, std::fabs(a.displacement(n)[k] - b.displacement(n)[k]));
   return d;
 }
 
@@ -145,9 +146,10 @@ TEST(MassScaling, every_node_is_brought_to_the_target_step) {
   double mass = 0;
   for (double m : e.node_mass()) mass += m;
   EXPECT_NEAR(mass, r.mass_ratio * test::rock().density * kW * kH, 1e-9 * mass);
-  std::printf("target %.3g s (true-mass limit %.3g s), limit now %.3g s, max factor %.3g, "
-              "mass ratio %.3g\n",
-              r.target_dt, true_dt, e.critical_dt(), r.max_factor, r.mass_ratio);
+  std::printf(
+      "target %.3g s (true-mass limit %.3g s), limit now %.3g s, max factor %.3g, "
+      "mass ratio %.3g\n",
+      r.target_dt, true_dt, e.critical_dt(), r.max_factor, r.mass_ratio);
 }
 
 // Gravity acts on the true masses: a plate on rollers under its own weight

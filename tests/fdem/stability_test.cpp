@@ -3,7 +3,6 @@
 
 #include <Eigen/Dense>
 #include <array>
-
 #include <cmath>
 #include <cstdio>
 #include <limits>
@@ -137,8 +136,8 @@ using Corners = std::array<std::array<double, 2>, 3>;
 double stiffest_mode_ratio(const Corners& p, const Material& m) {
   const double lambda = m.young * m.poisson / ((1 + m.poisson) * (1 - 2 * m.poisson));
   const double mu = m.young / (2 * (1 + m.poisson));
-  const double two_a = (p[1][0] - p[0][0]) * (p[2][1] - p[0][1]) -
-                       (p[2][0] - p[0][0]) * (p[1][1] - p[0][1]);
+  const double two_a =
+      (p[1][0] - p[0][0]) * (p[2][1] - p[0][1]) - (p[2][0] - p[0][0]) * (p[1][1] - p[0][1]);
   const double area = 0.5 * two_a;
   Eigen::Matrix<double, 3, 6> b = Eigen::Matrix<double, 3, 6>::Zero();
   double longest = 0;

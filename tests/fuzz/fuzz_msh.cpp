@@ -25,8 +25,8 @@ const std::string& temp_path() {
   // gmsh chooses its reader by extension, so the name ends in .msh.
   static const std::string path = [] {
     const char* dir = std::getenv("TMPDIR");
-    return std::string(dir && *dir ? dir : "/tmp") + "/rockfdem_fuzz_" +
-           std::to_string(getpid()) + ".msh";
+    return std::string(dir && *dir ? dir : "/tmp") + "/rockfdem_fuzz_" + std::to_string(getpid()) +
+           ".msh";
   }();
   return path;
 }

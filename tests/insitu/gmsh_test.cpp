@@ -40,10 +40,11 @@ TEST_P(GmshKirsch, error_falls_with_refinement_and_is_below_1pct_at_20k_triangle
     const InsituField f = solve_insitu(m, spec).at(0);
     c = compare_kirsch(m, f, k);
     rock_cells = f.n_cells;
-    std::printf("  sV/sH %.3f gmsh h_near %.2f: %zu triangles (%zu rock)  stress L2 %.4f%%  wall u_r %.4f%%"
-                "  %s (%d it)\n",
-                GetParam(), h, m.n_triangles(), f.n_cells, 100 * c.stress_rel_l2, 100 * c.wall_ur_rel_l2,
-                f.solver.c_str(), f.iterations);
+    std::printf(
+        "  sV/sH %.3f gmsh h_near %.2f: %zu triangles (%zu rock)  stress L2 %.4f%%  wall u_r %.4f%%"
+        "  %s (%d it)\n",
+        GetParam(), h, m.n_triangles(), f.n_cells, 100 * c.stress_rel_l2, 100 * c.wall_ur_rel_l2,
+        f.solver.c_str(), f.iterations);
     EXPECT_LT(c.stress_rel_l2, 0.75 * previous);
     previous = c.stress_rel_l2;
   }

@@ -36,10 +36,11 @@ TEST_P(KirschTest, exact_tractions_error_falls_with_refinement_and_is_below_1pct
     const mesh::Mesh m = polar_box_mesh({1.0, 8.0, n_theta, true, 0.0});
     const InsituField f = solve_insitu(m, spec).at(0);
     const KirschComparison c = compare_kirsch(m, f, k);
-    std::printf("  [%s] n_theta %3d: %6zu cells %7zu dofs  stress L2 %.4f%%  wall u_r %.4f%%  %s"
-                " (%d it) reaction %.1e\n",
-                p.name, n_theta, f.n_cells, f.n_dofs, 100 * c.stress_rel_l2,
-                100 * c.wall_ur_rel_l2, f.solver.c_str(), f.iterations, f.reaction_ratio);
+    std::printf(
+        "  [%s] n_theta %3d: %6zu cells %7zu dofs  stress L2 %.4f%%  wall u_r %.4f%%  %s"
+        " (%d it) reaction %.1e\n",
+        p.name, n_theta, f.n_cells, f.n_dofs, 100 * c.stress_rel_l2, 100 * c.wall_ur_rel_l2,
+        f.solver.c_str(), f.iterations, f.reaction_ratio);
     errors.push_back(c.stress_rel_l2);
     finest = c;
     finest_rock_triangles = f.n_cells;
@@ -58,12 +59,11 @@ TEST_P(KirschTest, exact_tractions_error_falls_with_refinement_and_is_below_1pct
   EXPECT_LT(finest.wall_ur_rel_l2, 0.02);
 }
 
-INSTANTIATE_TEST_SUITE_P(
-    FarFields, KirschTest,
-    ::testing::Values(KirschParam{"seed_18_2_over_11_4", 18.2e6, 11.4e6, 0.0},
-                      KirschParam{"hydrostatic_15", 15e6, 15e6, 0.0},
-                      KirschParam{"seed_rotated_30deg", 18.2e6, 11.4e6, 30.0}),
-    [](const auto& info) { return std::string(info.param.name); });
+INSTANTIATE_TEST_SUITE_P(FarFields, KirschTest,
+                         ::testing::Values(KirschParam{"seed_18_2_over_11_4", 18.2e6, 11.4e6, 0.0},
+                                           KirschParam{"hydrostatic_15", 15e6, 15e6, 0.0},
+                                           KirschParam{"seed_rotated_30deg", 18.2e6, 11.4e6, 30.0}),
+                         [](const auto& info) { return std::string(info.param.name); });
 
 TEST(Kirsch, amg_cg_and_direct_agree_and_cg_reports_iterations) {
   const mesh::Mesh m = polar_box_mesh({1.0, 8.0, 96, true, 0.0});

@@ -21,7 +21,8 @@ constexpr double kPi = 3.14159265358979323846;
 Stress expected_stress(const InsituSpec& s, double y) {
   const double depth = s.gravity.reference_y - y;
   const double sV = s.far_field.sV + s.gravity.unit_weight * depth;
-  const double sH = s.far_field.sH + s.far_field.sH / s.far_field.sV * s.gravity.unit_weight * depth;
+  const double sH =
+      s.far_field.sH + s.far_field.sH / s.far_field.sV * s.gravity.unit_weight * depth;
   const double b = s.far_field.angle_deg * kPi / 180, c = std::cos(b), n = std::sin(b);
   Stress e;
   e.sxx = -(sH * c * c + sV * n * n);

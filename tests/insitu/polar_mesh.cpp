@@ -107,9 +107,12 @@ mesh::Mesh polar_box_mesh(const PolarMeshSpec& s) {
     const int a = outer[j], b = outer[(j + 1) % n];
     const double mx = 0.5 * (m.x[a] + m.x[b]), my = 0.5 * (m.y[a] + m.y[b]);
     int tag = mesh::kBottom;
-    if (std::abs(mx - L) < 1e-12 * L) tag = mesh::kRight;
-    else if (std::abs(my - L) < 1e-12 * L) tag = mesh::kTop;
-    else if (std::abs(mx + L) < 1e-12 * L) tag = mesh::kLeft;
+    if (std::abs(mx - L) < 1e-12 * L)
+      tag = mesh::kRight;
+    else if (std::abs(my - L) < 1e-12 * L)
+      tag = mesh::kTop;
+    else if (std::abs(mx + L) < 1e-12 * L)
+      tag = mesh::kLeft;
     m.edges.push_back({a, b, tag});
   }
   tag_ring(m, rings.front(), mesh::kExcavation);

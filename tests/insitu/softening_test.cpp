@@ -30,8 +30,8 @@ TEST(CoreSoftening, wall_displacement_follows_the_soft_inclusion_closed_form) {
   for (const InsituField& f : fields) {
     const double u = mean_wall_ur(m, f);
     const double exact = core_softening_wall_displacement(f.alpha, kP0, 1.0, kE, kNu);
-    std::printf("  alpha %5.2f: wall u_r %.6e m, closed form %.6e m (%+.3f%%)\n", f.alpha, u,
-                exact, f.alpha < 1 ? 100 * (u / exact - 1) : 0.0);
+    std::printf("  alpha %5.2f: wall u_r %.6e m, closed form %.6e m (%+.3f%%)\n", f.alpha, u, exact,
+                f.alpha < 1 ? 100 * (u / exact - 1) : 0.0);
     if (f.alpha == 1.0) {
       EXPECT_LT(std::abs(u), 1e-12);  // nothing moves with the core intact
     } else {
@@ -52,9 +52,9 @@ TEST(CoreSoftening, wall_displacement_follows_the_soft_inclusion_closed_form) {
 ///   rock:  u(a) = -(p0 - p) a / (2 G)
 ///   ring:  u = A r + B / r with s_rr(b) = 0, s_rr(a) = -p.
 struct LinedTunnel {
-  double p;           ///< support pressure [Pa]
-  double hoop_mean;   ///< area mean of the ring's hoop stress (tension +) [Pa]
-  double wall_u;      ///< rock wall radial displacement [m]
+  double p;          ///< support pressure [Pa]
+  double hoop_mean;  ///< area mean of the ring's hoop stress (tension +) [Pa]
+  double wall_u;     ///< rock wall radial displacement [m]
 };
 
 LinedTunnel lined_tunnel(double p0, double a, double b, const ElasticMaterial& rock,
@@ -99,12 +99,13 @@ TEST(Lining, ring_installed_at_excavation_matches_the_thick_ring_closed_form) {
   spec.lining.install_alpha = 1.0;
   spec.alphas = {0.0};
   const InsituField f = solve_insitu(m, spec).at(0);
-  const LinedTunnel exact = lined_tunnel(kP0, 1.0, 1.0 - t, *spec.materials.rock,
-                                         *spec.materials.lining);
+  const LinedTunnel exact =
+      lined_tunnel(kP0, 1.0, 1.0 - t, *spec.materials.rock, *spec.materials.lining);
   const double hoop = mean_lining_hoop(m, f), u = mean_wall_ur(m, f);
-  std::printf("  lining: hoop %.4e Pa (closed form %.4e), wall u_r %.4e m (closed form %.4e),"
-              " support pressure %.3f p0\n",
-              hoop, exact.hoop_mean, u, exact.wall_u, exact.p / kP0);
+  std::printf(
+      "  lining: hoop %.4e Pa (closed form %.4e), wall u_r %.4e m (closed form %.4e),"
+      " support pressure %.3f p0\n",
+      hoop, exact.hoop_mean, u, exact.wall_u, exact.p / kP0);
   EXPECT_TRUE(f.lining_installed);
   EXPECT_LT(hoop, 0);  // the ring is squeezed: compressive hoop stress
   EXPECT_NEAR(hoop, exact.hoop_mean, 0.02 * std::abs(exact.hoop_mean));
@@ -124,8 +125,8 @@ TEST(Lining, ring_active_during_softening_carries_growing_compressive_hoop_stres
   double previous = 0;
   for (const InsituField& f : fields) {
     const double hoop = mean_lining_hoop(m, f);
-    std::printf("  alpha %4.2f installed %d: lining mean hoop %.4e Pa, wall u_r %.4e m\n",
-                f.alpha, f.lining_installed, hoop, mean_wall_ur(m, f));
+    std::printf("  alpha %4.2f installed %d: lining mean hoop %.4e Pa, wall u_r %.4e m\n", f.alpha,
+                f.lining_installed, hoop, mean_wall_ur(m, f));
     EXPECT_EQ(f.lining_installed, f.alpha <= 0.2);
     if (!f.lining_installed) continue;
     EXPECT_LT(hoop, previous);  // compressive, and more so as the core softens

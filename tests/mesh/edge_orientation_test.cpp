@@ -8,6 +8,8 @@
 // Survey of the algorithms (prints the table of docs/meshing.md):
 //   build/tests/mesh/rockfdem_mesh_tests --gtest_also_run_disabled_tests
 //       --gtest_filter='FractureZoneMesh.DISABLED_survey*'   (one line)
+#include "rockfdem/mesh/edge_orientation.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -15,7 +17,6 @@
 #include <vector>
 
 #include "rockfdem/mesh/build.hpp"
-#include "rockfdem/mesh/edge_orientation.hpp"
 
 namespace rockfdem::mesh {
 namespace {
@@ -58,7 +59,11 @@ TEST(EdgeOrientation, equilateral_lattice_matches_closed_forms) {
   const EdgeOrientation e = measure_edge_orientation(m, m.fracture, -1e6, 5);
   ASSERT_EQ(e.histogram.size(), 12u);
   for (int k = 0; k < 12; ++k)
-    EXPECT_NEAR(e.histogram[k], k == 8 ? kShare120 : k % 4 == 0 ? kShare0 : 0.0, 1e-9)
+    EXPECT_NEAR(e.histogram[k],
+                k == 8       ? kShare120
+                : k % 4 == 0 ? kShare0
+                             : 0.0,
+                1e-9)
         << "bin " << k;
   EXPECT_NEAR(e.max_deviation, 12 * kShare120 - 1, 1e-9);
   EXPECT_NEAR(e.hexatic_order, 1.0, 1e-9);
@@ -77,7 +82,11 @@ TEST(EdgeOrientation, angles_are_taken_against_the_radial_direction) {
   const Mesh m = hexagonal_lattice(12);
   const EdgeOrientation e = measure_edge_orientation(m, m.fracture, 5, -1e6);
   for (int k = 0; k < 12; ++k)
-    EXPECT_NEAR(e.histogram[k], k == 2 ? kShare120 : k % 4 == 2 ? kShare0 : 0.0, 1e-9)
+    EXPECT_NEAR(e.histogram[k],
+                k == 2       ? kShare120
+                : k % 4 == 2 ? kShare0
+                             : 0.0,
+                1e-9)
         << "bin " << k;
 }
 

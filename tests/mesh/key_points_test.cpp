@@ -212,7 +212,7 @@ TEST(KeyPoints, boundary_matches_only_the_outline_it_was_built_from) {
   other.radius = 3.1;
   EXPECT_FALSE(boundary_matches(m, *b, other, 1e-6));
   EXPECT_FALSE(boundary_matches(m, *b, TunnelSpec{}, 1e-6));  // the default horseshoe
-  other.radius = 0;  // builds no outline
+  other.radius = 0;                                           // builds no outline
   EXPECT_FALSE(boundary_matches(m, *b, other, 1e-6));
 }
 

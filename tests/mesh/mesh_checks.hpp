@@ -35,7 +35,8 @@ inline EdgeKey key(int a, int b) { return {std::min(a, b), std::max(a, b)}; }
 inline std::map<EdgeKey, std::vector<std::size_t>> edge_triangles(const Mesh& m) {
   std::map<EdgeKey, std::vector<std::size_t>> out;
   for (std::size_t t = 0; t < m.n_triangles(); ++t)
-    for (int k = 0; k < 3; ++k) out[key(m.triangles[t][k], m.triangles[t][(k + 1) % 3])].push_back(t);
+    for (int k = 0; k < 3; ++k)
+      out[key(m.triangles[t][k], m.triangles[t][(k + 1) % 3])].push_back(t);
   return out;
 }
 

@@ -1,27 +1,26 @@
 // .msh files: a meshed tunnel written and read back unchanged, a hand-written
 // file read with named groups, and malformed files each refused with an
 // InputError that names the file.
+#include "rockfdem/mesh/msh_io.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cstdio>
 #include <fstream>
 #include <iostream>
 #include <set>
-#include <tuple>
 #include <string>
+#include <tuple>
 
 #include "rockfdem/error.hpp"
 #include "rockfdem/mesh/build.hpp"
-#include "rockfdem/mesh/msh_io.hpp"
 
 namespace rockfdem::mesh {
 namespace {
 
 std::string temp_path(const std::string& name) { return ::testing::TempDir() + name; }
 
-void write_text(const std::string& path, const std::string& text) {
-  std::ofstream(path) << text;
-}
+void write_text(const std::string& path, const std::string& text) { std::ofstream(path) << text; }
 
 TEST(MshRoundTrip, written_tunnel_reads_back_identical) {
   MeshSpec s;
@@ -79,7 +78,8 @@ TEST(MshRoundTrip, named_groups_choose_zones_and_edges) {
 std::string square_msh(const std::string& nodes, const std::string& elements) {
   return "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n"
          "$PhysicalNames\n2\n1 1 \"base\"\n2 7 \"granite\"\n$EndPhysicalNames\n"
-         "$Nodes\n" + nodes + "$EndNodes\n$Elements\n" + elements + "$EndElements\n";
+         "$Nodes\n" +
+         nodes + "$EndNodes\n$Elements\n" + elements + "$EndElements\n";
 }
 const std::string kNodes = "4\n1 0 0 0\n2 1 0 0\n3 1 1 0\n4 0 1 0\n";
 const std::string kElements = "3\n1 1 2 1 1 1 2\n2 2 2 7 1 1 2 3\n3 2 2 7 1 1 3 4\n";
@@ -102,8 +102,9 @@ TEST(MshUserFile, well_formed_square_reads) {
 }
 
 TEST(MshUserFile, clockwise_triangle_is_turned) {
-  const Mesh m = read_text("rockfdem_cw.msh",
-                           square_msh(kNodes, "3\n1 1 2 1 1 1 2\n2 2 2 7 1 1 3 2\n3 2 2 7 1 1 3 4\n"));
+  const Mesh m =
+      read_text("rockfdem_cw.msh",
+                square_msh(kNodes, "3\n1 1 2 1 1 1 2\n2 2 2 7 1 1 3 2\n3 2 2 7 1 1 3 4\n"));
   for (std::size_t t = 0; t < m.n_triangles(); ++t) EXPECT_NEAR(signed_area(m, t), 0.5, 1e-15);
 }
 
@@ -147,10 +148,11 @@ TEST(MshUserFile, node_tag_given_twice_is_refused) {
 }
 
 TEST(MshUserFile, degenerate_triangle_is_refused) {
-  expect_refused("rockfdem_flat.msh",
-                 square_msh("5\n1 0 0 0\n2 1 0 0\n3 1 1 0\n4 0 1 0\n5 0.5 0 0\n",
-                            "4\n1 1 2 1 1 1 2\n2 2 2 7 1 1 2 3\n3 2 2 7 1 1 3 4\n4 2 2 7 1 1 5 2\n"),
-                 "zero area");
+  expect_refused(
+      "rockfdem_flat.msh",
+      square_msh("5\n1 0 0 0\n2 1 0 0\n3 1 1 0\n4 0 1 0\n5 0.5 0 0\n",
+                 "4\n1 1 2 1 1 1 2\n2 2 2 7 1 1 2 3\n3 2 2 7 1 1 3 4\n4 2 2 7 1 1 5 2\n"),
+      "zero area");
 }
 
 // Node 3 moved past the diagonal 1-3's far side: triangle 1-3-4 turns
@@ -163,8 +165,7 @@ TEST(MshUserFile, folded_mesh_is_refused) {
 }
 
 TEST(MshUserFile, quadrangle_is_refused) {
-  expect_refused("rockfdem_quad.msh", square_msh(kNodes, "1\n1 3 2 7 1 1 2 3 4\n"),
-                 "gmsh type 3");
+  expect_refused("rockfdem_quad.msh", square_msh(kNodes, "1\n1 3 2 7 1 1 2 3 4\n"), "gmsh type 3");
 }
 
 TEST(MshUserFile, missing_physical_group_is_refused) {

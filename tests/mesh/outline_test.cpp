@@ -1,11 +1,12 @@
 // The exact outlines against closed forms: areas, perimeters, distances and
 // inside tests for each tunnel shape and for the lining's inward offset.
+#include "rockfdem/mesh/outline.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
 
 #include "rockfdem/error.hpp"
-#include "rockfdem/mesh/outline.hpp"
 
 namespace rockfdem::mesh {
 namespace {
@@ -71,9 +72,9 @@ TEST(TunnelOutline, distance_to_circle_is_radial) {
 TEST(TunnelOutline, distance_to_horseshoe_uses_walls_floor_and_arch) {
   const Outline o = tunnel_outline(shaped(TunnelShape::kHorseshoe, 10, 8));
   // Arch centre at (0, -1), radius 5; walls from y = -4 to -1; floor y = -4.
-  EXPECT_NEAR(distance_to_outline(o, 0, 6), 2, 1e-12);     // above the crown
-  EXPECT_NEAR(distance_to_outline(o, 7, -2), 2, 1e-12);    // beside the wall
-  EXPECT_NEAR(distance_to_outline(o, 0, -5), 1, 1e-12);    // below the floor
+  EXPECT_NEAR(distance_to_outline(o, 0, 6), 2, 1e-12);                  // above the crown
+  EXPECT_NEAR(distance_to_outline(o, 7, -2), 2, 1e-12);                 // beside the wall
+  EXPECT_NEAR(distance_to_outline(o, 0, -5), 1, 1e-12);                 // below the floor
   EXPECT_NEAR(distance_to_outline(o, 8, -7), std::hypot(3, 3), 1e-12);  // off the corner
 }
 
@@ -83,7 +84,7 @@ TEST(TunnelOutline, inside_is_exact_for_every_shape) {
   EXPECT_TRUE(inside_outline(c, 0, -1.99));
   EXPECT_FALSE(inside_outline(c, 1.5, 1.5));
   const Outline a = tunnel_outline(shaped(TunnelShape::kArched, 8, 6, 1.5));
-  EXPECT_TRUE(inside_outline(a, 0, 2.99));   // just under the crown (y = 3)
+  EXPECT_TRUE(inside_outline(a, 0, 2.99));  // just under the crown (y = 3)
   EXPECT_FALSE(inside_outline(a, 0, 3.01));
   EXPECT_FALSE(inside_outline(a, 3.99, 1.6));  // above the spring line at the wall
   EXPECT_TRUE(inside_outline(a, 3.99, 1.4));

@@ -62,8 +62,8 @@ const std::string kTestDir = ROCKFDEM_TEST_DIR;
 inline std::filesystem::path msh_scene(const std::filesystem::path& dir,
                                        const std::string& extra = "") {
   std::filesystem::create_directories(dir);
-  const Result meshed = run("mesh " + kTestDir + "/restart_support.toml -q -o " +
-                            (dir / "mesh").string());
+  const Result meshed =
+      run("mesh " + kTestDir + "/restart_support.toml -q -o " + (dir / "mesh").string());
   if (meshed.code != 0) throw std::runtime_error("meshing failed: " + meshed.output);
   const std::filesystem::path scene = dir / "scene.toml";
   std::ofstream(scene) << R"([model]

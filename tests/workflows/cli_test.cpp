@@ -1,5 +1,7 @@
 // The command line as users meet it: exit codes, messages on stderr, and
 // no output directory left behind by a refused scene.
+#include "rockfdem/workflows/cli.hpp"
+
 #include <gtest/gtest.h>
 #include <sys/wait.h>
 
@@ -13,7 +15,6 @@
 #include <nlohmann/json.hpp>
 
 #include "cli_runner.hpp"
-#include "rockfdem/workflows/cli.hpp"
 #include "rockfdem/error.hpp"
 
 namespace fs = std::filesystem;
@@ -93,8 +94,8 @@ TEST(Cli, bolt_design_the_engine_refuses_names_the_scene_and_keys) {
 
 TEST(Cli, set_override_is_validated_like_the_file) {
   const fs::path out = scratch("set");
-  const Result r = run("mesh " + kTestDir + "/good_circular.toml --set mesh.size_near=0 -o " +
-                       out.string());
+  const Result r =
+      run("mesh " + kTestDir + "/good_circular.toml --set mesh.size_near=0 -o " + out.string());
   EXPECT_EQ(r.code, 2);
   EXPECT_NE(r.output.find("--set key 'mesh.size_near'"), std::string::npos) << r.output;
   EXPECT_FALSE(fs::exists(out));
@@ -117,7 +118,8 @@ TEST(Cli, scene_larger_than_the_machine_is_refused_before_meshing) {
   for (const char* cmd : {"check", "run"}) {
     const Result r = run(std::string(cmd) + " " + kTestDir +
                          "/good_circular.toml --set mesh.size_near=0.001 --set "
-                         "mesh.size_far=0.001 -o " + out.string());
+                         "mesh.size_far=0.001 -o " +
+                         out.string());
     EXPECT_EQ(r.code, 2) << r.output;
     EXPECT_NE(r.output.find("mesh.size_near"), std::string::npos) << r.output;
     EXPECT_NE(r.output.find("GiB"), std::string::npos) << r.output;
@@ -135,16 +137,16 @@ TEST(Cli, mesh_writes_msh_vtu_and_summary) {
   const nlohmann::json j = nlohmann::json::parse(in);
   EXPECT_GT(j["counts"]["triangles"].get<int>(), 500);
   EXPECT_EQ(j["threads"].get<int>(), 2);
-  for (const char* key : {"rockfdem_version", "scene", "counts", "steps", "dt", "simulated_time",
-                          "timings", "throughput", "skipped", "broken", "monitors", "insitu",
-                          "state_hash"})
+  for (const char* key :
+       {"rockfdem_version", "scene", "counts", "steps", "dt", "simulated_time", "timings",
+        "throughput", "skipped", "broken", "monitors", "insitu", "state_hash"})
     EXPECT_TRUE(j.contains(key)) << key;
   // No temporary files are left beside the outputs.
   for (const auto& e : fs::directory_iterator(out))
     EXPECT_EQ(e.path().filename().string().find(".tmp"), std::string::npos) << e.path();
   // A second scene may not reuse the directory without --force.
-  const Result other = run("mesh " + kTestDir + "/good_circular.toml --set tunnel.radius=2.5 -o " +
-                           out.string());
+  const Result other =
+      run("mesh " + kTestDir + "/good_circular.toml --set tunnel.radius=2.5 -o " + out.string());
   EXPECT_EQ(other.code, 2) << other.output;
   EXPECT_NE(other.output.find("--force"), std::string::npos) << other.output;
   fs::remove_all(out);
@@ -156,9 +158,9 @@ TEST(Cli, mesh_writes_msh_vtu_and_summary) {
 // (size_near 0.3 m) must stay within 2.5%.
 TEST(Cli, insitu_compares_with_kirsch_and_writes_outputs) {
   const fs::path out = scratch("insitu");
-  const Result r = run("insitu " + std::string(ROCKFDEM_SOURCE_DIR) +
-                       "/scenes/kirsch-circular.toml --set mesh.size_near=0.3 -q -o " +
-                       out.string());
+  const Result r =
+      run("insitu " + std::string(ROCKFDEM_SOURCE_DIR) +
+          "/scenes/kirsch-circular.toml --set mesh.size_near=0.3 -q -o " + out.string());
   ASSERT_EQ(r.code, 0) << r.output;
   for (const char* f : {"insitu.vtu", "insitu.pvd", "insitu_00.vtu", "insitu_vs_analytic.csv",
                         "mesh.msh", "summary.json"})
@@ -188,11 +190,11 @@ TEST(Cli, tunnel_run_starts_in_equilibrium_and_is_thread_count_independent) {
   std::string hashes[2];
   for (int threads : {1, 2}) {
     const fs::path out = scratch("tunnel" + std::to_string(threads));
-    const Result r = run("run " + kTestDir + "/good_circular.toml -q -j " +
-                         std::to_string(threads) +
-                         " --set insitu.alpha=[1.0,0.2] --set engine.steps=300"
-                         " --set output.every_steps=100 --set output.plots=false -o " +
-                         out.string());
+    const Result r =
+        run("run " + kTestDir + "/good_circular.toml -q -j " + std::to_string(threads) +
+            " --set insitu.alpha=[1.0,0.2] --set engine.steps=300"
+            " --set output.every_steps=100 --set output.plots=false -o " +
+            out.string());
     ASSERT_EQ(r.code, 0) << r.output;
     std::ifstream in(out / "summary.json");
     const nlohmann::json j = nlohmann::json::parse(in);
@@ -239,8 +241,10 @@ TEST(Cli, elastic_tunnel_wall_displacement_matches_kirsch) {
   const double a = 3.0, E = 5e9, nu = 0.25, G = E / (2 * (1 + nu)), sH = 18.2e6, sV = 11.4e6;
   const double vault = a / (4 * G) * ((sH + sV) - (sH - sV) * (3 - 4 * nu));  // theta = 90 deg
   const double wall = a / (4 * G) * ((sH + sV) + (sH - sV) * (3 - 4 * nu));   // theta = 0
-  EXPECT_NEAR(j["monitors"]["vault_settlement_mm"].get<double>(), 1000 * vault, 0.02 * 1000 * vault);
-  EXPECT_NEAR(j["monitors"]["wall_chord_convergence_mm"].get<double>(), 2000 * wall, 0.02 * 2000 * wall);
+  EXPECT_NEAR(j["monitors"]["vault_settlement_mm"].get<double>(), 1000 * vault,
+              0.02 * 1000 * vault);
+  EXPECT_NEAR(j["monitors"]["wall_chord_convergence_mm"].get<double>(), 2000 * wall,
+              0.02 * 2000 * wall);
   EXPECT_TRUE(j["fdem"]["stages"][1]["converged"].get<bool>());
   // The relaxed FDEM stresses stay within 1% of the implicit open-hole
   // field on the same triangles (relative L2 over a <= r <= 5a).
@@ -264,8 +268,9 @@ TEST(Cli, mass_scaling_changes_the_steps_not_the_elastic_answer) {
   const char* modes[2] = {"off", "on"};
   for (int k = 0; k < 2; ++k) {
     const fs::path out = scratch(std::string("mass-") + modes[k]);
-    const Result r = run("run " + kTestDir + "/elastic_circular.toml -q --set engine.mass_scaling=" +
-                         modes[k] + " -o " + out.string());
+    const Result r =
+        run("run " + kTestDir + "/elastic_circular.toml -q --set engine.mass_scaling=" + modes[k] +
+            " -o " + out.string());
     ASSERT_EQ(r.code, 0) << r.output;
     const nlohmann::json j = rockfdem::test::read_json(out / "summary.json");
     ASSERT_TRUE(j["fdem"]["stages"][1]["converged"].get<bool>()) << modes[k];
@@ -295,8 +300,8 @@ TEST(Cli, equilibrium_waits_for_the_monitors_to_settle) {
   for (int k = 0; k < 2; ++k) {
     const fs::path out = scratch(std::string("settle") + std::to_string(k));
     const Result r = run("run " + kTestDir + "/elastic_circular.toml -q --set stages[2].ratio=1" +
-                         " --set stages[2].every_steps=100 --set stages[2].settle=" +
-                         settle[k] + " -o " + out.string());
+                         " --set stages[2].every_steps=100 --set stages[2].settle=" + settle[k] +
+                         " -o " + out.string());
     ASSERT_EQ(r.code, 0) << r.output;
     const nlohmann::json j = rockfdem::test::read_json(out / "summary.json");
     const nlohmann::json& stage = j["fdem"]["stages"][1];
@@ -379,8 +384,9 @@ TEST(Cli, dt_above_the_limit_is_refused_and_forced_it_stops_with_a_diagnostic) {
   // which the energy check at the first output interval (100 steps) names.
   // The sound run of the same specimen closes within 3% (measured 0.4%).
   const std::string three_limits = "3.07062e-07";  // 3 x this mesh's limit (refusal message)
-  const Result shattered = run("run " + kTestDir + "/ucs_small.toml -q --set engine.dt=" +
-                               three_limits + " --force-dt --force -o " + out.string());
+  const Result shattered =
+      run("run " + kTestDir + "/ucs_small.toml -q --set engine.dt=" + three_limits +
+          " --force-dt --force -o " + out.string());
   EXPECT_EQ(shattered.code, 3) << shattered.output;
   EXPECT_NE(shattered.output.find("step 100: energy balance broken"), std::string::npos)
       << shattered.output;
@@ -410,8 +416,8 @@ TEST(Cli, lining_interface_debonds_when_weak_and_holds_when_strong) {
     const Result r = run("run " + kTestDir + "/restart_support.toml -q -o " + out.string() +
                          " --set output.vtk=false --set stages[4].trigger_broken=100000"
                          " --set stages[4].max_steps=0 --set materials.lining.young=20e9"
-                         " --set lining_interface.cohesion=" + s +
-                         " --set lining_interface.tensile_strength=" + s);
+                         " --set lining_interface.cohesion=" +
+                         s + " --set lining_interface.tensile_strength=" + s);
     ASSERT_EQ(r.code, 0) << r.output;
     std::ifstream in(out / "summary.json");
     const nlohmann::json j = nlohmann::json::parse(in);
@@ -420,7 +426,8 @@ TEST(Cli, lining_interface_debonds_when_weak_and_holds_when_strong) {
     fs::remove_all(out);
   }
   EXPECT_GT(lining[0]["interface_cracks"].get<long>(), 20);
-  EXPECT_GT(lining[0]["interface_broken"].get<long>(), lining[0]["interface_cracks"].get<long>() / 4);
+  EXPECT_GT(lining[0]["interface_broken"].get<long>(),
+            lining[0]["interface_cracks"].get<long>() / 4);
   EXPECT_EQ(lining[1]["interface_broken"].get<long>(), 0);
 }
 

@@ -34,8 +34,9 @@ std::string last_line(const std::string& text) {
 // and a last console line that says so.
 TEST(Equilibrium, stopping_at_the_cap_is_not_at_equilibrium) {
   const fs::path out = scratch("cap");
-  const Result r = run("run " + kTestDir + "/elastic_circular.toml -j 1 --set stages[2].max_steps=500 -o " +
-                       out.string());
+  const Result r =
+      run("run " + kTestDir + "/elastic_circular.toml -j 1 --set stages[2].max_steps=500 -o " +
+          out.string());
   ASSERT_EQ(r.code, 0) << r.output;
   const nlohmann::json j = read_json(out / "summary.json");
   EXPECT_EQ(j["status"], "not_at_equilibrium");
@@ -60,9 +61,9 @@ TEST(Equilibrium, a_key_point_beyond_the_span_fraction_is_unstable) {
   long steps[3];
   for (int k = 0; k < 3; ++k) {
     const fs::path out = scratch(std::string("unstable") + std::to_string(k));
-    const Result r = run("run " + kTestDir + "/elastic_circular.toml -q -j 1 " +
-                         "--set stages[2].unstable_fraction=" + fraction[k] + " -o " +
-                         out.string());
+    const Result r =
+        run("run " + kTestDir + "/elastic_circular.toml -q -j 1 " +
+            "--set stages[2].unstable_fraction=" + fraction[k] + " -o " + out.string());
     ASSERT_EQ(r.code, 0) << r.output;
     const nlohmann::json j = read_json(out / "summary.json");
     steps[k] = j["steps"].get<long>();
@@ -183,8 +184,8 @@ TEST(Resolution, check_warns_when_elements_exceed_the_characteristic_length) {
 // third result; the summary says how many crack elements broke.
 TEST(Heterogeneity, same_seed_same_bits_for_any_thread_count) {
   std::string hash[4];
-  const std::string base = "run " + kTestDir + "/support_pair_unsupported.toml -q " +
-                           "--set stages[2].max_steps=1000 ";
+  const std::string base =
+      "run " + kTestDir + "/support_pair_unsupported.toml -q " + "--set stages[2].max_steps=1000 ";
   const std::string args[4] = {
       "-j 1 --set materials.rock.heterogeneity=3", "-j 2 --set materials.rock.heterogeneity=3",
       "-j 2 --set materials.rock.heterogeneity=3 --set materials.rock.heterogeneity_seed=2",

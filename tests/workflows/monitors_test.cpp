@@ -4,6 +4,8 @@
 // user's .msh with its opening away from the origin, and the error for a
 // .msh without an opening. Built from monitors.cpp, mesh/ and fdem/ only
 // (no deal.II), so it compiles in seconds.
+#include "monitors.hpp"
+
 #include <gtest/gtest.h>
 #include <unistd.h>
 
@@ -12,7 +14,6 @@
 #include <map>
 #include <string>
 
-#include "monitors.hpp"
 #include "rockfdem/error.hpp"
 #include "rockfdem/mesh/build.hpp"
 #include "rockfdem/mesh/msh_io.hpp"

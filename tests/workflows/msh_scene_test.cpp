@@ -17,8 +17,8 @@ using namespace rockfdem::test;
 TEST(MshScene, default_stages_install_the_lining_of_a_lined_mesh) {
   const fs::path dir = scratch("msh-lined");
   const fs::path scene = msh_scene(dir);
-  const Result r = run("run " + scene.string() + " -q --set output.vtk=false -o " +
-                       (dir / "out").string());
+  const Result r =
+      run("run " + scene.string() + " -q --set output.vtk=false -o " + (dir / "out").string());
   ASSERT_EQ(r.code, 0) << r.output;
   const nlohmann::json j = read_json(dir / "out" / "summary.json");
   const nlohmann::json& stages = j["fdem"]["stages"];
@@ -51,16 +51,15 @@ TEST(MshScene, check_reads_the_mesh_file_and_refuses_a_bad_one) {
   EXPECT_NE(good.output.find("peak memory (estimate)"), std::string::npos) << good.output;
 
   std::ofstream(dir / "junk.msh") << "not a mesh\n";
-  const std::pair<std::string, std::string> bad[] = {
-      {"msh.file=junk.msh", "$MeshFormat"},
-      {"msh.file=mesh", "msh.file"},
-      {"msh.fracture_group=nope", "'nope'"},
-      {"msh.zones={Rock=\"rock\"}", "'Rock'"},
-      {"msh.edges={left=\"left\"}", "msh.edges"}};
+  const std::pair<std::string, std::string> bad[] = {{"msh.file=junk.msh", "$MeshFormat"},
+                                                     {"msh.file=mesh", "msh.file"},
+                                                     {"msh.fracture_group=nope", "'nope'"},
+                                                     {"msh.zones={Rock=\"rock\"}", "'Rock'"},
+                                                     {"msh.edges={left=\"left\"}", "msh.edges"}};
   for (const auto& [set, expect] : bad) {
     for (const char* cmd : {"check", "run"}) {
-      const Result r = run(std::string(cmd) + " " + scene.string() + " --set '" + set +
-                           "' -o " + (dir / "bad").string());
+      const Result r = run(std::string(cmd) + " " + scene.string() + " --set '" + set + "' -o " +
+                           (dir / "bad").string());
       EXPECT_EQ(r.code, 2) << cmd << " " << set << ": " << r.output;
       EXPECT_NE(r.output.find(expect), std::string::npos) << cmd << " " << set << ": " << r.output;
       EXPECT_EQ(std::count(r.output.begin(), r.output.end(), '\n'), 1) << r.output;

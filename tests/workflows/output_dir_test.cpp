@@ -48,8 +48,8 @@ std::set<std::string> frames_in(const fs::path& dir) {
 // nothing, tunnel or specimen.
 TEST(OutputDir, run_refusing_dt_leaves_no_directory) {
   const fs::path out = scratch("refused-dt");
-  for (const std::string& scene : {kCircular + " --set engine.dt=1",
-                                  kTestDir + "/ucs_small.toml --set engine.dt=2e-6"}) {
+  for (const std::string& scene :
+       {kCircular + " --set engine.dt=1", kTestDir + "/ucs_small.toml --set engine.dt=2e-6"}) {
     const Result r = run("run " + scene + " -q -o " + out.string());
     EXPECT_EQ(r.code, 2) << scene << ": " << r.output;
     EXPECT_NE(r.output.find("engine.dt"), std::string::npos) << r.output;
@@ -106,7 +106,8 @@ TEST(OutputDir, refused_run_leaves_an_existing_directory_untouched) {
 TEST(OutputDir, force_leaves_a_folder_no_run_claimed_untouched) {
   const fs::path out = scratch("unclaimed");
   fs::create_directories(out / "checkpoints");
-  const char* mine[] = {"notes.txt", "bolt_01.csv", "fdem_0042.vtu", "convergence.png",
+  const char* mine[] = {"notes.txt",         "bolt_01.csv",
+                        "fdem_0042.vtu",     "convergence.png",
                         "stress_strain.png", "checkpoints/checkpoint_00000100.rfck"};
   for (const char* f : mine) std::ofstream(out / f) << "mine\n";
   const Result r = run("mesh " + kCircular + " -q --force -o " + out.string());
@@ -125,8 +126,8 @@ TEST(OutputDir, force_removes_an_earlier_runs_outputs_and_nothing_else) {
   fs::create_directories(out / "sub");
   std::ofstream(out / "sub" / "fdem_0009.vtu") << "mine\n";
 
-  const Result again = run("run " + kCircular + run_args + " --set engine.steps=100 --force -o " +
-                           out.string());
+  const Result again =
+      run("run " + kCircular + run_args + " --set engine.steps=100 --force -o " + out.string());
   ASSERT_EQ(again.code, 0) << again.output;
   const std::string pvd = read_text(out / "fdem.pvd");
   std::size_t listed = 0;
@@ -140,7 +141,8 @@ TEST(OutputDir, force_removes_an_earlier_runs_outputs_and_nothing_else) {
 
   // A supported run writes bolt tables and checkpoints too; `mesh --force`
   // of another scene leaves its three outputs and the user's files alone.
-  const Result supported = run("run " + kTestDir + "/restart_support.toml -q --force"
+  const Result supported = run("run " + kTestDir +
+                               "/restart_support.toml -q --force"
                                " --set stages[4].max_steps=200 --set stages[5].max_steps=200"
                                " --set output.every_steps=100 --checkpoint-every 100 -o " +
                                out.string());
@@ -148,7 +150,7 @@ TEST(OutputDir, force_removes_an_earlier_runs_outputs_and_nothing_else) {
   ASSERT_TRUE(fs::exists(out / "bolt_00.csv"));
   ASSERT_TRUE(fs::exists(out / "checkpoints"));
   ASSERT_EQ(run("mesh " + kCircular + " -q --force -o " + out.string()).code, 0);
-  const std::set<std::string> left{".rockfdem-scene", "mesh.msh",  "mesh.vtu", "summary.json",
+  const std::set<std::string> left{".rockfdem-scene", "mesh.msh",       "mesh.vtu", "summary.json",
                                    "notes.txt",       "fdem_notes.vtu", "sub"};
   EXPECT_EQ(names_in(out), left);
   fs::remove_all(out);

@@ -102,10 +102,10 @@ class Outputs : public ::testing::Test {
 
 // A forced dt of 2 ms diverges in the grout stage after the hand-off
 // frame (step 1); it is found at step 4, where the broken count reaches
-// the grout trigger (checked after every step) and a row is written. The summary keeps what is known: the model's
-// counts (the seed tunnel: 16892 triangles, 13 bolts and cables) and the
-// last good state, the one the last frame shows: its steps, dt, time,
-// monitors and state hash; status and diagnostic say why it stopped.
+// the grout trigger (checked after every step) and a row is written. The summary keeps what is
+// known: the model's counts (the seed tunnel: 16892 triangles, 13 bolts and cables) and the last
+// good state, the one the last frame shows: its steps, dt, time, monitors and state hash; status
+// and diagnostic say why it stopped.
 TEST_F(Outputs, failed_tunnel_run_reports_counts_and_the_last_good_state) {
   const nlohmann::json j = failed_summary(kSeed +
                                               " --set engine.dt=0.002 --set "
@@ -199,8 +199,8 @@ TEST_F(Outputs, lab_rate_platen_is_not_a_numerical_failure) {
 // 1e14) closes within 5.2% only (from 1e14 up the balance breaks by more
 // than 10% and the run stops, exit 3); the same specimen as given, 0.06%.
 TEST_F(Outputs, unbalanced_energy_at_the_end_is_a_warning) {
-  const std::string run = "run " + kTestDir +
-                          "/ucs_small.toml -j 1 --set output.plots=false --set output.vtk=false";
+  const std::string run =
+      "run " + kTestDir + "/ucs_small.toml -j 1 --set output.plots=false --set output.vtk=false";
   nlohmann::json j = summary_of(run + " --set materials.rock.young=1e13", out);
   EXPECT_EQ(j["status"], "completed");
   ASSERT_TRUE(j.contains("warnings"));

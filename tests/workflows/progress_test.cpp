@@ -1,5 +1,7 @@
 // Progress lines on stderr: at most one a second while a stage runs, and
 // its last line once.
+#include "progress.hpp"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -7,8 +9,6 @@
 #include <cstdio>
 #include <string>
 #include <thread>
-
-#include "progress.hpp"
 
 namespace {
 

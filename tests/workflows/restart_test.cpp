@@ -51,8 +51,8 @@ long checkpoint_step(const fs::path& p) {
 
 // Starts `rockfdem ARGS` without waiting; its output goes to `log`.
 pid_t spawn(const std::string& args, const fs::path& log) {
-  const std::string cmd = "exec " + std::string(ROCKFDEM_BINARY) + " " + args + " > " +
-                          log.string() + " 2>&1";
+  const std::string cmd =
+      "exec " + std::string(ROCKFDEM_BINARY) + " " + args + " > " + log.string() + " 2>&1";
   const pid_t pid = fork();
   if (pid == 0) {
     execl("/bin/sh", "sh", "-c", cmd.c_str(), static_cast<char*>(nullptr));
@@ -160,8 +160,8 @@ class Restart : public ::testing::Test {
   // The uninterrupted reference: 2 threads, a checkpoint every 400 steps.
   static void SetUpTestSuite() {
     reference_dir_ = new fs::path(scratch("restart-reference"));
-    const Result r = run("run " + kScene + " -q -j 2 --checkpoint-every 400 -o " +
-                         reference_dir_->string());
+    const Result r =
+        run("run " + kScene + " -q -j 2 --checkpoint-every 400 -o " + reference_dir_->string());
     ASSERT_EQ(r.code, 0) << r.output;
     reference_ = new nlohmann::json(read_json(*reference_dir_ / "summary.json"));
   }
@@ -197,8 +197,8 @@ TEST_F(Restart, continues_bit_identically_with_another_thread_count) {
   EXPECT_GT(at, j["fdem"]["stages"][3]["steps"].get<long>()) << "after grouting";
 
   const fs::path out = scratch("restart-j1");
-  const Result r = run("run " + kScene + " -q -j 1 --restart " + older.string() + " -o " +
-                       out.string());
+  const Result r =
+      run("run " + kScene + " -q -j 1 --restart " + older.string() + " -o " + out.string());
   ASSERT_EQ(r.code, 0) << r.output;
   const nlohmann::json k = read_json(out / "summary.json");
   EXPECT_EQ(k["state_hash"].get<std::string>(), reference_hash());
@@ -280,8 +280,8 @@ TEST_F(Restart, sigterm_writes_outputs_and_a_checkpoint_then_exit_143_and_restar
   EXPECT_LT(checkpoint_step(kept[0]), (*reference_)["steps"].get<long>());
 
   const fs::path again = scratch("restart-after-sigterm");
-  const Result r = run("run " + kScene + " -q -j 1 --restart " + kept[0].string() + " -o " +
-                       again.string());
+  const Result r =
+      run("run " + kScene + " -q -j 1 --restart " + kept[0].string() + " -o " + again.string());
   ASSERT_EQ(r.code, 0) << r.output;
   EXPECT_EQ(read_json(again / "summary.json")["state_hash"].get<std::string>(), reference_hash());
   fs::remove_all(out);
@@ -305,8 +305,8 @@ TEST_F(Restart, sigkill_leaves_a_restartable_checkpoint) {
   ASSERT_GE(kept.size(), 1u);
   ASSERT_LE(kept.size(), 3u) << "a third only while the newest is being pruned";
   // Continue in the same directory, as after a crash.
-  const Result r = run("run " + kScene + " -q -j 1 --restart " + kept.back().string() + " -o " +
-                       out.string());
+  const Result r =
+      run("run " + kScene + " -q -j 1 --restart " + kept.back().string() + " -o " + out.string());
   ASSERT_EQ(r.code, 0) << r.output;
   EXPECT_EQ(read_json(out / "summary.json")["state_hash"].get<std::string>(), reference_hash());
   EXPECT_EQ(history_rows(out), history_rows(*reference_dir_));
@@ -336,8 +336,8 @@ TEST_F(Restart, second_sigint_exits_at_once_leaving_complete_files) {
   const auto kept = checkpoints(out);
   ASSERT_FALSE(kept.empty());
   const fs::path again = scratch("restart-sigint2-again");
-  const Result r = run("run " + kScene + " -q --restart " + kept.back().string() + " -o " +
-                       again.string());
+  const Result r =
+      run("run " + kScene + " -q --restart " + kept.back().string() + " -o " + again.string());
   EXPECT_EQ(r.code, 0) << r.output;
   EXPECT_EQ(read_json(again / "summary.json")["state_hash"].get<std::string>(), reference_hash());
   fs::remove_all(again);

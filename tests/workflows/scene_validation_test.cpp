@@ -40,7 +40,8 @@ std::string error_of(const std::function<void()>& f) {
 
 // Every one of `parts` is in `msg`.
 void expect_contains(const std::string& msg, std::initializer_list<std::string> parts) {
-  for (const std::string& p : parts) EXPECT_NE(msg.find(p), std::string::npos) << p << " in: " << msg;
+  for (const std::string& p : parts)
+    EXPECT_NE(msg.find(p), std::string::npos) << p << " in: " << msg;
 }
 
 }  // namespace
@@ -85,8 +86,8 @@ TEST(Scene, override_changes_a_value_and_is_validated) {
   const std::string good = kTestDir + "/good_circular.toml";
   EXPECT_DOUBLE_EQ(load_scene(good, {"tunnel.radius=4.5"}).mesh.tunnel.radius, 4.5);
   // A bare word is taken as a string, so shells need no quoting.
-  const Scene rect = load_scene(good, {"tunnel.shape=rectangular", "tunnel.span=6",
-                                       "tunnel.height=5"});
+  const Scene rect =
+      load_scene(good, {"tunnel.shape=rectangular", "tunnel.span=6", "tunnel.height=5"});
   EXPECT_EQ(rect.mesh.tunnel.shape, mesh::TunnelShape::kRectangular);
   const std::string bad = error_of([&] { load_scene(good, {"tunnel.radius=-1"}); });
   EXPECT_NE(bad.find("--set"), std::string::npos) << bad;
@@ -110,8 +111,7 @@ TEST(Scene, error_names_file_line_key_value_and_allowed) {
   const std::string choice = error_of(
       [&] { load_scene(kTestDir + "/good_circular.toml", {"engine.mass_scaling=maybe"}); });
   EXPECT_NE(choice.find("'engine.mass_scaling' = \"maybe\""), std::string::npos) << choice;
-  EXPECT_NE(choice.find("allowed: one of \"auto\", \"on\", \"off\""), std::string::npos)
-      << choice;
+  EXPECT_NE(choice.find("allowed: one of \"auto\", \"on\", \"off\""), std::string::npos) << choice;
 }
 
 // Every file in bad_scenes/ starts with "# expect: TEXT"; loading it must
@@ -170,9 +170,9 @@ TEST(Scene, override_inside_a_table_is_cited_as_set_with_its_choices) {
 // changed with --set: the seed tunnel widened to 200 m blames the span.
 TEST(Scene, cross_key_errors_name_the_changed_key_with_short_numbers) {
   const std::string seed = std::string(ROCKFDEM_SOURCE_DIR) + "/scenes/tunnel-seed.toml";
-  expect_contains(error_of([&] { load_scene(seed, {"tunnel.span=200"}); }),
-                  {"--set key 'tunnel.span' = 200", "tunnel.height = 8.8 m",
-                   "allowed: at most 17.6 m"});
+  expect_contains(
+      error_of([&] { load_scene(seed, {"tunnel.span=200"}); }),
+      {"--set key 'tunnel.span' = 200", "tunnel.height = 8.8 m", "allowed: at most 17.6 m"});
   expect_contains(error_of([&] { load_scene(seed, {"tunnel.height=5"}); }),
                   {"--set key 'tunnel.height' = 5", "span/2", "allowed: at least 5.65 m"});
   // From the file, the key the check is about is named, with its value as written.
@@ -186,8 +186,7 @@ TEST(Scene, cross_key_errors_name_the_changed_key_with_short_numbers) {
   // The fracture zone pushes the opening out of the domain: it is named,
   // and round numbers print plainly (40, not 4e+01).
   expect_contains(error_of([&] { load_scene(seed, {"tunnel.fracture_zone=40"}); }),
-                  {"--set key 'tunnel.fracture_zone' = 40:", "fracture zone 40 m",
-                   "(width 80 m)"});
+                  {"--set key 'tunnel.fracture_zone' = 40:", "fracture zone 40 m", "(width 80 m)"});
 }
 
 // The reference's default stage list is the one the reader builds: a
@@ -218,7 +217,8 @@ TEST(Scene, default_stage_list_is_the_documented_one) {
 TEST(Scene, reference_lists_each_section_once) {
   const std::string md = scene_reference_markdown();
   std::set<std::string> seen;
-  for (std::size_t at = md.find("\n## ["); at != std::string::npos; at = md.find("\n## [", at + 1)) {
+  for (std::size_t at = md.find("\n## ["); at != std::string::npos;
+       at = md.find("\n## [", at + 1)) {
     const std::string header = md.substr(at + 1, md.find('\n', at + 1) - at - 1);
     EXPECT_TRUE(seen.insert(header).second) << header << " twice";
   }
@@ -234,15 +234,15 @@ TEST(Scene, documented_defaults_and_ranges_are_the_checked_ones) {
     const KeySpec* k = find_key(key);
     ASSERT_NE(k, nullptr);
     EXPECT_EQ(describe_allowed(*k), "> 0 (Pa)") << key;
-    expect_contains(error_of([&] {
-                      load_scene(kTestDir + "/good_circular.toml", {std::string(key) + "=0"});
-                    }),
-                    {key, "> 0 (Pa)"});
+    expect_contains(
+        error_of([&] { load_scene(kTestDir + "/good_circular.toml", {std::string(key) + "=0"}); }),
+        {key, "> 0 (Pa)"});
   }
   EXPECT_NO_THROW(load_scene(kTestDir + "/ucs_small.toml"));
-  const std::string ucs = "[model]\nkind = \"ucs\"\n[materials.rock]\nyoung = 1e10\n"
-                          "poisson = 0.2\ntensile_strength = 1e6\ncohesion = 2e6\n"
-                          "fracture_energy_I = 10\nfracture_energy_II = 50\n";
+  const std::string ucs =
+      "[model]\nkind = \"ucs\"\n[materials.rock]\nyoung = 1e10\n"
+      "poisson = 0.2\ntensile_strength = 1e6\ncohesion = 2e6\n"
+      "fracture_energy_I = 10\nfracture_energy_II = 50\n";
   expect_contains(error_of([&] { parse_scene(ucs, "ucs.toml", "."); }),
                   {"missing key 'mesh.size_near'", "at most 0.025 m"});
   EXPECT_NO_THROW(parse_scene(ucs, "ucs.toml", ".", {"mesh.size_near=0.004"}));

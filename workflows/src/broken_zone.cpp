@@ -84,8 +84,7 @@ BrokenZone broken_zone(const fdem::Engine& e, const mesh::Mesh& m, double h,
   const std::vector<Segment> opening = excavation_boundary(m);
   const std::vector<Segment> edge = fracture_zone_edge(m);
   if (opening.empty()) return z;
-  for (const Segment& s : edge)
-    z.zone_depth = std::max(z.zone_depth, nearest(s[0], s[1], opening));
+  for (const Segment& s : edge) z.zone_depth = std::max(z.zone_depth, nearest(s[0], s[1], opening));
   const std::vector<int>& vertex = e.node_vertex();
   double clearance = std::numeric_limits<double>::infinity();
   for (std::size_t c = 0; c < e.n_cracks(); ++c) {

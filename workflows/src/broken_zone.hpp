@@ -41,11 +41,11 @@ struct Resolution {
 Resolution fracture_resolution(const Scene& scene, const mesh::Mesh* m);
 
 struct BrokenZone {
-  long broken = 0;           ///< broken crack elements between two rock triangles
-  double depth = 0;          ///< farthest of them from the excavation boundary [m]
-  double zone_depth = 0;     ///< the fracture zone's outer edge from the boundary, at most [m]
-  double clearance = -1;     ///< nearest of them to the zone's outer edge [m]; -1: none broken
-  bool at_edge = false;      ///< clearance below kEdgeElements h
+  long broken = 0;        ///< broken crack elements between two rock triangles
+  double depth = 0;       ///< farthest of them from the excavation boundary [m]
+  double zone_depth = 0;  ///< the fracture zone's outer edge from the boundary, at most [m]
+  double clearance = -1;  ///< nearest of them to the zone's outer edge [m]; -1: none broken
+  bool at_edge = false;   ///< clearance below kEdgeElements h
 };
 
 /// The broken zone of the engine's state on mesh `m` (fracture zone element

@@ -27,8 +27,8 @@ po::options_description visible_options() {
       "output,o", po::value<std::string>()->default_value("rockfdem-out"), "output directory")(
       "threads,j", po::value<int>()->default_value(0), "OpenMP threads (0: all cores)")(
       "set", po::value<std::vector<std::string>>()->composing(),
-      "override a scene key: --set section.key=value (repeatable)")(
-      "quiet,q", "no progress on stderr")(
+      "override a scene key: --set section.key=value (repeatable)")("quiet,q",
+                                                                    "no progress on stderr")(
       "force",
       "write into an output directory holding another run's results: the files rockfdem "
       "wrote there are removed first (others stay)")(
@@ -44,8 +44,8 @@ po::options_description visible_options() {
 CommandLine parse_command_line(int argc, const char* const argv[]) {
   po::options_description visible = visible_options();
   po::options_description hidden;
-  hidden.add_options()("command", po::value<std::string>(), "")(
-      "scene", po::value<std::string>(), "")("scene-reference", "");
+  hidden.add_options()("command", po::value<std::string>(), "")("scene", po::value<std::string>(),
+                                                                "")("scene-reference", "");
   po::options_description all;
   all.add(visible).add(hidden);
   po::positional_options_description positional;

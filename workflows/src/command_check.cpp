@@ -4,19 +4,19 @@
 // step. No meshing (a .msh scene's file is read: its counts are exact, and a
 // bad file is refused here), nothing written. Every command also refuses,
 // before meshing, a scene whose memory estimate exceeds this machine's memory.
+#include <unistd.h>
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <iostream>
 
-#include <unistd.h>
-
 #include "broken_zone.hpp"
 #include "commands.hpp"
-#include "stage_inputs.hpp"
 #include "rockfdem/error.hpp"
 #include "rockfdem/mesh/build.hpp"
 #include "rockfdem/mesh/outline.hpp"
+#include "stage_inputs.hpp"
 
 namespace rockfdem::workflows {
 namespace {
@@ -53,8 +53,8 @@ Estimate estimate_tunnel(const Scene& s) {
       }
       const double d = mesh::distance_to_outline(outline, x, y);
       const double beyond = std::max(0.0, d - m.tunnel.fracture_zone);
-      const double h = m.size.size_near +
-                       (m.size.size_far - m.size.size_near) * std::min(1.0, beyond / grading);
+      const double h =
+          m.size.size_near + (m.size.size_far - m.size.size_near) * std::min(1.0, beyond / grading);
       const double count = dx * dy / triangle_area(h);
       e.triangles += count;
       if (d <= m.tunnel.fracture_zone) e.fracture_triangles += count;
@@ -66,13 +66,16 @@ Estimate estimate_tunnel(const Scene& s) {
 // The in-situ traction loads the box on its four sides: a mesh without one
 // of them cannot carry it.
 void require_box_sides(const Scene& s, const mesh::Mesh& m) {
-  const std::pair<int, const char*> sides[] = {
-      {mesh::kBottom, "bottom"}, {mesh::kRight, "right"}, {mesh::kTop, "top"}, {mesh::kLeft, "left"}};
+  const std::pair<int, const char*> sides[] = {{mesh::kBottom, "bottom"},
+                                               {mesh::kRight, "right"},
+                                               {mesh::kTop, "top"},
+                                               {mesh::kLeft, "left"}};
   for (const auto& [tag, name] : sides)
     if (std::none_of(m.edges.begin(), m.edges.end(),
                      [tag = tag](const mesh::TaggedEdge& e) { return e.tag == tag; }))
       throw InputError(s.source + ": key 'msh.edges': no edge of " + s.mesh.msh.path +
-                       " is tagged \"" + name + "\", and the in-situ stress loads the box on "
+                       " is tagged \"" + name +
+                       "\", and the in-situ stress loads the box on "
                        "its bottom, right, top and left sides; allowed: a table mapping the "
                        "file's 1D physical groups to those four tags (and \"excavation\", "
                        "\"lining_inner\"), e.g. { Floor = \"bottom\" }");
@@ -96,7 +99,8 @@ Estimate estimate(const Scene& s) {
   const mesh::MeshSpec& m = s.mesh;
   const double a = triangle_area(m.size.size_near);
   switch (m.kind) {
-    case mesh::ModelKind::kTunnel: return estimate_tunnel(s);
+    case mesh::ModelKind::kTunnel:
+      return estimate_tunnel(s);
     case mesh::ModelKind::kUcs: {
       const double t = m.specimen.width * m.specimen.height / a;
       return {t, t};
@@ -105,7 +109,8 @@ Estimate estimate(const Scene& s) {
       const double t = M_PI * m.specimen.diameter * m.specimen.diameter / 4 / a;
       return {t, t};
     }
-    case mesh::ModelKind::kMshFile: return read_msh_figures(s);
+    case mesh::ModelKind::kMshFile:
+      return read_msh_figures(s);
   }
   return {};
 }
@@ -119,9 +124,7 @@ constexpr double kBytesPerTriangle = 650 + 1100 + 250;
 
 double peak_bytes(const Estimate& e) { return kBaseBytes + kBytesPerTriangle * e.triangles; }
 
-double machine_bytes() {
-  return double(sysconf(_SC_PHYS_PAGES)) * double(sysconf(_SC_PAGE_SIZE));
-}
+double machine_bytes() { return double(sysconf(_SC_PHYS_PAGES)) * double(sysconf(_SC_PAGE_SIZE)); }
 
 // Explicit steps at most: the step caps of the stages (tunnels) or the
 // specimen's step count.
@@ -150,8 +153,8 @@ double run_seconds(const Scene& s, const Estimate& e, int threads) {
 // Plane-strain P-wave speed of the rock.
 double p_wave_speed(const MaterialSpec& r, bool plane_stress) {
   const double nu = r.poisson;
-  const double modulus = plane_stress ? r.young / (1 - nu * nu)
-                                      : r.young * (1 - nu) / ((1 + nu) * (1 - 2 * nu));
+  const double modulus =
+      plane_stress ? r.young / (1 - nu * nu) : r.young * (1 - nu) / ((1 + nu) * (1 - 2 * nu));
   return std::sqrt(modulus / r.density);
 }
 
@@ -173,8 +176,8 @@ void refuse_if_too_large(const Scene& scene) {
                   "%s: key 'mesh.size_near' = %g: the model would have about %.3g triangles and "
                   "need about %.1f GiB, more than this machine's %.1f GiB; coarsen "
                   "mesh.size_near or shrink the domain",
-                  scene.source.c_str(), scene.mesh.size.size_near, e.triangles,
-                  need / 1073741824.0, have / 1073741824.0);
+                  scene.source.c_str(), scene.mesh.size.size_near, e.triangles, need / 1073741824.0,
+                  have / 1073741824.0);
   throw InputError(msg);
 }
 
@@ -206,9 +209,10 @@ int command_check(const Scene& scene, const CommandLine& /*cli*/) {
   std::printf("  crack elements (estimate):  %.0f\n", cracks);
   if (e.fracture_triangles > 0) {
     const Resolution r = fracture_resolution(scene, nullptr);
-    std::printf("  fracture resolution:        h / l_ch = %.3g (h = %.3g m, l_ch = E GfI / "
-                "ft^2 = %.3g m; limit %g)\n",
-                r.ratio, r.h, r.l_ch, kResolutionLimit);
+    std::printf(
+        "  fracture resolution:        h / l_ch = %.3g (h = %.3g m, l_ch = E GfI / "
+        "ft^2 = %.3g m; limit %g)\n",
+        r.ratio, r.h, r.l_ch, kResolutionLimit);
     if (r.ratio > kResolutionLimit)
       std::fprintf(stderr,
                    "warning: the fracture zone's elements are %.2g times the rock's l_ch "
@@ -233,7 +237,7 @@ int command_check(const Scene& scene, const CommandLine& /*cli*/) {
     const double local = stage_damping(scene).local;
     const double contact = scene.engine.contact ? std::sqrt(0.5) : 1.0;
     const double target = scene.engine.mass_scaling_dt > 0 ? scene.engine.mass_scaling_dt
-                                                            : 0.3 * scene.mesh.size.size_far / cp;
+                                                           : 0.3 * scene.mesh.size.size_far / cp;
     const double scaled = scene.engine.dt_safety * target * contact / std::sqrt(1 + local);
     std::printf("  time step, mass-scaled:     %.3g s (quasi-static pseudo-time)\n",
                 std::max(dt, scaled));

@@ -11,10 +11,10 @@
 #include "commands.hpp"
 #include "output_dir.hpp"
 #include "phase_timer.hpp"
-#include "rockfdem/error.hpp"
 #include "rockfdem/coupling/atomic_file.hpp"
 #include "rockfdem/coupling/insitu_grid.hpp"
 #include "rockfdem/coupling/vtk_writer.hpp"
+#include "rockfdem/error.hpp"
 #include "rockfdem/mesh/build.hpp"
 #include "rockfdem/mesh/msh_io.hpp"
 #include "stage_inputs.hpp"
@@ -52,7 +52,8 @@ void write_fields(const mesh::Mesh& m, const std::vector<insitu::InsituField>& f
 int command_insitu(const Scene& scene, const CommandLine& cli) {
   PhaseTimer timer;
   if (scene.mesh.kind != mesh::ModelKind::kTunnel && scene.mesh.kind != mesh::ModelKind::kMshFile)
-    throw InputError(scene.source + ": key 'model.kind': `rockfdem insitu` needs a tunnel or a "
+    throw InputError(scene.source +
+                     ": key 'model.kind': `rockfdem insitu` needs a tunnel or a "
                      ".msh model; specimens have no in-situ stage");
   const insitu::InsituSpec spec = insitu_spec(scene);
   prepare_output_dir(cli.output_dir, scene, cli.force);
@@ -95,12 +96,12 @@ int command_insitu(const Scene& scene, const CommandLine& cli) {
     coupling::atomic_write_text(output_path(cli.output_dir, "insitu_vs_analytic.csv"),
                                 kirsch_csv(c));
     if (!cli.quiet)
-      std::cout << "Kirsch: relative L2 stress error over a <= r <= 5a: " << c.stress_rel_l2
-                << " (" << c.n_triangles << " triangles); wall u_r error " << c.wall_ur_rel_l2
-                << '\n';
+      std::cout << "Kirsch: relative L2 stress error over a <= r <= 5a: " << c.stress_rel_l2 << " ("
+                << c.n_triangles << " triangles); wall u_r error " << c.wall_ur_rel_l2 << '\n';
   } else {
-    summary.skipped("Kirsch comparison: needs a circular opening without lining, uniform stress "
-                    "and a last alpha of 0");
+    summary.skipped(
+        "Kirsch comparison: needs a circular opening without lining, uniform stress "
+        "and a last alpha of 0");
   }
   summary.skipped("fdem: `rockfdem insitu` runs the implicit stage only");
   j["status"] = "completed";

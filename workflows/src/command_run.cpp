@@ -15,13 +15,13 @@
 #include "output_dir.hpp"
 #include "phase_timer.hpp"
 #include "progress.hpp"
-#include "run_plots.hpp"
 #include "rockfdem/coupling/fdem_model.hpp"
 #include "rockfdem/coupling/vtk_writer.hpp"
 #include "rockfdem/error.hpp"
 #include "rockfdem/fdem/engine.hpp"
 #include "rockfdem/mesh/build.hpp"
 #include "rockfdem/mesh/msh_io.hpp"
+#include "run_plots.hpp"
 #include "stage_inputs.hpp"
 #include "summary.hpp"
 
@@ -73,9 +73,8 @@ int run_specimen(const Scene& scene, const CommandLine& cli) {
   summary.record_mesh(m, report);
   timer.stamp("mesh");
 
-  fdem::ModelInput in = coupling::model_input(m, engine_materials(scene),
-                                              scene.plane_stress ? fdem::Plane::kStress
-                                                                 : fdem::Plane::kStrain);
+  fdem::ModelInput in = coupling::model_input(
+      m, engine_materials(scene), scene.plane_stress ? fdem::Plane::kStress : fdem::Plane::kStrain);
   in.boundary_conditions = platens(scene);
   in.dt = scene.engine.dt;  // checked by make_engine
   in.dt_safety = scene.engine.dt_safety;
@@ -95,9 +94,10 @@ int run_specimen(const Scene& scene, const CommandLine& cli) {
   const bool disc = scene.mesh.kind == mesh::ModelKind::kBrazilian;
   const SpecimenSize size = specimen_size(scene);
   const int upper_tag = disc ? mesh::kLoadTop : mesh::kTop;
-  std::vector<std::string> columns{"step", "time", "axial_strain",
-                                   disc ? "tensile_stress" : "axial_stress", "platen_force",
-                                   "kinetic_energy", "broken_I", "broken_II", "broken_mixed"};
+  std::vector<std::string> columns{
+      "step",         "time",           "axial_strain", disc ? "tensile_stress" : "axial_stress",
+      "platen_force", "kinetic_energy", "broken_I",     "broken_II",
+      "broken_mixed"};
   for (const std::string& c : energy_columns()) columns.push_back(c);
   History history(output_path(cli.output_dir, "history.csv"), columns);
   coupling::PvdCollection pvd(output_path(cli.output_dir, "fdem.pvd"));
@@ -113,8 +113,14 @@ int run_specimen(const Scene& scene, const CommandLine& cli) {
     const double strain = 2 * scene.engine.platen_velocity * engine.time() / size.length;
     const fdem::BrokenCounts b = engine.broken_counts();
     peak = std::max(peak, stress);
-    std::vector<double> row{double(engine.step_count()), engine.time(), strain, stress, force,
-                            engine.kinetic_energy(), double(b.mode_I), double(b.mode_II),
+    std::vector<double> row{double(engine.step_count()),
+                            engine.time(),
+                            strain,
+                            stress,
+                            force,
+                            engine.kinetic_energy(),
+                            double(b.mode_I),
+                            double(b.mode_II),
                             double(b.mixed)};
     const fdem::EnergyBalance energy = engine.energy_balance();
     for (double v : energy_row(energy)) row.push_back(v);
@@ -132,8 +138,8 @@ int run_specimen(const Scene& scene, const CommandLine& cli) {
   };
   record();
   while (engine.step_count() < scene.engine.steps) {
-    const long chunk = std::min<long>(scene.output.every_steps,
-                                      scene.engine.steps - engine.step_count());
+    const long chunk =
+        std::min<long>(scene.output.every_steps, scene.engine.steps - engine.step_count());
     timer.stamp("output");
     try {
       for (long i = 0; i < chunk && !interrupt_requested(); ++i) engine.step();
@@ -180,7 +186,8 @@ int command_run(const Scene& scene, const CommandLine& cli) {
   install_interrupt_handlers();
   if (scene.mesh.kind == mesh::ModelKind::kUcs || scene.mesh.kind == mesh::ModelKind::kBrazilian) {
     if (!cli.restart.empty() || cli.checkpoint_every > 0 || scene.output.checkpoint_every > 0)
-      throw InputError(scene.source + ": checkpoints (--restart, --checkpoint-every, "
+      throw InputError(scene.source +
+                       ": checkpoints (--restart, --checkpoint-every, "
                        "output.checkpoint_every) apply to tunnel runs; a specimen run is "
                        "re-run from the start");
     return run_specimen(scene, cli);

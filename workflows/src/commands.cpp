@@ -1,10 +1,11 @@
 // Dispatch: validate the whole scene first, whichever subcommand runs, then
 // hand it to the subcommand.
+#include "commands.hpp"
+
 #include <omp.h>
 
 #include <iostream>
 
-#include "commands.hpp"
 #include "rockfdem/fdem/engine.hpp"
 #include "rockfdem/workflows/cli.hpp"
 #include "rockfdem/workflows/scene_schema.hpp"

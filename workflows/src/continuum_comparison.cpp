@@ -45,8 +45,8 @@ nlohmann::json compare_with_continuum(const Scene& scene, const mesh::Mesh& m,
     const auto s = e.triangle_stress(t);
     const insitu::Stress& f = open_hole.stress[t];
     vs_fem.add(area, s, {f.sxx, f.syy, f.sxy});
-    csv << t << ',' << x << ',' << y << ',' << s[0] << ',' << s[1] << ',' << s[2] << ','
-        << f.sxx << ',' << f.syy << ',' << f.sxy;
+    csv << t << ',' << x << ',' << y << ',' << s[0] << ',' << s[1] << ',' << s[2] << ',' << f.sxx
+        << ',' << f.syy << ',' << f.sxy;
     if (kirsch) {
       const insitu::Stress ks = insitu::kirsch_stress(k, x, y);
       vs_kirsch.add(area, s, {ks.sxx, ks.syy, ks.sxy});

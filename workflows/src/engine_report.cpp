@@ -13,20 +13,21 @@ nlohmann::json state_figures(const fdem::Engine& e, const fdem::EnergyBalance& e
           {"dt", e.dt()},
           {"simulated_time", e.time()},
           {"broken", {{"mode_I", b.mode_I}, {"mode_II", b.mode_II}, {"mixed", b.mixed}}},
-          {"energy", {{"external_work", en.external_work},
-                      {"kinetic", en.kinetic},
-                      {"strain", en.strain},
-                      {"crack_elastic", en.crack_elastic},
-                      {"contact_elastic", en.contact_elastic},
-                      {"initial_stored", en.initial_stored},
-                      {"damping", en.damping},
-                      {"fracture", en.fracture},
-                      {"friction", en.friction},
-                      {"absorbing", en.absorbing},
-                      {"softening", en.softening},
-                      {"removed_by_stages", en.removed},
-                      {"residual", en.residual()},
-                      {"relative_imbalance", en.imbalance()}}},
+          {"energy",
+           {{"external_work", en.external_work},
+            {"kinetic", en.kinetic},
+            {"strain", en.strain},
+            {"crack_elastic", en.crack_elastic},
+            {"contact_elastic", en.contact_elastic},
+            {"initial_stored", en.initial_stored},
+            {"damping", en.damping},
+            {"fracture", en.fracture},
+            {"friction", en.friction},
+            {"absorbing", en.absorbing},
+            {"softening", en.softening},
+            {"removed_by_stages", en.removed},
+            {"residual", en.residual()},
+            {"relative_imbalance", en.imbalance()}}},
           {"state_hash", e.state_hash()}};
 }
 
@@ -42,21 +43,24 @@ void report_engine(const fdem::Engine& e, const PhaseTimer& timer, RunSummary& s
   j["throughput"]["triangle_steps_per_second"] =
       fdem > 0 ? double(e.n_triangles()) * double(e.step_count()) / fdem : 0.0;
   const fdem::PhaseTimes p = e.phase_times();
-  j["fdem_modules"] = {{"triangles", p.triangles}, {"cracks", p.cracks}, {"nodes", p.nodes},
-                       {"contact", p.contact}};
+  j["fdem_modules"] = {
+      {"triangles", p.triangles}, {"cracks", p.cracks}, {"nodes", p.nodes}, {"contact", p.contact}};
   const fdem::ContactCounters c = e.contact_counters();
-  j["contact"] = {{"enabled", c.enabled},          {"detections", c.detections},
-                  {"steps_with_pairs", c.steps_with_pairs}, {"steps_skipped", c.steps_skipped},
-                  {"last_candidates", c.candidates}, {"last_pairs", c.pairs},
-                  {"last_touching", c.touching}, {"kernel", c.kernel}};
+  j["contact"] = {{"enabled", c.enabled},
+                  {"detections", c.detections},
+                  {"steps_with_pairs", c.steps_with_pairs},
+                  {"steps_skipped", c.steps_skipped},
+                  {"last_candidates", c.candidates},
+                  {"last_pairs", c.pairs},
+                  {"last_touching", c.touching},
+                  {"kernel", c.kernel}};
   if (!c.enabled)
     summary.skipped("contact: disabled by the scene (contact.enabled = false)");
   else if (c.steps_with_pairs == 0)
-    summary.skipped("contact: nothing could touch in " + std::to_string(e.step_count()) +
-                    " steps");
+    summary.skipped("contact: nothing could touch in " + std::to_string(e.step_count()) + " steps");
   else if (c.steps_skipped > 0)
-    summary.skipped("contact: nothing could touch in " + std::to_string(c.steps_skipped) +
-                    " of " + std::to_string(e.step_count()) + " steps");
+    summary.skipped("contact: nothing could touch in " + std::to_string(c.steps_skipped) + " of " +
+                    std::to_string(e.step_count()) + " steps");
   if (e.n_cracks() == 0) summary.skipped("crack elements: fracture is allowed nowhere");
   const fdem::MassScalingReport ms = e.mass_scaling_report();
   j["mass_scaling"] = {{"enabled", ms.enabled}};
@@ -65,8 +69,9 @@ void report_engine(const fdem::Engine& e, const PhaseTimer& timer, RunSummary& s
                               {"max_factor", ms.max_factor},
                               {"mass_ratio", ms.mass_ratio},
                               {"scaled_triangles", ms.scaled_triangles},
-                              {"note", "quasi-static: densities scaled, statics unchanged; "
-                                       "simulated_time is pseudo-time"}});
+                              {"note",
+                               "quasi-static: densities scaled, statics unchanged; "
+                               "simulated_time is pseudo-time"}});
   else
     summary.skipped("mass scaling: off (engine.mass_scaling); dynamics at true masses");
   j["memory_bytes"] = e.memory_bytes();
@@ -74,13 +79,14 @@ void report_engine(const fdem::Engine& e, const PhaseTimer& timer, RunSummary& s
 }
 
 std::vector<std::string> energy_columns() {
-  return {"external_work", "stored_change", "dissipated", "removed_by_stages", "energy_residual",
-          "energy_imbalance"};
+  return {"external_work",     "stored_change",   "dissipated",
+          "removed_by_stages", "energy_residual", "energy_imbalance"};
 }
 
 std::vector<double> energy_row(const fdem::EnergyBalance& b) {
-  return {b.external_work, b.stored() - b.initial_stored, b.dissipated(),
-          b.softening + b.removed, b.residual(), b.imbalance()};
+  return {b.external_work, b.stored() - b.initial_stored,
+          b.dissipated(),  b.softening + b.removed,
+          b.residual(),    b.imbalance()};
 }
 
 double energy_floor(const Scene& scene, const mesh::Mesh& m) {
@@ -107,8 +113,8 @@ void warn_if_unbalanced(const fdem::Engine& e, double floor, bool quiet, RunSumm
 }
 
 void check_energy(const fdem::EnergyBalance& b, long step, double floor) {
-  const bool sound = !(std::abs(b.imbalance()) > kEnergyImbalanceLimit) ||
-                     std::abs(b.residual()) <= floor;
+  const bool sound =
+      !(std::abs(b.imbalance()) > kEnergyImbalanceLimit) || std::abs(b.residual()) <= floor;
   if (sound && std::isfinite(b.imbalance())) return;
   char msg[600];
   std::snprintf(msg, sizeof msg,

@@ -7,9 +7,9 @@
 #include <vector>
 
 #include "phase_timer.hpp"
+#include "rockfdem/fdem/engine.hpp"
 #include "rockfdem/mesh/mesh.hpp"
 #include "rockfdem/workflows/scene.hpp"
-#include "rockfdem/fdem/engine.hpp"
 #include "summary.hpp"
 
 namespace rockfdem::workflows {

@@ -34,8 +34,7 @@ void History::restore(const std::vector<std::vector<double>>& rows) {
   for (const auto& r : rows)
     if (r.size() != columns_.size())
       throw InputError("corrupt run state: a history row has " + std::to_string(r.size()) +
-                       " values; history.csv has " + std::to_string(columns_.size()) +
-                       " columns");
+                       " values; history.csv has " + std::to_string(columns_.size()) + " columns");
   text_.erase(text_.find('\n') + 1);  // keep the header
   for (const auto& r : rows) append_text(r);
   rows_ = rows;

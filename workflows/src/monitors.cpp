@@ -14,7 +14,8 @@ namespace {
 mesh::OpeningBoundary require_opening(const mesh::Mesh& m, const std::string& source) {
   std::optional<mesh::OpeningBoundary> b = mesh::find_opening(m);
   if (!b)
-    throw InputError(source + ": no excavation boundary was found (no rock triangle edge faces "
+    throw InputError(source +
+                     ": no excavation boundary was found (no rock triangle edge faces "
                      "a core or lining triangle or an inner hole), so there is nowhere to put "
                      "the tunnel monitors; give the rock a hole or mark the opening's triangles "
                      "with a core zone group (see msh.zones)");

@@ -20,11 +20,23 @@ constexpr const char* kOwnerFile = ".rockfdem-scene";
 
 // Every name a command writes into OUTDIR (workflow.md, "Monitors and
 // results"); numbered files are matched by prefix, digits and suffix.
-const char* const kFixedNames[] = {
-    "summary.json",      "history.csv",        "mesh.msh",           "mesh.vtu",
-    "insitu.vtu",        "insitu.pvd",         "insitu_vs_analytic.csv", "fdem.pvd",
-    "fdem_vs_continuum.csv", "grouted_cracks.csv", "convergence.png", "chord_convergence.png", "broken.png",
-    "ground_reaction.png", "final_mesh.png", "broken_zone.png", "stress_strain.png"};
+const char* const kFixedNames[] = {"summary.json",
+                                   "history.csv",
+                                   "mesh.msh",
+                                   "mesh.vtu",
+                                   "insitu.vtu",
+                                   "insitu.pvd",
+                                   "insitu_vs_analytic.csv",
+                                   "fdem.pvd",
+                                   "fdem_vs_continuum.csv",
+                                   "grouted_cracks.csv",
+                                   "convergence.png",
+                                   "chord_convergence.png",
+                                   "broken.png",
+                                   "ground_reaction.png",
+                                   "final_mesh.png",
+                                   "broken_zone.png",
+                                   "stress_strain.png"};
 
 struct Numbered {
   const char *prefix, *suffix;
@@ -32,9 +44,8 @@ struct Numbered {
 const Numbered kNumberedNames[] = {{"fdem_", ".vtu"}, {"insitu_", ".vtu"}, {"bolt_", ".csv"}};
 
 bool all_digits(const std::string& s) {
-  return !s.empty() && std::all_of(s.begin(), s.end(), [](unsigned char c) {
-    return std::isdigit(c) != 0;
-  });
+  return !s.empty() &&
+         std::all_of(s.begin(), s.end(), [](unsigned char c) { return std::isdigit(c) != 0; });
 }
 
 bool numbered(const std::string& name, const std::string& prefix, const std::string& suffix) {
@@ -58,9 +69,8 @@ bool is_temporary_output(const std::string& name) {
   const auto dot = name.find_last_of('.');
   if (name[0] != '.' || tmp == std::string::npos || dot <= tmp) return false;
   const std::string marks = name.substr(tmp + 4, dot - tmp - 4);
-  if (!std::all_of(marks.begin(), marks.end(), [](unsigned char c) {
-        return c == '-' || std::isdigit(c) != 0;
-      }))
+  if (!std::all_of(marks.begin(), marks.end(),
+                   [](unsigned char c) { return c == '-' || std::isdigit(c) != 0; }))
     return false;
   const std::string stem = name.substr(1, tmp - 1);
   return is_final_output(stem) || is_final_output(stem + name.substr(dot));

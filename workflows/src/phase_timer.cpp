@@ -18,9 +18,7 @@ double PhaseTimer::seconds(const std::string& phase) const {
   return it == seconds_.end() ? 0.0 : it->second;
 }
 
-double PhaseTimer::total() const {
-  return std::chrono::duration<double>(last_ - start_).count();
-}
+double PhaseTimer::total() const { return std::chrono::duration<double>(last_ - start_).count(); }
 
 std::string PhaseTimer::table() const {
   const char* rule = "+----------------------+------------+------------+\n";

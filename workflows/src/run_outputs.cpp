@@ -9,12 +9,12 @@
 #include "broken_zone.hpp"
 #include "engine_report.hpp"
 #include "output_dir.hpp"
-#include "run_plots.hpp"
-#include "stage_inputs.hpp"
 #include "rockfdem/coupling/atomic_file.hpp"
 #include "rockfdem/coupling/fdem_model.hpp"
-#include "rockfdem/fdem/bolt_output.hpp"
 #include "rockfdem/coupling/insitu_grid.hpp"
+#include "rockfdem/fdem/bolt_output.hpp"
+#include "run_plots.hpp"
+#include "stage_inputs.hpp"
 
 namespace rockfdem::workflows {
 namespace {
@@ -95,12 +95,12 @@ std::pair<std::string, double> RunOutputs::largest_key_point(
 }
 
 RunOutputs::RunOutputs(const Scene& scene, const CommandLine& cli, RunSummary& summary)
-    : scene_(scene), cli_(cli), summary_(summary),
-      pvd_(output_path(cli.output_dir, "fdem.pvd")) {
+    : scene_(scene), cli_(cli), summary_(summary), pvd_(output_path(cli.output_dir, "fdem.pvd")) {
   summary_.note_turned_off(scene.output, "fdem.pvd, fdem_NNNN.vtu, insitu.vtu", true);
 }
 
-void RunOutputs::record_insitu(const mesh::Mesh& m, const std::vector<insitu::InsituField>& fields) {
+void RunOutputs::record_insitu(const mesh::Mesh& m,
+                               const std::vector<insitu::InsituField>& fields) {
   fields_ = fields;
   auto& j = summary_.json()["insitu"];
   j["alpha"] = nlohmann::json::array();
@@ -130,13 +130,14 @@ void RunOutputs::begin_history(const std::vector<Monitor>& monitors, const mesh:
                            boundary_vertices_.end());
   for (const Monitor& mon : monitors) monitor_names_.push_back(mon.name);
   monitors_ = monitors;
-  std::vector<std::string> cols{"stage", "step", "time", "kinetic_energy", "unbalanced_ratio",
-                                "broken_I", "broken_II", "broken_mixed"};
+  std::vector<std::string> cols{
+      "stage",    "step",      "time",        "kinetic_energy", "unbalanced_ratio",
+      "broken_I", "broken_II", "broken_mixed"};
   for (const Monitor& mon : monitors)
     for (const char* c : {"_ux_mm", "_uy_mm", "_u_mm", "_radial_mm"}) cols.push_back(mon.name + c);
-  cols.insert(cols.end(), {"vault_settlement_mm", "wall_chord_convergence_mm",
-                           "shoulder_chord_convergence_mm", "outer_rotation_deg",
-                           "support_pressure_ratio"});
+  cols.insert(cols.end(),
+              {"vault_settlement_mm", "wall_chord_convergence_mm", "shoulder_chord_convergence_mm",
+               "outer_rotation_deg", "support_pressure_ratio"});
   for (const std::string& c : energy_columns()) cols.push_back(c);
   history_ = std::make_unique<History>(output_path(cli_.output_dir, "history.csv"), cols);
 }
@@ -146,9 +147,13 @@ void RunOutputs::record_step(const fdem::Engine& e, const mesh::Mesh& m,
                              const std::string& stage, double support_ratio) {
   if (stage_names_.empty() || stage_names_.back() != stage) stage_names_.push_back(stage);
   const fdem::BrokenCounts b = e.broken_counts();
-  std::vector<double> row{double(stage_names_.size() - 1), double(e.step_count()), e.time(),
+  std::vector<double> row{double(stage_names_.size() - 1),
+                          double(e.step_count()),
+                          e.time(),
                           e.kinetic_energy(),
-                          e.unbalanced_force_ratio(), double(b.mode_I), double(b.mode_II),
+                          e.unbalanced_force_ratio(),
+                          double(b.mode_I),
+                          double(b.mode_II),
                           double(b.mixed)};
   for (const Monitor& mon : monitors)
     for (double v : key_point(e, mon)) row.push_back(v);
@@ -181,8 +186,12 @@ nlohmann::json RunOutputs::monitors_json(const fdem::Engine& e,
   nlohmann::json j = nlohmann::json::object();
   for (const Monitor& mon : monitors) {
     const auto k = key_point(e, mon);
-    j[mon.name] = {{"ux_mm", k[0]}, {"uy_mm", k[1]}, {"u_mm", k[2]}, {"radial_mm", k[3]},
-                   {"x", mon.node_x}, {"y", mon.node_y},
+    j[mon.name] = {{"ux_mm", k[0]},
+                   {"uy_mm", k[1]},
+                   {"u_mm", k[2]},
+                   {"radial_mm", k[3]},
+                   {"x", mon.node_x},
+                   {"y", mon.node_y},
                    {"inward", {mon.inward_x, mon.inward_y}}};
   }
   // Per point (as field convergence points are read) and, apart, the
@@ -200,8 +209,8 @@ void RunOutputs::report_dt() {
   // constant within a stage: the limit changes only with a stage's changes).
   double lo = j["dt"].get<double>(), hi = lo;
   if (handoff_dt_ > 0) {
-    j["fdem"]["handoff_step"] = {{"steps", 1}, {"dt", handoff_dt_},
-                                 {"simulated_time", handoff_dt_}};
+    j["fdem"]["handoff_step"] = {
+        {"steps", 1}, {"dt", handoff_dt_}, {"simulated_time", handoff_dt_}};
     lo = std::min(lo, handoff_dt_);
     hi = std::max(hi, handoff_dt_);
   }
@@ -231,16 +240,19 @@ coupling::VtkGrid RunOutputs::frame_grid(const fdem::Engine& e, const mesh::Mesh
     for (const fdem::BoltSample& p : fdem::bolt_axial_profile(e, *bolts_, int(b)))
       stress[p.triangle] = p.steel_stress;
   }
-  g.cell_arrays.push_back(
-      coupling::triangle_cell_array(g, coupling::scalar_array("bolt_axial_stress", std::move(stress))));
+  g.cell_arrays.push_back(coupling::triangle_cell_array(
+      g, coupling::scalar_array("bolt_axial_stress", std::move(stress))));
   return g;
 }
 
 nlohmann::json RunOutputs::state() const {
   nlohmann::json frames = nlohmann::json::array();
   for (const coupling::PvdEntry& f : pvd_.entries()) frames.push_back({f.time, f.file});
-  return {{"history", history_->rows()}, {"stages", stage_names_}, {"frames", frames},
-          {"handoff_dt", handoff_dt_}, {"max_rotation_deg", max_rotation_deg_}};
+  return {{"history", history_->rows()},
+          {"stages", stage_names_},
+          {"frames", frames},
+          {"handoff_dt", handoff_dt_},
+          {"max_rotation_deg", max_rotation_deg_}};
 }
 
 void RunOutputs::restore(const nlohmann::json& s, const std::string& from_dir) {
@@ -349,8 +361,8 @@ void RunOutputs::finish(const fdem::Engine& e, const mesh::Mesh& m,
   const int vault_vertex = vertex_of(e, find(monitors, "vault"));
   nlohmann::json grc = nlohmann::json::array();
   for (const insitu::InsituField& f : fields_)
-    grc.push_back({{"support_pressure_ratio", f.alpha},
-                   {"vault_settlement_mm", -mm(f.uy[vault_vertex])}});
+    grc.push_back(
+        {{"support_pressure_ratio", f.alpha}, {"vault_settlement_mm", -mm(f.uy[vault_vertex])}});
   grc.push_back({{"support_pressure_ratio", 0.0},
                  {"vault_settlement_mm", j["monitors"]["vault_settlement_mm"]}});
   j["ground_reaction_curve"] = grc;
@@ -365,16 +377,16 @@ void RunOutputs::finish(const fdem::Engine& e, const mesh::Mesh& m,
   if (!cli_.quiet)
     std::cout << "vault settlement " << j["monitors"]["vault_settlement_mm"].get<double>()
               << " mm, wall chord convergence "
-              << j["monitors"]["wall_chord_convergence_mm"].get<double>()
-              << " mm, broken cracks " << b.total() << ", state hash " << e.state_hash() << '\n'
+              << j["monitors"]["wall_chord_convergence_mm"].get<double>() << " mm, broken cracks "
+              << b.total() << ", state hash " << e.state_hash() << '\n'
               << timer.table();
 }
 
 void RunOutputs::damage_outputs(const fdem::Engine& e, const mesh::Mesh& m) {
   auto& j = summary_.json();
   const Resolution r = fracture_resolution(scene_, &m);
-  j["resolution"] = {{"h_m", r.h}, {"l_ch_m", r.l_ch}, {"h_over_l_ch", r.ratio},
-                     {"limit", kResolutionLimit}};
+  j["resolution"] = {
+      {"h_m", r.h}, {"l_ch_m", r.l_ch}, {"h_over_l_ch", r.ratio}, {"limit", kResolutionLimit}};
   const auto warn = [&](const std::string& msg) {
     j["warnings"].push_back(msg);
     if (!cli_.quiet) std::cerr << "warning: " << msg << '\n';
@@ -395,11 +407,12 @@ void RunOutputs::damage_outputs(const fdem::Engine& e, const mesh::Mesh& m) {
       for (int t : owned) bolt_triangle[std::size_t(t)] = 1;
   }
   const BrokenZone z = broken_zone(e, m, r.h, bolt_triangle);
-  j["broken_zone"] = {{"broken_rock_cracks", z.broken}, {"depth_m", z.depth},
-                      {"fracture_zone_m", z.zone_depth},
-                      {"clearance_m", z.clearance >= 0 ? nlohmann::json(z.clearance)
-                                                       : nlohmann::json()},
-                      {"capped", z.at_edge}};
+  j["broken_zone"] = {
+      {"broken_rock_cracks", z.broken},
+      {"depth_m", z.depth},
+      {"fracture_zone_m", z.zone_depth},
+      {"clearance_m", z.clearance >= 0 ? nlohmann::json(z.clearance) : nlohmann::json()},
+      {"capped", z.at_edge}};
   if (z.at_edge) {
     std::snprintf(msg, sizeof msg,
                   "broken crack elements reach %.2g m from the fracture zone's outer edge "
@@ -419,8 +432,8 @@ void RunOutputs::plots(const fdem::Engine& e, const mesh::Mesh& m) {
   std::vector<coupling::PlotSeries> points;
   for (const std::string& name : monitor_names_)
     points.push_back({name, t, h.column(name + "_radial_mm")});
-  plots.xy("convergence.png", "Key points: displacement towards the opening",
-           time_axis_label(e), "radial displacement [mm]", points);
+  plots.xy("convergence.png", "Key points: displacement towards the opening", time_axis_label(e),
+           "radial displacement [mm]", points);
   plots.xy("chord_convergence.png", "Chord convergence", time_axis_label(e), "closure [mm]",
            {{"walls (chord)", t, h.column("wall_chord_convergence_mm")},
             {"shoulders (chord)", t, h.column("shoulder_chord_convergence_mm")}});

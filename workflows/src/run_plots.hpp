@@ -34,8 +34,8 @@ class PlotWriter {
                   int principal, const std::string& title);
   /// broken_zone.png: the same picture in the window `view` (around the
   /// opening and its fracture zone), where the crack pattern can be seen.
-  void broken_zone(const fdem::Engine& e, const mesh::Mesh& m,
-                   const insitu::InsituField* implicit, const coupling::MeshView& view);
+  void broken_zone(const fdem::Engine& e, const mesh::Mesh& m, const insitu::InsituField* implicit,
+                   const coupling::MeshView& view);
 
  private:
   void note(bool rendered, const std::string& file, const std::string& why);

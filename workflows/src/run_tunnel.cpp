@@ -40,8 +40,8 @@
 #include "rockfdem/mesh/msh_io.hpp"
 #include "run_outputs.hpp"
 #include "scene_reader.hpp"
-#include "stage_runner.hpp"
 #include "stage_inputs.hpp"
+#include "stage_runner.hpp"
 #include "summary.hpp"
 
 namespace rockfdem::workflows {
@@ -58,9 +58,10 @@ std::array<double, 3> insitu_tensor(const InsituSettings& s) {
 // rollers, the normal velocity held at zero too.
 std::vector<fdem::BoundaryCondition> box_conditions(const InsituSettings& s) {
   const auto sig = insitu_tensor(s);
-  const std::pair<int, std::array<double, 2>> sides[] = {
-      {mesh::kLeft, {-1, 0}}, {mesh::kRight, {1, 0}}, {mesh::kBottom, {0, -1}},
-      {mesh::kTop, {0, 1}}};
+  const std::pair<int, std::array<double, 2>> sides[] = {{mesh::kLeft, {-1, 0}},
+                                                         {mesh::kRight, {1, 0}},
+                                                         {mesh::kBottom, {0, -1}},
+                                                         {mesh::kTop, {0, 1}}};
   std::vector<fdem::BoundaryCondition> bcs;
   for (const auto& [tag, n] : sides) {
     fdem::BoundaryCondition bc;
@@ -165,7 +166,8 @@ fdem::BoltPlan planned_bolts(const Scene& scene, fdem::ModelInput& in) {
     return fdem::plan_bolts(in, bolt_specs(scene));
   } catch (const InputError& e) {
     throw InputError(scene.source + ": the bolt design cannot be modelled on this mesh (" +
-                     e.what() + "); adjust [bolts] / [cables] (young, diameter, row_spacing, "
+                     e.what() +
+                     "); adjust [bolts] / [cables] (young, diameter, row_spacing, "
                      "strengths), materials.rock.young or mesh.size_near");
   }
 }
@@ -272,17 +274,19 @@ int run_tunnel(const Scene& scene, const CommandLine& cli) {
     } catch (const InputError& e) {
       throw InputError(cli.restart + ": " + e.what());
     }
-    summary.json()["restarted_from"] = {{"checkpoint", cli.restart},
-                                        {"step", engine.step_count()}};
+    summary.json()["restarted_from"] = {{"checkpoint", cli.restart}, {"step", engine.step_count()}};
   } else {
-    reporting_failure(out, engine, timer,
-                      [&] { out.record_step(engine, m, monitors, timer, "handoff", handoff.alpha); });
+    reporting_failure(out, engine, timer, [&] {
+      out.record_step(engine, m, monitors, timer, "handoff", handoff.alpha);
+    });
   }
   stages.set_checkpoint(
       cli.checkpoint_every >= 0 ? cli.checkpoint_every : scene.output.checkpoint_every, [&] {
         Checkpoint c;
-        c.run = {{"stages", stages.state()}, {"outputs", out.state()},
-                 {"bolts", bolt_state(bolts)}, {"start_ratio", start_ratio}};
+        c.run = {{"stages", stages.state()},
+                 {"outputs", out.state()},
+                 {"bolts", bolt_state(bolts)},
+                 {"start_ratio", start_ratio}};
         std::ostringstream bytes;
         engine.save_state(bytes);
         c.engine_state = bytes.str();
@@ -305,10 +309,10 @@ int run_tunnel(const Scene& scene, const CommandLine& cli) {
     // An explicit dt above the limit a later stage brings (lining, bolts,
     // grout stiffen the model): found only there, after outputs exist.
     const bool dt = scene.engine.dt > 0 && engine.critical_dt() < scene.engine.dt;
-    const std::string why = dt ? scene.source + ": key 'engine.dt' = " +
-                                     detail::number_text(scene.engine.dt) + " s: " + e.what() +
-                                     " (engine.dt = 0 follows the limit through every stage)"
-                               : scene.source + ": " + e.what();
+    const std::string why =
+        dt ? scene.source + ": key 'engine.dt' = " + detail::number_text(scene.engine.dt) +
+                 " s: " + e.what() + " (engine.dt = 0 follows the limit through every stage)"
+           : scene.source + ": " + e.what();
     summary.json()["fdem"] = {{"stages", stages.report()}};
     out.report_failure(engine, timer, why);
     throw InputError(why);

@@ -25,9 +25,7 @@ class Reader {
  public:
   explicit Reader(const RawScene& raw) : raw_(raw) {}
 
-  const toml::node* node(const std::string& path) const {
-    return raw_.root.at_path(path).node();
-  }
+  const toml::node* node(const std::string& path) const { return raw_.root.at_path(path).node(); }
   bool has(const std::string& path) const { return node(path) != nullptr; }
 
   double number(const std::string& path) const {
@@ -134,10 +132,11 @@ void read_tunnel(const Reader& r, mesh::MeshSpec& m) {
       if (t.rise > w / 2 || t.rise >= h) {
         const char* other = t.rise > w / 2 ? "tunnel.span" : "tunnel.height";
         if (r.blame_second("tunnel.rise", other))
-          r.fail(other, std::string("leaves the arch's rise (tunnel.rise = ") + num(t.rise) +
-                            " m) above " + (t.rise > w / 2 ? "span/2" : "the height") +
-                            "; allowed: " + (t.rise > w / 2 ? "at least " + num(2 * t.rise)
-                                                            : "above " + num(t.rise)) + " m");
+          r.fail(other,
+                 std::string("leaves the arch's rise (tunnel.rise = ") + num(t.rise) +
+                     " m) above " + (t.rise > w / 2 ? "span/2" : "the height") + "; allowed: " +
+                     (t.rise > w / 2 ? "at least " + num(2 * t.rise) : "above " + num(t.rise)) +
+                     " m");
         r.fail("tunnel.rise", "must be at most span/2 = " + num(w / 2) +
                                   " m and below the height " + num(h) + " m");
       }
@@ -159,12 +158,12 @@ void read_tunnel(const Reader& r, mesh::MeshSpec& m) {
     r.fail(outside_key(r, "domain.height", circular ? "tunnel.radius" : "tunnel.height",
                        "domain.center_y"),
            "the tunnel (height " + num(h) + " m plus fracture zone " + num(margin) +
-               " m each side) must lie inside the domain (height " + num(m.domain.height) +
-               " m)");
+               " m each side) must lie inside the domain (height " + num(m.domain.height) + " m)");
   if (t.lining_thickness > 0 && 2 * t.lining_thickness >= std::min(w, h) * 0.9)
-    r.fail("tunnel.lining_thickness", "the lining must leave a core: thickness below 45% of "
-                                      "the opening's smaller dimension " +
-                                          num(std::min(w, h)) + " m");
+    r.fail("tunnel.lining_thickness",
+           "the lining must leave a core: thickness below 45% of "
+           "the opening's smaller dimension " +
+               num(std::min(w, h)) + " m");
 }
 
 // The geometry's smallest feature, which two elements must span, and what it is.
@@ -178,17 +177,19 @@ Feature smallest_feature(const mesh::MeshSpec& m) {
   switch (m.kind) {
     case mesh::ModelKind::kTunnel: {
       const bool circular = t.shape == mesh::TunnelShape::kCircular;
-      const Feature opening = circular ? Feature{2 * t.radius, "2 x tunnel.radius"}
-                                       : Feature{std::min(t.span, t.height),
-                                                 "the opening's smaller side"};
+      const Feature opening =
+          circular ? Feature{2 * t.radius, "2 x tunnel.radius"}
+                   : Feature{std::min(t.span, t.height), "the opening's smaller side"};
       if (t.lining_thickness > 0 && 4 * t.lining_thickness < opening.size)
         return {4 * t.lining_thickness, "4 x tunnel.lining_thickness"};
       return opening;
     }
     case mesh::ModelKind::kUcs:
       return {std::min(m.specimen.width, m.specimen.height), "the specimen's smaller side"};
-    case mesh::ModelKind::kBrazilian: return {m.specimen.diameter, "specimen.diameter"};
-    case mesh::ModelKind::kMshFile: break;
+    case mesh::ModelKind::kBrazilian:
+      return {m.specimen.diameter, "specimen.diameter"};
+    case mesh::ModelKind::kMshFile:
+      break;
   }
   return {};
 }
@@ -198,16 +199,18 @@ void read_mesh_sizes(const Reader& r, mesh::MeshSpec& m) {
   // 0.5 m suits tunnels; a specimen centimetres across has no size to default to.
   const bool specimen = m.kind == mesh::ModelKind::kUcs || m.kind == mesh::ModelKind::kBrazilian;
   if (specimen && !r.has("mesh.size_near"))
-    throw InputError(r.source() + ": missing key 'mesh.size_near' (a specimen has no default "
-                     "element size); allowed: > 0 and at most " + num(feature.size / 2) +
-                     " m (half " + feature.what + ")");
+    throw InputError(r.source() +
+                     ": missing key 'mesh.size_near' (a specimen has no default "
+                     "element size); allowed: > 0 and at most " +
+                     num(feature.size / 2) + " m (half " + feature.what + ")");
   m.size.size_near = r.number("mesh.size_near");
   m.size.size_far = r.number("mesh.size_far");
   m.size.grading_distance = r.number("mesh.grading_distance");
   m.size.algorithm = r.integer("mesh.algorithm");
   if (m.size.algorithm != 1 && m.size.algorithm != 5 && m.size.algorithm != 6)
-    r.fail("mesh.algorithm", "only 1 (MeshAdapt), 5 (Delaunay) or 6 (Frontal-Delaunay) make "
-                             "triangles");
+    r.fail("mesh.algorithm",
+           "only 1 (MeshAdapt), 5 (Delaunay) or 6 (Frontal-Delaunay) make "
+           "triangles");
   if (m.size.size_far < m.size.size_near) {
     if (r.blame_second("mesh.size_far", "mesh.size_near"))
       r.fail("mesh.size_near", "must be at most mesh.size_far = " + num(m.size.size_far) + " m");
@@ -225,14 +228,15 @@ void read_msh(const Reader& r, const std::string& base_dir, mesh::MeshSpec& m) {
   if (!file.empty() && file[0] != '/' && !base_dir.empty()) file = base_dir + "/" + file;
   std::error_code ec;
   if (!std::filesystem::is_regular_file(file, ec) || !std::ifstream(file))
-    r.fail("msh.file", "cannot open " + file + " as a file; allowed: the path of a readable "
-                       "gmsh .msh file, relative to the scene file");
+    r.fail("msh.file", "cannot open " + file +
+                           " as a file; allowed: the path of a readable "
+                           "gmsh .msh file, relative to the scene file");
   m.msh.path = file;
   static const std::map<std::string, int> zones{
       {"rock", mesh::kRock}, {"core", mesh::kCore}, {"lining", mesh::kLining}};
   static const std::map<std::string, int> tags{
-      {"bottom", 1}, {"right", 2},        {"top", 3},      {"left", 4},         {"excavation", 5},
-      {"lining_inner", 6}, {"rim", 7}, {"load_top", 8}, {"load_bottom", 9}};
+      {"bottom", 1},       {"right", 2}, {"top", 3},      {"left", 4},       {"excavation", 5},
+      {"lining_inner", 6}, {"rim", 7},   {"load_top", 8}, {"load_bottom", 9}};
   for (auto& [group, zone] : r.string_map("msh.zones")) m.msh.zone_groups[group] = zones.at(zone);
   for (auto& [group, tag] : r.string_map("msh.edges")) m.msh.edge_groups[group] = tags.at(tag);
   if (m.msh.zone_groups.empty())
@@ -259,8 +263,8 @@ MaterialSpec read_material(const Reader& r, const std::string& name, const Mater
   m.fracture_energy_II = r.number_or(p + "fracture_energy_II", m.fracture_energy_II);
   m.penalty_factor = r.number_or(p + "penalty_factor", base ? base->penalty_factor : 10);
   m.heterogeneity = r.number_or(p + "heterogeneity", base ? base->heterogeneity : 0);
-  m.heterogeneity_seed =
-      std::uint64_t(r.number_or(p + "heterogeneity_seed", base ? double(base->heterogeneity_seed) : 1));
+  m.heterogeneity_seed = std::uint64_t(
+      r.number_or(p + "heterogeneity_seed", base ? double(base->heterogeneity_seed) : 1));
   return m;
 }
 
@@ -281,12 +285,12 @@ bool needs_fracture(const mesh::MeshSpec& m) {
 void read_materials(const Reader& r, Scene& s) {
   s.materials["rock"] = read_material(r, "rock", nullptr);
   if (needs_fracture(s.mesh)) {
-    for (const char* key : {"tensile_strength", "cohesion", "fracture_energy_I",
-                            "fracture_energy_II"})
+    for (const char* key :
+         {"tensile_strength", "cohesion", "fracture_energy_I", "fracture_energy_II"})
       r.require(std::string("materials.rock.") + key, "the model allows fracture");
   }
-  const bool tunnel_like = s.mesh.kind == mesh::ModelKind::kTunnel ||
-                           s.mesh.kind == mesh::ModelKind::kMshFile;
+  const bool tunnel_like =
+      s.mesh.kind == mesh::ModelKind::kTunnel || s.mesh.kind == mesh::ModelKind::kMshFile;
   if (tunnel_like) s.materials["core"] = read_material(r, "core", &s.materials["rock"]);
   if (has_ring(s.mesh) || r.has("materials.lining"))
     s.materials["lining"] = read_material(r, "lining", nullptr);
@@ -295,8 +299,8 @@ void read_materials(const Reader& r, Scene& s) {
 void read_insitu(const Reader& r, Scene& s) {
   InsituSettings& in = s.insitu;
   // The implicit stage needs compression in both directions; specimens start stress-free.
-  const bool loaded = s.mesh.kind == mesh::ModelKind::kTunnel ||
-                      s.mesh.kind == mesh::ModelKind::kMshFile;
+  const bool loaded =
+      s.mesh.kind == mesh::ModelKind::kTunnel || s.mesh.kind == mesh::ModelKind::kMshFile;
   if (loaded) {
     r.require("insitu.sigma_h", "a tunnel or .msh model is loaded by its in-situ stress");
     r.require("insitu.sigma_v", "a tunnel or .msh model is loaded by its in-situ stress");
@@ -312,13 +316,13 @@ void read_insitu(const Reader& r, Scene& s) {
   in.tolerance = r.number("insitu.tolerance");
   if (r.has("insitu.alpha")) in.alpha = r.numbers("insitu.alpha");
   for (std::size_t i = 1; i < in.alpha.size(); ++i)
-    if (!(in.alpha[i] < in.alpha[i - 1]))
-      r.fail("insitu.alpha", "must be strictly decreasing");
+    if (!(in.alpha[i] < in.alpha[i - 1])) r.fail("insitu.alpha", "must be strictly decreasing");
   if (s.mesh.kind == mesh::ModelKind::kTunnel) {
     if (in.kirsch_boundary && (s.mesh.tunnel.shape != mesh::TunnelShape::kCircular ||
                                in.unit_weight > 0 || in.angle_deg != 0))
-      r.fail("insitu.boundary", "exact Kirsch tractions need a circular tunnel, no gradient "
-                                "and angle 0");
+      r.fail("insitu.boundary",
+             "exact Kirsch tractions need a circular tunnel, no gradient "
+             "and angle 0");
   }
   if (in.lining_active && !s.materials.count("lining"))
     r.fail("insitu.lining_active", "the model has no lining ring (tunnel.lining_thickness = 0)");
@@ -391,8 +395,8 @@ void read_bolts(const Reader& r, Scene& s) {
       const std::string p = "bolt_fan[" + std::to_string(i) + "]";
       for (const char* k : {".radius", ".count", ".length"})
         r.require(p + k, "a bolt fan needs radius, count and length");
-      const std::array<double, 2> c = r.has(p + ".centre") ? point(r, p + ".centre")
-                                                            : std::array<double, 2>{0, 0};
+      const std::array<double, 2> c =
+          r.has(p + ".centre") ? point(r, p + ".centre") : std::array<double, 2>{0, 0};
       const int count = r.integer(p + ".count");
       const double radius = r.number(p + ".radius"), length = r.number(p + ".length");
       const double a0 = r.number_or(p + ".first_deg", 0), a1 = r.number_or(p + ".last_deg", 180);
@@ -477,14 +481,14 @@ void read_stages(const Reader& r, Scene& s) {
     if (kind == "soften") {
       r.require(p + ".alpha", "a soften stage needs its target alpha");
       if (!core) r.fail(p + ".kind", "the core is already removed (or alpha = 0)");
-      if (!(st.alpha < alpha))
-        r.fail(p + ".alpha", "softening must go down from " + num(alpha));
+      if (!(st.alpha < alpha)) r.fail(p + ".alpha", "softening must go down from " + num(alpha));
       alpha = st.alpha;
     }
     if (kind == "lining") {
       if (!lining)
-        r.fail(p + ".kind", "the model has no lining ring (tunnel.lining_thickness, or a "
-                            "msh.zones group mapped to \"lining\")");
+        r.fail(p + ".kind",
+               "the model has no lining ring (tunnel.lining_thickness, or a "
+               "msh.zones group mapped to \"lining\")");
       if (lined || s.insitu.lining_active) r.fail(p + ".kind", "the lining is installed once");
       lined = true;
     }

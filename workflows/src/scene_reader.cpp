@@ -388,8 +388,8 @@ void check_node(const RawScene& s, const std::string& path, const toml::node& n)
 
 void check_table(const RawScene& s, const toml::table& table, const std::string& prefix) {
   for (auto&& [key, node] : table) {
-    const std::string path = prefix.empty() ? std::string(key.str())
-                                            : prefix + "." + std::string(key.str());
+    const std::string path =
+        prefix.empty() ? std::string(key.str()) : prefix + "." + std::string(key.str());
     check_node(s, path, node);
   }
 }
@@ -444,7 +444,8 @@ void fail_key(const RawScene& s, const std::string& path, const toml::node* node
   msg << ": " << (from_cli ? "--set " : "") << "key '" << path << "'";
   if (node) msg << " = " << node_text(*node);
   msg << ": " << problem;
-  if (const KeySpec* k = find_key(normalise(path)); k && problem.find("allowed") == std::string::npos)
+  if (const KeySpec* k = find_key(normalise(path));
+      k && problem.find("allowed") == std::string::npos)
     msg << "; allowed: " << describe_allowed(*k);
   throw InputError(printable(msg.str()));
 }

@@ -3,17 +3,17 @@
 // ever sees known keys of the right type within range.
 #pragma once
 
+#include <toml++/toml.h>
+
 #include <set>
 #include <string>
 #include <vector>
-
-#include <toml++/toml.h>
 
 namespace rockfdem::workflows::detail {
 
 struct RawScene {
   toml::table root;
-  std::string source;             ///< file name for messages
+  std::string source;                ///< file name for messages
   std::set<std::string> overridden;  ///< dotted paths set with --set
 };
 

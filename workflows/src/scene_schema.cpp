@@ -79,10 +79,11 @@ void add_material(std::vector<KeySpec>& s, const std::string& name, const std::s
   s.push_back(positive(p + "density", "kg/m^3", "2700", "Density of the " + role + "."));
   s.push_back(positive(p + "young", "Pa", "", "Young's modulus of the " + role + "."));
   s.push_back(number(p + "poisson", "-", "", 0, true, 0.45, false,
-                     "Poisson's ratio of the " + role + ". At most 0.45: the linear "
-                     "(constant-strain) triangles of both stages lock as it nears 0.5 (the "
-                     "Kirsch case's stress error: 0.85% at 0.25, 3.8% at 0.45, 16% at 0.49, "
-                     "366% at 0.4999)."));
+                     "Poisson's ratio of the " + role +
+                         ". At most 0.45: the linear "
+                         "(constant-strain) triangles of both stages lock as it nears 0.5 (the "
+                         "Kirsch case's stress error: 0.85% at 0.25, 3.8% at 0.45, 16% at 0.49, "
+                         "366% at 0.4999)."));
   s.push_back(positive(p + "tensile_strength", "Pa", "",
                        "Tensile strength ft of the " + role + "'s crack elements."));
   s.push_back(positive(p + "cohesion", "Pa", "",
@@ -98,12 +99,13 @@ void add_material(std::vector<KeySpec>& s, const std::string& name, const std::s
   s.push_back(number(p + "penalty_factor", "-", "10", 1, false, 1000, false,
                      "Crack and contact penalty as a multiple of the Young's modulus."));
   s.push_back(number(p + "heterogeneity", "-", "0", 0, false, 100, false,
-                     "Weibull modulus m of the " + role + "'s crack strengths: each crack "
-                     "element's tensile strength and cohesion are scaled by one factor drawn "
-                     "from a Weibull distribution of mean 1 (coefficient of variation 0.36 "
-                     "at m = 3, 0.12 at m = 10; clamped to [0.05, 5]); 0: homogeneous. The "
-                     "draw depends only on the seed and the element's two mesh vertices, so "
-                     "the pattern is the same for any thread count."));
+                     "Weibull modulus m of the " + role +
+                         "'s crack strengths: each crack "
+                         "element's tensile strength and cohesion are scaled by one factor drawn "
+                         "from a Weibull distribution of mean 1 (coefficient of variation 0.36 "
+                         "at m = 3, 0.12 at m = 10; clamped to [0.05, 5]); 0: homogeneous. The "
+                         "draw depends only on the seed and the element's two mesh vertices, so "
+                         "the pattern is the same for any thread count."));
   s.push_back(integer(p + "heterogeneity_seed", "1", 0, 1e15,
                       "Seed of the " + role + "'s strength heterogeneity."));
 }
@@ -149,8 +151,9 @@ std::vector<KeySpec> build_schema() {
   s.push_back(number("specimen.load_arc_deg", "deg", "10", 0, true, 90, true,
                      "Brazilian disc: angle subtended by each loading arc."));
   // [msh]
-  s.push_back(text("msh.file", "", "User's gmsh .msh file (relative to the scene file); "
-                                   "required when model.kind = \"msh\"."));
+  s.push_back(text("msh.file", "",
+                   "User's gmsh .msh file (relative to the scene file); "
+                   "required when model.kind = \"msh\"."));
   KeySpec zones;
   zones.path = "msh.zones";
   zones.type = KeyType::kStringMap;
@@ -161,8 +164,8 @@ std::vector<KeySpec> build_schema() {
   s.push_back(zones);
   KeySpec edges = zones;
   edges.path = "msh.edges";
-  edges.choices = {"bottom", "right", "top", "left", "excavation", "lining_inner", "rim",
-                   "load_top", "load_bottom"};
+  edges.choices = {"bottom",       "right", "top",      "left",       "excavation",
+                   "lining_inner", "rim",   "load_top", "load_bottom"};
   edges.description = "Map from 1D physical group name to edge tag, e.g. { Floor = \"bottom\" }.";
   s.push_back(edges);
   s.push_back(text("msh.fracture_group", "\"\"",
@@ -240,8 +243,8 @@ std::vector<KeySpec> build_schema() {
                      "Viscous damping of the triangles, a multiple of Munjiza's element "
                      "viscosity eta = 2 h sqrt(E rho) (h: smallest altitude); the stiffest "
                      "element mode then has 1.7-1.8 times this ratio of critical damping."));
-  s.push_back(number("engine.local_damping", "-", "0.8 (tunnel stages), 0 (specimens)", 0,
-                     false, 1, true,
+  s.push_back(number("engine.local_damping", "-", "0.8 (tunnel stages), 0 (specimens)", 0, false, 1,
+                     true,
                      "Cundall local damping coefficient: f -= alpha |f| sign(v) per node "
                      "component. Tunnel stages are quasi-static and take 0.8 unless given (0 "
                      "runs them undamped but for the triangles' viscosity); specimen runs "
@@ -253,11 +256,12 @@ std::vector<KeySpec> build_schema() {
                       "0.3) it reaches equilibrium in fewer steps. The statics do not change."));
   s.push_back(non_negative("engine.mass_damping", "1/s", "0",
                            "Mass-proportional damping coefficient c (force -c m v)."));
-  s.push_back(choice("engine.mass_scaling", "auto", {"auto", "on", "off"},
-                     "Quasi-static mass scaling: densities raised until every node is stable "
-                     "at the least constrained node's step (statics unchanged, dynamics and "
-                     "simulated time not physical). auto: on for tunnels (and .msh models), off for "
-                     "UCS and Brazilian specimens."));
+  s.push_back(
+      choice("engine.mass_scaling", "auto", {"auto", "on", "off"},
+             "Quasi-static mass scaling: densities raised until every node is stable "
+             "at the least constrained node's step (statics unchanged, dynamics and "
+             "simulated time not physical). auto: on for tunnels (and .msh models), off for "
+             "UCS and Brazilian specimens."));
   s.push_back(non_negative("engine.mass_scaling_dt", "s", "0",
                            "Target step of the mass scaling before local damping (which divides "
                            "it by sqrt(1 + local_damping)) and dt_safety; 0: the least "
@@ -290,8 +294,8 @@ std::vector<KeySpec> build_schema() {
                          "Hardening modulus ET (below the steel's Young's modulus)."));
     s.push_back(positive(p + "shear_yield_strength", "Pa", k.shear,
                          "Steel shear strength (brittle in shear)."));
-    s.push_back(positive(p + "shear_fracture_energy", "J/m^2", "1e4",
-                         "Steel shear fracture energy GfII."));
+    s.push_back(
+        positive(p + "shear_fracture_energy", "J/m^2", "1e4", "Steel shear fracture energy GfII."));
   }
   // [grout] (the bolt-rock bond and what re-joins broken cracks) and
   // [lining_interface] (the shotcrete-rock bond: adhesion 0.1-1.3 MPa measured
@@ -308,11 +312,12 @@ std::vector<KeySpec> build_schema() {
                          what + ": modulus setting its crack penalty (penalty_factor x young)."));
     s.push_back(positive(p + "tensile_strength", "Pa", k.ft, what + ": tensile strength."));
     s.push_back(positive(p + "cohesion", "Pa", k.c, what + ": cohesion."));
-    s.push_back(number(p + "friction_angle", "deg", k.phi, 0, false, 90, true,
-                       what + ": friction angle."));
-    s.push_back(positive(p + "fracture_energy_I", "J/m^2", k.gf1, what + ": mode I fracture energy."));
-    s.push_back(positive(p + "fracture_energy_II", "J/m^2", k.gf2,
-                         what + ": mode II fracture energy."));
+    s.push_back(
+        number(p + "friction_angle", "deg", k.phi, 0, false, 90, true, what + ": friction angle."));
+    s.push_back(
+        positive(p + "fracture_energy_I", "J/m^2", k.gf1, what + ": mode I fracture energy."));
+    s.push_back(
+        positive(p + "fracture_energy_II", "J/m^2", k.gf2, what + ": mode II fracture energy."));
   }
   // [[bolt]] and [[bolt_fan]]
   KeySpec point = number("bolt[].start", "m", "", -kInf, false, kInf, false,
@@ -354,8 +359,8 @@ std::vector<KeySpec> build_schema() {
   s.push_back(boolean("contact.friction", "true",
                       "Coulomb friction with mu = tan(residual_friction_angle)."));
   // [[stages]]
-  s.push_back(choice("stages[].kind", "", {"insitu", "soften", "lining", "bolts", "remove_core",
-                                           "grout", "equilibrium"},
+  s.push_back(choice("stages[].kind", "",
+                     {"insitu", "soften", "lining", "bolts", "remove_core", "grout", "equilibrium"},
                      "Construction stage: `insitu` (the implicit stage, first if given), "
                      "`soften` (core to alpha, explicit), `lining` (install the lining ring "
                      "stress-free), `bolts` (install every bolt stress-free), `remove_core`, "
@@ -444,8 +449,10 @@ std::string describe_allowed(const KeySpec& k) {
   std::ostringstream out;
   out.precision(12);
   switch (k.type) {
-    case KeyType::kBool: return "true or false";
-    case KeyType::kString: return "a string";
+    case KeyType::kBool:
+      return "true or false";
+    case KeyType::kString:
+      return "a string";
     case KeyType::kChoice:
     case KeyType::kStringMap: {
       out << (k.type == KeyType::kStringMap ? "a table of strings, each one of " : "one of ");
@@ -453,7 +460,8 @@ std::string describe_allowed(const KeySpec& k) {
         out << (i ? ", " : "") << '"' << k.choices[i] << '"';
       return out.str();
     }
-    default: break;
+    default:
+      break;
   }
   if (k.type == KeyType::kInteger) out << "an integer ";
   if (k.type == KeyType::kNumberArray) out << "an array of numbers each ";
@@ -486,10 +494,11 @@ std::string scene_reference_markdown() {
     const std::string section = section_of(k.path);
     if (section != current) {
       current = section;
-      md << "\n## [" << section << "]\n\n| key | unit | default | allowed | meaning |\n"
+      md << "\n## [" << section
+         << "]\n\n| key | unit | default | allowed | meaning |\n"
             "|---|---|---|---|---|\n";
     }
-    const std::string def = !k.default_doc.empty()    ? k.default_doc
+    const std::string def = !k.default_doc.empty()   ? k.default_doc
                             : k.default_text.empty() ? "required where used"
                                                      : k.default_text;
     md << "| `" << k.path.substr(section.size() + 1) << "` | " << k.unit << " | " << def << " | "

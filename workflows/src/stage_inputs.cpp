@@ -167,8 +167,8 @@ bool kirsch_case(const Scene& s, insitu::KirschCase* k) {
       m.tunnel.lining_thickness > 0 || s.insitu.unit_weight > 0)
     return false;
   const MaterialSpec& rock = s.materials.at("rock");
-  *k = {m.tunnel.radius, s.insitu.sigma_h, s.insitu.sigma_v, s.insitu.angle_deg, rock.young,
-        rock.poisson};
+  *k = {m.tunnel.radius,    s.insitu.sigma_h, s.insitu.sigma_v,
+        s.insitu.angle_deg, rock.young,       rock.poisson};
   return true;
 }
 

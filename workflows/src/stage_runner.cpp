@@ -5,12 +5,12 @@
 #include <limits>
 
 #include "interrupt.hpp"
-#include "rockfdem/error.hpp"
 #include "output_dir.hpp"
 #include "progress.hpp"
-#include "stage_inputs.hpp"
 #include "rockfdem/coupling/atomic_file.hpp"
+#include "rockfdem/error.hpp"
 #include "rockfdem/fdem/bolt_grouting.hpp"
+#include "stage_inputs.hpp"
 
 namespace rockfdem::workflows {
 
@@ -19,9 +19,17 @@ StageRunner::StageRunner(fdem::Engine& engine, const mesh::Mesh& m,
                          const CommandLine& cli, RunOutputs& out,
                          const std::vector<Monitor>& monitors, fdem::BoltPlan& bolts,
                          SupportMaterials materials)
-    : engine_(engine), mesh_(m), scene_(scene), cli_(cli), out_(out), monitors_(monitors),
-      bolts_(bolts), materials_(materials),
-      handoff_alpha_(handoff.alpha), alpha_(handoff.alpha), core_present_(handoff.alpha > 0),
+    : engine_(engine),
+      mesh_(m),
+      scene_(scene),
+      cli_(cli),
+      out_(out),
+      monitors_(monitors),
+      bolts_(bolts),
+      materials_(materials),
+      handoff_alpha_(handoff.alpha),
+      alpha_(handoff.alpha),
+      core_present_(handoff.alpha > 0),
       lining_installed_(handoff.lining_installed) {}
 
 void StageRunner::set_zone(int zone, bool active, fdem::ActivationReference ref) {
@@ -42,13 +50,14 @@ nlohmann::json StageRunner::apply(const StageSpec& stage) {
   nlohmann::json done = nlohmann::json::object();
   if (stage.kind == "bolts") {
     const fdem::BoltInstallReport r = fdem::install_bolts(engine_, bolts_);
-    done = {{"bolts", bolts_.specs.size()}, {"bolt_triangles", r.triangles},
-            {"steel_cracks", r.steel_cracks}, {"grout_cracks", r.grout_cracks}};
+    done = {{"bolts", bolts_.specs.size()},
+            {"bolt_triangles", r.triangles},
+            {"steel_cracks", r.steel_cracks},
+            {"grout_cracks", r.grout_cracks}};
   } else if (stage.kind == "soften") {
     // The engine's core already has alpha_h E and stress: scale relative to it.
     for (std::size_t t = 0; t < mesh_.n_triangles(); ++t)
-      if (mesh_.zone[t] == mesh::kCore ||
-          (!lining_installed_ && mesh_.zone[t] == mesh::kLining))
+      if (mesh_.zone[t] == mesh::kCore || (!lining_installed_ && mesh_.zone[t] == mesh::kLining))
         engine_.set_stiffness_factor(t, stage.alpha / handoff_alpha_);
     alpha_ = stage.alpha;
   } else if (stage.kind == "lining") {
@@ -192,8 +201,7 @@ bool StageRunner::unstable(const StageSpec& stage, bool criteria) {
                 "outputs before)%s%s: the opening is closing, not stabilising",
                 stage.kind.c_str(), engine_.step_count(), name.c_str(), 1000 * u,
                 span > 0 ? u / span : 0.0, span, stage.unstable_fraction, moving_most_.c_str(),
-                1000 * last_rate_, r,
-                speeding && !beyond ? ", accelerating" : "", projection);
+                1000 * last_rate_, r, speeding && !beyond ? ", accelerating" : "", projection);
   if (unstable_.message.empty()) unstable_ = {"unstable", msg};  // the first finding stands
   return true;
 }
@@ -219,8 +227,8 @@ bool StageRunner::step_until(const StageSpec& stage, PhaseTimer& timer, long bro
       out_.record_step(engine_, mesh_, monitors_, timer, stage.kind, support_ratio());
       const int sig = interrupt_requested();
       throw Interrupted(sig, "interrupted by signal " + std::to_string(sig) + " at step " +
-                                 std::to_string(engine_.step_count()) + " in stage '" +
-                                 stage.kind + "'; outputs and a checkpoint are written");
+                                 std::to_string(engine_.step_count()) + " in stage '" + stage.kind +
+                                 "'; outputs and a checkpoint are written");
     }
     out_.record_step(engine_, mesh_, monitors_, timer, stage.kind, support_ratio());
     // Equilibrium: balanced forces alone are not enough while cracks keep
@@ -257,8 +265,8 @@ bool StageRunner::step_until(const StageSpec& stage, PhaseTimer& timer, long bro
 }
 
 nlohmann::json StageRunner::grout(const StageSpec& stage, PhaseTimer& timer) {
-  bool triggered = stage.trigger_broken == 0 ||
-                   engine_.broken_counts().total() >= stage.trigger_broken;
+  bool triggered =
+      stage.trigger_broken == 0 || engine_.broken_counts().total() >= stage.trigger_broken;
   // Triggered by the broken count, or by the stage's time when one is given.
   if (!triggered)
     triggered = step_until(stage, timer, stage.trigger_broken) ||
@@ -266,8 +274,9 @@ nlohmann::json StageRunner::grout(const StageSpec& stage, PhaseTimer& timer) {
   nlohmann::json done = {{"triggered", triggered},
                          {"broken_before", engine_.broken_counts().total()}};
   if (!triggered) return done;
-  const fdem::CrackSelector select =
-      bolts_.specs.empty() ? fdem::CrackSelector{} : fdem::excluding_bolt_steel(engine_, bolts_, {});
+  const fdem::CrackSelector select = bolts_.specs.empty()
+                                         ? fdem::CrackSelector{}
+                                         : fdem::excluding_bolt_steel(engine_, bolts_, {});
   const fdem::GroutingResult g = fdem::grout_broken_cracks(engine_, materials_.grout, select);
   done["rejoined"] = g.count;
   done["broken_after"] = engine_.broken_counts().total();
@@ -296,24 +305,26 @@ void StageRunner::run(const StageSpec& stage, PhaseTimer& timer) {
   else
     converged = step_until(stage, timer, 0);
   const long steps_taken = engine_.step_count() - cursor_.first;
-  report_.push_back({{"kind", stage.kind},
-                     {"changes", done},
-                     {"steps", steps_taken},
-                     {"simulated_time", engine_.time() - cursor_.t0},
-                     {"dt", steps_taken > 0 ? nlohmann::json(stage_dt_) : nlohmann::json()},
-                     {"unbalanced_ratio", engine_.unbalanced_force_ratio()},
-                     {"settle", last_settle_ >= 0 ? nlohmann::json(last_settle_) : nlohmann::json()},
-                     // A stage that took no step has no equilibrium to report.
-                     {"converged", steps_taken > 0 ? nlohmann::json(converged) : nlohmann::json()},
-                     {"max_steps", stage.max_steps},
-                     {"criteria", {{"ratio", stage.ratio}, {"settle", stage.settle},
-                                   {"hold", stage.hold},
-                                   {"unstable_fraction", stage.unstable_fraction}}},
-                     {"moving_most", last_settle_ >= 0
-                                         ? nlohmann::json{{"key_point", moving_most_},
+  report_.push_back(
+      {{"kind", stage.kind},
+       {"changes", done},
+       {"steps", steps_taken},
+       {"simulated_time", engine_.time() - cursor_.t0},
+       {"dt", steps_taken > 0 ? nlohmann::json(stage_dt_) : nlohmann::json()},
+       {"unbalanced_ratio", engine_.unbalanced_force_ratio()},
+       {"settle", last_settle_ >= 0 ? nlohmann::json(last_settle_) : nlohmann::json()},
+       // A stage that took no step has no equilibrium to report.
+       {"converged", steps_taken > 0 ? nlohmann::json(converged) : nlohmann::json()},
+       {"max_steps", stage.max_steps},
+       {"criteria",
+        {{"ratio", stage.ratio},
+         {"settle", stage.settle},
+         {"hold", stage.hold},
+         {"unstable_fraction", stage.unstable_fraction}}},
+       {"moving_most", last_settle_ >= 0 ? nlohmann::json{{"key_point", moving_most_},
                                                           {"mm_per_1000_steps", 1000 * last_rate_}}
                                          : nlohmann::json()},
-                     {"support_pressure_ratio", support_ratio()}});
+       {"support_pressure_ratio", support_ratio()}});
 }
 
 void StageRunner::run_all(PhaseTimer& timer) {
@@ -364,14 +375,20 @@ void StageRunner::set_checkpoint(long every, std::function<void()> save) {
 }
 
 nlohmann::json StageRunner::state() const {
-  return {{"stage_index", cursor_.index}, {"stage_started", cursor_.started},
-          {"stage_first_step", cursor_.first}, {"stage_t0", cursor_.t0},
-          {"stage_changes", cursor_.changes}, {"stage_monitor_u", cursor_.monitor_u},
-          {"stage_held", cursor_.held}, {"stage_rates", cursor_.rates},
+  return {{"stage_index", cursor_.index},
+          {"stage_started", cursor_.started},
+          {"stage_first_step", cursor_.first},
+          {"stage_t0", cursor_.t0},
+          {"stage_changes", cursor_.changes},
+          {"stage_monitor_u", cursor_.monitor_u},
+          {"stage_held", cursor_.held},
+          {"stage_rates", cursor_.rates},
           {"unstable", unstable_.message},
           {"alpha", alpha_},
-          {"core_present", core_present_}, {"lining_installed", lining_installed_},
-          {"report", report_}, {"last_checkpoint", engine_.step_count()}};
+          {"core_present", core_present_},
+          {"lining_installed", lining_installed_},
+          {"report", report_},
+          {"last_checkpoint", engine_.step_count()}};
 }
 
 void StageRunner::restore(const nlohmann::json& s) {

@@ -24,24 +24,29 @@ std::vector<double> interleave(const std::vector<double>& a, const std::vector<d
 
 RunSummary::RunSummary(const Scene& scene, int threads) {
   using nlohmann::json;
-  root_ = {{"rockfdem_version", version_string()},
-           {"scene", scene.source},
-           {"title", scene.title},
-           {"threads", threads},
-           {"counts", {{"triangles", 0}, {"nodes", 0}, {"crack_elements", 0},
-                       {"bolts", scene.bolts.segments.size()}}},
-           {"steps", 0},
-           {"dt", 0.0},
-           {"simulated_time", 0.0},
-           {"timings", {{"mesh", 0.0}, {"insitu", 0.0}, {"fdem", 0.0}, {"output", 0.0},
-                        {"total", 0.0}}},
-           {"throughput", {{"triangle_steps_per_second", 0.0}}},
-           {"skipped", json::array()},
-           {"broken", {{"mode_I", 0}, {"mode_II", 0}, {"mixed", 0}}},
-           {"monitors", json::object()},
-           {"insitu", {{"alpha", json::array()}, {"kirsch_rel_l2", nullptr},
-                       {"solver_iterations", json::array()}}},
-           {"state_hash", ""}};
+  root_ = {
+      {"rockfdem_version", version_string()},
+      {"scene", scene.source},
+      {"title", scene.title},
+      {"threads", threads},
+      {"counts",
+       {{"triangles", 0},
+        {"nodes", 0},
+        {"crack_elements", 0},
+        {"bolts", scene.bolts.segments.size()}}},
+      {"steps", 0},
+      {"dt", 0.0},
+      {"simulated_time", 0.0},
+      {"timings", {{"mesh", 0.0}, {"insitu", 0.0}, {"fdem", 0.0}, {"output", 0.0}, {"total", 0.0}}},
+      {"throughput", {{"triangle_steps_per_second", 0.0}}},
+      {"skipped", json::array()},
+      {"broken", {{"mode_I", 0}, {"mode_II", 0}, {"mixed", 0}}},
+      {"monitors", json::object()},
+      {"insitu",
+       {{"alpha", json::array()},
+        {"kirsch_rel_l2", nullptr},
+        {"solver_iterations", json::array()}}},
+      {"state_hash", ""}};
 }
 
 void RunSummary::skipped(const std::string& what_and_why) {

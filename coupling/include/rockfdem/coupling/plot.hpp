@@ -26,9 +26,9 @@ bool rendering_available(std::string* why = nullptr);
 
 /// One curve of a line plot.
 struct PlotSeries {
-  std::string name;      ///< legend entry
-  std::vector<double> x; ///< abscissae
-  std::vector<double> y; ///< ordinates, as many as x
+  std::string name;       ///< legend entry
+  std::vector<double> x;  ///< abscissae
+  std::vector<double> y;  ///< ordinates, as many as x
 };
 
 /// Line plot with title, axis labels and a legend, written atomically as PNG
@@ -57,7 +57,6 @@ struct MeshView {
 /// the triangles whose centroid lies in it; without, the whole grid.
 bool render_mesh_png(const VtkGrid& grid, const std::string& cell_field, int component,
                      const std::string& path, const std::string& title, int width = 1000,
-                     int height = 800, std::string* why = nullptr,
-                     const MeshView* view = nullptr);
+                     int height = 800, std::string* why = nullptr, const MeshView* view = nullptr);
 
 }  // namespace rockfdem::coupling

@@ -47,11 +47,11 @@ VtkArray vector_array(std::string name, int n_components, std::vector<double> va
 VtkArray tensor_array(std::string name, int n_components, std::vector<double> values);
 
 struct VtkGrid {
-  std::vector<double> x, y;                  ///< point coordinates [m]
-  std::vector<std::array<int, 3>> triangles; ///< point ids
-  std::vector<std::array<int, 2>> lines;     ///< point ids (crack elements)
-  std::vector<VtkArray> point_arrays;        ///< n_points() tuples each
-  std::vector<VtkArray> cell_arrays;         ///< n_cells() tuples each: triangles, then lines
+  std::vector<double> x, y;                   ///< point coordinates [m]
+  std::vector<std::array<int, 3>> triangles;  ///< point ids
+  std::vector<std::array<int, 2>> lines;      ///< point ids (crack elements)
+  std::vector<VtkArray> point_arrays;         ///< n_points() tuples each
+  std::vector<VtkArray> cell_arrays;          ///< n_cells() tuples each: triangles, then lines
 
   std::size_t n_points() const { return x.size(); }
   std::size_t n_triangles() const { return triangles.size(); }

@@ -7,7 +7,8 @@
 //   GroutingResult r = grout_broken_cracks(engine, grout_index,
 //                          cracks_touching(engine, zone_triangles));           // a zone
 //   GroutingResult r = grout_broken_cracks(engine, grout_index,
-//                          excluding_bolt_steel(engine, plan, selector));     // keep broken bolts broken
+//                          excluding_bolt_steel(engine, plan, selector));     // keep broken bolts
+//                          broken
 #pragma once
 
 #include <functional>
@@ -21,9 +22,9 @@ namespace rockfdem::fdem {
 using CrackSelector = std::function<bool(std::size_t crack, const Point2& midpoint)>;
 
 struct GroutingResult {
-  long count = 0;                ///< crack elements re-joined
-  std::vector<int> cracks;       ///< their indices, ascending
-  std::vector<Point2> midpoints; ///< their current midpoints [m]
+  long count = 0;                 ///< crack elements re-joined
+  std::vector<int> cracks;        ///< their indices, ascending
+  std::vector<Point2> midpoints;  ///< their current midpoints [m]
 };
 
 /// Re-joins every broken crack element the selector accepts (all when

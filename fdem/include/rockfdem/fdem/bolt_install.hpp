@@ -53,10 +53,10 @@ struct BoltSpec {
 struct BoltPlan {
   std::vector<BoltSpec> specs;
   BoltMarks marks;
-  std::vector<BoltStrip> strips;        ///< per bolt
-  std::vector<BoltSteelModel> steel;    ///< per bolt
-  std::vector<int> steel_material;      ///< per bolt: index into ModelInput::materials
-  std::vector<int> grout_material;      ///< per bolt
+  std::vector<BoltStrip> strips;           ///< per bolt
+  std::vector<BoltSteelModel> steel;       ///< per bolt
+  std::vector<int> steel_material;         ///< per bolt: index into ModelInput::materials
+  std::vector<int> grout_material;         ///< per bolt
   std::vector<std::vector<double>> alpha;  ///< per bolt, per owned triangle (marks order)
   std::vector<std::vector<int>> owned;     ///< per bolt: its triangles owned by it, head to end
   /// Filled by install_bolt: each owned triangle's stress at installation

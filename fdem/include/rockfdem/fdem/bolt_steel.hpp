@@ -45,8 +45,8 @@ struct BoltSteel {
   double ultimate_strength = 500e6;     ///< sigma_u [Pa]
   double tangent_modulus = 2e9;         ///< ET [Pa]: eps_u = eps_y + (sigma_u - sigma_y) / ET
   double shear_yield_strength = 240e6;  ///< tau_y = tau_u [Pa] (brittle)
-  double gf_II = 1e4;                   ///< shear fracture energy [J/m^2] (sr - sp = 3 GfII / tau_y)
-  double penalty_factor = 10;           ///< crack penalties pn = pt = factor * E_tri
+  double gf_II = 1e4;          ///< shear fracture energy [J/m^2] (sr - sp = 3 GfII / tau_y)
+  double penalty_factor = 10;  ///< crack penalties pn = pt = factor * E_tri
 };
 
 /// One crack element inside a bolt strip, for the calibration.
@@ -58,9 +58,9 @@ struct StripCrack {
 
 /// The strip of one bolt as the calibration needs it.
 struct BoltStrip {
-  double area = 0;    ///< sum of the strip's triangle areas [m^2]
-  double length = 0;  ///< bolt length [m]
-  double width = 0;   ///< area / length [m]
+  double area = 0;                 ///< sum of the strip's triangle areas [m^2]
+  double length = 0;               ///< bolt length [m]
+  double width = 0;                ///< area / length [m]
   std::vector<StripCrack> cracks;  ///< edges shared by two triangles of the strip
 };
 
@@ -72,11 +72,11 @@ double bolt_scale(const Bolt& bolt, const BoltStrip& strip, double row_spacing);
 
 /// The steel as the model needs it.
 struct BoltSteelModel {
-  Material crack;                ///< bolt-steel crack material (law kBoltSteel), scaled by f
-  double triangle_modulus = 0;   ///< uniaxial modulus of the strip's triangles, f E_tri [Pa]
-  double scale = 1;              ///< f
-  double yield_flexibility = 0;  ///< g
-  double transverse_density = 0; ///< q [1/m]
+  Material crack;                 ///< bolt-steel crack material (law kBoltSteel), scaled by f
+  double triangle_modulus = 0;    ///< uniaxial modulus of the strip's triangles, f E_tri [Pa]
+  double scale = 1;               ///< f
+  double yield_flexibility = 0;   ///< g
+  double transverse_density = 0;  ///< q [1/m]
 };
 
 /// Calibrates the steel to the strip (header comment). Throws InputError
@@ -89,7 +89,6 @@ BoltSteelModel bolt_steel_model(const BoltSteel& steel, double row_spacing, cons
 /// and strengths multiplied by 1 / s_b and no mesh calibration (GfI from
 /// the ultimate strain over `crack_spacing`, the mean distance between
 /// cracks across the bolt).
-Material row_spacing_scaled_steel(const BoltSteel& steel, double row_spacing,
-                                  double crack_spacing);
+Material row_spacing_scaled_steel(const BoltSteel& steel, double row_spacing, double crack_spacing);
 
 }  // namespace rockfdem::fdem

@@ -99,9 +99,9 @@ void check_environment();
 /// What quasi-static mass scaling did (mass_scaling_report()).
 struct MassScalingReport {
   bool enabled = false;
-  double target_dt = 0;     ///< the step the masses were scaled for, with local damping [s]
-  double max_factor = 1;    ///< largest triangle density factor
-  double mass_ratio = 1;    ///< scaled over true mass of the active triangles
+  double target_dt = 0;       ///< the step the masses were scaled for, with local damping [s]
+  double max_factor = 1;      ///< largest triangle density factor
+  double mass_ratio = 1;      ///< scaled over true mass of the active triangles
   long scaled_triangles = 0;  ///< active triangles with a factor above 1
 };
 

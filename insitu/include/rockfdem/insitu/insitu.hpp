@@ -154,19 +154,19 @@ struct InsituField {
   double alpha = 1;
   bool lining_installed = false;
 
-  std::vector<Stress> stress;           ///< per mesh triangle (0 where removed)
-  std::vector<std::uint8_t> active;     ///< per mesh triangle: 1 if in the system
-  std::vector<double> ux, uy;           ///< per mesh vertex [m] (0 where removed)
+  std::vector<Stress> stress;        ///< per mesh triangle (0 where removed)
+  std::vector<std::uint8_t> active;  ///< per mesh triangle: 1 if in the system
+  std::vector<double> ux, uy;        ///< per mesh vertex [m] (0 where removed)
 
   // Solver report.
-  std::string solver;                   ///< "direct", "amg-cg", "direct (cg failed: ...)"
-  int iterations = 0;                   ///< CG iterations (0 for direct)
+  std::string solver;  ///< "direct", "amg-cg", "direct (cg failed: ...)"
+  int iterations = 0;  ///< CG iterations (0 for direct)
   std::size_t n_dofs = 0;
   std::size_t n_cells = 0;
-  double setup_seconds = 0;             ///< triangulation, dofs, sparsity
+  double setup_seconds = 0;  ///< triangulation, dofs, sparsity
   double assembly_seconds = 0;
-  double solve_seconds = 0;             ///< including AMG setup / factorisation
-  double postprocess_seconds = 0;       ///< stresses, displacements, checks
+  double solve_seconds = 0;        ///< including AMG setup / factorisation
+  double postprocess_seconds = 0;  ///< stresses, displacements, checks
   double total_seconds = 0;
   /// ||K u - f|| over free dofs / ||in-situ nodal forces||: the equilibrium
   /// the solve reached (the explicit engine's unbalanced-force ratio).
@@ -193,10 +193,10 @@ std::string timing_table(const std::vector<InsituField>& fields);
 
 /// A circular hole of radius a at the origin in an infinite plate.
 struct KirschCase {
-  double a = 0;          ///< hole radius [m]
-  double sH = 0, sV = 0; ///< far field, compression positive [Pa]
-  double angle_deg = 0;  ///< direction of sH from +x [deg]
-  double E = 0, nu = 0;  ///< rock (plane strain)
+  double a = 0;           ///< hole radius [m]
+  double sH = 0, sV = 0;  ///< far field, compression positive [Pa]
+  double angle_deg = 0;   ///< direction of sH from +x [deg]
+  double E = 0, nu = 0;   ///< rock (plane strain)
 };
 
 /// Kirsch stress at (x, y), r >= a; TENSION POSITIVE.
@@ -210,8 +210,7 @@ double kirsch_radial_displacement(const KirschCase& k, double r, double theta);
 /// rock) from 1 to alpha in hydrostatic far field p (compression positive):
 /// (S a/(2K)) [(K + mu)/(alpha K + mu) - 1] with S = -p, K = lambda + mu.
 /// Outward positive [m].
-double core_softening_wall_displacement(double alpha, double p, double a, double E,
-                                        double nu);
+double core_softening_wall_displacement(double alpha, double p, double a, double E, double nu);
 
 struct KirschRow {
   int triangle = 0;

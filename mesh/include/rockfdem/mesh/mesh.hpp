@@ -22,15 +22,15 @@ enum Zone : int {
 /// exactly one triangle; interface edges (excavation, lining inner face)
 /// have two.
 enum EdgeTag : int {
-  kBottom = 1,      ///< outer boundary y = ymin (UCS: lower platen)
-  kRight = 2,       ///< outer boundary x = xmax
-  kTop = 3,         ///< outer boundary y = ymax (UCS: upper platen)
-  kLeft = 4,        ///< outer boundary x = xmin
-  kExcavation = 5,  ///< tunnel boundary: rock (outside) against lining/core
-  kLiningInner = 6, ///< lining ring against core
-  kRim = 7,         ///< Brazilian disc rim outside the loading arcs
-  kLoadTop = 8,     ///< Brazilian disc upper loading arc
-  kLoadBottom = 9,  ///< Brazilian disc lower loading arc
+  kBottom = 1,       ///< outer boundary y = ymin (UCS: lower platen)
+  kRight = 2,        ///< outer boundary x = xmax
+  kTop = 3,          ///< outer boundary y = ymax (UCS: upper platen)
+  kLeft = 4,         ///< outer boundary x = xmin
+  kExcavation = 5,   ///< tunnel boundary: rock (outside) against lining/core
+  kLiningInner = 6,  ///< lining ring against core
+  kRim = 7,          ///< Brazilian disc rim outside the loading arcs
+  kLoadTop = 8,      ///< Brazilian disc upper loading arc
+  kLoadBottom = 9,   ///< Brazilian disc lower loading arc
 };
 
 struct TaggedEdge {
@@ -40,11 +40,11 @@ struct TaggedEdge {
 };
 
 struct Mesh {
-  std::vector<double> x, y;                 ///< vertex coordinates [m]
-  std::vector<std::array<int, 3>> triangles;///< counter-clockwise vertex ids
-  std::vector<int> zone;                    ///< per triangle: a Zone
-  std::vector<std::uint8_t> fracture;       ///< per triangle: 1 where crack elements are allowed
-  std::vector<TaggedEdge> edges;            ///< tagged boundary and interface edges
+  std::vector<double> x, y;                   ///< vertex coordinates [m]
+  std::vector<std::array<int, 3>> triangles;  ///< counter-clockwise vertex ids
+  std::vector<int> zone;                      ///< per triangle: a Zone
+  std::vector<std::uint8_t> fracture;         ///< per triangle: 1 where crack elements are allowed
+  std::vector<TaggedEdge> edges;              ///< tagged boundary and interface edges
 
   std::size_t n_vertices() const { return x.size(); }
   std::size_t n_triangles() const { return triangles.size(); }

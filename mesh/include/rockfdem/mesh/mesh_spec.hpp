@@ -18,7 +18,8 @@ struct TunnelSpec {
   double height = 8.8;          ///< horseshoe, arched, rectangular: floor to crown
   double rise = 0;              ///< arched: rise of the arch above the walls (0 < rise <= span/2)
   double lining_thickness = 0;  ///< 0: no lining ring
-  double fracture_zone = 0;     ///< crack elements allowed within this distance outside the opening; 0: none
+  double fracture_zone =
+      0;  ///< crack elements allowed within this distance outside the opening; 0: none
 };
 
 struct DomainSpec {
@@ -29,25 +30,25 @@ struct DomainSpec {
 };
 
 struct SpecimenSpec {
-  double width = 0.05;     ///< UCS specimen width
-  double height = 0.1;     ///< UCS specimen height
-  double diameter = 0.05;  ///< Brazilian disc diameter
-  double load_arc_deg = 10;///< Brazilian disc: angle of each loading arc
+  double width = 0.05;       ///< UCS specimen width
+  double height = 0.1;       ///< UCS specimen height
+  double diameter = 0.05;    ///< Brazilian disc diameter
+  double load_arc_deg = 10;  ///< Brazilian disc: angle of each loading arc
 };
 
 struct MshFileSpec {
-  std::string path;                          ///< user's .msh file
-  std::map<std::string, int> zone_groups;    ///< 2D physical group name -> Zone
-  std::map<std::string, int> edge_groups;    ///< 1D physical group name -> EdgeTag
-  std::string fracture_group;                ///< 2D physical group where cracks are allowed ("" = all rock)
+  std::string path;                        ///< user's .msh file
+  std::map<std::string, int> zone_groups;  ///< 2D physical group name -> Zone
+  std::map<std::string, int> edge_groups;  ///< 1D physical group name -> EdgeTag
+  std::string fracture_group;  ///< 2D physical group where cracks are allowed ("" = all rock)
 };
 
 struct MeshSizeSpec {
   double size_near = 0.5;       ///< element size at the tunnel boundary (specimens: everywhere)
   double size_far = 5.0;        ///< element size at the outer boundary
   double grading_distance = 0;  ///< distance from the tunnel over which size grows; 0: automatic
-  int algorithm = 5;            ///< gmsh Mesh.Algorithm (5 = Delaunay: unstructured, see docs/meshing.md)
-  int threads = 0;              ///< gmsh General.NumThreads (0 = OpenMP default)
+  int algorithm = 5;  ///< gmsh Mesh.Algorithm (5 = Delaunay: unstructured, see docs/meshing.md)
+  int threads = 0;    ///< gmsh General.NumThreads (0 = OpenMP default)
 };
 
 struct MeshSpec {

@@ -31,8 +31,8 @@ struct OpeningBoundary {
   /// Boundary edges (vertex ids), each running with the rock on its left:
   /// clockwise around the opening.
   std::vector<std::array<int, 2>> edges;
-  double area = 0;          ///< area enclosed [m^2] (> 0)
-  double cx = 0, cy = 0;    ///< centroid of the enclosed area [m]
+  double area = 0;                                ///< area enclosed [m^2] (> 0)
+  double cx = 0, cy = 0;                          ///< centroid of the enclosed area [m]
   double xmin = 0, xmax = 0, ymin = 0, ymax = 0;  ///< bounding box of the boundary [m]
 };
 
@@ -60,11 +60,11 @@ struct KeyPoint {
 /// boundary's bounding box, the arch radius or rise from the spec):
 /// | shape | axis x | wall height | shoulder rays |
 /// | circular | box centre | centre | 45 deg from the centre |
-/// | horseshoe | box centre | midway springline (ymax - span/2) - floor | 45 deg from the arch centre |
-/// | arched | box centre | midway springing (ymax - rise) - floor | from the arch centre through the springing points |
-/// | rectangular | box centre | mid-height | from the centre through the top corners |
-/// Without `shape` (a user's mesh): everything from the area centroid,
-/// walls at its height, shoulders at 45 deg.
+/// | horseshoe | box centre | midway springline (ymax - span/2) - floor | 45 deg from the arch
+/// centre | | arched | box centre | midway springing (ymax - rise) - floor | from the arch centre
+/// through the springing points | | rectangular | box centre | mid-height | from the centre through
+/// the top corners | Without `shape` (a user's mesh): everything from the area centroid, walls at
+/// its height, shoulders at 45 deg.
 std::vector<KeyPoint> opening_key_points(const Mesh& m, const OpeningBoundary& b,
                                          const TunnelSpec* shape);
 

@@ -8,16 +8,17 @@
 namespace rockfdem::workflows {
 
 struct CommandLine {
-  std::string command;   ///< run, check, mesh, insitu ("" with --help/--version)
-  std::string scene;     ///< scene file; empty: the built-in default (run only)
+  std::string command;  ///< run, check, mesh, insitu ("" with --help/--version)
+  std::string scene;    ///< scene file; empty: the built-in default (run only)
   std::string output_dir = "rockfdem-out";
-  int threads = 0;       ///< 0: all cores
+  int threads = 0;                     ///< 0: all cores
   std::vector<std::string> overrides;  ///< --set section.key=value
   bool quiet = false;
-  bool force = false;    ///< overwrite another scene's results in the output directory
-  long checkpoint_every = -1;  ///< steps between checkpoints; -1: the scene's output.checkpoint_every
-  std::string restart;         ///< checkpoint to continue from; empty: start afresh
-  bool force_dt = false;       ///< accept an engine.dt above the stability limit
+  bool force = false;  ///< overwrite another scene's results in the output directory
+  long checkpoint_every =
+      -1;                 ///< steps between checkpoints; -1: the scene's output.checkpoint_every
+  std::string restart;    ///< checkpoint to continue from; empty: start afresh
+  bool force_dt = false;  ///< accept an engine.dt above the stability limit
   bool help = false;
   bool version = false;
   bool scene_reference = false;

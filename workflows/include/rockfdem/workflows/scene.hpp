@@ -30,10 +30,10 @@ struct MaterialSpec {
 };
 
 struct InsituSettings {
-  double sigma_h = 0;          ///< Pa, compression positive
-  double sigma_v = 0;          ///< Pa, compression positive
-  double angle_deg = 0;        ///< rotation of sigma_h from x, counter-clockwise
-  double unit_weight = 0;      ///< N/m^3
+  double sigma_h = 0;      ///< Pa, compression positive
+  double sigma_v = 0;      ///< Pa, compression positive
+  double angle_deg = 0;    ///< rotation of sigma_h from x, counter-clockwise
+  double unit_weight = 0;  ///< N/m^3
   bool kirsch_boundary = false;
   std::vector<double> alpha{1.0};
   bool lining_active = false;
@@ -46,15 +46,15 @@ struct InsituSettings {
 
 struct EngineSettings {
   long steps = 10000;
-  double dt = 0;            ///< s; 0: automatic
+  double dt = 0;  ///< s; 0: automatic
   double dt_safety = 0.8;
   double damping_ratio = 0.1;
   /// Cundall local damping; -1: the kind's default (kTunnelLocalDamping in
   /// tunnel stages, none in specimen runs). Shown in the run summary.
   double local_damping = -1;
-  double mass_damping = 0;  ///< 1/s
+  double mass_damping = 0;       ///< 1/s
   bool kinetic_damping = false;  ///< Cundall's kinetic damping in tunnel stages
-  double gravity = 0;       ///< m/s^2, acting in -y
+  double gravity = 0;            ///< m/s^2, acting in -y
   bool mass_scaling = false;     ///< quasi-static mass scaling (engine.mass_scaling resolved)
   double mass_scaling_dt = 0;    ///< s; 0: automatic
   double platen_velocity = 0.5;  ///< m/s, each platen (specimens)
@@ -122,7 +122,7 @@ struct OutputSettings {
 };
 
 struct Scene {
-  std::string source;    ///< the scene file's path, or "default"
+  std::string source;  ///< the scene file's path, or "default"
   std::string title;
   bool plane_stress = false;
   mesh::MeshSpec mesh;
@@ -134,7 +134,8 @@ struct Scene {
   GroutSettings grout;
   BondSettings lining_interface;  ///< re-joins the lining-rock crack elements at installation
   OutputSettings output;
-  std::string canonical;  ///< the validated scene as TOML (overrides applied), for hashing and records
+  std::string
+      canonical;  ///< the validated scene as TOML (overrides applied), for hashing and records
   /// canonical without output.checkpoint_every: what a checkpoint must match
   std::string restart_key;
 };

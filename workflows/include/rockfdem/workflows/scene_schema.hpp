@@ -11,15 +11,17 @@ namespace rockfdem::workflows {
 enum class KeyType { kNumber, kInteger, kBool, kString, kChoice, kNumberArray, kStringMap };
 
 struct KeySpec {
-  std::string path;          ///< dotted path; "[]" marks an array of tables, e.g. "stages[].kind"
+  std::string path;  ///< dotted path; "[]" marks an array of tables, e.g. "stages[].kind"
   KeyType type = KeyType::kNumber;
-  std::string unit;          ///< SI unit, "-" for dimensionless
-  std::string default_text;  ///< documented default; empty: none (required where the model needs it)
-  std::string default_doc;   ///< the reference's default where it depends on the model; empty: default_text
-  double min = -1e300;       ///< lower bound for numbers (and array elements)
-  double max = 1e300;        ///< upper bound
-  bool min_open = false;     ///< true: value must be > min (else >=)
-  bool max_open = false;     ///< true: value must be < max (else <=)
+  std::string unit;  ///< SI unit, "-" for dimensionless
+  std::string
+      default_text;  ///< documented default; empty: none (required where the model needs it)
+  std::string
+      default_doc;  ///< the reference's default where it depends on the model; empty: default_text
+  double min = -1e300;               ///< lower bound for numbers (and array elements)
+  double max = 1e300;                ///< upper bound
+  bool min_open = false;             ///< true: value must be > min (else >=)
+  bool max_open = false;             ///< true: value must be < max (else <=)
   std::vector<std::string> choices;  ///< allowed strings (kChoice, and kStringMap values)
   std::string description;
 };
