@@ -155,3 +155,20 @@ TEST(OutputDir, force_removes_an_earlier_runs_outputs_and_nothing_else) {
   EXPECT_EQ(names_in(out), left);
   fs::remove_all(out);
 }
+
+// The same scene spelled relative to another folder, with ./, or by its
+// absolute path is the same scene: a second command into the folder the
+// first claimed is not refused as "another scene" (a restart was).
+TEST(OutputDir, same_scene_under_another_spelling_is_the_same_scene) {
+  const fs::path out = scratch("spelling");
+  ASSERT_EQ(run("mesh " + kCircular + " -q -o " + out.string()).code, 0);
+  const std::string dir = fs::path(kCircular).parent_path().string();
+  for (const std::string& spelled : {std::string("good_circular.toml"),
+                                     std::string("./good_circular.toml")}) {
+    const Result r = run("mesh " + spelled + " -q -o " + out.string(), "cd '" + dir + "' &&");
+    EXPECT_EQ(r.code, 0) << spelled << ": " << r.output;
+  }
+  // Another scene still is another scene.
+  EXPECT_EQ(run("mesh " + kTestDir + "/elastic_circular.toml -q -o " + out.string()).code, 2);
+  fs::remove_all(out);
+}

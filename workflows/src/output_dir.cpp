@@ -80,9 +80,20 @@ bool is_checkpoint_file(const std::string& name) {
   return numbered(name, "checkpoint_", ".rfck") || name.rfind(".checkpoint_", 0) == 0;
 }
 
+// The scene file as one path however it was spelled (./x.toml, x.toml,
+// /abs/x.toml), so that a restart or rerun of the same scene is not taken
+// for another's; "default" stays as it is.
+std::string scene_identity(const Scene& scene) {
+  if (scene.source == "default") return scene.source;
+  std::error_code ec;
+  const fs::path p = fs::weakly_canonical(fs::absolute(scene.source, ec), ec);
+  return ec ? scene.source : p.string();
+}
+
 std::string owner_record(const Scene& scene) {
   std::ostringstream out;
-  out << scene.source << '\n' << std::hex << std::hash<std::string>{}(scene.canonical) << '\n';
+  out << scene_identity(scene) << '\n'
+      << std::hex << std::hash<std::string>{}(scene.canonical) << '\n';
   return out.str();
 }
 
