@@ -163,8 +163,8 @@ TEST(OutputDir, same_scene_under_another_spelling_is_the_same_scene) {
   const fs::path out = scratch("spelling");
   ASSERT_EQ(run("mesh " + kCircular + " -q -o " + out.string()).code, 0);
   const std::string dir = fs::path(kCircular).parent_path().string();
-  for (const std::string& spelled : {std::string("good_circular.toml"),
-                                     std::string("./good_circular.toml")}) {
+  for (const std::string& spelled :
+       {std::string("good_circular.toml"), std::string("./good_circular.toml")}) {
     const Result r = run("mesh " + spelled + " -q -o " + out.string(), "cd '" + dir + "' &&");
     EXPECT_EQ(r.code, 0) << spelled << ": " << r.output;
   }

@@ -277,6 +277,14 @@ void RunOutputs::restore(const nlohmann::json& s, const std::string& from_dir) {
     ++frame_;
   }
   if (frame_ > 0) pvd_.write();
+  // Files an earlier stage wrote once, which the summary names.
+  if (!same_dir)
+    for (const char* name : {"grouted_cracks.csv"}) {
+      std::error_code ec;
+      if (fs::exists(output_path(from_dir, name), ec))
+        fs::copy_file(output_path(from_dir, name), output_path(cli_.output_dir, name),
+                      fs::copy_options::overwrite_existing, ec);
+    }
 }
 
 void RunOutputs::lining_outputs(const fdem::Engine& e, const mesh::Mesh& m) {
