@@ -1,7 +1,10 @@
 // What a command leaves in OUTDIR: nothing at all when it refuses its input
 // (exit 2), and after --force the new run's outputs beside the user's own
 // files, with none of an earlier run's left over.
+#include <fcntl.h>
 #include <gtest/gtest.h>
+#include <sys/file.h>
+#include <unistd.h>
 
 #include <filesystem>
 #include <functional>
@@ -150,8 +153,10 @@ TEST(OutputDir, force_removes_an_earlier_runs_outputs_and_nothing_else) {
   ASSERT_TRUE(fs::exists(out / "bolt_00.csv"));
   ASSERT_TRUE(fs::exists(out / "checkpoints"));
   ASSERT_EQ(run("mesh " + kCircular + " -q --force -o " + out.string()).code, 0);
-  const std::set<std::string> left{".rockfdem-scene", "mesh.msh",       "mesh.vtu", "summary.json",
-                                   "notes.txt",       "fdem_notes.vtu", "sub"};
+  // .rockfdem-lock: the folder's run lock (one run per folder).
+  const std::set<std::string> left{
+      ".rockfdem-lock", ".rockfdem-scene", "mesh.msh",       "mesh.vtu",
+      "summary.json",   "notes.txt",       "fdem_notes.vtu", "sub"};
   EXPECT_EQ(names_in(out), left);
   fs::remove_all(out);
 }
@@ -170,5 +175,27 @@ TEST(OutputDir, same_scene_under_another_spelling_is_the_same_scene) {
   }
   // Another scene still is another scene.
   EXPECT_EQ(run("mesh " + kTestDir + "/elastic_circular.toml -q -o " + out.string()).code, 2);
+  fs::remove_all(out);
+}
+
+// One run per folder: while another process holds the folder's lock, a
+// run into it is refused with exit 2 naming the holder's PID, and writes
+// nothing; once the holder is gone (the kernel drops the lock) it runs.
+TEST(OutputDir, a_folder_in_use_by_another_run_is_refused_naming_its_pid) {
+  const fs::path out = scratch("locked");
+  fs::create_directories(out);
+  const int fd = ::open((out / ".rockfdem-lock").c_str(), O_RDWR | O_CREAT, 0644);
+  ASSERT_GE(fd, 0);
+  ASSERT_EQ(::flock(fd, LOCK_EX | LOCK_NB), 0);
+  const std::string pid = std::to_string(::getpid());
+  ASSERT_EQ(::write(fd, pid.data(), pid.size()), ssize_t(pid.size()));
+  Result r = run("mesh " + kCircular + " -q -o " + out.string());
+  EXPECT_EQ(r.code, 2) << r.output;
+  EXPECT_NE(r.output.find("in use by another rockfdem run (PID " + pid + ")"), std::string::npos)
+      << r.output;
+  EXPECT_FALSE(fs::exists(out / "summary.json"));
+  ::close(fd);
+  r = run("mesh " + kCircular + " -q -o " + out.string());
+  EXPECT_EQ(r.code, 0) << r.output;
   fs::remove_all(out);
 }

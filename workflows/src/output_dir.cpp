@@ -1,5 +1,9 @@
 #include "output_dir.hpp"
 
+#include <fcntl.h>
+#include <sys/file.h>
+#include <unistd.h>
+
 #include <algorithm>
 #include <cctype>
 #include <filesystem>
@@ -17,6 +21,38 @@ namespace rockfdem::workflows {
 namespace {
 
 constexpr const char* kOwnerFile = ".rockfdem-scene";
+constexpr const char* kLockFile = ".rockfdem-lock";
+
+// One run per folder: an exclusive flock on OUTDIR/.rockfdem-lock, held
+// until the process ends (the kernel releases it on any death, kill -9
+// included), with the holder's PID in the file for the message. A second
+// claim of the same folder by this process keeps the lock it has.
+void lock_output_dir(const std::string& dir) {
+  static std::string held;
+  std::error_code ec;
+  if (!held.empty() && fs::equivalent(held, dir, ec)) return;
+  const std::string path = (fs::path(dir) / kLockFile).string();
+  const int fd = ::open(path.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
+  if (fd < 0) throw InputError("output directory " + dir + ": cannot create " + kLockFile);
+  if (::flock(fd, LOCK_EX | LOCK_NB) != 0) {
+    char pid[32] = {0};
+    const ssize_t n = ::pread(fd, pid, sizeof pid - 1, 0);
+    ::close(fd);
+    std::string holder(pid, n > 0 ? std::size_t(n) : 0);
+    holder.erase(
+        std::remove_if(holder.begin(), holder.end(),
+                       [](char c) { return !std::isdigit(static_cast<unsigned char>(c)); }),
+        holder.end());
+    throw InputError("output directory " + dir + ": in use by another rockfdem run (PID " +
+                     (holder.empty() ? std::string("unknown") : holder) +
+                     "); wait for it to end or choose another -o");
+  }
+  const std::string me = std::to_string(::getpid()) + "\n";
+  if (::ftruncate(fd, 0) != 0 || ::pwrite(fd, me.data(), me.size(), 0) < 0) {
+    // The lock holds without the PID; the message then says "unknown".
+  }
+  held = dir;  // fd stays open: the lock lasts as long as the process
+}
 
 // Every name a command writes into OUTDIR (workflow.md, "Monitors and
 // results"); numbered files are matched by prefix, digits and suffix.
@@ -147,6 +183,7 @@ bool prepare_output_dir(const std::string& dir, const Scene& scene, bool force,
   }
   fs::create_directories(dir, ec);
   if (ec) throw InputError("output directory " + dir + ": cannot create: " + ec.message());
+  lock_output_dir(dir);
   // Frames or plots of a longer earlier run must not sit beside the new ones.
   if (force && claimed && !keep_previous) remove_previous_outputs(dir);
   coupling::atomic_write_text(owner, owner_record(scene));
