@@ -203,3 +203,17 @@ TEST(Heterogeneity, same_seed_same_bits_for_any_thread_count) {
   EXPECT_NE(hash[1], hash[2]);
   EXPECT_NE(hash[1], hash[3]);
 }
+
+// An in-situ stress far above the rock's stiffness (1e10 Pa on E 3e9 Pa,
+// 3.3 times) inverts triangles in the implicit field: refused with exit 2
+// naming the ratio and the keys, before anything is written (the run used
+// to fail at its 16th explicit step with advice about dt).
+TEST(ImplicitField, stress_above_the_modulus_is_refused_naming_the_ratio) {
+  const fs::path out = scratch("inverted");
+  const Result r = run("run " + kTestDir + "/support_pair_unsupported.toml -q -o " + out.string() +
+                       " --set insitu.sigma_h=1e10 --set insitu.sigma_v=1e10");
+  EXPECT_EQ(r.code, 2) << r.output;
+  EXPECT_NE(r.output.find("inverts"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("3.33 times the rock's Young's modulus"), std::string::npos) << r.output;
+  EXPECT_FALSE(fs::exists(out));
+}

@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include "commands.hpp"
+#include "implicit_check.hpp"
 #include "output_dir.hpp"
 #include "phase_timer.hpp"
 #include "rockfdem/coupling/atomic_file.hpp"
@@ -65,6 +66,7 @@ int command_insitu(const Scene& scene, const CommandLine& cli) {
   timer.stamp("mesh");
   const std::vector<insitu::InsituField> fields = insitu::solve_insitu(m, spec);
   active_threads();
+  check_implicit_field(scene, m, fields);
   timer.stamp("insitu");
 
   mesh::write_msh(m, output_path(cli.output_dir, "mesh.msh"));

@@ -27,6 +27,7 @@
 #include "commands.hpp"
 #include "continuum_comparison.hpp"
 #include "history.hpp"
+#include "implicit_check.hpp"
 #include "interrupt.hpp"
 #include "monitors.hpp"
 #include "output_dir.hpp"
@@ -210,6 +211,7 @@ int run_tunnel(const Scene& scene, const CommandLine& cli) {
 
   const std::vector<insitu::InsituField> fields = insitu::solve_insitu(m, insitu_spec(scene));
   active_threads();
+  check_implicit_field(scene, m, fields);
   timer.stamp("insitu");
   stop_if_interrupted(scene, summary, cli, timer, "the implicit stage");
 
