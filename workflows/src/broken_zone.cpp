@@ -7,6 +7,7 @@
 #include <utility>
 #include <vector>
 
+#include "rockfdem/mesh/opening.hpp"
 #include "rockfdem/workflows/scene.hpp"
 
 namespace rockfdem::workflows {
@@ -47,10 +48,12 @@ std::vector<Segment> fracture_zone_edge(const mesh::Mesh& m) {
   return out;
 }
 
+// The opening's boundary as mesh/ finds it (the rock's inner boundary,
+// against core, lining or nothing): a user's .msh need not tag it.
 std::vector<Segment> excavation_boundary(const mesh::Mesh& m) {
   std::vector<Segment> out;
-  for (const mesh::TaggedEdge& e : m.edges)
-    if (e.tag == mesh::kExcavation) out.push_back(segment(m, e.a, e.b));
+  if (const auto b = mesh::find_opening(m))
+    for (const auto& e : b->edges) out.push_back(segment(m, e[0], e[1]));
   return out;
 }
 

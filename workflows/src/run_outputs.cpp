@@ -128,7 +128,6 @@ void RunOutputs::begin_history(const std::vector<Monitor>& monitors, const mesh:
   std::sort(boundary_vertices_.begin(), boundary_vertices_.end());
   boundary_vertices_.erase(std::unique(boundary_vertices_.begin(), boundary_vertices_.end()),
                            boundary_vertices_.end());
-  for (const Monitor& mon : monitors) monitor_names_.push_back(mon.name);
   monitors_ = monitors;
   std::vector<std::string> cols{
       "stage",    "step",      "time",        "kinetic_energy", "unbalanced_ratio",
@@ -415,6 +414,7 @@ void RunOutputs::damage_outputs(const fdem::Engine& e, const mesh::Mesh& m) {
       for (int t : owned) bolt_triangle[std::size_t(t)] = 1;
   }
   const BrokenZone z = broken_zone(e, m, r.h, bolt_triangle);
+  fracture_zone_depth_ = z.zone_depth;
   j["broken_zone"] = {
       {"broken_rock_cracks", z.broken},
       {"depth_m", z.depth},
@@ -438,8 +438,8 @@ void RunOutputs::plots(const fdem::Engine& e, const mesh::Mesh& m) {
   const std::vector<double> t = h.column("time");
   // Per key point, the displacement towards the opening; the chords apart.
   std::vector<coupling::PlotSeries> points;
-  for (const std::string& name : monitor_names_)
-    points.push_back({name, t, h.column(name + "_radial_mm")});
+  for (const Monitor& mon : monitors_)
+    points.push_back({mon.name, t, h.column(mon.name + "_radial_mm")});
   plots.xy("convergence.png", "Key points: displacement towards the opening", time_axis_label(e),
            "radial displacement [mm]", points);
   plots.xy("chord_convergence.png", "Chord convergence", time_axis_label(e), "closure [mm]",
@@ -456,8 +456,7 @@ void RunOutputs::plots(const fdem::Engine& e, const mesh::Mesh& m) {
   plots.final_mesh(e, m, fields_.empty() ? nullptr : &fields_.back(), 1,
                    "Minor principal stress [Pa], broken cracks in black");
   // The opening and its fracture zone, where the crack pattern shows.
-  const auto& z = summary_.json()["broken_zone"];
-  const double reach = z.is_object() ? z.value("fracture_zone_m", 0.0) + 1.0 : 0.0;
+  const double reach = fracture_zone_depth_ > 0 ? fracture_zone_depth_ + 1.0 : 0.0;
   double x0 = 1e300, x1 = -1e300, y0 = 1e300, y1 = -1e300;
   for (const Monitor& mon : monitors_)
     x0 = std::min(x0, mon.x), x1 = std::max(x1, mon.x), y0 = std::min(y0, mon.y),

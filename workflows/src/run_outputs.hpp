@@ -93,9 +93,9 @@ class RunOutputs {
   std::vector<int> boundary_vertices_;  ///< outer boundary, for the rigid translation
   mutable long fit_step_ = -1;          ///< step the cached fit belongs to
   mutable RigidFit fit_;
-  double max_rotation_deg_ = 0;  ///< largest |rotation| of the outer boundary so far
-  std::vector<std::string> monitor_names_;
-  std::vector<Monitor> monitors_;  ///< the key points, for the pictures' window
+  double max_rotation_deg_ = 0;     ///< largest |rotation| of the outer boundary so far
+  std::vector<Monitor> monitors_;   ///< the key points (history columns, pictures' window)
+  double fracture_zone_depth_ = 0;  ///< from damage_outputs, for broken_zone.png [m]
   std::vector<std::string> stage_names_;
   double handoff_dt_ = 0;    ///< dt of the hand-off step (0: not taken by this run's record)
   double energy_floor_ = 0;  ///< energy_floor of the model (set by begin_history)
