@@ -2,6 +2,7 @@
 
 #include <string>
 
+#include "array_legend.hpp"
 #include "principal_stress.hpp"
 #include "rockfdem/error.hpp"
 
@@ -54,19 +55,23 @@ void add_node_arrays(const fdem::Engine& e, const insitu::InsituField* implicit,
   g.point_arrays.push_back(vector_array("velocity", 2, e.velocities()));
 }
 
-void add_triangle_arrays(const fdem::Engine& e, const mesh::Mesh& m, VtkGrid& g) {
+void add_triangle_arrays(const fdem::Engine& e, const mesh::Mesh& m,
+                         const insitu::InsituField* implicit, VtkGrid& g) {
   const std::size_t n = e.n_triangles();
-  std::vector<double> stress(3 * n), principal(2 * n);
+  std::vector<double> stress(4 * n), principal(2 * n);
   std::vector<std::int32_t> active(n);
   for (std::size_t t = 0; t < n; ++t) {
     const auto s = e.triangle_stress(t);
     const auto p = principal_stresses(s[0], s[1], s[2]);
-    std::copy(s.begin(), s.end(), stress.begin() + 3 * t);
+    const double zz0 = implicit ? implicit->stress[t].szz : 0.0;
+    const double zz = e.triangle_stress_zz(t, zz0);
+    const double full[4] = {s[0], s[1], zz, s[2]};
+    std::copy(full, full + 4, stress.begin() + 4 * t);
     principal[2 * t] = p[0];
     principal[2 * t + 1] = p[1];
     active[t] = e.active(t) ? 1 : 0;
   }
-  g.cell_arrays.push_back(triangle_cell_array(g, tensor_array("stress", 3, std::move(stress))));
+  g.cell_arrays.push_back(triangle_cell_array(g, tensor_array("stress", 4, std::move(stress))));
   g.cell_arrays.push_back(
       triangle_cell_array(g, vector_array("principal_stress", 2, std::move(principal))));
   g.cell_arrays.push_back(triangle_cell_array(
@@ -109,9 +114,16 @@ VtkGrid fdem_grid(const fdem::Engine& e, const mesh::Mesh& m, const insitu::Insi
     g.lines[c] = {nodes[0], nodes[1]};
   }
   add_node_arrays(e, implicit, g);
-  add_triangle_arrays(e, m, g);
+  add_triangle_arrays(e, m, implicit, g);
   add_crack_arrays(e, g);
+  add_array_legend(g.field);
   return g;
+}
+
+void add_frame_info(VtkGrid& g, const std::string& stage, long step, double time) {
+  g.field.text.push_back({"stage", stage});
+  g.field.numbers.push_back({"step", double(step)});
+  g.field.numbers.push_back({"time_s", time});
 }
 
 }  // namespace rockfdem::coupling

@@ -1,5 +1,6 @@
 #include "rockfdem/coupling/insitu_grid.hpp"
 
+#include "array_legend.hpp"
 #include "principal_stress.hpp"
 
 namespace rockfdem::coupling {
@@ -32,6 +33,9 @@ VtkGrid insitu_grid(const mesh::Mesh& m, const insitu::InsituField& field) {
       scalar_array("zone", std::vector<std::int32_t>(m.zone.begin(), m.zone.end())));
   g.cell_arrays.push_back(
       scalar_array("active", std::vector<std::int32_t>(field.active.begin(), field.active.end())));
+  add_array_legend(g.field);
+  g.field.numbers.push_back({"alpha", field.alpha});
+  g.field.numbers.push_back({"deconfinement", 1.0 - field.alpha});
   return g;
 }
 

@@ -134,6 +134,13 @@ void VtkGrid::validate() const {
   validate_cells("line", lines, n_points());
   validate_arrays("point", point_arrays, n_points());
   validate_arrays("cell", cell_arrays, n_cells());
+  std::set<std::string> names;
+  auto check_name = [&](const std::string& name) {
+    if (name.empty() || !names.insert(name).second)
+      throw std::invalid_argument("field data: name '" + name + "' is empty or used twice");
+  };
+  for (const auto& [name, value] : field.text) check_name(name);
+  for (const auto& [name, value] : field.numbers) check_name(name);
 }
 
 VtkArray triangle_cell_array(const VtkGrid& grid, VtkArray per_triangle) {

@@ -5,11 +5,13 @@
 #include <vtkCellArray.h>
 #include <vtkCellData.h>
 #include <vtkDoubleArray.h>
+#include <vtkFieldData.h>
 #include <vtkIntArray.h>
 #include <vtkNew.h>
 #include <vtkPointData.h>
 #include <vtkPoints.h>
 #include <vtkSmartPointer.h>
+#include <vtkStringArray.h>
 #include <vtkUnstructuredGrid.h>
 #include <vtkXMLUnstructuredGridWriter.h>
 
@@ -96,6 +98,21 @@ vtkSmartPointer<vtkDataArray> to_vtk_array(const VtkArray& a) {
   return to_vtk_array<vtkDoubleArray>(a, std::get<std::vector<double>>(a.values));
 }
 
+void add_field_data(const VtkFieldData& field, vtkFieldData& out) {
+  for (const auto& [name, value] : field.text) {
+    vtkNew<vtkStringArray> a;
+    a->SetName(name.c_str());
+    a->InsertNextValue(value);
+    out.AddArray(a);
+  }
+  for (const auto& [name, value] : field.numbers) {
+    vtkNew<vtkDoubleArray> a;
+    a->SetName(name.c_str());
+    a->InsertNextValue(value);
+    out.AddArray(a);
+  }
+}
+
 vtkSmartPointer<vtkUnstructuredGrid> to_vtk_grid(const VtkGrid& grid) {
   auto ug = vtkSmartPointer<vtkUnstructuredGrid>::New();
   vtkNew<vtkPoints> points;
@@ -116,6 +133,7 @@ vtkSmartPointer<vtkUnstructuredGrid> to_vtk_grid(const VtkGrid& grid) {
   }
   for (const VtkArray& a : grid.point_arrays) ug->GetPointData()->AddArray(to_vtk_array(a));
   for (const VtkArray& a : grid.cell_arrays) ug->GetCellData()->AddArray(to_vtk_array(a));
+  add_field_data(grid.field, *ug->GetFieldData());
   return ug;
 }
 

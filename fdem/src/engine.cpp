@@ -42,6 +42,7 @@ detail::SolidConstants solid_constants(const Material& m, Plane plane) {
   s.lambda =
       plane == Plane::kStrain ? e * nu / ((1.0 + nu) * (1.0 - 2.0 * nu)) : e * nu / (1.0 - nu * nu);
   s.rho = m.density;
+  s.plane_strain = plane == Plane::kStrain;
   s.cp = std::sqrt((s.lambda + 2.0 * s.mu) / s.rho);
   s.cs = std::sqrt(s.mu / s.rho);
   return s;
@@ -554,6 +555,11 @@ std::array<double, 3> Engine::triangle_stress(std::size_t t) const {
   check_index(t, n_triangles(), "triangle");
   double j;
   return detail::triangle_stress(impl_->d, t, j);
+}
+
+double Engine::triangle_stress_zz(std::size_t t, double sigma0_zz) const {
+  check_index(t, n_triangles(), "triangle");
+  return detail::triangle_stress_zz(impl_->d, t, sigma0_zz);
 }
 
 double Engine::crack_damage(std::size_t c) const {

@@ -37,7 +37,7 @@ void fields(Ar& ar, Material& m) {
 
 template <class Ar>
 void fields(Ar& ar, SolidConstants& s) {
-  each_member(ar, s, s.mu, s.lambda, s.rho, s.cp, s.cs);
+  each_member(ar, s, s.mu, s.lambda, s.rho, s.cp, s.cs, s.plane_strain);
 }
 
 template <class Ar>

@@ -24,7 +24,8 @@ namespace rockfdem::fdem::detail {
 struct SolidConstants {
   double mu = 0, lambda = 0;  ///< Lame constants (lambda* in plane stress)
   double rho = 0;
-  double cp = 0, cs = 0;  ///< P and S wave speeds (absorbing boundaries)
+  double cp = 0, cs = 0;     ///< P and S wave speeds (absorbing boundaries)
+  bool plane_strain = true;  ///< sigma_zz follows from J (plane strain) or is 0 (plane stress)
 };
 
 struct Nodes {

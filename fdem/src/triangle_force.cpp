@@ -206,6 +206,18 @@ std::array<double, 3> triangle_stress(const EngineData& d, std::size_t t, double
   return sig;
 }
 
+double triangle_stress_zz(const EngineData& d, std::size_t t, double sigma0_zz) {
+  const SolidConstants& m = d.solids[d.tris.material[t]];
+  TriangleState s;
+  load_state(d, t, s);
+  if (!m.plane_strain || !(s.J > 0.0) || !d.tris.active[t]) return 0.0;
+  // B_zz = 1: only the volumetric term and the initial stress act along z.
+  const double* s0 = d.tris.sigma0.empty() ? nullptr : &d.tris.sigma0[3 * t];
+  const bool reset = !s0 || (s0[0] == 0.0 && s0[1] == 0.0 && s0[2] == 0.0);
+  const double initial = reset ? 0.0 : sigma0_zz / s.J;
+  return d.tris.alpha[t] * (0.5 * m.lambda * (s.J - 1.0 / s.J) + initial);
+}
+
 namespace {
 
 /// W(F) of Munjiza's law per reference area.

@@ -15,6 +15,9 @@ long triangle_forces(EngineData& d);
 /// Cauchy stress (sxx, syy, sxy) of triangle t; J receives the Jacobian.
 std::array<double, 3> triangle_stress(const EngineData& d, std::size_t t, double& J);
 
+/// Out-of-plane stress of triangle t (Engine::triangle_stress_zz).
+double triangle_stress_zz(const EngineData& d, std::size_t t, double sigma0_zz);
+
 /// Hyperelastic energy A0 alpha W(F) of triangle t (initial stress excluded):
 /// W = mu/2 (tr B - 2) - mu ln J + lambda/4 (J^2 - 1 - 2 ln J), whose Cauchy
 /// stress is exactly (mu/J)(B - I) + (lambda/2)(J - 1/J) I.

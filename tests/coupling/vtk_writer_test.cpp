@@ -8,10 +8,12 @@
 #include <vtkCellData.h>
 #include <vtkDataArray.h>
 #include <vtkDoubleArray.h>
+#include <vtkFieldData.h>
 #include <vtkIntArray.h>
 #include <vtkNew.h>
 #include <vtkPointData.h>
 #include <vtkPoints.h>
+#include <vtkStringArray.h>
 #include <vtkUnstructuredGrid.h>
 #include <vtkXMLUnstructuredGridReader.h>
 
@@ -155,6 +157,30 @@ TEST(VtkWriter, round_trip_is_bit_exact_for_points_cells_and_arrays) {
   for (const VtkArray& a : g.cell_arrays) {
     expect_array_equal(a, ug->GetCellData()->GetArray(a.name.c_str()), 5);
   }
+}
+
+// Field data (stage, step, units) comes back as one value per name.
+TEST(VtkWriter, field_data_round_trips_as_text_and_numbers) {
+  const TempDir dir;
+  VtkGrid g = sample_grid();
+  g.field.text = {{"stage", "remove_core"}, {"units", "stress: Pa"}};
+  g.field.numbers = {{"step", 12345.0}, {"time_s", 1.0 / 3.0}};
+  write_vtu(g, dir.file("grid.vtu"));
+  const auto ug = read_vtu(dir.file("grid.vtu"));
+  vtkFieldData* f = ug->GetFieldData();
+  ASSERT_NE(f, nullptr);
+  for (const auto& [name, value] : g.field.text) {
+    auto* a = vtkStringArray::SafeDownCast(f->GetAbstractArray(name.c_str()));
+    ASSERT_NE(a, nullptr) << name;
+    EXPECT_EQ(a->GetValue(0), value);
+  }
+  for (const auto& [name, value] : g.field.numbers) {
+    vtkDataArray* a = f->GetArray(name.c_str());
+    ASSERT_NE(a, nullptr) << name;
+    EXPECT_EQ(bits(a->GetTuple1(0)), bits(value));
+  }
+  g.field.numbers.push_back({"stage", 1.0});
+  EXPECT_THROW(g.validate(), std::invalid_argument);
 }
 
 TEST(VtkWriter, one_kind_arrays_are_padded_with_nan_or_minus_one) {

@@ -202,6 +202,37 @@ TEST(Triangle, small_strain_limit_is_hooke_plane_strain_and_stress) {
   EXPECT_NEAR(s[1], m.poisson * m.young / (1 - m.poisson * m.poisson) * eps, 1e-4 * m.young * eps);
 }
 
+// Out-of-plane stress: plane strain keeps eps_zz = 0, so small strains give
+// sigma_zz = nu (sxx + syy) (Hooke, independent of the law's form); an
+// initial sigma_zz adds to it, scaled by the stiffness factor like the
+// in-plane stress; plane stress has none (relative 1e-4 at strain 1e-6).
+TEST(Triangle, out_of_plane_stress_is_nu_times_in_plane_sum_in_plane_strain) {
+  const Material m = test::rock();
+  const double F[4] = {1 + 1e-6, 0.3e-6, 0.3e-6, 1 - 0.4e-6};
+  ModelInput in = single_triangle(m);
+  Engine strain(in);
+  place(strain, in, F);
+  const Stress s = strain.triangle_stress(0);
+  const double hooke = m.poisson * (s[0] + s[1]);
+  EXPECT_NEAR(strain.triangle_stress_zz(0, 0.0), hooke, 1e-4 * m.young * 1e-6);
+  // No initial in-plane stress was given: an initial zz alone is ignored
+  // (the engine reads zero in-plane stress as a reset one).
+  EXPECT_NEAR(strain.triangle_stress_zz(0, -5e6), hooke, 1e-4 * m.young * 1e-6);
+
+  in.initial_stress = {{-18.2e6, -11.4e6, 0.0}};
+  Engine pre(in);
+  const double zz0 = m.poisson * (-18.2e6 - 11.4e6);
+  EXPECT_DOUBLE_EQ(pre.triangle_stress_zz(0, zz0), zz0);
+  pre.set_stiffness_factor(0, 0.1);
+  EXPECT_NEAR(pre.triangle_stress_zz(0, zz0), 0.1 * zz0, 1e-12 * std::fabs(zz0));
+
+  in = single_triangle(m);
+  in.plane = Plane::kStress;
+  Engine stress(in);
+  place(stress, in, F);
+  EXPECT_EQ(stress.triangle_stress_zz(0, -5e6), 0.0);
+}
+
 // Core softening (reference sec. 5): the whole stress scales,
 // alpha (sigma0 + C:eps). Route A reaches the in-situ state by deformation
 // from zero, route B holds it as an initial stress on the deformed mesh;

@@ -42,7 +42,9 @@ void write_fields(const mesh::Mesh& m, const std::vector<insitu::InsituField>& f
     char name[32];
     std::snprintf(name, sizeof name, "insitu_%02zu.vtu", i);
     coupling::write_vtu(coupling::insitu_grid(m, fields[i]), output_path(dir, name));
-    pvd.add(double(i), name);
+    // ParaView plays a series in increasing time: the deconfinement 1 - alpha
+    // grows as the core softens (alpha itself is in each file's field data).
+    pvd.add(1.0 - fields[i].alpha, name);
   }
   pvd.write();
   coupling::write_vtu(coupling::insitu_grid(m, fields.back()), output_path(dir, "insitu.vtu"));

@@ -57,7 +57,9 @@ void write_frame(const fdem::Engine& e, const mesh::Mesh& m, const std::string& 
                  coupling::PvdCollection& pvd) {
   char name[32];
   std::snprintf(name, sizeof name, "fdem_%04d.vtu", frame);
-  coupling::write_vtu(coupling::fdem_grid(e, m), output_path(dir, name));
+  coupling::VtkGrid g = coupling::fdem_grid(e, m);
+  coupling::add_frame_info(g, "load_platens", e.step_count(), e.time());
+  coupling::write_vtu(g, output_path(dir, name));
   pvd.add(e.time(), name);
   pvd.write();
 }

@@ -172,7 +172,9 @@ void RunOutputs::record_step(const fdem::Engine& e, const mesh::Mesh& m,
   if (scene_.output.vtk) {
     char name[32];
     std::snprintf(name, sizeof name, "fdem_%04d.vtu", frame_++);
-    coupling::write_vtu(frame_grid(e, m), output_path(cli_.output_dir, name));
+    coupling::VtkGrid g = frame_grid(e, m);
+    coupling::add_frame_info(g, stage, e.step_count(), e.time());
+    coupling::write_vtu(g, output_path(cli_.output_dir, name));
     pvd_.add(e.time(), name);
     pvd_.write();
   }

@@ -27,10 +27,15 @@ fdem::ModelInput model_input(const mesh::Mesh& m, const std::map<int, fdem::Mate
 void apply_insitu(const insitu::InsituField& field, fdem::ModelInput& in);
 
 /// The engine's state: its own nodes (duplicated where cracks may open) with
-/// displacement and velocity; triangles with stress, principal stresses,
+/// displacement and velocity; triangles with stress (xx, yy, zz, xy; zz from
+/// the implicit field's szz and the engine's plane strain), principal stresses,
 /// zone, activity; crack elements as line cells with damage, state and mode.
 /// With `implicit`, displacements include the implicit stage's part.
 VtkGrid fdem_grid(const fdem::Engine& engine, const mesh::Mesh& m,
                   const insitu::InsituField* implicit = nullptr);
+
+/// Names the frame in its field data: the construction stage it ends, the
+/// engine step and the simulated time [s].
+void add_frame_info(VtkGrid& g, const std::string& stage, long step, double time);
 
 }  // namespace rockfdem::coupling

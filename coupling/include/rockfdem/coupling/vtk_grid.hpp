@@ -15,12 +15,15 @@
 // - vectors of 2 components are written as 3 (z = 0) so ParaView can warp
 //   and glyph with them; symmetric tensors of 3 (xx, yy, xy) or 4
 //   (xx, yy, zz, xy) components are written as full 9-component tensors
-//   (row-major xx xy xz yx yy yz zx zy zz) which ParaView's tensor filters read.
+//   (row-major xx xy xz yx yy yz zx zy zz) which ParaView's tensor filters read;
+// - field data (one value per file: stage, step, units, code tables) is
+//   text or a number, shown by ParaView's Information panel and spreadsheet.
 #pragma once
 
 #include <array>
 #include <cstdint>
 #include <string>
+#include <utility>
 #include <variant>
 #include <vector>
 
@@ -46,12 +49,19 @@ VtkArray vector_array(std::string name, int n_components, std::vector<double> va
 /// n_components = 3 (xx, yy, xy) or 4 (xx, yy, zz, xy).
 VtkArray tensor_array(std::string name, int n_components, std::vector<double> values);
 
+/// Values that describe the whole file rather than a point or cell.
+struct VtkFieldData {
+  std::vector<std::pair<std::string, std::string>> text;
+  std::vector<std::pair<std::string, double>> numbers;
+};
+
 struct VtkGrid {
   std::vector<double> x, y;                   ///< point coordinates [m]
   std::vector<std::array<int, 3>> triangles;  ///< point ids
   std::vector<std::array<int, 2>> lines;      ///< point ids (crack elements)
   std::vector<VtkArray> point_arrays;         ///< n_points() tuples each
   std::vector<VtkArray> cell_arrays;          ///< n_cells() tuples each: triangles, then lines
+  VtkFieldData field;                         ///< one value each, for the whole file
 
   std::size_t n_points() const { return x.size(); }
   std::size_t n_triangles() const { return triangles.size(); }

@@ -249,6 +249,12 @@ class Engine {
   std::array<double, 2> displacement(std::size_t node) const;
   /// Cauchy stress (sxx, syy, sxy) of triangle t in the current state.
   std::array<double, 3> triangle_stress(std::size_t t) const;
+  /// Out-of-plane Cauchy stress sigma_zz of triangle t: in plane strain
+  /// alpha ((lambda/2)(J - 1/J) + sigma0_zz / J), the law's zz stress
+  /// (F_zz = 1) plus the initial out-of-plane stress `sigma0_zz` the caller
+  /// kept (the engine holds only in-plane initial stress; it is dropped where
+  /// that was reset, as for a lining activated stress-free); 0 in plane stress.
+  double triangle_stress_zz(std::size_t t, double sigma0_zz) const;
   /// Largest damage of the element's three integration points.
   double crack_damage(std::size_t c) const;
   /// Factor k on the element's tensile strength and cohesion (strength
