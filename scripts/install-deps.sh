@@ -7,6 +7,7 @@ packages=(
   build-essential cmake ninja-build pkg-config
   libdeal.ii-dev libgmsh-dev libeigen3-dev libvtk9-dev
   libboost-program-options-dev libgtest-dev libtomlplusplus-dev nlohmann-json3-dev
+  libnlopt-cxx-dev libopenmpi-dev openmpi-bin
   xvfb xauth clang-format
 )
 

@@ -4,6 +4,7 @@
 #include <sstream>
 
 #include "rockfdem/error.hpp"
+#include "study_options.hpp"
 
 namespace po = boost::program_options;
 
@@ -17,6 +18,8 @@ const char* const kUsage =
     "  rockfdem check SCENE.toml     validate, print derived figures, run nothing\n"
     "  rockfdem mesh SCENE.toml      mesh only (mesh.msh, mesh.vtu, summary.json)\n"
     "  rockfdem insitu SCENE.toml    mesh + implicit in-situ stage\n"
+    "  [mpirun -np N] rockfdem sweep SCENE.toml --vary KEY=V1,V2,... [--samples N] [-o DIR]\n"
+    "  [mpirun -np N] rockfdem calibrate SCENE.toml --target NAME=VALUE --free KEY=LO:HI [-o DIR]\n"
     "  rockfdem --help | --version\n\n"
     "Without a scene, `run` uses the built-in default: the seed's horseshoe tunnel.\n"
     "Exit codes: 0 success, 2 bad input, 3 numerical failure, 1 anything else.\n";
@@ -43,6 +46,7 @@ po::options_description visible_options() {
 
 CommandLine parse_command_line(int argc, const char* const argv[]) {
   po::options_description visible = visible_options();
+  visible.add(study_options());
   po::options_description hidden;
   hidden.add_options()("command", po::value<std::string>(), "")("scene", po::value<std::string>(),
                                                                 "")("scene-reference", "");
@@ -79,9 +83,10 @@ CommandLine parse_command_line(int argc, const char* const argv[]) {
 
   if (cli.command.empty()) throw InputError("command line: no command given; see rockfdem --help");
   if (cli.command != "run" && cli.command != "check" && cli.command != "mesh" &&
-      cli.command != "insitu")
+      cli.command != "insitu" && cli.command != "sweep" && cli.command != "calibrate")
     throw InputError("command line: unknown command '" + cli.command +
-                     "'; allowed: run, check, mesh, insitu");
+                     "'; allowed: run, check, mesh, insitu, sweep, calibrate");
+  read_study_options(vm, cli);
   if (cli.scene.empty() && cli.command != "run")
     throw InputError("command line: `rockfdem " + cli.command + "` needs a scene file");
   if (cli.threads < 0 || cli.threads > 4096)

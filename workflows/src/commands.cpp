@@ -5,7 +5,9 @@
 #include <omp.h>
 
 #include <iostream>
+#include <map>
 
+#include "rockfdem/error.hpp"
 #include "rockfdem/fdem/engine.hpp"
 #include "rockfdem/workflows/cli.hpp"
 #include "rockfdem/workflows/scene_schema.hpp"
@@ -14,7 +16,14 @@
 namespace rockfdem::workflows {
 namespace {
 int g_threads = 1;
+
+std::map<std::string, Command>& registered() {
+  static std::map<std::string, Command> commands;
+  return commands;
 }
+}  // namespace
+
+void register_command(const std::string& name, Command command) { registered()[name] = command; }
 
 int active_threads() {
   omp_set_num_threads(g_threads);  // gmsh resets it to 1: put it back before each stage
@@ -43,6 +52,12 @@ int run_command(const CommandLine& cli) {
   if (cli.command == "check") return command_check(scene, cli);
   if (cli.command == "mesh") return command_mesh(scene, cli);
   if (cli.command == "insitu") return command_insitu(scene, cli);
+  if (cli.command != "run") {
+    const auto found = registered().find(cli.command);
+    if (found == registered().end())
+      throw InputError("command line: `rockfdem " + cli.command + "` is not in this build");
+    return found->second(scene, cli);
+  }
   return command_run(scene, cli);
 }
 

@@ -16,6 +16,11 @@ int run_tunnel(const Scene& scene, const CommandLine& cli);
 /// memory exceeds this machine's physical memory; runs before meshing.
 void refuse_if_too_large(const Scene& scene);
 
+/// Commands living in other libraries (sweep, calibrate: MPI and NLopt
+/// stay out of this one) sign up here before the command line runs.
+using Command = int (*)(const Scene& scene, const CommandLine& cli);
+void register_command(const std::string& name, Command command);
+
 /// The OpenMP thread count in force (after gmsh, which resets it).
 int active_threads();
 

@@ -8,11 +8,13 @@
 #include "rockfdem/error.hpp"
 #include "rockfdem/insitu/insitu.hpp"
 #include "rockfdem/workflows/cli.hpp"
+#include "study/register_study.hpp"
 
 int main(int argc, char** argv) {
   using namespace rockfdem;
   // MPI (for Trilinos' AMG in the implicit stage) lives as long as main().
   insitu::ScopedParallelInit parallel(argc, argv);
+  workflows::study::register_study_commands();
   try {
     const workflows::CommandLine cli = workflows::parse_command_line(argc, argv);
     return workflows::run_command(cli);

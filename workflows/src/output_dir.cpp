@@ -26,9 +26,11 @@ constexpr const char* kLockFile = ".rockfdem-lock";
 // One run per folder: an exclusive flock on OUTDIR/.rockfdem-lock, held
 // until the process ends (the kernel releases it on any death, kill -9
 // included), with the holder's PID in the file for the message. A second
-// claim of the same folder by this process keeps the lock it has.
+// claim of the same folder by this process keeps the lock it has; a claim
+// of another folder (the next run of a sweep) releases it.
 void lock_output_dir(const std::string& dir) {
   static std::string held;
+  static int held_fd = -1;
   std::error_code ec;
   if (!held.empty() && fs::equivalent(held, dir, ec)) return;
   const std::string path = (fs::path(dir) / kLockFile).string();
@@ -51,7 +53,9 @@ void lock_output_dir(const std::string& dir) {
   if (::ftruncate(fd, 0) != 0 || ::pwrite(fd, me.data(), me.size(), 0) < 0) {
     // The lock holds without the PID; the message then says "unknown".
   }
-  held = dir;  // fd stays open: the lock lasts as long as the process
+  if (held_fd >= 0) ::close(held_fd);
+  held = dir;  // fd stays open: the lock lasts until the process ends or claims another
+  held_fd = fd;
 }
 
 // Every name a command writes into OUTDIR (workflow.md, "Monitors and

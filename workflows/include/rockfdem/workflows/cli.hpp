@@ -7,8 +7,20 @@
 
 namespace rockfdem::workflows {
 
+/// `rockfdem sweep` and `rockfdem calibrate` (docs/studies.md); checked by
+/// the commands, which name the flag in every refusal.
+struct StudyOptions {
+  std::vector<std::string> vary;     ///< sweep: KEY=V1,V2,... or KEY=LO:HI (with samples)
+  long samples = 0;                  ///< sweep: Latin hypercube samples; 0: the product
+  std::vector<std::string> targets;  ///< calibrate: NAME=VALUE (mm, MPa)
+  std::vector<std::string> weights;  ///< calibrate: NAME=W
+  std::vector<std::string> free;     ///< calibrate: KEY=LO:HI
+  long max_evals = 60;               ///< calibrate: runs the optimiser may ask for
+  std::string method = "bobyqa";     ///< calibrate: bobyqa or cobyla
+};
+
 struct CommandLine {
-  std::string command;  ///< run, check, mesh, insitu ("" with --help/--version)
+  std::string command;  ///< run, check, mesh, insitu, sweep, calibrate ("" with --help/--version)
   std::string scene;    ///< scene file; empty: the built-in default (run only)
   std::string output_dir = "rockfdem-out";
   int threads = 0;                     ///< 0: all cores
@@ -23,6 +35,7 @@ struct CommandLine {
   bool version = false;
   bool scene_reference = false;
   std::string help_text;
+  StudyOptions study;
 };
 
 /// Parses argv; throws rockfdem::InputError on a bad option.

@@ -1,0 +1,61 @@
+// The calibration problem: free scene numbers scaled to [0, 1], runs as
+// study variants, and the objective
+//
+//   F(x) = sum_i w_i ((s_i(x) - t_i) / t_i)^2
+//
+// over the targets t_i (key-point displacements in mm, specimen stresses in
+// MPa) and the runs' figures s_i. Every run is recorded in order.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "rockfdem/workflows/cli.hpp"
+#include "study_run.hpp"
+
+namespace rockfdem::workflows::study {
+
+/// One run the optimiser (or the sensitivity step) asked for.
+struct Evaluation {
+  std::vector<double> x;  ///< scaled parameters, in [0, 1]
+  Variant variant;
+  VariantResult result;
+  double objective = 0;  ///< F; kFailedObjective where a target is missing
+};
+
+class CalibrationProblem {
+ public:
+  /// A failed run, or one without a target's figure, scores this.
+  static constexpr double kFailedObjective = 1e3;
+
+  CalibrationProblem(const CommandLine& cli, std::vector<FreeKey> free,
+                     std::vector<Target> targets);
+  const std::vector<FreeKey>& free() const { return free_; }
+  const std::vector<Target>& targets() const { return targets_; }
+  /// The parameter values at scaled x.
+  std::vector<double> values(const std::vector<double>& x) const;
+  Variant variant(const std::vector<double>& x) const;
+  /// The scaled start: each key's value in the scene where it lies in its
+  /// bounds, the middle of the bounds otherwise.
+  std::vector<double> start(const Scene& scene) const;
+  /// Runs the points (spread over the ranks; call on every rank: rank 0
+  /// passes the points, the others wait in serve()), records them and
+  /// returns their evaluations on rank 0.
+  std::vector<Evaluation> evaluate(const std::vector<std::vector<double>>& points);
+  /// The other ranks: run batches until rank 0 calls finish().
+  void serve();
+  void finish();
+  const std::vector<Evaluation>& record() const { return record_; }
+  /// The figure `target` names in a run, or NaN.
+  static double figure(const VariantResult& r, const Target& target);
+
+ private:
+  std::vector<Evaluation> run_batch(const std::vector<std::vector<double>>& points);
+  double objective(const VariantResult& r) const;
+  CommandLine cli_;
+  std::vector<FreeKey> free_;
+  std::vector<Target> targets_;
+  std::vector<Evaluation> record_;
+};
+
+}  // namespace rockfdem::workflows::study

@@ -1,0 +1,178 @@
+// `rockfdem sweep SCENE --vary KEY=V1,V2,... [--vary ...] -o DIR`: one run
+// per variant (the product of the lists, or --samples N Latin hypercube
+// points over KEY=LO:HI ranges) in DIR/variants/<name>/, then DIR/sweep.csv
+// (inputs, status and key figures per variant) and DIR/sweep.png. Under
+// mpirun the variants are spread over the ranks; the table is the same for
+// any rank count.
+#include <algorithm>
+#include <cstdlib>
+#include <iostream>
+#include <map>
+
+#include "../output_dir.hpp"
+#include "rockfdem/error.hpp"
+#include "study_commands.hpp"
+#include "study_figures.hpp"
+#include "study_ranks.hpp"
+#include "study_run.hpp"
+#include "study_table.hpp"
+
+namespace rockfdem::workflows::study {
+namespace {
+
+constexpr std::size_t kMostVariants = 100000;
+constexpr std::size_t kMostSeries = 12;
+
+// Every variant's scene is checked before anything runs or is written.
+std::vector<Variant> checked_variants(const CommandLine& cli, const std::vector<VariedKey>& keys) {
+  std::size_t n = 1;
+  for (const VariedKey& k : keys) {
+    if (k.range) {
+      scene_with(cli, {k.key + "=" + exact_text(k.lo)}, "--vary", k.key + "=" + exact_text(k.lo));
+      scene_with(cli, {k.key + "=" + exact_text(k.hi)}, "--vary", k.key + "=" + exact_text(k.hi));
+      continue;
+    }
+    for (const std::string& v : k.values)
+      scene_with(cli, {k.key + "=" + v}, "--vary", k.key + "=" + v);
+    n *= k.values.size();
+    if (n > kMostVariants)
+      throw InputError("command line: --vary: the product of the lists holds over " +
+                       std::to_string(kMostVariants) + " variants; allowed: fewer values");
+  }
+  std::vector<Variant> variants =
+      cli.study.samples > 0 ? latin_hypercube(keys, cli.study.samples) : product_variants(keys);
+  for (const Variant& v : variants) scene_with(cli, v.overrides(), "--vary", v.name);
+  return variants;
+}
+
+std::vector<VariantResult> run_all(const CommandLine& cli, const std::vector<Variant>& variants) {
+  const std::vector<std::string> texts = farm(variants.size(), [&](std::size_t i) {
+    return run_variant(cli, variants[i]).to_json().dump();
+  });
+  std::vector<VariantResult> results;
+  for (const std::string& t : texts)
+    results.push_back(VariantResult::from_json(nlohmann::json::parse(t)));
+  return results;
+}
+
+void write_table(const std::string& path, const Scene& scene, const std::vector<VariedKey>& keys,
+                 const std::vector<Variant>& variants, const std::vector<VariantResult>& results) {
+  std::vector<std::string> columns{"variant"};
+  for (const VariedKey& k : keys) columns.push_back(k.key);
+  columns.push_back("status");
+  const std::vector<std::string> figures = figure_columns(scene);
+  columns.insert(columns.end(), figures.begin(), figures.end());
+  columns.insert(columns.end(), {"status_reason", "wall_time_s"});
+  Table table(columns);
+  for (std::size_t i = 0; i < variants.size(); ++i) {
+    std::vector<nlohmann::json> row{variants[i].name};
+    for (const auto& setting : variants[i].settings) row.push_back(setting.second);
+    row.push_back(results[i].status);
+    for (const std::string& c : figures)
+      row.push_back(results[i].figures.value(c, nlohmann::json()));
+    row.push_back(results[i].message);
+    row.push_back(results[i].wall_s);
+    table.add(row);
+  }
+  table.write(path);
+}
+
+// x of a variant: its first key's value, or the value's place in the list
+// when the values are not all numbers.
+std::vector<double> abscissae(const VariedKey& first, const std::vector<Variant>& variants,
+                              std::string* label) {
+  std::vector<double> x;
+  bool numbers = true;
+  for (const Variant& v : variants) {
+    char* end = nullptr;
+    const std::string& text = v.settings.front().second;
+    x.push_back(std::strtod(text.c_str(), &end));
+    numbers = numbers && end == text.c_str() + text.size();
+  }
+  *label = first.key;
+  if (numbers) return x;
+  *label = "place of " + first.key + " in its --vary list";
+  for (std::size_t i = 0; i < variants.size(); ++i)
+    x[i] = double(
+        std::find(first.values.begin(), first.values.end(), variants[i].settings.front().second) -
+        first.values.begin());
+  return x;
+}
+
+// One curve per combination of the other keys (all in one, sorted by x,
+// where those are too many: a Latin hypercube).
+std::vector<coupling::PlotSeries> curves(const std::vector<Variant>& variants,
+                                         const std::vector<VariantResult>& results,
+                                         const std::vector<double>& x, const std::string& column) {
+  std::map<std::string, coupling::PlotSeries> groups;
+  std::vector<std::size_t> order(variants.size());
+  for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+  std::stable_sort(order.begin(), order.end(),
+                   [&](std::size_t a, std::size_t b) { return x[a] < x[b]; });
+  for (std::size_t i : order) {
+    std::string name;
+    for (std::size_t k = 1; k < variants[i].settings.size(); ++k)
+      name += (k > 1 ? ", " : "") + variants[i].settings[k].first + "=" +
+              variants[i].settings[k].second;
+    const nlohmann::json& y = results[i].figures.value(column, nlohmann::json());
+    if (!y.is_number()) continue;
+    coupling::PlotSeries& s = groups[name.empty() ? column : name];
+    s.name = name.empty() ? column : name;
+    s.x.push_back(x[i]);
+    s.y.push_back(y.get<double>());
+  }
+  std::vector<coupling::PlotSeries> series;
+  for (auto& [name, s] : groups) series.push_back(s);
+  if (series.size() <= kMostSeries) return series;
+  coupling::PlotSeries all{column + " (all variants)", {}, {}};
+  for (std::size_t i : order)
+    if (results[i].figures.value(column, nlohmann::json()).is_number()) {
+      all.x.push_back(x[i]);
+      all.y.push_back(results[i].figures[column].get<double>());
+    }
+  return {all};
+}
+
+void plot_sweep(const std::string& path, const Scene& scene, const std::vector<VariedKey>& keys,
+                const std::vector<Variant>& variants, const std::vector<VariantResult>& results) {
+  const std::string column = figure_columns(scene).front();  // vault radial, or peak stress
+  std::string x_label;
+  const std::vector<double> x = abscissae(keys.front(), variants, &x_label);
+  const bool tunnel = column != "peak_stress_MPa";
+  const std::string why = draw(
+      path, tunnel ? "Vault: radial displacement at the end of each run" : "Specimen peak stress",
+      x_label, tunnel ? "vault radial displacement [mm]" : "peak stress [MPa]",
+      curves(variants, results, x, column));
+  if (!why.empty()) std::cerr << "rockfdem: sweep.png not drawn: " << why << '\n';
+}
+
+void report(const std::vector<VariantResult>& results, const std::string& dir) {
+  std::size_t reused = 0, failed = 0;
+  for (const VariantResult& r : results) {
+    reused += r.reused;
+    if (r.status == "failed" || r.status == "refused") {
+      ++failed;
+      std::cout << "variant " << r.name << ": " << r.status << ": " << r.message << '\n';
+    }
+  }
+  std::cout << "sweep: " << results.size() << " variants on " << n_ranks()
+            << " rank(s): " << results.size() - reused << " run now, " << reused
+            << " taken from earlier runs, " << failed << " failed or refused; table "
+            << output_path(dir, "sweep.csv") << '\n';
+}
+
+}  // namespace
+
+int command_sweep(const Scene& scene, const CommandLine& cli) {
+  const std::vector<VariedKey> keys = read_vary(cli.study);
+  const std::vector<Variant> variants = checked_variants(cli, keys);
+  const std::vector<VariantResult> results = run_all(cli, variants);
+  if (rank() != 0) return 0;
+  write_table(output_path(cli.output_dir, "sweep.csv"), scene, keys, variants, results);
+  if (scene.output.plots)
+    plot_sweep(output_path(cli.output_dir, "sweep.png"), scene, keys, variants, results);
+  report(results, cli.output_dir);
+  return 0;
+}
+
+}  // namespace rockfdem::workflows::study

@@ -1,0 +1,86 @@
+#include "study_figures.hpp"
+
+namespace rockfdem::workflows::study {
+namespace {
+
+bool is_specimen(const Scene& scene) {
+  return scene.mesh.kind == mesh::ModelKind::kUcs || scene.mesh.kind == mesh::ModelKind::kBrazilian;
+}
+
+const char* const kChords[] = {"vault_settlement_mm", "wall_chord_convergence_mm",
+                               "shoulder_chord_convergence_mm"};
+
+// Copies summary[section][key] (a number) into figures[column] when present.
+void take(const nlohmann::json& summary, const char* section, const std::string& key,
+          const std::string& column, double scale, nlohmann::json& figures) {
+  const auto s = summary.find(section);
+  if (s == summary.end() || !s->is_object()) return;
+  const auto v = s->find(key);
+  if (v != s->end() && v->is_number()) figures[column] = scale * v->get<double>();
+}
+
+}  // namespace
+
+const std::vector<std::string>& key_point_names() {
+  static const std::vector<std::string> names{"vault",     "left_shoulder", "right_shoulder",
+                                              "left_wall", "right_wall",    "invert"};
+  return names;
+}
+
+std::vector<std::string> figure_columns(const Scene& scene) {
+  std::vector<std::string> c;
+  if (is_specimen(scene)) {
+    c.push_back("peak_stress_MPa");
+  } else {
+    for (const std::string& p : key_point_names()) c.push_back(p + "_radial_mm");
+    c.insert(c.end(), std::begin(kChords), std::end(kChords));
+  }
+  c.insert(c.end(), {"broken_I", "broken_II", "broken_mixed", "steps", "state_hash"});
+  return c;
+}
+
+nlohmann::json key_figures(const nlohmann::json& summary) {
+  nlohmann::json f = nlohmann::json::object();
+  if (const auto m = summary.find("monitors"); m != summary.end() && m->is_object()) {
+    for (const std::string& p : key_point_names())
+      if (m->contains(p)) take(*m, p.c_str(), "radial_mm", p + "_radial_mm", 1, f);
+    for (const char* c : kChords) take(summary, "monitors", c, c, 1, f);
+  }
+  take(summary, "specimen", "peak_stress", "peak_stress_MPa", 1e-6, f);
+  take(summary, "broken", "mode_I", "broken_I", 1, f);
+  take(summary, "broken", "mode_II", "broken_II", 1, f);
+  take(summary, "broken", "mixed", "broken_mixed", 1, f);
+  if (summary.contains("steps")) f["steps"] = summary["steps"];
+  if (summary.contains("state_hash")) f["state_hash"] = summary["state_hash"];
+  return f;
+}
+
+std::vector<TargetName> target_names(const Scene& scene) {
+  std::vector<TargetName> names;
+  if (scene.mesh.kind == mesh::ModelKind::kBrazilian)
+    return {{"peak_stress", "peak_stress_MPa", "MPa"},
+            {"tensile_strength", "peak_stress_MPa", "MPa"}};
+  if (scene.mesh.kind == mesh::ModelKind::kUcs) return {{"peak_stress", "peak_stress_MPa", "MPa"}};
+  for (const std::string& p : key_point_names()) names.push_back({p, p + "_radial_mm", "mm"});
+  for (const char* c : kChords) {
+    const std::string column = c;
+    names.push_back({column.substr(0, column.size() - 3), column, "mm"});
+  }
+  return names;
+}
+
+const TargetName* find_target(const std::vector<TargetName>& names, const std::string& name) {
+  for (const TargetName& t : names)
+    if (t.name == name) return &t;
+  return nullptr;
+}
+
+std::string describe(const std::vector<TargetName>& names) {
+  std::string s = "allowed for this scene's model: ";
+  for (std::size_t i = 0; i < names.size(); ++i) s += (i ? ", " : "") + names[i].name;
+  return s + (names.front().unit == "mm"
+                  ? " (key points: radial displacement towards the opening; chords: closure; mm)"
+                  : " (the specimen's peak stress, MPa)");
+}
+
+}  // namespace rockfdem::workflows::study

@@ -1,0 +1,110 @@
+#include "study_run.hpp"
+
+#include <chrono>
+#include <filesystem>
+#include <fstream>
+#include <functional>
+
+#include "../commands.hpp"
+#include "../output_dir.hpp"
+#include "rockfdem/coupling/atomic_file.hpp"
+#include "rockfdem/error.hpp"
+#include "study_figures.hpp"
+
+namespace fs = std::filesystem;
+
+namespace rockfdem::workflows::study {
+namespace {
+
+constexpr const char* kRecord = "variant.json";
+
+nlohmann::json read_json(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) return nullptr;
+  return nlohmann::json::parse(in, nullptr, false);  // a torn file reads as discarded
+}
+
+// What makes two runs the same: the scene file and its validated text
+// with every override applied.
+nlohmann::json identity(const Scene& scene, const Variant& v) {
+  std::error_code ec;
+  const fs::path file = fs::weakly_canonical(fs::absolute(scene.source, ec), ec);
+  char hash[24];
+  std::snprintf(hash, sizeof hash, "%016zx", std::hash<std::string>{}(scene.canonical));
+  return {{"scene", file.string()}, {"scene_hash", hash}, {"settings", v.overrides()}};
+}
+
+bool finished(const std::string& status) {
+  return status == "completed" || status == "not_at_equilibrium" || status == "failed" ||
+         status == "refused";
+}
+
+// The earlier result in `dir`, when it is a finished run of the same identity.
+bool reuse(const std::string& dir, const nlohmann::json& id, VariantResult* r) {
+  const nlohmann::json record = read_json(output_path(dir, kRecord));
+  if (!record.is_object() || record.value("identity", nlohmann::json()) != id) return false;
+  *r = VariantResult::from_json(record.at("result"));
+  r->reused = true;
+  return finished(r->status);
+}
+
+}  // namespace
+
+nlohmann::json VariantResult::to_json() const {
+  return {{"name", name},          {"status", status}, {"message", message},
+          {"wall_time_s", wall_s}, {"reused", reused}, {"figures", figures}};
+}
+
+VariantResult VariantResult::from_json(const nlohmann::json& j) {
+  VariantResult r;
+  r.name = j.at("name").get<std::string>();
+  r.status = j.at("status").get<std::string>();
+  r.message = j.at("message").get<std::string>();
+  r.wall_s = j.at("wall_time_s").get<double>();
+  r.reused = j.at("reused").get<bool>();
+  r.figures = j.at("figures");
+  return r;
+}
+
+std::string variant_dir(const CommandLine& study, const Variant& v) {
+  return output_path(output_path(study.output_dir, "variants"), v.name);
+}
+
+VariantResult run_variant(const CommandLine& study, const Variant& v) {
+  CommandLine cli = study;
+  cli.command = "run";
+  cli.output_dir = variant_dir(study, v);
+  for (const std::string& o : v.overrides()) cli.overrides.push_back(o);
+  cli.quiet = cli.force = true;
+  const Scene scene = load_scene(cli.scene, cli.overrides);  // checked before the study began
+  const nlohmann::json id = identity(scene, v);
+  VariantResult r;
+  if (reuse(cli.output_dir, id, &r)) return r;
+  r = VariantResult{};
+  r.name = v.name;
+  fs::remove(output_path(cli.output_dir, kRecord));  // until this run has finished
+  const auto start = std::chrono::steady_clock::now();
+  try {
+    refuse_if_too_large(scene);
+    command_run(scene, cli);
+    const nlohmann::json summary = read_json(output_path(cli.output_dir, "summary.json"));
+    if (!summary.is_object()) throw std::runtime_error(cli.output_dir + ": no summary.json");
+    r.status = summary.value("status", "");
+    r.message = summary.value("status_reason", "");
+    r.figures = key_figures(summary);
+  } catch (const NumericalError& e) {
+    r.status = "failed";
+    r.message = e.what();
+    r.figures = key_figures(read_json(output_path(cli.output_dir, "summary.json")));
+  } catch (const InputError& e) {
+    r.status = "refused";
+    r.message = e.what();
+  }
+  r.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  fs::create_directories(cli.output_dir);
+  coupling::atomic_write_text(output_path(cli.output_dir, kRecord),
+                              nlohmann::json{{"identity", id}, {"result", r.to_json()}}.dump(1));
+  return r;
+}
+
+}  // namespace rockfdem::workflows::study

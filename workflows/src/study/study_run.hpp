@@ -1,0 +1,36 @@
+// One variant of a study run as `rockfdem run` runs it, in its own folder
+// <out>/variants/<name>/, or taken from that folder when an earlier study
+// finished it for the same scene and settings (resume).
+#pragma once
+
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "rockfdem/workflows/cli.hpp"
+#include "study_variants.hpp"
+
+namespace rockfdem::workflows::study {
+
+struct VariantResult {
+  std::string name;
+  std::string status;   ///< the run's summary status; "failed" or "refused" when it stopped
+  std::string message;  ///< why it failed or was refused
+  double wall_s = 0;    ///< the run's wall time [s] (when it ran, also for a reused result)
+  bool reused = false;  ///< taken from an earlier study's folder, not run now
+  nlohmann::json figures = nlohmann::json::object();  ///< key_figures() of its summary
+
+  nlohmann::json to_json() const;
+  static VariantResult from_json(const nlohmann::json& j);
+};
+
+/// <out>/variants/<name>.
+std::string variant_dir(const CommandLine& study, const Variant& v);
+
+/// Runs the variant (-j threads of `study`, quietly, its folder claimed
+/// with --force) unless its folder's variant.json records a finished run of
+/// the same scene and settings. A numerical failure or a refusal of the
+/// variant's scene (an engine.dt this material cannot hold) is a result;
+/// an interrupt and other errors propagate.
+VariantResult run_variant(const CommandLine& study, const Variant& v);
+
+}  // namespace rockfdem::workflows::study
