@@ -432,9 +432,11 @@ void RunOutputs::plots(const fdem::Engine& e, const mesh::Mesh& m) {
            "support pressure / in-situ stress", {{"vault", settlement, ratio}});
   if (bolt_results_) {
     const std::vector<coupling::PlotSeries> bolts = bolt_results_->force_curves(e);
+    const std::string title = "Bolt axial force (section force) at step " +
+                              std::to_string(e.step_count()) + ", end of run";
     if (!bolts.empty())
-      plots.xy("bolt_forces.png", "Bolt axial force at the end of the run (section force)",
-               "distance from the collar [m]", "axial force [kN per bar], tension +", bolts);
+      plots.xy("bolt_forces.png", title, "distance from the collar [m]",
+               "axial force [kN per bar], tension +", bolts);
   }
   plots.final_mesh(e, m, fields_.empty() ? nullptr : &fields_.back(), 1,
                    "Minor principal stress [Pa], broken cracks in black");
