@@ -143,6 +143,25 @@ void VtkGrid::validate() const {
   for (const auto& [name, value] : field.numbers) check_name(name);
 }
 
+void VtkPolylines::validate() const {
+  if (x.size() != y.size()) {
+    throw std::invalid_argument("polyline points: " + std::to_string(x.size()) + " x but " +
+                                std::to_string(y.size()) + " y coordinates");
+  }
+  for (std::size_t c = 0; c < polylines.size(); ++c) {
+    if (polylines[c].size() < 2)
+      throw std::invalid_argument("polyline " + std::to_string(c) + ": " +
+                                  std::to_string(polylines[c].size()) + " points, at least 2");
+    for (int id : polylines[c])
+      if (id < 0 || static_cast<std::size_t>(id) >= n_points())
+        throw std::invalid_argument("polyline " + std::to_string(c) + ": point id " +
+                                    std::to_string(id) + " outside [0, " +
+                                    std::to_string(n_points()) + ")");
+  }
+  validate_arrays("point", point_arrays, n_points());
+  validate_arrays("cell", cell_arrays, polylines.size());
+}
+
 VtkArray triangle_cell_array(const VtkGrid& grid, VtkArray per_triangle) {
   return pad_to_cells(grid, std::move(per_triangle), grid.n_triangles(), 0, "triangle");
 }

@@ -10,9 +10,11 @@
 #include <vtkNew.h>
 #include <vtkPointData.h>
 #include <vtkPoints.h>
+#include <vtkPolyData.h>
 #include <vtkSmartPointer.h>
 #include <vtkStringArray.h>
 #include <vtkUnstructuredGrid.h>
+#include <vtkXMLPolyDataWriter.h>
 #include <vtkXMLUnstructuredGridWriter.h>
 
 #include <algorithm>
@@ -113,15 +115,20 @@ void add_field_data(const VtkFieldData& field, vtkFieldData& out) {
   }
 }
 
+vtkSmartPointer<vtkPoints> to_vtk_points(const std::vector<double>& x,
+                                         const std::vector<double>& y) {
+  auto points = vtkSmartPointer<vtkPoints>::New();
+  points->SetDataTypeToDouble();
+  points->SetNumberOfPoints(static_cast<vtkIdType>(x.size()));
+  for (std::size_t i = 0; i < x.size(); ++i) {
+    points->SetPoint(static_cast<vtkIdType>(i), x[i], y[i], 0.0);
+  }
+  return points;
+}
+
 vtkSmartPointer<vtkUnstructuredGrid> to_vtk_grid(const VtkGrid& grid) {
   auto ug = vtkSmartPointer<vtkUnstructuredGrid>::New();
-  vtkNew<vtkPoints> points;
-  points->SetDataTypeToDouble();
-  points->SetNumberOfPoints(static_cast<vtkIdType>(grid.n_points()));
-  for (std::size_t i = 0; i < grid.n_points(); ++i) {
-    points->SetPoint(static_cast<vtkIdType>(i), grid.x[i], grid.y[i], 0.0);
-  }
-  ug->SetPoints(points);
+  ug->SetPoints(to_vtk_points(grid.x, grid.y));
   ug->Allocate(static_cast<vtkIdType>(grid.n_cells()));
   for (const auto& t : grid.triangles) {
     const vtkIdType ids[3] = {t[0], t[1], t[2]};
@@ -137,14 +144,10 @@ vtkSmartPointer<vtkUnstructuredGrid> to_vtk_grid(const VtkGrid& grid) {
   return ug;
 }
 
-}  // namespace
-
-void write_vtu(const VtkGrid& grid, const std::string& path) {
-  grid.validate();
-  const auto ug = to_vtk_grid(grid);
+/// Appended raw binary, zlib, UInt64 headers; temp file then rename.
+template <typename Writer>
+void write_xml(Writer* writer, const std::string& path) {
   AtomicFile file(path);
-  vtkNew<vtkXMLUnstructuredGridWriter> writer;
-  writer->SetInputData(ug);
   writer->SetFileName(file.temp_path().c_str());
   writer->SetDataModeToAppended();
   writer->EncodeAppendedDataOff();  // raw bytes, not base64: a third smaller
@@ -156,6 +159,38 @@ void write_vtu(const VtkGrid& grid, const std::string& path) {
                              "); check free disk space and permissions");
   }
   file.commit();
+}
+
+vtkSmartPointer<vtkPolyData> to_vtk_polylines(const VtkPolylines& lines) {
+  auto pd = vtkSmartPointer<vtkPolyData>::New();
+  pd->SetPoints(to_vtk_points(lines.x, lines.y));
+  vtkNew<vtkCellArray> cells;
+  for (const std::vector<int>& line : lines.polylines) {
+    cells->InsertNextCell(static_cast<vtkIdType>(line.size()));
+    for (int id : line) cells->InsertCellPoint(id);
+  }
+  pd->SetLines(cells);
+  for (const VtkArray& a : lines.point_arrays) pd->GetPointData()->AddArray(to_vtk_array(a));
+  for (const VtkArray& a : lines.cell_arrays) pd->GetCellData()->AddArray(to_vtk_array(a));
+  return pd;
+}
+
+}  // namespace
+
+void write_vtu(const VtkGrid& grid, const std::string& path) {
+  grid.validate();
+  const auto ug = to_vtk_grid(grid);
+  vtkNew<vtkXMLUnstructuredGridWriter> writer;
+  writer->SetInputData(ug);
+  write_xml(writer.Get(), path);
+}
+
+void write_vtp(const VtkPolylines& lines, const std::string& path) {
+  lines.validate();
+  const auto pd = to_vtk_polylines(lines);
+  vtkNew<vtkXMLPolyDataWriter> writer;
+  writer->SetInputData(pd);
+  write_xml(writer.Get(), path);
 }
 
 }  // namespace rockfdem::coupling

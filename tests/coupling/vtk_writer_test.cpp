@@ -13,8 +13,10 @@
 #include <vtkNew.h>
 #include <vtkPointData.h>
 #include <vtkPoints.h>
+#include <vtkPolyData.h>
 #include <vtkStringArray.h>
 #include <vtkUnstructuredGrid.h>
+#include <vtkXMLPolyDataReader.h>
 #include <vtkXMLUnstructuredGridReader.h>
 
 #include <algorithm>
@@ -181,6 +183,47 @@ TEST(VtkWriter, field_data_round_trips_as_text_and_numbers) {
   }
   g.field.numbers.push_back({"stage", 1.0});
   EXPECT_THROW(g.validate(), std::invalid_argument);
+}
+
+// Polylines (.vtp): points, each polyline's ids in order as one
+// VTK_POLY_LINE (VTK_LINE for 2 points), point and per-polyline arrays, all bit-exact; a polyline
+// of one point is refused before anything is written.
+TEST(VtkWriter, polylines_round_trip_bit_exact) {
+  const TempDir dir;
+  VtkPolylines l;
+  l.x = awkward_values(5, 7);
+  l.y = awkward_values(5, 8);
+  l.polylines = {{0, 1, 2}, {4, 3}};
+  l.point_arrays.push_back(scalar_array("axial_force_kN", awkward_values(5, 9)));
+  l.point_arrays.push_back(scalar_array("state", std::vector<std::int32_t>{0, 1, 2, 0, 1}));
+  l.cell_arrays.push_back(scalar_array("bolt", std::vector<std::int32_t>{0, 1}));
+  write_vtp(l, dir.file("bolts.vtp"));
+  vtkNew<vtkXMLPolyDataReader> reader;
+  reader->SetFileName(dir.file("bolts.vtp").c_str());
+  reader->Update();
+  vtkPolyData* pd = reader->GetOutput();
+  ASSERT_EQ(pd->GetNumberOfPoints(), 5);
+  for (vtkIdType i = 0; i < 5; ++i) {
+    double p[3];
+    pd->GetPoint(i, p);
+    EXPECT_EQ(bits(p[0]), bits(l.x[i]));
+    EXPECT_EQ(bits(p[1]), bits(l.y[i]));
+  }
+  ASSERT_EQ(pd->GetNumberOfCells(), 2);
+  for (vtkIdType c = 0; c < 2; ++c) {
+    vtkIdType n = 0;
+    const vtkIdType* ids = nullptr;
+    pd->GetCellPoints(c, n, ids);
+    EXPECT_EQ(pd->GetCellType(c), n > 2 ? VTK_POLY_LINE : VTK_LINE);  // VTK reads 2 as a line
+    ASSERT_EQ(std::size_t(n), l.polylines[c].size());
+    for (vtkIdType k = 0; k < n; ++k) EXPECT_EQ(ids[k], l.polylines[c][k]);
+  }
+  for (const VtkArray& a : l.point_arrays)
+    expect_array_equal(a, pd->GetPointData()->GetArray(a.name.c_str()), 5);
+  expect_array_equal(l.cell_arrays[0], pd->GetCellData()->GetArray("bolt"), 2);
+  l.polylines.push_back({1});
+  EXPECT_THROW(write_vtp(l, dir.file("one.vtp")), std::invalid_argument);
+  EXPECT_FALSE(std::ifstream(dir.file("one.vtp")).good());
 }
 
 TEST(VtkWriter, one_kind_arrays_are_padded_with_nan_or_minus_one) {

@@ -10,6 +10,7 @@
 
 #include "rockfdem/fdem/bolt_install.hpp"
 #include "rockfdem/fdem/bolt_output.hpp"
+#include "rockfdem/fdem/bolt_sections.hpp"
 #include "rockfdem/fdem/crack_law.hpp"
 #include "test_models.hpp"
 
@@ -29,6 +30,10 @@ struct BarRun {
   double scale = 1;                             ///< f = 1 / s_b
   double profile_stress = 0;                    ///< bolt_axial_profile mean at the yield step
   double final_stress = 0;                      ///< 2000 steps after the break
+  /// bolt_sections and the grip's steel stress at half eps_y, at the yield
+  /// step, just after the break and at the end.
+  std::vector<BoltStation> half_yield, at_yield, at_break, final_sections;
+  double half_yield_stress = 0, half_yield_strain = 0;
 };
 
 double eps_u_elastic(const BoltSteel& s) { return s.yield_strength / s.young; }
@@ -89,15 +94,25 @@ BarRun pull_bar(double row_spacing, const BoltSteel& steel) {
     const double strain = u / kLength;
     const double stress = e.boundary_force(kTagRight)[0] / kDiameter / r.scale;
     r.curve.push_back({strain, stress});
+    if (r.half_yield.empty() && strain >= 0.5 * eps_u_elastic(steel)) {
+      r.half_yield = bolt_sections(e, plan, 0);
+      r.half_yield_stress = stress;
+      r.half_yield_strain = strain;
+    }
     const BoltCounts counts = bolt_counts(e, plan, 0);
     if (r.yield_strain < 0 && counts.yielding > 0) {
       r.yield_strain = strain;
       r.yield_stress = stress;
+      r.at_yield = bolt_sections(e, plan, 0);
       for (const auto& s : bolt_axial_profile(e, plan, 0)) r.profile_stress += s.steel_stress / 8;
     }
-    if (counts.broken > 0) r.break_strain = strain;
+    if (counts.broken > 0) {
+      r.break_strain = strain;
+      r.at_break = bolt_sections(e, plan, 0);
+    }
   }
   r.final_stress = e.boundary_force(kTagRight)[0] / kDiameter / r.scale;
+  r.final_sections = bolt_sections(e, plan, 0);
   return r;
 }
 
@@ -154,6 +169,52 @@ TEST(BoltSteel, doubling_row_spacing_halves_the_force) {
     std::printf("strain %.4f: force ratio %.5f\n", strain, f2 / f1);
     EXPECT_NEAR(f2 / f1, 0.5, 0.0025) << "strain " << strain;
   }
+}
+
+int worst_state(const std::vector<BoltStation>& st) {
+  int worst = 0;
+  for (const BoltStation& s : st) worst = std::max(worst, s.state);
+  return worst;
+}
+
+// A bar between two grips opened by u (bolt_sections.hpp). Every
+// station's section force, in N per bar F = sigma pi d^2 / 4, equals the
+// grip's (sigma = F_grip / (d f); no bond, so constant along the bar)
+// within 0.5%:
+// - at u = eps_y L / 2, every station elastic (state 0), and F = k u with
+//   k = E pi d^2 / 4 / L within 2.5% (the steel crack elements' pre-peak
+//   curve stiffens the bar below yield, its secant reaching E at yield:
+//   1.9% above k u measured);
+// - at the first yielding step, F = fy pi d^2 / 4 = 196.35 kN (0.5%), a
+//   station in state 1;
+// then a station reads 2 after the break, and 2000 steps later every
+// section carries less than 5% of fu pi d^2 / 4.
+TEST(BoltSteel, sections_read_the_grip_force_yield_and_break) {
+  const BoltSteel steel;
+  const BarRun r = pull_bar(1.0, steel);
+  const double area = M_PI * kDiameter * kDiameter / 4;
+  ASSERT_EQ(r.half_yield.size(), 4u);  // 0.4 m over 100 mm cells
+  ASSERT_FALSE(r.at_yield.empty());
+  ASSERT_FALSE(r.at_break.empty());
+  const double k_u = steel.young * r.half_yield_strain * area;  // k_steel x opening, k = E A / L
+  for (const BoltStation& s : r.half_yield) {
+    std::printf("half yield: station %.3f m %.3f kN, E A u / L = %.3f kN\n", s.station,
+                s.bar_force / 1e3, k_u / 1e3);
+    EXPECT_NEAR(s.bar_force, k_u, 0.025 * k_u);
+    EXPECT_NEAR(s.bar_force, r.half_yield_stress * area, 0.005 * r.half_yield_stress * area);
+    EXPECT_EQ(s.state, 0);
+  }
+  EXPECT_EQ(worst_state(r.at_yield), 1);
+  const double fy = steel.yield_strength * area;
+  for (const BoltStation& s : r.at_yield) {
+    std::printf("yield step: station %.3f m %.2f kN (fy A = %.2f kN), state %d\n", s.station,
+                s.bar_force / 1e3, fy / 1e3, s.state);
+    EXPECT_NEAR(s.bar_force, r.yield_stress * area, 0.005 * fy);
+    EXPECT_NEAR(s.bar_force, fy, 0.005 * fy);
+  }
+  EXPECT_EQ(worst_state(r.at_break), 2);
+  for (const BoltStation& s : r.final_sections)
+    EXPECT_LT(std::fabs(s.bar_force), 0.05 * steel.ultimate_strength * area);
 }
 
 /// Slides the upper triangle of a two-triangle pair along the crack by u,

@@ -217,6 +217,10 @@ TEST_F(Restart, continues_bit_identically_with_another_thread_count) {
   ASSERT_TRUE(fs::exists(out / "grouted_cracks.csv"));
   EXPECT_EQ(read_text(out / "grouted_cracks.csv"),
             read_text(*reference_dir_ / "grouted_cracks.csv"));
+  // The bolt profiles and their frames continue as if never interrupted.
+  EXPECT_EQ(read_text(out / "bolts.csv"), read_text(*reference_dir_ / "bolts.csv"));
+  EXPECT_EQ(read_text(out / "bolts.pvd"), read_text(*reference_dir_ / "bolts.pvd"));
+  EXPECT_TRUE(fs::exists(out / "bolts_0001.vtp")) << "earlier bolt frames come along";
   fs::remove_all(out);
 }
 

@@ -70,6 +70,9 @@ const char* const kFixedNames[] = {"summary.json",
                                    "fdem.pvd",
                                    "fdem_vs_continuum.csv",
                                    "grouted_cracks.csv",
+                                   "bolts.csv",
+                                   "bolts.pvd",
+                                   "bolt_forces.png",
                                    "convergence.png",
                                    "chord_convergence.png",
                                    "broken.png",
@@ -81,7 +84,8 @@ const char* const kFixedNames[] = {"summary.json",
 struct Numbered {
   const char *prefix, *suffix;
 };
-const Numbered kNumberedNames[] = {{"fdem_", ".vtu"}, {"insitu_", ".vtu"}, {"bolt_", ".csv"}};
+const Numbered kNumberedNames[] = {
+    {"fdem_", ".vtu"}, {"insitu_", ".vtu"}, {"bolt_", ".csv"}, {"bolts_", ".vtp"}};
 
 bool all_digits(const std::string& s) {
   return !s.empty() &&

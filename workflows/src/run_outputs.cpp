@@ -118,6 +118,12 @@ void RunOutputs::record_insitu(const mesh::Mesh& m,
     j["kirsch_rel_l2"] = insitu::compare_kirsch(m, fields.back(), k).stress_rel_l2;
 }
 
+void RunOutputs::set_bolts(const fdem::BoltPlan* bolts) {
+  bolts_ = bolts;
+  if (bolts && !bolts->specs.empty())
+    bolt_results_ = std::make_unique<BoltResults>(*bolts, scene_.bolts.is_cable, cli_.output_dir);
+}
+
 void RunOutputs::begin_history(const std::vector<Monitor>& monitors, const mesh::Mesh& m) {
   energy_floor_ = energy_floor(scene_, m);
   for (const mesh::TaggedEdge& edge : m.edges)
@@ -138,6 +144,8 @@ void RunOutputs::begin_history(const std::vector<Monitor>& monitors, const mesh:
               {"vault_settlement_mm", "wall_chord_convergence_mm", "shoulder_chord_convergence_mm",
                "outer_rotation_deg", "support_pressure_ratio"});
   for (const std::string& c : energy_columns()) cols.push_back(c);
+  if (bolt_results_)
+    for (const std::string& c : bolt_results_->history_columns()) cols.push_back(c);
   history_ = std::make_unique<History>(output_path(cli_.output_dir, "history.csv"), cols);
 }
 
@@ -163,6 +171,9 @@ void RunOutputs::record_step(const fdem::Engine& e, const mesh::Mesh& m,
   row.push_back(support_ratio);
   const fdem::EnergyBalance energy = e.energy_balance();
   for (double v : energy_row(energy)) row.push_back(v);
+  if (bolt_results_)
+    for (double v : bolt_results_->record(e, e.step_count(), e.time(), int(row[0])))
+      row.push_back(v);
   history_->add(row);
   // Before the frame: the last frame stays the last good state.
   check_energy(energy, e.step_count(), energy_floor_);
@@ -177,6 +188,8 @@ void RunOutputs::record_step(const fdem::Engine& e, const mesh::Mesh& m,
     coupling::write_vtu(g, output_path(cli_.output_dir, name));
     pvd_.add(e.time(), name);
     pvd_.write();
+    std::snprintf(name, sizeof name, "bolts_%04d.vtp", frame_ - 1);
+    if (bolt_results_) bolt_results_->write_frame(name, e.time());
   }
   last_good_.take(e, energy, monitors_json(e, monitors));
   timer.stamp("output");
@@ -253,7 +266,8 @@ nlohmann::json RunOutputs::state() const {
           {"stages", stage_names_},
           {"frames", frames},
           {"handoff_dt", handoff_dt_},
-          {"max_rotation_deg", max_rotation_deg_}};
+          {"max_rotation_deg", max_rotation_deg_},
+          {"bolts", bolt_results_ ? bolt_results_->state() : nlohmann::json()}};
 }
 
 void RunOutputs::restore(const nlohmann::json& s, const std::string& from_dir) {
@@ -278,6 +292,8 @@ void RunOutputs::restore(const nlohmann::json& s, const std::string& from_dir) {
     ++frame_;
   }
   if (frame_ > 0) pvd_.write();
+  if (bolt_results_ && s.contains("bolts") && !s["bolts"].is_null())
+    bolt_results_->restore(s["bolts"], from_dir);
   // Files an earlier stage wrote once, which the summary names.
   if (!same_dir)
     for (const char* name : {"grouted_cracks.csv"}) {
@@ -305,50 +321,11 @@ void RunOutputs::lining_outputs(const fdem::Engine& e, const mesh::Mesh& m) {
 }
 
 void RunOutputs::bolt_outputs(const fdem::Engine& e, const fdem::BoltPlan& bolts) {
-  auto& j = summary_.json();
-  j["counts"]["bolts"] = bolts.specs.size();
-  if (bolts.specs.empty()) {
+  summary_.json()["counts"]["bolts"] = bolts.specs.size();
+  if (bolt_results_)
+    bolt_results_->finish(e, summary_);
+  else
     summary_.skipped("bolts: none in the scene");
-    return;
-  }
-  nlohmann::json list = nlohmann::json::array();
-  for (std::size_t b = 0; b < bolts.specs.size(); ++b) {
-    // force_per_bolt_N is the seed's plane idealisation (a strip of width d
-    // per metre of row, times s_b); bar_force_N is the steel stress on the
-    // round bar's section, pi d^2 / 4, the force a pull test would read.
-    std::string csv = "position_m,steel_axial_stress_Pa,force_per_bolt_N,bar_force_N,triangle\n";
-    const double bar_area = M_PI * bolts.specs[b].bolt.diameter * bolts.specs[b].bolt.diameter / 4;
-    double peak_stress = 0, peak_force = 0;
-    char line[200];
-    for (const fdem::BoltSample& p : fdem::bolt_axial_profile(e, bolts, int(b))) {
-      std::snprintf(line, sizeof line, "%.6g,%.8g,%.8g,%.8g,%d\n", p.position, p.steel_stress,
-                    p.force_per_bolt, p.steel_stress * bar_area, p.triangle);
-      csv += line;
-      if (std::abs(p.steel_stress) > std::abs(peak_stress)) peak_stress = p.steel_stress;
-      if (std::abs(p.force_per_bolt) > std::abs(peak_force)) peak_force = p.force_per_bolt;
-    }
-    char name[32];
-    std::snprintf(name, sizeof name, "bolt_%02zu.csv", b);
-    coupling::atomic_write_text(output_path(cli_.output_dir, name), csv);
-    const fdem::BoltCounts c = fdem::bolt_counts(e, bolts, int(b));
-    const fdem::Bolt& bolt = bolts.specs[b].bolt;
-    list.push_back({{"file", name},
-                    {"kind", scene_.bolts.is_cable[b] ? "cable" : "bolt"},
-                    {"head", {bolt.a[0], bolt.a[1]}},
-                    {"end", {bolt.b[0], bolt.b[1]}},
-                    {"peak_axial_stress_Pa", peak_stress},
-                    {"peak_force_N", peak_force},
-                    {"peak_bar_force_N", peak_stress * bar_area},
-                    {"yielding", c.yielding},
-                    {"broken", c.broken},
-                    {"grout_broken", c.grout_broken}});
-  }
-  const fdem::BoltCounts all = fdem::bolt_counts(e, bolts, -1);
-  j["bolts"] = {{"count", bolts.specs.size()},
-                {"steel_cracks_yielding", all.yielding},
-                {"steel_cracks_broken", all.broken},
-                {"grout_cracks_broken", all.grout_broken},
-                {"each", list}};
 }
 
 void RunOutputs::finish(const fdem::Engine& e, const mesh::Mesh& m,
@@ -455,6 +432,14 @@ void RunOutputs::plots(const fdem::Engine& e, const mesh::Mesh& m) {
   }
   plots.xy("ground_reaction.png", "Ground reaction curve (vault)", "vault settlement [mm]",
            "support pressure / in-situ stress", {{"vault", settlement, ratio}});
+  if (bolt_results_) {
+    const std::vector<coupling::PlotSeries> bolts = bolt_results_->force_curves(e);
+    const std::string title = "Bolt axial force (section force) at step " +
+                              std::to_string(e.step_count()) + ", end of run";
+    if (!bolts.empty())
+      plots.xy("bolt_forces.png", title, "distance from the collar [m]",
+               "axial force [kN per bar], tension +", bolts);
+  }
   plots.final_mesh(e, m, fields_.empty() ? nullptr : &fields_.back(), 1,
                    "Minor principal stress [Pa], broken cracks in black");
   // The opening and its fracture zone, where the crack pattern shows.

@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "bolt_results.hpp"
 #include "history.hpp"
 #include "last_good.hpp"
 #include "monitors.hpp"
@@ -28,8 +29,10 @@ class RunOutputs {
   /// Starts history.csv; `m`'s outer boundary defines the rigid translation
   /// removed from reported displacements.
   void begin_history(const std::vector<Monitor>& monitors, const mesh::Mesh& m);
-  /// Bolts whose axial stress the ParaView frames carry (once installed).
-  void set_bolts(const fdem::BoltPlan* bolts) { bolts_ = bolts; }
+  /// Bolts whose axial stress the ParaView frames carry (once installed)
+  /// and whose section forces the outputs report (BoltResults); before
+  /// begin_history, which adds their columns.
+  void set_bolts(const fdem::BoltPlan* bolts);
   /// One history row and (if enabled) one ParaView frame.
   void record_step(const fdem::Engine& e, const mesh::Mesh& m, const std::vector<Monitor>& monitors,
                    PhaseTimer& timer, const std::string& stage, double support_ratio);
@@ -90,8 +93,9 @@ class RunOutputs {
   coupling::PvdCollection pvd_;
   int frame_ = 0;
   const fdem::BoltPlan* bolts_ = nullptr;
-  std::vector<int> boundary_vertices_;  ///< outer boundary, for the rigid translation
-  mutable long fit_step_ = -1;          ///< step the cached fit belongs to
+  std::unique_ptr<BoltResults> bolt_results_;  ///< with bolts in the scene
+  std::vector<int> boundary_vertices_;         ///< outer boundary, for the rigid translation
+  mutable long fit_step_ = -1;                 ///< step the cached fit belongs to
   mutable RigidFit fit_;
   double max_rotation_deg_ = 0;     ///< largest |rotation| of the outer boundary so far
   std::vector<Monitor> monitors_;   ///< the key points (history columns, pictures' window)

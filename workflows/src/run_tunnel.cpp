@@ -266,8 +266,8 @@ int run_tunnel(const Scene& scene, const CommandLine& cli) {
   timer.stamp("fdem setup");
 
   const std::vector<Monitor> monitors = tunnel_monitors(scene.mesh, m, engine);
-  out.begin_history(monitors, m);
   out.set_bolts(&bolts);
+  out.begin_history(monitors, m);
   StageRunner stages(engine, m, handoff, scene, cli, out, monitors, bolts, support);
   if (restart) {
     try {

@@ -78,6 +78,20 @@ struct VtkGrid {
   void validate() const;
 };
 
+/// Polylines for a .vtp file (bolts as lines through their stations):
+/// 2-D points (z = 0 in the file), each polyline its point ids in order;
+/// point arrays hold one tuple per point, cell arrays one per polyline.
+struct VtkPolylines {
+  std::vector<double> x, y;                 ///< point coordinates [m]
+  std::vector<std::vector<int>> polylines;  ///< point ids, at least 2 each
+  std::vector<VtkArray> point_arrays;
+  std::vector<VtkArray> cell_arrays;
+
+  std::size_t n_points() const { return x.size(); }
+  /// As VtkGrid::validate; a polyline of fewer than 2 points is refused too.
+  void validate() const;
+};
+
 /// Pads an array given per triangle to a cell array (lines get NaN / -1).
 VtkArray triangle_cell_array(const VtkGrid& grid, VtkArray per_triangle);
 /// Pads an array given per line to a cell array (triangles get NaN / -1).

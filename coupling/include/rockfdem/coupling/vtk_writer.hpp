@@ -17,6 +17,12 @@ namespace rockfdem::coupling {
 ///         std::runtime_error naming `path` when it cannot be written.
 void write_vtu(const VtkGrid& grid, const std::string& path);
 
+/// Writes `lines` as VTK XML poly data (.vtp), one VTK_POLY_LINE cell per
+/// polyline, in the same encoding as write_vtu.
+/// @throws std::invalid_argument from lines.validate(); std::runtime_error
+///         naming `path` when it cannot be written.
+void write_vtp(const VtkPolylines& lines, const std::string& path);
+
 /// One step of a time series: simulated time and the .vtu file name,
 /// relative to the .pvd's directory (ParaView resolves it that way).
 struct PvdEntry {
