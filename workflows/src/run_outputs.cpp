@@ -60,15 +60,20 @@ void RunOutputs::check_rigid_motion(const fdem::Engine& e, long step) {
 }
 
 std::array<double, 2> RunOutputs::displacement(const fdem::Engine& e, const Monitor& mon) const {
+  return node_displacements(e)(mon.node);
+}
+
+NodeDisplacement RunOutputs::node_displacements(const fdem::Engine& e) const {
   static const std::vector<double> none;
-  std::array<double, 2> u = monitor_displacement(e, mon, fields_.empty() ? none : fields_.back().ux,
-                                                 fields_.empty() ? none : fields_.back().uy);
+  const std::vector<double>& ux = fields_.empty() ? none : fields_.back().ux;
+  const std::vector<double>& uy = fields_.empty() ? none : fields_.back().uy;
   // Remove the engine's mean translation of the outer boundary (the
   // implicit part already has its rigid motion removed).
   const RigidFit fit = boundary_fit(e);
-  u[0] -= fit.tx;
-  u[1] -= fit.ty;
-  return u;
+  return [&e, &ux, &uy, fit](int node) {
+    std::array<double, 2> u = node_displacement(e, node, ux, uy);
+    return std::array<double, 2>{u[0] - fit.tx, u[1] - fit.ty};
+  };
 }
 
 std::array<double, 4> RunOutputs::key_point(const fdem::Engine& e, const Monitor& mon) const {
@@ -138,6 +143,8 @@ void RunOutputs::begin_history(const std::vector<Monitor>& monitors, const mesh:
               {"vault_settlement_mm", "wall_chord_convergence_mm", "shoulder_chord_convergence_mm",
                "outer_rotation_deg", "support_pressure_ratio"});
   for (const std::string& c : energy_columns()) cols.push_back(c);
+  if (instruments_)
+    for (const std::string& c : instruments_->columns()) cols.push_back(c);
   history_ = std::make_unique<History>(output_path(cli_.output_dir, "history.csv"), cols);
 }
 
@@ -163,6 +170,8 @@ void RunOutputs::record_step(const fdem::Engine& e, const mesh::Mesh& m,
   row.push_back(support_ratio);
   const fdem::EnergyBalance energy = e.energy_balance();
   for (double v : energy_row(energy)) row.push_back(v);
+  if (instruments_)
+    for (double v : instruments_->row(e, m, node_displacements(e))) row.push_back(v);
   history_->add(row);
   // Before the frame: the last frame stays the last good state.
   check_energy(energy, e.step_count(), energy_floor_);
@@ -199,6 +208,7 @@ nlohmann::json RunOutputs::monitors_json(const fdem::Engine& e,
   j["wall_chord_convergence_mm"] = mm(convergence(e, monitors, "left_wall", "right_wall"));
   j["shoulder_chord_convergence_mm"] =
       mm(convergence(e, monitors, "left_shoulder", "right_shoulder"));
+  if (instruments_) instruments_->add_monitors(j, node_displacements(e));
   return j;
 }
 
@@ -251,7 +261,8 @@ nlohmann::json RunOutputs::state() const {
           {"stages", stage_names_},
           {"frames", frames},
           {"handoff_dt", handoff_dt_},
-          {"max_rotation_deg", max_rotation_deg_}};
+          {"max_rotation_deg", max_rotation_deg_},
+          {"instruments", instruments_ ? instruments_->state() : nlohmann::json()}};
 }
 
 void RunOutputs::restore(const nlohmann::json& s, const std::string& from_dir) {
@@ -260,6 +271,8 @@ void RunOutputs::restore(const nlohmann::json& s, const std::string& from_dir) {
   stage_names_ = s.at("stages").get<std::vector<std::string>>();
   handoff_dt_ = s.value("handoff_dt", 0.0);  // 0: a checkpoint from before it was kept
   max_rotation_deg_ = s.value("max_rotation_deg", 0.0);
+  if (instruments_ && s.contains("instruments") && s.at("instruments").is_object())
+    instruments_->restore(s.at("instruments"));
   std::error_code same_ec;
   const bool same_dir = fs::equivalent(from_dir, cli_.output_dir, same_ec);
   for (const auto& f : s.at("frames")) {
@@ -375,6 +388,7 @@ void RunOutputs::finish(const fdem::Engine& e, const mesh::Mesh& m,
   j["ground_reaction_curve"] = grc;
   lining_outputs(e, m);
   damage_outputs(e, m);
+  if (instruments_) instruments_->finish(j, e, m, node_displacements(e));
   j["history_stages"] = stage_names_;  // history.csv's "stage" column indexes this list
   if (scene_.output.plots) plots(e, m);
   timer.stamp("output");
@@ -407,13 +421,7 @@ void RunOutputs::damage_outputs(const fdem::Engine& e, const mesh::Mesh& m) {
                   r.h, r.ratio, r.l_ch, kResolutionLimit);
     warn(msg);
   }
-  std::vector<char> bolt_triangle;
-  if (bolts_ && !bolts_->specs.empty()) {
-    bolt_triangle.assign(m.n_triangles(), 0);
-    for (const std::vector<int>& owned : bolts_->owned)
-      for (int t : owned) bolt_triangle[std::size_t(t)] = 1;
-  }
-  const BrokenZone z = broken_zone(e, m, r.h, bolt_triangle);
+  const BrokenZone z = broken_zone(e, m, r.h, bolt_triangles(bolts_, m.n_triangles()));
   fracture_zone_depth_ = z.zone_depth;
   j["broken_zone"] = {
       {"broken_rock_cracks", z.broken},
