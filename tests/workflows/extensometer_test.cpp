@@ -149,3 +149,25 @@ TEST(Monitor, relative_to_support_starts_at_the_lining_installation) {
   EXPECT_EQ(j.at("monitors").at("from_lining").at("from"), "support");
   fs::remove_all(out);
 }
+
+// The support reference is run state: a run restarted from a checkpoint
+// taken after the lining's installation writes the same history.csv,
+// relative readings included, as the run that went through.
+TEST(Monitor, restart_after_the_support_keeps_the_relative_readings) {
+  const fs::path ref = scratch("relative-ref"), out = scratch("relative-restart");
+  const std::string scene = kTestDir + "/relative_monitor.toml";
+  ASSERT_EQ(run("run " + scene + " -q -j 1 --checkpoint-every 100 -o " + ref.string()).code, 0);
+  std::vector<fs::path> kept;
+  for (const auto& e : fs::directory_iterator(ref / "checkpoints")) kept.push_back(e.path());
+  std::sort(kept.begin(), kept.end());
+  ASSERT_FALSE(kept.empty());
+  // checkpoint_<step>: the older kept one is in the equilibrium stage.
+  const std::string stem = kept.front().stem().string();
+  ASSERT_GT(std::stol(stem.substr(stem.find('_') + 1)), 301) << stem;
+  const Result r =
+      run("run " + scene + " -q -j 1 --restart " + kept.front().string() + " -o " + out.string());
+  ASSERT_EQ(r.code, 0) << r.output;
+  EXPECT_EQ(read_text(out / "history.csv"), read_text(ref / "history.csv"));
+  fs::remove_all(ref);
+  fs::remove_all(out);
+}
