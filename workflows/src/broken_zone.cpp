@@ -57,6 +57,45 @@ std::vector<Segment> excavation_boundary(const mesh::Mesh& m) {
   return out;
 }
 
+// The broken crack elements between two rock triangles of the fracture
+// zone, no bolt on either side (bolts carry crack elements of their own,
+// beyond the zone too), as segments of the reference configuration.
+std::vector<Segment> broken_rock_cracks(const fdem::Engine& e, const mesh::Mesh& m,
+                                        const std::vector<char>& bolt_triangle) {
+  const auto in_zone = [&](int tri) {
+    return m.zone[tri] == mesh::kRock && m.fracture[tri] &&
+           (bolt_triangle.empty() || !bolt_triangle[tri]);
+  };
+  const std::vector<int>& vertex = e.node_vertex();
+  std::vector<Segment> out;
+  for (std::size_t c = 0; c < e.n_cracks(); ++c) {
+    if (e.crack_state(c) != fdem::CrackState::kBroken) continue;
+    const auto t = e.crack_triangles(c);
+    if (!in_zone(t[0]) || !in_zone(t[1])) continue;
+    const auto nodes = e.crack_nodes(c);
+    out.push_back(segment(m, vertex[nodes[0]], vertex[nodes[1]]));
+  }
+  return out;
+}
+
+// Distance from a segment to a half-line: 0 where they cross, else the
+// least of the endpoints' distances to the half-line and the origin's to
+// the segment.
+double distance_to_ray(const Segment& s, const Ray& r) {
+  const double far = 1e6;  // longer than any model: the half-line as a segment
+  const Segment ray{r.x, r.y, r.x + far * r.dx, r.y + far * r.dy};
+  const auto cross = [](double ax, double ay, double bx, double by) { return ax * by - ay * bx; };
+  const double ex = s[2] - s[0], ey = s[3] - s[1];
+  const double den = cross(ex, ey, ray[2] - ray[0], ray[3] - ray[1]);
+  if (den != 0) {
+    const double u = cross(ray[0] - s[0], ray[1] - s[1], ray[2] - ray[0], ray[3] - ray[1]) / den;
+    const double v = cross(ray[0] - s[0], ray[1] - s[1], ex, ey) / den;
+    if (u >= 0 && u <= 1 && v >= 0 && v <= 1) return 0;
+  }
+  return std::min({distance_to_segment(s[0], s[1], ray), distance_to_segment(s[2], s[3], ray),
+                   distance_to_segment(r.x, r.y, s)});
+}
+
 }  // namespace
 
 Resolution fracture_resolution(const Scene& scene, const mesh::Mesh* m) {
@@ -88,21 +127,9 @@ BrokenZone broken_zone(const fdem::Engine& e, const mesh::Mesh& m, double h,
   const std::vector<Segment> edge = fracture_zone_edge(m);
   if (opening.empty()) return z;
   for (const Segment& s : edge) z.zone_depth = std::max(z.zone_depth, nearest(s[0], s[1], opening));
-  const std::vector<int>& vertex = e.node_vertex();
   double clearance = std::numeric_limits<double>::infinity();
-  for (std::size_t c = 0; c < e.n_cracks(); ++c) {
-    if (e.crack_state(c) != fdem::CrackState::kBroken) continue;
-    const auto t = e.crack_triangles(c);
-    // Rock on both sides, in the fracture zone, no bolt: bolts carry crack
-    // elements of their own, beyond the zone too.
-    const auto in_zone = [&](int tri) {
-      return m.zone[tri] == mesh::kRock && m.fracture[tri] &&
-             (bolt_triangle.empty() || !bolt_triangle[tri]);
-    };
-    if (!in_zone(t[0]) || !in_zone(t[1])) continue;
-    const auto nodes = e.crack_nodes(c);
-    const double px = (m.x[vertex[nodes[0]]] + m.x[vertex[nodes[1]]]) / 2;
-    const double py = (m.y[vertex[nodes[0]]] + m.y[vertex[nodes[1]]]) / 2;
+  for (const Segment& s : broken_rock_cracks(e, m, bolt_triangle)) {
+    const double px = (s[0] + s[2]) / 2, py = (s[1] + s[3]) / 2;
     ++z.broken;
     z.depth = std::max(z.depth, nearest(px, py, opening));
     if (!edge.empty()) clearance = std::min(clearance, nearest(px, py, edge));
@@ -112,6 +139,29 @@ BrokenZone broken_zone(const fdem::Engine& e, const mesh::Mesh& m, double h,
     z.at_edge = clearance < kEdgeElements * h;
   }
   return z;
+}
+
+std::vector<char> bolt_triangles(const fdem::BoltPlan* bolts, std::size_t n_triangles) {
+  std::vector<char> out;
+  if (!bolts || bolts->specs.empty()) return out;
+  out.assign(n_triangles, 0);
+  for (const std::vector<int>& owned : bolts->owned)
+    for (int t : owned) out[std::size_t(t)] = 1;
+  return out;
+}
+
+std::vector<double> broken_depth_along_rays(const fdem::Engine& e, const mesh::Mesh& m,
+                                            const std::vector<Ray>& rays, double half_width,
+                                            const std::vector<char>& bolt_triangle) {
+  std::vector<double> depth(rays.size(), 0.0);
+  for (const Segment& s : broken_rock_cracks(e, m, bolt_triangle))
+    for (std::size_t i = 0; i < rays.size(); ++i)
+      if (distance_to_ray(s, rays[i]) <= half_width) {
+        const double t = ((s[0] + s[2]) / 2 - rays[i].x) * rays[i].dx +
+                         ((s[1] + s[3]) / 2 - rays[i].y) * rays[i].dy;
+        depth[i] = std::max(depth[i], t);
+      }
+  return depth;
 }
 
 }  // namespace rockfdem::workflows

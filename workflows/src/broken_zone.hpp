@@ -16,6 +16,7 @@
 
 #include <vector>
 
+#include "rockfdem/fdem/bolt_install.hpp"
 #include "rockfdem/fdem/engine.hpp"
 #include "rockfdem/mesh/mesh.hpp"
 
@@ -53,5 +54,25 @@ struct BrokenZone {
 /// (bolt steel and grout, which reach beyond the fracture zone) are left out.
 BrokenZone broken_zone(const fdem::Engine& e, const mesh::Mesh& m, double h,
                        const std::vector<char>& bolt_triangle);
+
+/// Per triangle, 1 where a bolt of `bolts` owns it (steel or grout); empty
+/// when there are no bolts.
+std::vector<char> bolt_triangles(const fdem::BoltPlan* bolts, std::size_t n_triangles);
+
+/// A ray from a point on the opening into the rock (a key point and its
+/// outward normal, the opposite of its inward direction).
+struct Ray {
+  double x = 0, y = 0;    ///< origin on the opening [m]
+  double dx = 0, dy = 0;  ///< unit direction into the rock
+};
+
+/// Per ray, the depth of the broken zone along it [m]: over the broken
+/// crack elements broken_zone counts (rock on both sides, fracture zone, no
+/// bolt) that the ray crosses or passes within `half_width` of, the largest
+/// distance along the ray to an element's midpoint, (c - o) . d; 0 when the
+/// ray meets none.
+std::vector<double> broken_depth_along_rays(const fdem::Engine& e, const mesh::Mesh& m,
+                                            const std::vector<Ray>& rays, double half_width,
+                                            const std::vector<char>& bolt_triangle);
 
 }  // namespace rockfdem::workflows

@@ -78,8 +78,14 @@ double radial_convergence(const Monitor& mon, const std::array<double, 2>& u) {
 std::array<double, 2> monitor_displacement(const fdem::Engine& e, const Monitor& mon,
                                            const std::vector<double>& implicit_ux,
                                            const std::vector<double>& implicit_uy) {
-  std::array<double, 2> u = e.displacement(mon.node);
-  const int v = e.node_vertex()[mon.node];
+  return node_displacement(e, mon.node, implicit_ux, implicit_uy);
+}
+
+std::array<double, 2> node_displacement(const fdem::Engine& e, int node,
+                                        const std::vector<double>& implicit_ux,
+                                        const std::vector<double>& implicit_uy) {
+  std::array<double, 2> u = e.displacement(node);
+  const int v = e.node_vertex()[node];
   if (!implicit_ux.empty()) {
     u[0] += implicit_ux[v];
     u[1] += implicit_uy[v];

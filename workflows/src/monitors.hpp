@@ -38,6 +38,12 @@ std::vector<Monitor> tunnel_monitors(const mesh::MeshSpec& spec, const mesh::Mes
 /// Radial convergence of a displacement at a monitor: u . inward [m].
 double radial_convergence(const Monitor& mon, const std::array<double, 2>& u);
 
+/// Displacement of an engine node from the in-situ state: the implicit
+/// stage's part at its mesh vertex (may be empty) plus the engine's [m].
+std::array<double, 2> node_displacement(const fdem::Engine& e, int node,
+                                        const std::vector<double>& implicit_ux,
+                                        const std::vector<double>& implicit_uy);
+
 /// Displacement of a monitor from the in-situ state: the implicit stage's
 /// part (per mesh vertex, may be empty) plus the engine's increment [m].
 std::array<double, 2> monitor_displacement(const fdem::Engine& e, const Monitor& mon,

@@ -60,15 +60,20 @@ void RunOutputs::check_rigid_motion(const fdem::Engine& e, long step) {
 }
 
 std::array<double, 2> RunOutputs::displacement(const fdem::Engine& e, const Monitor& mon) const {
+  return node_displacements(e)(mon.node);
+}
+
+NodeDisplacement RunOutputs::node_displacements(const fdem::Engine& e) const {
   static const std::vector<double> none;
-  std::array<double, 2> u = monitor_displacement(e, mon, fields_.empty() ? none : fields_.back().ux,
-                                                 fields_.empty() ? none : fields_.back().uy);
+  const std::vector<double>& ux = fields_.empty() ? none : fields_.back().ux;
+  const std::vector<double>& uy = fields_.empty() ? none : fields_.back().uy;
   // Remove the engine's mean translation of the outer boundary (the
   // implicit part already has its rigid motion removed).
   const RigidFit fit = boundary_fit(e);
-  u[0] -= fit.tx;
-  u[1] -= fit.ty;
-  return u;
+  return [&e, &ux, &uy, fit](int node) {
+    std::array<double, 2> u = node_displacement(e, node, ux, uy);
+    return std::array<double, 2>{u[0] - fit.tx, u[1] - fit.ty};
+  };
 }
 
 std::array<double, 4> RunOutputs::key_point(const fdem::Engine& e, const Monitor& mon) const {
@@ -146,6 +151,8 @@ void RunOutputs::begin_history(const std::vector<Monitor>& monitors, const mesh:
   for (const std::string& c : energy_columns()) cols.push_back(c);
   if (bolt_results_)
     for (const std::string& c : bolt_results_->history_columns()) cols.push_back(c);
+  if (instruments_)
+    for (const std::string& c : instruments_->columns()) cols.push_back(c);
   history_ = std::make_unique<History>(output_path(cli_.output_dir, "history.csv"), cols);
 }
 
@@ -174,6 +181,8 @@ void RunOutputs::record_step(const fdem::Engine& e, const mesh::Mesh& m,
   if (bolt_results_)
     for (double v : bolt_results_->record(e, e.step_count(), e.time(), int(row[0])))
       row.push_back(v);
+  if (instruments_)
+    for (double v : instruments_->row(e, m, node_displacements(e))) row.push_back(v);
   history_->add(row);
   // Before the frame: the last frame stays the last good state.
   check_energy(energy, e.step_count(), energy_floor_);
@@ -214,6 +223,7 @@ nlohmann::json RunOutputs::monitors_json(const fdem::Engine& e,
   j["wall_chord_convergence_mm"] = mm(convergence(e, monitors, "left_wall", "right_wall"));
   j["shoulder_chord_convergence_mm"] =
       mm(convergence(e, monitors, "left_shoulder", "right_shoulder"));
+  if (instruments_) instruments_->add_monitors(j, node_displacements(e));
   return j;
 }
 
@@ -267,7 +277,8 @@ nlohmann::json RunOutputs::state() const {
           {"frames", frames},
           {"handoff_dt", handoff_dt_},
           {"max_rotation_deg", max_rotation_deg_},
-          {"bolts", bolt_results_ ? bolt_results_->state() : nlohmann::json()}};
+          {"bolts", bolt_results_ ? bolt_results_->state() : nlohmann::json()},
+          {"instruments", instruments_ ? instruments_->state() : nlohmann::json()}};
 }
 
 void RunOutputs::restore(const nlohmann::json& s, const std::string& from_dir) {
@@ -276,6 +287,8 @@ void RunOutputs::restore(const nlohmann::json& s, const std::string& from_dir) {
   stage_names_ = s.at("stages").get<std::vector<std::string>>();
   handoff_dt_ = s.value("handoff_dt", 0.0);  // 0: a checkpoint from before it was kept
   max_rotation_deg_ = s.value("max_rotation_deg", 0.0);
+  if (instruments_ && s.contains("instruments") && s.at("instruments").is_object())
+    instruments_->restore(s.at("instruments"));
   std::error_code same_ec;
   const bool same_dir = fs::equivalent(from_dir, cli_.output_dir, same_ec);
   for (const auto& f : s.at("frames")) {
@@ -354,6 +367,7 @@ void RunOutputs::finish(const fdem::Engine& e, const mesh::Mesh& m,
   j["ground_reaction_curve"] = grc;
   lining_outputs(e, m);
   damage_outputs(e, m);
+  if (instruments_) instruments_->finish(j, e, m, node_displacements(e));
   j["history_stages"] = stage_names_;  // history.csv's "stage" column indexes this list
   if (scene_.output.plots) plots(e, m);
   timer.stamp("output");
@@ -386,13 +400,7 @@ void RunOutputs::damage_outputs(const fdem::Engine& e, const mesh::Mesh& m) {
                   r.h, r.ratio, r.l_ch, kResolutionLimit);
     warn(msg);
   }
-  std::vector<char> bolt_triangle;
-  if (bolts_ && !bolts_->specs.empty()) {
-    bolt_triangle.assign(m.n_triangles(), 0);
-    for (const std::vector<int>& owned : bolts_->owned)
-      for (int t : owned) bolt_triangle[std::size_t(t)] = 1;
-  }
-  const BrokenZone z = broken_zone(e, m, r.h, bolt_triangle);
+  const BrokenZone z = broken_zone(e, m, r.h, bolt_triangles(bolts_, m.n_triangles()));
   fracture_zone_depth_ = z.zone_depth;
   j["broken_zone"] = {
       {"broken_rock_cracks", z.broken},

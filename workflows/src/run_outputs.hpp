@@ -8,6 +8,7 @@
 
 #include "bolt_results.hpp"
 #include "history.hpp"
+#include "instruments.hpp"
 #include "last_good.hpp"
 #include "monitors.hpp"
 #include "outer_boundary.hpp"
@@ -33,6 +34,15 @@ class RunOutputs {
   /// and whose section forces the outputs report (BoltResults); before
   /// begin_history, which adds their columns.
   void set_bolts(const fdem::BoltPlan* bolts);
+  /// The scene's monitors, extensometers and broken depth along rays:
+  /// history columns after the energy terms, summary entries.
+  void set_instruments(std::unique_ptr<Instruments> instruments) {
+    instruments_ = std::move(instruments);
+  }
+  /// A `lining` or `bolts` stage installed its support (Instruments).
+  void support_installed(const fdem::Engine& e) {
+    if (instruments_) instruments_->support_installed(node_displacements(e));
+  }
   /// One history row and (if enabled) one ParaView frame.
   void record_step(const fdem::Engine& e, const mesh::Mesh& m, const std::vector<Monitor>& monitors,
                    PhaseTimer& timer, const std::string& stage, double support_ratio);
@@ -82,6 +92,8 @@ class RunOutputs {
   std::array<double, 4> key_point(const fdem::Engine& e, const Monitor& mon) const;
   /// Monitor displacement from the in-situ state (implicit part + engine increment).
   std::array<double, 2> displacement(const fdem::Engine& e, const Monitor& mon) const;
+  /// The same for any engine node, as the instruments read it.
+  NodeDisplacement node_displacements(const fdem::Engine& e) const;
   /// Closure between two monitors along the line joining them, positive inwards [m].
   double convergence(const fdem::Engine& e, const std::vector<Monitor>& ms, const std::string& a,
                      const std::string& b) const;
@@ -90,6 +102,7 @@ class RunOutputs {
   RunSummary& summary_;
   std::vector<insitu::InsituField> fields_;
   std::unique_ptr<History> history_;
+  std::unique_ptr<Instruments> instruments_;
   coupling::PvdCollection pvd_;
   int frame_ = 0;
   const fdem::BoltPlan* bolts_ = nullptr;

@@ -246,6 +246,10 @@ int run_tunnel(const Scene& scene, const CommandLine& cli) {
                     "this mesh and its penalties with the stages' damping");
     engine.set_damping(in.damping);
   }
+  // Key points and instruments before anything is written: a point in
+  // no triangle or in the core is refused first.
+  const std::vector<Monitor> monitors = tunnel_monitors(scene.mesh, m, engine);
+  out.set_instruments(std::make_unique<Instruments>(scene, m, engine, monitors, bolts));
   timer.stamp("fdem setup");
   write_first_outputs(scene, cli, restart, m, fields, out);
   timer.stamp("output");
@@ -265,7 +269,6 @@ int run_tunnel(const Scene& scene, const CommandLine& cli) {
   }
   timer.stamp("fdem setup");
 
-  const std::vector<Monitor> monitors = tunnel_monitors(scene.mesh, m, engine);
   out.set_bolts(&bolts);
   out.begin_history(monitors, m);
   StageRunner stages(engine, m, handoff, scene, cli, out, monitors, bolts, support);

@@ -1,13 +1,17 @@
 // From a schema-checked TOML tree to the typed Scene, with defaults and the
 // checks that involve several keys (tunnel inside the domain, a material for
 // every zone, decreasing alpha, ...).
+#include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <set>
 #include <sstream>
 
 #include "rockfdem/error.hpp"
 #include "rockfdem/mesh/mesh.hpp"
+#include "rockfdem/mesh/outline.hpp"
 #include "rockfdem/workflows/scene.hpp"
 #include "rockfdem/workflows/scene_schema.hpp"
 #include "scene_reader.hpp"
@@ -424,6 +428,106 @@ void read_bolts(const Reader& r, Scene& s) {
     r.fail("bolt", "bolts need a tunnel model");
 }
 
+// [[monitor]] and [[extensometer]]: names fit for history.csv's columns,
+// points inside the rock domain and out of the excavated core, as far as
+// the scene alone tells (a generated tunnel's outline; a user's mesh is
+// checked against its triangles when the run places them).
+void check_instrument_name(const Reader& r, const std::string& key, std::set<std::string>& seen) {
+  const std::string name = r.text(key);
+  bool safe = !name.empty() && name.size() <= 40 && std::isalpha((unsigned char)name[0]);
+  for (char c : name) safe = safe && (std::isalnum((unsigned char)c) || c == '_');
+  if (!safe)
+    r.fail(key,
+           "not a name for history.csv's columns; allowed: a letter, then letters, digits or "
+           "'_', at most 40 characters");
+  for (const char* k :
+       {"vault", "crown", "left_shoulder", "right_shoulder", "left_wall", "right_wall", "invert"})
+    if (name == k) r.fail(key, "a key point has that name; allowed: any other name");
+  if (!seen.insert(name).second)
+    r.fail(key, "another monitor or extensometer has that name; allowed: a unique name");
+}
+
+// Why the point (x, y) of instrument `what` cannot be read, or empty.
+std::string misplaced(const Scene& s, const std::string& what, double x, double y) {
+  const std::string at = what + " at (" + num(x) + ", " + num(y) + ") m ";
+  const mesh::DomainSpec& d = s.mesh.domain;
+  if (std::abs(x - d.center_x) >= d.width / 2 || std::abs(y - d.center_y) >= d.height / 2)
+    return at + "lies outside the rock domain; allowed: x in (" + num(d.center_x - d.width / 2) +
+           ", " + num(d.center_x + d.width / 2) + "), y in (" + num(d.center_y - d.height / 2) +
+           ", " + num(d.center_y + d.height / 2) + ")";
+  const mesh::TunnelSpec& t = s.mesh.tunnel;
+  if (s.mesh.kind == mesh::ModelKind::kTunnel &&
+      mesh::inside_outline(mesh::tunnel_outline(t, t.lining_thickness), x, y))
+    return at + "lies inside the opening, in the excavated core; allowed: a point in the rock " +
+           "or the lining";
+  return "";
+}
+
+void read_monitors(const Reader& r, Scene& s, std::set<std::string>& names) {
+  const toml::node* list = r.node("monitor");
+  for (std::size_t i = 0; list && i < list->as_array()->size(); ++i) {
+    const std::string p = "monitor[" + std::to_string(i) + "]";
+    for (const char* k : {".name", ".x", ".y"}) r.require(p + k, "a monitor needs name, x and y");
+    check_instrument_name(r, p + ".name", names);
+    MonitorSpec m{r.text(p + ".name"), r.number(p + ".x"), r.number(p + ".y"),
+                  r.boolean(p + ".relative_to_support")};
+    const std::string where = misplaced(s, p + " \"" + m.name + "\"", m.x, m.y);
+    if (!where.empty()) r.fail(p + ".x", where);
+    if (m.relative_to_support && std::none_of(s.stages.begin(), s.stages.end(), [](auto& st) {
+          return st.kind == "lining" || st.kind == "bolts";
+        }))
+      r.fail(p + ".relative_to_support",
+             "the stages install no support; allowed: true only with a `lining` or `bolts` stage");
+    s.monitors.push_back(m);
+  }
+}
+
+ExtensometerSpec read_extensometer(const Reader& r, const Scene& s, const std::string& p) {
+  ExtensometerSpec x;
+  x.name = r.text(p + ".name");
+  x.length = r.number(p + ".length");
+  x.anchors = r.integer(p + ".anchors");
+  if (r.has(p + ".from")) {
+    if (r.has(p + ".head") || r.has(p + ".direction"))
+      r.fail(p + ".from", "the head is the key point's; allowed: `from` or `head` and `direction`");
+    x.from = r.text(p + ".from") == "crown" ? "vault" : r.text(p + ".from");
+    return x;
+  }
+  r.require(p + ".head", "an extensometer needs `from`, or `head` and `direction`");
+  r.require(p + ".direction", "an extensometer needs `from`, or `head` and `direction`");
+  const auto h = point(r, p + ".head"), d = point(r, p + ".direction");
+  const double len = std::hypot(d[0], d[1]);
+  if (!(len > 0)) r.fail(p + ".direction", "no direction; allowed: a non-zero [dx, dy]");
+  x.head_x = h[0], x.head_y = h[1], x.dir_x = d[0] / len, x.dir_y = d[1] / len;
+  for (int k = 0; k <= x.anchors; ++k) {
+    const double depth = x.length * k / x.anchors;
+    const std::string what =
+        p + " \"" + x.name + "\"" + (k ? " anchor " + std::to_string(k) : " head");
+    const std::string where =
+        misplaced(s, what, x.head_x + depth * x.dir_x, x.head_y + depth * x.dir_y);
+    if (!where.empty()) r.fail(p + (k ? ".length" : ".head"), where);
+  }
+  return x;
+}
+
+void read_instruments(const Reader& r, Scene& s) {
+  std::set<std::string> names;
+  const bool tunnel =
+      s.mesh.kind == mesh::ModelKind::kTunnel || s.mesh.kind == mesh::ModelKind::kMshFile;
+  for (const char* table : {"monitor", "extensometer"})
+    if (r.has(table) && !tunnel)
+      r.fail(table, "monitors and extensometers need a tunnel or msh model; allowed: none here");
+  read_monitors(r, s, names);
+  const toml::node* list = r.node("extensometer");
+  for (std::size_t i = 0; list && i < list->as_array()->size(); ++i) {
+    const std::string p = "extensometer[" + std::to_string(i) + "]";
+    for (const char* k : {".name", ".length"})
+      r.require(p + k, "an extensometer needs name and length");
+    check_instrument_name(r, p + ".name", names);
+    s.extensometers.push_back(read_extensometer(r, s, p));
+  }
+}
+
 // The explicit stages after the implicit hand-off. An "insitu" entry may
 // only open the list; a lining only exists with a lining ring; softening
 // only goes down, and only while the core is there.
@@ -565,6 +669,7 @@ Scene build_scene(const RawScene& raw, const std::string& base_dir) {
   s.output.checkpoint_every = static_cast<long>(r.number("output.checkpoint_every"));
   read_bolts(r, s);
   read_stages(r, s);
+  read_instruments(r, s);
   std::ostringstream canonical;
   canonical << raw.root;
   s.canonical = canonical.str();

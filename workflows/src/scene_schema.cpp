@@ -4,6 +4,7 @@
 #include "rockfdem/workflows/scene_schema.hpp"
 
 #include <algorithm>
+#include <array>
 #include <sstream>
 
 namespace rockfdem::workflows {
@@ -108,6 +109,50 @@ void add_material(std::vector<KeySpec>& s, const std::string& name, const std::s
                          "the pattern is the same for any thread count."));
   s.push_back(integer(p + "heterogeneity_seed", "1", 0, 1e15,
                       "Seed of the " + role + "'s strength heterogeneity."));
+}
+
+// [[monitor]] and [[extensometer]]: history points followed as material
+// points of the rock (docs/workflow.md, "Monitors and results").
+void add_instruments(std::vector<KeySpec>& s) {
+  const std::string naming =
+      ": a letter, then letters, digits or '_', at most 40 characters (history.csv's column "
+      "names start with it), unique among monitors and extensometers and none of the key "
+      "points' names.";
+  s.push_back(text("monitor[].name", "", "Name of the monitor" + naming));
+  s.push_back(number("monitor[].x", "m", "", -kInf, false, kInf, false,
+                     "x of the material point followed (in the rock or the lining, not in the "
+                     "excavated core)."));
+  s.push_back(number("monitor[].y", "m", "", -kInf, false, kInf, false,
+                     "y of the material point followed."));
+  s.push_back(boolean("monitor[].relative_to_support", "false",
+                      "Read the displacement from the state at the first `lining` or `bolts` "
+                      "stage (what a point installed with the support reads; 0 before); "
+                      "false: from the in-situ state."));
+  s.push_back(text("extensometer[].name", "", "Name of the extensometer" + naming));
+  const std::string either = "`from`, or `head` and `direction`";
+  KeySpec from = choice(
+      "extensometer[].from", "",
+      {"vault", "crown", "left_shoulder", "right_shoulder", "left_wall", "right_wall", "invert"},
+      "Key point of the opening the head sits at; the extensometer runs along its outward "
+      "normal into the rock (`crown` is the vault). Or give `head` and `direction` instead.");
+  from.default_doc = either + " required";
+  s.push_back(from);
+  for (const auto& [key, unit, what] :
+       {std::array<std::string, 3>{"head", "m",
+                                   "Head (collar) of the extensometer, [x, y], when `from` is "
+                                   "not given."},
+        {"direction", "-",
+         "Direction from the head into the rock, [dx, dy] (any length but 0)."}}) {
+    KeySpec k = number("extensometer[]." + key, unit, "", -kInf, false, kInf, false, what);
+    k.type = KeyType::kNumberArray;
+    k.default_doc = either + " required";
+    s.push_back(k);
+  }
+  s.push_back(
+      positive("extensometer[].length", "m", "", "Distance from the head to the deepest anchor."));
+  s.push_back(integer("extensometer[].anchors", "3", 1, 50,
+                      "Anchors at equal spacing from the head: anchor k at k length / anchors; "
+                      "the deepest is the fixed reference of the readings."));
 }
 
 std::vector<KeySpec> build_schema() {
@@ -344,6 +389,7 @@ std::vector<KeySpec> build_schema() {
   KeySpec fan_kind = kind;
   fan_kind.path = "bolt_fan[].kind";
   s.push_back(fan_kind);
+  add_instruments(s);
   // [contact]
   s.push_back(boolean("contact.enabled", "true",
                       "Penalty contact with friction between triangles on free surfaces and "

@@ -294,6 +294,7 @@ void StageRunner::run(const StageSpec& stage, PhaseTimer& timer) {
     cursor_.first = engine_.step_count();
     cursor_.t0 = engine_.time();
     cursor_.changes = stage.kind == "grout" ? nlohmann::json::object() : apply(stage);
+    if (stage.kind == "lining" || stage.kind == "bolts") out_.support_installed(engine_);
     cursor_.monitor_u = monitor_displacements();
     cursor_.started = true;
   }

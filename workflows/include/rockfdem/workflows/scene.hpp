@@ -114,6 +114,25 @@ struct BondSettings {
 };
 using GroutSettings = BondSettings;
 
+/// A history point of the user's (scene [[monitor]]): the rock's material
+/// point at (x, y) of the mesh.
+struct MonitorSpec {
+  std::string name;
+  double x = 0, y = 0;               ///< [m]
+  bool relative_to_support = false;  ///< read from the first lining or bolts stage on
+};
+
+/// A borehole extensometer (scene [[extensometer]]): a head and `anchors`
+/// anchors at equal spacing to `length` along a line into the rock.
+struct ExtensometerSpec {
+  std::string name;
+  std::string from;               ///< key point the head is at (its outward normal); empty: given
+  double head_x = 0, head_y = 0;  ///< [m], when `from` is empty
+  double dir_x = 0, dir_y = 0;    ///< unit vector into the rock, when `from` is empty
+  double length = 0;              ///< head to the deepest anchor [m]
+  int anchors = 3;
+};
+
 struct OutputSettings {
   int every_steps = 1000;
   bool vtk = true;
@@ -132,7 +151,9 @@ struct Scene {
   std::vector<StageSpec> stages;  ///< explicit stages after the implicit one (tunnels)
   BoltSettings bolts;
   GroutSettings grout;
-  BondSettings lining_interface;  ///< re-joins the lining-rock crack elements at installation
+  BondSettings lining_interface;      ///< re-joins the lining-rock crack elements at installation
+  std::vector<MonitorSpec> monitors;  ///< scene [[monitor]]
+  std::vector<ExtensometerSpec> extensometers;  ///< scene [[extensometer]]
   OutputSettings output;
   std::string
       canonical;  ///< the validated scene as TOML (overrides applied), for hashing and records
