@@ -84,7 +84,9 @@ void check_bolt_placement(const RawScene& raw, const mesh::MeshSpec& m, const Bo
   const bool ends_inside = depth(opening, s[2], s[3]) < inner;
   const double t = ends_inside ? 1.0 : deepest_along(opening, s);
   const double x = s[0] + t * (s[2] - s[0]), y = s[1] + t * (s[3] - s[1]);
-  if (depth(opening, x, y) < inner)
+  const double collar = depth(opening, s[0], s[1]);
+  // Deepest at its collar, the bolt is misplaced at its start (below).
+  if (depth(opening, x, y) < inner && depth(opening, x, y) < collar - tol)
     refuse(
         raw, b, ends_inside,
         std::string(ends_inside ? "lies in the opening: its end " : "runs through the opening: ") +
@@ -92,7 +94,6 @@ void check_bolt_placement(const RawScene& raw, const mesh::MeshSpec& m, const Bo
             " inside the excavation boundary" +
             (lining > 0 ? " (the lining is " + metres(lining) + " thick)" : std::string()) +
             "; allowed: a bolt from the opening's boundary into the rock");
-  const double collar = depth(opening, s[0], s[1]);
   if (collar > tol || collar < inner) {
     const bool reversed = std::abs(depth(opening, s[2], s[3])) <= tol;
     refuse(raw, b, false,
