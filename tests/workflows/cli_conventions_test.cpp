@@ -244,7 +244,7 @@ TEST(RunFolder, a_msh_scene_reruns_from_anywhere) {
   fs::copy_file(out / "scene.toml", moved / "s.toml");
   r = run("check " + (moved / "s.toml").string());
   EXPECT_EQ(r.code, 0) << r.output;
-  EXPECT_TRUE(has(read_text(moved / "s.toml"), "file = \"" + (dir / "mesh/mesh.msh").string()))
+  EXPECT_TRUE(has(read_text(moved / "s.toml"), "file = '" + (dir / "mesh/mesh.msh").string() + "'"))
       << read_text(moved / "s.toml");
   fs::remove_all(dir);
   fs::remove_all(moved);
