@@ -141,8 +141,10 @@ std::string owner_record(const Scene& scene) {
 // `rockfdem run DIR/scene.toml` repeats the run.
 void write_scene_as_run(const std::string& dir, const Scene& scene) {
   // printable(): a file name or --set value holding a newline stays in its comment.
-  std::string head =
-      "# The scene as rockfdem " + version_string() + " ran it: " + detail::printable(scene.source);
+  const std::string source = scene.source == "default"
+                                 ? "the built-in default (scenes/tunnel-seed.toml)"
+                                 : detail::printable(scene.source);
+  std::string head = "# The scene as rockfdem " + version_string() + " ran it: " + source;
   for (const std::string& set : scene.overrides) head += "\n#   --set " + detail::printable(set);
   coupling::atomic_write_text(output_path(dir, "scene.toml"), head + "\n\n" + scene.as_run);
 }

@@ -95,7 +95,7 @@ void check_bolt_placement(const RawScene& raw, const mesh::MeshSpec& m, const Bo
             (lining > 0 ? " (the lining is " + metres(lining) + " thick)" : std::string()) +
             "; allowed: a bolt from the opening's boundary into the rock");
   if (collar > tol || collar < inner) {
-    const bool reversed = std::abs(depth(opening, s[2], s[3])) <= tol;
+    const bool reversed = collar > tol && std::abs(depth(opening, s[2], s[3])) <= tol;
     refuse(raw, b, false,
            "starts at " + point_text(s[0], s[1]) + ", " + metres(std::abs(collar)) +
                (collar > 0 ? " outside" : " inside") +
