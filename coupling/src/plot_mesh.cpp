@@ -26,6 +26,7 @@
 #include <stdexcept>
 
 #include "plot_display.hpp"
+#include "plot_overlay.hpp"
 #include "plot_png.hpp"
 #include "rockfdem/coupling/plot.hpp"
 
@@ -194,6 +195,14 @@ vtkSmartPointer<vtkRenderer> colour_bar(vtkLookupTable* lut, const std::string& 
     p->SetFontSize(14);
   }
   bar->GetTitleTextProperty()->SetFontSize(16);
+  if (lut->GetIndexedLookup()) {  // named swatches: leave room for the names beside them
+    bar->SetPosition(0.15, 0.05);
+    bar->SetWidth(0.15);
+    bar->SetTextPositionToPrecedeScalarBar();  // annotations go on the other side: the right
+    bar->GetAnnotationTextProperty()->SetColor(0.0, 0.0, 0.0);
+    bar->GetAnnotationTextProperty()->SetFontSize(14);
+    bar->GetAnnotationTextProperty()->ItalicOff();
+  }
   auto renderer = vtkSmartPointer<vtkRenderer>::New();
   renderer->SetViewport(kMeshRight, 0.0, 1.0, kMeshTop);
   renderer->SetBackground(1.0, 1.0, 1.0);
@@ -232,7 +241,7 @@ const VtkArray& field_to_draw(const VtkGrid& grid, const std::string& name, int 
 
 bool render_mesh_png(const VtkGrid& grid, const std::string& cell_field, int component,
                      const std::string& path, const std::string& title, int width, int height,
-                     std::string* why, const MeshView* view) {
+                     std::string* why, const MeshView* view, const MeshOverlay* overlay) {
   grid.validate();
   const VtkArray& field = field_to_draw(grid, cell_field, component);
   check_image_size(width, height);
@@ -245,7 +254,10 @@ bool render_mesh_png(const VtkGrid& grid, const std::string& cell_field, int com
 
   const std::vector<double> values = triangle_values(grid, field, component);
   const MeshView shown = view ? *view : whole(grid);
-  const auto lut = blue_to_red(finite_range(view ? inside_only(grid, values, shown) : values));
+  const auto lut =
+      overlay && !overlay->categories.empty()
+          ? category_colours(overlay->categories)
+          : blue_to_red(finite_range(view ? inside_only(grid, values, shown) : values));
 
   vtkNew<vtkRenderer> mesh;
   mesh->SetViewport(0.0, 0.0, kMeshRight, kMeshTop);
@@ -254,6 +266,7 @@ bool render_mesh_png(const VtkGrid& grid, const std::string& cell_field, int com
   fit_camera(mesh, shown, kMeshRight * width, kMeshTop * height);
   const double lift = 1e-3 * mesh->GetActiveCamera()->GetParallelScale();
   mesh->AddActor(crack_actor(grid, lift));
+  if (overlay) add_overlay(mesh, *overlay, lift);
   mesh->ResetCameraClippingRange();
 
   vtkNew<vtkRenderWindow> window;

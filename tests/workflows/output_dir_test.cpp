@@ -152,11 +152,12 @@ TEST(OutputDir, force_removes_an_earlier_runs_outputs_and_nothing_else) {
   ASSERT_EQ(supported.code, 0) << supported.output;
   ASSERT_TRUE(fs::exists(out / "bolt_00.csv"));
   ASSERT_TRUE(fs::exists(out / "checkpoints"));
-  ASSERT_EQ(run("mesh " + kCircular + " -q --force -o " + out.string()).code, 0);
+  ASSERT_EQ(
+      run("mesh " + kCircular + " -q --set output.plots=false --force -o " + out.string()).code, 0);
   // .rockfdem-lock: the folder's run lock (one run per folder).
-  const std::set<std::string> left{
-      ".rockfdem-lock", ".rockfdem-scene", "mesh.msh",       "mesh.vtu",
-      "summary.json",   "notes.txt",       "fdem_notes.vtu", "sub"};
+  const std::set<std::string> left{".rockfdem-lock", ".rockfdem-scene", "mesh.msh",
+                                   "mesh.vtu",       "summary.json",    "scene.toml",
+                                   "notes.txt",      "fdem_notes.vtu",  "sub"};
   EXPECT_EQ(names_in(out), left);
   fs::remove_all(out);
 }

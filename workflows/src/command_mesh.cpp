@@ -1,9 +1,11 @@
 // `rockfdem mesh SCENE -o DIR`: gmsh meshing alone; writes mesh.msh (for
 // gmsh and reuse), mesh.vtu (zones and quality, for ParaView; unless
-// output.vtk = false) and summary.json.
+// output.vtk = false), preview.png (unless output.plots = false) and
+// summary.json.
 #include <iostream>
 
 #include "commands.hpp"
+#include "mesh_preview.hpp"
 #include "output_dir.hpp"
 #include "phase_timer.hpp"
 #include "rockfdem/coupling/mesh_grid.hpp"
@@ -26,10 +28,11 @@ int command_mesh(const Scene& scene, const CommandLine& cli) {
   mesh::write_msh(m, output_path(cli.output_dir, "mesh.msh"));
   if (scene.output.vtk)
     coupling::write_vtu(coupling::mesh_grid(m), output_path(cli.output_dir, "mesh.vtu"));
+  if (scene.output.plots) write_mesh_preview(scene, m, cli.output_dir, summary, cli.quiet);
   timer.stamp("output");
 
   summary.record_mesh(m, report);
-  summary.note_turned_off(scene.output, "mesh.vtu", false);
+  summary.note_turned_off(scene.output, "mesh.vtu", true);
   summary.skipped("insitu, fdem: `rockfdem mesh` meshes only");
   summary.json()["status"] = "completed";
   summary.set_timings(timer);

@@ -45,6 +45,7 @@ int run_command(const CommandLine& cli) {
   }
   const Scene scene =
       cli.scene.empty() ? load_default_scene(cli.overrides) : load_scene(cli.scene, cli.overrides);
+  for (const std::string& w : scene.warnings) std::cerr << "rockfdem: warning: " << w << '\n';
   g_threads = cli.threads > 0 ? cli.threads : omp_get_num_procs();
   active_threads();
   refuse_if_too_large(scene);

@@ -14,6 +14,8 @@
 #include "rockfdem/coupling/atomic_file.hpp"
 #include "rockfdem/error.hpp"
 #include "rockfdem/workflows/scene.hpp"
+#include "rockfdem/workflows/version.hpp"
+#include "scene_reader.hpp"
 
 namespace fs = std::filesystem;
 
@@ -61,6 +63,8 @@ void lock_output_dir(const std::string& dir) {
 // Every name a command writes into OUTDIR (workflow.md, "Monitors and
 // results"); numbered files are matched by prefix, digits and suffix.
 const char* const kFixedNames[] = {"summary.json",
+                                   "scene.toml",
+                                   "preview.png",
                                    "history.csv",
                                    "mesh.msh",
                                    "mesh.vtu",
@@ -128,7 +132,7 @@ bool is_checkpoint_file(const std::string& name) {
 // /abs/x.toml), so that a restart or rerun of the same scene is not taken
 // for another's; "default" stays as it is.
 std::string scene_identity(const Scene& scene) {
-  if (scene.source == "default") return scene.source;
+  if (scene.source == "default" || scene.source == "<stdin>") return scene.source;
   std::error_code ec;
   const fs::path p = fs::weakly_canonical(fs::absolute(scene.source, ec), ec);
   return ec ? scene.source : p.string();
@@ -139,6 +143,18 @@ std::string owner_record(const Scene& scene) {
   out << scene_identity(scene) << '\n'
       << std::hex << std::hash<std::string>{}(scene.canonical) << '\n';
   return out.str();
+}
+
+// DIR/scene.toml: the scene with its --set values applied, so that
+// `rockfdem run DIR/scene.toml` repeats the run.
+void write_scene_as_run(const std::string& dir, const Scene& scene) {
+  // printable(): a file name or --set value holding a newline stays in its comment.
+  const std::string source = scene.source == "default"
+                                 ? "the built-in default (scenes/tunnel-seed.toml)"
+                                 : detail::printable(scene.source);
+  std::string head = "# The scene as rockfdem " + version_string() + " ran it: " + source;
+  for (const std::string& set : scene.overrides) head += "\n#   --set " + detail::printable(set);
+  coupling::atomic_write_text(output_path(dir, "scene.toml"), head + "\n\n" + scene.as_run);
 }
 
 }  // namespace
@@ -195,6 +211,7 @@ bool prepare_output_dir(const std::string& dir, const Scene& scene, bool force,
   // Frames or plots of a longer earlier run must not sit beside the new ones.
   if (force && claimed && !keep_previous) remove_previous_outputs(dir);
   coupling::atomic_write_text(owner, owner_record(scene));
+  write_scene_as_run(dir, scene);
   return claimed;
 }
 

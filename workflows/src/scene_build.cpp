@@ -6,6 +6,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <iostream>
 #include <set>
 #include <sstream>
 
@@ -14,11 +15,13 @@
 #include "rockfdem/mesh/outline.hpp"
 #include "rockfdem/workflows/scene.hpp"
 #include "rockfdem/workflows/scene_schema.hpp"
+#include "scene_checks.hpp"
 #include "scene_reader.hpp"
 
 namespace rockfdem::workflows {
 namespace {
 
+using detail::BoltPlacement;
 using detail::fail_key;
 using detail::RawScene;
 
@@ -82,6 +85,7 @@ class Reader {
     return changed(second) && !changed(first);
   }
   const std::string& source() const { return raw_.source; }
+  const RawScene& raw() const { return raw_; }
 
  private:
   static const KeySpec& spec(const std::string& path) {
@@ -376,22 +380,19 @@ void read_bolts(const Reader& r, Scene& s) {
   b.cable = read_steel(r, "cables");
   s.grout = read_bond(r, "grout");
   s.lining_interface = read_bond(r, "lining_interface");
-  struct Found {
-    std::string key;
-    std::array<double, 4> seg;
-    bool cable;
-  };
-  std::vector<Found> found;
+  std::vector<BoltPlacement> found;
   const auto is_cable = [&](const std::string& p) {
     return r.has(p + ".kind") && r.text(p + ".kind") == "cable";
   };
+  std::vector<std::uint8_t> cables;
   if (const toml::node* list = r.node("bolt")) {
     for (std::size_t i = 0; i < list->as_array()->size(); ++i) {
       const std::string p = "bolt[" + std::to_string(i) + "]";
       r.require(p + ".start", "a bolt needs its head");
       r.require(p + ".end", "a bolt needs its end");
       const auto a = point(r, p + ".start"), e = point(r, p + ".end");
-      found.push_back({p + ".end", {a[0], a[1], e[0], e[1]}, is_cable(p)});
+      found.push_back({p + ".start", p + ".end", p, {a[0], a[1], e[0], e[1]}});
+      cables.push_back(is_cable(p));
     }
   }
   if (const toml::node* list = r.node("bolt_fan")) {
@@ -407,22 +408,20 @@ void read_bolts(const Reader& r, Scene& s) {
       for (int k = 0; k < count; ++k) {
         const double deg = count == 1 ? a0 : a0 + (a1 - a0) * k / (count - 1);
         const double cs = std::cos(deg * M_PI / 180), sn = std::sin(deg * M_PI / 180);
-        found.push_back({p + ".length",
+        found.push_back({p + (r.has(p + ".centre") ? ".centre" : ".radius"),
+                         p + ".length",
+                         "bolt " + std::to_string(k + 1) + " of " + std::to_string(count) + " of " +
+                             p + " (" + num(deg) + " deg)",
                          {c[0] + radius * cs, c[1] + radius * sn, c[0] + (radius + length) * cs,
-                          c[1] + (radius + length) * sn},
-                         is_cable(p)});
+                          c[1] + (radius + length) * sn}});
+        cables.push_back(is_cable(p));
       }
     }
   }
-  const mesh::DomainSpec& d = s.mesh.domain;
-  for (const auto& [key, seg, cable] : found) {
-    if (std::hypot(seg[2] - seg[0], seg[3] - seg[1]) <= 0) r.fail(key, "a bolt has zero length");
-    for (int k = 0; k < 4; k += 2)
-      if (std::abs(seg[k] - d.center_x) >= d.width / 2 ||
-          std::abs(seg[k + 1] - d.center_y) >= d.height / 2)
-        r.fail(key, "the bolt reaches outside the rock domain");
-    b.segments.push_back(seg);
-    b.is_cable.push_back(cable);
+  for (std::size_t i = 0; i < found.size(); ++i) {
+    detail::check_bolt_placement(r.raw(), s.mesh, found[i]);
+    b.segments.push_back(found[i].seg);
+    b.is_cable.push_back(cables[i]);
   }
   if (!b.segments.empty() && s.mesh.kind != mesh::ModelKind::kTunnel)
     r.fail("bolt", "bolts need a tunnel model");
@@ -628,6 +627,19 @@ void reject_unused_sections(const Reader& r, mesh::ModelKind kind) {
                           r.text("model.kind") + "\"");
 }
 
+// The validated tree as TOML, with a .msh scene's mesh file as an absolute
+// path, so that the copy in a run folder runs from anywhere.
+std::string scene_as_run(toml::table root, const mesh::MeshSpec& m) {
+  if (m.kind == mesh::ModelKind::kMshFile) {
+    std::error_code ec;
+    const std::filesystem::path file = std::filesystem::absolute(m.msh.path, ec).lexically_normal();
+    root["msh"].as_table()->insert_or_assign("file", ec ? m.msh.path : file.string());
+  }
+  std::ostringstream out;
+  out << root << '\n';
+  return out.str();
+}
+
 Scene build_scene(const RawScene& raw, const std::string& base_dir) {
   const Reader r(raw);
   Scene s;
@@ -679,6 +691,8 @@ Scene build_scene(const RawScene& raw, const std::string& base_dir) {
   std::ostringstream key;
   key << keyed;
   s.restart_key = key.str();
+  s.as_run = scene_as_run(raw.root, s.mesh);
+  s.warnings = detail::unit_warnings(raw);
   return s;
 }
 
@@ -691,24 +705,76 @@ std::string directory_of(const std::string& path) {
 
 bool has_lining_ring(const Scene& s) { return s.materials.count("lining") && has_ring(s.mesh); }
 
-Scene parse_scene(const std::string& text, const std::string& source, const std::string& base_dir,
-                  const std::vector<std::string>& overrides) {
-  const RawScene raw = detail::read_raw_scene(text, source, overrides);
-  return build_scene(raw, base_dir);
+namespace {
+
+// A check between keys that fails only with the --set values applied is the
+// override's fault, even when the key it names is in the file: the first
+// override whose addition makes the scene fail is named.
+[[noreturn]] void blame_override(const std::string& text, const std::string& source,
+                                 const std::string& base_dir,
+                                 const std::vector<std::string>& overrides,
+                                 const InputError& error) {
+  const auto fails = [&](std::size_t n) {
+    try {
+      build_scene(detail::read_raw_scene(text, source, {overrides.begin(), overrides.begin() + n}),
+                  base_dir);
+      return false;
+    } catch (const InputError&) {
+      return true;
+    }
+  };
+  if (fails(0)) throw error;  // the file itself is at fault
+  std::size_t n = 1;
+  while (n < overrides.size() && !fails(n)) ++n;
+  throw InputError(detail::printable("--set " + overrides[n - 1] +
+                                     ": makes the scene invalid: " + error.what()));
 }
 
+}  // namespace
+
+Scene parse_scene(const std::string& text, const std::string& source, const std::string& base_dir,
+                  const std::vector<std::string>& overrides) {
+  try {
+    Scene s = build_scene(detail::read_raw_scene(text, source, overrides), base_dir);
+    s.overrides = overrides;
+    return s;
+  } catch (const InputError& e) {
+    if (overrides.empty() || std::string(e.what()).rfind("--set ", 0) == 0) throw;
+    blame_override(text, source, base_dir, overrides, e);
+  }
+}
+
+namespace {
+
+constexpr std::uintmax_t kMaxSceneBytes = std::uintmax_t(1) << 20;  // as the scene reader's bound
+
+// `-`: the scene from stdin, read up to one byte past the bound a file has.
+Scene load_stdin_scene(const std::vector<std::string>& overrides) {
+  std::string text(kMaxSceneBytes + 1, '\0');
+  std::cin.read(&text[0], std::streamsize(text.size()));
+  text.resize(std::size_t(std::cin.gcount()));
+  if (text.size() > kMaxSceneBytes)
+    throw InputError("<stdin>: the scene holds more than " + std::to_string(kMaxSceneBytes) +
+                     " bytes; allowed: at most " + std::to_string(kMaxSceneBytes) +
+                     " bytes (1 MiB)");
+  return parse_scene(text, "<stdin>", ".", overrides);
+}
+
+}  // namespace
+
 Scene load_scene(const std::string& path, const std::vector<std::string>& overrides) {
+  if (path == "-") return load_stdin_scene(overrides);
   // A FIFO, a device or a huge file is refused before anything is read:
   // reading first would block or grow without bound.
   std::error_code ec;
   const auto status = std::filesystem::status(path, ec);
   if (!ec && std::filesystem::exists(status) && !std::filesystem::is_regular_file(status))
     throw InputError(path + ": not a regular file; a scene is a TOML text file");
-  constexpr std::uintmax_t kMaxBytes = std::uintmax_t(1) << 20;  // as the scene reader's bound
   const std::uintmax_t size = std::filesystem::file_size(path, ec);
-  if (!ec && size > kMaxBytes)
+  if (!ec && size > kMaxSceneBytes)
     throw InputError(path + ": the scene file has " + std::to_string(size) +
-                     " bytes; allowed: at most " + std::to_string(kMaxBytes) + " bytes (1 MiB)");
+                     " bytes; allowed: at most " + std::to_string(kMaxSceneBytes) +
+                     " bytes (1 MiB)");
   std::ifstream in(path);
   if (!in) throw InputError(path + ": cannot open the scene file");
   std::ostringstream text;

@@ -254,22 +254,21 @@ std::size_t table_index(const std::string& rest) {
 
 // One step down a --set path: "name" is a table (made if missing),
 // "name[i]" the i-th table of an existing array of tables.
-toml::table* descend(const RawScene& scene, const std::string& text, toml::table& table,
-                     const std::string& part) {
+toml::table* descend(const std::string& text, toml::table& table, const std::string& part) {
   const auto bracket = part.find('[');
   if (bracket == std::string::npos) {
     auto [it, inserted] = table.insert(part, toml::table{});
     (void)inserted;
     if (toml::table* t = it->second.as_table()) return t;
-    fail(scene.source + ": --set " + text + ": '" + part + "' is not a table");
+    fail("--set " + text + ": '" + part + "' is not a table");
   }
   const std::string name = part.substr(0, bracket);
   toml::array* list = table[name].as_array();
   const std::size_t n = list ? list->size() : 0;
   const std::size_t index = table_index(part.substr(bracket + 1));
   if (index >= n || !(*list)[index].is_table())
-    fail(scene.source + ": --set " + text + ": '" + part + "' is not one of the scene's " +
-         std::to_string(n) + " entries of [[" + name + "]]; allowed: " +
+    fail("--set " + text + ": '" + part + "' is not one of the scene's " + std::to_string(n) +
+         " entries of [[" + name + "]]; allowed: " +
          (n ? name + "[0] to " + name + "[" + std::to_string(n - 1) + "]"
             : "none (the scene has no [[" + name + "]] to change)"));
   return (*list)[index].as_table();
@@ -277,24 +276,23 @@ toml::table* descend(const RawScene& scene, const std::string& text, toml::table
 
 void apply_override(RawScene& scene, const std::string& text) {
   const auto eq = text.find('=');
-  if (eq == std::string::npos || eq == 0)
-    fail(scene.source + ": --set " + text + ": expected section.key=value");
+  if (eq == std::string::npos || eq == 0) fail("--set " + text + ": expected section.key=value");
   const std::string path = text.substr(0, eq);
   const std::string value = text.substr(eq + 1);
   if (!find_key(normalise(path)))
-    fail(scene.source + ": --set " + text + ": unknown key '" + path +
+    fail("--set " + text + ": unknown key '" + path +
          "'; see docs/scene-reference.md for the keys");
-  check_scene_bounds("v = " + value, scene.source + ": --set " + text);
+  check_scene_bounds("v = " + value, "--set " + text);
   toml::table parsed = parse_override_value(path, value);
   toml::table* table = &scene.root;
   std::size_t start = 0;
   for (auto dot = path.find('.'); dot != std::string::npos; dot = path.find('.', start)) {
     const std::string part = path.substr(start, dot - start);
-    table = descend(scene, text, *table, part);
+    table = descend(text, *table, part);
     start = dot + 1;
   }
   table->insert_or_assign(path.substr(start), std::move(*parsed.get("v")));
-  scene.overridden.insert(path);
+  scene.override_text[path] = text;
 }
 
 bool is_finite_number(const toml::node& n) {
@@ -404,10 +402,15 @@ std::string number_text(double v) {
   return std::string(buf, r.ptr);
 }
 
+const std::pair<const std::string, std::string>* override_of(const RawScene& s,
+                                                             const std::string& path) {
+  for (const auto& set : s.override_text)
+    if (path == set.first || path.rfind(set.first + ".", 0) == 0) return &set;
+  return nullptr;
+}
+
 bool from_command_line(const RawScene& s, const std::string& path) {
-  for (const std::string& set : s.overridden)
-    if (path == set || path.rfind(set + ".", 0) == 0) return true;
-  return false;
+  return override_of(s, path) != nullptr;
 }
 
 std::string node_text(const toml::node& node) {
@@ -435,19 +438,31 @@ std::string node_text(const toml::node& node) {
   return text;
 }
 
+std::string key_message(const RawScene& s, const std::string& path, const toml::node* node,
+                        const std::string& problem) {
+  std::ostringstream msg;
+  // A key set on the command line is blamed on its --set argument, which
+  // already shows the value; the scene file has no line for it.
+  const auto* set = override_of(s, path);
+  if (set) msg << "--set " << set->second << ": ";
+  if (!set || path != set->first) {
+    if (!set) msg << s.source;
+    if (!set && node && node->source().begin.line > 0) msg << ':' << node->source().begin.line;
+    msg << (set ? "" : ": ") << "key '" << path << "'";
+    if (node) msg << " = " << node_text(*node);
+    msg << ": ";
+  }
+  msg << problem;
+  return printable(msg.str());
+}
+
 void fail_key(const RawScene& s, const std::string& path, const toml::node* node,
               const std::string& problem) {
-  std::ostringstream msg;
-  const bool from_cli = from_command_line(s, path);
-  msg << s.source;
-  if (!from_cli && node && node->source().begin.line > 0) msg << ':' << node->source().begin.line;
-  msg << ": " << (from_cli ? "--set " : "") << "key '" << path << "'";
-  if (node) msg << " = " << node_text(*node);
-  msg << ": " << problem;
+  std::string msg = key_message(s, path, node, problem);
   if (const KeySpec* k = find_key(normalise(path));
       k && problem.find("allowed") == std::string::npos)
-    msg << "; allowed: " << describe_allowed(*k);
-  throw InputError(printable(msg.str()));
+    msg += printable("; allowed: " + describe_allowed(*k));
+  throw InputError(msg);
 }
 
 RawScene read_raw_scene(const std::string& text, const std::string& source,

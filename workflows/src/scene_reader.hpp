@@ -5,7 +5,7 @@
 
 #include <toml++/toml.h>
 
-#include <set>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -13,8 +13,8 @@ namespace rockfdem::workflows::detail {
 
 struct RawScene {
   toml::table root;
-  std::string source;                ///< file name for messages
-  std::set<std::string> overridden;  ///< dotted paths set with --set
+  std::string source;                                ///< file name for messages
+  std::map<std::string, std::string> override_text;  ///< dotted path set with --set -> the argument
 };
 
 /// Refuses, before any TOML parsing, scene text that toml++ could not parse
@@ -32,7 +32,13 @@ std::string printable(const std::string& text);
 RawScene read_raw_scene(const std::string& text, const std::string& source,
                         const std::vector<std::string>& overrides);
 
-/// Throws InputError "<source>[:line]: <key> = <value>: <problem>; allowed: <what>".
+/// "<source>[:line]: <key> = <value>: <problem>", or for a key set on the
+/// command line "--set <argument>: <problem>": fail_key's text, for warnings.
+std::string key_message(const RawScene& scene, const std::string& path, const toml::node* node,
+                        const std::string& problem);
+
+/// Throws InputError "<source>[:line]: <key> = <value>: <problem>; allowed: <what>",
+/// or, for a key set on the command line, "--set <argument>: <problem>; allowed: <what>".
 [[noreturn]] void fail_key(const RawScene& scene, const std::string& path, const toml::node* node,
                            const std::string& problem);
 
@@ -43,6 +49,10 @@ std::string number_text(double v);
 
 /// Whether `path` (or a table above it) was set with --set.
 bool from_command_line(const RawScene& scene, const std::string& path);
+
+/// The (path, --set argument) that set `path` or a table above it; null if none.
+const std::pair<const std::string, std::string>* override_of(const RawScene& scene,
+                                                             const std::string& path);
 
 /// "stages[2].kind" -> "stages[].kind" (the schema's form).
 std::string normalise(const std::string& path);

@@ -366,7 +366,9 @@ std::vector<KeySpec> build_schema() {
   }
   // [[bolt]] and [[bolt_fan]]
   KeySpec point = number("bolt[].start", "m", "", -kInf, false, kInf, false,
-                         "Head of the bolt, [x, y] (on the excavation boundary).");
+                         "Head (collar) of the bolt, [x, y]: on the excavation boundary or in "
+                         "the lining, within max(mesh.size_near / 2, 5 cm); a bolt running "
+                         "through the opening or out of the domain is refused.");
   point.type = KeyType::kNumberArray;
   s.push_back(point);
   point.path = "bolt[].end";
@@ -379,7 +381,8 @@ std::vector<KeySpec> build_schema() {
   point.default_text = "[0.0, 0.0]";
   point.description = "Centre of the circle the bolt heads lie on, [x, y].";
   s.push_back(point);
-  s.push_back(positive("bolt_fan[].radius", "m", "", "Radius of the heads' circle."));
+  s.push_back(positive("bolt_fan[].radius", "m", "",
+                       "Radius of the heads' circle; each head is checked as bolt[].start."));
   s.push_back(number("bolt_fan[].first_deg", "deg", "0", -360, false, 360, false,
                      "Angle of the first bolt, counter-clockwise from +x."));
   s.push_back(number("bolt_fan[].last_deg", "deg", "180", -360, false, 360, false,

@@ -1,5 +1,7 @@
 #include "summary.hpp"
 
+#include <algorithm>
+
 #include "rockfdem/coupling/atomic_file.hpp"
 #include "rockfdem/fdem/bits_hash.hpp"
 #include "rockfdem/insitu/insitu.hpp"
@@ -20,13 +22,21 @@ std::vector<double> interleave(const std::vector<double>& a, const std::vector<d
   return out;
 }
 
+// "fdem setup" -> "fdem_setup": a phase's name as a JSON key.
+std::string snake_case(std::string name) {
+  std::replace(name.begin(), name.end(), ' ', '_');
+  return name;
+}
+
 }  // namespace
 
 RunSummary::RunSummary(const Scene& scene, int threads) {
   using nlohmann::json;
   root_ = {
+      {"format_version", kSummaryFormatVersion},
       {"rockfdem_version", version_string()},
       {"scene", scene.source},
+      {"overrides", scene.overrides},
       {"title", scene.title},
       {"threads", threads},
       {"counts",
@@ -47,6 +57,7 @@ RunSummary::RunSummary(const Scene& scene, int threads) {
         {"kirsch_rel_l2", nullptr},
         {"solver_iterations", json::array()}}},
       {"state_hash", ""}};
+  for (const std::string& w : scene.warnings) root_["warnings"].push_back(w);
 }
 
 void RunSummary::skipped(const std::string& what_and_why) {
@@ -75,7 +86,8 @@ void RunSummary::record_insitu_state(const insitu::InsituField& field) {
 }
 
 void RunSummary::set_timings(const PhaseTimer& timer) {
-  for (const std::string& phase : timer.order()) root_["timings"][phase] = timer.seconds(phase);
+  for (const std::string& phase : timer.order())
+    root_["timings"][snake_case(phase)] = timer.seconds(phase);
   root_["timings"]["total"] = timer.total();
 }
 

@@ -21,6 +21,10 @@ namespace rockfdem::workflows {
 struct Scene;
 struct OutputSettings;
 
+/// summary.json's "format_version": raised whenever a key is renamed,
+/// removed or changes meaning (docs/output-formats.md lists the changes).
+constexpr int kSummaryFormatVersion = 2;
+
 class RunSummary {
  public:
   /// The fixed keys, with counts.bolts the scene's bolts and cables.

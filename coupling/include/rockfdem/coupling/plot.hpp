@@ -9,6 +9,7 @@
 #pragma once
 
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "rockfdem/coupling/vtk_grid.hpp"
@@ -53,10 +54,28 @@ struct MeshView {
   double x0 = 0, x1 = 0, y0 = 0, y1 = 0;
 };
 
+/// What a mesh picture draws besides the field: segments (bolts) as thick
+/// dark lines, labelled markers (key points), and names for the codes of an
+/// integer field (each code its own colour, named in the legend).
+struct MeshOverlay {
+  struct Segment {
+    double x0 = 0, y0 = 0, x1 = 0, y1 = 0;  ///< [m]
+  };
+  struct Marker {
+    double x = 0, y = 0;  ///< [m]
+    std::string label;
+  };
+  std::vector<Segment> segments;
+  std::vector<Marker> markers;
+  std::vector<std::pair<int, std::string>> categories;  ///< code, name; empty: a colour scale
+};
+
 /// With a `view`, the picture shows that window and the colour scale spans
-/// the triangles whose centroid lies in it; without, the whole grid.
+/// the triangles whose centroid lies in it; without, the whole grid. An
+/// `overlay` adds its segments and markers on top.
 bool render_mesh_png(const VtkGrid& grid, const std::string& cell_field, int component,
                      const std::string& path, const std::string& title, int width = 1000,
-                     int height = 800, std::string* why = nullptr, const MeshView* view = nullptr);
+                     int height = 800, std::string* why = nullptr, const MeshView* view = nullptr,
+                     const MeshOverlay* overlay = nullptr);
 
 }  // namespace rockfdem::coupling

@@ -21,9 +21,9 @@ struct StudyOptions {
 
 struct CommandLine {
   std::string command;  ///< run, check, mesh, insitu, sweep, calibrate ("" with --help/--version)
-  std::string scene;    ///< scene file; empty: the built-in default (run only)
+  std::string scene;    ///< scene file, "-" for stdin; empty: the built-in default (run only)
   std::string output_dir = "rockfdem-out";
-  int threads = 0;                     ///< 0: all cores
+  int threads = 0;                     ///< 0: all cores; without -j: OMP_NUM_THREADS, else 0
   std::vector<std::string> overrides;  ///< --set section.key=value
   bool quiet = false;
   bool force = false;  ///< overwrite another scene's results in the output directory

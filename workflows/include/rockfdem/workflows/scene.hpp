@@ -159,6 +159,10 @@ struct Scene {
       canonical;  ///< the validated scene as TOML (overrides applied), for hashing and records
   /// canonical without output.checkpoint_every: what a checkpoint must match
   std::string restart_key;
+  /// canonical with msh.file made absolute: a scene file that reruns this scene from anywhere
+  std::string as_run;
+  std::vector<std::string> overrides;  ///< the --set arguments applied, in order
+  std::vector<std::string> warnings;   ///< inputs that look wrong (a stress in Pa meant as MPa)
 };
 
 /// Whether the model has a lining ring with its material: a generated
@@ -166,6 +170,8 @@ struct Scene {
 bool has_lining_ring(const Scene& scene);
 
 /// Reads and validates a scene file; `overrides` are "section.key=value" strings.
+/// A `path` of "-" reads the scene from stdin (named "<stdin>" in messages;
+/// msh.file relative to the working directory), bounded as a file is.
 Scene load_scene(const std::string& path, const std::vector<std::string>& overrides = {});
 
 /// The built-in default scene (the seed's tunnel), with overrides.
