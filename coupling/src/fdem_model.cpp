@@ -120,10 +120,10 @@ VtkGrid fdem_grid(const fdem::Engine& e, const mesh::Mesh& m, const insitu::Insi
   return g;
 }
 
-void add_frame_info(VtkGrid& g, const std::string& stage, long step, double time) {
-  g.field.text.push_back({"stage", stage});
-  g.field.numbers.push_back({"step", double(step)});
-  g.field.numbers.push_back({"time_s", time});
+void add_frame_info(VtkFieldData& f, const std::string& stage, long step, double time) {
+  f.text.push_back({"stage", stage});
+  f.numbers.push_back({"step", double(step)});
+  f.numbers.push_back({"time_s", time});
 }
 
 }  // namespace rockfdem::coupling

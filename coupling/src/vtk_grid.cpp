@@ -118,6 +118,20 @@ VtkArray tensor_array(std::string name, int n_components, std::vector<double> va
   return {std::move(name), VtkKind::symmetric_tensor, n_components, std::move(values)};
 }
 
+namespace {
+
+void validate_field(const VtkFieldData& field) {
+  std::set<std::string> names;
+  auto check_name = [&](const std::string& name) {
+    if (name.empty() || !names.insert(name).second)
+      throw std::invalid_argument("field data: name '" + name + "' is empty or used twice");
+  };
+  for (const auto& [name, value] : field.text) check_name(name);
+  for (const auto& [name, value] : field.numbers) check_name(name);
+}
+
+}  // namespace
+
 const VtkArray* VtkGrid::find_cell_array(const std::string& name) const {
   for (const VtkArray& a : cell_arrays) {
     if (a.name == name) return &a;
@@ -134,13 +148,7 @@ void VtkGrid::validate() const {
   validate_cells("line", lines, n_points());
   validate_arrays("point", point_arrays, n_points());
   validate_arrays("cell", cell_arrays, n_cells());
-  std::set<std::string> names;
-  auto check_name = [&](const std::string& name) {
-    if (name.empty() || !names.insert(name).second)
-      throw std::invalid_argument("field data: name '" + name + "' is empty or used twice");
-  };
-  for (const auto& [name, value] : field.text) check_name(name);
-  for (const auto& [name, value] : field.numbers) check_name(name);
+  validate_field(field);
 }
 
 void VtkPolylines::validate() const {
@@ -160,6 +168,7 @@ void VtkPolylines::validate() const {
   }
   validate_arrays("point", point_arrays, n_points());
   validate_arrays("cell", cell_arrays, polylines.size());
+  validate_field(field);
 }
 
 VtkArray triangle_cell_array(const VtkGrid& grid, VtkArray per_triangle) {

@@ -172,6 +172,7 @@ vtkSmartPointer<vtkPolyData> to_vtk_polylines(const VtkPolylines& lines) {
   pd->SetLines(cells);
   for (const VtkArray& a : lines.point_arrays) pd->GetPointData()->AddArray(to_vtk_array(a));
   for (const VtkArray& a : lines.cell_arrays) pd->GetCellData()->AddArray(to_vtk_array(a));
+  add_field_data(lines.field, *pd->GetFieldData());
   return pd;
 }
 

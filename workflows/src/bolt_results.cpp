@@ -89,7 +89,7 @@ std::vector<double> BoltResults::record(const fdem::Engine& e, long step, double
   return row;
 }
 
-void BoltResults::write_frame(const std::string& file, double time) {
+void BoltResults::write_frame(const std::string& file, const coupling::VtkFieldData& frame) {
   coupling::VtkPolylines l;
   std::vector<double> force, stress, station;
   std::vector<std::int32_t> state, index, cable;
@@ -116,7 +116,15 @@ void BoltResults::write_frame(const std::string& file, double time) {
                     coupling::scalar_array("yield_state", std::move(state))};
   l.cell_arrays = {coupling::scalar_array("bolt", std::move(index)),
                    coupling::scalar_array("is_cable", std::move(cable))};
+  // The frame's stage, step and time (and nothing else of its legend).
+  for (const auto& t : frame.text)
+    if (t.first == "stage") l.field.text.push_back(t);
+  l.field.numbers = frame.numbers;
+  l.field.text.push_back({"yield_state_codes", "0 elastic, 1 yielding (past sigma_y), 2 broken"});
   coupling::write_vtp(l, output_path(dir_, file));
+  double time = 0;
+  for (const auto& [name, value] : frame.numbers)
+    if (name == "time_s") time = value;
   pvd_.add(time, file);
   pvd_.write();
 }

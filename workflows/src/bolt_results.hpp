@@ -30,7 +30,7 @@ class BoltResults {
   std::vector<double> record(const fdem::Engine& e, long step, double time, int stage);
   /// bolts_NNNN.vtp (`file`) of the profiles record() took, listed in
   /// bolts.pvd at `time`; nothing while no bolt is installed.
-  void write_frame(const std::string& file, double time);
+  void write_frame(const std::string& file, const coupling::VtkFieldData& frame);
   /// bolt_NN.csv (final profiles) and summary "bolts".
   void finish(const fdem::Engine& e, RunSummary& summary) const;
   /// One bolt's summary entry; writes its bolt_NN.csv when installed.

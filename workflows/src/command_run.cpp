@@ -58,7 +58,7 @@ void write_frame(const fdem::Engine& e, const mesh::Mesh& m, const std::string& 
   char name[32];
   std::snprintf(name, sizeof name, "fdem_%04d.vtu", frame);
   coupling::VtkGrid g = coupling::fdem_grid(e, m);
-  coupling::add_frame_info(g, "load_platens", e.step_count(), e.time());
+  coupling::add_frame_info(g.field, "load_platens", e.step_count(), e.time());
   coupling::write_vtu(g, output_path(dir, name));
   pvd.add(e.time(), name);
   pvd.write();

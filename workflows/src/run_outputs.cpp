@@ -193,12 +193,12 @@ void RunOutputs::record_step(const fdem::Engine& e, const mesh::Mesh& m,
     char name[32];
     std::snprintf(name, sizeof name, "fdem_%04d.vtu", frame_++);
     coupling::VtkGrid g = frame_grid(e, m);
-    coupling::add_frame_info(g, stage, e.step_count(), e.time());
+    coupling::add_frame_info(g.field, stage, e.step_count(), e.time());
     coupling::write_vtu(g, output_path(cli_.output_dir, name));
     pvd_.add(e.time(), name);
     pvd_.write();
     std::snprintf(name, sizeof name, "bolts_%04d.vtp", frame_ - 1);
-    if (bolt_results_) bolt_results_->write_frame(name, e.time());
+    if (bolt_results_) bolt_results_->write_frame(name, g.field);
   }
   last_good_.take(e, energy, monitors_json(e, monitors));
   timer.stamp("output");

@@ -36,6 +36,6 @@ VtkGrid fdem_grid(const fdem::Engine& engine, const mesh::Mesh& m,
 
 /// Names the frame in its field data: the construction stage it ends, the
 /// engine step and the simulated time [s].
-void add_frame_info(VtkGrid& g, const std::string& stage, long step, double time);
+void add_frame_info(VtkFieldData& f, const std::string& stage, long step, double time);
 
 }  // namespace rockfdem::coupling

@@ -86,6 +86,7 @@ struct VtkPolylines {
   std::vector<std::vector<int>> polylines;  ///< point ids, at least 2 each
   std::vector<VtkArray> point_arrays;
   std::vector<VtkArray> cell_arrays;
+  VtkFieldData field;  ///< one value each, for the whole file
 
   std::size_t n_points() const { return x.size(); }
   /// As VtkGrid::validate; a polyline of fewer than 2 points is refused too.
