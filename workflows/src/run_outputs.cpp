@@ -7,6 +7,7 @@
 #include <iostream>
 
 #include "broken_zone.hpp"
+#include "checkpoint.hpp"
 #include "engine_report.hpp"
 #include "output_dir.hpp"
 #include "rockfdem/coupling/atomic_file.hpp"
@@ -245,11 +246,9 @@ coupling::VtkGrid RunOutputs::frame_grid(const fdem::Engine& e, const mesh::Mesh
 }
 
 nlohmann::json RunOutputs::state() const {
-  nlohmann::json frames = nlohmann::json::array();
-  for (const coupling::PvdEntry& f : pvd_.entries()) frames.push_back({f.time, f.file});
   return {{"history", history_->rows()},
           {"stages", stage_names_},
-          {"frames", frames},
+          {"frames", frames_state(pvd_)},
           {"handoff_dt", handoff_dt_},
           {"max_rotation_deg", max_rotation_deg_}};
 }
@@ -260,22 +259,9 @@ void RunOutputs::restore(const nlohmann::json& s, const std::string& from_dir) {
   stage_names_ = s.at("stages").get<std::vector<std::string>>();
   handoff_dt_ = s.value("handoff_dt", 0.0);  // 0: a checkpoint from before it was kept
   max_rotation_deg_ = s.value("max_rotation_deg", 0.0);
+  frame_ += restore_frames(s.at("frames"), from_dir, cli_.output_dir, pvd_, summary_);
   std::error_code same_ec;
   const bool same_dir = fs::equivalent(from_dir, cli_.output_dir, same_ec);
-  for (const auto& f : s.at("frames")) {
-    const std::string name = f.at(1).get<std::string>();
-    if (!same_dir) {
-      // The earlier frames live beside the checkpoint's run; the series
-      // stays whole only if they come along.
-      std::error_code ec;
-      fs::copy_file(output_path(from_dir, name), output_path(cli_.output_dir, name),
-                    fs::copy_options::overwrite_existing, ec);
-      if (ec) summary_.skipped("frame " + name + " of the restarted run: not found in " + from_dir);
-    }
-    pvd_.add(f.at(0).get<double>(), name);
-    ++frame_;
-  }
-  if (frame_ > 0) pvd_.write();
   // Files an earlier stage wrote once, which the summary names.
   if (!same_dir)
     for (const char* name : {"grouted_cracks.csv"}) {
