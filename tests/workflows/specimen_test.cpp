@@ -229,3 +229,67 @@ TEST(SpecimenPeak, is_the_largest_platen_stress_of_every_step_and_stops_after_it
   fs::remove_all(every);
   fs::remove_all(sparse);
 }
+
+// ---- Platens -----------------------------------------------------------------
+// The small UCS loaded slowly (0.02 m/s per platen, local damping 0.5) to
+// an axial strain of 9e-5, elastic (no crack element breaks).
+namespace {
+
+struct Lateral {
+  double corner;          ///< x displacement of the right end's corners (mean) [m]
+  double mid;             ///< x displacement of the right side at mid-height [m]
+  double lateral_strain;  ///< (u right - u left) / width at mid-height [-]
+  double axial_strain;    ///< 2 v t / height [-]
+  double stress;          ///< mean axial stress on the upper platen [Pa]
+  double closed_form;     ///< lateral strain of a uniform uniaxial stress `stress` [-]
+  long broken;
+};
+
+Lateral load_elastically(const std::string& friction) {
+  const Scene s = load_scene(kTestDir + "/ucs_small.toml",
+                             {"loading.platen_friction=" + friction, "loading.platen_velocity=0.02",
+                              "engine.local_damping=0.5"});
+  const rockfdem::mesh::Mesh m = rockfdem::mesh::build_mesh(s.mesh);
+  rockfdem::fdem::Engine e = make_engine(specimen_model_input(s, m, 1), s, false);
+  for (int i = 0; i < 3000; ++i) e.step();
+  const double w = s.mesh.specimen.width, h = s.mesh.specimen.height;
+  const double x0 = *std::min_element(m.x.begin(), m.x.end());
+  const double y0 = *std::min_element(m.y.begin(), m.y.end());
+  // Nodes on the sides: the one nearest mid-height, and the end corners.
+  double best_right = h, best_left = h, corner_sum = 0;
+  Lateral r{};
+  double left = 0;
+  int corners = 0;
+  for (std::size_t n = 0; n < e.n_nodes(); ++n) {
+    const int v = e.node_vertex()[n];
+    const double x = m.x[std::size_t(v)] - x0, y = m.y[std::size_t(v)] - y0;
+    const double ux = e.displacement(n)[0], off = std::abs(y - h / 2);
+    if (std::abs(x - w) < 1e-9 && (y < 1e-9 || y > h - 1e-9)) corner_sum += ux, ++corners;
+    if (std::abs(x - w) < 1e-9 && off < best_right) best_right = off, r.mid = ux;
+    if (std::abs(x) < 1e-9 && off < best_left) best_left = off, left = ux;
+  }
+  r.corner = corner_sum / corners;
+  r.lateral_strain = (r.mid - left) / w;
+  r.axial_strain = 2 * s.engine.platen_velocity * e.time() / h;
+  r.stress = PlatenLoad(s).read(e).stress;
+  r.broken = e.broken_counts().total();
+  // Plane strain under a uniform axial stress alone: eps_xx = -nu (1 + nu) / E sigma_yy.
+  const auto& rock = s.materials.at("rock");
+  r.closed_form = rock.poisson * (1 + rock.poisson) / rock.young * r.stress;
+  return r;
+}
+
+}  // namespace
+
+TEST(SpecimenPlatens, rough_ones_hold_the_ends_frictionless_ones_let_them_spread) {
+  const Lateral rough = load_elastically("rough");
+  const Lateral free = load_elastically("frictionless");
+  EXPECT_EQ(rough.broken + free.broken, 0) << "elastic";
+  EXPECT_EQ(rough.corner, 0.0) << "rough platens hold the ends";
+  // Frictionless: the ends spread as far as mid-height (measured 1.6% more)
+  // and the lateral strain is the uniform uniaxial state's (measured 2.6%
+  // below it: the platen's stress leads the mid-height's while loading).
+  EXPECT_GT(free.corner, 0.0);
+  EXPECT_NEAR(free.corner, free.mid, 0.05 * free.mid);
+  EXPECT_NEAR(free.lateral_strain, free.closed_form, 0.05 * free.closed_form);
+}
