@@ -4,6 +4,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <array>
 #include <cstdio>
 #include <filesystem>
@@ -12,6 +13,7 @@
 #include <sstream>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 namespace rockfdem::test {
 
@@ -94,6 +96,41 @@ every_steps = 100
 plots = false
 )" << extra;
   return scene;
+}
+
+// Starts `rockfdem ARGS` without waiting; its output goes to `log`.
+inline pid_t spawn(const std::string& args, const std::filesystem::path& log) {
+  const std::string cmd =
+      "exec " + std::string(ROCKFDEM_BINARY) + " " + args + " > " + log.string() + " 2>&1";
+  const pid_t pid = fork();
+  if (pid == 0) {
+    execl("/bin/sh", "sh", "-c", cmd.c_str(), static_cast<char*>(nullptr));
+    _exit(127);
+  }
+  return pid;
+}
+
+/// The exit code of a spawned run (128 + signal when a signal ended it).
+inline int wait_exit_code(pid_t pid) {
+  int status = 0;
+  waitpid(pid, &status, 0);
+  return WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+}
+
+/// OUTDIR/checkpoints/checkpoint_*.rfck, oldest first.
+inline std::vector<std::filesystem::path> checkpoints(const std::filesystem::path& run_dir) {
+  std::vector<std::filesystem::path> out;
+  std::error_code ec;
+  for (const auto& e : std::filesystem::directory_iterator(run_dir / "checkpoints", ec))
+    if (e.path().extension() == ".rfck") out.push_back(e.path());
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
+/// The step a checkpoint's name holds: checkpoint_000000001200.rfck -> 1200.
+inline long checkpoint_step(const std::filesystem::path& p) {
+  const std::string name = p.stem().string();
+  return std::stol(name.substr(name.find('_') + 1));
 }
 
 }  // namespace rockfdem::test

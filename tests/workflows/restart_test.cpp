@@ -35,38 +35,6 @@ namespace {
 
 const std::string kScene = kTestDir + "/restart_support.toml";
 
-std::vector<fs::path> checkpoints(const fs::path& run_dir) {
-  std::vector<fs::path> out;
-  std::error_code ec;
-  for (const auto& e : fs::directory_iterator(run_dir / "checkpoints", ec))
-    if (e.path().extension() == ".rfck") out.push_back(e.path());
-  std::sort(out.begin(), out.end());
-  return out;
-}
-
-long checkpoint_step(const fs::path& p) {
-  const std::string name = p.stem().string();  // checkpoint_000000001200
-  return std::stol(name.substr(name.find('_') + 1));
-}
-
-// Starts `rockfdem ARGS` without waiting; its output goes to `log`.
-pid_t spawn(const std::string& args, const fs::path& log) {
-  const std::string cmd =
-      "exec " + std::string(ROCKFDEM_BINARY) + " " + args + " > " + log.string() + " 2>&1";
-  const pid_t pid = fork();
-  if (pid == 0) {
-    execl("/bin/sh", "sh", "-c", cmd.c_str(), static_cast<char*>(nullptr));
-    _exit(127);
-  }
-  return pid;
-}
-
-int wait_exit_code(pid_t pid) {
-  int status = 0;
-  waitpid(pid, &status, 0);
-  return WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
-}
-
 // Polls until `ready` holds (true) or 120 s pass (false).
 template <class Pred>
 bool wait_for(Pred ready) {

@@ -15,9 +15,11 @@
 
 #include "output_dir.hpp"
 #include "rockfdem/coupling/atomic_file.hpp"
+#include "rockfdem/coupling/vtk_writer.hpp"
 #include "rockfdem/error.hpp"
 #include "rockfdem/fdem/bits_hash.hpp"
 #include "rockfdem/workflows/scene.hpp"
+#include "summary.hpp"
 
 namespace fs = std::filesystem;
 
@@ -200,6 +202,9 @@ class RunStateCheck {
     if (nesting(run) > kMaxNesting)
       refuse(path_, "corrupt run state: nested more than " + std::to_string(kMaxNesting) +
                         " levels deep (a written run state nests 5); use the previous checkpoint");
+    if (scene_.mesh.kind == mesh::ModelKind::kUcs ||
+        scene_.mesh.kind == mesh::ModelKind::kBrazilian)
+      return specimen(member(run, "", "specimen"));
     stages(member(run, "", "stages"));
     outputs(member(run, "", "outputs"));
     bolts(member(run, "", "bolts"));
@@ -284,7 +289,13 @@ class RunStateCheck {
         {"moving_most", "an object or null"},
         {"key_point", "a string"},
         {"mm_per_1000_steps", "a number"},
-        {"start_ratio", "a number"}};
+        {"start_ratio", "a number"},
+        {"specimen", "an object"},
+        {"load", "an object"},
+        {"peak_stress", "a number"},
+        {"peak_strain", "a number"},
+        {"peak_step", "an integer"},
+        {"stopped", "true or false"}};
     const auto it = kinds.find(key);
     return it == kinds.end() ? "a value" : it->second;
   }
@@ -366,25 +377,20 @@ class RunStateCheck {
   void outputs(const json& o) {
     const std::string at = "outputs";
     object(o, at);
-    const json& history = member(o, at, "history");
-    array(history, at + ".history", "an array of rows of numbers");
-    for (std::size_t i = 0; i < history.size(); ++i) {
-      const std::string row = at + ".history[" + std::to_string(i) + "]";
-      numbers(history[i], row);
-      if (history[i].size() != history[0].size())
-        bad(row, &history[i],
-            "a row of " + std::to_string(history[0].size()) + " numbers like the first row");
-    }
+    history_rows(member(o, at, "history"), at + ".history");
     const json& names = member(o, at, "stages");
     array(names, at + ".stages", "an array of stage names");
     for (std::size_t i = 0; i < names.size(); ++i)
       string(names[i], at + ".stages[" + std::to_string(i) + "]");
     if (o.contains("handoff_dt")) number(o["handoff_dt"], at + ".handoff_dt");
     if (o.contains("max_rotation_deg")) number(o["max_rotation_deg"], at + ".max_rotation_deg");
-    const json& frames = member(o, at, "frames");
-    array(frames, at + ".frames", "an array of [time, file name] pairs");
+    frame_list(member(o, at, "frames"), at + ".frames");
+  }
+
+  void frame_list(const json& frames, const std::string& at) const {
+    array(frames, at, "an array of [time, file name] pairs");
     for (std::size_t i = 0; i < frames.size(); ++i) {
-      const std::string f = at + ".frames[" + std::to_string(i) + "]";
+      const std::string f = at + "[" + std::to_string(i) + "]";
       const json& frame = frames[i];
       if (!frame.is_array() || frame.size() != 2 || !frame[0].is_number() || !frame[1].is_string())
         bad(f, &frame, "a [time, file name] pair");
@@ -401,6 +407,32 @@ class RunStateCheck {
         bad(f + "[1]", &frame[1],
             "a plain file name (letters, digits, '_', '-' and '.', not starting with '.')");
     }
+  }
+
+  void history_rows(const json& history, const std::string& at) const {
+    array(history, at, "an array of rows of numbers");
+    for (std::size_t i = 0; i < history.size(); ++i) {
+      const std::string row = at + "[" + std::to_string(i) + "]";
+      numbers(history[i], row);
+      if (history[i].size() != history[0].size())
+        bad(row, &history[i],
+            "a row of " + std::to_string(history[0].size()) + " numbers like the first row");
+    }
+  }
+
+  // What run_specimen.cpp and PlatenLoad::restore read.
+  void specimen(const json& s) const {
+    const std::string at = "specimen";
+    object(s, at);
+    history_rows(member(s, at, "history"), at + ".history");
+    frame_list(member(s, at, "frames"), at + ".frames");
+    integer(member(s, at, "last_checkpoint"), at + ".last_checkpoint");
+    const json& load = member(s, at, "load");
+    object(load, at + ".load");
+    for (const char* key : {"peak_stress", "peak_strain"})
+      number(member(load, at + ".load", key), at + ".load." + key);
+    integer(member(load, at + ".load", "peak_step"), at + ".load.peak_step");
+    boolean(member(load, at + ".load", "stopped"), at + ".load.stopped");
   }
 
   void bolts(const json& b) {
@@ -509,6 +541,45 @@ Checkpoint read_checkpoint(const std::string& path, const Scene& scene) {
   validate_run_state(path, c.run, scene);
   c.engine_state = r.block();
   return c;
+}
+
+std::string run_dir_of(const std::string& checkpoint) {
+  const fs::path p = fs::absolute(checkpoint);
+  return p.parent_path().parent_path().string();
+}
+
+bool claim_output_dir(const Scene& scene, const CommandLine& cli) {
+  const bool continues_here =
+      !cli.restart.empty() && same_directory(cli.output_dir, run_dir_of(cli.restart));
+  return prepare_output_dir(cli.output_dir, scene, cli.force, continues_here);
+}
+
+nlohmann::json frames_state(const coupling::PvdCollection& pvd) {
+  nlohmann::json frames = nlohmann::json::array();
+  for (const coupling::PvdEntry& f : pvd.entries()) frames.push_back({f.time, f.file});
+  return frames;
+}
+
+int restore_frames(const nlohmann::json& frames, const std::string& from_dir,
+                   const std::string& to_dir, coupling::PvdCollection& pvd, RunSummary& summary) {
+  std::error_code same_ec;
+  const bool same_dir = fs::equivalent(from_dir, to_dir, same_ec);
+  int n = 0;
+  for (const auto& f : frames) {
+    const std::string name = f.at(1).get<std::string>();
+    if (!same_dir) {
+      // The earlier frames live beside the checkpoint's run; the series
+      // stays whole only if they come along.
+      std::error_code ec;
+      fs::copy_file(output_path(from_dir, name), output_path(to_dir, name),
+                    fs::copy_options::overwrite_existing, ec);
+      if (ec) summary.skipped("frame " + name + " of the restarted run: not found in " + from_dir);
+    }
+    pvd.add(f.at(0).get<double>(), name);
+    ++n;
+  }
+  if (n > 0) pvd.write();
+  return n;
 }
 
 }  // namespace rockfdem::workflows

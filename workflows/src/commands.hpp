@@ -11,6 +11,7 @@ int command_mesh(const Scene& scene, const CommandLine& cli);
 int command_insitu(const Scene& scene, const CommandLine& cli);
 int command_run(const Scene& scene, const CommandLine& cli);
 int run_tunnel(const Scene& scene, const CommandLine& cli);
+int run_specimen(const Scene& scene, const CommandLine& cli);
 
 /// Throws InputError (naming mesh.size_near) when the scene's estimated peak
 /// memory exceeds this machine's physical memory; runs before meshing.

@@ -7,6 +7,7 @@
 #include <iostream>
 
 #include "broken_zone.hpp"
+#include "checkpoint.hpp"
 #include "engine_report.hpp"
 #include "output_dir.hpp"
 #include "rockfdem/coupling/atomic_file.hpp"
@@ -270,11 +271,9 @@ coupling::VtkGrid RunOutputs::frame_grid(const fdem::Engine& e, const mesh::Mesh
 }
 
 nlohmann::json RunOutputs::state() const {
-  nlohmann::json frames = nlohmann::json::array();
-  for (const coupling::PvdEntry& f : pvd_.entries()) frames.push_back({f.time, f.file});
   return {{"history", history_->rows()},
           {"stages", stage_names_},
-          {"frames", frames},
+          {"frames", frames_state(pvd_)},
           {"handoff_dt", handoff_dt_},
           {"max_rotation_deg", max_rotation_deg_},
           {"bolts", bolt_results_ ? bolt_results_->state() : nlohmann::json()},
@@ -289,24 +288,11 @@ void RunOutputs::restore(const nlohmann::json& s, const std::string& from_dir) {
   max_rotation_deg_ = s.value("max_rotation_deg", 0.0);
   if (instruments_ && s.contains("instruments") && s.at("instruments").is_object())
     instruments_->restore(s.at("instruments"));
-  std::error_code same_ec;
-  const bool same_dir = fs::equivalent(from_dir, cli_.output_dir, same_ec);
-  for (const auto& f : s.at("frames")) {
-    const std::string name = f.at(1).get<std::string>();
-    if (!same_dir) {
-      // The earlier frames live beside the checkpoint's run; the series
-      // stays whole only if they come along.
-      std::error_code ec;
-      fs::copy_file(output_path(from_dir, name), output_path(cli_.output_dir, name),
-                    fs::copy_options::overwrite_existing, ec);
-      if (ec) summary_.skipped("frame " + name + " of the restarted run: not found in " + from_dir);
-    }
-    pvd_.add(f.at(0).get<double>(), name);
-    ++frame_;
-  }
-  if (frame_ > 0) pvd_.write();
+  frame_ += restore_frames(s.at("frames"), from_dir, cli_.output_dir, pvd_, summary_);
   if (bolt_results_ && s.contains("bolts") && !s["bolts"].is_null())
     bolt_results_->restore(s["bolts"], from_dir);
+  std::error_code same_ec;
+  const bool same_dir = fs::equivalent(from_dir, cli_.output_dir, same_ec);
   // Files an earlier stage wrote once, which the summary names.
   if (!same_dir)
     for (const char* name : {"grouted_cracks.csv"}) {

@@ -19,7 +19,6 @@
 // the implicit stage removes its rigid motion.
 #include <cmath>
 #include <cstdio>
-#include <filesystem>
 #include <iostream>
 #include <sstream>
 
@@ -114,20 +113,6 @@ void restore_bolts(const nlohmann::json& s, fdem::BoltPlan& bolts, const std::st
                        " triangles; the bolt owns " + std::to_string(bolts.owned[b].size()));
   bolts.installed = std::move(installed);
   bolts.installed_stress = std::move(stress);
-}
-
-// The run directory a checkpoint belongs to: OUTDIR/checkpoints/FILE -> OUTDIR.
-std::string run_dir_of(const std::string& checkpoint) {
-  const std::filesystem::path p = std::filesystem::absolute(checkpoint);
-  return p.parent_path().parent_path().string();
-}
-
-// Makes (or claims) OUTDIR once the scene is accepted. --force clears an
-// earlier run's outputs first, except where a restart continues that run.
-bool claim_output_dir(const Scene& scene, const CommandLine& cli) {
-  const bool continues_here =
-      !cli.restart.empty() && same_directory(cli.output_dir, run_dir_of(cli.restart));
-  return prepare_output_dir(cli.output_dir, scene, cli.force, continues_here);
 }
 
 // A signal between the implicit phases: nothing to checkpoint yet. The

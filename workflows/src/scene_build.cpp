@@ -671,6 +671,8 @@ Scene build_scene(const RawScene& raw, const std::string& base_dir) {
   s.engine.mass_scaling = scaling == "on" || (scaling == "auto" && !specimen);
   s.engine.mass_scaling_dt = r.number("engine.mass_scaling_dt");
   s.engine.platen_velocity = r.number("loading.platen_velocity");
+  s.engine.rough_platens = r.text("loading.platen_friction") == "rough";
+  s.engine.stop_after_peak = r.number("loading.stop_after_peak");
   s.engine.contact = r.boolean("contact.enabled");
   s.engine.contact_penalty_factor = r.number("contact.penalty_factor");
   s.engine.contact_damping = r.number("contact.damping_ratio");

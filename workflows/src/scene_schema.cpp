@@ -316,6 +316,14 @@ std::vector<KeySpec> build_schema() {
   // [loading]
   s.push_back(positive("loading.platen_velocity", "m/s", "0.5",
                        "UCS and Brazilian tests: speed of each platen towards the other."));
+  s.push_back(choice("loading.platen_friction", "rough", {"rough", "frictionless"},
+                     "UCS and Brazilian tests: rough platens hold the loaded ends laterally "
+                     "(both velocity components prescribed); frictionless ones prescribe only "
+                     "the loading-direction velocity (rollers), so the ends spread freely."));
+  s.push_back(number("loading.stop_after_peak", "-", "0", 0, false, 1, true,
+                     "UCS and Brazilian tests: the run ends at the first step whose platen "
+                     "stress has fallen to this fraction of the peak so far, once a crack "
+                     "element has broken (post-peak stop); 0: runs all engine.steps."));
   // [bolts] and [cables]: the steel each kind of bolt shares. Cables are
   // long bolts of strand (the seed's simplification), here 15.2 mm 7-wire
   // strand Y1860S7 (EN 10138-3): 0.1% proof 1600 MPa, 1860 MPa at 3.5%.

@@ -58,6 +58,8 @@ struct EngineSettings {
   bool mass_scaling = false;     ///< quasi-static mass scaling (engine.mass_scaling resolved)
   double mass_scaling_dt = 0;    ///< s; 0: automatic
   double platen_velocity = 0.5;  ///< m/s, each platen (specimens)
+  bool rough_platens = true;     ///< platens hold the ends laterally (specimens)
+  double stop_after_peak = 0;    ///< post-peak stop: fraction of the peak; 0: none
   bool contact = true;
   double contact_penalty_factor = 1;  ///< times the rock's Young's modulus
   double contact_damping = 0;

@@ -1,0 +1,58 @@
+// The load a specimen carries, read from the upper platen's reaction: the
+// history's stress and strain columns and, after every step, the peak (with
+// its step and strain) and the post-peak stop. The reaction is a
+// fixed-order sum over the platen's nodes (Engine::boundary_force), so the
+// peak is the same for any thread count and costs no allocation.
+#pragma once
+
+#include <nlohmann/json.hpp>
+
+#include "rockfdem/fdem/engine.hpp"
+#include "rockfdem/fdem/model_input.hpp"
+#include "rockfdem/mesh/mesh.hpp"
+#include "rockfdem/workflows/scene.hpp"
+
+namespace rockfdem::workflows {
+
+/// The specimen's platens: the loaded edges (UCS: bottom and top; disc:
+/// the loading arcs) move towards each other at loading.platen_velocity.
+/// Rough platens (loading.platen_friction) also hold the ends laterally;
+/// frictionless ones leave the lateral motion free (rollers).
+std::vector<fdem::BoundaryCondition> specimen_platens(const Scene& scene);
+
+/// The engine's input for a specimen: the mesh, the rock, the platens, the
+/// scene's time step, damping, mass scaling and contact settings.
+fdem::ModelInput specimen_model_input(const Scene& scene, const mesh::Mesh& m, int threads);
+
+struct PlatenReading {
+  double force = 0;   ///< upper platen's reaction per unit thickness [N/m], compression positive
+  double stress = 0;  ///< UCS: force / width; disc: 2 force / (pi D) [Pa]
+  double strain = 0;  ///< nominal axial strain 2 v t / L (L: height or diameter) [-]
+};
+
+class PlatenLoad {
+ public:
+  explicit PlatenLoad(const Scene& scene);
+  PlatenReading read(const fdem::Engine& e) const;
+  /// After each step: keeps the peak; true once the post-peak stop holds
+  /// (stress at most loading.stop_after_peak times the peak, with a crack
+  /// element broken), and from then on.
+  bool after_step(const fdem::Engine& e);
+  bool stopped() const { return stopped_; }
+  /// The state a checkpoint keeps, and its restoration.
+  nlohmann::json state() const;
+  void restore(const nlohmann::json& s);
+  /// summary.json's "specimen" entry.
+  nlohmann::json report() const;
+
+ private:
+  bool disc_;
+  int upper_tag_;
+  double length_, section_, velocity_, stop_fraction_;
+  PlatenReading peak_;
+  long peak_step_ = 0;
+  bool stopped_ = false;
+  long stop_step_ = 0;
+};
+
+}  // namespace rockfdem::workflows
