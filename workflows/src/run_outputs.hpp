@@ -8,6 +8,7 @@
 
 #include "history.hpp"
 #include "last_good.hpp"
+#include "lining_output.hpp"
 #include "monitors.hpp"
 #include "outer_boundary.hpp"
 #include "phase_timer.hpp"
@@ -68,7 +69,8 @@ class RunOutputs {
   /// summary "resolution" (h / l_ch) and "broken_zone" (depth, clearance to
   /// the fracture zone's edge), with warnings when either limits the answer.
   void damage_outputs(const fdem::Engine& e, const mesh::Mesh& m);
-  /// summary "lining": the lining-rock crack elements and how many broke.
+  /// summary "lining": the lining-rock crack elements and how many broke,
+  /// and the ring's section forces (lining.csv).
   void lining_outputs(const fdem::Engine& e, const mesh::Mesh& m);
   /// Rigid motion of the outer boundary in the engine (fit to its nodes).
   RigidFit boundary_fit(const fdem::Engine& e) const;
@@ -90,8 +92,9 @@ class RunOutputs {
   coupling::PvdCollection pvd_;
   int frame_ = 0;
   const fdem::BoltPlan* bolts_ = nullptr;
-  std::vector<int> boundary_vertices_;  ///< outer boundary, for the rigid translation
-  mutable long fit_step_ = -1;          ///< step the cached fit belongs to
+  std::unique_ptr<LiningOutput> lining_;  ///< null: no lining ring
+  std::vector<int> boundary_vertices_;    ///< outer boundary, for the rigid translation
+  mutable long fit_step_ = -1;            ///< step the cached fit belongs to
   mutable RigidFit fit_;
   double max_rotation_deg_ = 0;     ///< largest |rotation| of the outer boundary so far
   std::vector<Monitor> monitors_;   ///< the key points (history columns, pictures' window)
