@@ -23,7 +23,7 @@ class LiningOutput {
   bool has_ring() const { return !geometry_.segments.empty(); }
   /// Whether every lining triangle carries load in `e`.
   bool installed(const fdem::Engine& e) const;
-  /// DIR/lining_<step>.csv, when installed.
+  /// DIR/lining_<step>.csv, when every lining triangle is active.
   void record(const fdem::Engine& e, const std::string& dir);
   /// DIR/lining.csv and the summary's figures into `j` (summary "lining").
   void finish(const fdem::Engine& e, const std::string& dir, nlohmann::json& j);

@@ -168,7 +168,7 @@ void RunOutputs::record_step(const fdem::Engine& e, const mesh::Mesh& m,
   const fdem::EnergyBalance energy = e.energy_balance();
   for (double v : energy_row(energy)) row.push_back(v);
   history_->add(row);
-  if (lining_) lining_->record(e, cli_.output_dir);
+  if (lining_ && lining_installed_) lining_->record(e, cli_.output_dir);
   // Before the frame: the last frame stays the last good state.
   check_energy(energy, e.step_count(), energy_floor_);
   check_rigid_motion(e, e.step_count());
@@ -310,7 +310,7 @@ void RunOutputs::lining_outputs(const fdem::Engine& e, const mesh::Mesh& m) {
   }
   nlohmann::json j = nlohmann::json::object();
   if (n_bond > 0) j = {{"interface_cracks", n_bond}, {"interface_broken", broken}};
-  if (lining_ && lining_->installed(e)) lining_->finish(e, cli_.output_dir, j);
+  if (lining_ && lining_installed_ && lining_->installed(e)) lining_->finish(e, cli_.output_dir, j);
   if (!j.empty())
     summary_.json()["lining"] = j;
   else if (has_lining_ring(scene_))

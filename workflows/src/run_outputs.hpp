@@ -31,6 +31,9 @@ class RunOutputs {
   void begin_history(const std::vector<Monitor>& monitors, const mesh::Mesh& m);
   /// Bolts whose axial stress the ParaView frames carry (once installed).
   void set_bolts(const fdem::BoltPlan* bolts) { bolts_ = bolts; }
+  /// Whether the lining ring is installed as lining (before, its triangles
+  /// are ground still to be excavated): its forces are written from then.
+  void set_lining_installed(bool installed) { lining_installed_ = installed; }
   /// One history row and (if enabled) one ParaView frame.
   void record_step(const fdem::Engine& e, const mesh::Mesh& m, const std::vector<Monitor>& monitors,
                    PhaseTimer& timer, const std::string& stage, double support_ratio);
@@ -93,8 +96,9 @@ class RunOutputs {
   int frame_ = 0;
   const fdem::BoltPlan* bolts_ = nullptr;
   std::unique_ptr<LiningOutput> lining_;  ///< null: no lining ring
-  std::vector<int> boundary_vertices_;    ///< outer boundary, for the rigid translation
-  mutable long fit_step_ = -1;            ///< step the cached fit belongs to
+  bool lining_installed_ = false;
+  std::vector<int> boundary_vertices_;  ///< outer boundary, for the rigid translation
+  mutable long fit_step_ = -1;          ///< step the cached fit belongs to
   mutable RigidFit fit_;
   double max_rotation_deg_ = 0;     ///< largest |rotation| of the outer boundary so far
   std::vector<Monitor> monitors_;   ///< the key points (history columns, pictures' window)
