@@ -47,6 +47,9 @@ TEST(Equilibrium, stopping_at_the_cap_is_not_at_equilibrium) {
   EXPECT_NE(r.output.find("warning: not_at_equilibrium"), std::string::npos) << r.output;
   EXPECT_EQ(last_line(r.output).rfind("status: not_at_equilibrium", 0), 0u) << last_line(r.output);
   EXPECT_FALSE(j["fdem"]["stages"][1]["converged"].get<bool>());
+  // No lining ring: no lining files, no summary "lining".
+  EXPECT_FALSE(fs::exists(out / "lining.csv"));
+  EXPECT_FALSE(j.contains("lining"));
   fs::remove_all(out);
 }
 

@@ -83,13 +83,19 @@ const char* const kFixedNames[] = {"summary.json",
                                    "ground_reaction.png",
                                    "final_mesh.png",
                                    "broken_zone.png",
-                                   "stress_strain.png"};
+                                   "stress_strain.png",
+                                   "lining.csv",
+                                   "lining_forces.png",
+                                   "lining_capacity.png"};
 
 struct Numbered {
   const char *prefix, *suffix;
 };
-const Numbered kNumberedNames[] = {
-    {"fdem_", ".vtu"}, {"insitu_", ".vtu"}, {"bolt_", ".csv"}, {"bolts_", ".vtp"}};
+const Numbered kNumberedNames[] = {{"fdem_", ".vtu"},
+                                   {"insitu_", ".vtu"},
+                                   {"bolt_", ".csv"},
+                                   {"bolts_", ".vtp"},
+                                   {"lining_", ".csv"}};
 
 bool all_digits(const std::string& s) {
   return !s.empty() &&

@@ -141,6 +141,10 @@ void RunOutputs::begin_history(const std::vector<Monitor>& monitors, const mesh:
   boundary_vertices_.erase(std::unique(boundary_vertices_.begin(), boundary_vertices_.end()),
                            boundary_vertices_.end());
   monitors_ = monitors;
+  if (has_lining_ring(scene_)) {
+    lining_ = std::make_unique<LiningOutput>(scene_, m);
+    if (!lining_->has_ring()) lining_.reset();
+  }
   std::vector<std::string> cols{
       "stage",    "step",      "time",        "kinetic_energy", "unbalanced_ratio",
       "broken_I", "broken_II", "broken_mixed"};
@@ -185,6 +189,7 @@ void RunOutputs::record_step(const fdem::Engine& e, const mesh::Mesh& m,
   if (instruments_)
     for (double v : instruments_->row(e, m, node_displacements(e))) row.push_back(v);
   history_->add(row);
+  if (lining_ && lining_installed_) lining_->record(e, cli_.output_dir);
   // Before the frame: the last frame stays the last good state.
   check_energy(energy, e.step_count(), energy_floor_);
   check_rigid_motion(e, e.step_count());
@@ -293,9 +298,16 @@ void RunOutputs::restore(const nlohmann::json& s, const std::string& from_dir) {
     bolt_results_->restore(s["bolts"], from_dir);
   std::error_code same_ec;
   const bool same_dir = fs::equivalent(from_dir, cli_.output_dir, same_ec);
-  // Files an earlier stage wrote once, which the summary names.
+  // Files an earlier stage wrote once, which the summary names, and the
+  // lining's forces at the earlier outputs.
+  std::vector<std::string> earlier{"grouted_cracks.csv"};
+  for (const std::vector<double>& row : history_->rows()) {
+    char name[40];
+    std::snprintf(name, sizeof name, "lining_%06ld.csv", long(row.at(1)));
+    earlier.push_back(name);
+  }
   if (!same_dir)
-    for (const char* name : {"grouted_cracks.csv"}) {
+    for (const std::string& name : earlier) {
       std::error_code ec;
       if (fs::exists(output_path(from_dir, name), ec))
         fs::copy_file(output_path(from_dir, name), output_path(cli_.output_dir, name),
@@ -313,8 +325,11 @@ void RunOutputs::lining_outputs(const fdem::Engine& e, const mesh::Mesh& m) {
     ++n_bond;
     broken += e.crack_state(c) == fdem::CrackState::kBroken;
   }
-  if (n_bond > 0)
-    summary_.json()["lining"] = {{"interface_cracks", n_bond}, {"interface_broken", broken}};
+  nlohmann::json j = nlohmann::json::object();
+  if (n_bond > 0) j = {{"interface_cracks", n_bond}, {"interface_broken", broken}};
+  if (lining_ && lining_installed_ && lining_->installed(e)) lining_->finish(e, cli_.output_dir, j);
+  if (!j.empty())
+    summary_.json()["lining"] = j;
   else if (has_lining_ring(scene_))
     summary_.skipped("lining: the ring is not installed at the end of the run");
 }
@@ -419,6 +434,7 @@ void RunOutputs::plots(const fdem::Engine& e, const mesh::Mesh& m) {
            {{"walls (chord)", t, h.column("wall_chord_convergence_mm")},
             {"shoulders (chord)", t, h.column("shoulder_chord_convergence_mm")}});
   plots.broken_cracks(e, h);
+  if (lining_) lining_->plots(plots);
   std::vector<double> ratio, settlement;
   for (const auto& p : summary_.json()["ground_reaction_curve"]) {
     ratio.push_back(p["support_pressure_ratio"].get<double>());

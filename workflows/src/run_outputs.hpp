@@ -10,6 +10,7 @@
 #include "history.hpp"
 #include "instruments.hpp"
 #include "last_good.hpp"
+#include "lining_output.hpp"
 #include "monitors.hpp"
 #include "outer_boundary.hpp"
 #include "phase_timer.hpp"
@@ -43,6 +44,9 @@ class RunOutputs {
   void support_installed(const fdem::Engine& e) {
     if (instruments_) instruments_->support_installed(node_displacements(e));
   }
+  /// Whether the lining ring is installed as lining (before, its triangles
+  /// are ground still to be excavated): its forces are written from then.
+  void set_lining_installed(bool installed) { lining_installed_ = installed; }
   /// One history row and (if enabled) one ParaView frame.
   void record_step(const fdem::Engine& e, const mesh::Mesh& m, const std::vector<Monitor>& monitors,
                    PhaseTimer& timer, const std::string& stage, double support_ratio);
@@ -81,7 +85,8 @@ class RunOutputs {
   /// summary "resolution" (h / l_ch) and "broken_zone" (depth, clearance to
   /// the fracture zone's edge), with warnings when either limits the answer.
   void damage_outputs(const fdem::Engine& e, const mesh::Mesh& m);
-  /// summary "lining": the lining-rock crack elements and how many broke.
+  /// summary "lining": the lining-rock crack elements and how many broke,
+  /// and the ring's section forces (lining.csv).
   void lining_outputs(const fdem::Engine& e, const mesh::Mesh& m);
   /// Rigid motion of the outer boundary in the engine (fit to its nodes).
   RigidFit boundary_fit(const fdem::Engine& e) const;
@@ -107,8 +112,10 @@ class RunOutputs {
   int frame_ = 0;
   const fdem::BoltPlan* bolts_ = nullptr;
   std::unique_ptr<BoltResults> bolt_results_;  ///< with bolts in the scene
-  std::vector<int> boundary_vertices_;         ///< outer boundary, for the rigid translation
-  mutable long fit_step_ = -1;                 ///< step the cached fit belongs to
+  std::unique_ptr<LiningOutput> lining_;       ///< null: no lining ring
+  bool lining_installed_ = false;
+  std::vector<int> boundary_vertices_;  ///< outer boundary, for the rigid translation
+  mutable long fit_step_ = -1;          ///< step the cached fit belongs to
   mutable RigidFit fit_;
   double max_rotation_deg_ = 0;     ///< largest |rotation| of the outer boundary so far
   std::vector<Monitor> monitors_;   ///< the key points (history columns, pictures' window)

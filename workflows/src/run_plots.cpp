@@ -68,6 +68,15 @@ void PlotWriter::xy(const std::string& file, const std::string& title, const std
        file, why);
 }
 
+void PlotWriter::panels(const std::string& file, const std::string& title,
+                        const std::string& x_label, const std::vector<coupling::PlotPanel>& panels,
+                        int height) {
+  std::string why;
+  note(
+      coupling::plot_panels_png(title, x_label, panels, output_path(dir_, file), 900, height, &why),
+      file, why);
+}
+
 void PlotWriter::broken_cracks(const fdem::Engine& e, const History& h) {
   const std::vector<double> t = h.column("time");
   xy("broken.png", "Broken crack elements", time_axis_label(e), "count",

@@ -25,6 +25,9 @@ class PlotWriter {
   /// DIR/`file`: a line plot of `series`.
   void xy(const std::string& file, const std::string& title, const std::string& x_label,
           const std::string& y_label, const std::vector<coupling::PlotSeries>& series);
+  /// DIR/`file`: charts stacked top to bottom (coupling::plot_panels_png).
+  void panels(const std::string& file, const std::string& title, const std::string& x_label,
+              const std::vector<coupling::PlotPanel>& panels, int height);
   /// broken.png: broken crack elements by mode against (pseudo-)time.
   void broken_cracks(const fdem::Engine& e, const History& h);
   /// final_mesh.png: the triangles coloured by principal stress `principal`

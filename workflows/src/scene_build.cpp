@@ -273,6 +273,7 @@ MaterialSpec read_material(const Reader& r, const std::string& name, const Mater
   m.heterogeneity = r.number_or(p + "heterogeneity", base ? base->heterogeneity : 0);
   m.heterogeneity_seed = std::uint64_t(
       r.number_or(p + "heterogeneity_seed", base ? double(base->heterogeneity_seed) : 1));
+  if (name == "lining") m.compressive_strength = r.number_or(p + "compressive_strength", 0);
   return m;
 }
 

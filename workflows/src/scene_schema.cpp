@@ -239,6 +239,13 @@ std::vector<KeySpec> build_schema() {
   add_material(s, "rock", "host rock (or the specimen)");
   add_material(s, "core", "excavation core (defaults to the rock's values)");
   add_material(s, "lining", "shotcrete lining");
+  KeySpec fc = positive("materials.lining.compressive_strength", "Pa", "",
+                        "Uniaxial compressive strength of the shotcrete for the lining's "
+                        "capacity check (docs/support.md): each segment's thrust and moment "
+                        "against the plain section's elastic limit, with tensile_strength as "
+                        "the tensile limit (0 when not given: no tension); not given: no check.");
+  fc.default_doc = "none: no capacity check";
+  s.push_back(fc);
   // [insitu]
   // The implicit stage needs compression in both directions (insitu/).
   s.push_back(positive("insitu.sigma_h", "Pa", "",

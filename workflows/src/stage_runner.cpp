@@ -30,7 +30,9 @@ StageRunner::StageRunner(fdem::Engine& engine, const mesh::Mesh& m,
       handoff_alpha_(handoff.alpha),
       alpha_(handoff.alpha),
       core_present_(handoff.alpha > 0),
-      lining_installed_(handoff.lining_installed) {}
+      lining_installed_(handoff.lining_installed) {
+  out_.set_lining_installed(lining_installed_);
+}
 
 void StageRunner::set_zone(int zone, bool active, fdem::ActivationReference ref) {
   for (std::size_t t = 0; t < mesh_.n_triangles(); ++t)
@@ -66,6 +68,7 @@ nlohmann::json StageRunner::apply(const StageSpec& stage) {
     for (std::size_t t = 0; t < mesh_.n_triangles(); ++t)
       if (mesh_.zone[t] == mesh::kLining) engine_.set_stiffness_factor(t, 1.0);
     lining_installed_ = true;
+    out_.set_lining_installed(true);
     done = {{"interface_cracks", bond_lining()}};
   } else if (stage.kind == "remove_core") {
     set_zone(mesh::kCore, false, fdem::ActivationReference::kKeep);
@@ -412,6 +415,7 @@ void StageRunner::restore(const nlohmann::json& s) {
   alpha_ = s.at("alpha").get<double>();
   core_present_ = s.at("core_present").get<bool>();
   lining_installed_ = s.at("lining_installed").get<bool>();
+  out_.set_lining_installed(lining_installed_);
   report_ = s.at("report");
   last_checkpoint_ = s.at("last_checkpoint").get<long>();
 }

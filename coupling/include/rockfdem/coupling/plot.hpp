@@ -42,6 +42,23 @@ bool plot_xy_png(const std::string& title, const std::string& x_label, const std
                  const std::vector<PlotSeries>& series, const std::string& path, int width = 900,
                  int height = 600, std::string* why = nullptr);
 
+/// One chart of a stacked figure: its y axis label, curves drawn as lines
+/// and series drawn as unjoined circles (either list may be empty, not both).
+struct PlotPanel {
+  std::string y_label;
+  std::vector<PlotSeries> lines;
+  std::vector<PlotSeries> markers;
+};
+
+/// Charts stacked top to bottom in one PNG, each with its own y axis, the
+/// shared x axis label under the last, `title` over the first; written
+/// atomically.
+/// @return false (reason in *why) when rendering is not available; nothing written.
+/// @throws as plot_xy_png, and std::invalid_argument for no panels.
+bool plot_panels_png(const std::string& title, const std::string& x_label,
+                     const std::vector<PlotPanel>& panels, const std::string& path, int width = 900,
+                     int height = 900, std::string* why = nullptr);
+
 /// The grid's triangles coloured by one component of a cell array (with a
 /// colour bar titled by the field), its line cells (cracks) drawn in black
 /// on top, and a title; written atomically as PNG. `component` indexes the

@@ -27,6 +27,7 @@ struct MaterialSpec {
   double penalty_factor = 10;           ///< penalty / Young's modulus
   double heterogeneity = 0;             ///< Weibull modulus of crack strengths; 0: homogeneous
   std::uint64_t heterogeneity_seed = 1;
+  double compressive_strength = 0;  ///< Pa, lining only: its capacity check (0: not given)
 };
 
 struct InsituSettings {
