@@ -173,15 +173,18 @@ fdem::BoltPlan planned_bolts(const Scene& scene, fdem::ModelInput& in) {
   }
 }
 
-/// Runs `f`; a NumericalError in it (the hand-off step, before the stages
-/// report their own) writes the failure summary first.
+/// Runs `f`; a NumericalError in it (the hand-off step or a stage) writes
+/// the failure summary first, with the likely cause when the in-situ stress
+/// is large against the rock's modulus.
 template <class F>
-void reporting_failure(RunOutputs& out, const fdem::Engine& e, PhaseTimer& timer, F&& f) {
+void reporting_failure(const Scene& scene, RunOutputs& out, const fdem::Engine& e,
+                       PhaseTimer& timer, F&& f) {
   try {
     f();
   } catch (const NumericalError& err) {
-    out.report_failure(e, timer, err.what());
-    throw;
+    const std::string why = with_likely_cause(scene, err.what());
+    out.report_failure(e, timer, why);
+    throw NumericalError(why);
   }
 }
 
@@ -259,7 +262,7 @@ int run_tunnel(const Scene& scene, const CommandLine& cli) {
     for (std::size_t t = 0; t < m.n_triangles(); ++t)
       if (!handoff.active[t]) engine.set_active(t, false);
     out.keep_start(engine);
-    reporting_failure(out, engine, timer, [&] { engine.step(); });
+    reporting_failure(scene, out, engine, timer, [&] { engine.step(); });
     start_ratio = engine.unbalanced_force_ratio();
     engine.set_damping(stage_damping(scene));
   }
@@ -278,7 +281,7 @@ int run_tunnel(const Scene& scene, const CommandLine& cli) {
     }
     summary.json()["restarted_from"] = {{"checkpoint", cli.restart}, {"step", engine.step_count()}};
   } else {
-    reporting_failure(out, engine, timer, [&] {
+    reporting_failure(scene, out, engine, timer, [&] {
       out.record_step(engine, m, monitors, timer, "handoff", handoff.alpha);
     });
   }
@@ -305,8 +308,9 @@ int run_tunnel(const Scene& scene, const CommandLine& cli) {
   } catch (const NumericalError& e) {
     // The frames and history rows written so far are the last good output.
     summary.json()["fdem"] = {{"stages", stages.report()}};
-    out.report_failure(engine, timer, e.what());
-    throw;
+    const std::string why = with_likely_cause(scene, e.what());
+    out.report_failure(engine, timer, why);
+    throw NumericalError(why);
   } catch (const InputError& e) {
     // An explicit dt above the limit a later stage brings (lining, bolts,
     // grout stiffen the model): found only there, after outputs exist.
