@@ -15,6 +15,7 @@
 #include <chrono>
 #include <cstring>
 #include <filesystem>
+#include <functional>
 #include <future>
 #include <thread>
 #include <vector>
@@ -268,6 +269,51 @@ TEST_F(Restart, forged_empty_run_state_is_refused_with_exit_2) {
       << r.output;
   EXPECT_EQ(r.output.find("json.exception"), std::string::npos) << r.output;
   EXPECT_FALSE(fs::exists(out)) << "nothing written";
+  fs::remove_all(dir);
+}
+
+// Forgeries that pass the run state's structural check but do not fit the
+// scene, the mesh or the files beside the checkpoint (checksum recomputed):
+// each is exit 2 naming the checkpoint, and the new -o folder is never
+// created. They used to be found while restoring, after the first outputs
+// were written.
+TEST_F(Restart, forgeries_that_do_not_fit_the_run_leave_no_output_folder) {
+  const Checkpoint good =
+      read_checkpoint(checkpoints(*reference_dir_).back().string(), restart_scene());
+  const fs::path dir = scratch("restart-misfit");
+  struct Case {
+    std::string name;
+    std::function<void(Checkpoint&)> forge;
+  };
+  const std::vector<Case> cases = {
+      {"engine-garbage", [](Checkpoint& c) { c.engine_state = "ENGINE"; }},
+      {"engine-half",
+       [](Checkpoint& c) { c.engine_state = c.engine_state.substr(0, c.engine_state.size() / 2); }},
+      {"bolt-count",
+       [](Checkpoint& c) {
+         c.run["bolts"] = {{"installed", {1}},
+                           {"installed_stress", nlohmann::json::array({nlohmann::json::array()})}};
+       }},
+      {"history-width",
+       [](Checkpoint& c) {
+         c.run["outputs"]["history"] = {{0.0, 1.0}, {1.0, 2.0}};
+       }},
+      {"monitor-u",
+       [](Checkpoint& c) {
+         c.run["stages"]["stage_monitor_u"] = {0.0, 0.0};
+       }},
+  };
+  for (const Case& c : cases) {
+    Checkpoint forged = good;
+    c.forge(forged);
+    const fs::path from = dir / c.name;
+    const std::string path = write_checkpoint(from.string(), 1, restart_scene(), forged);
+    const fs::path out = dir / ("out-" + c.name);
+    const Result r = run("run " + kScene + " -q --restart " + path + " -o " + out.string());
+    EXPECT_EQ(r.code, 2) << c.name << ": " << r.output;
+    EXPECT_NE(r.output.find(path), std::string::npos) << c.name << ": " << r.output;
+    EXPECT_FALSE(fs::exists(out)) << c.name << ": the output folder was created";
+  }
   fs::remove_all(dir);
 }
 

@@ -118,6 +118,19 @@ void RunOutputs::record_insitu(const mesh::Mesh& m,
     j["kirsch_rel_l2"] = insitu::compare_kirsch(m, fields.back(), k).stress_rel_l2;
 }
 
+std::vector<std::string> history_columns(const std::vector<Monitor>& monitors) {
+  std::vector<std::string> cols{
+      "stage",    "step",      "time",        "kinetic_energy", "unbalanced_ratio",
+      "broken_I", "broken_II", "broken_mixed"};
+  for (const Monitor& mon : monitors)
+    for (const char* c : {"_ux_mm", "_uy_mm", "_u_mm", "_radial_mm"}) cols.push_back(mon.name + c);
+  cols.insert(cols.end(),
+              {"vault_settlement_mm", "wall_chord_convergence_mm", "shoulder_chord_convergence_mm",
+               "outer_rotation_deg", "support_pressure_ratio"});
+  for (const std::string& c : energy_columns()) cols.push_back(c);
+  return cols;
+}
+
 void RunOutputs::begin_history(const std::vector<Monitor>& monitors, const mesh::Mesh& m) {
   energy_floor_ = energy_floor(scene_, m);
   for (const mesh::TaggedEdge& edge : m.edges)
@@ -129,16 +142,8 @@ void RunOutputs::begin_history(const std::vector<Monitor>& monitors, const mesh:
   boundary_vertices_.erase(std::unique(boundary_vertices_.begin(), boundary_vertices_.end()),
                            boundary_vertices_.end());
   monitors_ = monitors;
-  std::vector<std::string> cols{
-      "stage",    "step",      "time",        "kinetic_energy", "unbalanced_ratio",
-      "broken_I", "broken_II", "broken_mixed"};
-  for (const Monitor& mon : monitors)
-    for (const char* c : {"_ux_mm", "_uy_mm", "_u_mm", "_radial_mm"}) cols.push_back(mon.name + c);
-  cols.insert(cols.end(),
-              {"vault_settlement_mm", "wall_chord_convergence_mm", "shoulder_chord_convergence_mm",
-               "outer_rotation_deg", "support_pressure_ratio"});
-  for (const std::string& c : energy_columns()) cols.push_back(c);
-  history_ = std::make_unique<History>(output_path(cli_.output_dir, "history.csv"), cols);
+  history_ = std::make_unique<History>(output_path(cli_.output_dir, "history.csv"),
+                                       history_columns(monitors));
 }
 
 void RunOutputs::record_step(const fdem::Engine& e, const mesh::Mesh& m,

@@ -20,6 +20,9 @@
 
 namespace rockfdem::workflows {
 
+/// history.csv's columns for these key points.
+std::vector<std::string> history_columns(const std::vector<Monitor>& monitors);
+
 class RunOutputs {
  public:
   RunOutputs(const Scene& scene, const CommandLine& cli, RunSummary& summary);

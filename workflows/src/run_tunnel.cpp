@@ -116,6 +116,42 @@ void restore_bolts(const nlohmann::json& s, fdem::BoltPlan& bolts, const std::st
   bolts.installed_stress = std::move(stress);
 }
 
+// The run state's fields sized by the key points: history rows (one value
+// per history.csv column) and the stage's monitor displacements (a pair per
+// key point). Checked here as the restore would, before anything is written.
+void check_key_point_fields(const nlohmann::json& run, const std::vector<Monitor>& monitors,
+                            const std::string& file) {
+  const std::size_t width = history_columns(monitors).size();
+  for (const auto& row : run.at("outputs").at("history"))
+    if (row.size() != width)
+      throw InputError(file + ": corrupt run state: a history row has " +
+                       std::to_string(row.size()) + " values; history.csv has " +
+                       std::to_string(width) + " columns");
+  const std::size_t n_u = run.at("stages").at("stage_monitor_u").size();
+  if (n_u != 2 * monitors.size())
+    throw InputError(file + ": corrupt run state: field 'stages.stage_monitor_u' holds " +
+                     std::to_string(n_u) + " values; the model's " +
+                     std::to_string(monitors.size()) + " key points need " +
+                     std::to_string(2 * monitors.size()));
+}
+
+/// A restart's engine state and bolts put back, and the run state checked
+/// against the scene and mesh, before the output folder is claimed: a
+/// checkpoint that does not fit leaves OUTDIR as it found it. Returns the
+/// hand-off's unbalanced-force ratio.
+double restore_before_writing(const Checkpoint& resume, const std::string& file, const Scene& scene,
+                              const mesh::Mesh& m, fdem::Engine& engine, fdem::BoltPlan& bolts) {
+  try {
+    std::istringstream state(resume.engine_state);
+    engine.load_state(state);
+  } catch (const InputError& e) {
+    throw InputError("checkpoint " + file + ": its engine state: " + e.what());
+  }
+  restore_bolts(resume.run.at("bolts"), bolts, file);
+  check_key_point_fields(resume.run, tunnel_monitors(scene.mesh, m, engine), file);
+  return resume.run.at("start_ratio").get<double>();
+}
+
 // The run directory a checkpoint belongs to: OUTDIR/checkpoints/FILE -> OUTDIR.
 std::string run_dir_of(const std::string& checkpoint) {
   const std::filesystem::path p = std::filesystem::absolute(checkpoint);
@@ -249,16 +285,12 @@ int run_tunnel(const Scene& scene, const CommandLine& cli) {
                     "this mesh and its penalties with the stages' damping");
     engine.set_damping(in.damping);
   }
+  double start_ratio = 0;
+  if (restart) start_ratio = restore_before_writing(resume, cli.restart, scene, m, engine, bolts);
   timer.stamp("fdem setup");
   write_first_outputs(scene, cli, restart, m, fields, out);
   timer.stamp("output");
-  double start_ratio = 0;
-  if (restart) {
-    std::istringstream state(resume.engine_state);
-    engine.load_state(state);
-    restore_bolts(resume.run.at("bolts"), bolts, cli.restart);
-    start_ratio = resume.run.at("start_ratio").get<double>();
-  } else {
+  if (!restart) {
     for (std::size_t t = 0; t < m.n_triangles(); ++t)
       if (!handoff.active[t]) engine.set_active(t, false);
     out.keep_start(engine);
