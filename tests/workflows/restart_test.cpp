@@ -317,6 +317,37 @@ TEST_F(Restart, forgeries_that_do_not_fit_the_run_leave_no_output_folder) {
   fs::remove_all(dir);
 }
 
+// Whether process `pid` catches SIGTERM (its SigCgt mask in /proc).
+bool catches_sigterm(pid_t pid) {
+  std::ifstream in("/proc/" + std::to_string(pid) + "/status");
+  std::string line;
+  while (std::getline(in, line))
+    if (line.rfind("SigCgt:", 0) == 0)
+      return (std::stoull(line.substr(7), nullptr, 16) >> (SIGTERM - 1)) & 1;
+  return false;
+}
+
+// SIGTERM while a command that installs no run handlers works (here
+// `mesh` of a fine tunnel, several seconds of gmsh) used to end the
+// process without a word; the handlers installed first thing in main()
+// print one line naming the signal, and the exit code stays 143.
+TEST(Signals, sigterm_before_a_run_handles_it_names_the_signal) {
+  const fs::path out = scratch("early-signal");
+  const fs::path log = scratch("early-signal.log");
+  const pid_t pid =
+      spawn("mesh " + std::string(ROCKFDEM_SOURCE_DIR) +
+                "/scenes/tunnel-seed.toml --set mesh.size_near=0.05 -q -o " + out.string(),
+            log);
+  wait_for([&] { return catches_sigterm(pid); });
+  std::this_thread::sleep_for(std::chrono::milliseconds(200));
+  kill(pid, SIGTERM);
+  EXPECT_EQ(wait_exit_code(pid), 143);
+  const std::string text = read_text(log);
+  EXPECT_NE(text.find("rockfdem: stopped by signal 15 (SIGTERM)"), std::string::npos) << text;
+  fs::remove_all(out);
+  fs::remove(log);
+}
+
 TEST_F(Restart, sigterm_writes_outputs_and_a_checkpoint_then_exit_143_and_restarts) {
   const fs::path out = scratch("restart-sigterm");
   const pid_t pid = spawn("run " + kScene + " -q -j 2 -o " + out.string(), out.string() + ".log");
