@@ -462,6 +462,23 @@ TEST(Cli, lining_interface_debonds_when_weak_and_holds_when_strong) {
   EXPECT_EQ(lining[1]["interface_broken"].get<long>(), 0);
 }
 
+// A --set value with a line break: TOML read the first line as the value
+// and the rest as other keys, which were dropped without a word (exit 0).
+// Now exit 2 naming the --set, with the break shown as an escape.
+TEST(Cli, set_value_with_a_line_break_is_refused) {
+  const std::string seed = std::string(ROCKFDEM_SOURCE_DIR) + "/scenes/tunnel-seed.toml";
+  const std::pair<const char*, const char*> breaks[] = {{"\n", "\\n"}, {"\r", "\\r"}};
+  for (const auto& [brk, shown] : breaks) {
+    const Result r =
+        run("check " + seed + " --set 'engine.dt_safety=0.5" + brk + "mesh.size_near=9'");
+    EXPECT_EQ(r.code, 2) << r.output;
+    EXPECT_NE(r.output.find("--set engine.dt_safety=0.5" + std::string(shown) +
+                            "mesh.size_near=9: the value holds a line break"),
+              std::string::npos)
+        << r.output;
+  }
+}
+
 // A --set path into an array of tables needs a whole-number index the scene
 // has: anything else is bad input (exit 2, one line naming the path and the
 // indices allowed), not an internal error.
