@@ -109,10 +109,10 @@ TEST(Cli, set_override_is_validated_like_the_file) {
 TEST(Cli, check_prints_estimates_and_writes_nothing) {
   const Result r = run("check " + kTestDir + "/good_circular.toml");
   EXPECT_EQ(r.code, 0) << r.output;
-  EXPECT_NE(r.output.find("triangles (estimate)"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("triangles (meshed)"), std::string::npos) << r.output;
   EXPECT_NE(r.output.find("stable time step"), std::string::npos) << r.output;
-  EXPECT_NE(r.output.find("run time (estimate)"), std::string::npos) << r.output;
-  EXPECT_NE(r.output.find("peak memory (estimate)"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("run time (bound)"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("peak memory (bound)"), std::string::npos) << r.output;
 }
 
 // A mesh far beyond any machine's memory (1 mm triangles over the whole

@@ -62,6 +62,25 @@ void write_frame(const fdem::Engine& e, const mesh::Mesh& m, const std::string& 
   pvd.write();
 }
 
+}  // namespace
+
+fdem::ModelInput specimen_input(const Scene& scene, const mesh::Mesh& m) {
+  fdem::ModelInput in = coupling::model_input(
+      m, engine_materials(scene), scene.plane_stress ? fdem::Plane::kStress : fdem::Plane::kStrain);
+  in.boundary_conditions = platens(scene);
+  in.dt = scene.engine.dt;  // checked by make_engine
+  in.dt_safety = scene.engine.dt_safety;
+  in.damping.local = std::max(scene.engine.local_damping, 0.0);  // -1: not given, none
+  in.damping.mass_proportional = scene.engine.mass_damping;
+  in.gravity_y = -scene.engine.gravity;
+  in.threads = active_threads();
+  in.mass_scaling = {scene.engine.mass_scaling, scene.engine.mass_scaling_dt};
+  in.contact = contact_settings(scene);
+  return in;
+}
+
+namespace {
+
 int run_specimen(const Scene& scene, const CommandLine& cli) {
   PhaseTimer timer;
   const int threads = active_threads();
@@ -73,18 +92,7 @@ int run_specimen(const Scene& scene, const CommandLine& cli) {
   summary.record_mesh(m, report);
   timer.stamp("mesh");
 
-  fdem::ModelInput in = coupling::model_input(
-      m, engine_materials(scene), scene.plane_stress ? fdem::Plane::kStress : fdem::Plane::kStrain);
-  in.boundary_conditions = platens(scene);
-  in.dt = scene.engine.dt;  // checked by make_engine
-  in.dt_safety = scene.engine.dt_safety;
-  in.damping.local = std::max(scene.engine.local_damping, 0.0);  // -1: not given, none
-  in.damping.mass_proportional = scene.engine.mass_damping;
-  in.gravity_y = -scene.engine.gravity;
-  in.threads = threads;
-  in.mass_scaling = {scene.engine.mass_scaling, scene.engine.mass_scaling_dt};
-  in.contact = contact_settings(scene);
-  fdem::Engine engine = make_engine(in, scene, cli.force_dt);
+  fdem::Engine engine = make_engine(specimen_input(scene, m), scene, cli.force_dt);
   timer.stamp("fdem setup");
   // Only now, with engine.dt accepted, is anything written.
   prepare_output_dir(cli.output_dir, scene, cli.force);

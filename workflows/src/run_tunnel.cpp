@@ -75,24 +75,6 @@ std::vector<fdem::BoundaryCondition> box_conditions(const InsituSettings& s) {
   return bcs;
 }
 
-fdem::ModelInput engine_input(const Scene& scene, const mesh::Mesh& m,
-                              const insitu::InsituField& handoff) {
-  std::map<int, fdem::Material> materials = engine_materials(scene);
-  // The implicit stage left the core at alpha_h E; the engine continues from there.
-  if (materials.count(mesh::kCore) && handoff.alpha > 0)
-    materials[mesh::kCore].young *= handoff.alpha;
-  fdem::ModelInput in = coupling::model_input(
-      m, materials, scene.plane_stress ? fdem::Plane::kStress : fdem::Plane::kStrain);
-  coupling::apply_insitu(handoff, in);
-  in.boundary_conditions = box_conditions(scene.insitu);
-  in.dt = scene.engine.dt;  // checked by make_engine
-  in.dt_safety = scene.engine.dt_safety;
-  in.threads = active_threads();
-  in.mass_scaling = {scene.engine.mass_scaling, scene.engine.mass_scaling_dt};
-  in.contact = contact_settings(scene);
-  return in;
-}
-
 // Bolt installation is state a restart needs: which bolts and their stress then.
 nlohmann::json bolt_state(const fdem::BoltPlan& bolts) {
   return {{"installed", bolts.installed}, {"installed_stress", bolts.installed_stress}};
@@ -225,6 +207,24 @@ void reporting_failure(const Scene& scene, RunOutputs& out, const fdem::Engine& 
 }
 
 }  // namespace
+
+fdem::ModelInput engine_input(const Scene& scene, const mesh::Mesh& m,
+                              const insitu::InsituField& handoff) {
+  std::map<int, fdem::Material> materials = engine_materials(scene);
+  // The implicit stage left the core at alpha_h E; the engine continues from there.
+  if (materials.count(mesh::kCore) && handoff.alpha > 0)
+    materials[mesh::kCore].young *= handoff.alpha;
+  fdem::ModelInput in = coupling::model_input(
+      m, materials, scene.plane_stress ? fdem::Plane::kStress : fdem::Plane::kStrain);
+  coupling::apply_insitu(handoff, in);
+  in.boundary_conditions = box_conditions(scene.insitu);
+  in.dt = scene.engine.dt;  // checked by make_engine
+  in.dt_safety = scene.engine.dt_safety;
+  in.threads = active_threads();
+  in.mass_scaling = {scene.engine.mass_scaling, scene.engine.mass_scaling_dt};
+  in.contact = contact_settings(scene);
+  return in;
+}
 
 int run_tunnel(const Scene& scene, const CommandLine& cli) {
   if (scene.insitu.unit_weight > 0)
