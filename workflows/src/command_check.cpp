@@ -285,10 +285,6 @@ void print_probe(const Scene& scene, const Probe& p) {
         p.dt_stages);
 }
 
-}  // namespace
-
-namespace {
-
 // Without a probe (a model above kProbeTriangleLimit): the figures from
 // check's estimate and the documented constants above.
 void print_constants(const Scene& scene, const Estimate& e, double cp) {
