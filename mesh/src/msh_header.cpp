@@ -77,6 +77,16 @@ std::optional<std::string> tag_out_of_int_range(const std::string& path) {
   return std::nullopt;
 }
 
+std::optional<std::string> count_beyond(const std::string& where, std::uint64_t n,
+                                        const std::string& what, std::uint64_t bytes,
+                                        std::uint64_t per_item) {
+  if (n <= bytes / per_item) return std::nullopt;
+  return where + " declares " + std::to_string(n) + " " + what + ", but the " +
+         std::to_string(bytes) + " bytes after it can hold at most " +
+         std::to_string(bytes / per_item) + " (each takes at least " + std::to_string(per_item) +
+         " bytes); the count must be the number of " + what + " the section lists";
+}
+
 namespace {
 
 // Every node, element or entity takes at least 2 bytes of text: a digit and
@@ -140,14 +150,8 @@ class CountScan {
 
   // Whether `n` items fit the bytes after the current position.
   bool fits(const std::string& where, std::uint64_t n, const std::string& what) {
-    const std::uint64_t bytes = left();
-    if (n <= bytes / kMinBytesPerItem) return true;
-    problem_ = where + " declares " + std::to_string(n) + " " + what + ", but the " +
-               std::to_string(bytes) + " bytes after it can hold at most " +
-               std::to_string(bytes / kMinBytesPerItem) + " (each takes at least " +
-               std::to_string(kMinBytesPerItem) + "); the count must be the number of " + what +
-               " the section lists";
-    return false;
+    problem_ = count_beyond(where, n, what, left(), kMinBytesPerItem);
+    return !problem_;
   }
 
   // A $Nodes or $Elements section: MSH 1 and 2 give the total alone; MSH 4
@@ -232,7 +236,8 @@ class CountScan {
 }  // namespace
 
 std::optional<std::string> count_beyond_file(const std::string& path) {
-  return CountScan(path).first_problem();
+  if (auto text = CountScan(path).first_problem()) return text;
+  return binary_count_beyond_file(path);
 }
 
 }  // namespace rockfdem::mesh::detail

@@ -2,6 +2,7 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
 #include <optional>
 #include <string>
 
@@ -31,7 +32,20 @@ std::optional<std::string> tag_out_of_int_range(const std::string& path);
 /// gmsh 4.8 allocates by the declared total before it reads a node (a huge
 /// one ends in std::bad_alloc) and fills that allocation with whatever the
 /// blocks hold (past its end when they hold more). nullopt when every count
-/// fits (or the file is binary).
+/// fits. Binary files are scanned by binary_count_beyond_file.
 std::optional<std::string> count_beyond_file(const std::string& path);
+
+/// The same for a binary .msh (msh_binary_counts.cpp): MSH 2's text count
+/// lines, MSH 4.1's binary totals and block counts, each against the bytes
+/// after it at the size of the smallest record (a node: tag and three
+/// coordinates). nullopt for text files and byte orders other than this
+/// machine's (gmsh's reader answers those).
+std::optional<std::string> binary_count_beyond_file(const std::string& path);
+
+/// "WHERE declares N WHAT, but the BYTES bytes after it can hold at most
+/// ..." when n items of at least per_item bytes do not fit in `bytes`.
+std::optional<std::string> count_beyond(const std::string& where, std::uint64_t n,
+                                        const std::string& what, std::uint64_t bytes,
+                                        std::uint64_t per_item);
 
 }  // namespace rockfdem::mesh::detail

@@ -240,6 +240,88 @@ TEST(MshUserFile, msh4_counts_beyond_the_file_are_refused) {
                  "declares -3 nodes");
 }
 
+// Binary .msh files, built byte by byte: the same unit square of two
+// triangles in MSH 2.2 (counts as text lines, records binary) and MSH 4.1
+// (counts binary too). gmsh 4.8 allocates by their declared counts as well.
+template <class T>
+void put(std::string& s, T v) {
+  s.append(reinterpret_cast<const char*>(&v), sizeof v);
+}
+const char kBinaryHead2[] = "$MeshFormat\n2.2 1 8\n";
+const char kBinaryHead4[] = "$MeshFormat\n4.1 1 8\n";
+const char kBinaryNames[] =
+    "\n$EndMeshFormat\n$PhysicalNames\n2\n1 1 \"base\"\n2 7 \"granite\"\n$EndPhysicalNames\n";
+const double kSquare[4][2] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+
+std::string binary_msh2(const std::string& node_count, const std::string& element_count) {
+  std::string s = kBinaryHead2;
+  put(s, 1);
+  s += kBinaryNames + ("$Nodes\n" + node_count + "\n");
+  for (int v = 0; v < 4; ++v)
+    put(s, v + 1), put(s, kSquare[v][0]), put(s, kSquare[v][1]), put(s, 0.0);
+  s += "\n$EndNodes\n$Elements\n" + element_count + "\n";
+  for (int h : {1, 1, 2}) put(s, h);  // type, count, tags: one line
+  for (int w : {1, 1, 1, 1, 2}) put(s, w);
+  for (int h : {2, 2, 2}) put(s, h);  // two triangles
+  for (int w : {2, 7, 1, 1, 2, 3, 3, 7, 1, 1, 3, 4}) put(s, w);
+  return s + "\n$EndElements\n";
+}
+
+// An MSH 4.1 entity: tag, bounding box, one physical tag, its boundary.
+void put_entity(std::string& s, int physical, std::initializer_list<int> boundary) {
+  put(s, 1);
+  for (double b : {0.0, 0.0, 0.0, 1.0, 1.0, 0.0}) put(s, b);
+  put(s, std::size_t(1)), put(s, physical), put(s, boundary.size());
+  for (int b : boundary) put(s, b);
+}
+
+std::string binary_msh4(std::size_t node_count, std::size_t block_nodes,
+                        std::size_t element_count) {
+  std::string s = kBinaryHead4;
+  put(s, 1);
+  s += kBinaryNames + std::string("$Entities\n");
+  for (std::size_t n : {0, 1, 1, 0}) put(s, n);
+  put_entity(s, 1, {});
+  put_entity(s, 7, {1});
+  s += "\n$EndEntities\n$Nodes\n";
+  for (std::size_t n : {std::size_t(1), node_count, std::size_t(1), std::size_t(4)}) put(s, n);
+  put(s, 2), put(s, 1), put(s, 0), put(s, block_nodes);
+  for (std::size_t v = 1; v <= 4; ++v) put(s, v);
+  for (const auto& p : kSquare) put(s, p[0]), put(s, p[1]), put(s, 0.0);
+  s += "\n$EndNodes\n$Elements\n";
+  for (std::size_t n : {std::size_t(2), element_count, std::size_t(1), std::size_t(3)}) put(s, n);
+  put(s, 1), put(s, 1), put(s, 1), put(s, std::size_t(1));
+  for (std::size_t w : {1, 1, 2}) put(s, w);
+  put(s, 2), put(s, 1), put(s, 2), put(s, std::size_t(2));
+  for (std::size_t w : {2, 1, 2, 3, 3, 1, 3, 4}) put(s, w);
+  return s + "\n$EndElements\n";
+}
+
+TEST(MshUserFile, binary_squares_read) {
+  for (const std::string& text : {binary_msh2("4", "3"), binary_msh4(4, 4, 3)}) {
+    const Mesh m = read_text("rockfdem_binary.msh", text);
+    EXPECT_EQ(m.n_triangles(), 2u);
+    EXPECT_EQ(m.n_vertices(), 4u);
+    ASSERT_EQ(m.edges.size(), 1u);
+    EXPECT_EQ(m.edges[0].tag, kBottom);
+  }
+}
+
+TEST(MshUserFile, binary_counts_beyond_the_file_are_refused) {
+  expect_refused("rockfdem_bin2_nodes.msh", binary_msh2("999999999999", "3"),
+                 "the $Nodes section declares 999999999999 nodes, but the");
+  expect_refused("rockfdem_bin2_elements.msh", binary_msh2("4", "88888888888"),
+                 "the $Elements section declares 88888888888 elements, but the");
+  expect_refused("rockfdem_bin4_nodes.msh", binary_msh4(999999999999, 4, 3),
+                 "the $Nodes section declares 999999999999 nodes, but the");
+  expect_refused("rockfdem_bin4_block.msh", binary_msh4(4, 77777777777, 3),
+                 "block 1 of the $Nodes section declares 77777777777 nodes");
+  expect_refused("rockfdem_bin4_sum.msh", binary_msh4(3, 4, 3),
+                 "the $Nodes section declares 3 nodes, but its 1 blocks hold 4");
+  expect_refused("rockfdem_bin4_elements.msh", binary_msh4(4, 4, 5555555555),
+                 "the $Elements section declares 5555555555 elements");
+}
+
 // Found by tests/fuzz/fuzz_msh: gmsh::open reads a file that does not start
 // as a mesh as a .geo script, and a script can run shell commands. Such a
 // file is refused before gmsh sees it, and its command never runs.

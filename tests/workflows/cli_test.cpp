@@ -109,10 +109,10 @@ TEST(Cli, set_override_is_validated_like_the_file) {
 TEST(Cli, check_prints_estimates_and_writes_nothing) {
   const Result r = run("check " + kTestDir + "/good_circular.toml");
   EXPECT_EQ(r.code, 0) << r.output;
-  EXPECT_NE(r.output.find("triangles (estimate)"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("triangles (meshed)"), std::string::npos) << r.output;
   EXPECT_NE(r.output.find("stable time step"), std::string::npos) << r.output;
-  EXPECT_NE(r.output.find("run time (estimate)"), std::string::npos) << r.output;
-  EXPECT_NE(r.output.find("peak memory (estimate)"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("run time (bound)"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("peak memory (bound)"), std::string::npos) << r.output;
 }
 
 // A mesh far beyond any machine's memory (1 mm triangles over the whole
@@ -404,6 +404,32 @@ TEST(Cli, dt_above_the_limit_is_refused_and_forced_it_stops_with_a_diagnostic) {
   fs::remove_all(out);
 }
 
+// An explicit failure under an in-situ stress far above the rock's
+// stiffness names that likely cause (the stress-to-modulus ratio and its
+// keys) besides the dt advice; at the seed's ratio it does not. Both runs
+// are forced to diverge with a dt 10x the limit (0.28 ms).
+TEST(Cli, explicit_failure_names_a_large_stress_to_modulus_ratio) {
+  const fs::path out = scratch("stress-ratio");
+  const std::string base = "run " + kTestDir +
+                           "/restart_support.toml -q --force --force-dt --set engine.dt=3e-3 "
+                           "--set output.vtk=false -o " +
+                           out.string();
+  const Result seed = run(base);  // 18.2 MPa on 3 GPa: 0.006
+  ASSERT_EQ(seed.code, 3) << seed.output;
+  EXPECT_EQ(seed.output.find("Likely cause"), std::string::npos) << seed.output;
+  const Result high = run(base + " --set insitu.sigma_h=1e8");  // 100 MPa on 3 GPa
+  ASSERT_EQ(high.code, 3) << high.output;
+  for (const std::string& text :
+       {high.output,
+        rockfdem::test::read_json(out / "summary.json")["failure"].get<std::string>()}) {
+    EXPECT_NE(text.find("Likely cause: the in-situ stress"), std::string::npos) << text;
+    EXPECT_NE(text.find("is 0.0333 times the rock's Young's modulus"), std::string::npos) << text;
+    EXPECT_NE(text.find("'insitu.sigma_h' = 1e+08"), std::string::npos) << text;
+    EXPECT_NE(text.find("'materials.rock.young' = 3e+09"), std::string::npos) << text;
+  }
+  fs::remove_all(out);
+}
+
 // The lining-rock interface is a ring of crack elements re-joined with the
 // [lining_interface] bond when the lining is installed. A 1 kPa bond lets
 // the squeezed lining (a 20 GPa shotcrete here, stiff enough to matter)
@@ -434,6 +460,23 @@ TEST(Cli, lining_interface_debonds_when_weak_and_holds_when_strong) {
   EXPECT_GT(lining[0]["interface_broken"].get<long>(),
             lining[0]["interface_cracks"].get<long>() / 4);
   EXPECT_EQ(lining[1]["interface_broken"].get<long>(), 0);
+}
+
+// A --set value with a line break: TOML read the first line as the value
+// and the rest as other keys, which were dropped without a word (exit 0).
+// Now exit 2 naming the --set, with the break shown as an escape.
+TEST(Cli, set_value_with_a_line_break_is_refused) {
+  const std::string seed = std::string(ROCKFDEM_SOURCE_DIR) + "/scenes/tunnel-seed.toml";
+  const std::pair<const char*, const char*> breaks[] = {{"\n", "\\n"}, {"\r", "\\r"}};
+  for (const auto& [brk, shown] : breaks) {
+    const Result r =
+        run("check " + seed + " --set 'engine.dt_safety=0.5" + brk + "mesh.size_near=9'");
+    EXPECT_EQ(r.code, 2) << r.output;
+    EXPECT_NE(r.output.find("--set engine.dt_safety=0.5" + std::string(shown) +
+                            "mesh.size_near=9: the value holds a line break"),
+              std::string::npos)
+        << r.output;
+  }
 }
 
 // A --set path into an array of tables needs a whole-number index the scene

@@ -44,11 +44,11 @@ TEST(MshScene, check_reads_the_mesh_file_and_refuses_a_bad_one) {
   const Result good = run("check " + scene.string());
   ASSERT_EQ(good.code, 0) << good.output;
   const nlohmann::json meshed = read_json(dir / "mesh" / "summary.json");
-  EXPECT_NE(good.output.find("triangles (in the file):    " +
+  EXPECT_NE(good.output.find("triangles (meshed):         " +
                              std::to_string(meshed["counts"]["triangles"].get<long>())),
             std::string::npos)
       << good.output;
-  EXPECT_NE(good.output.find("peak memory (estimate)"), std::string::npos) << good.output;
+  EXPECT_NE(good.output.find("peak memory (bound)"), std::string::npos) << good.output;
 
   std::ofstream(dir / "junk.msh") << "not a mesh\n";
   const std::pair<std::string, std::string> bad[] = {{"msh.file=junk.msh", "$MeshFormat"},

@@ -200,3 +200,17 @@ TEST(OutputDir, a_folder_in_use_by_another_run_is_refused_naming_its_pid) {
   EXPECT_EQ(r.code, 0) << r.output;
   fs::remove_all(out);
 }
+
+// `-o "a/../x"` with no folder a: creating x also made a (as mkdir -p
+// does), and it stayed behind empty. The folders made only on the way are
+// removed when the command ends; x and its outputs stay.
+TEST(OutputDir, folders_made_only_on_the_way_to_the_output_are_removed) {
+  const fs::path base = scratch("detour");
+  fs::create_directories(base);
+  const std::string out = (base / "out put" / ".." / "x").string();
+  const Result r = run("mesh " + kCircular + " -q -o '" + out + "'");
+  EXPECT_EQ(r.code, 0) << r.output;
+  EXPECT_TRUE(fs::exists(base / "x" / "mesh.msh"));
+  EXPECT_FALSE(fs::exists(base / "out put")) << "the detour's folder is left behind";
+  fs::remove_all(base);
+}

@@ -15,6 +15,7 @@
 #include <chrono>
 #include <cstring>
 #include <filesystem>
+#include <functional>
 #include <future>
 #include <thread>
 #include <vector>
@@ -241,6 +242,82 @@ TEST_F(Restart, forged_empty_run_state_is_refused_with_exit_2) {
   EXPECT_EQ(r.output.find("json.exception"), std::string::npos) << r.output;
   EXPECT_FALSE(fs::exists(out)) << "nothing written";
   fs::remove_all(dir);
+}
+
+// Forgeries that pass the run state's structural check but do not fit the
+// scene, the mesh or the files beside the checkpoint (checksum recomputed):
+// each is exit 2 naming the checkpoint, and the new -o folder is never
+// created. They used to be found while restoring, after the first outputs
+// were written.
+TEST_F(Restart, forgeries_that_do_not_fit_the_run_leave_no_output_folder) {
+  const Checkpoint good =
+      read_checkpoint(checkpoints(*reference_dir_).back().string(), restart_scene());
+  const fs::path dir = scratch("restart-misfit");
+  struct Case {
+    std::string name;
+    std::function<void(Checkpoint&)> forge;
+  };
+  const std::vector<Case> cases = {
+      {"engine-garbage", [](Checkpoint& c) { c.engine_state = "ENGINE"; }},
+      {"engine-half",
+       [](Checkpoint& c) { c.engine_state = c.engine_state.substr(0, c.engine_state.size() / 2); }},
+      {"bolt-count",
+       [](Checkpoint& c) {
+         c.run["bolts"] = {{"installed", {1}},
+                           {"installed_stress", nlohmann::json::array({nlohmann::json::array()})}};
+       }},
+      {"history-width",
+       [](Checkpoint& c) {
+         c.run["outputs"]["history"] = {{0.0, 1.0}, {1.0, 2.0}};
+       }},
+      {"monitor-u",
+       [](Checkpoint& c) {
+         c.run["stages"]["stage_monitor_u"] = {0.0, 0.0};
+       }},
+  };
+  for (const Case& c : cases) {
+    Checkpoint forged = good;
+    c.forge(forged);
+    const fs::path from = dir / c.name;
+    const std::string path = write_checkpoint(from.string(), 1, restart_scene(), forged);
+    const fs::path out = dir / ("out-" + c.name);
+    const Result r = run("run " + kScene + " -q --restart " + path + " -o " + out.string());
+    EXPECT_EQ(r.code, 2) << c.name << ": " << r.output;
+    EXPECT_NE(r.output.find(path), std::string::npos) << c.name << ": " << r.output;
+    EXPECT_FALSE(fs::exists(out)) << c.name << ": the output folder was created";
+  }
+  fs::remove_all(dir);
+}
+
+// Whether process `pid` catches SIGTERM (its SigCgt mask in /proc).
+bool catches_sigterm(pid_t pid) {
+  std::ifstream in("/proc/" + std::to_string(pid) + "/status");
+  std::string line;
+  while (std::getline(in, line))
+    if (line.rfind("SigCgt:", 0) == 0)
+      return (std::stoull(line.substr(7), nullptr, 16) >> (SIGTERM - 1)) & 1;
+  return false;
+}
+
+// SIGTERM while a command that installs no run handlers works (here
+// `mesh` of a fine tunnel, several seconds of gmsh) used to end the
+// process without a word; the handlers installed first thing in main()
+// print one line naming the signal, and the exit code stays 143.
+TEST(Signals, sigterm_before_a_run_handles_it_names_the_signal) {
+  const fs::path out = scratch("early-signal");
+  const fs::path log = scratch("early-signal.log");
+  const pid_t pid =
+      spawn("mesh " + std::string(ROCKFDEM_SOURCE_DIR) +
+                "/scenes/tunnel-seed.toml --set mesh.size_near=0.05 -q -o " + out.string(),
+            log);
+  wait_for([&] { return catches_sigterm(pid); });
+  std::this_thread::sleep_for(std::chrono::milliseconds(200));
+  kill(pid, SIGTERM);
+  EXPECT_EQ(wait_exit_code(pid), 143);
+  const std::string text = read_text(log);
+  EXPECT_NE(text.find("rockfdem: stopped by signal 15 (SIGTERM)"), std::string::npos) << text;
+  fs::remove_all(out);
+  fs::remove(log);
 }
 
 TEST_F(Restart, sigterm_writes_outputs_and_a_checkpoint_then_exit_143_and_restarts) {

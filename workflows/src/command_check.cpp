@@ -12,6 +12,7 @@
 #include <iostream>
 
 #include "broken_zone.hpp"
+#include "check_probe.hpp"
 #include "commands.hpp"
 #include "rockfdem/error.hpp"
 #include "rockfdem/mesh/build.hpp"
@@ -118,20 +119,31 @@ Estimate estimate(const Scene& s) {
 // Peak memory of a run: the libraries' baseline plus, per triangle, the
 // mesh and the implicit stage (measured 0.65 kB per triangle of peak RSS
 // growth between 107k and 390k triangles, `rockfdem insitu`) and the engine
-// (1100 B per triangle, below), with the implicit fields the outputs keep.
+// (1100 B per triangle, below), with the implicit fields the outputs keep;
+// and each alpha's field (stress, activity, displacements: 37 B per
+// triangle measured, 1000 alphas on the default tunnel's 8,798 triangles
+// peaking at 582 MB). A 2M-triangle .msh peaked at 2,520 B per triangle
+// above the baseline, 26% above this sum: the bound shown adds kMemoryMargin.
 constexpr double kBaseBytes = 256.0 * 1048576;
 constexpr double kBytesPerTriangle = 650 + 1100 + 250;
+constexpr double kBytesPerAlphaTriangle = 40;
+constexpr double kMemoryMargin = 1.5;
 
-double peak_bytes(const Estimate& e) { return kBaseBytes + kBytesPerTriangle * e.triangles; }
+double peak_bytes(const Scene& s, const Estimate& e) {
+  return kBaseBytes +
+         (kBytesPerTriangle + kBytesPerAlphaTriangle * double(s.insitu.alpha.size())) * e.triangles;
+}
 
 double machine_bytes() { return double(sysconf(_SC_PHYS_PAGES)) * double(sysconf(_SC_PAGE_SIZE)); }
 
 // Explicit steps at most: the step caps of the stages (tunnels) or the
 // specimen's step count.
+bool staged(const Scene& s) {
+  return s.mesh.kind == mesh::ModelKind::kTunnel || s.mesh.kind == mesh::ModelKind::kMshFile;
+}
+
 double explicit_steps(const Scene& s) {
-  const bool staged =
-      s.mesh.kind == mesh::ModelKind::kTunnel || s.mesh.kind == mesh::ModelKind::kMshFile;
-  if (!staged) return double(s.engine.steps);
+  if (!staged(s)) return double(s.engine.steps);
   double n = s.stages.empty() ? 0 : 1;  // the hand-off step
   for (const StageSpec& st : s.stages) n += double(st.max_steps);
   return n;
@@ -144,10 +156,18 @@ double explicit_steps(const Scene& s) {
 // thread; a confined specimen after heavy fracture, every triangle
 // fracturing: 5.3 M); 0.9 parallel efficiency at 2 threads; mesh and
 // implicit stage about 90 us per triangle.
+// Each alpha is one implicit solve and its output: 12 us per triangle
+// (1000 alphas on the default tunnel's 8,798 triangles took 107 s). The
+// bound shown is kTimeMargin times this sum: refined meshes ran up to 2.2
+// times the plain figures (size_near 0.05).
+constexpr double kAlphaSecondsPerTriangle = 12e-6;
+constexpr double kTimeMargin = 2.5;
+
 double run_seconds(const Scene& s, const Estimate& e, int threads) {
   const double serial = e.fracture_triangles > 0 && s.engine.contact ? 8e6 : 11e6;
   const double rate = serial * std::max(1, threads) * (threads > 1 ? 0.9 : 1.0);
-  return 90e-6 * e.triangles + explicit_steps(s) * e.triangles / rate;
+  const double implicit = kAlphaSecondsPerTriangle * double(s.insitu.alpha.size()) * e.triangles;
+  return 90e-6 * e.triangles + implicit + explicit_steps(s) * e.triangles / rate;
 }
 
 // Plane-strain P-wave speed of the rock.
@@ -162,7 +182,7 @@ double p_wave_speed(const MaterialSpec& r, bool plane_stress) {
 
 void refuse_if_too_large(const Scene& scene) {
   const Estimate e = estimate(scene);
-  const double need = peak_bytes(e), have = machine_bytes();
+  const double need = peak_bytes(scene, e), have = machine_bytes();
   if (need <= have) return;
   char msg[600];
   if (e.exact)
@@ -181,32 +201,134 @@ void refuse_if_too_large(const Scene& scene) {
   throw InputError(msg);
 }
 
-int command_check(const Scene& scene, const CommandLine& /*cli*/) {
-  const Estimate e = estimate(scene);
+namespace {
+
+// The probe's figures into bounds: the explicit stages' cost per step
+// measured here, raised for fracture (the probe's unloaded model does not
+// fracture; after fracture a step costs more with the touching pairs: a
+// confined specimen fell to 0.24 of its intact throughput, docs/
+// benchmarks.md) by kFractureCost on the share of triangles that may
+// fracture, plus meshing as measured and the implicit stage from its
+// documented constants; memory as measured after meshing and building
+// the engine, plus the implicit stage's share.
+constexpr double kFractureCost = 4.0;
+// Fixed and output costs the probe does not see: the process's start (MPI
+// and library initialisation, scene reading: 0.9 s measured), and writing
+// each output step's frame and history row (2 us per triangle allowed).
+constexpr double kStartSeconds = 2.0;
+constexpr double kOutputSecondsPerTriangle = 2e-6;
+constexpr double kProbeTimeMargin = 1.5;
+constexpr double kProbeMemoryMargin = 1.25;
+constexpr double kImplicitBytesPerTriangle = 650 + 250;
+
+double fracture_factor(const Probe& p) {
+  return 1 + (kFractureCost - 1) * double(p.fracture_triangles) /
+                 double(std::max<std::size_t>(p.triangles, 1));
+}
+
+// Output steps at most: each stage's (and its last), or the specimen's.
+double output_steps(const Scene& s) {
+  if (!staged(s)) return double(s.engine.steps) / std::max(1, s.output.every_steps) + 1;
+  double n = 1;  // the hand-off
+  for (const StageSpec& st : s.stages) n += double(st.max_steps) / std::max(1, st.every_steps) + 1;
+  return n;
+}
+
+double probe_seconds(const Scene& s, const Probe& p) {
+  const double tri = double(p.triangles);
+  const double implicit =
+      staged(s) ? 90e-6 * tri + kAlphaSecondsPerTriangle * tri * double(s.insitu.alpha.size())
+                : 0.0;
+  const double fracture = fracture_factor(p);
+  const double outputs = output_steps(s) * kOutputSecondsPerTriangle * tri;
+  return kStartSeconds + p.mesh_seconds + implicit + outputs +
+         explicit_steps(s) * p.seconds_per_step * fracture;
+}
+
+double probe_bytes(const Scene& s, const Probe& p) {
+  return p.rss_bytes +
+         (kImplicitBytesPerTriangle + kBytesPerAlphaTriangle * double(s.insitu.alpha.size())) *
+             double(p.triangles);
+}
+
+// What the run's time grows with: implicit solves and explicit steps.
+void print_step_counts(const Scene& scene) {
+  std::printf("  implicit solves (alphas):   %zu\n", scene.insitu.alpha.size());
+  std::printf("  explicit steps (at most):   %.0f\n", explicit_steps(scene));
+}
+
+void print_probe(const Scene& scene, const Probe& p) {
+  std::printf("  triangles (meshed):         %zu\n", p.triangles);
+  std::printf("  smallest altitude:          %.3g m\n", p.min_altitude);
+  std::printf(
+      "  peak memory (bound):        %.1f MiB at most, of %.1f MiB on this machine (bound: "
+      "%.1f MiB measured after meshing and building the engine + %.0f B per triangle + %.0f "
+      "B per triangle per alpha for the implicit stage, x %.2f margin)\n",
+      kProbeMemoryMargin * probe_bytes(scene, p) / 1048576.0, machine_bytes() / 1048576.0,
+      p.rss_bytes / 1048576.0, kImplicitBytesPerTriangle, kBytesPerAlphaTriangle,
+      kProbeMemoryMargin);
+  print_step_counts(scene);
+  std::printf(
+      "  run time (bound):           %.0f s at most on %d thread%s (bound: %.3g ms per step "
+      "measured here over %ld steps, x %.2f for fracture, x the steps, + meshing %.2f s + the "
+      "implicit stage + start-up and outputs, x %.1f margin)\n",
+      kProbeTimeMargin * probe_seconds(scene, p), p.threads, p.threads == 1 ? "" : "s",
+      1e3 * p.seconds_per_step, p.steps, fracture_factor(p), p.mesh_seconds, kProbeTimeMargin);
+  std::printf("  stable time step:           %.4g s on true masses (this mesh, its penalties)\n",
+              scene.engine.dt_safety * p.critical_true);
+  std::printf("  time step at the start:     %.8g s%s\n", p.dt_start,
+              scene.engine.mass_scaling ? " (mass-scaled, quasi-static pseudo-time)" : "");
+  if (staged(scene))
+    std::printf(
+        "  time step in the stages:    %.8g s at most (with their damping; a lining, bolts or "
+        "grout may lower it)\n",
+        p.dt_stages);
+}
+
+// Without a probe (a model above kProbeTriangleLimit): the figures from
+// check's estimate and the documented constants above.
+void print_constants(const Scene& scene, const Estimate& e, double cp) {
   const MaterialSpec& rock = scene.materials.at("rock");
-  const double cp = p_wave_speed(rock, scene.plane_stress);
   // A gmsh Frontal-Delaunay mesh's smallest altitude is about 0.3 of the
   // near size (measured: 0.095 m at 0.35 m); crack penalties p = f E stiffen
-  // it further (dt ~ h sqrt(rho / p)). The engine computes the exact limit.
+  // it further (dt ~ h sqrt(rho / p)).
   const double h = e.min_altitude > 0 ? e.min_altitude : 0.3 * scene.mesh.size.size_near;
   double dt = h / cp;
   if (e.fracture_triangles > 0)
     dt = std::min(dt, h * std::sqrt(rock.density / (rock.penalty_factor * rock.young)));
   dt *= scene.engine.dt_safety;
-  // Crack elements: about 1.5 interior edges per triangle. Memory: the
-  // engine measured 640 B per triangle on the fracturing UCS and 830-1070 B
-  // on the default tunnel (contact structures included): 1100 B bounds both.
-  const double cracks = 1.5 * e.fracture_triangles;
-  const double bytes = e.triangles * 1100;
-  std::printf("scene %s: valid\n", scene.source.c_str());
+  std::printf("  (no probe above %.0f triangles: documented constants)\n", kProbeTriangleLimit);
   if (e.exact) {
-    std::printf("  mesh from %s\n", scene.mesh.msh.path.c_str());
     std::printf("  triangles (in the file):    %.0f\n", e.triangles);
     std::printf("  smallest altitude:          %.3g m\n", e.min_altitude);
   } else {
     std::printf("  triangles (estimate):       %.0f\n", e.triangles);
   }
-  std::printf("  crack elements (estimate):  %.0f\n", cracks);
+  std::printf(
+      "  peak memory (bound):        %.1f MiB at most, of %.1f MiB on this machine (256 MiB "
+      "+ %.0f B per triangle + %.0f B per triangle per alpha, x %.1f margin)\n",
+      kMemoryMargin * peak_bytes(scene, e) / 1048576.0, machine_bytes() / 1048576.0,
+      kBytesPerTriangle, kBytesPerAlphaTriangle, kMemoryMargin);
+  print_step_counts(scene);
+  std::printf(
+      "  run time (bound):           %.0f s at most on %d idle thread%s (measured throughput "
+      "of the 2-core development machine: 8-11 M triangle-steps/s per thread, 12 us per "
+      "triangle per alpha; x %.1f margin)\n",
+      kTimeMargin * run_seconds(scene, e, active_threads()), active_threads(),
+      active_threads() == 1 ? "" : "s", kTimeMargin);
+  std::printf("  stable time step (approx):  %.3g s on true masses (from the smallest altitude)\n",
+              dt);
+}
+
+}  // namespace
+
+int command_check(const Scene& scene, const CommandLine& /*cli*/) {
+  const Estimate e = estimate(scene);
+  const double cp = p_wave_speed(scene.materials.at("rock"), scene.plane_stress);
+  std::printf("scene %s: valid\n", scene.source.c_str());
+  if (e.exact) std::printf("  mesh from %s\n", scene.mesh.msh.path.c_str());
+  // Crack elements: about 1.5 interior edges per triangle.
+  std::printf("  crack elements (estimate):  %.0f\n", 1.5 * e.fracture_triangles);
   if (e.fracture_triangles > 0) {
     const Resolution r = fracture_resolution(scene, nullptr);
     std::printf(
@@ -220,28 +342,11 @@ int command_check(const Scene& scene, const CommandLine& /*cli*/) {
                    "mesh.size_near\n",
                    r.ratio, kResolutionLimit);
   }
-  std::printf("  engine memory (estimate):   %.1f MiB\n", bytes / 1048576.0);
-  std::printf("  peak memory (estimate):     %.1f MiB of %.1f MiB on this machine\n",
-              peak_bytes(e) / 1048576.0, machine_bytes() / 1048576.0);
-  std::printf("  explicit steps (at most):   %.0f\n", explicit_steps(scene));
-  std::printf("  run time (estimate):        %.0f s at most on %d idle thread%s\n",
-              run_seconds(scene, e, active_threads()), active_threads(),
-              active_threads() == 1 ? "" : "s");
+  if (e.triangles <= kProbeTriangleLimit)
+    print_probe(scene, probe_scene(scene));
+  else
+    print_constants(scene, e, cp);
   std::printf("  P-wave speed of rock:       %.1f m/s\n", cp);
-  std::printf("  stable time step (approx):  %.3g s%s\n", dt,
-              scene.engine.mass_scaling ? " on true masses" : "");
-  if (scene.engine.mass_scaling) {
-    // Scaled to the least constrained node, among the coarsest triangles far
-    // out, less the tunnel's local damping (0.8 unless set: 1 / sqrt(1.8))
-    // and contact, which adds its frequency on top (1 / sqrt(2)).
-    const double local = stage_damping(scene).local;
-    const double contact = scene.engine.contact ? std::sqrt(0.5) : 1.0;
-    const double target = scene.engine.mass_scaling_dt > 0 ? scene.engine.mass_scaling_dt
-                                                           : 0.3 * scene.mesh.size.size_far / cp;
-    const double scaled = scene.engine.dt_safety * target * contact / std::sqrt(1 + local);
-    std::printf("  time step, mass-scaled:     %.3g s (quasi-static pseudo-time)\n",
-                std::max(dt, scaled));
-  }
   std::printf("  threads:                    %d\n", active_threads());
   return 0;
 }

@@ -51,4 +51,20 @@ void check_implicit_field(const Scene& scene, const mesh::Mesh& m,
   }
 }
 
+std::string with_likely_cause(const Scene& scene, const std::string& what) {
+  const double stress = std::max(std::abs(scene.insitu.sigma_h), std::abs(scene.insitu.sigma_v));
+  const double young = scene.materials.at("rock").young;
+  if (!(stress > kStressRatioLimit * young)) return what;
+  char cause[600];
+  std::snprintf(cause, sizeof cause,
+                " Likely cause: the in-situ stress (keys 'insitu.sigma_h' = %g, "
+                "'insitu.sigma_v' = %g Pa) is %.3g times the rock's Young's modulus "
+                "('materials.rock.young' = %g Pa), above %g (the seed's tunnel: 0.006): "
+                "check the units (stresses and moduli are in Pa) before changing dt or "
+                "damping.",
+                scene.insitu.sigma_h, scene.insitu.sigma_v, stress / young, young,
+                kStressRatioLimit);
+  return what + cause;
+}
+
 }  // namespace rockfdem::workflows

@@ -7,6 +7,7 @@
 // stress-to-modulus ratio.
 #pragma once
 
+#include <string>
 #include <vector>
 
 #include "rockfdem/insitu/insitu.hpp"
@@ -20,5 +21,16 @@ struct Scene;
 /// its active triangles: J = det(F) <= 0 with x = X + u.
 void check_implicit_field(const Scene& scene, const mesh::Mesh& m,
                           const std::vector<insitu::InsituField>& fields);
+
+/// In-situ stress over the rock's Young's modulus above which an explicit
+/// stage's failure is put down to the stress rather than the time step:
+/// the seed's tunnel runs at 0.006, and the linear in-situ field's strains
+/// (about this ratio) stop being small well before they invert triangles.
+inline constexpr double kStressRatioLimit = 0.01;
+
+/// The explicit stage's failure message `what`, followed, when the scene's
+/// in-situ stress exceeds kStressRatioLimit of the rock's modulus, by that
+/// likely cause with the ratio and the keys to check.
+std::string with_likely_cause(const Scene& scene, const std::string& what);
 
 }  // namespace rockfdem::workflows

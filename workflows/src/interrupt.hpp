@@ -10,6 +10,12 @@
 
 namespace rockfdem::workflows {
 
+/// From the start of main() until a run installs its own: SIGINT or
+/// SIGTERM prints one line naming the signal and exits 128 + signal (the
+/// default action ended the process without a word during start-up, about
+/// 0.9 s of MPI initialisation and scene reading, and during commands that
+/// install no handlers of their own).
+void install_early_handlers();
 /// Installs the handlers (idempotent) and clears any earlier request.
 void install_interrupt_handlers();
 /// The signal that asked the run to stop, or 0.

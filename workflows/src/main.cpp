@@ -12,9 +12,11 @@
 
 int main(int argc, char** argv) {
   using namespace rockfdem;
+  workflows::install_early_handlers();
   // MPI (for Trilinos' AMG in the implicit stage) lives as long as main().
   insitu::ScopedParallelInit parallel(argc, argv);
   workflows::study::register_study_commands();
+  workflows::install_early_handlers();  // again: MPI may have set its own
   try {
     const workflows::CommandLine cli = workflows::parse_command_line(argc, argv);
     return workflows::run_command(cli);

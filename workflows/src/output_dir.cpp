@@ -6,10 +6,12 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <functional>
 #include <sstream>
+#include <vector>
 
 #include "rockfdem/coupling/atomic_file.hpp"
 #include "rockfdem/error.hpp"
@@ -58,6 +60,44 @@ void lock_output_dir(const std::string& dir) {
   if (held_fd >= 0) ::close(held_fd);
   held = dir;  // fd stays open: the lock lasts until the process ends or claims another
   held_fd = fd;
+}
+
+// Folders that creating OUTDIR made only on the way: "-o 'a/../x'" makes
+// `a` (as mkdir -p does) though nothing is written there. Removed when the
+// process ends, if still empty (rmdir refuses otherwise).
+std::vector<fs::path>& stray_folders() {
+  static std::vector<fs::path> folders;
+  static const bool registered = [] {
+    std::atexit([] {
+      std::error_code ec;
+      for (auto it = folders.rbegin(); it != folders.rend(); ++it) fs::remove(*it, ec);
+    });
+    return true;
+  }();
+  (void)registered;
+  return folders;
+}
+
+// Creates `dir` and its missing parents, noting the created folders that
+// are not `dir` or one of its real ancestors.
+void create_output_dir(const std::string& dir, std::error_code& ec) {
+  std::vector<fs::path> missing;
+  fs::path prefix;
+  for (const fs::path& part : fs::path(dir)) {
+    prefix /= part;
+    std::error_code exists_ec;
+    if (!fs::exists(prefix, exists_ec)) missing.push_back(prefix);
+  }
+  fs::create_directories(dir, ec);
+  if (ec) return;
+  std::error_code canon_ec;
+  const fs::path target = fs::canonical(dir, canon_ec);
+  for (const fs::path& made : missing) {
+    const fs::path real = fs::canonical(made, canon_ec);
+    if (canon_ec) continue;
+    const auto mismatch = std::mismatch(real.begin(), real.end(), target.begin(), target.end());
+    if (mismatch.first != real.end()) stray_folders().push_back(made);  // not on the way to dir
+  }
 }
 
 // Every name a command writes into OUTDIR (workflow.md, "Monitors and
@@ -211,7 +251,7 @@ bool prepare_output_dir(const std::string& dir, const Scene& scene, bool force,
                        held.str().substr(0, held.str().find('\n')) +
                        "); choose another -o or pass --force to overwrite");
   }
-  fs::create_directories(dir, ec);
+  create_output_dir(dir, ec);
   if (ec) throw InputError("output directory " + dir + ": cannot create: " + ec.message());
   lock_output_dir(dir);
   // Frames or plots of a longer earlier run must not sit beside the new ones.

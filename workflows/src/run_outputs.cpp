@@ -130,6 +130,23 @@ void RunOutputs::set_bolts(const fdem::BoltPlan* bolts) {
     bolt_results_ = std::make_unique<BoltResults>(*bolts, scene_.bolts.is_cable, cli_.output_dir);
 }
 
+std::vector<std::string> RunOutputs::history_columns(const std::vector<Monitor>& monitors) const {
+  std::vector<std::string> cols{
+      "stage",    "step",      "time",        "kinetic_energy", "unbalanced_ratio",
+      "broken_I", "broken_II", "broken_mixed"};
+  for (const Monitor& mon : monitors)
+    for (const char* c : {"_ux_mm", "_uy_mm", "_u_mm", "_radial_mm"}) cols.push_back(mon.name + c);
+  cols.insert(cols.end(),
+              {"vault_settlement_mm", "wall_chord_convergence_mm", "shoulder_chord_convergence_mm",
+               "outer_rotation_deg", "support_pressure_ratio"});
+  for (const std::string& c : energy_columns()) cols.push_back(c);
+  if (bolt_results_)
+    for (const std::string& c : bolt_results_->history_columns()) cols.push_back(c);
+  if (instruments_)
+    for (const std::string& c : instruments_->columns()) cols.push_back(c);
+  return cols;
+}
+
 void RunOutputs::begin_history(const std::vector<Monitor>& monitors, const mesh::Mesh& m) {
   energy_floor_ = energy_floor(scene_, m);
   for (const mesh::TaggedEdge& edge : m.edges)
@@ -145,20 +162,8 @@ void RunOutputs::begin_history(const std::vector<Monitor>& monitors, const mesh:
     lining_ = std::make_unique<LiningOutput>(scene_, m);
     if (!lining_->has_ring()) lining_.reset();
   }
-  std::vector<std::string> cols{
-      "stage",    "step",      "time",        "kinetic_energy", "unbalanced_ratio",
-      "broken_I", "broken_II", "broken_mixed"};
-  for (const Monitor& mon : monitors)
-    for (const char* c : {"_ux_mm", "_uy_mm", "_u_mm", "_radial_mm"}) cols.push_back(mon.name + c);
-  cols.insert(cols.end(),
-              {"vault_settlement_mm", "wall_chord_convergence_mm", "shoulder_chord_convergence_mm",
-               "outer_rotation_deg", "support_pressure_ratio"});
-  for (const std::string& c : energy_columns()) cols.push_back(c);
-  if (bolt_results_)
-    for (const std::string& c : bolt_results_->history_columns()) cols.push_back(c);
-  if (instruments_)
-    for (const std::string& c : instruments_->columns()) cols.push_back(c);
-  history_ = std::make_unique<History>(output_path(cli_.output_dir, "history.csv"), cols);
+  history_ = std::make_unique<History>(output_path(cli_.output_dir, "history.csv"),
+                                       history_columns(monitors));
 }
 
 void RunOutputs::record_step(const fdem::Engine& e, const mesh::Mesh& m,

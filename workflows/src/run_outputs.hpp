@@ -35,6 +35,9 @@ class RunOutputs {
   /// and whose section forces the outputs report (BoltResults); before
   /// begin_history, which adds their columns.
   void set_bolts(const fdem::BoltPlan* bolts);
+  /// history.csv's columns for these key points: the run's figures, then
+  /// the bolts' (set_bolts) and the instruments' (set_instruments).
+  std::vector<std::string> history_columns(const std::vector<Monitor>& monitors) const;
   /// The scene's monitors, extensometers and broken depth along rays:
   /// history columns after the energy terms, summary entries.
   void set_instruments(std::unique_ptr<Instruments> instruments) {

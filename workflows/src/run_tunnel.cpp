@@ -74,24 +74,6 @@ std::vector<fdem::BoundaryCondition> box_conditions(const InsituSettings& s) {
   return bcs;
 }
 
-fdem::ModelInput engine_input(const Scene& scene, const mesh::Mesh& m,
-                              const insitu::InsituField& handoff) {
-  std::map<int, fdem::Material> materials = engine_materials(scene);
-  // The implicit stage left the core at alpha_h E; the engine continues from there.
-  if (materials.count(mesh::kCore) && handoff.alpha > 0)
-    materials[mesh::kCore].young *= handoff.alpha;
-  fdem::ModelInput in = coupling::model_input(
-      m, materials, scene.plane_stress ? fdem::Plane::kStress : fdem::Plane::kStrain);
-  coupling::apply_insitu(handoff, in);
-  in.boundary_conditions = box_conditions(scene.insitu);
-  in.dt = scene.engine.dt;  // checked by make_engine
-  in.dt_safety = scene.engine.dt_safety;
-  in.threads = active_threads();
-  in.mass_scaling = {scene.engine.mass_scaling, scene.engine.mass_scaling_dt};
-  in.contact = contact_settings(scene);
-  return in;
-}
-
 // Bolt installation is state a restart needs: which bolts and their stress then.
 nlohmann::json bolt_state(const fdem::BoltPlan& bolts) {
   return {{"installed", bolts.installed}, {"installed_stress", bolts.installed_stress}};
@@ -113,6 +95,43 @@ void restore_bolts(const nlohmann::json& s, fdem::BoltPlan& bolts, const std::st
                        " triangles; the bolt owns " + std::to_string(bolts.owned[b].size()));
   bolts.installed = std::move(installed);
   bolts.installed_stress = std::move(stress);
+}
+
+// The run state's fields sized by the key points: history rows (one value
+// per history.csv column) and the stage's monitor displacements (a pair per
+// key point). Checked here as the restore would, before anything is written.
+void check_key_point_fields(const nlohmann::json& run, const std::vector<Monitor>& monitors,
+                            const RunOutputs& out, const std::string& file) {
+  const std::size_t width = out.history_columns(monitors).size();
+  for (const auto& row : run.at("outputs").at("history"))
+    if (row.size() != width)
+      throw InputError(file + ": corrupt run state: a history row has " +
+                       std::to_string(row.size()) + " values; history.csv has " +
+                       std::to_string(width) + " columns");
+  const std::size_t n_u = run.at("stages").at("stage_monitor_u").size();
+  if (n_u != 2 * monitors.size())
+    throw InputError(file + ": corrupt run state: field 'stages.stage_monitor_u' holds " +
+                     std::to_string(n_u) + " values; the model's " +
+                     std::to_string(monitors.size()) + " key points need " +
+                     std::to_string(2 * monitors.size()));
+}
+
+/// A restart's engine state and bolts put back, and the run state checked
+/// against the scene and mesh, before the output folder is claimed: a
+/// checkpoint that does not fit leaves OUTDIR as it found it. Returns the
+/// hand-off's unbalanced-force ratio.
+double restore_before_writing(const Checkpoint& resume, const std::string& file,
+                              const std::vector<Monitor>& monitors, const RunOutputs& out,
+                              fdem::Engine& engine, fdem::BoltPlan& bolts) {
+  try {
+    std::istringstream state(resume.engine_state);
+    engine.load_state(state);
+  } catch (const InputError& e) {
+    throw InputError("checkpoint " + file + ": its engine state: " + e.what());
+  }
+  restore_bolts(resume.run.at("bolts"), bolts, file);
+  check_key_point_fields(resume.run, monitors, out, file);
+  return resume.run.at("start_ratio").get<double>();
 }
 
 // A signal between the implicit phases: nothing to checkpoint yet. The
@@ -158,19 +177,40 @@ fdem::BoltPlan planned_bolts(const Scene& scene, fdem::ModelInput& in) {
   }
 }
 
-/// Runs `f`; a NumericalError in it (the hand-off step, before the stages
-/// report their own) writes the failure summary first.
+/// Runs `f`; a NumericalError in it (the hand-off step or a stage) writes
+/// the failure summary first, with the likely cause when the in-situ stress
+/// is large against the rock's modulus.
 template <class F>
-void reporting_failure(RunOutputs& out, const fdem::Engine& e, PhaseTimer& timer, F&& f) {
+void reporting_failure(const Scene& scene, RunOutputs& out, const fdem::Engine& e,
+                       PhaseTimer& timer, F&& f) {
   try {
     f();
   } catch (const NumericalError& err) {
-    out.report_failure(e, timer, err.what());
-    throw;
+    const std::string why = with_likely_cause(scene, err.what());
+    out.report_failure(e, timer, why);
+    throw NumericalError(why);
   }
 }
 
 }  // namespace
+
+fdem::ModelInput engine_input(const Scene& scene, const mesh::Mesh& m,
+                              const insitu::InsituField& handoff) {
+  std::map<int, fdem::Material> materials = engine_materials(scene);
+  // The implicit stage left the core at alpha_h E; the engine continues from there.
+  if (materials.count(mesh::kCore) && handoff.alpha > 0)
+    materials[mesh::kCore].young *= handoff.alpha;
+  fdem::ModelInput in = coupling::model_input(
+      m, materials, scene.plane_stress ? fdem::Plane::kStress : fdem::Plane::kStrain);
+  coupling::apply_insitu(handoff, in);
+  in.boundary_conditions = box_conditions(scene.insitu);
+  in.dt = scene.engine.dt;  // checked by make_engine
+  in.dt_safety = scene.engine.dt_safety;
+  in.threads = active_threads();
+  in.mass_scaling = {scene.engine.mass_scaling, scene.engine.mass_scaling_dt};
+  in.contact = contact_settings(scene);
+  return in;
+}
 
 int run_tunnel(const Scene& scene, const CommandLine& cli) {
   if (scene.insitu.unit_weight > 0)
@@ -235,26 +275,23 @@ int run_tunnel(const Scene& scene, const CommandLine& cli) {
   // no triangle or in the core is refused first.
   const std::vector<Monitor> monitors = tunnel_monitors(scene.mesh, m, engine);
   out.set_instruments(std::make_unique<Instruments>(scene, m, engine, monitors, bolts));
+  out.set_bolts(&bolts);
+  double start_ratio = 0;
+  if (restart)
+    start_ratio = restore_before_writing(resume, cli.restart, monitors, out, engine, bolts);
   timer.stamp("fdem setup");
   write_first_outputs(scene, cli, restart, m, fields, out);
   timer.stamp("output");
-  double start_ratio = 0;
-  if (restart) {
-    std::istringstream state(resume.engine_state);
-    engine.load_state(state);
-    restore_bolts(resume.run.at("bolts"), bolts, cli.restart);
-    start_ratio = resume.run.at("start_ratio").get<double>();
-  } else {
+  if (!restart) {
     for (std::size_t t = 0; t < m.n_triangles(); ++t)
       if (!handoff.active[t]) engine.set_active(t, false);
     out.keep_start(engine);
-    reporting_failure(out, engine, timer, [&] { engine.step(); });
+    reporting_failure(scene, out, engine, timer, [&] { engine.step(); });
     start_ratio = engine.unbalanced_force_ratio();
     engine.set_damping(stage_damping(scene));
   }
   timer.stamp("fdem setup");
 
-  out.set_bolts(&bolts);
   out.begin_history(monitors, m);
   StageRunner stages(engine, m, handoff, scene, cli, out, monitors, bolts, support);
   if (restart) {
@@ -266,7 +303,7 @@ int run_tunnel(const Scene& scene, const CommandLine& cli) {
     }
     summary.json()["restarted_from"] = {{"checkpoint", cli.restart}, {"step", engine.step_count()}};
   } else {
-    reporting_failure(out, engine, timer, [&] {
+    reporting_failure(scene, out, engine, timer, [&] {
       out.record_step(engine, m, monitors, timer, "handoff", handoff.alpha);
     });
   }
@@ -293,8 +330,9 @@ int run_tunnel(const Scene& scene, const CommandLine& cli) {
   } catch (const NumericalError& e) {
     // The frames and history rows written so far are the last good output.
     summary.json()["fdem"] = {{"stages", stages.report()}};
-    out.report_failure(engine, timer, e.what());
-    throw;
+    const std::string why = with_likely_cause(scene, e.what());
+    out.report_failure(engine, timer, why);
+    throw NumericalError(why);
   } catch (const InputError& e) {
     // An explicit dt above the limit a later stage brings (lining, bolts,
     // grout stiffen the model): found only there, after outputs exist.

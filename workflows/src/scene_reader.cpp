@@ -279,6 +279,11 @@ void apply_override(RawScene& scene, const std::string& text) {
   if (eq == std::string::npos || eq == 0) fail("--set " + text + ": expected section.key=value");
   const std::string path = text.substr(0, eq);
   const std::string value = text.substr(eq + 1);
+  // TOML would read a line break as the end of the value and the rest as
+  // further keys, dropped without a word: one --set gives one value.
+  if (value.find_first_of("\n\r") != std::string::npos)
+    fail(scene.source + ": --set " + text + ": the value holds a line break; allowed: a " +
+         "value on one line (one --set per key)");
   if (!find_key(normalise(path)))
     fail("--set " + text + ": unknown key '" + path +
          "'; see docs/scene-reference.md for the keys");

@@ -274,7 +274,8 @@ std::vector<KeySpec> build_schema() {
                       "than 0.01 deg as a rigid body."));
   KeySpec alpha = number("insitu.alpha", "-", "[1.0]", 0, false, 1, false,
                          "Core softening factors solved implicitly, strictly decreasing in "
-                         "[0, 1]; 0 removes the core.");
+                         "[0, 1]; 0 removes the core. At most 100 values: each is a full "
+                         "implicit solve and output.");
   alpha.type = KeyType::kNumberArray;
   s.push_back(alpha);
   s.push_back(boolean("insitu.lining_active", "false",

@@ -32,6 +32,12 @@ std::vector<fdem::BoltSpec> bolt_specs(const Scene& scene);
 /// The scene's contact settings for the engine.
 fdem::ContactSettings contact_settings(const Scene& scene);
 
+/// The engine's input at a tunnel's hand-off from the implicit `handoff`
+/// field (run_tunnel.cpp): its stresses, the core at its alpha, the box's
+/// in-situ tractions, the scene's dt, mass scaling and contact.
+fdem::ModelInput engine_input(const Scene& scene, const mesh::Mesh& m,
+                              const insitu::InsituField& handoff);
+
 /// The engine for `in`. An in.dt above the stability limit is refused
 /// (InputError naming engine.dt) unless `force_dt`: then the run keeps it
 /// and stops with a diagnostic if it diverges.

@@ -14,6 +14,9 @@
 
 namespace rockfdem::workflows {
 
+/// Most values insitu.alpha may hold: each is a full implicit solve.
+inline constexpr std::size_t kMaxAlphas = 100;
+
 struct MaterialSpec {
   double density = 2700;                ///< kg/m^3
   double young = 0;                     ///< Pa
@@ -36,7 +39,7 @@ struct InsituSettings {
   double angle_deg = 0;    ///< rotation of sigma_h from x, counter-clockwise
   double unit_weight = 0;  ///< N/m^3
   bool kirsch_boundary = false;
-  std::vector<double> alpha{1.0};
+  std::vector<double> alpha{1.0};  ///< at most kMaxAlphas values
   bool lining_active = false;
   std::string solver = "auto";
   double tolerance = 1e-10;

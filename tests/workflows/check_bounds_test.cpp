@@ -1,0 +1,106 @@
+// `rockfdem check` states bounds a run must keep: its peak memory bound
+// must hold the run's peak resident memory (getrusage of the run's
+// process), and the time step it states for the start must be the run's
+// (the hand-off step's for tunnels, the only one for specimens), with no
+// later stage stepping above it. Shipped scenes, shortened with --set, and
+// two refined variants. Run times are not asserted (docs/benchmarks.md,
+// "check's bounds against runs").
+#include <gtest/gtest.h>
+#include <sys/resource.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <cstdlib>
+#include <filesystem>
+#include <regex>
+
+#include "cli_runner.hpp"
+
+namespace fs = std::filesystem;
+using namespace rockfdem::test;
+
+namespace {
+
+const std::string kScenes = std::string(ROCKFDEM_SOURCE_DIR) + "/scenes/";
+
+// The number after `label` in check's output, in the unit's scale given.
+double figure(const std::string& text, const std::string& label) {
+  const std::regex re(label + R"(\s+([0-9.eE+-]+))");
+  std::smatch m;
+  if (!std::regex_search(text, m, re)) throw std::runtime_error("no '" + label + "' in " + text);
+  return std::stod(m[1]);
+}
+
+struct Measured {
+  int code = -1;
+  double peak_rss_bytes = 0;
+  double seconds = 0;  ///< wall time, printed, never asserted
+};
+
+// `rockfdem ARGS` as its own process (sh execs it), its peak resident
+// memory from wait4.
+Measured measure(const std::string& args) {
+  const std::string cmd = "exec " + std::string(ROCKFDEM_BINARY) + " " + args + " > /dev/null 2>&1";
+  const auto t0 = std::chrono::steady_clock::now();
+  const pid_t pid = fork();
+  if (pid == 0) {
+    execl("/bin/sh", "sh", "-c", cmd.c_str(), static_cast<char*>(nullptr));
+    _exit(127);
+  }
+  int status = 0;
+  rusage usage{};
+  wait4(pid, &status, 0, &usage);
+  Measured m;
+  m.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  m.peak_rss_bytes = double(usage.ru_maxrss) * 1024.0;
+  m.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  return m;
+}
+
+struct Case {
+  std::string name, scene, sets;
+  bool staged;
+};
+
+const char kShortTunnel[] = " --set stages[4].max_steps=100 --set stages[5].max_steps=200";
+const std::vector<Case> kCases = {
+    {"tunnel-seed", "tunnel-seed.toml", kShortTunnel, true},
+    {"tunnel-seed, size_near 0.25", "tunnel-seed.toml",
+     std::string(kShortTunnel) + " --set mesh.size_near=0.25", true},
+    {"tunnel-seed-unsupported", "tunnel-seed-unsupported.toml", " --set stages[2].max_steps=300",
+     true},
+    {"kirsch-circular, size_near 0.4", "kirsch-circular.toml", " --set mesh.size_near=0.4", true},
+    {"ucs-33k", "ucs-33k.toml", " --set engine.steps=200", false},
+    {"brazilian-disc", "brazilian-disc.toml", " --set engine.steps=300", false},
+    {"brazilian-disc, size_near 0.0007", "brazilian-disc.toml",
+     " --set engine.steps=200 --set mesh.size_near=0.0007", false},
+};
+
+}  // namespace
+
+TEST(CheckBounds, run_memory_and_time_step_keep_to_what_check_states) {
+  for (const Case& c : kCases) {
+    const std::string scene = kScenes + c.scene + c.sets + " --set output.plots=false";
+    const Result check = run("check " + scene + " -j 2");
+    ASSERT_EQ(check.code, 0) << c.name << ": " << check.output;
+    const double memory_bound = figure(check.output, "peak memory \\(bound\\):") * 1048576.0;
+    const double dt_start = figure(check.output, "time step at the start:");
+    const fs::path out = scratch("bounds");
+    const Measured m = measure("run " + scene + " -q -j 2 --force -o " + out.string());
+    ASSERT_EQ(m.code, 0) << c.name;
+    const nlohmann::json s = read_json(out / "summary.json");
+    EXPECT_LE(m.peak_rss_bytes, memory_bound) << c.name;
+    // check prints 8 significant digits.
+    const double dt_run =
+        c.staged ? s["fdem"]["handoff_step"]["dt"].get<double>() : s["dt_max"].get<double>();
+    EXPECT_NEAR(dt_run, dt_start, 1e-7 * dt_start) << c.name;
+    EXPECT_LE(s["dt_max"].get<double>(), dt_start * (1 + 1e-7)) << c.name;
+    std::printf(
+        "  %-34s peak RSS %7.1f MiB (bound %7.1f), dt start %.6g s (run %.6g, max %.6g), "
+        "run %.1f s (bound %.0f s)\n",
+        c.name.c_str(), m.peak_rss_bytes / 1048576.0, memory_bound / 1048576.0, dt_start, dt_run,
+        s["dt_max"].get<double>(), m.seconds, figure(check.output, "run time \\(bound\\):"));
+    fs::remove_all(out);
+  }
+}
