@@ -27,16 +27,10 @@ namespace {
 constexpr const char* kOwnerFile = ".rockfdem-scene";
 constexpr const char* kLockFile = ".rockfdem-lock";
 
-// One run per folder: an exclusive flock on OUTDIR/.rockfdem-lock, held
-// until the process ends (the kernel releases it on any death, kill -9
-// included), with the holder's PID in the file for the message. A second
-// claim of the same folder by this process keeps the lock it has; a claim
-// of another folder (the next run of a sweep) releases it.
-void lock_output_dir(const std::string& dir) {
-  static std::string held;
-  static int held_fd = -1;
-  std::error_code ec;
-  if (!held.empty() && fs::equivalent(held, dir, ec)) return;
+// An exclusive flock on DIR/.rockfdem-lock, held while the returned
+// descriptor is open (the kernel releases it on any death, kill -9
+// included), with the holder's PID in the file for the message.
+int take_lock(const std::string& dir) {
   const std::string path = (fs::path(dir) / kLockFile).string();
   const int fd = ::open(path.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
   if (fd < 0) throw InputError("output directory " + dir + ": cannot create " + kLockFile);
@@ -57,6 +51,24 @@ void lock_output_dir(const std::string& dir) {
   if (::ftruncate(fd, 0) != 0 || ::pwrite(fd, me.data(), me.size(), 0) < 0) {
     // The lock holds without the PID; the message then says "unknown".
   }
+  return fd;
+}
+
+void refuse_if_not_directory(const std::string& dir) {
+  std::error_code ec;
+  if (fs::exists(dir, ec) && !fs::is_directory(dir, ec))
+    throw InputError("output directory " + dir + ": exists and is not a directory");
+}
+
+// One run per folder, locked until the process ends. A second claim of
+// the same folder by this process keeps the lock it has; a claim of
+// another folder (the next run of a sweep) releases it.
+void lock_output_dir(const std::string& dir) {
+  static std::string held;
+  static int held_fd = -1;
+  std::error_code ec;
+  if (!held.empty() && fs::equivalent(held, dir, ec)) return;
+  const int fd = take_lock(dir);
   if (held_fd >= 0) ::close(held_fd);
   held = dir;  // fd stays open: the lock lasts until the process ends or claims another
   held_fd = fd;
@@ -98,6 +110,12 @@ void create_output_dir(const std::string& dir, std::error_code& ec) {
     const auto mismatch = std::mismatch(real.begin(), real.end(), target.begin(), target.end());
     if (mismatch.first != real.end()) stray_folders().push_back(made);  // not on the way to dir
   }
+}
+
+void create_dir(const std::string& dir) {
+  std::error_code ec;
+  create_output_dir(dir, ec);
+  if (ec) throw InputError("output directory " + dir + ": cannot create: " + ec.message());
 }
 
 // Every name a command writes into OUTDIR (workflow.md, "Monitors and
@@ -235,11 +253,16 @@ bool same_directory(const std::string& a, const std::string& b) {
   return fs::equivalent(a, b, ec);
 }
 
+void lock_study_dir(const std::string& dir) {
+  refuse_if_not_directory(dir);
+  create_dir(dir);
+  take_lock(dir);  // never closed: held until the process ends
+}
+
 bool prepare_output_dir(const std::string& dir, const Scene& scene, bool force,
                         bool keep_previous) {
   std::error_code ec;
-  if (fs::exists(dir, ec) && !fs::is_directory(dir, ec))
-    throw InputError("output directory " + dir + ": exists and is not a directory");
+  refuse_if_not_directory(dir);
   const std::string owner = output_path(dir, kOwnerFile);
   const bool claimed = fs::exists(owner, ec);
   if (claimed && !force) {
@@ -251,8 +274,7 @@ bool prepare_output_dir(const std::string& dir, const Scene& scene, bool force,
                        held.str().substr(0, held.str().find('\n')) +
                        "); choose another -o or pass --force to overwrite");
   }
-  create_output_dir(dir, ec);
-  if (ec) throw InputError("output directory " + dir + ": cannot create: " + ec.message());
+  create_dir(dir);
   lock_output_dir(dir);
   // Frames or plots of a longer earlier run must not sit beside the new ones.
   if (force && claimed && !keep_previous) remove_previous_outputs(dir);

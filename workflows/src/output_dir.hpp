@@ -19,6 +19,12 @@ struct Scene;
 bool prepare_output_dir(const std::string& dir, const Scene& scene, bool force,
                         bool keep_previous = false);
 
+/// Creates a study's folder (sweep, calibrate) and locks it, as
+/// prepare_output_dir locks a run's, until the process ends: a second study
+/// into the same folder is refused (InputError naming the holder's PID).
+/// The study's runs, in their own subfolders, take their own locks.
+void lock_study_dir(const std::string& dir);
+
 /// Whether `name` is a file rockfdem writes into an output directory
 /// (summary.json, fdem_0003.vtu, bolt_02.csv, ..., or a temporary file of an
 /// interrupted atomic write of one); nothing else is ever removed.

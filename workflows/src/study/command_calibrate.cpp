@@ -114,6 +114,7 @@ int command_calibrate(const Scene& scene, const CommandLine& cli) {
     scene_with(cli, {f.key + "=" + exact_text(f.hi)}, "--free", f.key + "=" + exact_text(f.hi));
   }
   CalibrationProblem problem(cli, free, read_targets(cli.study, scene));
+  if (rank() == 0) or_abort_all([&] { lock_study_dir(cli.output_dir); });
   if (rank() != 0) {
     problem.serve();
     return 0;

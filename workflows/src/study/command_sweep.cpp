@@ -1,13 +1,15 @@
 // `rockfdem sweep SCENE --vary KEY=V1,V2,... [--vary ...] -o DIR`: one run
 // per variant (the product of the lists, or --samples N Latin hypercube
 // points over KEY=LO:HI ranges) in DIR/variants/<name>/, then DIR/sweep.csv
-// (inputs, status and key figures per variant) and DIR/sweep.png. Under
+// (inputs, status and key figures per variant; rewritten after every
+// finished variant) and DIR/sweep.png. DIR is locked against a second study. Under
 // mpirun the variants are spread over the ranks; the table is the same for
 // any rank count.
 #include <algorithm>
 #include <cstdlib>
 #include <iostream>
 #include <map>
+#include <optional>
 
 #include "../output_dir.hpp"
 #include "rockfdem/error.hpp"
@@ -23,8 +25,12 @@ namespace {
 constexpr std::size_t kMostVariants = 100000;
 constexpr std::size_t kMostSeries = 12;
 
-// Every variant's scene is checked before anything runs or is written.
-std::vector<Variant> checked_variants(const CommandLine& cli, const std::vector<VariedKey>& keys) {
+constexpr const char* kPending = "pending";
+
+// Every variant's scene is checked before anything runs or is written;
+// `ids` receives each variant's identity (study_run.hpp).
+std::vector<Variant> checked_variants(const CommandLine& cli, const std::vector<VariedKey>& keys,
+                                      std::vector<nlohmann::json>* ids) {
   std::size_t n = 1;
   for (const VariedKey& k : keys) {
     if (k.range) {
@@ -41,18 +47,9 @@ std::vector<Variant> checked_variants(const CommandLine& cli, const std::vector<
   }
   std::vector<Variant> variants =
       cli.study.samples > 0 ? latin_hypercube(keys, cli.study.samples) : product_variants(keys);
-  for (const Variant& v : variants) scene_with(cli, v.overrides(), "--vary", v.name);
+  for (const Variant& v : variants)
+    ids->push_back(variant_identity(scene_with(cli, v.overrides(), "--vary", v.name), v));
   return variants;
-}
-
-std::vector<VariantResult> run_all(const CommandLine& cli, const std::vector<Variant>& variants) {
-  const std::vector<std::string> texts = farm(variants.size(), [&](std::size_t i) {
-    return run_variant(cli, variants[i]).to_json().dump();
-  });
-  std::vector<VariantResult> results;
-  for (const std::string& t : texts)
-    results.push_back(VariantResult::from_json(nlohmann::json::parse(t)));
-  return results;
 }
 
 void write_table(const std::string& path, const Scene& scene, const std::vector<VariedKey>& keys,
@@ -71,10 +68,43 @@ void write_table(const std::string& path, const Scene& scene, const std::vector<
     for (const std::string& c : figures)
       row.push_back(results[i].figures.value(c, nlohmann::json()));
     row.push_back(results[i].message);
-    row.push_back(results[i].wall_s);
+    row.push_back(results[i].status == kPending ? nlohmann::json()
+                                                : nlohmann::json(results[i].wall_s));
     table.add(row);
   }
   table.write(path);
+}
+
+// The study so far: what this rank has run, else what the variants' folders
+// record as finished (run by another rank or an earlier study), else pending.
+std::vector<VariantResult> so_far(const CommandLine& cli, const std::vector<Variant>& variants,
+                                  const std::vector<nlohmann::json>& ids,
+                                  const std::vector<std::optional<VariantResult>>& mine) {
+  std::vector<VariantResult> results;
+  for (std::size_t i = 0; i < variants.size(); ++i) {
+    std::optional<VariantResult> r = mine[i] ? mine[i] : recorded_result(cli, variants[i], ids[i]);
+    if (!r) r = VariantResult{variants[i].name, kPending, "", 0, false, nlohmann::json::object()};
+    results.push_back(*r);
+  }
+  return results;
+}
+
+// Runs the variants; sweep.csv is rewritten after each, whichever rank ran it.
+std::vector<VariantResult> run_all(const CommandLine& cli, const Scene& scene,
+                                   const std::vector<VariedKey>& keys,
+                                   const std::vector<Variant>& variants,
+                                   const std::vector<nlohmann::json>& ids) {
+  std::vector<std::optional<VariantResult>> mine(variants.size());
+  const std::vector<std::string> texts = farm(variants.size(), [&](std::size_t i) {
+    mine[i] = run_variant(cli, variants[i]);
+    write_table(output_path(cli.output_dir, "sweep.csv"), scene, keys, variants,
+                so_far(cli, variants, ids, mine));
+    return mine[i]->to_json().dump();
+  });
+  std::vector<VariantResult> results;
+  for (const std::string& t : texts)
+    results.push_back(VariantResult::from_json(nlohmann::json::parse(t)));
+  return results;
 }
 
 // x of a variant: its first key's value, or the value's place in the list
@@ -165,8 +195,10 @@ void report(const std::vector<VariantResult>& results, const std::string& dir) {
 
 int command_sweep(const Scene& scene, const CommandLine& cli) {
   const std::vector<VariedKey> keys = read_vary(cli.study);
-  const std::vector<Variant> variants = checked_variants(cli, keys);
-  const std::vector<VariantResult> results = run_all(cli, variants);
+  std::vector<nlohmann::json> ids;
+  const std::vector<Variant> variants = checked_variants(cli, keys, &ids);
+  if (rank() == 0) or_abort_all([&] { lock_study_dir(cli.output_dir); });
+  const std::vector<VariantResult> results = run_all(cli, scene, keys, variants, ids);
   if (rank() != 0) return 0;
   write_table(output_path(cli.output_dir, "sweep.csv"), scene, keys, variants, results);
   if (scene.output.plots)

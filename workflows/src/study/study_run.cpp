@@ -4,6 +4,7 @@
 #include <filesystem>
 #include <fstream>
 #include <functional>
+#include <optional>
 
 #include "../commands.hpp"
 #include "../output_dir.hpp"
@@ -22,16 +23,6 @@ nlohmann::json read_json(const std::string& path) {
   std::ifstream in(path);
   if (!in) return nullptr;
   return nlohmann::json::parse(in, nullptr, false);  // a torn file reads as discarded
-}
-
-// What makes two runs the same: the scene file and its validated text
-// with every override applied.
-nlohmann::json identity(const Scene& scene, const Variant& v) {
-  std::error_code ec;
-  const fs::path file = fs::weakly_canonical(fs::absolute(scene.source, ec), ec);
-  char hash[24];
-  std::snprintf(hash, sizeof hash, "%016zx", std::hash<std::string>{}(scene.canonical));
-  return {{"scene", file.string()}, {"scene_hash", hash}, {"settings", v.overrides()}};
 }
 
 bool finished(const std::string& status) {
@@ -70,6 +61,22 @@ std::string variant_dir(const CommandLine& study, const Variant& v) {
   return output_path(output_path(study.output_dir, "variants"), v.name);
 }
 
+nlohmann::json variant_identity(const Scene& scene, const Variant& v) {
+  std::error_code ec;
+  const fs::path file = fs::weakly_canonical(fs::absolute(scene.source, ec), ec);
+  char hash[24];
+  std::snprintf(hash, sizeof hash, "%016zx", std::hash<std::string>{}(scene.canonical));
+  return {{"scene", file.string()}, {"scene_hash", hash}, {"settings", v.overrides()}};
+}
+
+std::optional<VariantResult> recorded_result(const CommandLine& study, const Variant& v,
+                                             const nlohmann::json& id) {
+  VariantResult r;
+  const std::string dir = variant_dir(study, v);
+  if (!fs::exists(output_path(dir, kRecord)) || !reuse(dir, id, &r)) return std::nullopt;
+  return r;
+}
+
 VariantResult run_variant(const CommandLine& study, const Variant& v) {
   CommandLine cli = study;
   cli.command = "run";
@@ -77,7 +84,7 @@ VariantResult run_variant(const CommandLine& study, const Variant& v) {
   for (const std::string& o : v.overrides()) cli.overrides.push_back(o);
   cli.quiet = cli.force = true;
   const Scene scene = load_scene(cli.scene, cli.overrides);  // checked before the study began
-  const nlohmann::json id = identity(scene, v);
+  const nlohmann::json id = variant_identity(scene, v);
   VariantResult r;
   if (reuse(cli.output_dir, id, &r)) return r;
   r = VariantResult{};

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <string>
 
 #include "rockfdem/workflows/cli.hpp"
@@ -25,6 +26,16 @@ struct VariantResult {
 
 /// <out>/variants/<name>.
 std::string variant_dir(const CommandLine& study, const Variant& v);
+
+/// What makes two runs the same: the scene file's absolute path, a hash of
+/// the validated scene text with every override applied (`scene`, loaded
+/// with the study's and the variant's settings), and the settings.
+nlohmann::json variant_identity(const Scene& scene, const Variant& v);
+
+/// The finished result of identity `id` recorded in the variant's folder,
+/// if there is one (marked reused).
+std::optional<VariantResult> recorded_result(const CommandLine& study, const Variant& v,
+                                             const nlohmann::json& id);
 
 /// Runs the variant (-j threads of `study`, quietly, its folder claimed
 /// with --force) unless its folder's variant.json records a finished run of
