@@ -6,10 +6,13 @@
 #include <vtkContextView.h>
 #include <vtkDoubleArray.h>
 #include <vtkNew.h>
+#include <vtkPen.h>
 #include <vtkPlot.h>
+#include <vtkPlotPoints.h>
 #include <vtkRenderWindow.h>
 #include <vtkRenderer.h>
 #include <vtkTable.h>
+#include <vtkTextActor.h>
 #include <vtkTextProperty.h>
 
 #include <algorithm>
@@ -55,31 +58,115 @@ vtkSmartPointer<vtkDoubleArray> column(const char* name, const std::vector<doubl
   return a;
 }
 
-void add_series(vtkChartXY* chart, const PlotSeries& s, std::size_t index) {
-  const std::string label = s.name.empty() ? "series " + std::to_string(index + 1) : s.name;
+vtkPlot* add_line(vtkChartXY* chart, const std::string& label, const std::vector<double>& x,
+                  const std::vector<double>& y, bool points) {
   vtkNew<vtkTable> table;  // the plot keeps a reference to it
-  table->AddColumn(column("x", s.x));
-  table->AddColumn(column(label.c_str(), s.y));
-  vtkPlot* line = chart->AddPlot(vtkChart::LINE);
+  table->AddColumn(column("x", x));
+  table->AddColumn(column(label.c_str(), y));
+  vtkPlot* line = chart->AddPlot(points ? vtkChart::POINTS : vtkChart::LINE);
   line->SetInputData(table, 0, 1);
   line->SetLabel(label);
-  const auto& c = kPalette[index % kPalette.size()];
-  line->SetColor(c[0], c[1], c[2], 255);
-  line->SetWidth(2.0);
+  return line;
 }
 
-// Extends the y axis by a quarter above the data, so the legend (drawn in the
-// top right corner, on an opaque box) does not hide the curves' ends.
-void leave_room_for_legend(vtkAxis* axis, const std::vector<PlotSeries>& series) {
+void add_series(vtkChartXY* chart, const PlotSeries& s, std::size_t index) {
+  const std::string label = s.name.empty() ? "series " + std::to_string(index + 1) : s.name;
+  vtkPlot* line = add_line(chart, label, s.x, s.y, s.points);
+  const auto& c = kPalette[index % kPalette.size()];
+  line->SetColor(c[0], c[1], c[2], 255);
+  line->SetWidth(s.points ? 4.0 : 2.0);
+  if (s.points) vtkPlotPoints::SafeDownCast(line)->SetMarkerSize(12.0);
+}
+
+// The finite range of the series' y (or x) values; (inf, -inf) when none.
+std::pair<double, double> data_range(const std::vector<PlotSeries>& series, bool x) {
   double lo = std::numeric_limits<double>::infinity(), hi = -lo;
-  for (const PlotSeries& s : series) {
-    for (double y : s.y) {
-      if (std::isfinite(y)) lo = std::min(lo, y), hi = std::max(hi, y);
-    }
-  }
-  if (!(hi > lo)) return;  // no data or flat: VTK's automatic range is fine
+  for (const PlotSeries& s : series)
+    for (double v : x ? s.x : s.y)
+      if (std::isfinite(v)) lo = std::min(lo, v), hi = std::max(hi, v);
+  return {lo, hi};
+}
+
+// Fixes the y axis with a quarter of room above the data, so the legend
+// (drawn in the top right corner, on an opaque box) does not hide the
+// curves' ends; returns the range (markers span it).
+std::pair<double, double> leave_room_for_legend(vtkAxis* axis,
+                                                const std::vector<PlotSeries>& series) {
+  auto [lo, hi] = data_range(series, false);
+  if (lo > hi) lo = 0, hi = 1;  // no finite data
+  if (lo == hi)
+    lo -= 0.5 * std::max(1.0, std::abs(lo)), hi += std::max(1.0, std::abs(hi));
+  else
+    hi += 0.25 * (hi - lo);
   axis->SetBehavior(vtkAxis::FIXED);
-  axis->SetRange(lo, hi + 0.25 * (hi - lo));
+  axis->SetRange(lo, hi);
+  return {lo, hi};
+}
+
+// Fixes the x axis to the series' range (a little wider where a series is
+// drawn as marks, which would sit half outside on its ends); returns the
+// markers within it.
+std::vector<PlotMarker> fix_x_range(vtkAxis* axis, const std::vector<PlotSeries>& series,
+                                    const std::vector<PlotMarker>& markers) {
+  auto [lo, hi] = data_range(series, true);
+  if (!(hi > lo)) return {};  // VTK's automatic range for a single abscissa
+  const bool marks =
+      std::any_of(series.begin(), series.end(), [](const PlotSeries& s) { return s.points; });
+  const double pad = marks ? 0.03 * (hi - lo) : 0.0;
+  axis->SetBehavior(vtkAxis::FIXED);
+  axis->SetRange(lo - pad, hi + pad);
+  std::vector<PlotMarker> inside;
+  for (const PlotMarker& m : markers)
+    if (m.x >= lo && m.x <= hi) inside.push_back(m);
+  return inside;
+}
+
+// Dashed grey verticals over the whole y range, out of the legend.
+void add_marker_lines(vtkChartXY* chart, const std::vector<PlotMarker>& markers,
+                      std::pair<double, double> y) {
+  for (const PlotMarker& m : markers) {
+    vtkPlot* line = add_line(chart, m.label, {m.x, m.x}, {y.first, y.second}, false);
+    line->SetColor(90, 90, 90, 255);
+    line->SetWidth(1.5);
+    line->GetPen()->SetLineType(vtkPen::DASH_LINE);
+    line->SetLegendVisibility(false);
+  }
+}
+
+// The markers' labels, written upwards along each line, down from the top
+// of the plot area (curves mostly start low on the left): right of the
+// line, or left of it where the next marker is too close for the text.
+// Placed in pixels, so after a first render has laid out the axes.
+void add_marker_labels(vtkContextView* view, vtkChartXY* chart,
+                       const std::vector<PlotMarker>& markers) {
+  if (markers.empty()) return;
+  constexpr double kTextHeight = 18;  // [px] of a 13 pt line, with a gap
+  view->GetRenderWindow()->Render();
+  vtkAxis* x = chart->GetAxis(vtkAxis::BOTTOM);
+  const float* p1 = x->GetPoint1();
+  const float* p2 = x->GetPoint2();
+  const double x0 = x->GetMinimum(), x1 = x->GetMaximum();
+  const double top = chart->GetAxis(vtkAxis::LEFT)->GetPoint2()[1];
+  const auto pixel = [&](double v) { return p1[0] + (v - x0) / (x1 - x0) * (p2[0] - p1[0]); };
+  for (std::size_t i = 0; i < markers.size(); ++i) {
+    const double px = pixel(markers[i].x);
+    const bool left = i + 1 < markers.size() && pixel(markers[i + 1].x) - px < kTextHeight;
+    vtkNew<vtkTextActor> text;
+    text->SetInput(markers[i].label.c_str());
+    vtkTextProperty* p = text->GetTextProperty();
+    p->SetFontSize(13);
+    p->SetColor(0.25, 0.25, 0.25);
+    // Turned a quarter: right-justified ends the text at the top; top- or
+    // bottom-justified lays it right or left of the line.
+    p->SetOrientation(90.0);
+    p->SetJustificationToRight();
+    if (left)
+      p->SetVerticalJustificationToBottom();
+    else
+      p->SetVerticalJustificationToTop();
+    text->SetDisplayPosition(static_cast<int>(px) + (left ? -3 : 3), static_cast<int>(top) - 4);
+    view->GetRenderer()->AddActor2D(text);
+  }
 }
 
 void label_axis(vtkAxis* axis, const std::string& title) {
@@ -92,7 +179,7 @@ void label_axis(vtkAxis* axis, const std::string& title) {
 
 bool plot_xy_png(const std::string& title, const std::string& x_label, const std::string& y_label,
                  const std::vector<PlotSeries>& series, const std::string& path, int width,
-                 int height, std::string* why) {
+                 int height, std::string* why, const std::vector<PlotMarker>& markers) {
   check_series(series);
   check_image_size(width, height);
   const DisplayConnection display;  // held until the PNG is written
@@ -113,9 +200,13 @@ bool plot_xy_png(const std::string& title, const std::string& x_label, const std
   label_axis(chart->GetAxis(vtkAxis::BOTTOM), x_label);
   label_axis(chart->GetAxis(vtkAxis::LEFT), y_label);
   for (std::size_t i = 0; i < series.size(); ++i) add_series(chart, series[i], i);
-  leave_room_for_legend(chart->GetAxis(vtkAxis::LEFT), series);
+  const auto y_range = leave_room_for_legend(chart->GetAxis(vtkAxis::LEFT), series);
+  const std::vector<PlotMarker> shown =
+      fix_x_range(chart->GetAxis(vtkAxis::BOTTOM), series, markers);
+  add_marker_lines(chart, shown, y_range);
   chart->SetShowLegend(true);
   chart->GetLegend()->GetLabelProperties()->SetFontSize(14);
+  add_marker_labels(view, chart, shown);
 
   save_window_png(view->GetRenderWindow(), path);
   return true;

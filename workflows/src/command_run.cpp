@@ -161,8 +161,7 @@ int run_specimen(const Scene& scene, const CommandLine& cli) {
       throw Interrupted(sig, why + "; outputs are written (specimen runs keep no checkpoint)");
     }
   }
-  if (scene.output.plots)
-    specimen_plots(engine, m, history, disc, cli.output_dir, summary, cli.quiet);
+  if (scene.output.plots) specimen_plots(engine, history, disc, cli.output_dir, summary, cli.quiet);
   timer.stamp("output");
   progress.finish(engine.step_count(), engine.time());
   j["status"] = "completed";

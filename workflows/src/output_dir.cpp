@@ -79,6 +79,10 @@ const char* const kFixedNames[] = {"summary.json",
                                    "ground_reaction.png",
                                    "final_mesh.png",
                                    "broken_zone.png",
+                                   "displacement.png",
+                                   "sigma_max_compressive.png",
+                                   "sigma_min_compressive.png",
+                                   "report.md",
                                    "stress_strain.png"};
 
 struct Numbered {

@@ -1,0 +1,94 @@
+// report.md, as an engineer reads it: written at the end of a tunnel run,
+// its figures the summary's, the scene's references compared, the
+// pictures it links present.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <regex>
+#include <string>
+
+#include "cli_runner.hpp"
+
+namespace fs = std::filesystem;
+using namespace rockfdem::test;
+
+namespace {
+
+// The cells of the Markdown table row that starts with "| `name` |".
+std::vector<std::string> row_of(const std::string& md, const std::string& name) {
+  const std::size_t at = md.find("\n| " + name + " |");
+  if (at == std::string::npos) return {};
+  const std::string line = md.substr(at + 1, md.find('\n', at + 1) - at - 1);
+  std::vector<std::string> cells;
+  std::size_t from = 1;
+  for (std::size_t bar = line.find('|', from); bar != std::string::npos;
+       from = bar + 1, bar = line.find('|', from)) {
+    std::string cell = line.substr(from, bar - from);
+    cells.push_back(cell.substr(cell.find_first_not_of(' '),
+                                cell.find_last_not_of(' ') - cell.find_first_not_of(' ') + 1));
+  }
+  return cells;
+}
+
+std::string two_decimals(double v) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.2f", v);
+  return text;
+}
+
+}  // namespace
+
+// The supported circular tunnel (lining, 8 bolts) for 1000 steps of
+// equilibrium: too few to settle, so the report says "not at equilibrium"
+// as the summary does. Each key point's radial displacement in the report
+// is the summary's to the 0.01 mm shown; the vault's reference (5 mm,
+// given on the command line) appears with the difference computed - 5.
+TEST(Report, tunnel_run_writes_a_report_with_the_summary_figures) {
+  const fs::path out = scratch("report");
+  const bool xvfb = !std::string(ROCKFDEM_XVFB_RUN).empty();
+  const std::string prefix =
+      xvfb ? std::string(ROCKFDEM_XVFB_RUN) + " -n " + std::to_string(100 + getpid() % 800) + " -a"
+           : "";
+  const Result r = run("run " + kTestDir +
+                           "/support_pair_supported.toml -j 1 -q --set 'stages[4].max_steps=1000'"
+                           " --set references.vault=5.0 --set 'references.source=\"a test\"'"
+                           " --set output.plots=" +
+                           std::string(xvfb ? "true" : "false") + " -o " + out.string(),
+                       prefix);
+  ASSERT_EQ(r.code, 0) << r.output;
+  const nlohmann::json j = read_json(out / "summary.json");
+  ASSERT_TRUE(fs::exists(out / "report.md"));
+  const std::string md = read_text(out / "report.md");
+  EXPECT_NE(md.find("**" + j["status"].get<std::string>() + "**"), std::string::npos) << md;
+  if (j.contains("status_reason")) {
+    EXPECT_NE(md.find(j["status_reason"].get<std::string>()), std::string::npos);
+  }
+  for (const char* p :
+       {"vault", "left_shoulder", "right_shoulder", "left_wall", "right_wall", "invert"}) {
+    const auto cells = row_of(md, p);
+    ASSERT_GE(cells.size(), 5u) << p << " in\n" << md;
+    EXPECT_EQ(cells[1], two_decimals(j["monitors"][p]["radial_mm"].get<double>())) << p;
+  }
+  const auto vault = row_of(md, "vault");
+  EXPECT_EQ(vault[3], "5.00");
+  const double computed = j["monitors"]["vault"]["radial_mm"].get<double>();
+  EXPECT_EQ(vault[4].substr(0, vault[4].find(' ')), two_decimals(computed - 5.0)) << vault[4];
+  EXPECT_EQ(row_of(md, "wall_chord")[1],
+            two_decimals(j["monitors"]["wall_chord_convergence_mm"].get<double>()));
+  EXPECT_NE(md.find("a test"), std::string::npos);
+  // Every bolt of the summary has its row.
+  for (const auto& b : j["bolts"]["each"])
+    EXPECT_FALSE(row_of(md, b["name"].get<std::string>()).empty()) << b["name"];
+  // The pictures it links exist.
+  const std::regex link(R"(!\[[^\]]*\]\(([^)]+)\))");
+  int links = 0;
+  for (auto it = std::sregex_iterator(md.begin(), md.end(), link); it != std::sregex_iterator();
+       ++it, ++links)
+    EXPECT_TRUE(fs::exists(out / (*it)[1].str())) << (*it)[1];
+  if (xvfb) {
+    EXPECT_GE(links, 7) << md;
+  }
+  fs::remove_all(out);
+}
