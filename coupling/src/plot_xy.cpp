@@ -133,38 +133,35 @@ void add_marker_lines(vtkChartXY* chart, const std::vector<PlotMarker>& markers,
   }
 }
 
-// The markers' labels, written upwards along each line, down from the top
-// of the plot area (curves mostly start low on the left): right of the
-// line, or left of it where the next marker is too close for the text.
-// Placed in pixels, so after a first render has laid out the axes.
+// The markers' labels, written upwards right of each line, down from the
+// top of the plot area (curves mostly start low on the left); a label that
+// would overlap the one before moves right by a line of text. Placed in
+// pixels, so after a first render has laid out the axes.
 void add_marker_labels(vtkContextView* view, vtkChartXY* chart,
                        const std::vector<PlotMarker>& markers) {
   if (markers.empty()) return;
-  constexpr double kTextHeight = 18;  // [px] of a 13 pt line, with a gap
+  constexpr double kTextHeight = 16;  // [px] of a 13 pt line, with a gap
   view->GetRenderWindow()->Render();
   vtkAxis* x = chart->GetAxis(vtkAxis::BOTTOM);
   const float* p1 = x->GetPoint1();
   const float* p2 = x->GetPoint2();
   const double x0 = x->GetMinimum(), x1 = x->GetMaximum();
   const double top = chart->GetAxis(vtkAxis::LEFT)->GetPoint2()[1];
-  const auto pixel = [&](double v) { return p1[0] + (v - x0) / (x1 - x0) * (p2[0] - p1[0]); };
-  for (std::size_t i = 0; i < markers.size(); ++i) {
-    const double px = pixel(markers[i].x);
-    const bool left = i + 1 < markers.size() && pixel(markers[i + 1].x) - px < kTextHeight;
+  double last = -1e300;  // the previous label's left edge [px]
+  for (const PlotMarker& m : markers) {
+    const double px = p1[0] + (m.x - x0) / (x1 - x0) * (p2[0] - p1[0]);
+    last = std::max(px + 3, last + kTextHeight);
     vtkNew<vtkTextActor> text;
-    text->SetInput(markers[i].label.c_str());
+    text->SetInput(m.label.c_str());
     vtkTextProperty* p = text->GetTextProperty();
     p->SetFontSize(13);
     p->SetColor(0.25, 0.25, 0.25);
-    // Turned a quarter: right-justified ends the text at the top; top- or
-    // bottom-justified lays it right or left of the line.
+    // Turned a quarter: right-justified ends the text at the top,
+    // top-justified lays it right of the anchor.
     p->SetOrientation(90.0);
     p->SetJustificationToRight();
-    if (left)
-      p->SetVerticalJustificationToBottom();
-    else
-      p->SetVerticalJustificationToTop();
-    text->SetDisplayPosition(static_cast<int>(px) + (left ? -3 : 3), static_cast<int>(top) - 4);
+    p->SetVerticalJustificationToTop();
+    text->SetDisplayPosition(static_cast<int>(last), static_cast<int>(top) - 4);
     view->GetRenderer()->AddActor2D(text);
   }
 }

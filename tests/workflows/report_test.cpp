@@ -92,3 +92,21 @@ TEST(Report, tunnel_run_writes_a_report_with_the_summary_figures) {
   }
   fs::remove_all(out);
 }
+
+// A run that fails (a forced dt of 2 ms inverts a triangle at step 3)
+// still leaves its report: status "failed" with the diagnostic, and the
+// key points of the last good state the summary reports.
+TEST(Report, failed_run_reports_its_last_good_state) {
+  const fs::path out = scratch("report-failed");
+  const Result r = run("run " + kTestDir +
+                       "/support_pair_supported.toml -j 1 -q --force-dt --set engine.dt=0.002 -o " +
+                       out.string());
+  ASSERT_EQ(r.code, 3) << r.output;
+  const nlohmann::json j = read_json(out / "summary.json");
+  ASSERT_EQ(j["status"], "failed");
+  const std::string md = read_text(out / "report.md");
+  EXPECT_NE(md.find("**failed**: " + j["failure"].get<std::string>()), std::string::npos) << md;
+  EXPECT_EQ(row_of(md, "vault")[1],
+            two_decimals(j["monitors"]["vault"]["radial_mm"].get<double>()));
+  fs::remove_all(out);
+}
