@@ -6,10 +6,13 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <map>
 #include <regex>
+#include <sstream>
 #include <string>
 
 #include "cli_runner.hpp"
+#include "run_timeline.hpp"
 
 namespace fs = std::filesystem;
 using namespace rockfdem::test;
@@ -30,6 +33,19 @@ std::vector<std::string> row_of(const std::string& md, const std::string& name) 
                                 cell.find_last_not_of(' ') - cell.find_first_not_of(' ') + 1));
   }
   return cells;
+}
+
+// history.csv's first row (the hand-off step), by column name.
+std::map<std::string, double> first_history_row(const fs::path& csv) {
+  std::istringstream in(read_text(csv));
+  std::string header, line, name, value;
+  std::getline(in, header);
+  std::getline(in, line);
+  std::map<std::string, double> row;
+  std::istringstream names(header), values(line);
+  while (std::getline(names, name, ',') && std::getline(values, value, ','))
+    row[name] = std::stod(value);
+  return row;
 }
 
 std::string two_decimals(double v) {
@@ -71,6 +87,15 @@ TEST(Report, tunnel_run_writes_a_report_with_the_summary_figures) {
     ASSERT_GE(cells.size(), 5u) << p << " in\n" << md;
     EXPECT_EQ(cells[1], two_decimals(j["monitors"][p]["radial_mm"].get<double>())) << p;
   }
+  // The lining is installed right after the hand-off step, whose history
+  // row is the origin of "since support": the summary's figure less that row's.
+  const auto handoff = first_history_row(out / "history.csv");
+  for (const char* p : {"vault", "left_wall", "invert"})
+    EXPECT_NEAR(
+        std::stod(row_of(md, p)[2]),
+        j["monitors"][p]["radial_mm"].get<double>() - handoff.at(std::string(p) + "_radial_mm"),
+        0.0051 + 1e-9 * std::abs(handoff.at(std::string(p) + "_radial_mm")))
+        << p;
   const auto vault = row_of(md, "vault");
   EXPECT_EQ(vault[3], "5.00");
   const double computed = j["monitors"]["vault"]["radial_mm"].get<double>();
@@ -109,4 +134,50 @@ TEST(Report, failed_run_reports_its_last_good_state) {
   EXPECT_EQ(row_of(md, "vault")[1],
             two_decimals(j["monitors"]["vault"]["radial_mm"].get<double>()));
   fs::remove_all(out);
+}
+
+// The seed's sequence as the summary reports it: three stages of no steps
+// at the hand-off (t = 0.5 ms), a grout stage of 4.8 ms that grouted 324
+// cracks, then equilibrium. One marker holds the three with the grout
+// stage's start; the grouting and the equilibrium's start share the next.
+TEST(StageMarkers, stages_starting_together_share_a_marker_and_grouting_has_its_own) {
+  const nlohmann::json stages = nlohmann::json::parse(R"([
+    {"kind": "lining", "simulated_time": 0.0, "changes": {}},
+    {"kind": "bolts", "simulated_time": 0.0, "changes": {}},
+    {"kind": "remove_core", "simulated_time": 0.0, "changes": {}},
+    {"kind": "grout", "simulated_time": 0.0048,
+     "changes": {"triggered": true, "rejoined": 324}},
+    {"kind": "equilibrium", "simulated_time": 0.736, "changes": {}}])");
+  using namespace rockfdem::workflows;
+  const std::vector<StageSpan> spans = stage_spans(stages, 0.0005);
+  const auto markers = stage_markers(spans);
+  ASSERT_EQ(markers.size(), 2u);
+  EXPECT_EQ(markers[0].x, 0.0005);
+  EXPECT_EQ(markers[0].label, "lining, bolts, remove_core, grout");
+  EXPECT_DOUBLE_EQ(markers[1].x, 0.0053);
+  EXPECT_EQ(markers[1].label, "grouting: 324 broken cracks re-joined, equilibrium");
+  ASSERT_NE(support_stage(spans), nullptr);
+  EXPECT_EQ(support_stage(spans)->kind, "lining");
+  // Rows at the hand-off and every 1000 steps: the support's row is the
+  // hand-off's, found despite the stage times' rounding.
+  EXPECT_EQ(row_at({0.0005, 0.0053, 0.37, 0.74}, 0.0005 + 1e-15), 0u);
+  EXPECT_EQ(row_at({0.0005, 0.0053, 0.37, 0.74}, 0.0053 - 1e-12), 1u);
+  EXPECT_EQ(since_row({3.0, 5.0, 9.0}, 1), (std::vector<double>{0.0, 4.0}));
+}
+
+// A grout stage that did not trigger adds no grouting marker; a run
+// without lining or bolts stages has no support to measure from.
+TEST(StageMarkers, untriggered_grout_and_no_support) {
+  const nlohmann::json stages = nlohmann::json::parse(R"([
+    {"kind": "remove_core", "simulated_time": 0.0},
+    {"kind": "grout", "simulated_time": 0.1, "changes": {"triggered": false}},
+    {"kind": "equilibrium", "simulated_time": 0.2}])");
+  using namespace rockfdem::workflows;
+  const std::vector<StageSpan> spans = stage_spans(stages, 0.0);
+  const auto markers = stage_markers(spans);
+  ASSERT_EQ(markers.size(), 2u);
+  EXPECT_EQ(markers[0].label, "remove_core, grout");
+  EXPECT_EQ(markers[1].label, "equilibrium");
+  EXPECT_DOUBLE_EQ(markers[1].x, 0.1);
+  EXPECT_EQ(support_stage(spans), nullptr);
 }
