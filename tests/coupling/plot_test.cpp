@@ -24,6 +24,7 @@ struct Picture {
   int width = 0, height = 0;
   double variance = 0;  ///< of the grey level over all pixels
   int n_black = 0;      ///< pixels with every channel below 40 (cracks, text)
+  int n_magenta = 0;    ///< pixels with red and blue above 200, green below 60
 };
 
 Picture read_png(const std::string& path) {
@@ -42,11 +43,14 @@ Picture read_png(const std::string& path) {
   for (vtkIdType i = 0; i < n; ++i) {
     double grey = 0;
     bool black = true;
+    int rgb[3] = {0, 0, 0};
     for (int c = 0; c < std::min(nc, 3); ++c) {
       const int v = pixels->GetValue(i * nc + c);
       grey += v / 3.0;
       black = black && v < 40;
+      rgb[c] = v;
     }
+    p.n_magenta += rgb[0] > 200 && rgb[1] < 60 && rgb[2] > 200;
     sum += grey;
     sum2 += grey * grey;
     p.n_black += black;
@@ -279,6 +283,9 @@ TEST(Plot, picture_with_point_values_hidden_triangles_and_coloured_lines) {
   const Picture pic = read_png(dir.file("u.png"));
   EXPECT_EQ(pic.width, 600);
   EXPECT_GT(pic.variance, 100.0);
+  // The magenta line, 0.8 of the square's width (about 280 px) and 3 px
+  // wide, and its legend stroke; the colour map has no magenta.
+  EXPECT_GT(pic.n_magenta, 500);
   p.values.pop_back();
   EXPECT_THROW(render_picture_png(g, p, dir.file("bad.png"), 600, 400), std::invalid_argument);
   EXPECT_EQ(dir.entries(), (std::set<std::string>{"u.png"}));
