@@ -4,16 +4,21 @@
 // Layout: three renderers side by side in one offscreen window: the mesh
 // (left, most of it), the colour bar (right strip) and the title (top strip),
 // so the bar never covers the mesh.
+#include <vtkActor2D.h>
 #include <vtkCamera.h>
 #include <vtkCellArray.h>
 #include <vtkCellData.h>
+#include <vtkCoordinate.h>
 #include <vtkDoubleArray.h>
 #include <vtkLookupTable.h>
 #include <vtkNew.h>
+#include <vtkPointData.h>
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
 #include <vtkPolyDataMapper.h>
+#include <vtkPolyDataMapper2D.h>
 #include <vtkProperty.h>
+#include <vtkProperty2D.h>
 #include <vtkRenderWindow.h>
 #include <vtkRenderer.h>
 #include <vtkScalarBarActor.h>
@@ -33,7 +38,7 @@
 namespace rockfdem::coupling {
 namespace {
 
-constexpr double kMeshRight = 0.84;  // the colour bar takes the strip right of this
+constexpr double kMeshRight = 0.80;  // the colour bar takes the strip right of this
 constexpr double kMeshTop = 0.92;    // the title takes the strip above this
 
 // Per-triangle values of one component of a cell array, as doubles.
@@ -97,9 +102,15 @@ vtkSmartPointer<vtkCellArray> cell_array(const std::vector<std::array<int, N>>& 
   return out;
 }
 
-vtkSmartPointer<vtkLookupTable> blue_to_red(std::pair<double, double> range) {
+// Blue to red through the rainbow; or, for a magnitude, pale yellow to
+// dark red, which leaves black, blue and green free for lines drawn over it.
+vtkSmartPointer<vtkLookupTable> colour_map(std::pair<double, double> range, bool magnitude) {
   auto lut = vtkSmartPointer<vtkLookupTable>::New();
-  lut->SetHueRange(0.667, 0.0);
+  lut->SetHueRange(magnitude ? 0.16 : 0.667, 0.0);
+  if (magnitude) {
+    lut->SetSaturationRange(0.15, 1.0);
+    lut->SetValueRange(1.0, 0.55);
+  }
   lut->SetNumberOfTableValues(256);
   lut->SetTableRange(range.first, range.second);
   lut->SetNanColor(0.6, 0.6, 0.6, 1.0);
@@ -107,19 +118,37 @@ vtkSmartPointer<vtkLookupTable> blue_to_red(std::pair<double, double> range) {
   return lut;
 }
 
-vtkSmartPointer<vtkActor> triangle_actor(const VtkGrid& grid, const std::vector<double>& values,
+vtkSmartPointer<vtkDoubleArray> double_array(const std::vector<double>& values) {
+  auto field = vtkSmartPointer<vtkDoubleArray>::New();
+  field->SetNumberOfValues(static_cast<vtkIdType>(values.size()));
+  for (std::size_t i = 0; i < values.size(); ++i)
+    field->SetValue(static_cast<vtkIdType>(i), values[i]);
+  return field;
+}
+
+// The triangles not hidden, coloured by the picture's values (per cell or
+// per point).
+vtkSmartPointer<vtkActor> triangle_actor(const VtkGrid& grid, const MeshPicture& p,
                                          vtkLookupTable* lut) {
+  std::vector<std::array<int, 3>> shown;
+  std::vector<double> cell_values;
+  for (std::size_t t = 0; t < grid.n_triangles(); ++t) {
+    if (!p.hidden.empty() && p.hidden[t]) continue;
+    shown.push_back(grid.triangles[t]);
+    if (!p.per_point) cell_values.push_back(p.values[t]);
+  }
   vtkNew<vtkPolyData> poly;
   poly->SetPoints(grid_points(grid, 0.0));
-  poly->SetPolys(cell_array(grid.triangles));
-  vtkNew<vtkDoubleArray> field;
-  field->SetNumberOfValues(static_cast<vtkIdType>(values.size()));
-  for (std::size_t t = 0; t < values.size(); ++t)
-    field->SetValue(static_cast<vtkIdType>(t), values[t]);
-  poly->GetCellData()->SetScalars(field);
+  poly->SetPolys(cell_array(shown));
   vtkNew<vtkPolyDataMapper> mapper;
+  if (p.per_point) {
+    poly->GetPointData()->SetScalars(double_array(p.values));
+    mapper->SetScalarModeToUsePointData();
+  } else {
+    poly->GetCellData()->SetScalars(double_array(cell_values));
+    mapper->SetScalarModeToUseCellData();
+  }
   mapper->SetInputData(poly);
-  mapper->SetScalarModeToUseCellData();
   mapper->SetLookupTable(lut);
   mapper->UseLookupTableScalarRangeOn();
   auto actor = vtkSmartPointer<vtkActor>::New();
@@ -127,19 +156,27 @@ vtkSmartPointer<vtkActor> triangle_actor(const VtkGrid& grid, const std::vector<
   return actor;
 }
 
-// Cracks sit slightly above the triangles (towards the camera), so they are
-// drawn over them without depth fighting.
-vtkSmartPointer<vtkActor> crack_actor(const VtkGrid& grid, double lift) {
+// Lines sit slightly above the triangles (towards the camera), so they are
+// drawn over them without depth fighting; later sets a little higher.
+vtkSmartPointer<vtkActor> lines_actor(const PictureLines& l, double lift) {
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToDouble();
+  vtkNew<vtkCellArray> cells;
+  for (const auto& s : l.segments) {
+    const vtkIdType ids[2] = {points->InsertNextPoint(s[0], s[1], lift),
+                              points->InsertNextPoint(s[2], s[3], lift)};
+    cells->InsertNextCell(2, ids);
+  }
   vtkNew<vtkPolyData> poly;
-  poly->SetPoints(grid_points(grid, lift));
-  poly->SetLines(cell_array(grid.lines));
+  poly->SetPoints(points);
+  poly->SetLines(cells);
   vtkNew<vtkPolyDataMapper> mapper;
   mapper->SetInputData(poly);
   mapper->ScalarVisibilityOff();
   auto actor = vtkSmartPointer<vtkActor>::New();
   actor->SetMapper(mapper);
-  actor->GetProperty()->SetColor(0.0, 0.0, 0.0);
-  actor->GetProperty()->SetLineWidth(2.0);
+  actor->GetProperty()->SetColor(l.rgb[0], l.rgb[1], l.rgb[2]);
+  actor->GetProperty()->SetLineWidth(static_cast<float>(l.width));
   return actor;
 }
 
@@ -150,17 +187,25 @@ MeshView whole(const VtkGrid& grid) {
   return {*x0, *x1, *y0, *y1};
 }
 
-// NaN for the triangles whose centroid lies outside `v`: the colour scale
-// then spans what the picture shows.
-std::vector<double> inside_only(const VtkGrid& grid, std::vector<double> values,
-                                const MeshView& v) {
+// The values of the drawn triangles whose centroid lies in `v` (all drawn
+// ones without a window): what the colour scale spans.
+std::vector<double> values_shown(const VtkGrid& grid, const MeshPicture& p) {
+  std::vector<double> out;
   for (std::size_t t = 0; t < grid.n_triangles(); ++t) {
+    if (!p.hidden.empty() && p.hidden[t]) continue;
     const auto& tri = grid.triangles[t];
-    const double cx = (grid.x[tri[0]] + grid.x[tri[1]] + grid.x[tri[2]]) / 3;
-    const double cy = (grid.y[tri[0]] + grid.y[tri[1]] + grid.y[tri[2]]) / 3;
-    if (cx < v.x0 || cx > v.x1 || cy < v.y0 || cy > v.y1) values[t] = std::nan("");
+    if (p.view) {
+      const MeshView& v = *p.view;
+      const double cx = (grid.x[tri[0]] + grid.x[tri[1]] + grid.x[tri[2]]) / 3;
+      const double cy = (grid.y[tri[0]] + grid.y[tri[1]] + grid.y[tri[2]]) / 3;
+      if (cx < v.x0 || cx > v.x1 || cy < v.y0 || cy > v.y1) continue;
+    }
+    if (!p.per_point)
+      out.push_back(p.values[t]);
+    else
+      for (int k : tri) out.push_back(p.values[k]);
   }
-  return values;
+  return out;
 }
 
 // Looks straight down z with a parallel projection just large enough for
@@ -177,36 +222,88 @@ void fit_camera(vtkRenderer* renderer, const MeshView& v, double view_w, double 
   renderer->ResetCameraClippingRange();
 }
 
-vtkSmartPointer<vtkRenderer> colour_bar(vtkLookupTable* lut, const std::string& label) {
-  vtkNew<vtkScalarBarActor> bar;
+void plain_text(vtkTextProperty* p, int size) {
+  p->SetColor(0.0, 0.0, 0.0);
+  p->ShadowOff();
+  p->ItalicOff();
+  p->BoldOff();
+  p->SetFontSize(size);
+}
+
+vtkSmartPointer<vtkScalarBarActor> scalar_bar(vtkLookupTable* lut, const std::string& label,
+                                              double y0, double height) {
+  auto bar = vtkSmartPointer<vtkScalarBarActor>::New();
   bar->SetLookupTable(lut);
   bar->SetTitle(label.c_str());
   bar->SetNumberOfLabels(6);
   bar->SetLabelFormat("%-#8.3g");
-  bar->SetPosition(0.05, 0.05);
+  bar->SetPosition(0.05, y0);
   bar->SetWidth(0.9);
-  bar->SetHeight(0.9);
+  bar->SetHeight(height);
   bar->UnconstrainedFontSizeOn();  // fixed point sizes, not scaled up to the bar's width
-  for (vtkTextProperty* p : {bar->GetTitleTextProperty(), bar->GetLabelTextProperty()}) {
-    p->SetColor(0.0, 0.0, 0.0);
-    p->ShadowOff();
-    p->ItalicOff();
-    p->BoldOff();
-    p->SetFontSize(14);
-  }
-  bar->GetTitleTextProperty()->SetFontSize(16);
+  plain_text(bar->GetLabelTextProperty(), 14);
+  plain_text(bar->GetTitleTextProperty(), 16);
   if (lut->GetIndexedLookup()) {  // named swatches: leave room for the names beside them
-    bar->SetPosition(0.15, 0.05);
-    bar->SetWidth(0.15);
+    bar->SetWidth(0.25);
     bar->SetTextPositionToPrecedeScalarBar();  // annotations go on the other side: the right
-    bar->GetAnnotationTextProperty()->SetColor(0.0, 0.0, 0.0);
-    bar->GetAnnotationTextProperty()->SetFontSize(14);
-    bar->GetAnnotationTextProperty()->ItalicOff();
+    plain_text(bar->GetAnnotationTextProperty(), 14);
   }
+  return bar;
+}
+
+// A stroke in a line set's colour from (x0, y) to (x1, y), in the
+// viewport's normalised coordinates.
+vtkSmartPointer<vtkActor2D> stroke(const PictureLines& l, double x0, double x1, double y) {
+  vtkNew<vtkPoints> ends;
+  ends->InsertNextPoint(x0, y, 0.0);
+  ends->InsertNextPoint(x1, y, 0.0);
+  vtkNew<vtkCellArray> cell;
+  const vtkIdType ids[2] = {0, 1};
+  cell->InsertNextCell(2, ids);
+  vtkNew<vtkPolyData> line;
+  line->SetPoints(ends);
+  line->SetLines(cell);
+  vtkNew<vtkCoordinate> normalised;
+  normalised->SetCoordinateSystemToNormalizedViewport();
+  vtkNew<vtkPolyDataMapper2D> mapper;
+  mapper->SetInputData(line);
+  mapper->SetTransformCoordinate(normalised);
+  auto actor = vtkSmartPointer<vtkActor2D>::New();
+  actor->SetMapper(mapper);
+  actor->GetProperty()->SetColor(l.rgb[0], l.rgb[1], l.rgb[2]);
+  actor->GetProperty()->SetLineWidth(static_cast<float>(std::max(3.0, l.width)));
+  return actor;
+}
+
+// One entry per labelled line set, top down from `top`: a stroke in its
+// colour and the label in black.
+void add_legend(vtkRenderer* renderer, const std::vector<PictureLines>& lines, double top) {
+  double y = top;
+  for (const PictureLines& l : lines) {
+    if (l.label.empty()) continue;
+    renderer->AddActor2D(stroke(l, 0.04, 0.2, y));
+    vtkNew<vtkTextActor> text;
+    text->SetInput(l.label.c_str());
+    plain_text(text->GetTextProperty(), 13);
+    text->GetTextProperty()->SetVerticalJustificationToCentered();
+    text->GetPositionCoordinate()->SetCoordinateSystemToNormalizedViewport();
+    text->GetPositionCoordinate()->SetValue(0.24, y);
+    renderer->AddActor2D(text);
+    y -= 0.05;
+  }
+}
+
+// The strip right of the mesh: the colour bar, and below it the legend of
+// the labelled lines where there are any.
+vtkSmartPointer<vtkRenderer> side_strip(vtkLookupTable* lut, const MeshPicture& p) {
   auto renderer = vtkSmartPointer<vtkRenderer>::New();
   renderer->SetViewport(kMeshRight, 0.0, 1.0, kMeshTop);
   renderer->SetBackground(1.0, 1.0, 1.0);
-  renderer->AddActor2D(bar);
+  const bool any_label = std::any_of(p.lines.begin(), p.lines.end(),
+                                     [](const PictureLines& l) { return !l.label.empty(); });
+  renderer->AddActor2D(any_label ? scalar_bar(lut, p.bar_title, 0.42, 0.55)
+                                 : scalar_bar(lut, p.bar_title, 0.05, 0.9));
+  if (any_label) add_legend(renderer, p.lines, 0.36);
   return renderer;
 }
 
@@ -237,46 +334,71 @@ const VtkArray& field_to_draw(const VtkGrid& grid, const std::string& name, int 
   return *a;
 }
 
+void check_picture(const VtkGrid& grid, const MeshPicture& p) {
+  grid.validate();
+  if (grid.n_points() == 0) throw std::invalid_argument("mesh plot: the grid has no points");
+  const std::size_t n = p.per_point ? grid.n_points() : grid.n_triangles();
+  if (p.values.size() != n)
+    throw std::invalid_argument("mesh plot '" + p.title + "': " + std::to_string(p.values.size()) +
+                                " values for " + std::to_string(n) +
+                                (p.per_point ? " points" : " triangles"));
+  if (!p.hidden.empty() && p.hidden.size() != grid.n_triangles())
+    throw std::invalid_argument("mesh plot '" + p.title + "': " + std::to_string(p.hidden.size()) +
+                                " hidden flags for " + std::to_string(grid.n_triangles()) +
+                                " triangles");
+}
+
 }  // namespace
 
-bool render_mesh_png(const VtkGrid& grid, const std::string& cell_field, int component,
-                     const std::string& path, const std::string& title, int width, int height,
-                     std::string* why, const MeshView* view, const MeshOverlay* overlay) {
-  grid.validate();
-  const VtkArray& field = field_to_draw(grid, cell_field, component);
+bool render_picture_png(const VtkGrid& grid, const MeshPicture& p, const std::string& path,
+                        int width, int height, std::string* why) {
+  check_picture(grid, p);
   check_image_size(width, height);
-  if (grid.n_points() == 0) throw std::invalid_argument("mesh plot: the grid has no points");
   const DisplayConnection display;  // held until the PNG is written
   if (!display.ok()) {
     if (why) *why = display.reason();
     return false;
   }
-
-  const std::vector<double> values = triangle_values(grid, field, component);
-  const MeshView shown = view ? *view : whole(grid);
-  const auto lut =
-      overlay && !overlay->categories.empty()
-          ? category_colours(overlay->categories)
-          : blue_to_red(finite_range(view ? inside_only(grid, values, shown) : values));
-
+  const auto lut = p.overlay && !p.overlay->categories.empty()
+                       ? category_colours(p.overlay->categories)
+                       : colour_map(finite_range(values_shown(grid, p)), p.magnitude);
   vtkNew<vtkRenderer> mesh;
   mesh->SetViewport(0.0, 0.0, kMeshRight, kMeshTop);
   mesh->SetBackground(1.0, 1.0, 1.0);
-  mesh->AddActor(triangle_actor(grid, values, lut));
-  fit_camera(mesh, shown, kMeshRight * width, kMeshTop * height);
+  mesh->AddActor(triangle_actor(grid, p, lut));
+  fit_camera(mesh, p.view ? *p.view : whole(grid), kMeshRight * width, kMeshTop * height);
   const double lift = 1e-3 * mesh->GetActiveCamera()->GetParallelScale();
-  mesh->AddActor(crack_actor(grid, lift));
-  if (overlay) add_overlay(mesh, *overlay, lift);
+  for (std::size_t i = 0; i < p.lines.size(); ++i)
+    mesh->AddActor(lines_actor(p.lines[i], lift * double(i + 1)));
+  if (p.overlay) add_overlay(mesh, *p.overlay, lift * double(p.lines.size() + 1));
   mesh->ResetCameraClippingRange();
 
   vtkNew<vtkRenderWindow> window;
   window->SetOffScreenRendering(1);
   window->SetSize(width, height);
   window->AddRenderer(mesh);
-  window->AddRenderer(colour_bar(lut, component_name(field, component)));
-  window->AddRenderer(title_strip(title, width, height));
+  window->AddRenderer(side_strip(lut, p));
+  window->AddRenderer(title_strip(p.title, width, height));
   save_window_png(window, path);
   return true;
+}
+
+bool render_mesh_png(const VtkGrid& grid, const std::string& cell_field, int component,
+                     const std::string& path, const std::string& title, int width, int height,
+                     std::string* why, const MeshView* view, const MeshOverlay* overlay) {
+  grid.validate();
+  const VtkArray& field = field_to_draw(grid, cell_field, component);
+  MeshPicture p;
+  p.title = title;
+  p.bar_title = component_name(field, component);
+  p.values = triangle_values(grid, field, component);
+  if (view) p.view = *view;
+  p.overlay = overlay;
+  PictureLines cracks;
+  for (const auto& l : grid.lines)
+    cracks.segments.push_back({grid.x[l[0]], grid.y[l[0]], grid.x[l[1]], grid.y[l[1]]});
+  p.lines.push_back(std::move(cracks));
+  return render_picture_png(grid, p, path, width, height, why);
 }
 
 }  // namespace rockfdem::coupling

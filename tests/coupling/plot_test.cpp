@@ -24,6 +24,7 @@ struct Picture {
   int width = 0, height = 0;
   double variance = 0;  ///< of the grey level over all pixels
   int n_black = 0;      ///< pixels with every channel below 40 (cracks, text)
+  int n_magenta = 0;    ///< pixels with red and blue above 200, green below 60
 };
 
 Picture read_png(const std::string& path) {
@@ -42,11 +43,14 @@ Picture read_png(const std::string& path) {
   for (vtkIdType i = 0; i < n; ++i) {
     double grey = 0;
     bool black = true;
+    int rgb[3] = {0, 0, 0};
     for (int c = 0; c < std::min(nc, 3); ++c) {
       const int v = pixels->GetValue(i * nc + c);
       grey += v / 3.0;
       black = black && v < 40;
+      rgb[c] = v;
     }
+    p.n_magenta += rgb[0] > 200 && rgb[1] < 60 && rgb[2] > 200;
     sum += grey;
     sum2 += grey * grey;
     p.n_black += black;
@@ -182,6 +186,67 @@ TEST(Plot, pictures_in_a_row_survive_xvfb_resets) {
   }
 }
 
+// Per pixel column, how many pixels differ between two pictures of the same size.
+std::vector<int> differing_columns(const std::string& a, const std::string& b) {
+  vtkNew<vtkPNGReader> ra, rb;
+  ra->SetFileName(a.c_str());
+  rb->SetFileName(b.c_str());
+  ra->Update();
+  rb->Update();
+  int dims[3];
+  ra->GetOutput()->GetDimensions(dims);
+  auto* pa = vtkUnsignedCharArray::SafeDownCast(ra->GetOutput()->GetPointData()->GetScalars());
+  auto* pb = vtkUnsignedCharArray::SafeDownCast(rb->GetOutput()->GetPointData()->GetScalars());
+  const int nc = pa->GetNumberOfComponents();
+  std::vector<int> count(dims[0], 0);
+  for (int j = 0; j < dims[1]; ++j)
+    for (int i = 0; i < dims[0]; ++i)
+      for (int c = 0; c < nc; ++c) {
+        const vtkIdType k = (vtkIdType(j) * dims[0] + i) * nc + c;
+        if (pa->GetValue(k) != pb->GetValue(k)) {
+          ++count[i];
+          break;
+        }
+      }
+  return count;
+}
+
+// Stage markers are vertical lines at their abscissae: drawn over a plot
+// whose x axis spans [0, 1], markers at 0.2, 0.4 and 0.8 change three
+// narrow bands of pixel columns over most of the plot's height (the dashed
+// line, half its pixels), whose spacings are in the ratio of the abscissae's,
+// (0.8 - 0.4) / (0.4 - 0.2) = 2, whatever the axes' layout; a marker
+// outside the axis (1.5) draws nothing.
+TEST(Plot, stage_markers_are_vertical_lines_at_their_abscissae) {
+  SKIP_UNLESS_RENDERING();
+  const TempDir dir;
+  const std::vector<PlotSeries> series{{"broken", {0.0, 0.5, 1.0}, {0.0, 10.0, 4.0}}};
+  std::string why;
+  ASSERT_TRUE(plot_xy_png("t", "time [s]", "count", series, dir.file("plain.png"), 800, 500, &why))
+      << why;
+  ASSERT_TRUE(plot_xy_png("t", "time [s]", "count", series, dir.file("marked.png"), 800, 500, &why,
+                          {{0.2, "lining"}, {0.4, "grout"}, {0.8, "equilibrium"}, {1.5, "none"}}))
+      << why;
+  const std::vector<int> diff = differing_columns(dir.file("plain.png"), dir.file("marked.png"));
+  // Columns where over a third of the picture's height changed: the lines
+  // (the labels, 13 px text, change fewer).
+  std::vector<double> bands;  // centre column of each band of such columns
+  for (int i = 0; i < int(diff.size()); ++i) {
+    if (diff[i] < 500 / 3) continue;
+    int j = i;
+    while (j + 1 < int(diff.size()) && diff[j + 1] >= 500 / 3) ++j;
+    bands.push_back(0.5 * (i + j));
+    EXPECT_LE(j - i, 4) << "band at column " << i << " is " << j - i + 1 << " px wide";
+    i = j;
+  }
+  ASSERT_EQ(bands.size(), 3u);
+  EXPECT_NEAR((bands[2] - bands[1]) / (bands[1] - bands[0]), 2.0, 0.05);
+  // The labels: text next to each line, so the changed pixels extend beyond the bands.
+  int near_first = 0;
+  for (int i = int(bands[0]) - 20; i <= int(bands[0]) + 20; ++i) near_first += diff[i];
+  EXPECT_GT(near_first, diff[int(bands[0])] + 50);
+}
+
 TEST(Plot, mesh_png_has_the_asked_size_colours_and_black_cracks) {
   SKIP_UNLESS_RENDERING();
   std::string why;
@@ -196,6 +261,34 @@ TEST(Plot, mesh_png_has_the_asked_size_colours_and_black_cracks) {
   // The diagonal crack alone is about 2 px x 500 px of black.
   EXPECT_GT(p.n_black, 500);
   EXPECT_EQ(dir.entries(), (std::set<std::string>{"mesh.png"}));
+}
+
+// A picture with values per point, a hidden triangle left white, and two
+// labelled line sets in their colours with a legend.
+TEST(Plot, picture_with_point_values_hidden_triangles_and_coloured_lines) {
+  SKIP_UNLESS_RENDERING();
+  const VtkGrid g = cracked_square(8);
+  MeshPicture p;
+  p.title = "Displacement magnitude |u| [mm]";
+  p.bar_title = "|u| [mm]";
+  p.per_point = true;
+  for (std::size_t i = 0; i < g.n_points(); ++i) p.values.push_back(g.x[i] + g.y[i]);
+  p.hidden.assign(g.n_triangles(), 0);
+  p.hidden[0] = 1;
+  p.lines.push_back({"mode I", {1.0, 0.0, 1.0}, 3, {{0.1, 0.9, 0.9, 0.9}}});
+  p.lines.push_back({"", {0.0, 0.0, 0.0}, 2, {{0.1, 0.1, 0.9, 0.1}}});
+  const TempDir dir;
+  std::string why;
+  ASSERT_TRUE(render_picture_png(g, p, dir.file("u.png"), 600, 400, &why)) << why;
+  const Picture pic = read_png(dir.file("u.png"));
+  EXPECT_EQ(pic.width, 600);
+  EXPECT_GT(pic.variance, 100.0);
+  // The magenta line, 0.8 of the square's width (about 280 px) and 3 px
+  // wide, and its legend stroke; the colour map has no magenta.
+  EXPECT_GT(pic.n_magenta, 500);
+  p.values.pop_back();
+  EXPECT_THROW(render_picture_png(g, p, dir.file("bad.png"), 600, 400), std::invalid_argument);
+  EXPECT_EQ(dir.entries(), (std::set<std::string>{"u.png"}));
 }
 
 TEST(Plot, mesh_png_of_an_uncracked_int_field_renders) {

@@ -144,7 +144,11 @@ const char* const kFixedNames[] = {"summary.json",
                                    "stress_strain.png",
                                    "lining.csv",
                                    "lining_forces.png",
-                                   "lining_capacity.png"};
+                                   "lining_capacity.png",
+                                   "displacement.png",
+                                   "sigma_max_compressive.png",
+                                   "sigma_min_compressive.png",
+                                   "report.md"};
 
 struct Numbered {
   const char *prefix, *suffix;

@@ -14,13 +14,21 @@
 #include "rockfdem/coupling/fdem_model.hpp"
 #include "rockfdem/coupling/insitu_grid.hpp"
 #include "rockfdem/fdem/bolt_output.hpp"
-#include "run_plots.hpp"
+#include "run_pictures.hpp"
+#include "run_report.hpp"
 #include "stage_inputs.hpp"
 
 namespace rockfdem::workflows {
 namespace {
 
 double mm(double metres) { return 1000 * metres; }
+
+// %g with up to 6 digits: alpha as the scene gives it (0.01, 0.5).
+std::string detail_number(double v) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%g", v);
+  return text;
+}
 
 // Monitors' mesh vertices: the implicit fields are per vertex.
 int vertex_of(const fdem::Engine& e, const Monitor& mon) { return e.node_vertex()[mon.node]; }
@@ -264,6 +272,7 @@ void RunOutputs::report_failure(const fdem::Engine& e, PhaseTimer& timer, const 
   last_good_.report_failure(e, timer, why, summary_);
   report_dt();
   summary_.write(output_path(cli_.output_dir, "summary.json"));
+  write_report();
 }
 
 coupling::VtkGrid RunOutputs::frame_grid(const fdem::Engine& e, const mesh::Mesh& m) const {
@@ -366,10 +375,17 @@ void RunOutputs::finish(const fdem::Engine& e, const mesh::Mesh& m,
   const int vault_vertex = vertex_of(e, find(monitors, "vault"));
   nlohmann::json grc = nlohmann::json::array();
   for (const insitu::InsituField& f : fields_)
-    grc.push_back(
-        {{"support_pressure_ratio", f.alpha}, {"vault_settlement_mm", -mm(f.uy[vault_vertex])}});
-  grc.push_back({{"support_pressure_ratio", 0.0},
-                 {"vault_settlement_mm", j["monitors"]["vault_settlement_mm"]}});
+    grc.push_back({{"support_pressure_ratio", f.alpha},
+                   {"vault_settlement_mm", -mm(f.uy[vault_vertex])},
+                   {"point", "implicit stage, alpha = " + detail_number(f.alpha)}});
+  // The end: the core's factor then (0 once removed), the support carrying the rest.
+  const double end_ratio =
+      history_->rows().empty() ? 0.0 : history_->column("support_pressure_ratio").back();
+  grc.push_back(
+      {{"support_pressure_ratio", end_ratio},
+       {"vault_settlement_mm", j["monitors"]["vault_settlement_mm"]},
+       {"point", end_ratio > 0 ? "end of run (FDEM), core at alpha = " + detail_number(end_ratio)
+                               : std::string("end of run (FDEM), core removed")}});
   j["ground_reaction_curve"] = grc;
   lining_outputs(e, m);
   damage_outputs(e, m);
@@ -379,6 +395,7 @@ void RunOutputs::finish(const fdem::Engine& e, const mesh::Mesh& m,
   timer.stamp("output");
   summary_.set_timings(timer);
   summary_.write(output_path(cli_.output_dir, "summary.json"));
+  write_report();
   const fdem::BrokenCounts b = e.broken_counts();
   if (!cli_.quiet)
     std::cout << "vault settlement " << j["monitors"]["vault_settlement_mm"].get<double>()
@@ -407,7 +424,6 @@ void RunOutputs::damage_outputs(const fdem::Engine& e, const mesh::Mesh& m) {
     warn(msg);
   }
   const BrokenZone z = broken_zone(e, m, r.h, bolt_triangles(bolts_, m.n_triangles()));
-  fracture_zone_depth_ = z.zone_depth;
   j["broken_zone"] = {
       {"broken_rock_cracks", z.broken},
       {"depth_m", z.depth},
@@ -424,29 +440,55 @@ void RunOutputs::damage_outputs(const fdem::Engine& e, const mesh::Mesh& m) {
   }
 }
 
+std::vector<StageSpan> RunOutputs::timeline() const {
+  // The spans point into the summary's stage report: take it by reference.
+  const auto& j = summary_.json();
+  const auto fdem = j.find("fdem");
+  if (!history_ || history_->rows().empty() || fdem == j.end() || !fdem->contains("stages"))
+    return {};
+  return stage_spans(fdem->at("stages"), history_->column("time").front());
+}
+
+std::optional<std::size_t> RunOutputs::support_row() const {
+  const std::vector<StageSpan> spans = timeline();
+  const StageSpan* support = support_stage(spans);
+  if (!support) return std::nullopt;
+  return row_at(history_->column("time"), support->start);
+}
+
+std::map<std::string, double> RunOutputs::since_support() const {
+  const std::optional<std::size_t> row = support_row();
+  const auto& mon = summary_.json().value("monitors", nlohmann::json::object());
+  std::map<std::string, double> out;
+  if (!row) return out;
+  const auto add = [&](const std::string& name, const std::string& column,
+                       const nlohmann::json& v) {
+    if (v.is_number()) out[name] = v.get<double>() - history_->column(column)[*row];
+  };
+  for (const Monitor& m : monitors_)
+    if (mon.contains(m.name))
+      add(m.name, m.name + "_radial_mm", mon[m.name].value("radial_mm", nlohmann::json()));
+  add("wall_chord", "wall_chord_convergence_mm",
+      mon.value("wall_chord_convergence_mm", nlohmann::json()));
+  add("shoulder_chord", "shoulder_chord_convergence_mm",
+      mon.value("shoulder_chord_convergence_mm", nlohmann::json()));
+  return out;
+}
+
+void RunOutputs::write_report() const {
+  ReportExtras extras;
+  extras.since_support_mm = since_support();
+  extras.pictures = pictures_;
+  workflows::write_report(cli_.output_dir, scene_, summary_.json(), extras);
+}
+
 void RunOutputs::plots(const fdem::Engine& e, const mesh::Mesh& m) {
   PlotWriter plots(cli_.output_dir, summary_, cli_.quiet);
   if (!plots.available()) return;
-  const History& h = *history_;
-  const std::vector<double> t = h.column("time");
-  // Per key point, the displacement towards the opening; the chords apart.
-  std::vector<coupling::PlotSeries> points;
-  for (const Monitor& mon : monitors_)
-    points.push_back({mon.name, t, h.column(mon.name + "_radial_mm")});
-  plots.xy("convergence.png", "Key points: displacement towards the opening", time_axis_label(e),
-           "radial displacement [mm]", points);
-  plots.xy("chord_convergence.png", "Chord convergence", time_axis_label(e), "closure [mm]",
-           {{"walls (chord)", t, h.column("wall_chord_convergence_mm")},
-            {"shoulders (chord)", t, h.column("shoulder_chord_convergence_mm")}});
-  plots.broken_cracks(e, h);
+  const std::vector<coupling::PlotMarker> markers = stage_markers(timeline());
+  time_plots(plots, e, markers);
+  ground_reaction_plot(plots);
   if (lining_) lining_->plots(plots);
-  std::vector<double> ratio, settlement;
-  for (const auto& p : summary_.json()["ground_reaction_curve"]) {
-    ratio.push_back(p["support_pressure_ratio"].get<double>());
-    settlement.push_back(p["vault_settlement_mm"].get<double>());
-  }
-  plots.xy("ground_reaction.png", "Ground reaction curve (vault)", "vault settlement [mm]",
-           "support pressure / in-situ stress", {{"vault", settlement, ratio}});
   if (bolt_results_) {
     const std::vector<coupling::PlotSeries> bolts = bolt_results_->force_curves(e);
     const std::string title = "Bolt axial force (section force) at step " +
@@ -455,17 +497,62 @@ void RunOutputs::plots(const fdem::Engine& e, const mesh::Mesh& m) {
       plots.xy("bolt_forces.png", title, "distance from the collar [m]",
                "axial force [kN per bar], tension +", bolts);
   }
-  plots.final_mesh(e, m, fields_.empty() ? nullptr : &fields_.back(), 1,
-                   "Minor principal stress [Pa], broken cracks in black");
-  // The opening and its fracture zone, where the crack pattern shows.
-  const double reach = fracture_zone_depth_ > 0 ? fracture_zone_depth_ + 1.0 : 0.0;
-  double x0 = 1e300, x1 = -1e300, y0 = 1e300, y1 = -1e300;
+  const PictureContext c{e, m, scene_, bolts_};
+  const coupling::VtkGrid grid = picture_grid(e);
+  plots.picture("displacement.png", grid, displacement_picture(c, node_displacements(e)));
+  plots.picture("sigma_max_compressive.png", grid, principal_picture(c, true));
+  plots.picture("sigma_min_compressive.png", grid, principal_picture(c, false));
+  plots.final_mesh(e, false);
+  pictures_ = plots.rendered();
+}
+
+void RunOutputs::time_plots(PlotWriter& plots, const fdem::Engine& e,
+                            const std::vector<coupling::PlotMarker>& markers) {
+  const History& h = *history_;
+  const std::vector<double> t = h.column("time");
+  // From the support's installation where asked (and installed): the
+  // rows from then on, less their value then.
+  const std::optional<std::size_t> support = support_row();
+  const bool since = scene_.output.convergence_from_support && support;
+  const std::size_t from = since ? *support : 0;
+  const auto curve = [&](const std::string& column) {
+    return since ? since_row(h.column(column), from) : h.column(column);
+  };
+  const std::vector<double> tt(t.begin() + long(from), t.end());
+  const std::string origin = since ? "since the support's installation" : "from the in-situ state";
+  std::vector<coupling::PlotSeries> points;
   for (const Monitor& mon : monitors_)
-    x0 = std::min(x0, mon.x), x1 = std::max(x1, mon.x), y0 = std::min(y0, mon.y),
-    y1 = std::max(y1, mon.y);
-  if (reach > 1.0 && x0 < x1)
-    plots.broken_zone(e, m, fields_.empty() ? nullptr : &fields_.back(),
-                      {x0 - reach, x1 + reach, y0 - reach, y1 + reach});
+    points.push_back({mon.name, tt, curve(mon.name + "_radial_mm")});
+  plots.xy("convergence.png", "Key points: radial displacement towards the opening",
+           time_axis_label(e), "radial displacement " + origin + " [mm]", points, markers);
+  plots.xy("chord_convergence.png", "Chord convergence (closure between key points)",
+           time_axis_label(e), "closure " + origin + " [mm]",
+           {{"walls (chord)", tt, curve("wall_chord_convergence_mm")},
+            {"shoulders (chord)", tt, curve("shoulder_chord_convergence_mm")}},
+           markers);
+  plots.broken_cracks(e, h, markers);
+}
+
+void RunOutputs::ground_reaction_plot(PlotWriter& plots) {
+  // The implicit stage's points (alpha, the vault's displacement it
+  // allows), and apart the run's final state, which is no point of the
+  // unsupported curve: the support carries the load there.
+  std::vector<double> ratio, settlement;
+  const nlohmann::json& grc = summary_.json()["ground_reaction_curve"];
+  for (std::size_t i = 0; i + 1 < grc.size(); ++i) {
+    ratio.push_back(grc[i]["support_pressure_ratio"].get<double>());
+    settlement.push_back(grc[i]["vault_settlement_mm"].get<double>());
+  }
+  std::vector<coupling::PlotSeries> series{
+      {"implicit stage: core stiffness factor alpha", settlement, ratio}};
+  if (!grc.empty())
+    series.push_back({grc.back()["point"].get<std::string>(),
+                      {grc.back()["vault_settlement_mm"].get<double>()},
+                      {grc.back()["support_pressure_ratio"].get<double>()},
+                      true});
+  plots.xy("ground_reaction.png", "Ground reaction curve at the vault",
+           "vault radial displacement (settlement) from the in-situ state [mm]",
+           "support pressure ratio p/p0 = core stiffness factor alpha [-]", series);
 }
 
 }  // namespace rockfdem::workflows

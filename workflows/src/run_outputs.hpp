@@ -2,7 +2,9 @@
 // ParaView frames, the ground reaction curve, PNG plots and summary.json.
 #pragma once
 
+#include <map>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -19,6 +21,8 @@
 #include "rockfdem/insitu/insitu.hpp"
 #include "rockfdem/workflows/cli.hpp"
 #include "rockfdem/workflows/scene.hpp"
+#include "run_plots.hpp"
+#include "run_timeline.hpp"
 #include "summary.hpp"
 
 namespace rockfdem::workflows {
@@ -80,6 +84,22 @@ class RunOutputs {
   /// last step's (summary "fdem" holds the stage reports by then).
   void report_dt();
   void plots(const fdem::Engine& e, const mesh::Mesh& m);
+  /// convergence.png, chord_convergence.png (from the support's
+  /// installation where the scene asks) and broken.png, with `markers`.
+  void time_plots(PlotWriter& plots, const fdem::Engine& e,
+                  const std::vector<coupling::PlotMarker>& markers);
+  /// ground_reaction.png from the summary's ground_reaction_curve.
+  void ground_reaction_plot(PlotWriter& plots);
+  /// The explicit stages on the history's time axis (run_timeline.hpp).
+  std::vector<StageSpan> timeline() const;
+  /// The history row of the support's installation (the first lining or
+  /// bolts stage's start); nothing when the run installed no support.
+  std::optional<std::size_t> support_row() const;
+  /// Key points' radial displacement and the chords' closure [mm] since
+  /// the support's installation (the summary's figures less the history's then).
+  std::map<std::string, double> since_support() const;
+  /// report.md from the summary as it stands.
+  void write_report() const;
   /// The engine grid plus, with bolts installed, "bolt_axial_stress" (steel
   /// stress along the axis per bolt triangle, NaN elsewhere).
   coupling::VtkGrid frame_grid(const fdem::Engine& e, const mesh::Mesh& m) const;
@@ -120,10 +140,10 @@ class RunOutputs {
   std::vector<int> boundary_vertices_;  ///< outer boundary, for the rigid translation
   mutable long fit_step_ = -1;          ///< step the cached fit belongs to
   mutable RigidFit fit_;
-  double max_rotation_deg_ = 0;     ///< largest |rotation| of the outer boundary so far
-  std::vector<Monitor> monitors_;   ///< the key points (history columns, pictures' window)
-  double fracture_zone_depth_ = 0;  ///< from damage_outputs, for broken_zone.png [m]
+  double max_rotation_deg_ = 0;    ///< largest |rotation| of the outer boundary so far
+  std::vector<Monitor> monitors_;  ///< the key points (history columns, pictures' window)
   std::vector<std::string> stage_names_;
+  std::vector<std::string> pictures_;  ///< PNG files rendered, for report.md
   double handoff_dt_ = 0;    ///< dt of the hand-off step (0: not taken by this run's record)
   double energy_floor_ = 0;  ///< energy_floor of the model (set by begin_history)
   LastGoodState last_good_;

@@ -4,41 +4,10 @@
 #include <iostream>
 
 #include "output_dir.hpp"
-#include "rockfdem/coupling/fdem_model.hpp"
+#include "run_pictures.hpp"
 
 namespace rockfdem::workflows {
 namespace {
-
-// The picture of the final state shows broken cracks only: intact crack
-// elements lie on every edge of the fracture zone and would hide the mesh.
-coupling::VtkGrid broken_crack_grid(const fdem::Engine& e, const mesh::Mesh& m,
-                                    const insitu::InsituField* implicit) {
-  coupling::VtkGrid g = coupling::fdem_grid(e, m, implicit);
-  std::vector<std::array<int, 2>> lines;
-  for (std::size_t c = 0; c < e.n_cracks(); ++c)
-    if (e.crack_state(c) == fdem::CrackState::kBroken) lines.push_back(g.lines[c]);
-  const std::size_t n_tri = g.n_triangles();
-  g.lines = lines;
-  for (coupling::VtkArray& a : g.cell_arrays) {
-    if (a.is_int()) {
-      auto& v = std::get<std::vector<std::int32_t>>(a.values);
-      v.resize(n_tri * a.n_components);
-    } else {
-      auto& v = std::get<std::vector<double>>(a.values);
-      v.resize(n_tri * a.n_components);
-    }
-    a = coupling::triangle_cell_array(g, std::move(a));
-  }
-  // Excavated triangles are drawn grey (NaN), not as stress-free rock.
-  for (coupling::VtkArray& a : g.cell_arrays) {
-    if (a.is_int()) continue;
-    auto& v = std::get<std::vector<double>>(a.values);
-    for (std::size_t t = 0; t < n_tri; ++t)
-      if (!e.active(t))
-        for (int k = 0; k < a.n_components; ++k) v[t * a.n_components + k] = std::nan("");
-  }
-  return g;
-}
 
 std::vector<double> scaled(std::vector<double> v, double factor) {
   for (double& x : v) x *= factor;
@@ -57,14 +26,18 @@ PlotWriter::PlotWriter(std::string dir, RunSummary& summary, bool quiet)
 }
 
 void PlotWriter::note(bool rendered, const std::string& file, const std::string& why) {
-  if (!rendered) summary_.skipped("plot " + file + ": " + why);
+  if (rendered)
+    rendered_.push_back(file);
+  else
+    summary_.skipped("plot " + file + ": " + why);
 }
 
 void PlotWriter::xy(const std::string& file, const std::string& title, const std::string& x_label,
-                    const std::string& y_label, const std::vector<coupling::PlotSeries>& series) {
+                    const std::string& y_label, const std::vector<coupling::PlotSeries>& series,
+                    const std::vector<coupling::PlotMarker>& markers) {
   std::string why;
   note(coupling::plot_xy_png(title, x_label, y_label, series, output_path(dir_, file), 900, 600,
-                             &why),
+                             &why, markers),
        file, why);
 }
 
@@ -77,32 +50,25 @@ void PlotWriter::panels(const std::string& file, const std::string& title,
       file, why);
 }
 
-void PlotWriter::broken_cracks(const fdem::Engine& e, const History& h) {
+void PlotWriter::broken_cracks(const fdem::Engine& e, const History& h,
+                               const std::vector<coupling::PlotMarker>& markers) {
   const std::vector<double> t = h.column("time");
-  xy("broken.png", "Broken crack elements", time_axis_label(e), "count",
+  xy("broken.png", "Broken crack elements by failure mode", time_axis_label(e),
+     "broken crack elements [count]",
      {{"mode I", t, h.column("broken_I")},
       {"mode II", t, h.column("broken_II")},
-      {"mixed", t, h.column("broken_mixed")}});
+      {"mixed", t, h.column("broken_mixed")}},
+     markers);
 }
 
-void PlotWriter::final_mesh(const fdem::Engine& e, const mesh::Mesh& m,
-                            const insitu::InsituField* implicit, int principal,
-                            const std::string& title) {
+void PlotWriter::picture(const std::string& file, const coupling::VtkGrid& grid,
+                         const coupling::MeshPicture& p) {
   std::string why;
-  note(coupling::render_mesh_png(broken_crack_grid(e, m, implicit), "principal_stress", principal,
-                                 output_path(dir_, "final_mesh.png"), title, 1000, 800, &why),
-       "final_mesh.png", why);
+  note(coupling::render_picture_png(grid, p, output_path(dir_, file), 1000, 800, &why), file, why);
 }
 
-void PlotWriter::broken_zone(const fdem::Engine& e, const mesh::Mesh& m,
-                             const insitu::InsituField* implicit, const coupling::MeshView& view) {
-  std::string why;
-  note(coupling::render_mesh_png(broken_crack_grid(e, m, implicit), "principal_stress", 1,
-                                 output_path(dir_, "broken_zone.png"),
-                                 "Around the opening: most compressive principal stress [Pa], "
-                                 "broken cracks in black",
-                                 1000, 800, &why, &view),
-       "broken_zone.png", why);
+void PlotWriter::final_mesh(const fdem::Engine& e, bool most_tensile) {
+  picture("final_mesh.png", picture_grid(e), whole_model_picture(e, most_tensile));
 }
 
 std::string time_axis_label(const fdem::Engine& e) {
@@ -110,8 +76,8 @@ std::string time_axis_label(const fdem::Engine& e) {
   return e.mass_scaling_report().enabled ? "pseudo-time [s] (mass-scaled)" : "time [s]";
 }
 
-void specimen_plots(const fdem::Engine& e, const mesh::Mesh& m, const History& h, bool disc,
-                    const std::string& dir, RunSummary& summary, bool quiet) {
+void specimen_plots(const fdem::Engine& e, const History& h, bool disc, const std::string& dir,
+                    RunSummary& summary, bool quiet) {
   PlotWriter plots(dir, summary, quiet);
   if (!plots.available()) return;
   const char* stress = disc ? "tensile_stress" : "axial_stress";
@@ -123,9 +89,7 @@ void specimen_plots(const fdem::Engine& e, const mesh::Mesh& m, const History& h
   plots.broken_cracks(e, h);
   // A disc splits in tension (the major principal stress), a UCS specimen
   // is crushed (the minor).
-  plots.final_mesh(e, m, nullptr, disc ? 0 : 1,
-                   disc ? "Major principal stress [Pa], broken cracks in black"
-                        : "Minor principal stress [Pa], broken cracks in black");
+  plots.final_mesh(e, disc);
 }
 
 }  // namespace rockfdem::workflows

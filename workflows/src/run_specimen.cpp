@@ -116,7 +116,7 @@ class SpecimenRun {
   void finish() {
     auto& j = summary_.json();
     if (scene_.output.plots)
-      specimen_plots(e_, m_, history_, disc_, cli_.output_dir, summary_, cli_.quiet);
+      specimen_plots(e_, history_, disc_, cli_.output_dir, summary_, cli_.quiet);
     timer_.stamp("output");
     j["status"] = "completed";
     report_engine(e_, timer_, summary_);

@@ -96,6 +96,15 @@ class Reader {
   const RawScene& raw_;
 };
 
+void read_references(const Reader& r, ReferenceSettings& ref) {
+  for (const char* name : {"vault", "left_shoulder", "right_shoulder", "left_wall", "right_wall",
+                           "invert", "wall_chord", "shoulder_chord"})
+    if (r.has(std::string("references.") + name))
+      ref.mm[name] = r.number(std::string("references.") + name);
+  ref.from_support = r.text("references.from") == "support";
+  ref.source = r.text("references.source");
+}
+
 mesh::TunnelShape tunnel_shape(const std::string& s) {
   if (s == "circular") return mesh::TunnelShape::kCircular;
   if (s == "horseshoe") return mesh::TunnelShape::kHorseshoe;
@@ -689,6 +698,8 @@ Scene build_scene(const RawScene& raw, const std::string& base_dir) {
   s.output.vtk = r.boolean("output.vtk");
   s.output.plots = r.boolean("output.plots");
   s.output.checkpoint_every = static_cast<long>(r.number("output.checkpoint_every"));
+  s.output.convergence_from_support = r.text("output.convergence_from") == "support";
+  read_references(r, s.references);
   read_bolts(r, s);
   read_stages(r, s);
   read_instruments(r, s);

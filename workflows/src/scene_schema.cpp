@@ -155,6 +155,27 @@ void add_instruments(std::vector<KeySpec>& s) {
                       "the deepest is the fixed reference of the readings."));
 }
 
+// [references]: figures to compare the run with in report.md (measured
+// convergences, another code's answer).
+void add_references(std::vector<KeySpec>& s) {
+  for (const char* point :
+       {"vault", "left_shoulder", "right_shoulder", "left_wall", "right_wall", "invert"})
+    s.push_back(number(std::string("references.") + point, "mm", "none", -kInf, false, kInf, false,
+                       std::string("Reference radial displacement of the key point ") + point +
+                           " (towards the opening positive), compared with the run's figure in "
+                           "report.md."));
+  s.push_back(number("references.wall_chord", "mm", "none", -kInf, false, kInf, false,
+                     "Reference closure of the chord between the walls."));
+  s.push_back(number("references.shoulder_chord", "mm", "none", -kInf, false, kInf, false,
+                     "Reference closure of the chord between the shoulders."));
+  s.push_back(choice("references.from", "start", {"start", "support"},
+                     "What the references are measured from: the in-situ state (`start`), or "
+                     "the first `lining` or `bolts` stage (`support`, as points installed "
+                     "with the support read)."));
+  s.push_back(
+      text("references.source", "\"\"", "Where the references come from (shown in report.md)."));
+}
+
 std::vector<KeySpec> build_schema() {
   std::vector<KeySpec> s;
   // [model]
@@ -474,6 +495,13 @@ std::vector<KeySpec> build_schema() {
   s.push_back(integer("output.checkpoint_every", "0", 0, 1e12,
                       "Steps between checkpoints (written at the next output step); 0: none. "
                       "`--checkpoint-every` overrides it."));
+  s.push_back(choice("output.convergence_from", "support", {"support", "start"},
+                     "Origin of convergence.png and chord_convergence.png: `support`, the "
+                     "state at the first `lining` or `bolts` stage (what points installed "
+                     "with the support measure; the in-situ state where the scene installs "
+                     "none); `start`, the in-situ state (the implicit deconfinement "
+                     "included). The axis label names it."));
+  add_references(s);
   return s;
 }
 

@@ -144,6 +144,18 @@ struct OutputSettings {
   bool vtk = true;
   bool plots = true;
   long checkpoint_every = 0;  ///< steps between checkpoints; 0: none
+  /// Origin of the convergence plots: the support's installation (where
+  /// the scene has one) rather than the in-situ state.
+  bool convergence_from_support = true;
+};
+
+/// Figures the run is compared with in report.md (scene [references]).
+struct ReferenceSettings {
+  /// [mm] by name: key points (radial, towards the opening positive),
+  /// "wall_chord", "shoulder_chord" (closure); only those given.
+  std::map<std::string, double> mm;
+  bool from_support = false;  ///< measured from the support's installation
+  std::string source;         ///< where they come from
 };
 
 struct Scene {
@@ -161,6 +173,7 @@ struct Scene {
   std::vector<MonitorSpec> monitors;  ///< scene [[monitor]]
   std::vector<ExtensometerSpec> extensometers;  ///< scene [[extensometer]]
   OutputSettings output;
+  ReferenceSettings references;
   std::string
       canonical;  ///< the validated scene as TOML (overrides applied), for hashing and records
   /// canonical without output.checkpoint_every: what a checkpoint must match

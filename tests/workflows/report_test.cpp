@@ -1,0 +1,183 @@
+// report.md, as an engineer reads it: written at the end of a tunnel run,
+// its figures the summary's, the scene's references compared, the
+// pictures it links present.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <map>
+#include <regex>
+#include <sstream>
+#include <string>
+
+#include "cli_runner.hpp"
+#include "run_timeline.hpp"
+
+namespace fs = std::filesystem;
+using namespace rockfdem::test;
+
+namespace {
+
+// The cells of the Markdown table row that starts with "| `name` |".
+std::vector<std::string> row_of(const std::string& md, const std::string& name) {
+  const std::size_t at = md.find("\n| " + name + " |");
+  if (at == std::string::npos) return {};
+  const std::string line = md.substr(at + 1, md.find('\n', at + 1) - at - 1);
+  std::vector<std::string> cells;
+  std::size_t from = 1;
+  for (std::size_t bar = line.find('|', from); bar != std::string::npos;
+       from = bar + 1, bar = line.find('|', from)) {
+    std::string cell = line.substr(from, bar - from);
+    cells.push_back(cell.substr(cell.find_first_not_of(' '),
+                                cell.find_last_not_of(' ') - cell.find_first_not_of(' ') + 1));
+  }
+  return cells;
+}
+
+// history.csv's first row (the hand-off step), by column name.
+std::map<std::string, double> first_history_row(const fs::path& csv) {
+  std::istringstream in(read_text(csv));
+  std::string header, line, name, value;
+  std::getline(in, header);
+  std::getline(in, line);
+  std::map<std::string, double> row;
+  std::istringstream names(header), values(line);
+  while (std::getline(names, name, ',') && std::getline(values, value, ','))
+    row[name] = std::stod(value);
+  return row;
+}
+
+std::string two_decimals(double v) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.2f", v);
+  return text;
+}
+
+}  // namespace
+
+// The supported circular tunnel (lining, 8 bolts) for 1000 steps of
+// equilibrium: too few to settle, so the report says "not at equilibrium"
+// as the summary does. Each key point's radial displacement in the report
+// is the summary's to the 0.01 mm shown; the vault's reference (5 mm,
+// given on the command line) appears with the difference computed - 5.
+TEST(Report, tunnel_run_writes_a_report_with_the_summary_figures) {
+  const fs::path out = scratch("report");
+  const bool xvfb = !std::string(ROCKFDEM_XVFB_RUN).empty();
+  const std::string prefix =
+      xvfb ? std::string(ROCKFDEM_XVFB_RUN) + " -n " + std::to_string(100 + getpid() % 800) + " -a"
+           : "";
+  const Result r = run("run " + kTestDir +
+                           "/support_pair_supported.toml -j 1 -q --set 'stages[4].max_steps=1000'"
+                           " --set references.vault=5.0 --set 'references.source=\"a test\"'"
+                           " --set output.plots=" +
+                           std::string(xvfb ? "true" : "false") + " -o " + out.string(),
+                       prefix);
+  ASSERT_EQ(r.code, 0) << r.output;
+  const nlohmann::json j = read_json(out / "summary.json");
+  ASSERT_TRUE(fs::exists(out / "report.md"));
+  const std::string md = read_text(out / "report.md");
+  EXPECT_NE(md.find("**" + j["status"].get<std::string>() + "**"), std::string::npos) << md;
+  if (j.contains("status_reason")) {
+    EXPECT_NE(md.find(j["status_reason"].get<std::string>()), std::string::npos);
+  }
+  for (const char* p :
+       {"vault", "left_shoulder", "right_shoulder", "left_wall", "right_wall", "invert"}) {
+    const auto cells = row_of(md, p);
+    ASSERT_GE(cells.size(), 5u) << p << " in\n" << md;
+    EXPECT_EQ(cells[1], two_decimals(j["monitors"][p]["radial_mm"].get<double>())) << p;
+  }
+  // The lining is installed right after the hand-off step, whose history
+  // row is the origin of "since support": the summary's figure less that row's.
+  const auto handoff = first_history_row(out / "history.csv");
+  for (const char* p : {"vault", "left_wall", "invert"})
+    EXPECT_NEAR(
+        std::stod(row_of(md, p)[2]),
+        j["monitors"][p]["radial_mm"].get<double>() - handoff.at(std::string(p) + "_radial_mm"),
+        0.0051 + 1e-9 * std::abs(handoff.at(std::string(p) + "_radial_mm")))
+        << p;
+  const auto vault = row_of(md, "vault");
+  EXPECT_EQ(vault[3], "5.00");
+  const double computed = j["monitors"]["vault"]["radial_mm"].get<double>();
+  EXPECT_EQ(vault[4].substr(0, vault[4].find(' ')), two_decimals(computed - 5.0)) << vault[4];
+  EXPECT_EQ(row_of(md, "wall_chord")[1],
+            two_decimals(j["monitors"]["wall_chord_convergence_mm"].get<double>()));
+  EXPECT_NE(md.find("a test"), std::string::npos);
+  // Every bolt of the summary has its row.
+  for (const auto& b : j["bolts"]["each"])
+    EXPECT_FALSE(row_of(md, b["name"].get<std::string>()).empty()) << b["name"];
+  // The pictures it links exist.
+  const std::regex link(R"(!\[[^\]]*\]\(([^)]+)\))");
+  int links = 0;
+  for (auto it = std::sregex_iterator(md.begin(), md.end(), link); it != std::sregex_iterator();
+       ++it, ++links)
+    EXPECT_TRUE(fs::exists(out / (*it)[1].str())) << (*it)[1];
+  if (xvfb) {
+    EXPECT_GE(links, 7) << md;
+  }
+  fs::remove_all(out);
+}
+
+// A run that fails (a forced dt of 2 ms inverts a triangle at step 3)
+// still leaves its report: status "failed" with the diagnostic, and the
+// key points of the last good state the summary reports.
+TEST(Report, failed_run_reports_its_last_good_state) {
+  const fs::path out = scratch("report-failed");
+  const Result r = run("run " + kTestDir +
+                       "/support_pair_supported.toml -j 1 -q --force-dt --set engine.dt=0.002 -o " +
+                       out.string());
+  ASSERT_EQ(r.code, 3) << r.output;
+  const nlohmann::json j = read_json(out / "summary.json");
+  ASSERT_EQ(j["status"], "failed");
+  const std::string md = read_text(out / "report.md");
+  EXPECT_NE(md.find("**failed**: " + j["failure"].get<std::string>()), std::string::npos) << md;
+  EXPECT_EQ(row_of(md, "vault")[1],
+            two_decimals(j["monitors"]["vault"]["radial_mm"].get<double>()));
+  fs::remove_all(out);
+}
+
+// The seed's sequence as the summary reports it: three stages of no steps
+// at the hand-off (t = 0.5 ms), a grout stage of 4.8 ms that grouted 324
+// cracks, then equilibrium. One marker holds the three with the grout
+// stage's start; the grouting and the equilibrium's start share the next.
+TEST(StageMarkers, stages_starting_together_share_a_marker_and_grouting_has_its_own) {
+  const nlohmann::json stages = nlohmann::json::parse(R"([
+    {"kind": "lining", "simulated_time": 0.0, "changes": {}},
+    {"kind": "bolts", "simulated_time": 0.0, "changes": {}},
+    {"kind": "remove_core", "simulated_time": 0.0, "changes": {}},
+    {"kind": "grout", "simulated_time": 0.0048,
+     "changes": {"triggered": true, "rejoined": 324}},
+    {"kind": "equilibrium", "simulated_time": 0.736, "changes": {}}])");
+  using namespace rockfdem::workflows;
+  const std::vector<StageSpan> spans = stage_spans(stages, 0.0005);
+  const auto markers = stage_markers(spans);
+  ASSERT_EQ(markers.size(), 2u);
+  EXPECT_EQ(markers[0].x, 0.0005);
+  EXPECT_EQ(markers[0].label, "lining, bolts, remove_core, grout");
+  EXPECT_DOUBLE_EQ(markers[1].x, 0.0053);
+  EXPECT_EQ(markers[1].label, "grouting: 324 broken cracks re-joined, equilibrium");
+  ASSERT_NE(support_stage(spans), nullptr);
+  EXPECT_EQ(support_stage(spans)->kind, "lining");
+  // Rows at the hand-off and every 1000 steps: the support's row is the
+  // hand-off's, found despite the stage times' rounding.
+  EXPECT_EQ(row_at({0.0005, 0.0053, 0.37, 0.74}, 0.0005 + 1e-15), 0u);
+  EXPECT_EQ(row_at({0.0005, 0.0053, 0.37, 0.74}, 0.0053 - 1e-12), 1u);
+  EXPECT_EQ(since_row({3.0, 5.0, 9.0}, 1), (std::vector<double>{0.0, 4.0}));
+}
+
+// A grout stage that did not trigger adds no grouting marker; a run
+// without lining or bolts stages has no support to measure from.
+TEST(StageMarkers, untriggered_grout_and_no_support) {
+  const nlohmann::json stages = nlohmann::json::parse(R"([
+    {"kind": "remove_core", "simulated_time": 0.0},
+    {"kind": "grout", "simulated_time": 0.1, "changes": {"triggered": false}},
+    {"kind": "equilibrium", "simulated_time": 0.2}])");
+  using namespace rockfdem::workflows;
+  const std::vector<StageSpan> spans = stage_spans(stages, 0.0);
+  const auto markers = stage_markers(spans);
+  ASSERT_EQ(markers.size(), 2u);
+  EXPECT_EQ(markers[0].label, "remove_core, grout");
+  EXPECT_EQ(markers[1].label, "equilibrium");
+  EXPECT_DOUBLE_EQ(markers[1].x, 0.1);
+  EXPECT_EQ(support_stage(spans), nullptr);
+}
