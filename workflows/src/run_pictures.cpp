@@ -4,6 +4,7 @@
 #include <map>
 
 #include "broken_zone.hpp"
+#include "rockfdem/fdem/bolt_sections.hpp"
 #include "rockfdem/mesh/opening.hpp"
 
 namespace rockfdem::workflows {
@@ -60,17 +61,42 @@ coupling::PictureLines lining_faces(const PictureContext& c) {
   return faces;
 }
 
+// Bolts and cables drawn through their stations (fdem::bolt_sections),
+// each piece coloured by its station's axial force as a share of the bar's
+// yield force fy pi d^2 / 4: compression blue, tension from pale to dark
+// red, yielded or broken purple; one legend entry per class drawn.
 std::vector<coupling::PictureLines> bolt_lines(const PictureContext& c) {
-  coupling::PictureLines bolts{"rock bolts", {0.3, 0.3, 0.3}, 4, {}};
-  coupling::PictureLines cables{"cables", {0.5, 0.0, 0.6}, 4, {}};
+  std::vector<coupling::PictureLines> classes{
+      {"bolt force: compression", {0.2, 0.4, 1.0}, 4, {}},
+      {"bolt force: tension < 25% of yield", {1.0, 0.75, 0.6}, 4, {}},
+      {"bolt force: 25-50% of yield", {0.95, 0.5, 0.35}, 4, {}},
+      {"bolt force: 50-100% of yield", {0.8, 0.15, 0.1}, 4, {}},
+      {"bolt yielded or broken", {0.4, 0.0, 0.5}, 4, {}}};
   const BoltSettings& b = c.scene.bolts;
   for (std::size_t i = 0; i < b.segments.size(); ++i) {
     if (!c.bolts || i >= c.bolts->installed.size() || !c.bolts->installed[i]) continue;
-    (b.is_cable[i] ? cables : bolts).segments.push_back(b.segments[i]);
+    const SteelSettings& steel = b.is_cable[i] ? b.cable : b.bolt;
+    const double yield = steel.yield_strength * 0.25 * M_PI * steel.diameter * steel.diameter;
+    const std::vector<fdem::BoltStation> st = fdem::bolt_sections(c.e, *c.bolts, int(i));
+    const Segment& axis = b.segments[i];
+    for (std::size_t k = 0; k < st.size(); ++k) {
+      // From halfway to the previous station (or the head) to halfway to the next (or the end).
+      const double x0 = k == 0 ? axis[0] : 0.5 * (st[k - 1].x + st[k].x);
+      const double y0 = k == 0 ? axis[1] : 0.5 * (st[k - 1].y + st[k].y);
+      const double x1 = k + 1 == st.size() ? axis[2] : 0.5 * (st[k].x + st[k + 1].x);
+      const double y1 = k + 1 == st.size() ? axis[3] : 0.5 * (st[k].y + st[k + 1].y);
+      const double share = st[k].bar_force / yield;
+      const std::size_t cls = st[k].state > 0 ? 4
+                              : share < 0     ? 0
+                              : share < 0.25  ? 1
+                              : share < 0.5   ? 2
+                                              : 3;
+      classes[cls].segments.push_back({x0, y0, x1, y1});
+    }
   }
   std::vector<coupling::PictureLines> out;
-  for (auto* l : {&bolts, &cables})
-    if (!l->segments.empty()) out.push_back(*l);
+  for (const auto& l : classes)
+    if (!l.segments.empty()) out.push_back(l);
   return out;
 }
 
