@@ -318,6 +318,8 @@ void read_insitu(const Reader& r, Scene& s) {
   in.rollers = r.boolean("insitu.rollers");
   in.solver = r.text("insitu.solver");
   in.tolerance = r.number("insitu.tolerance");
+  in.continuum = r.text("insitu.continuum");
+  in.dilation_angle = r.number("insitu.dilation_angle");
   if (r.has("insitu.alpha")) in.alpha = r.numbers("insitu.alpha");
   for (std::size_t i = 1; i < in.alpha.size(); ++i)
     if (!(in.alpha[i] < in.alpha[i - 1])) r.fail("insitu.alpha", "must be strictly decreasing");
@@ -330,6 +332,10 @@ void read_insitu(const Reader& r, Scene& s) {
   }
   if (in.lining_active && !s.materials.count("lining"))
     r.fail("insitu.lining_active", "the model has no lining ring (tunnel.lining_thickness = 0)");
+  if (in.continuum == "mohr_coulomb" && in.dilation_angle > s.materials.at("rock").friction_angle)
+    r.fail("insitu.dilation_angle", "must not exceed materials.rock.friction_angle");
+  if (in.continuum == "mohr_coulomb" && in.unit_weight > 0)
+    r.fail("insitu.continuum", "the Mohr-Coulomb continuum needs unit_weight = 0");
 }
 
 std::array<double, 2> point(const Reader& r, const std::string& path) {
