@@ -73,7 +73,7 @@ void solve_plastic(const Scene& scene, const mesh::Mesh& m, ContinuumStates& c) 
   const std::vector<insitu::PlasticField> fields = insitu::solve_mohr_coulomb(m, spec, p);
   c.handoff.alpha = -1;  // none when the implicit stage stops at alpha = 1
   for (const auto& f : fields)
-    if (1 - f.lambda == scene.insitu.alpha.back()) c.handoff = field_of(f);
+    if (std::abs(1 - f.lambda - scene.insitu.alpha.back()) < 1e-12) c.handoff = field_of(f);
   c.end = field_of(fields.back());
   c.yielded = fields.back().yielded;
   c.n_yielded = fields.back().n_yielded;
@@ -166,6 +166,7 @@ void plot_profiles(const std::vector<Profile>& profiles, const std::string& mode
                    const std::string& dir, RunSummary& summary, bool quiet) {
   PlotWriter plots(dir, summary, quiet);
   if (!plots.available()) return;
+  const std::string name = model == "mohr_coulomb" ? "Mohr-Coulomb" : model;
   const auto mpa = [](std::vector<double> v) {
     for (double& x : v) x *= 1e-6;
     return v;
@@ -175,12 +176,12 @@ void plot_profiles(const std::vector<Profile>& profiles, const std::string& mode
     if (p.ray != "vault" && p.ray != "right_wall") continue;
     series.push_back({"FDEM s_rr " + p.ray, p.d, mpa(p.fdem_rr)});
     series.push_back({"FDEM s_tt " + p.ray, p.d, mpa(p.fdem_tt)});
-    series.push_back({model + " s_rr " + p.ray, p.d, mpa(p.cont_rr)});
-    series.push_back({model + " s_tt " + p.ray, p.d, mpa(p.cont_tt)});
+    series.push_back({name + " s_rr " + p.ray, p.d, mpa(p.cont_rr)});
+    series.push_back({name + " s_tt " + p.ray, p.d, mpa(p.cont_tt)});
   }
   if (series.empty()) return;
   plots.xy("continuum_profiles.png",
-           "Radial and tangential stress along rays, end of run: FDEM vs " + model + " continuum",
+           "Radial and tangential stress along rays, end of run: FDEM vs " + name + " continuum",
            "distance from the wall along the ray [m]", "stress [MPa], tension positive", series);
 }
 

@@ -336,6 +336,10 @@ void read_insitu(const Reader& r, Scene& s) {
     r.fail("insitu.dilation_angle", "must not exceed materials.rock.friction_angle");
   if (in.continuum == "mohr_coulomb" && in.unit_weight > 0)
     r.fail("insitu.continuum", "the Mohr-Coulomb continuum needs unit_weight = 0");
+  if (in.continuum == "mohr_coulomb" && !(s.materials.at("rock").cohesion > 0))
+    r.fail("insitu.continuum",
+           "the Mohr-Coulomb continuum needs materials.rock.cohesion > 0 (without it the "
+           "unsupported opening collapses)");
 }
 
 std::array<double, 2> point(const Reader& r, const std::string& path) {
