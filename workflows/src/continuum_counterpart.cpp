@@ -164,8 +164,9 @@ void write_profiles(const std::vector<Profile>& profiles, const std::string& pat
 
 void plot_profiles(const std::vector<Profile>& profiles, const std::string& model,
                    const std::string& dir, RunSummary& summary, bool quiet) {
+  // Without a display the run's own plots say so, once.
+  if (!coupling::rendering_available()) return;
   PlotWriter plots(dir, summary, quiet);
-  if (!plots.available()) return;
   const std::string name = model == "mohr_coulomb" ? "Mohr-Coulomb" : model;
   const auto mpa = [](std::vector<double> v) {
     for (double& x : v) x *= 1e-6;
