@@ -12,9 +12,11 @@
 //
 //     R(u) = sum_cells int sigma(u) : eps(v) - F_box - (1 - lambda) W = 0,   (1)
 //
-// F_box = int_box sigma0 . n . v, W = int_wall sigma0 . n . v. We form F_box as
-// F0 - W_rock, with F0 = int_rock sigma0 : eps(v): at lambda = 0 the rock
-// then sits exactly at sigma0, whatever the quadrature. In the rock sigma(u)
+// F_box = int_box sigma0 . n . v (plus the rock's weight int b . v with
+// gravity), W = int_wall sigma0 . n . v. We form F_box as F0 - W_rock, with
+// F0 = int_rock sigma0 : eps(v): at lambda = 0 the rock then sits exactly at
+// sigma0, whatever the quadrature. With gravity the base of the box takes
+// the weight the released wall no longer carries (below). In the rock sigma(u)
 // is the Mohr-Coulomb stress update (mohr_coulomb.hpp) from the last
 // converged state; in an installed lining it is C_lining (eps - eps_install).
 //
@@ -44,6 +46,7 @@
 #include <deal.II/lac/sparsity_pattern.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <memory>
@@ -92,6 +95,9 @@ class PlasticProblem {
   void make_system();
   void install_lining();
   void assemble_loads();
+  void assemble_base_loads();
+  std::array<double, 3> resultant(const Vector<double>& f) const;
+  void add_base_correction(double lambda);
   double assemble(double lambda);
   bool newton(double lambda, int& iterations);
   bool advance(double from, double to, PlasticField& field);
@@ -120,9 +126,15 @@ class PlasticProblem {
   SparsityPattern sparsity_pattern_;
   SparseMatrix<double> system_matrix_;
   Vector<double> solution_, step_start_, system_rhs_;
-  Vector<double> box_load_;   ///< F0 - W_rock: the far-field traction
+  Vector<double> box_load_;   ///< F0 - W_rock: the far-field traction (and the weight)
   Vector<double> wall_load_;  ///< W on the present wall
   double force_scale_ = 1;    ///< ||F0||
+  // Gravity: the base tractions t_y = 1 and t_y = x - base_x_ that give the
+  // weight released with the wall back to the base (see "Gravity" below),
+  // and the resultants (F_x, F_y, M about the origin) of the two loads.
+  Vector<double> base_uniform_, base_linear_;
+  double base_length_ = 0, base_x_ = 0, base_inertia_ = 0;
+  std::array<double, 3> box_resultant_{}, wall_resultant_{};
 
   // Per mesh triangle: the converged state and the present iterate.
   std::vector<mc::Stress4> sigma_n_, sigma_;
@@ -313,6 +325,81 @@ void PlasticProblem::assemble_loads() {
             ((*fe_values_)[displacement].symmetric_gradient(i, 0) * s0) * fe_values_->JxW(0);
   }
   force_scale_ = std::max(f0.l2_norm(), 1e-300);
+  if (spec_.gravity.unit_weight != 0) assemble_base_loads();
+}
+
+// ---------------------------------------------------------------------------
+// Gravity. The released wall traction W has the weight of what was excavated
+// as its resultant: releasing it unbalances the loads, and the three pins
+// would carry the difference as point forces. As in the elastic stage the
+// base of the box takes it instead: t_y = q0 + q1 (x - x_base) on the bottom
+// edge, q0 and q1 such that force and moment of all loads vanish.
+// ---------------------------------------------------------------------------
+
+void PlasticProblem::assemble_base_loads() {
+  FEFaceValues<2> face_values(mapping_, fe_, face_quadrature_,
+                              update_values | update_quadrature_points | update_JxW_values);
+  const FEValuesExtractors::Vector displacement(0);
+  double length = 0, first = 0, second = 0;  // int 1, x, x^2 over the base
+  for (const auto& cell : triangulation_.active_cell_iterators())
+    for (const unsigned int f : cell->face_indices())
+      if (cell->face(f)->at_boundary() && cell->face(f)->user_index() == grid::kBase) {
+        const double x0 = cell->face(f)->vertex(0)[0], x1 = cell->face(f)->vertex(1)[0];
+        const double l = std::abs(x1 - x0);
+        length += l;
+        first += l * 0.5 * (x0 + x1);
+        second += l * (x0 * x0 + x0 * x1 + x1 * x1) / 3;
+      }
+  if (!(length > 0))
+    throw InputError(
+        "insitu mohr_coulomb: with gravity the box needs a horizontal bottom edge: it carries "
+        "the weight the excavation removes (set gravity.unit_weight = 0 for this mesh)");
+  base_length_ = length;
+  base_x_ = first / length;
+  base_inertia_ = second - length * base_x_ * base_x_;
+  base_uniform_.reinit(dof_handler_.n_dofs());
+  base_linear_.reinit(dof_handler_.n_dofs());
+  std::vector<types::global_dof_index> dofs(fe_.n_dofs_per_cell());
+  for (const auto& cell : dof_handler_.active_cell_iterators())
+    for (const unsigned int f : cell->face_indices()) {
+      if (!cell->face(f)->at_boundary() || cell->face(f)->user_index() != grid::kBase) continue;
+      face_values.reinit(cell, f);
+      cell->get_dof_indices(dofs);
+      for (const unsigned int q : face_values.quadrature_point_indices())
+        for (const unsigned int i : face_values.dof_indices()) {
+          const double vy = face_values[displacement].value(i, q)[1] * face_values.JxW(q);
+          base_uniform_(dofs[i]) += vy;
+          base_linear_(dofs[i]) += vy * (face_values.quadrature_point(q)[0] - base_x_);
+        }
+    }
+  box_resultant_ = resultant(box_load_);
+  wall_resultant_ = resultant(wall_load_);
+}
+
+// Force and moment about the origin of nodal forces f.
+std::array<double, 3> PlasticProblem::resultant(const Vector<double>& f) const {
+  std::array<double, 3> r{};
+  std::vector<std::uint8_t> seen(dof_handler_.n_dofs(), 0);
+  for (const auto& cell : dof_handler_.active_cell_iterators())
+    for (const unsigned int v : cell->vertex_indices()) {
+      const auto dx = cell->vertex_dof_index(v, 0), dy = cell->vertex_dof_index(v, 1);
+      if (seen[dx]) continue;
+      seen[dx] = 1;
+      r[0] += f(dx);
+      r[1] += f(dy);
+      r[2] += cell->vertex(v)[0] * f(dy) - cell->vertex(v)[1] * f(dx);
+    }
+  return r;
+}
+
+void PlasticProblem::add_base_correction(const double lambda) {
+  if (spec_.gravity.unit_weight == 0) return;
+  const double Fy = box_resultant_[1] + (1 - lambda) * wall_resultant_[1];
+  const double M = box_resultant_[2] + (1 - lambda) * wall_resultant_[2];
+  // q0 base_length_ = -Fy;  q0 base_length_ base_x_ + q1 base_inertia_ = -M.
+  const double q0 = -Fy / base_length_;
+  const double q1 = base_inertia_ > 0 ? (-M - q0 * base_length_ * base_x_) / base_inertia_ : 0;
+  system_rhs_.add(q0, base_uniform_, q1, base_linear_);
 }
 
 // ---------------------------------------------------------------------------
@@ -361,6 +448,7 @@ double PlasticProblem::assemble(const double lambda) {
                                             system_rhs_);
   }
   system_rhs_.add(1.0, box_load_, 1 - lambda, wall_load_);
+  add_base_correction(lambda);
   for (const auto dof : pins_) system_rhs_(dof) = 0;
   return system_rhs_.l2_norm() / force_scale_;
 }
@@ -446,10 +534,6 @@ std::vector<PlasticField> solve_mohr_coulomb(const mesh::Mesh& mesh, const Insit
                                              const PlasticSpec& plastic) {
   validate(mesh, spec);
   validate(plastic);
-  if (spec.gravity.unit_weight != 0)
-    throw InputError(
-        "insitu mohr_coulomb: gravity.unit_weight = " + std::to_string(spec.gravity.unit_weight) +
-        ": the plastic continuum supports uniform in-situ stress only (set it to 0)");
   if (spec.loading != BoundaryLoading::kFarField)
     throw InputError("insitu mohr_coulomb: the plastic continuum needs far-field box loading");
   if (!spec.materials.rock)

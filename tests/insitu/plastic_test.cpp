@@ -110,6 +110,63 @@ INSTANTIATE_TEST_SUITE_P(Dilation, PlasticRing,
                          ::testing::Values(RingCase{0, "psi_0"}, RingCase{15, "psi_15"}),
                          [](const auto& info) { return std::string(info.param.name); });
 
+// With a strength nothing reaches, the Mohr-Coulomb continuum released to
+// lambda = 1 is the elastic stage's open hole (alpha = 0), computed apart:
+// the same displacements and stresses to solver precision, under the seed's
+// biaxial field and with a lithostatic gradient (whose released weight both
+// hand to the base of the box, each its own way). With a lining installed
+// at lambda = 0.8 it is the elastic stage's lining installed at alpha = 0.2
+// when the softened core has (almost) no stiffness left: the core then
+// presses on the wall with 0.2 sigma0 . n, the fictitious support pressure
+// (the ring's inner vertices, placed differently, are left out).
+class ElasticLimit : public ::testing::TestWithParam<bool> {};  // param: gravity
+
+TEST_P(ElasticLimit, unyielding_rock_is_the_elastic_stage) {
+  const mesh::Mesh m = polar_box_mesh({1.0, 8.0, 64, true, 0.15});
+  InsituSpec spec = seed_spec();
+  spec.solver.kind = LinearSolver::kDirect;
+  if (GetParam()) spec.gravity = Gravity{25e3, 0.0};
+  PlasticSpec plastic;
+  plastic.rock = MohrCoulombStrength{1e15, 30, 0};
+  plastic.release = {0.8, 1.0};
+  std::vector<std::uint8_t> rock_vertex(m.n_vertices(), 0);
+  for (std::size_t t = 0; t < m.n_triangles(); ++t)
+    if (m.zone[t] == mesh::kRock)
+      for (const int v : m.triangles[t]) rock_vertex[v] = 1;
+  for (const bool lined : {false, true}) {
+    spec.lining.active = lined;
+    spec.lining.install_alpha = 0.2;
+    InsituSpec elastic = spec;
+    elastic.materials.core = ElasticMaterial{1e-9 * kE, kNu};
+    elastic.alphas = {1.0, 0.2, 0.0};
+    elastic.lining.install_alpha = 0.2 * (1 - 1e-9);  // joins on the alpha = 0.2 ground
+    const InsituField e = solve_insitu(m, elastic).back();
+    const PlasticField p = solve_mohr_coulomb(m, spec, plastic).back();
+    EXPECT_EQ(p.n_yielded, 0u);
+    double u_max = 0, du = 0, s_max = 0, ds = 0;
+    for (std::size_t v = 0; v < m.n_vertices(); ++v) {
+      if (!rock_vertex[v]) continue;
+      u_max = std::max(u_max, std::hypot(e.ux[v], e.uy[v]));
+      du = std::max(du, std::hypot(p.ux[v] - e.ux[v], p.uy[v] - e.uy[v]));
+    }
+    for (std::size_t t = 0; t < m.n_triangles(); ++t) {
+      ASSERT_EQ(p.active[t], e.active[t]) << t;
+      s_max = std::max(s_max, std::abs(e.stress[t].sxx) + std::abs(e.stress[t].syy));
+      ds = std::max({ds, std::abs(p.stress[t].sxx - e.stress[t].sxx),
+                     std::abs(p.stress[t].syy - e.stress[t].syy),
+                     std::abs(p.stress[t].sxy - e.stress[t].sxy),
+                     std::abs(p.stress[t].szz - e.stress[t].szz)});
+    }
+    std::printf("  gravity %d lined %d: max |du| / max |u| = %.1e, max |ds| / max |s| = %.1e\n",
+                int(GetParam()), int(lined), du / u_max, ds / s_max);
+    EXPECT_LT(du / u_max, 1e-6);
+    EXPECT_LT(ds / s_max, 1e-6);
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(Loading, ElasticLimit, ::testing::Bool(),
+                         [](const auto& info) { return info.param ? "gravity" : "uniform"; });
+
 TEST(PlasticRingClosedForm, reduces_to_lame_at_the_critical_pressure) {
   PlasticRingCase c{2.0, 10 * kMPa, 0, 3e9, 0.25, MohrCoulombStrength{1 * kMPa, 30, 10}};
   c.pi = plastic_ring(c).critical_pressure;

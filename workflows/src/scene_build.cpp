@@ -334,8 +334,6 @@ void read_insitu(const Reader& r, Scene& s) {
     r.fail("insitu.lining_active", "the model has no lining ring (tunnel.lining_thickness = 0)");
   if (in.continuum == "mohr_coulomb" && in.dilation_angle > s.materials.at("rock").friction_angle)
     r.fail("insitu.dilation_angle", "must not exceed materials.rock.friction_angle");
-  if (in.continuum == "mohr_coulomb" && in.unit_weight > 0)
-    r.fail("insitu.continuum", "the Mohr-Coulomb continuum needs unit_weight = 0");
   if (in.continuum == "mohr_coulomb" && !(s.materials.at("rock").cohesion > 0))
     r.fail("insitu.continuum",
            "the Mohr-Coulomb continuum needs materials.rock.cohesion > 0 (without it the "

@@ -52,8 +52,9 @@ struct PlasticField {
   double seconds = 0;                 ///< wall time since the previous field
 };
 
-/// Solves the release sequence. Needs spec.materials.rock (elastic), far-field
-/// loading without gravity. Zones kCore, and kLining until installed, are
+/// Solves the release sequence. Needs spec.materials.rock (elastic) and
+/// far-field loading (gravity allowed: the base of the box then takes the
+/// released weight, as in the elastic stage). Zones kCore, and kLining until installed, are
 /// excavated from the start. Throws InputError for bad input, NumericalError
 /// when a step does not converge after max_halvings.
 std::vector<PlasticField> solve_mohr_coulomb(const mesh::Mesh& mesh, const InsituSpec& spec,
