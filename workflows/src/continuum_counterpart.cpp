@@ -9,6 +9,8 @@
 #include "continuum_comparison.hpp"
 #include "output_dir.hpp"
 #include "rockfdem/coupling/atomic_file.hpp"
+#include "rockfdem/coupling/insitu_grid.hpp"
+#include "rockfdem/coupling/vtk_writer.hpp"
 #include "rockfdem/error.hpp"
 #include "rockfdem/insitu/plastic.hpp"
 #include "rockfdem/mesh/outline.hpp"
@@ -186,6 +188,18 @@ void plot_profiles(const std::vector<Profile>& profiles, const std::string& mode
            "distance from the wall along the ray [m]", "stress [MPa], tension positive", series);
 }
 
+/// The continuum's end state as insitu.vtu is written, with the model named
+/// and, for Mohr-Coulomb, "yielded" per triangle.
+void write_continuum_grid(const mesh::Mesh& m, const ContinuumStates& c, const std::string& path) {
+  coupling::VtkGrid g = coupling::insitu_grid(m, c.end);
+  g.field.text.push_back({"continuum_model", c.model});
+  g.field.text.push_back({"yielded_codes", "1 the triangle flowed plastically, 0 it did not"});
+  if (!c.yielded.empty())
+    g.cell_arrays.push_back(coupling::scalar_array(
+        "yielded", std::vector<std::int32_t>(c.yielded.begin(), c.yielded.end())));
+  coupling::write_vtu(g, path);
+}
+
 nlohmann::json key_points_json(const fdem::Engine& e, const insitu::InsituField& fdem_handoff,
                                const ContinuumStates& c, const std::vector<Monitor>& monitors) {
   static const std::vector<double> none;
@@ -247,6 +261,7 @@ nlohmann::json compare_with_counterpart(const Scene& scene, const mesh::Mesh& m,
   std::vector<Profile> profiles;
   for (const Monitor& mon : monitors) profiles.push_back(ray_profile(m, e, c, mon, 2 * span));
   write_profiles(profiles, output_path(dir, "continuum_profiles.csv"));
+  if (scene.output.vtk) write_continuum_grid(m, c, output_path(dir, "continuum.vtu"));
   if (scene.output.plots) plot_profiles(profiles, c.model, dir, summary, quiet);
   if (c.model == "mohr_coulomb") {
     j["yielded_triangles"] = c.n_yielded;
