@@ -8,20 +8,6 @@
 #include "stage_inputs.hpp"
 
 namespace rockfdem::workflows {
-namespace {
-
-struct L2 {
-  double num = 0, den = 0;
-  void add(double area, const std::array<double, 3>& s, const std::array<double, 3>& ref) {
-    const double dxx = s[0] - ref[0], dyy = s[1] - ref[1], dxy = s[2] - ref[2];
-    num += area * (dxx * dxx + dyy * dyy + 2 * dxy * dxy);
-    den += area * (ref[0] * ref[0] + ref[1] * ref[1] + 2 * ref[2] * ref[2]);
-  }
-  double value() const { return den > 0 ? std::sqrt(num / den) : 0.0; }
-};
-
-}  // namespace
-
 nlohmann::json compare_with_continuum(const Scene& scene, const mesh::Mesh& m,
                                       const fdem::Engine& e, const insitu::InsituField& open_hole,
                                       const std::string& csv_path) {
@@ -29,7 +15,7 @@ nlohmann::json compare_with_continuum(const Scene& scene, const mesh::Mesh& m,
   const double reach = 5 * std::max(h.hx, h.hy);
   insitu::KirschCase k;
   const bool kirsch = kirsch_case(scene, &k);
-  L2 vs_fem, vs_kirsch;
+  StressL2 vs_fem, vs_kirsch;
   std::ostringstream csv;
   csv.precision(10);
   csv << "triangle,x,y,fdem_sxx,fdem_syy,fdem_sxy,fem_sxx,fem_syy,fem_sxy"

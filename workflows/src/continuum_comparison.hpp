@@ -4,6 +4,8 @@
 // per-triangle CSV and relative L2 errors in summary.json ("comparison").
 #pragma once
 
+#include <array>
+#include <cmath>
 #include <nlohmann/json.hpp>
 #include <string>
 
@@ -13,6 +15,18 @@
 #include "rockfdem/workflows/scene.hpp"
 
 namespace rockfdem::workflows {
+
+/// Relative L2 of stresses (sxx, syy, sxy) over an area:
+/// sqrt(sum A |s - ref|^2 / sum A |ref|^2), |s|^2 = sxx^2 + syy^2 + 2 sxy^2.
+struct StressL2 {
+  double num = 0, den = 0;
+  void add(double area, const std::array<double, 3>& s, const std::array<double, 3>& ref) {
+    const double dxx = s[0] - ref[0], dyy = s[1] - ref[1], dxy = s[2] - ref[2];
+    num += area * (dxx * dxx + dyy * dyy + 2 * dxy * dxy);
+    den += area * (ref[0] * ref[0] + ref[1] * ref[1] + 2 * ref[2] * ref[2]);
+  }
+  double value() const { return den > 0 ? std::sqrt(num / den) : 0.0; }
+};
 
 /// Compares over the rock triangles whose centroid lies within 5 half-spans
 /// of the opening's centre (the annulus a <= r <= 5a for a circle); writes

@@ -110,7 +110,8 @@ std::pair<std::string, double> RunOutputs::largest_key_point(
 
 RunOutputs::RunOutputs(const Scene& scene, const CommandLine& cli, RunSummary& summary)
     : scene_(scene), cli_(cli), summary_(summary), pvd_(output_path(cli.output_dir, "fdem.pvd")) {
-  summary_.note_turned_off(scene.output, "fdem.pvd, fdem_NNNN.vtu, insitu.vtu", true);
+  summary_.note_turned_off(scene.output, "fdem.pvd, fdem_NNNN.vtu, insitu.vtu, continuum.vtu",
+                           true);
 }
 
 void RunOutputs::record_insitu(const mesh::Mesh& m,

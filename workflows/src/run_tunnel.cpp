@@ -25,6 +25,7 @@
 #include "checkpoint.hpp"
 #include "commands.hpp"
 #include "continuum_comparison.hpp"
+#include "continuum_counterpart.hpp"
 #include "history.hpp"
 #include "implicit_check.hpp"
 #include "interrupt.hpp"
@@ -356,9 +357,8 @@ int run_tunnel(const Scene& scene, const CommandLine& cli) {
       active_threads();
       summary.json()["comparison"] = compare_with_continuum(
           scene, m, engine, reference, output_path(cli.output_dir, "fdem_vs_continuum.csv"));
-    } else {
-      summary.skipped("comparison with continuum FEM: the lining has no implicit counterpart");
     }
+    compare_with_continuum_counterpart(scene, cli, m, engine, handoff, monitors, summary);
     timer.stamp("insitu");
   }
   const RunVerdict verdict = stages.verdict();

@@ -332,6 +332,8 @@ void read_insitu(const Reader& r, Scene& s) {
   in.rollers = r.boolean("insitu.rollers");
   in.solver = r.text("insitu.solver");
   in.tolerance = r.number("insitu.tolerance");
+  in.continuum = r.text("insitu.continuum");
+  in.dilation_angle = r.number("insitu.dilation_angle");
   if (r.has("insitu.alpha")) in.alpha = r.numbers("insitu.alpha");
   // Each alpha is a whole implicit solve and output (about 12 us per
   // triangle, 107 s for 1000 on the default tunnel): a list past this is a
@@ -351,6 +353,12 @@ void read_insitu(const Reader& r, Scene& s) {
   }
   if (in.lining_active && !s.materials.count("lining"))
     r.fail("insitu.lining_active", "the model has no lining ring (tunnel.lining_thickness = 0)");
+  if (in.continuum == "mohr_coulomb" && in.dilation_angle > s.materials.at("rock").friction_angle)
+    r.fail("insitu.dilation_angle", "must not exceed materials.rock.friction_angle");
+  if (in.continuum == "mohr_coulomb" && !(s.materials.at("rock").cohesion > 0))
+    r.fail("insitu.continuum",
+           "the Mohr-Coulomb continuum needs materials.rock.cohesion > 0 (without it the "
+           "unsupported opening collapses)");
 }
 
 std::array<double, 2> point(const Reader& r, const std::string& path) {

@@ -305,6 +305,14 @@ std::vector<KeySpec> build_schema() {
                      "auto: direct for small systems, else AMG-preconditioned CG."));
   s.push_back(number("insitu.tolerance", "-", "1e-10", 0, true, 1e-3, false,
                      "Relative residual of the iterative solver."));
+  s.push_back(choice("insitu.continuum", "elastic", {"elastic", "mohr_coulomb"},
+                     "The continuum counterpart a tunnel run is compared with once the core is "
+                     "removed (summary continuum_comparison): the elastic stage's sequence, or "
+                     "the Mohr-Coulomb elasto-plastic rock (materials.rock cohesion and "
+                     "friction_angle) with the in-situ wall traction released in steps."));
+  s.push_back(number("insitu.dilation_angle", "deg", "0", 0, false, 90, true,
+                     "Mohr-Coulomb continuum: the rock's dilation angle psi (0: no volume "
+                     "change in plastic flow; at most materials.rock.friction_angle)."));
   // [engine]
   s.push_back(integer("engine.steps", "10000", 1, 1e12,
                       "Explicit steps of a specimen run (tunnels: the cap of each stage)."));

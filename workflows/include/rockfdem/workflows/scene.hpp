@@ -46,6 +46,9 @@ struct InsituSettings {
   /// Outer boundary in the explicit stages: rollers (normal displacement
   /// held at the hand-off's) or the in-situ tractions alone.
   bool rollers = true;
+  /// The continuum counterpart of a tunnel run: "elastic" or "mohr_coulomb".
+  std::string continuum = "elastic";
+  double dilation_angle = 0;  ///< deg, Mohr-Coulomb continuum
 };
 
 struct EngineSettings {
