@@ -19,6 +19,8 @@
 
 namespace fs = std::filesystem;
 using namespace rockfdem;
+using rockfdem::test::error_of;
+using rockfdem::test::has;
 using rockfdem::test::kTestDir;
 using rockfdem::test::read_json;
 using rockfdem::test::read_text;
@@ -29,19 +31,6 @@ using rockfdem::test::scratch;
 namespace {
 
 const std::string kSeed = std::string(ROCKFDEM_SOURCE_DIR) + "/scenes/tunnel-seed.toml";
-
-std::string error_of(const std::function<void()>& f) {
-  try {
-    f();
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "";
-}
-
-bool has(const std::string& text, const std::string& part) {
-  return text.find(part) != std::string::npos;
-}
 
 // OMP_NUM_THREADS set to `value` (unset for nullopt) for the test's scope.
 class ThreadsVariable {

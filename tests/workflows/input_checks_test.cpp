@@ -17,6 +17,8 @@
 
 namespace fs = std::filesystem;
 using namespace rockfdem;
+using rockfdem::test::error_of;
+using rockfdem::test::has;
 using rockfdem::test::kTestDir;
 using rockfdem::test::read_json;
 using rockfdem::test::read_text;
@@ -27,19 +29,6 @@ using rockfdem::test::scratch;
 namespace {
 
 const std::string kSeed = std::string(ROCKFDEM_SOURCE_DIR) + "/scenes/tunnel-seed.toml";
-
-std::string error_of(const std::function<void()>& f) {
-  try {
-    f();
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "";
-}
-
-bool has(const std::string& text, const std::string& part) {
-  return text.find(part) != std::string::npos;
-}
 
 // A radial bolt at 30 deg with its collar `r` from the centre of a circular
 // opening (radius 3 m), 2 m long, in `scene` (good_circular or the lined one,

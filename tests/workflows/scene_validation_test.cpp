@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "cli_runner.hpp"
 #include "rockfdem/error.hpp"
 #include "rockfdem/workflows/scene.hpp"
 #include "rockfdem/workflows/scene_schema.hpp"
@@ -17,6 +18,7 @@
 namespace fs = std::filesystem;
 using namespace rockfdem;
 using namespace rockfdem::workflows;
+using rockfdem::test::error_of;
 
 namespace {
 
@@ -27,15 +29,6 @@ std::string read_file(const std::string& path) {
   std::stringstream s;
   s << in.rdbuf();
   return s.str();
-}
-
-std::string error_of(const std::function<void()>& f) {
-  try {
-    f();
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "";
 }
 
 // Every one of `parts` is in `msg`.
