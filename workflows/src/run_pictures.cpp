@@ -63,15 +63,14 @@ coupling::PictureLines lining_faces(const PictureContext& c) {
 
 // Bolts and cables drawn through their stations (fdem::bolt_sections),
 // each piece coloured by its station's axial force as a share of the bar's
-// yield force fy pi d^2 / 4: compression blue, tension from pale to dark
+// yield force fy pi d^2 / 4: compression cyan, tension from pale to dark
 // red, yielded or broken purple; one legend entry per class drawn.
 std::vector<coupling::PictureLines> bolt_lines(const PictureContext& c) {
-  std::vector<coupling::PictureLines> classes{
-      {"bolt force: compression", {0.2, 0.4, 1.0}, 4, {}},
-      {"bolt force: tension < 25% of yield", {1.0, 0.75, 0.6}, 4, {}},
-      {"bolt force: 25-50% of yield", {0.95, 0.5, 0.35}, 4, {}},
-      {"bolt force: 50-100% of yield", {0.8, 0.15, 0.1}, 4, {}},
-      {"bolt yielded or broken", {0.4, 0.0, 0.5}, 4, {}}};
+  std::vector<coupling::PictureLines> classes{{"bolt: compression", {0.0, 0.75, 0.75}, 4, {}},
+                                              {"bolt: < 25% of yield", {1.0, 0.75, 0.6}, 4, {}},
+                                              {"bolt: 25-50% of yield", {0.95, 0.5, 0.35}, 4, {}},
+                                              {"bolt: 50-100% of yield", {0.8, 0.15, 0.1}, 4, {}},
+                                              {"bolt: yielded, broken", {0.4, 0.0, 0.5}, 4, {}}};
   const BoltSettings& b = c.scene.bolts;
   for (std::size_t i = 0; i < b.segments.size(); ++i) {
     if (!c.bolts || i >= c.bolts->installed.size() || !c.bolts->installed[i]) continue;
