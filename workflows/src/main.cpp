@@ -1,6 +1,6 @@
 // rockfdem: from a tunnel scene to stresses, cracks, convergence and support
 // loads. Errors are caught here once and mapped to the exit codes of
-// product.md: 2 bad input, 3 numerical failure, 1 anything else; 130/143
+// the README: 2 bad input, 3 numerical failure, 1 anything else; 130/143
 // after SIGINT/SIGTERM (interrupt.hpp).
 #include <iostream>
 

@@ -1,6 +1,6 @@
-// summary.json: the fixed keys of product.md, filled as a run goes and
-// written atomically at the end (and after each stage, so an interrupted
-// run still leaves a valid record).
+// summary.json: the fixed keys (docs/output-formats.md), filled as a run
+// goes and written atomically at the end, and where a run stops early (a
+// failure or a signal), so every run leaves a valid record.
 #pragma once
 
 #include <nlohmann/json.hpp>

@@ -1,4 +1,4 @@
-// The `rockfdem` command line (contract: product.md). Parsing is separate
+// The `rockfdem` command line (contract: README.md, "Command line"). Parsing is separate
 // from running so tests can check both without spawning processes.
 #pragma once
 
