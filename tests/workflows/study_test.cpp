@@ -146,6 +146,25 @@ TEST(Study, calibrate_recovers_young_modulus_from_its_own_targets) {
   fs::remove_all(out);
 }
 
+// Runs that stop before their criteria hold (here an unreachable force
+// ratio) give figures that are not equilibrium figures: each scores 100 plus
+// its misfit, and the summary and console say the best met no criteria.
+TEST(Study, calibrate_ranks_runs_not_at_equilibrium_behind_and_says_so) {
+  const fs::path out = scratch("calibrate-unmet");
+  const Result r = run("calibrate " + kScene +
+                       " --set stages[1].ratio=1e-30 --target vault=20 --free "
+                       "materials.rock.young=2e9:2e10 --max-evals 3 -j 1 -o " +
+                       out.string());
+  ASSERT_EQ(r.code, 0) << r.output;
+  EXPECT_NE(r.output.find("no run met its criteria"), std::string::npos) << r.output;
+  const auto s = read_json(out / "calibration_summary.json");
+  EXPECT_EQ(s["best_status"], "not_at_equilibrium");
+  EXPECT_FALSE(s["best_met_its_criteria"].get<bool>());
+  const double misfit = s["targets"][0]["relative_misfit"].get<double>();
+  EXPECT_NEAR(s["objective"].get<double>(), 100 + misfit * misfit, 1e-12);
+  fs::remove_all(out);
+}
+
 // The same sweep on one process and on two MPI ranks gives the same table,
 // every figure bit for bit (the state hashes included); only the measured
 // wall time, the last column, differs.

@@ -46,6 +46,10 @@ double CalibrationProblem::figure(const VariantResult& r, const Target& target) 
                                                   : std::numeric_limits<double>::quiet_NaN();
 }
 
+bool CalibrationProblem::met_its_criteria(const VariantResult& r) {
+  return r.status == "completed";
+}
+
 double CalibrationProblem::objective(const VariantResult& r) const {
   if (r.status == "failed" || r.status == "refused") return kFailedObjective;
   double f = 0;
@@ -54,7 +58,7 @@ double CalibrationProblem::objective(const VariantResult& r) const {
     if (!std::isfinite(s)) return kFailedObjective;
     f += t.weight * std::pow((s - t.value) / t.value, 2);
   }
-  return f;
+  return met_its_criteria(r) ? f : kNotAtEquilibriumObjective + f;
 }
 
 std::vector<Evaluation> CalibrationProblem::run_batch(

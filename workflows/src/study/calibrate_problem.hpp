@@ -27,6 +27,14 @@ class CalibrationProblem {
  public:
   /// A failed run, or one without a target's figure, scores this.
   static constexpr double kFailedObjective = 1e3;
+  /// A run that stopped before its criteria held (`unstable`,
+  /// `not_at_equilibrium`) scores this plus its misfit: its figures are not
+  /// equilibrium figures, so any run that met its criteria with a misfit
+  /// below this ranks ahead of it, and among such runs the search still
+  /// follows the misfit.
+  static constexpr double kNotAtEquilibriumObjective = 1e2;
+  /// Whether a run's figures are answers the targets may be fitted to.
+  static bool met_its_criteria(const VariantResult& r);
 
   CalibrationProblem(const CommandLine& cli, std::vector<FreeKey> free,
                      std::vector<Target> targets);

@@ -71,6 +71,8 @@ nlohmann::json summary_json(const CalibrationProblem& problem, const Evaluation&
                    {"threads_per_run", cli.threads},
                    {"wall_time_s", wall_s},
                    {"best_variant", best.variant.name},
+                   {"best_status", best.result.status},
+                   {"best_met_its_criteria", CalibrationProblem::met_its_criteria(best.result)},
                    {"objective", best.objective}};
   const std::vector<double> v = problem.values(best.x);
   for (std::size_t k = 0; k < v.size(); ++k)
@@ -103,6 +105,11 @@ void print_table(const nlohmann::json& j) {
       j["stop_reason"].get<std::string>().c_str(), j["search_runs"].get<int>(),
       j["runs"].get<int>() - j["search_runs"].get<int>(), j["ranks"].get<int>(),
       j["objective"].get<double>());
+  if (!j["best_met_its_criteria"].get<bool>())
+    std::printf(
+        "  no run met its criteria: the best ended `%s`, so its figures are not equilibrium "
+        "figures and the fit below is no answer\n",
+        j["best_status"].get<std::string>().c_str());
   for (const auto& p : j["parameters"])
     std::printf("  fitted %-32s = %.6g  (bounds %.4g to %.4g)\n",
                 p["key"].get<std::string>().c_str(), p["fitted"].get<double>(),
