@@ -548,10 +548,10 @@ std::string run_dir_of(const std::string& checkpoint) {
   return p.parent_path().parent_path().string();
 }
 
-bool claim_output_dir(const Scene& scene, const CommandLine& cli) {
+bool claim_output_dir(const Scene& scene, const RunContext& ctx) {
   const bool continues_here =
-      !cli.restart.empty() && same_directory(cli.output_dir, run_dir_of(cli.restart));
-  return prepare_output_dir(cli.output_dir, scene, cli.force, continues_here);
+      !ctx.restart.empty() && same_directory(ctx.output_dir, run_dir_of(ctx.restart));
+  return prepare_output_dir(ctx.output_dir, scene, ctx.force, continues_here);
 }
 
 nlohmann::json frames_state(const coupling::PvdCollection& pvd) {

@@ -270,21 +270,20 @@ nlohmann::json compare_with_counterpart(const Scene& scene, const mesh::Mesh& m,
   return j;
 }
 
-void compare_with_continuum_counterpart(const Scene& scene, const CommandLine& cli,
+void compare_with_continuum_counterpart(const Scene& scene, const RunContext& ctx,
                                         const mesh::Mesh& m, const fdem::Engine& e,
                                         const insitu::InsituField& fdem_handoff,
                                         const std::vector<Monitor>& monitors, RunSummary& summary) {
   // A counterpart that cannot be solved leaves the run's own results standing.
   const auto skip = [&](const std::runtime_error& err) {
-    active_threads();
     summary.skipped(std::string("continuum comparison (insitu.continuum = ") +
                     scene.insitu.continuum + "): " + err.what());
   };
   try {
-    const ContinuumStates c = solve_continuum_counterpart(scene, m);
-    active_threads();  // deal.II may have changed OpenMP's thread count
+    const ContinuumStates c =
+        keeping_threads(ctx, [&] { return solve_continuum_counterpart(scene, m); });
     summary.json()["continuum_comparison"] = compare_with_counterpart(
-        scene, m, e, fdem_handoff, c, monitors, cli.output_dir, summary, cli.quiet);
+        scene, m, e, fdem_handoff, c, monitors, ctx.output_dir, summary, ctx.quiet);
   } catch (const InputError& err) {
     skip(err);
   } catch (const NumericalError& err) {
