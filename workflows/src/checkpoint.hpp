@@ -29,7 +29,7 @@ class PvdCollection;
 namespace rockfdem::workflows {
 
 struct Scene;
-class RunSummary;
+class RunRecord;
 
 struct Checkpoint {
   nlohmann::json run;        ///< the workflow's state (stage_runner, run_outputs)
@@ -79,6 +79,6 @@ nlohmann::json frames_state(const coupling::PvdCollection& pvd);
 /// frame from there so the series stays whole, noting in the summary any
 /// that is missing. Returns the number of frames.
 int restore_frames(const nlohmann::json& frames, const std::string& from_dir,
-                   const std::string& to_dir, coupling::PvdCollection& pvd, RunSummary& summary);
+                   const std::string& to_dir, coupling::PvdCollection& pvd, RunRecord& summary);
 
 }  // namespace rockfdem::workflows

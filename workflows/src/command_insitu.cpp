@@ -60,7 +60,7 @@ int command_insitu(const Scene& scene, const RunContext& ctx) {
                      ".msh model; specimens have no in-situ stage");
   const insitu::InsituSpec spec = insitu_spec(scene);
   prepare_output_dir(ctx.output_dir, scene, ctx.force);
-  RunSummary summary(scene, ctx.threads);
+  RunRecord summary(scene, ctx.threads);
 
   mesh::MeshReport report;
   const mesh::Mesh m = keeping_threads(ctx, [&] { return mesh::build_mesh(scene.mesh, &report); });
@@ -75,7 +75,7 @@ int command_insitu(const Scene& scene, const RunContext& ctx) {
   summary.note_turned_off(scene.output, "insitu.vtu, insitu.pvd, insitu_NN.vtu", false);
   summary.record_mesh(m, report);
   summary.record_insitu_state(fields.back());
-  auto& j = summary.json();
+  auto& j = summary.figures();
   j["insitu"]["alpha"] = nlohmann::json::array();
   j["insitu"]["solver_iterations"] = nlohmann::json::array();
   j["insitu"]["stages"] = nlohmann::json::array();
@@ -102,12 +102,12 @@ int command_insitu(const Scene& scene, const RunContext& ctx) {
       std::cout << "Kirsch: relative L2 stress error over a <= r <= 5a: " << c.stress_rel_l2 << " ("
                 << c.n_triangles << " triangles); wall u_r error " << c.wall_ur_rel_l2 << '\n';
   } else {
-    summary.skipped(
+    summary.skipped.push_back(
         "Kirsch comparison: needs a circular opening without lining, uniform stress "
         "and a last alpha of 0");
   }
-  summary.skipped("fdem: `rockfdem insitu` runs the implicit stage only");
-  j["status"] = "completed";
+  summary.skipped.push_back("fdem: `rockfdem insitu` runs the implicit stage only");
+  summary.status = "completed";
   timer.stamp("output");
   summary.set_timings(timer);
   summary.write(output_path(ctx.output_dir, "summary.json"));

@@ -19,7 +19,7 @@ namespace rockfdem::workflows {
 int command_mesh(const Scene& scene, const RunContext& ctx) {
   PhaseTimer timer;
   prepare_output_dir(ctx.output_dir, scene, ctx.force);
-  RunSummary summary(scene, ctx.threads);
+  RunRecord summary(scene, ctx.threads);
   mesh::MeshReport report;
   const mesh::Mesh m = keeping_threads(ctx, [&] { return mesh::build_mesh(scene.mesh, &report); });
   timer.stamp("mesh");
@@ -32,8 +32,8 @@ int command_mesh(const Scene& scene, const RunContext& ctx) {
 
   summary.record_mesh(m, report);
   summary.note_turned_off(scene.output, "mesh.vtu", true);
-  summary.skipped("insitu, fdem: `rockfdem mesh` meshes only");
-  summary.json()["status"] = "completed";
+  summary.skipped.push_back("insitu, fdem: `rockfdem mesh` meshes only");
+  summary.status = "completed";
   summary.set_timings(timer);
   summary.write(output_path(ctx.output_dir, "summary.json"));
   if (!ctx.quiet) {

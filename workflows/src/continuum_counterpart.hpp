@@ -50,7 +50,7 @@ nlohmann::json compare_with_counterpart(const Scene& scene, const mesh::Mesh& m,
                                         const insitu::InsituField& fdem_handoff,
                                         const ContinuumStates& c,
                                         const std::vector<Monitor>& monitors,
-                                        const std::string& dir, RunSummary& summary, bool quiet);
+                                        const std::string& dir, RunRecord& summary, bool quiet);
 
 /// Both of the above for a finished tunnel run, into summary
 /// "continuum_comparison"; a counterpart that cannot be solved (e.g. the
@@ -58,6 +58,6 @@ nlohmann::json compare_with_counterpart(const Scene& scene, const mesh::Mesh& m,
 void compare_with_continuum_counterpart(const Scene& scene, const RunContext& ctx,
                                         const mesh::Mesh& m, const fdem::Engine& e,
                                         const insitu::InsituField& fdem_handoff,
-                                        const std::vector<Monitor>& monitors, RunSummary& summary);
+                                        const std::vector<Monitor>& monitors, RunRecord& summary);
 
 }  // namespace rockfdem::workflows

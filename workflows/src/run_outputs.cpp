@@ -108,7 +108,7 @@ std::pair<std::string, double> RunOutputs::largest_key_point(
   return most;
 }
 
-RunOutputs::RunOutputs(const Scene& scene, const RunContext& ctx, RunSummary& summary)
+RunOutputs::RunOutputs(const Scene& scene, const RunContext& ctx, RunRecord& summary)
     : scene_(scene), ctx_(ctx), summary_(summary), pvd_(output_path(ctx.output_dir, "fdem.pvd")) {
   summary_.note_turned_off(scene.output, "fdem.pvd, fdem_NNNN.vtu, insitu.vtu, continuum.vtu",
                            true);
@@ -117,7 +117,7 @@ RunOutputs::RunOutputs(const Scene& scene, const RunContext& ctx, RunSummary& su
 void RunOutputs::record_insitu(const mesh::Mesh& m,
                                const std::vector<insitu::InsituField>& fields) {
   fields_ = fields;
-  auto& j = summary_.json()["insitu"];
+  auto& j = summary_.figures()["insitu"];
   j["alpha"] = nlohmann::json::array();
   j["solver_iterations"] = nlohmann::json::array();
   for (const insitu::InsituField& f : fields) {
@@ -248,7 +248,7 @@ nlohmann::json RunOutputs::monitors_json(const fdem::Engine& e,
 }
 
 void RunOutputs::report_dt() {
-  auto& j = summary_.json();
+  auto& j = summary_.figures();
   // Steps and time add up: the hand-off step, then each stage's (dt is
   // constant within a stage: the limit changes only with a stage's changes).
   double lo = j["dt"].get<double>(), hi = lo;
@@ -344,23 +344,23 @@ void RunOutputs::lining_outputs(const fdem::Engine& e, const mesh::Mesh& m) {
   if (n_bond > 0) j = {{"interface_cracks", n_bond}, {"interface_broken", broken}};
   if (lining_ && lining_installed_ && lining_->installed(e)) lining_->finish(e, ctx_.output_dir, j);
   if (!j.empty())
-    summary_.json()["lining"] = j;
+    summary_.figures()["lining"] = j;
   else if (has_lining_ring(scene_))
-    summary_.skipped("lining: the ring is not installed at the end of the run");
+    summary_.skipped.push_back("lining: the ring is not installed at the end of the run");
 }
 
 void RunOutputs::bolt_outputs(const fdem::Engine& e, const fdem::BoltPlan& bolts) {
-  summary_.json()["counts"]["bolts"] = bolts.specs.size();
+  summary_.figures()["counts"]["bolts"] = bolts.specs.size();
   if (bolt_results_)
     bolt_results_->finish(e, summary_);
   else
-    summary_.skipped("bolts: none in the scene");
+    summary_.skipped.push_back("bolts: none in the scene");
 }
 
 void RunOutputs::finish(const fdem::Engine& e, const mesh::Mesh& m,
                         const std::vector<Monitor>& monitors, PhaseTimer& timer,
                         const fdem::BoltPlan& bolts) {
-  auto& j = summary_.json();
+  auto& j = summary_.figures();
   report_engine(e, timer, summary_);
   warn_if_unbalanced(e, energy_floor_, ctx_.quiet, summary_);
   report_dt();
@@ -407,12 +407,12 @@ void RunOutputs::finish(const fdem::Engine& e, const mesh::Mesh& m,
 }
 
 void RunOutputs::damage_outputs(const fdem::Engine& e, const mesh::Mesh& m) {
-  auto& j = summary_.json();
+  auto& j = summary_.figures();
   const Resolution r = fracture_resolution(scene_, &m);
   j["resolution"] = {
       {"h_m", r.h}, {"l_ch_m", r.l_ch}, {"h_over_l_ch", r.ratio}, {"limit", kResolutionLimit}};
   const auto warn = [&](const std::string& msg) {
-    j["warnings"].push_back(msg);
+    summary_.warnings.push_back(msg);
     if (!ctx_.quiet) std::cerr << "warning: " << msg << '\n';
   };
   char msg[500];
@@ -443,7 +443,7 @@ void RunOutputs::damage_outputs(const fdem::Engine& e, const mesh::Mesh& m) {
 
 std::vector<StageSpan> RunOutputs::timeline() const {
   // The spans point into the summary's stage report: take it by reference.
-  const auto& j = summary_.json();
+  const auto& j = summary_.figures();
   const auto fdem = j.find("fdem");
   if (!history_ || history_->rows().empty() || fdem == j.end() || !fdem->contains("stages"))
     return {};
@@ -459,7 +459,7 @@ std::optional<std::size_t> RunOutputs::support_row() const {
 
 std::map<std::string, double> RunOutputs::since_support() const {
   const std::optional<std::size_t> row = support_row();
-  const auto& mon = summary_.json().value("monitors", nlohmann::json::object());
+  const auto& mon = summary_.figures().value("monitors", nlohmann::json::object());
   std::map<std::string, double> out;
   if (!row) return out;
   const auto add = [&](const std::string& name, const std::string& column,
@@ -480,7 +480,7 @@ void RunOutputs::write_report() const {
   ReportExtras extras;
   extras.since_support_mm = since_support();
   extras.pictures = pictures_;
-  workflows::write_report(ctx_.output_dir, scene_, summary_.json(), extras);
+  workflows::write_report(ctx_.output_dir, scene_, summary_.to_json(), extras);
 }
 
 void RunOutputs::plots(const fdem::Engine& e, const mesh::Mesh& m) {
@@ -539,7 +539,7 @@ void RunOutputs::ground_reaction_plot(PlotWriter& plots) {
   // allows), and apart the run's final state, which is no point of the
   // unsupported curve: the support carries the load there.
   std::vector<double> ratio, settlement;
-  const nlohmann::json& grc = summary_.json()["ground_reaction_curve"];
+  const nlohmann::json& grc = summary_.figures()["ground_reaction_curve"];
   for (std::size_t i = 0; i + 1 < grc.size(); ++i) {
     ratio.push_back(grc[i]["support_pressure_ratio"].get<double>());
     settlement.push_back(grc[i]["vault_settlement_mm"].get<double>());

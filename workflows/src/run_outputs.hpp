@@ -29,7 +29,7 @@ namespace rockfdem::workflows {
 
 class RunOutputs {
  public:
-  RunOutputs(const Scene& scene, const RunContext& ctx, RunSummary& summary);
+  RunOutputs(const Scene& scene, const RunContext& ctx, RunRecord& summary);
   /// summary.json's insitu keys and the implicit part of the ground reaction curve.
   void record_insitu(const mesh::Mesh& m, const std::vector<insitu::InsituField>& fields);
   /// Starts history.csv; `m`'s outer boundary defines the rigid translation
@@ -127,7 +127,7 @@ class RunOutputs {
                      const std::string& b) const;
   const Scene& scene_;
   const RunContext& ctx_;
-  RunSummary& summary_;
+  RunRecord& summary_;
   std::vector<insitu::InsituField> fields_;
   std::unique_ptr<History> history_;
   std::unique_ptr<Instruments> instruments_;

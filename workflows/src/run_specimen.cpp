@@ -50,7 +50,7 @@ std::vector<std::string> history_columns(bool disc) {
 class SpecimenRun {
  public:
   SpecimenRun(const Scene& scene, const RunContext& ctx, const mesh::Mesh& m, fdem::Engine& e,
-              RunSummary& summary, PhaseTimer& timer)
+              RunRecord& summary, PhaseTimer& timer)
       : scene_(scene),
         ctx_(ctx),
         m_(m),
@@ -80,7 +80,7 @@ class SpecimenRun {
         restore_frames(s.at("frames"), run_dir_of(ctx_.restart), ctx_.output_dir, pvd_, summary_);
     load_.restore(s.at("load"));
     last_checkpoint_ = s.at("last_checkpoint").get<long>();
-    summary_.json()["restarted_from"] = {{"checkpoint", ctx_.restart}, {"step", e_.step_count()}};
+    summary_.restarted_from = CheckpointMark{ctx_.restart, e_.step_count()};
   }
 
   void run() {
@@ -114,15 +114,15 @@ class SpecimenRun {
   }
 
   void finish() {
-    auto& j = summary_.json();
+    auto& j = summary_.figures();
     if (scene_.output.plots)
       specimen_plots(e_, history_, disc_, ctx_.output_dir, summary_, ctx_.quiet);
     timer_.stamp("output");
-    j["status"] = "completed";
+    summary_.status = "completed";
     report_engine(e_, timer_, summary_);
     warn_if_unbalanced(e_, floor_, ctx_.quiet, summary_);
     j["specimen"] = load_.report();
-    summary_.skipped("insitu: a specimen starts stress-free");
+    summary_.skipped.push_back("insitu: a specimen starts stress-free");
     summary_.set_timings(timer_);
     summary_.write(output_path(ctx_.output_dir, "summary.json"));
     if (!ctx_.quiet)
@@ -183,7 +183,7 @@ class SpecimenRun {
     e_.save_state(bytes);
     c.engine_state = bytes.str();
     const std::string path = write_checkpoint(ctx_.output_dir, e_.step_count(), scene_, c);
-    summary_.json()["checkpoint"] = {{"last", path}, {"step", e_.step_count()}};
+    summary_.checkpoint = CheckpointMark{path, e_.step_count()};
     last_checkpoint_ = e_.step_count();
   }
 
@@ -192,14 +192,14 @@ class SpecimenRun {
     const std::string why = "interrupted by signal " + std::to_string(sig) + " at step " +
                             std::to_string(e_.step_count());
     report_engine(e_, timer_, summary_);
-    summary_.json()["specimen"] = load_.report();
+    summary_.figures()["specimen"] = load_.report();
     write_summary("interrupted", why);
     throw Interrupted(sig, why + "; outputs and a checkpoint are written");
   }
 
   void write_summary(const char* status, const std::string& why) {
-    summary_.json()["status"] = status;
-    summary_.json()["failure"] = why;
+    summary_.status = status;
+    summary_.failure = why;
     summary_.set_timings(timer_);
     summary_.write(output_path(ctx_.output_dir, "summary.json"));
   }
@@ -221,7 +221,7 @@ class SpecimenRun {
   const RunContext& ctx_;
   const mesh::Mesh& m_;
   fdem::Engine& e_;
-  RunSummary& summary_;
+  RunRecord& summary_;
   PhaseTimer& timer_;
   bool disc_;
   PlatenLoad load_;
@@ -240,7 +240,7 @@ int run_specimen(const Scene& scene, const RunContext& ctx) {
   // A bad checkpoint is refused before anything is written.
   const bool restart = !ctx.restart.empty();
   const Checkpoint resume = restart ? read_checkpoint(ctx.restart, scene) : Checkpoint{};
-  RunSummary summary(scene, ctx.threads);
+  RunRecord summary(scene, ctx.threads);
   summary.note_turned_off(scene.output, "fdem.pvd, fdem_NNNN.vtu", true);
   mesh::MeshReport report;
   const mesh::Mesh m = keeping_threads(ctx, [&] { return mesh::build_mesh(scene.mesh, &report); });

@@ -137,12 +137,12 @@ double restore_before_writing(const Checkpoint& resume, const std::string& file,
 
 // A signal between the implicit phases: nothing to checkpoint yet. The
 // scene is valid, so the output directory may be made for the summary.
-void stop_if_interrupted(const Scene& scene, RunSummary& summary, const RunContext& ctx,
+void stop_if_interrupted(const Scene& scene, RunRecord& summary, const RunContext& ctx,
                          const PhaseTimer& timer, const char* after) {
   const int sig = interrupt_requested();
   if (!sig) return;
   claim_output_dir(scene, ctx);
-  summary.json()["status"] = "interrupted";
+  summary.status = "interrupted";
   summary.set_timings(timer);
   summary.write(output_path(ctx.output_dir, "summary.json"));
   throw Interrupted(sig, std::string("interrupted by signal ") + std::to_string(sig) + " after " +
@@ -223,7 +223,7 @@ int run_tunnel(const Scene& scene, const RunContext& ctx) {
   // A bad checkpoint is refused before anything is written.
   const bool restart = !ctx.restart.empty();
   const Checkpoint resume = restart ? read_checkpoint(ctx.restart, scene) : Checkpoint{};
-  RunSummary summary(scene, ctx.threads);
+  RunRecord summary(scene, ctx.threads);
   RunOutputs out(scene, ctx, summary);
 
   // Nothing is written until the engine has accepted the scene (engine.dt
@@ -245,8 +245,8 @@ int run_tunnel(const Scene& scene, const RunContext& ctx) {
     // implicit results alone.
     write_first_outputs(scene, ctx, restart, m, fields, out);
     timer.stamp("output");
-    summary.skipped("fdem: the scene's only stage is the implicit in-situ stage");
-    summary.json()["status"] = "completed";
+    summary.skipped.push_back("fdem: the scene's only stage is the implicit in-situ stage");
+    summary.status = "completed";
     summary.set_timings(timer);
     summary.write(output_path(ctx.output_dir, "summary.json"));
     return 0;
@@ -301,7 +301,7 @@ int run_tunnel(const Scene& scene, const RunContext& ctx) {
     } catch (const InputError& e) {
       throw InputError(ctx.restart + ": " + e.what());
     }
-    summary.json()["restarted_from"] = {{"checkpoint", ctx.restart}, {"step", engine.step_count()}};
+    summary.restarted_from = CheckpointMark{ctx.restart, engine.step_count()};
   } else {
     reporting_failure(scene, out, engine, timer, [&] {
       out.record_step(engine, m, monitors, timer, "handoff", handoff.alpha);
@@ -318,18 +318,18 @@ int run_tunnel(const Scene& scene, const RunContext& ctx) {
         engine.save_state(bytes);
         c.engine_state = bytes.str();
         const std::string path = write_checkpoint(ctx.output_dir, engine.step_count(), scene, c);
-        summary.json()["checkpoint"] = {{"last", path}, {"step", engine.step_count()}};
+        summary.checkpoint = CheckpointMark{path, engine.step_count()};
       });
   try {
     stages.run_all(timer);
   } catch (const Interrupted&) {
-    summary.json()["status"] = "interrupted";
-    summary.json()["fdem"] = {{"stages", stages.report()}};
+    summary.status = "interrupted";
+    summary.figures()["fdem"] = {{"stages", stages.report()}};
     out.finish(engine, m, monitors, timer, bolts);
     throw;
   } catch (const NumericalError& e) {
     // The frames and history rows written so far are the last good output.
-    summary.json()["fdem"] = {{"stages", stages.report()}};
+    summary.figures()["fdem"] = {{"stages", stages.report()}};
     const std::string why = with_likely_cause(scene, e.what());
     out.report_failure(engine, timer, why);
     throw NumericalError(why);
@@ -341,7 +341,7 @@ int run_tunnel(const Scene& scene, const RunContext& ctx) {
         dt ? scene.source + ": key 'engine.dt' = " + detail::number_text(scene.engine.dt) +
                  " s: " + e.what() + " (engine.dt = 0 follows the limit through every stage)"
            : scene.source + ": " + e.what();
-    summary.json()["fdem"] = {{"stages", stages.report()}};
+    summary.figures()["fdem"] = {{"stages", stages.report()}};
     out.report_failure(engine, timer, why);
     throw InputError(why);
   }
@@ -354,27 +354,27 @@ int run_tunnel(const Scene& scene, const RunContext& ctx) {
     if (!has_lining_ring(scene)) {
       const insitu::InsituField reference =
           keeping_threads(ctx, [&] { return insitu::solve_insitu(m, open).back(); });
-      summary.json()["comparison"] = compare_with_continuum(
+      summary.figures()["comparison"] = compare_with_continuum(
           scene, m, engine, reference, output_path(ctx.output_dir, "fdem_vs_continuum.csv"));
     }
     compare_with_continuum_counterpart(scene, ctx, m, engine, handoff, monitors, summary);
     timer.stamp("insitu");
   }
   const RunVerdict verdict = stages.verdict();
-  summary.json()["status"] = verdict.status;
+  summary.status = verdict.status;
   if (!verdict.message.empty()) {
-    summary.json()["status_reason"] = verdict.message;
-    summary.json()["warnings"].push_back(verdict.status + ": " + verdict.message);
+    summary.status_reason = verdict.message;
+    summary.warnings.push_back(verdict.status + ": " + verdict.message);
     std::cerr << "warning: " << verdict.status << ": " << verdict.message << '\n';
   }
-  summary.json()["damping"] = {{"local", stage_damping(scene).local},
-                               {"mass_proportional", scene.engine.mass_damping},
-                               {"kinetic", scene.engine.kinetic_damping},
-                               {"local_given", scene.engine.local_damping >= 0}};
-  summary.json()["fdem"] = {{"unbalanced_ratio_at_start", start_ratio},
-                            {"unbalanced_ratio_at_end", engine.unbalanced_force_ratio()},
-                            {"handoff_alpha", handoff.alpha},
-                            {"stages", stages.report()}};
+  summary.figures()["damping"] = {{"local", stage_damping(scene).local},
+                                  {"mass_proportional", scene.engine.mass_damping},
+                                  {"kinetic", scene.engine.kinetic_damping},
+                                  {"local_given", scene.engine.local_damping >= 0}};
+  summary.figures()["fdem"] = {{"unbalanced_ratio_at_start", start_ratio},
+                               {"unbalanced_ratio_at_end", engine.unbalanced_force_ratio()},
+                               {"handoff_alpha", handoff.alpha},
+                               {"stages", stages.report()}};
   out.finish(engine, m, monitors, timer, bolts);
   if (!ctx.quiet)
     std::cout << "status: " << verdict.status
