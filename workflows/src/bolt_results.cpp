@@ -171,16 +171,16 @@ nlohmann::json BoltResults::summary_entry(const fdem::Engine& e, std::size_t b,
   return j;
 }
 
-void BoltResults::finish(const fdem::Engine& e, RunSummary& summary) const {
+void BoltResults::finish(const fdem::Engine& e, RunRecord& summary) const {
   const auto now = profiles(e, plan_);
   nlohmann::json list = nlohmann::json::array();
   for (std::size_t b = 0; b < now.size(); ++b) list.push_back(summary_entry(e, b, now[b]));
   const fdem::BoltCounts all = fdem::bolt_counts(e, plan_, -1);
-  summary.json()["bolts"] = {{"count", plan_.specs.size()},
-                             {"steel_cracks_yielding", all.yielding},
-                             {"steel_cracks_broken", all.broken},
-                             {"grout_cracks_broken", all.grout_broken},
-                             {"each", list}};
+  summary.figures()["bolts"] = {{"count", plan_.specs.size()},
+                                {"steel_cracks_yielding", all.yielding},
+                                {"steel_cracks_broken", all.broken},
+                                {"grout_cracks_broken", all.grout_broken},
+                                {"each", list}};
 }
 
 nlohmann::json BoltResults::state() const {

@@ -32,7 +32,7 @@ class BoltResults {
   /// bolts.pvd at `time`; nothing while no bolt is installed.
   void write_frame(const std::string& file, const coupling::VtkFieldData& frame);
   /// bolt_NN.csv (final profiles) and summary "bolts".
-  void finish(const fdem::Engine& e, RunSummary& summary) const;
+  void finish(const fdem::Engine& e, RunRecord& summary) const;
   /// One bolt's summary entry; writes its bolt_NN.csv when installed.
   nlohmann::json summary_entry(const fdem::Engine& e, std::size_t b,
                                const std::vector<fdem::BoltStation>& final_profile) const;

@@ -50,13 +50,12 @@ long probe_steps(std::size_t triangles) {
 
 }  // namespace
 
-Probe probe_scene(const Scene& scene) {
+Probe probe_scene(const Scene& scene, const RunContext& ctx) {
   Probe p;
-  p.threads = active_threads();
+  p.threads = ctx.threads;
   const Clock::time_point t0 = Clock::now();
   mesh::MeshReport report;
-  const mesh::Mesh m = mesh::build_mesh(scene.mesh, &report);
-  active_threads();  // gmsh may have changed the thread count
+  const mesh::Mesh m = keeping_threads(ctx, [&] { return mesh::build_mesh(scene.mesh, &report); });
   p.mesh_seconds = seconds_since(t0);
   p.triangles = m.n_triangles();
   p.fracture_triangles = std::size_t(std::count(m.fracture.begin(), m.fracture.end(), 1));
@@ -64,8 +63,8 @@ Probe probe_scene(const Scene& scene) {
 
   const bool tunnel =
       scene.mesh.kind == mesh::ModelKind::kTunnel || scene.mesh.kind == mesh::ModelKind::kMshFile;
-  fdem::ModelInput in = tunnel ? engine_input(scene, m, unstressed_handoff(scene, m))
-                               : specimen_model_input(scene, m, active_threads());
+  fdem::ModelInput in = tunnel ? engine_input(scene, m, unstressed_handoff(scene, m), ctx.threads)
+                               : specimen_model_input(scene, m, ctx.threads);
   const fdem::DampingSettings start_damping = in.damping;
   fdem::Engine engine = make_engine(in, scene, false);
   if (tunnel) {

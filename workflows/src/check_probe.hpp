@@ -8,6 +8,7 @@
 
 #include "rockfdem/mesh/mesh.hpp"
 #include "rockfdem/workflows/scene.hpp"
+#include "run_context.hpp"
 
 namespace rockfdem::workflows {
 
@@ -32,8 +33,8 @@ inline constexpr double kProbeTriangleLimit = 400000;
 
 /// Builds the scene's mesh and its engine at the hand-off (tunnels: the
 /// in-situ stress left out, the core at the last alpha; specimens: between
-/// their platens) on active_threads() threads, and times `steps` steps.
+/// their platens) on ctx.threads threads, and times `steps` steps.
 /// Throws what meshing or the engine throws for bad input.
-Probe probe_scene(const Scene& scene);
+Probe probe_scene(const Scene& scene, const RunContext& ctx);
 
 }  // namespace rockfdem::workflows

@@ -548,10 +548,10 @@ std::string run_dir_of(const std::string& checkpoint) {
   return p.parent_path().parent_path().string();
 }
 
-bool claim_output_dir(const Scene& scene, const CommandLine& cli) {
+bool claim_output_dir(const Scene& scene, const RunContext& ctx) {
   const bool continues_here =
-      !cli.restart.empty() && same_directory(cli.output_dir, run_dir_of(cli.restart));
-  return prepare_output_dir(cli.output_dir, scene, cli.force, continues_here);
+      !ctx.restart.empty() && same_directory(ctx.output_dir, run_dir_of(ctx.restart));
+  return prepare_output_dir(ctx.output_dir, scene, ctx.force, continues_here);
 }
 
 nlohmann::json frames_state(const coupling::PvdCollection& pvd) {
@@ -561,7 +561,7 @@ nlohmann::json frames_state(const coupling::PvdCollection& pvd) {
 }
 
 int restore_frames(const nlohmann::json& frames, const std::string& from_dir,
-                   const std::string& to_dir, coupling::PvdCollection& pvd, RunSummary& summary) {
+                   const std::string& to_dir, coupling::PvdCollection& pvd, RunRecord& summary) {
   std::error_code same_ec;
   const bool same_dir = fs::equivalent(from_dir, to_dir, same_ec);
   int n = 0;
@@ -573,7 +573,9 @@ int restore_frames(const nlohmann::json& frames, const std::string& from_dir,
       std::error_code ec;
       fs::copy_file(output_path(from_dir, name), output_path(to_dir, name),
                     fs::copy_options::overwrite_existing, ec);
-      if (ec) summary.skipped("frame " + name + " of the restarted run: not found in " + from_dir);
+      if (ec)
+        summary.skipped.push_back("frame " + name + " of the restarted run: not found in " +
+                                  from_dir);
     }
     pvd.add(f.at(0).get<double>(), name);
     ++n;

@@ -20,7 +20,7 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
-#include "rockfdem/workflows/cli.hpp"
+#include "run_context.hpp"
 
 namespace rockfdem::coupling {
 class PvdCollection;
@@ -29,7 +29,7 @@ class PvdCollection;
 namespace rockfdem::workflows {
 
 struct Scene;
-class RunSummary;
+class RunRecord;
 
 struct Checkpoint {
   nlohmann::json run;        ///< the workflow's state (stage_runner, run_outputs)
@@ -69,7 +69,7 @@ std::string run_dir_of(const std::string& checkpoint);
 /// earlier run's outputs first, except where a restart continues that run.
 /// Returns whether an earlier run had claimed the folder (whose checkpoints
 /// a fresh run then removes: remove_checkpoints).
-bool claim_output_dir(const Scene& scene, const CommandLine& cli);
+bool claim_output_dir(const Scene& scene, const RunContext& ctx);
 
 /// A run state's frame list: [time, file name] per ParaView frame.
 nlohmann::json frames_state(const coupling::PvdCollection& pvd);
@@ -79,6 +79,6 @@ nlohmann::json frames_state(const coupling::PvdCollection& pvd);
 /// frame from there so the series stays whole, noting in the summary any
 /// that is missing. Returns the number of frames.
 int restore_frames(const nlohmann::json& frames, const std::string& from_dir,
-                   const std::string& to_dir, coupling::PvdCollection& pvd, RunSummary& summary);
+                   const std::string& to_dir, coupling::PvdCollection& pvd, RunRecord& summary);
 
 }  // namespace rockfdem::workflows

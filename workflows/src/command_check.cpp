@@ -287,7 +287,7 @@ void print_probe(const Scene& scene, const Probe& p) {
 
 // Without a probe (a model above kProbeTriangleLimit): the figures from
 // check's estimate and the documented constants above.
-void print_constants(const Scene& scene, const Estimate& e, double cp) {
+void print_constants(const Scene& scene, const Estimate& e, double cp, int threads) {
   const MaterialSpec& rock = scene.materials.at("rock");
   // A gmsh Frontal-Delaunay mesh's smallest altitude is about 0.3 of the
   // near size (measured: 0.095 m at 0.35 m); crack penalties p = f E stiffen
@@ -314,15 +314,14 @@ void print_constants(const Scene& scene, const Estimate& e, double cp) {
       "  run time (bound):           %.0f s at most on %d idle thread%s (measured throughput "
       "of the 2-core development machine: 8-11 M triangle-steps/s per thread, 12 us per "
       "triangle per alpha; x %.1f margin)\n",
-      kTimeMargin * run_seconds(scene, e, active_threads()), active_threads(),
-      active_threads() == 1 ? "" : "s", kTimeMargin);
+      kTimeMargin * run_seconds(scene, e, threads), threads, threads == 1 ? "" : "s", kTimeMargin);
   std::printf("  stable time step (approx):  %.3g s on true masses (from the smallest altitude)\n",
               dt);
 }
 
 }  // namespace
 
-int command_check(const Scene& scene, const CommandLine& /*cli*/) {
+int command_check(const Scene& scene, const RunContext& ctx) {
   const Estimate e = estimate(scene);
   const double cp = p_wave_speed(scene.materials.at("rock"), scene.plane_stress);
   std::printf("scene %s: valid\n", scene.source.c_str());
@@ -343,11 +342,11 @@ int command_check(const Scene& scene, const CommandLine& /*cli*/) {
                    r.ratio, kResolutionLimit);
   }
   if (e.triangles <= kProbeTriangleLimit)
-    print_probe(scene, probe_scene(scene));
+    print_probe(scene, probe_scene(scene, ctx));
   else
-    print_constants(scene, e, cp);
+    print_constants(scene, e, cp, ctx.threads);
   std::printf("  P-wave speed of rock:       %.1f m/s\n", cp);
-  std::printf("  threads:                    %d\n", active_threads());
+  std::printf("  threads:                    %d\n", ctx.threads);
   return 0;
 }
 

@@ -52,31 +52,30 @@ void write_fields(const mesh::Mesh& m, const std::vector<insitu::InsituField>& f
 
 }  // namespace
 
-int command_insitu(const Scene& scene, const CommandLine& cli) {
+int command_insitu(const Scene& scene, const RunContext& ctx) {
   PhaseTimer timer;
   if (scene.mesh.kind != mesh::ModelKind::kTunnel && scene.mesh.kind != mesh::ModelKind::kMshFile)
     throw InputError(scene.source +
                      ": key 'model.kind': `rockfdem insitu` needs a tunnel or a "
                      ".msh model; specimens have no in-situ stage");
   const insitu::InsituSpec spec = insitu_spec(scene);
-  prepare_output_dir(cli.output_dir, scene, cli.force);
-  RunSummary summary(scene, active_threads());
+  prepare_output_dir(ctx.output_dir, scene, ctx.force);
+  RunRecord summary(scene, ctx.threads);
 
   mesh::MeshReport report;
-  const mesh::Mesh m = mesh::build_mesh(scene.mesh, &report);
-  active_threads();
+  const mesh::Mesh m = keeping_threads(ctx, [&] { return mesh::build_mesh(scene.mesh, &report); });
   timer.stamp("mesh");
-  const std::vector<insitu::InsituField> fields = insitu::solve_insitu(m, spec);
-  active_threads();
+  const std::vector<insitu::InsituField> fields =
+      keeping_threads(ctx, [&] { return insitu::solve_insitu(m, spec); });
   check_implicit_field(scene, m, fields);
   timer.stamp("insitu");
 
-  mesh::write_msh(m, output_path(cli.output_dir, "mesh.msh"));
-  if (scene.output.vtk) write_fields(m, fields, cli.output_dir);
+  mesh::write_msh(m, output_path(ctx.output_dir, "mesh.msh"));
+  if (scene.output.vtk) write_fields(m, fields, ctx.output_dir);
   summary.note_turned_off(scene.output, "insitu.vtu, insitu.pvd, insitu_NN.vtu", false);
   summary.record_mesh(m, report);
   summary.record_insitu_state(fields.back());
-  auto& j = summary.json();
+  auto& j = summary.figures();
   j["insitu"]["alpha"] = nlohmann::json::array();
   j["insitu"]["solver_iterations"] = nlohmann::json::array();
   j["insitu"]["stages"] = nlohmann::json::array();
@@ -97,22 +96,22 @@ int command_insitu(const Scene& scene, const CommandLine& cli) {
     j["insitu"]["kirsch_rel_l2"] = c.stress_rel_l2;
     j["insitu"]["kirsch_wall_ur_rel_l2"] = c.wall_ur_rel_l2;
     j["insitu"]["kirsch_triangles"] = c.n_triangles;
-    coupling::atomic_write_text(output_path(cli.output_dir, "insitu_vs_analytic.csv"),
+    coupling::atomic_write_text(output_path(ctx.output_dir, "insitu_vs_analytic.csv"),
                                 kirsch_csv(c));
-    if (!cli.quiet)
+    if (!ctx.quiet)
       std::cout << "Kirsch: relative L2 stress error over a <= r <= 5a: " << c.stress_rel_l2 << " ("
                 << c.n_triangles << " triangles); wall u_r error " << c.wall_ur_rel_l2 << '\n';
   } else {
-    summary.skipped(
+    summary.skipped.push_back(
         "Kirsch comparison: needs a circular opening without lining, uniform stress "
         "and a last alpha of 0");
   }
-  summary.skipped("fdem: `rockfdem insitu` runs the implicit stage only");
-  j["status"] = "completed";
+  summary.skipped.push_back("fdem: `rockfdem insitu` runs the implicit stage only");
+  summary.status = "completed";
   timer.stamp("output");
   summary.set_timings(timer);
-  summary.write(output_path(cli.output_dir, "summary.json"));
-  if (!cli.quiet) std::cout << insitu::timing_table(fields) << timer.table();
+  summary.write(output_path(ctx.output_dir, "summary.json"));
+  if (!ctx.quiet) std::cout << insitu::timing_table(fields) << timer.table();
   return 0;
 }
 

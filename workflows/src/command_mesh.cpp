@@ -16,28 +16,27 @@
 
 namespace rockfdem::workflows {
 
-int command_mesh(const Scene& scene, const CommandLine& cli) {
+int command_mesh(const Scene& scene, const RunContext& ctx) {
   PhaseTimer timer;
-  prepare_output_dir(cli.output_dir, scene, cli.force);
-  RunSummary summary(scene, active_threads());
+  prepare_output_dir(ctx.output_dir, scene, ctx.force);
+  RunRecord summary(scene, ctx.threads);
   mesh::MeshReport report;
-  const mesh::Mesh m = mesh::build_mesh(scene.mesh, &report);
-  active_threads();
+  const mesh::Mesh m = keeping_threads(ctx, [&] { return mesh::build_mesh(scene.mesh, &report); });
   timer.stamp("mesh");
 
-  mesh::write_msh(m, output_path(cli.output_dir, "mesh.msh"));
+  mesh::write_msh(m, output_path(ctx.output_dir, "mesh.msh"));
   if (scene.output.vtk)
-    coupling::write_vtu(coupling::mesh_grid(m), output_path(cli.output_dir, "mesh.vtu"));
-  if (scene.output.plots) write_mesh_preview(scene, m, cli.output_dir, summary, cli.quiet);
+    coupling::write_vtu(coupling::mesh_grid(m), output_path(ctx.output_dir, "mesh.vtu"));
+  if (scene.output.plots) write_mesh_preview(scene, m, ctx.output_dir, summary, ctx.quiet);
   timer.stamp("output");
 
   summary.record_mesh(m, report);
   summary.note_turned_off(scene.output, "mesh.vtu", true);
-  summary.skipped("insitu, fdem: `rockfdem mesh` meshes only");
-  summary.json()["status"] = "completed";
+  summary.skipped.push_back("insitu, fdem: `rockfdem mesh` meshes only");
+  summary.status = "completed";
   summary.set_timings(timer);
-  summary.write(output_path(cli.output_dir, "summary.json"));
-  if (!cli.quiet) {
+  summary.write(output_path(ctx.output_dir, "summary.json"));
+  if (!ctx.quiet) {
     std::cout << "mesh: " << report.n_triangles << " triangles, " << report.n_vertices
               << " vertices, min altitude " << report.min_altitude << " m, min angle "
               << report.min_angle_deg << " deg, " << report.seconds << " s\n"

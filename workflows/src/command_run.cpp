@@ -5,11 +5,12 @@
 
 namespace rockfdem::workflows {
 
-int command_run(const Scene& scene, const CommandLine& cli) {
+int command_run(const Scene& scene, const RunContext& ctx) {
   install_interrupt_handlers();
+  const OmpThreads keep(ctx.threads);  // a study's variants each bring their own
   if (scene.mesh.kind == mesh::ModelKind::kUcs || scene.mesh.kind == mesh::ModelKind::kBrazilian)
-    return run_specimen(scene, cli);
-  return run_tunnel(scene, cli);
+    return run_specimen(scene, ctx);
+  return run_tunnel(scene, ctx);
 }
 
 }  // namespace rockfdem::workflows

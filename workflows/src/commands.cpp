@@ -15,8 +15,6 @@
 
 namespace rockfdem::workflows {
 namespace {
-int g_threads = 1;
-
 std::map<std::string, Command>& registered() {
   static std::map<std::string, Command> commands;
   return commands;
@@ -24,11 +22,6 @@ std::map<std::string, Command>& registered() {
 }  // namespace
 
 void register_command(const std::string& name, Command command) { registered()[name] = command; }
-
-int active_threads() {
-  omp_set_num_threads(g_threads);  // gmsh resets it to 1: put it back before each stage
-  return g_threads;
-}
 
 int run_command(const CommandLine& cli) {
   if (cli.help) {
@@ -46,20 +39,20 @@ int run_command(const CommandLine& cli) {
   const Scene scene =
       cli.scene.empty() ? load_default_scene(cli.overrides) : load_scene(cli.scene, cli.overrides);
   for (const std::string& w : scene.warnings) std::cerr << "rockfdem: warning: " << w << '\n';
-  g_threads = cli.threads > 0 ? cli.threads : omp_get_num_procs();
-  active_threads();
+  const RunContext ctx = run_context(cli);
+  omp_set_num_threads(ctx.threads);  // gmsh reads its thread count from OpenMP's
   refuse_if_too_large(scene);
   fdem::check_environment();  // before anything is written
-  if (cli.command == "check") return command_check(scene, cli);
-  if (cli.command == "mesh") return command_mesh(scene, cli);
-  if (cli.command == "insitu") return command_insitu(scene, cli);
+  if (cli.command == "check") return command_check(scene, ctx);
+  if (cli.command == "mesh") return command_mesh(scene, ctx);
+  if (cli.command == "insitu") return command_insitu(scene, ctx);
   if (cli.command != "run") {
     const auto found = registered().find(cli.command);
     if (found == registered().end())
       throw InputError("command line: `rockfdem " + cli.command + "` is not in this build");
     return found->second(scene, cli);
   }
-  return command_run(scene, cli);
+  return command_run(scene, ctx);
 }
 
 }  // namespace rockfdem::workflows

@@ -165,7 +165,7 @@ void write_profiles(const std::vector<Profile>& profiles, const std::string& pat
 }
 
 void plot_profiles(const std::vector<Profile>& profiles, const std::string& model,
-                   const std::string& dir, RunSummary& summary, bool quiet) {
+                   const std::string& dir, RunRecord& summary, bool quiet) {
   // Without a display the run's own plots say so, once.
   if (!coupling::rendering_available()) return;
   PlotWriter plots(dir, summary, quiet);
@@ -238,7 +238,7 @@ nlohmann::json compare_with_counterpart(const Scene& scene, const mesh::Mesh& m,
                                         const insitu::InsituField& fdem_handoff,
                                         const ContinuumStates& c,
                                         const std::vector<Monitor>& monitors,
-                                        const std::string& dir, RunSummary& summary, bool quiet) {
+                                        const std::string& dir, RunRecord& summary, bool quiet) {
   const mesh::HalfExtent h = mesh::opening_half_extent(scene.mesh.tunnel);
   const double span = std::max(h.hx, h.hy), reach = 5 * span;
   std::vector<std::uint8_t> engine_active(m.n_triangles());
@@ -270,21 +270,20 @@ nlohmann::json compare_with_counterpart(const Scene& scene, const mesh::Mesh& m,
   return j;
 }
 
-void compare_with_continuum_counterpart(const Scene& scene, const CommandLine& cli,
+void compare_with_continuum_counterpart(const Scene& scene, const RunContext& ctx,
                                         const mesh::Mesh& m, const fdem::Engine& e,
                                         const insitu::InsituField& fdem_handoff,
-                                        const std::vector<Monitor>& monitors, RunSummary& summary) {
+                                        const std::vector<Monitor>& monitors, RunRecord& summary) {
   // A counterpart that cannot be solved leaves the run's own results standing.
   const auto skip = [&](const std::runtime_error& err) {
-    active_threads();
-    summary.skipped(std::string("continuum comparison (insitu.continuum = ") +
-                    scene.insitu.continuum + "): " + err.what());
+    summary.skipped.push_back(std::string("continuum comparison (insitu.continuum = ") +
+                              scene.insitu.continuum + "): " + err.what());
   };
   try {
-    const ContinuumStates c = solve_continuum_counterpart(scene, m);
-    active_threads();  // deal.II may have changed OpenMP's thread count
-    summary.json()["continuum_comparison"] = compare_with_counterpart(
-        scene, m, e, fdem_handoff, c, monitors, cli.output_dir, summary, cli.quiet);
+    const ContinuumStates c =
+        keeping_threads(ctx, [&] { return solve_continuum_counterpart(scene, m); });
+    summary.figures()["continuum_comparison"] = compare_with_counterpart(
+        scene, m, e, fdem_handoff, c, monitors, ctx.output_dir, summary, ctx.quiet);
   } catch (const InputError& err) {
     skip(err);
   } catch (const NumericalError& err) {

@@ -19,8 +19,8 @@
 #include "rockfdem/fdem/engine.hpp"
 #include "rockfdem/insitu/insitu.hpp"
 #include "rockfdem/mesh/mesh.hpp"
-#include "rockfdem/workflows/cli.hpp"
 #include "rockfdem/workflows/scene.hpp"
+#include "run_context.hpp"
 #include "summary.hpp"
 
 namespace rockfdem::workflows {
@@ -50,14 +50,14 @@ nlohmann::json compare_with_counterpart(const Scene& scene, const mesh::Mesh& m,
                                         const insitu::InsituField& fdem_handoff,
                                         const ContinuumStates& c,
                                         const std::vector<Monitor>& monitors,
-                                        const std::string& dir, RunSummary& summary, bool quiet);
+                                        const std::string& dir, RunRecord& summary, bool quiet);
 
 /// Both of the above for a finished tunnel run, into summary
 /// "continuum_comparison"; a counterpart that cannot be solved (e.g. the
 /// Mohr-Coulomb ground collapses) is noted in "skipped" and the run goes on.
-void compare_with_continuum_counterpart(const Scene& scene, const CommandLine& cli,
+void compare_with_continuum_counterpart(const Scene& scene, const RunContext& ctx,
                                         const mesh::Mesh& m, const fdem::Engine& e,
                                         const insitu::InsituField& fdem_handoff,
-                                        const std::vector<Monitor>& monitors, RunSummary& summary);
+                                        const std::vector<Monitor>& monitors, RunRecord& summary);
 
 }  // namespace rockfdem::workflows

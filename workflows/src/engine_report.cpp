@@ -31,8 +31,8 @@ nlohmann::json state_figures(const fdem::Engine& e, const fdem::EnergyBalance& e
           {"state_hash", e.state_hash()}};
 }
 
-void report_engine(const fdem::Engine& e, const PhaseTimer& timer, RunSummary& summary) {
-  auto& j = summary.json();
+void report_engine(const fdem::Engine& e, const PhaseTimer& timer, RunRecord& summary) {
+  auto& j = summary.figures();
   j["counts"]["triangles"] = e.n_triangles();
   j["counts"]["nodes"] = e.n_nodes();
   j["counts"]["crack_elements"] = e.n_cracks();
@@ -55,13 +55,14 @@ void report_engine(const fdem::Engine& e, const PhaseTimer& timer, RunSummary& s
                   {"last_touching", c.touching},
                   {"kernel", c.kernel}};
   if (!c.enabled)
-    summary.skipped("contact: disabled by the scene (contact.enabled = false)");
+    summary.skipped.push_back("contact: disabled by the scene (contact.enabled = false)");
   else if (c.steps_with_pairs == 0)
-    summary.skipped("contact: nothing could touch in " + std::to_string(e.step_count()) + " steps");
+    summary.skipped.push_back("contact: nothing could touch in " + std::to_string(e.step_count()) +
+                              " steps");
   else if (c.steps_skipped > 0)
-    summary.skipped("contact: nothing could touch in " + std::to_string(c.steps_skipped) + " of " +
-                    std::to_string(e.step_count()) + " steps");
-  if (e.n_cracks() == 0) summary.skipped("crack elements: fracture is allowed nowhere");
+    summary.skipped.push_back("contact: nothing could touch in " + std::to_string(c.steps_skipped) +
+                              " of " + std::to_string(e.step_count()) + " steps");
+  if (e.n_cracks() == 0) summary.skipped.push_back("crack elements: fracture is allowed nowhere");
   const fdem::MassScalingReport ms = e.mass_scaling_report();
   j["mass_scaling"] = {{"enabled", ms.enabled}};
   if (ms.enabled)
@@ -73,7 +74,7 @@ void report_engine(const fdem::Engine& e, const PhaseTimer& timer, RunSummary& s
                                "quasi-static: densities scaled, statics unchanged; "
                                "simulated_time is pseudo-time"}});
   else
-    summary.skipped("mass scaling: off (engine.mass_scaling); dynamics at true masses");
+    summary.skipped.push_back("mass scaling: off (engine.mass_scaling); dynamics at true masses");
   j["memory_bytes"] = e.memory_bytes();
   j["memory_bytes_per_triangle"] = double(e.memory_bytes()) / double(e.n_triangles());
 }
@@ -99,7 +100,7 @@ double energy_floor(const Scene& scene, const mesh::Mesh& m) {
   return 1e-6 * stress * stress / (2 * rock.young) * area;
 }
 
-void warn_if_unbalanced(const fdem::Engine& e, double floor, bool quiet, RunSummary& summary) {
+void warn_if_unbalanced(const fdem::Engine& e, double floor, bool quiet, RunRecord& summary) {
   const fdem::EnergyBalance b = e.energy_balance();
   if (!(std::abs(b.imbalance()) > kEnergyWarningLimit) || std::abs(b.residual()) <= floor) return;
   char msg[400];
@@ -108,7 +109,7 @@ void warn_if_unbalanced(const fdem::Engine& e, double floor, bool quiet, RunSumm
                 "per cent, at most 3%%): extreme parameters or penalties far stiffer than the "
                 "rock; treat the results with care (docs/reliability.md)",
                 100 * std::abs(b.imbalance()));
-  summary.json()["warnings"].push_back(msg);
+  summary.warnings.push_back(msg);
   if (!quiet) std::fprintf(stderr, "rockfdem: warning: %s\n", msg);
 }
 

@@ -14,7 +14,7 @@
 
 namespace rockfdem::workflows {
 
-void report_engine(const fdem::Engine& e, const PhaseTimer& timer, RunSummary& summary);
+void report_engine(const fdem::Engine& e, const PhaseTimer& timer, RunRecord& summary);
 
 /// The summary keys that describe one state of the engine: steps, dt (the
 /// last step's), simulated_time, broken, energy (`en`, the state's balance)
@@ -49,7 +49,7 @@ constexpr double kEnergyWarningLimit = 0.03;
 /// Adds to summary.json "warnings" (and says on stderr unless `quiet`) when
 /// the run's final imbalance exceeds kEnergyWarningLimit with a residual
 /// above `floor` (energy_floor).
-void warn_if_unbalanced(const fdem::Engine& e, double floor, bool quiet, RunSummary& summary);
+void warn_if_unbalanced(const fdem::Engine& e, double floor, bool quiet, RunRecord& summary);
 
 /// Throws NumericalError naming the step and the terms when the balance's
 /// relative imbalance exceeds kEnergyImbalanceLimit and its residual

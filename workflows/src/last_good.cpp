@@ -11,13 +11,13 @@ void LastGoodState::take(const fdem::Engine& e, const fdem::EnergyBalance& energ
 }
 
 void LastGoodState::report_failure(const fdem::Engine& e, const PhaseTimer& timer,
-                                   const std::string& why, RunSummary& summary) const {
+                                   const std::string& why, RunRecord& summary) const {
   report_engine(e, timer, summary);  // counts, timings, skipped; figures of the wreck ...
-  auto& j = summary.json();
+  auto& j = summary.figures();
   if (!figures_.is_null()) j.update(figures_);  // ... replaced by the last good ones
   j["dt_min"] = j["dt_max"] = j["dt"];
-  j["status"] = "failed";
-  j["failure"] = why;
+  summary.status = "failed";
+  summary.failure = why;
   summary.set_timings(timer);
 }
 

@@ -24,7 +24,7 @@ class LastGoodState {
   /// and the timings so far, this state's steps, dt, time, broken counts,
   /// energy, monitors and hash, status "failed" and the diagnostic.
   void report_failure(const fdem::Engine& e, const PhaseTimer& timer, const std::string& why,
-                      RunSummary& summary) const;
+                      RunRecord& summary) const;
 
  private:
   nlohmann::json figures_;  ///< summary keys of the last good state; null before the first

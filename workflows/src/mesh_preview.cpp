@@ -48,7 +48,7 @@ coupling::MeshView window(const mesh::OpeningBoundary& b, const Scene& scene) {
 }  // namespace
 
 void write_mesh_preview(const Scene& scene, const mesh::Mesh& m, const std::string& dir,
-                        RunSummary& summary, bool quiet) {
+                        RunRecord& summary, bool quiet) {
   coupling::VtkGrid grid = coupling::mesh_grid(m);
   coupling::MeshOverlay overlay;
   grid.cell_arrays.push_back(coupling::triangle_cell_array(
@@ -68,7 +68,7 @@ void write_mesh_preview(const Scene& scene, const mesh::Mesh& m, const std::stri
                                 "Preview: regions, bolts and cables (dark red), key points (blue)",
                                 1000, 800, &why, view ? &*view : nullptr, &overlay);
   if (drawn) return;
-  summary.skipped("plot preview.png: " + why);
+  summary.skipped.push_back("plot preview.png: " + why);
   if (!quiet) std::cerr << "rockfdem: preview.png skipped: " << why << '\n';
 }
 

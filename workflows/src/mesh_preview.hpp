@@ -18,6 +18,6 @@ struct Scene;
 /// widened to hold every bolt; the whole model when it has no opening.
 /// Without a display `skipped` says why (and stderr unless `quiet`).
 void write_mesh_preview(const Scene& scene, const mesh::Mesh& m, const std::string& dir,
-                        RunSummary& summary, bool quiet);
+                        RunRecord& summary, bool quiet);
 
 }  // namespace rockfdem::workflows

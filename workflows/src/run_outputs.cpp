@@ -108,8 +108,8 @@ std::pair<std::string, double> RunOutputs::largest_key_point(
   return most;
 }
 
-RunOutputs::RunOutputs(const Scene& scene, const CommandLine& cli, RunSummary& summary)
-    : scene_(scene), cli_(cli), summary_(summary), pvd_(output_path(cli.output_dir, "fdem.pvd")) {
+RunOutputs::RunOutputs(const Scene& scene, const RunContext& ctx, RunRecord& summary)
+    : scene_(scene), ctx_(ctx), summary_(summary), pvd_(output_path(ctx.output_dir, "fdem.pvd")) {
   summary_.note_turned_off(scene.output, "fdem.pvd, fdem_NNNN.vtu, insitu.vtu, continuum.vtu",
                            true);
 }
@@ -117,7 +117,7 @@ RunOutputs::RunOutputs(const Scene& scene, const CommandLine& cli, RunSummary& s
 void RunOutputs::record_insitu(const mesh::Mesh& m,
                                const std::vector<insitu::InsituField>& fields) {
   fields_ = fields;
-  auto& j = summary_.json()["insitu"];
+  auto& j = summary_.figures()["insitu"];
   j["alpha"] = nlohmann::json::array();
   j["solver_iterations"] = nlohmann::json::array();
   for (const insitu::InsituField& f : fields) {
@@ -127,7 +127,7 @@ void RunOutputs::record_insitu(const mesh::Mesh& m,
   summary_.record_insitu_state(fields.back());
   if (scene_.output.vtk)
     coupling::write_vtu(coupling::insitu_grid(m, fields.back()),
-                        output_path(cli_.output_dir, "insitu.vtu"));
+                        output_path(ctx_.output_dir, "insitu.vtu"));
   insitu::KirschCase k;
   if (kirsch_case(scene_, &k) && fields.back().alpha == 0.0)
     j["kirsch_rel_l2"] = insitu::compare_kirsch(m, fields.back(), k).stress_rel_l2;
@@ -136,7 +136,7 @@ void RunOutputs::record_insitu(const mesh::Mesh& m,
 void RunOutputs::set_bolts(const fdem::BoltPlan* bolts) {
   bolts_ = bolts;
   if (bolts && !bolts->specs.empty())
-    bolt_results_ = std::make_unique<BoltResults>(*bolts, scene_.bolts.is_cable, cli_.output_dir);
+    bolt_results_ = std::make_unique<BoltResults>(*bolts, scene_.bolts.is_cable, ctx_.output_dir);
 }
 
 std::vector<std::string> RunOutputs::history_columns(const std::vector<Monitor>& monitors) const {
@@ -171,7 +171,7 @@ void RunOutputs::begin_history(const std::vector<Monitor>& monitors, const mesh:
     lining_ = std::make_unique<LiningOutput>(scene_, m);
     if (!lining_->has_ring()) lining_.reset();
   }
-  history_ = std::make_unique<History>(output_path(cli_.output_dir, "history.csv"),
+  history_ = std::make_unique<History>(output_path(ctx_.output_dir, "history.csv"),
                                        history_columns(monitors));
 }
 
@@ -203,7 +203,7 @@ void RunOutputs::record_step(const fdem::Engine& e, const mesh::Mesh& m,
   if (instruments_)
     for (double v : instruments_->row(e, m, node_displacements(e))) row.push_back(v);
   history_->add(row);
-  if (lining_ && lining_installed_) lining_->record(e, cli_.output_dir);
+  if (lining_ && lining_installed_) lining_->record(e, ctx_.output_dir);
   // Before the frame: the last frame stays the last good state.
   check_energy(energy, e.step_count(), energy_floor_);
   check_rigid_motion(e, e.step_count());
@@ -214,7 +214,7 @@ void RunOutputs::record_step(const fdem::Engine& e, const mesh::Mesh& m,
     std::snprintf(name, sizeof name, "fdem_%04d.vtu", frame_++);
     coupling::VtkGrid g = frame_grid(e, m);
     coupling::add_frame_info(g.field, stage, e.step_count(), e.time());
-    coupling::write_vtu(g, output_path(cli_.output_dir, name));
+    coupling::write_vtu(g, output_path(ctx_.output_dir, name));
     pvd_.add(e.time(), name);
     pvd_.write();
     std::snprintf(name, sizeof name, "bolts_%04d.vtp", frame_ - 1);
@@ -248,7 +248,7 @@ nlohmann::json RunOutputs::monitors_json(const fdem::Engine& e,
 }
 
 void RunOutputs::report_dt() {
-  auto& j = summary_.json();
+  auto& j = summary_.figures();
   // Steps and time add up: the hand-off step, then each stage's (dt is
   // constant within a stage: the limit changes only with a stage's changes).
   double lo = j["dt"].get<double>(), hi = lo;
@@ -272,7 +272,7 @@ void RunOutputs::report_dt() {
 void RunOutputs::report_failure(const fdem::Engine& e, PhaseTimer& timer, const std::string& why) {
   last_good_.report_failure(e, timer, why, summary_);
   report_dt();
-  summary_.write(output_path(cli_.output_dir, "summary.json"));
+  summary_.write(output_path(ctx_.output_dir, "summary.json"));
   write_report();
 }
 
@@ -308,11 +308,11 @@ void RunOutputs::restore(const nlohmann::json& s, const std::string& from_dir) {
   max_rotation_deg_ = s.value("max_rotation_deg", 0.0);
   if (instruments_ && s.contains("instruments") && s.at("instruments").is_object())
     instruments_->restore(s.at("instruments"));
-  frame_ += restore_frames(s.at("frames"), from_dir, cli_.output_dir, pvd_, summary_);
+  frame_ += restore_frames(s.at("frames"), from_dir, ctx_.output_dir, pvd_, summary_);
   if (bolt_results_ && s.contains("bolts") && !s["bolts"].is_null())
     bolt_results_->restore(s["bolts"], from_dir);
   std::error_code same_ec;
-  const bool same_dir = fs::equivalent(from_dir, cli_.output_dir, same_ec);
+  const bool same_dir = fs::equivalent(from_dir, ctx_.output_dir, same_ec);
   // Files an earlier stage wrote once, which the summary names, and the
   // lining's forces at the earlier outputs.
   std::vector<std::string> earlier{"grouted_cracks.csv"};
@@ -325,7 +325,7 @@ void RunOutputs::restore(const nlohmann::json& s, const std::string& from_dir) {
     for (const std::string& name : earlier) {
       std::error_code ec;
       if (fs::exists(output_path(from_dir, name), ec))
-        fs::copy_file(output_path(from_dir, name), output_path(cli_.output_dir, name),
+        fs::copy_file(output_path(from_dir, name), output_path(ctx_.output_dir, name),
                       fs::copy_options::overwrite_existing, ec);
     }
 }
@@ -342,27 +342,27 @@ void RunOutputs::lining_outputs(const fdem::Engine& e, const mesh::Mesh& m) {
   }
   nlohmann::json j = nlohmann::json::object();
   if (n_bond > 0) j = {{"interface_cracks", n_bond}, {"interface_broken", broken}};
-  if (lining_ && lining_installed_ && lining_->installed(e)) lining_->finish(e, cli_.output_dir, j);
+  if (lining_ && lining_installed_ && lining_->installed(e)) lining_->finish(e, ctx_.output_dir, j);
   if (!j.empty())
-    summary_.json()["lining"] = j;
+    summary_.figures()["lining"] = j;
   else if (has_lining_ring(scene_))
-    summary_.skipped("lining: the ring is not installed at the end of the run");
+    summary_.skipped.push_back("lining: the ring is not installed at the end of the run");
 }
 
 void RunOutputs::bolt_outputs(const fdem::Engine& e, const fdem::BoltPlan& bolts) {
-  summary_.json()["counts"]["bolts"] = bolts.specs.size();
+  summary_.figures()["counts"]["bolts"] = bolts.specs.size();
   if (bolt_results_)
     bolt_results_->finish(e, summary_);
   else
-    summary_.skipped("bolts: none in the scene");
+    summary_.skipped.push_back("bolts: none in the scene");
 }
 
 void RunOutputs::finish(const fdem::Engine& e, const mesh::Mesh& m,
                         const std::vector<Monitor>& monitors, PhaseTimer& timer,
                         const fdem::BoltPlan& bolts) {
-  auto& j = summary_.json();
+  auto& j = summary_.figures();
   report_engine(e, timer, summary_);
-  warn_if_unbalanced(e, energy_floor_, cli_.quiet, summary_);
+  warn_if_unbalanced(e, energy_floor_, ctx_.quiet, summary_);
   report_dt();
   bolt_outputs(e, bolts);
   j["monitors"] = monitors_json(e, monitors);
@@ -395,10 +395,10 @@ void RunOutputs::finish(const fdem::Engine& e, const mesh::Mesh& m,
   if (scene_.output.plots) plots(e, m);
   timer.stamp("output");
   summary_.set_timings(timer);
-  summary_.write(output_path(cli_.output_dir, "summary.json"));
+  summary_.write(output_path(ctx_.output_dir, "summary.json"));
   write_report();
   const fdem::BrokenCounts b = e.broken_counts();
-  if (!cli_.quiet)
+  if (!ctx_.quiet)
     std::cout << "vault settlement " << j["monitors"]["vault_settlement_mm"].get<double>()
               << " mm, wall chord convergence "
               << j["monitors"]["wall_chord_convergence_mm"].get<double>() << " mm, broken cracks "
@@ -407,13 +407,13 @@ void RunOutputs::finish(const fdem::Engine& e, const mesh::Mesh& m,
 }
 
 void RunOutputs::damage_outputs(const fdem::Engine& e, const mesh::Mesh& m) {
-  auto& j = summary_.json();
+  auto& j = summary_.figures();
   const Resolution r = fracture_resolution(scene_, &m);
   j["resolution"] = {
       {"h_m", r.h}, {"l_ch_m", r.l_ch}, {"h_over_l_ch", r.ratio}, {"limit", kResolutionLimit}};
   const auto warn = [&](const std::string& msg) {
-    j["warnings"].push_back(msg);
-    if (!cli_.quiet) std::cerr << "warning: " << msg << '\n';
+    summary_.warnings.push_back(msg);
+    if (!ctx_.quiet) std::cerr << "warning: " << msg << '\n';
   };
   char msg[500];
   if (r.ratio > kResolutionLimit) {
@@ -443,7 +443,7 @@ void RunOutputs::damage_outputs(const fdem::Engine& e, const mesh::Mesh& m) {
 
 std::vector<StageSpan> RunOutputs::timeline() const {
   // The spans point into the summary's stage report: take it by reference.
-  const auto& j = summary_.json();
+  const auto& j = summary_.figures();
   const auto fdem = j.find("fdem");
   if (!history_ || history_->rows().empty() || fdem == j.end() || !fdem->contains("stages"))
     return {};
@@ -459,7 +459,7 @@ std::optional<std::size_t> RunOutputs::support_row() const {
 
 std::map<std::string, double> RunOutputs::since_support() const {
   const std::optional<std::size_t> row = support_row();
-  const auto& mon = summary_.json().value("monitors", nlohmann::json::object());
+  const auto& mon = summary_.figures().value("monitors", nlohmann::json::object());
   std::map<std::string, double> out;
   if (!row) return out;
   const auto add = [&](const std::string& name, const std::string& column,
@@ -480,11 +480,11 @@ void RunOutputs::write_report() const {
   ReportExtras extras;
   extras.since_support_mm = since_support();
   extras.pictures = pictures_;
-  workflows::write_report(cli_.output_dir, scene_, summary_.json(), extras);
+  workflows::write_report(ctx_.output_dir, scene_, summary_.to_json(), extras);
 }
 
 void RunOutputs::plots(const fdem::Engine& e, const mesh::Mesh& m) {
-  PlotWriter plots(cli_.output_dir, summary_, cli_.quiet);
+  PlotWriter plots(ctx_.output_dir, summary_, ctx_.quiet);
   if (!plots.available()) return;
   const std::vector<coupling::PlotMarker> markers = stage_markers(timeline());
   time_plots(plots, e, markers);
@@ -539,7 +539,7 @@ void RunOutputs::ground_reaction_plot(PlotWriter& plots) {
   // allows), and apart the run's final state, which is no point of the
   // unsupported curve: the support carries the load there.
   std::vector<double> ratio, settlement;
-  const nlohmann::json& grc = summary_.json()["ground_reaction_curve"];
+  const nlohmann::json& grc = summary_.figures()["ground_reaction_curve"];
   for (std::size_t i = 0; i + 1 < grc.size(); ++i) {
     ratio.push_back(grc[i]["support_pressure_ratio"].get<double>());
     settlement.push_back(grc[i]["vault_settlement_mm"].get<double>());

@@ -19,8 +19,8 @@
 #include "rockfdem/coupling/vtk_writer.hpp"
 #include "rockfdem/fdem/bolt_install.hpp"
 #include "rockfdem/insitu/insitu.hpp"
-#include "rockfdem/workflows/cli.hpp"
 #include "rockfdem/workflows/scene.hpp"
+#include "run_context.hpp"
 #include "run_plots.hpp"
 #include "run_timeline.hpp"
 #include "summary.hpp"
@@ -29,7 +29,7 @@ namespace rockfdem::workflows {
 
 class RunOutputs {
  public:
-  RunOutputs(const Scene& scene, const CommandLine& cli, RunSummary& summary);
+  RunOutputs(const Scene& scene, const RunContext& ctx, RunRecord& summary);
   /// summary.json's insitu keys and the implicit part of the ground reaction curve.
   void record_insitu(const mesh::Mesh& m, const std::vector<insitu::InsituField>& fields);
   /// Starts history.csv; `m`'s outer boundary defines the rigid translation
@@ -126,8 +126,8 @@ class RunOutputs {
   double convergence(const fdem::Engine& e, const std::vector<Monitor>& ms, const std::string& a,
                      const std::string& b) const;
   const Scene& scene_;
-  const CommandLine& cli_;
-  RunSummary& summary_;
+  const RunContext& ctx_;
+  RunRecord& summary_;
   std::vector<insitu::InsituField> fields_;
   std::unique_ptr<History> history_;
   std::unique_ptr<Instruments> instruments_;

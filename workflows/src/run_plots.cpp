@@ -16,12 +16,12 @@ std::vector<double> scaled(std::vector<double> v, double factor) {
 
 }  // namespace
 
-PlotWriter::PlotWriter(std::string dir, RunSummary& summary, bool quiet)
+PlotWriter::PlotWriter(std::string dir, RunRecord& summary, bool quiet)
     : dir_(std::move(dir)), summary_(summary) {
   std::string why;  // ends with the advice to run under xvfb-run
   available_ = coupling::rendering_available(&why);
   if (available_) return;
-  summary_.skipped("plots: " + why);
+  summary_.skipped.push_back("plots: " + why);
   if (!quiet) std::cerr << "rockfdem: plots skipped: " << why << '\n';
 }
 
@@ -29,7 +29,7 @@ void PlotWriter::note(bool rendered, const std::string& file, const std::string&
   if (rendered)
     rendered_.push_back(file);
   else
-    summary_.skipped("plot " + file + ": " + why);
+    summary_.skipped.push_back("plot " + file + ": " + why);
 }
 
 void PlotWriter::xy(const std::string& file, const std::string& title, const std::string& x_label,
@@ -77,7 +77,7 @@ std::string time_axis_label(const fdem::Engine& e) {
 }
 
 void specimen_plots(const fdem::Engine& e, const History& h, bool disc, const std::string& dir,
-                    RunSummary& summary, bool quiet) {
+                    RunRecord& summary, bool quiet) {
   PlotWriter plots(dir, summary, quiet);
   if (!plots.available()) return;
   const char* stress = disc ? "tensile_stress" : "axial_stress";

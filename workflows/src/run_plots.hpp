@@ -19,7 +19,7 @@ class PlotWriter {
  public:
   /// Asks for a display; without one, notes why in `skipped` (and on
   /// stderr unless `quiet`) and available() is false.
-  PlotWriter(std::string dir, RunSummary& summary, bool quiet);
+  PlotWriter(std::string dir, RunRecord& summary, bool quiet);
   bool available() const { return available_; }
   /// DIR/`file`: a line plot of `series`, with vertical `markers`.
   void xy(const std::string& file, const std::string& title, const std::string& x_label,
@@ -46,7 +46,7 @@ class PlotWriter {
   void note(bool rendered, const std::string& file, const std::string& why);
   std::string dir_;
   std::vector<std::string> rendered_;
-  RunSummary& summary_;
+  RunRecord& summary_;
   bool available_ = false;
 };
 
@@ -57,6 +57,6 @@ std::string time_axis_label(const fdem::Engine& e);
 /// or the Brazilian tensile stress 2P / (pi D) of a disc, against the
 /// platens' nominal strain), broken.png and final_mesh.png.
 void specimen_plots(const fdem::Engine& e, const History& h, bool disc, const std::string& dir,
-                    RunSummary& summary, bool quiet);
+                    RunRecord& summary, bool quiet);
 
 }  // namespace rockfdem::workflows

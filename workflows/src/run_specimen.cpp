@@ -49,20 +49,20 @@ std::vector<std::string> history_columns(bool disc) {
 // One specimen run from its first (or restarted) step to the end.
 class SpecimenRun {
  public:
-  SpecimenRun(const Scene& scene, const CommandLine& cli, const mesh::Mesh& m, fdem::Engine& e,
-              RunSummary& summary, PhaseTimer& timer)
+  SpecimenRun(const Scene& scene, const RunContext& ctx, const mesh::Mesh& m, fdem::Engine& e,
+              RunRecord& summary, PhaseTimer& timer)
       : scene_(scene),
-        cli_(cli),
+        ctx_(ctx),
         m_(m),
         e_(e),
         summary_(summary),
         timer_(timer),
         disc_(scene.mesh.kind == mesh::ModelKind::kBrazilian),
         load_(scene),
-        history_(output_path(cli.output_dir, "history.csv"), history_columns(disc_)),
-        pvd_(output_path(cli.output_dir, "fdem.pvd")),
+        history_(output_path(ctx.output_dir, "history.csv"), history_columns(disc_)),
+        pvd_(output_path(ctx.output_dir, "fdem.pvd")),
         floor_(energy_floor(scene, m)),
-        checkpoint_every_(cli.checkpoint_every >= 0 ? cli.checkpoint_every
+        checkpoint_every_(ctx.checkpoint_every >= 0 ? ctx.checkpoint_every
                                                     : scene.output.checkpoint_every),
         last_checkpoint_(e.step_count()) {}
 
@@ -74,17 +74,17 @@ class SpecimenRun {
     try {
       history_.restore(s.at("history").get<std::vector<std::vector<double>>>());
     } catch (const InputError& e) {
-      throw InputError(cli_.restart + ": " + e.what());
+      throw InputError(ctx_.restart + ": " + e.what());
     }
     frame_ =
-        restore_frames(s.at("frames"), run_dir_of(cli_.restart), cli_.output_dir, pvd_, summary_);
+        restore_frames(s.at("frames"), run_dir_of(ctx_.restart), ctx_.output_dir, pvd_, summary_);
     load_.restore(s.at("load"));
     last_checkpoint_ = s.at("last_checkpoint").get<long>();
-    summary_.json()["restarted_from"] = {{"checkpoint", cli_.restart}, {"step", e_.step_count()}};
+    summary_.restarted_from = CheckpointMark{ctx_.restart, e_.step_count()};
   }
 
   void run() {
-    Progress progress(disc_ ? "brazilian" : "ucs", scene_.engine.steps, cli_.quiet);
+    Progress progress(disc_ ? "brazilian" : "ucs", scene_.engine.steps, ctx_.quiet);
     while (!done()) {
       const long at = e_.step_count(), every = scene_.output.every_steps;
       // To the next output step: a restart from any step keeps the rows' steps.
@@ -114,18 +114,18 @@ class SpecimenRun {
   }
 
   void finish() {
-    auto& j = summary_.json();
+    auto& j = summary_.figures();
     if (scene_.output.plots)
-      specimen_plots(e_, history_, disc_, cli_.output_dir, summary_, cli_.quiet);
+      specimen_plots(e_, history_, disc_, ctx_.output_dir, summary_, ctx_.quiet);
     timer_.stamp("output");
-    j["status"] = "completed";
+    summary_.status = "completed";
     report_engine(e_, timer_, summary_);
-    warn_if_unbalanced(e_, floor_, cli_.quiet, summary_);
+    warn_if_unbalanced(e_, floor_, ctx_.quiet, summary_);
     j["specimen"] = load_.report();
-    summary_.skipped("insitu: a specimen starts stress-free");
+    summary_.skipped.push_back("insitu: a specimen starts stress-free");
     summary_.set_timings(timer_);
-    summary_.write(output_path(cli_.output_dir, "summary.json"));
-    if (!cli_.quiet)
+    summary_.write(output_path(ctx_.output_dir, "summary.json"));
+    if (!ctx_.quiet)
       std::cout << (disc_ ? "peak tensile stress " : "peak axial stress ")
                 << j["specimen"]["peak_stress"].get<double>() / 1e6 << " MPa at step "
                 << j["specimen"]["peak_step"].get<long>()
@@ -167,7 +167,7 @@ class SpecimenRun {
     std::snprintf(name, sizeof name, "fdem_%04d.vtu", frame_++);
     coupling::VtkGrid g = coupling::fdem_grid(e_, m_);
     coupling::add_frame_info(g.field, "load_platens", e_.step_count(), e_.time());
-    coupling::write_vtu(g, output_path(cli_.output_dir, name));
+    coupling::write_vtu(g, output_path(ctx_.output_dir, name));
     pvd_.add(e_.time(), name);
     pvd_.write();
   }
@@ -182,8 +182,8 @@ class SpecimenRun {
     std::ostringstream bytes;
     e_.save_state(bytes);
     c.engine_state = bytes.str();
-    const std::string path = write_checkpoint(cli_.output_dir, e_.step_count(), scene_, c);
-    summary_.json()["checkpoint"] = {{"last", path}, {"step", e_.step_count()}};
+    const std::string path = write_checkpoint(ctx_.output_dir, e_.step_count(), scene_, c);
+    summary_.checkpoint = CheckpointMark{path, e_.step_count()};
     last_checkpoint_ = e_.step_count();
   }
 
@@ -192,16 +192,16 @@ class SpecimenRun {
     const std::string why = "interrupted by signal " + std::to_string(sig) + " at step " +
                             std::to_string(e_.step_count());
     report_engine(e_, timer_, summary_);
-    summary_.json()["specimen"] = load_.report();
+    summary_.figures()["specimen"] = load_.report();
     write_summary("interrupted", why);
     throw Interrupted(sig, why + "; outputs and a checkpoint are written");
   }
 
   void write_summary(const char* status, const std::string& why) {
-    summary_.json()["status"] = status;
-    summary_.json()["failure"] = why;
+    summary_.status = status;
+    summary_.failure = why;
     summary_.set_timings(timer_);
-    summary_.write(output_path(cli_.output_dir, "summary.json"));
+    summary_.write(output_path(ctx_.output_dir, "summary.json"));
   }
 
   // Runs `f`; a NumericalError in it (a diverged step, a broken energy
@@ -218,10 +218,10 @@ class SpecimenRun {
   }
 
   const Scene& scene_;
-  const CommandLine& cli_;
+  const RunContext& ctx_;
   const mesh::Mesh& m_;
   fdem::Engine& e_;
-  RunSummary& summary_;
+  RunRecord& summary_;
   PhaseTimer& timer_;
   bool disc_;
   PlatenLoad load_;
@@ -235,32 +235,31 @@ class SpecimenRun {
 
 }  // namespace
 
-int run_specimen(const Scene& scene, const CommandLine& cli) {
+int run_specimen(const Scene& scene, const RunContext& ctx) {
   PhaseTimer timer;
   // A bad checkpoint is refused before anything is written.
-  const bool restart = !cli.restart.empty();
-  const Checkpoint resume = restart ? read_checkpoint(cli.restart, scene) : Checkpoint{};
-  RunSummary summary(scene, active_threads());
+  const bool restart = !ctx.restart.empty();
+  const Checkpoint resume = restart ? read_checkpoint(ctx.restart, scene) : Checkpoint{};
+  RunRecord summary(scene, ctx.threads);
   summary.note_turned_off(scene.output, "fdem.pvd, fdem_NNNN.vtu", true);
   mesh::MeshReport report;
-  const mesh::Mesh m = mesh::build_mesh(scene.mesh, &report);
-  active_threads();
+  const mesh::Mesh m = keeping_threads(ctx, [&] { return mesh::build_mesh(scene.mesh, &report); });
   summary.record_mesh(m, report);
   timer.stamp("mesh");
 
   fdem::Engine engine =
-      make_engine(specimen_model_input(scene, m, active_threads()), scene, cli.force_dt);
+      make_engine(specimen_model_input(scene, m, ctx.threads), scene, ctx.force_dt);
   timer.stamp("fdem setup");
   // Only now, with engine.dt accepted, is anything written.
-  if (claim_output_dir(scene, cli) && !restart) remove_checkpoints(cli.output_dir);
-  mesh::write_msh(m, output_path(cli.output_dir, "mesh.msh"));
+  if (claim_output_dir(scene, ctx) && !restart) remove_checkpoints(ctx.output_dir);
+  mesh::write_msh(m, output_path(ctx.output_dir, "mesh.msh"));
   if (restart) {
     std::istringstream state(resume.engine_state);
     engine.load_state(state);
   }
   timer.stamp("output");
 
-  SpecimenRun run(scene, cli, m, engine, summary, timer);
+  SpecimenRun run(scene, ctx, m, engine, summary, timer);
   run.begin(restart ? &resume : nullptr);
   run.run();
   run.finish();

@@ -137,14 +137,14 @@ double restore_before_writing(const Checkpoint& resume, const std::string& file,
 
 // A signal between the implicit phases: nothing to checkpoint yet. The
 // scene is valid, so the output directory may be made for the summary.
-void stop_if_interrupted(const Scene& scene, RunSummary& summary, const CommandLine& cli,
+void stop_if_interrupted(const Scene& scene, RunRecord& summary, const RunContext& ctx,
                          const PhaseTimer& timer, const char* after) {
   const int sig = interrupt_requested();
   if (!sig) return;
-  claim_output_dir(scene, cli);
-  summary.json()["status"] = "interrupted";
+  claim_output_dir(scene, ctx);
+  summary.status = "interrupted";
   summary.set_timings(timer);
-  summary.write(output_path(cli.output_dir, "summary.json"));
+  summary.write(output_path(ctx.output_dir, "summary.json"));
   throw Interrupted(sig, std::string("interrupted by signal ") + std::to_string(sig) + " after " +
                              after +
                              "; summary.json is written (no explicit step yet, so no checkpoint)");
@@ -152,14 +152,14 @@ void stop_if_interrupted(const Scene& scene, RunSummary& summary, const CommandL
 
 // The scene is accepted: make (or claim) OUTDIR and write what the mesh and
 // the implicit stage give.
-void write_first_outputs(const Scene& scene, const CommandLine& cli, bool restart,
+void write_first_outputs(const Scene& scene, const RunContext& ctx, bool restart,
                          const mesh::Mesh& m, const std::vector<insitu::InsituField>& fields,
                          RunOutputs& out) {
-  const bool claimed = claim_output_dir(scene, cli);
+  const bool claimed = claim_output_dir(scene, ctx);
   // A fresh run's checkpoints must not mix with an earlier run's (and a
   // folder no run claimed keeps whatever it holds).
-  if (!restart && claimed) remove_checkpoints(cli.output_dir);
-  mesh::write_msh(m, output_path(cli.output_dir, "mesh.msh"));
+  if (!restart && claimed) remove_checkpoints(ctx.output_dir);
+  mesh::write_msh(m, output_path(ctx.output_dir, "mesh.msh"));
   out.record_insitu(m, fields);
 }
 
@@ -196,7 +196,7 @@ void reporting_failure(const Scene& scene, RunOutputs& out, const fdem::Engine& 
 }  // namespace
 
 fdem::ModelInput engine_input(const Scene& scene, const mesh::Mesh& m,
-                              const insitu::InsituField& handoff) {
+                              const insitu::InsituField& handoff, int threads) {
   std::map<int, fdem::Material> materials = engine_materials(scene);
   // The implicit stage left the core at alpha_h E; the engine continues from there.
   if (materials.count(mesh::kCore) && handoff.alpha > 0)
@@ -207,13 +207,13 @@ fdem::ModelInput engine_input(const Scene& scene, const mesh::Mesh& m,
   in.boundary_conditions = box_conditions(scene.insitu);
   in.dt = scene.engine.dt;  // checked by make_engine
   in.dt_safety = scene.engine.dt_safety;
-  in.threads = active_threads();
+  in.threads = threads;
   in.mass_scaling = {scene.engine.mass_scaling, scene.engine.mass_scaling_dt};
   in.contact = contact_settings(scene);
   return in;
 }
 
-int run_tunnel(const Scene& scene, const CommandLine& cli) {
+int run_tunnel(const Scene& scene, const RunContext& ctx) {
   if (scene.insitu.unit_weight > 0)
     throw InputError(scene.source + ": key 'insitu.unit_weight' = " +
                      detail::number_text(scene.insitu.unit_weight) +
@@ -221,39 +221,38 @@ int run_tunnel(const Scene& scene, const CommandLine& cli) {
                      "gradient is supported by `rockfdem insitu`");
   PhaseTimer timer;
   // A bad checkpoint is refused before anything is written.
-  const bool restart = !cli.restart.empty();
-  const Checkpoint resume = restart ? read_checkpoint(cli.restart, scene) : Checkpoint{};
-  RunSummary summary(scene, active_threads());
-  RunOutputs out(scene, cli, summary);
+  const bool restart = !ctx.restart.empty();
+  const Checkpoint resume = restart ? read_checkpoint(ctx.restart, scene) : Checkpoint{};
+  RunRecord summary(scene, ctx.threads);
+  RunOutputs out(scene, ctx, summary);
 
   // Nothing is written until the engine has accepted the scene (engine.dt
   // included): a refused run leaves OUTDIR as it found it.
   mesh::MeshReport report;
-  const mesh::Mesh m = mesh::build_mesh(scene.mesh, &report);
-  active_threads();
+  const mesh::Mesh m = keeping_threads(ctx, [&] { return mesh::build_mesh(scene.mesh, &report); });
   summary.record_mesh(m, report);
   timer.stamp("mesh");
-  stop_if_interrupted(scene, summary, cli, timer, "meshing");
+  stop_if_interrupted(scene, summary, ctx, timer, "meshing");
 
-  const std::vector<insitu::InsituField> fields = insitu::solve_insitu(m, insitu_spec(scene));
-  active_threads();
+  const std::vector<insitu::InsituField> fields =
+      keeping_threads(ctx, [&] { return insitu::solve_insitu(m, insitu_spec(scene)); });
   check_implicit_field(scene, m, fields);
   timer.stamp("insitu");
-  stop_if_interrupted(scene, summary, cli, timer, "the implicit stage");
+  stop_if_interrupted(scene, summary, ctx, timer, "the implicit stage");
 
   if (scene.stages.empty()) {
     // [[stages]] holds only "insitu": the scene asks for the elastic
     // implicit results alone.
-    write_first_outputs(scene, cli, restart, m, fields, out);
+    write_first_outputs(scene, ctx, restart, m, fields, out);
     timer.stamp("output");
-    summary.skipped("fdem: the scene's only stage is the implicit in-situ stage");
-    summary.json()["status"] = "completed";
+    summary.skipped.push_back("fdem: the scene's only stage is the implicit in-situ stage");
+    summary.status = "completed";
     summary.set_timings(timer);
-    summary.write(output_path(cli.output_dir, "summary.json"));
+    summary.write(output_path(ctx.output_dir, "summary.json"));
     return 0;
   }
   const insitu::InsituField& handoff = fields.back();
-  fdem::ModelInput in = engine_input(scene, m, handoff);
+  fdem::ModelInput in = engine_input(scene, m, handoff, ctx.threads);
   SupportMaterials support;
   support.grout = int(in.materials.size());
   in.materials.push_back(grout_material(scene));
@@ -263,8 +262,8 @@ int run_tunnel(const Scene& scene, const CommandLine& cli) {
   }
   fdem::BoltPlan bolts;  // marks bolt triangles and allows fracture there
   if (!scene.bolts.segments.empty()) bolts = planned_bolts(scene, in);
-  fdem::Engine engine = make_engine(in, scene, cli.force_dt);
-  if (scene.engine.dt > 0 && !cli.force_dt) {
+  fdem::Engine engine = make_engine(in, scene, ctx.force_dt);
+  if (scene.engine.dt > 0 && !ctx.force_dt) {
     // The stages' local damping lowers the limit by sqrt(1 + alpha): an
     // explicit dt must hold then too, and is refused before anything is written.
     engine.set_damping(stage_damping(scene));
@@ -279,9 +278,9 @@ int run_tunnel(const Scene& scene, const CommandLine& cli) {
   out.set_bolts(&bolts);
   double start_ratio = 0;
   if (restart)
-    start_ratio = restore_before_writing(resume, cli.restart, monitors, out, engine, bolts);
+    start_ratio = restore_before_writing(resume, ctx.restart, monitors, out, engine, bolts);
   timer.stamp("fdem setup");
-  write_first_outputs(scene, cli, restart, m, fields, out);
+  write_first_outputs(scene, ctx, restart, m, fields, out);
   timer.stamp("output");
   if (!restart) {
     for (std::size_t t = 0; t < m.n_triangles(); ++t)
@@ -294,22 +293,22 @@ int run_tunnel(const Scene& scene, const CommandLine& cli) {
   timer.stamp("fdem setup");
 
   out.begin_history(monitors, m);
-  StageRunner stages(engine, m, handoff, scene, cli, out, monitors, bolts, support);
+  StageRunner stages(engine, m, handoff, scene, ctx, out, monitors, bolts, support);
   if (restart) {
     try {
-      out.restore(resume.run.at("outputs"), run_dir_of(cli.restart));
+      out.restore(resume.run.at("outputs"), run_dir_of(ctx.restart));
       stages.restore(resume.run.at("stages"));
     } catch (const InputError& e) {
-      throw InputError(cli.restart + ": " + e.what());
+      throw InputError(ctx.restart + ": " + e.what());
     }
-    summary.json()["restarted_from"] = {{"checkpoint", cli.restart}, {"step", engine.step_count()}};
+    summary.restarted_from = CheckpointMark{ctx.restart, engine.step_count()};
   } else {
     reporting_failure(scene, out, engine, timer, [&] {
       out.record_step(engine, m, monitors, timer, "handoff", handoff.alpha);
     });
   }
   stages.set_checkpoint(
-      cli.checkpoint_every >= 0 ? cli.checkpoint_every : scene.output.checkpoint_every, [&] {
+      ctx.checkpoint_every >= 0 ? ctx.checkpoint_every : scene.output.checkpoint_every, [&] {
         Checkpoint c;
         c.run = {{"stages", stages.state()},
                  {"outputs", out.state()},
@@ -318,19 +317,19 @@ int run_tunnel(const Scene& scene, const CommandLine& cli) {
         std::ostringstream bytes;
         engine.save_state(bytes);
         c.engine_state = bytes.str();
-        const std::string path = write_checkpoint(cli.output_dir, engine.step_count(), scene, c);
-        summary.json()["checkpoint"] = {{"last", path}, {"step", engine.step_count()}};
+        const std::string path = write_checkpoint(ctx.output_dir, engine.step_count(), scene, c);
+        summary.checkpoint = CheckpointMark{path, engine.step_count()};
       });
   try {
     stages.run_all(timer);
   } catch (const Interrupted&) {
-    summary.json()["status"] = "interrupted";
-    summary.json()["fdem"] = {{"stages", stages.report()}};
+    summary.status = "interrupted";
+    summary.figures()["fdem"] = {{"stages", stages.report()}};
     out.finish(engine, m, monitors, timer, bolts);
     throw;
   } catch (const NumericalError& e) {
     // The frames and history rows written so far are the last good output.
-    summary.json()["fdem"] = {{"stages", stages.report()}};
+    summary.figures()["fdem"] = {{"stages", stages.report()}};
     const std::string why = with_likely_cause(scene, e.what());
     out.report_failure(engine, timer, why);
     throw NumericalError(why);
@@ -342,7 +341,7 @@ int run_tunnel(const Scene& scene, const CommandLine& cli) {
         dt ? scene.source + ": key 'engine.dt' = " + detail::number_text(scene.engine.dt) +
                  " s: " + e.what() + " (engine.dt = 0 follows the limit through every stage)"
            : scene.source + ": " + e.what();
-    summary.json()["fdem"] = {{"stages", stages.report()}};
+    summary.figures()["fdem"] = {{"stages", stages.report()}};
     out.report_failure(engine, timer, why);
     throw InputError(why);
   }
@@ -353,31 +352,31 @@ int run_tunnel(const Scene& scene, const CommandLine& cli) {
     open.alphas = {0.0};
     open.lining.active = false;
     if (!has_lining_ring(scene)) {
-      const insitu::InsituField reference = insitu::solve_insitu(m, open).back();
-      active_threads();
-      summary.json()["comparison"] = compare_with_continuum(
-          scene, m, engine, reference, output_path(cli.output_dir, "fdem_vs_continuum.csv"));
+      const insitu::InsituField reference =
+          keeping_threads(ctx, [&] { return insitu::solve_insitu(m, open).back(); });
+      summary.figures()["comparison"] = compare_with_continuum(
+          scene, m, engine, reference, output_path(ctx.output_dir, "fdem_vs_continuum.csv"));
     }
-    compare_with_continuum_counterpart(scene, cli, m, engine, handoff, monitors, summary);
+    compare_with_continuum_counterpart(scene, ctx, m, engine, handoff, monitors, summary);
     timer.stamp("insitu");
   }
   const RunVerdict verdict = stages.verdict();
-  summary.json()["status"] = verdict.status;
+  summary.status = verdict.status;
   if (!verdict.message.empty()) {
-    summary.json()["status_reason"] = verdict.message;
-    summary.json()["warnings"].push_back(verdict.status + ": " + verdict.message);
+    summary.status_reason = verdict.message;
+    summary.warnings.push_back(verdict.status + ": " + verdict.message);
     std::cerr << "warning: " << verdict.status << ": " << verdict.message << '\n';
   }
-  summary.json()["damping"] = {{"local", stage_damping(scene).local},
-                               {"mass_proportional", scene.engine.mass_damping},
-                               {"kinetic", scene.engine.kinetic_damping},
-                               {"local_given", scene.engine.local_damping >= 0}};
-  summary.json()["fdem"] = {{"unbalanced_ratio_at_start", start_ratio},
-                            {"unbalanced_ratio_at_end", engine.unbalanced_force_ratio()},
-                            {"handoff_alpha", handoff.alpha},
-                            {"stages", stages.report()}};
+  summary.figures()["damping"] = {{"local", stage_damping(scene).local},
+                                  {"mass_proportional", scene.engine.mass_damping},
+                                  {"kinetic", scene.engine.kinetic_damping},
+                                  {"local_given", scene.engine.local_damping >= 0}};
+  summary.figures()["fdem"] = {{"unbalanced_ratio_at_start", start_ratio},
+                               {"unbalanced_ratio_at_end", engine.unbalanced_force_ratio()},
+                               {"handoff_alpha", handoff.alpha},
+                               {"stages", stages.report()}};
   out.finish(engine, m, monitors, timer, bolts);
-  if (!cli.quiet)
+  if (!ctx.quiet)
     std::cout << "status: " << verdict.status
               << (verdict.message.empty() ? " (every stage met its criteria)"
                                           : " (" + verdict.message + ")")

@@ -34,9 +34,10 @@ fdem::ContactSettings contact_settings(const Scene& scene);
 
 /// The engine's input at a tunnel's hand-off from the implicit `handoff`
 /// field (run_tunnel.cpp): its stresses, the core at its alpha, the box's
-/// in-situ tractions, the scene's dt, mass scaling and contact.
+/// in-situ tractions, the scene's dt, mass scaling and contact, on
+/// `threads` OpenMP threads.
 fdem::ModelInput engine_input(const Scene& scene, const mesh::Mesh& m,
-                              const insitu::InsituField& handoff);
+                              const insitu::InsituField& handoff, int threads);
 
 /// The engine for `in`. An in.dt above the stability limit is refused
 /// (InputError naming engine.dt) unless `force_dt`: then the run keeps it

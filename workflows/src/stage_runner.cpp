@@ -16,13 +16,13 @@ namespace rockfdem::workflows {
 
 StageRunner::StageRunner(fdem::Engine& engine, const mesh::Mesh& m,
                          const insitu::InsituField& handoff, const Scene& scene,
-                         const CommandLine& cli, RunOutputs& out,
+                         const RunContext& ctx, RunOutputs& out,
                          const std::vector<Monitor>& monitors, fdem::BoltPlan& bolts,
                          SupportMaterials materials)
     : engine_(engine),
       mesh_(m),
       scene_(scene),
-      cli_(cli),
+      ctx_(ctx),
       out_(out),
       monitors_(monitors),
       bolts_(bolts),
@@ -210,7 +210,7 @@ bool StageRunner::unstable(const StageSpec& stage, bool criteria) {
 }
 
 bool StageRunner::step_until(const StageSpec& stage, PhaseTimer& timer, long broken_target) {
-  Progress progress(stage.kind, stage.max_steps, cli_.quiet);
+  Progress progress(stage.kind, stage.max_steps, ctx_.quiet);
   const long first = cursor_.first;
   const double t0 = cursor_.t0;
   const auto in_stage = [&] { return engine_.step_count() - first; };
@@ -287,7 +287,7 @@ nlohmann::json StageRunner::grout(const StageSpec& stage, PhaseTimer& timer) {
   for (std::size_t i = 0; i < g.cracks.size(); ++i)
     csv += std::to_string(g.cracks[i]) + ',' + std::to_string(g.midpoints[i][0]) + ',' +
            std::to_string(g.midpoints[i][1]) + '\n';
-  coupling::atomic_write_text(output_path(cli_.output_dir, "grouted_cracks.csv"), csv);
+  coupling::atomic_write_text(output_path(ctx_.output_dir, "grouted_cracks.csv"), csv);
   done["positions_file"] = "grouted_cracks.csv";
   return done;
 }

@@ -21,8 +21,8 @@
 #include "rockfdem/fdem/bolt_install.hpp"
 #include "rockfdem/fdem/engine.hpp"
 #include "rockfdem/insitu/insitu.hpp"
-#include "rockfdem/workflows/cli.hpp"
 #include "rockfdem/workflows/scene.hpp"
+#include "run_context.hpp"
 #include "run_outputs.hpp"
 
 namespace rockfdem::workflows {
@@ -46,7 +46,7 @@ struct SupportMaterials {
 class StageRunner {
  public:
   StageRunner(fdem::Engine& engine, const mesh::Mesh& m, const insitu::InsituField& handoff,
-              const Scene& scene, const CommandLine& cli, RunOutputs& out,
+              const Scene& scene, const RunContext& ctx, RunOutputs& out,
               const std::vector<Monitor>& monitors, fdem::BoltPlan& bolts,
               SupportMaterials materials);
   /// Called to write a checkpoint: every `every` steps (at the next output
@@ -106,7 +106,7 @@ class StageRunner {
   fdem::Engine& engine_;
   const mesh::Mesh& mesh_;
   const Scene& scene_;
-  const CommandLine& cli_;
+  const RunContext& ctx_;
   RunOutputs& out_;
   const std::vector<Monitor>& monitors_;
   fdem::BoltPlan& bolts_;

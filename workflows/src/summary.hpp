@@ -1,10 +1,17 @@
-// summary.json: the fixed keys (docs/output-formats.md), filled as a run
-// goes and written atomically at the end, and where a run stops early (a
-// failure or a signal), so every run leaves a valid record.
+// The run's record, written as summary.json (docs/output-formats.md). The
+// stages and outputs fill it as the run goes; summary.cpp alone turns it
+// into JSON. It is written atomically at the end of a run (status
+// completed or not_at_equilibrium), and where a run stops early once its
+// output directory is claimed: a numerical failure, a stage's refusal of
+// engine.dt, a signal. A scene or checkpoint refused before anything is
+// written leaves no summary; checkpoints do not rewrite it.
 #pragma once
 
+#include <map>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <string>
+#include <vector>
 
 #include "phase_timer.hpp"
 
@@ -25,12 +32,33 @@ struct OutputSettings;
 /// removed or changes meaning (docs/output-formats.md lists the changes).
 constexpr int kSummaryFormatVersion = 2;
 
-class RunSummary {
+/// A checkpoint a run wrote or continued from, and its step.
+struct CheckpointMark {
+  std::string path;
+  long step = 0;
+};
+
+class RunRecord {
  public:
-  /// The fixed keys, with counts.bolts the scene's bolts and cables.
-  RunSummary(const Scene& scene, int threads);
-  nlohmann::json& json() { return root_; }
-  void skipped(const std::string& what_and_why);
+  /// The fixed keys, with counts.bolts the scene's bolts and cables and
+  /// the scene's warnings.
+  RunRecord(const Scene& scene, int threads);
+
+  /// How the run ended: completed, not_at_equilibrium, failed, interrupted
+  /// (empty: not yet; no key).
+  std::string status;
+  std::optional<std::string> status_reason;  ///< why not at equilibrium
+  std::optional<std::string> failure;        ///< the diagnostic of a failed or interrupted run
+  std::vector<std::string> warnings;         ///< the scene's, then the run's
+  std::vector<std::string> skipped;          ///< modules and outputs left out, and why
+  std::optional<CheckpointMark> restarted_from;
+  std::optional<CheckpointMark> checkpoint;  ///< the last one written
+
+  /// The record's figures not yet held as members (counts, mesh, insitu,
+  /// fdem, monitors, bolts, lining, broken zone, ...), as summary.json's keys.
+  nlohmann::json& figures() { return figures_; }
+  const nlohmann::json& figures() const { return figures_; }
+
   /// Notes in `skipped` the outputs the scene turned off: `paraview_files`
   /// (what output.vtk = false leaves out) and, where the command renders
   /// any, the plots.
@@ -44,10 +72,14 @@ class RunSummary {
   /// field (ux, uy per vertex), which the coordinates' bits would blur.
   void record_insitu_state(const insitu::InsituField& field);
   void set_timings(const PhaseTimer& timer);
+
+  /// summary.json's content.
+  nlohmann::json to_json() const;
   void write(const std::string& path) const;
 
  private:
-  nlohmann::json root_;
+  std::map<std::string, double> timings_;  ///< per phase (snake_case) and "total" [s]
+  nlohmann::json figures_;
 };
 
 }  // namespace rockfdem::workflows

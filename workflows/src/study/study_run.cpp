@@ -78,38 +78,38 @@ std::optional<VariantResult> recorded_result(const CommandLine& study, const Var
 }
 
 VariantResult run_variant(const CommandLine& study, const Variant& v) {
-  CommandLine cli = study;
-  cli.command = "run";
-  cli.output_dir = variant_dir(study, v);
-  for (const std::string& o : v.overrides()) cli.overrides.push_back(o);
-  cli.quiet = cli.force = true;
-  const Scene scene = load_scene(cli.scene, cli.overrides);  // checked before the study began
+  std::vector<std::string> overrides = study.overrides;
+  for (const std::string& o : v.overrides()) overrides.push_back(o);
+  const Scene scene = load_scene(study.scene, overrides);  // checked before the study began
+  RunContext ctx = run_context(study);
+  ctx.output_dir = variant_dir(study, v);
+  ctx.quiet = ctx.force = true;
   const nlohmann::json id = variant_identity(scene, v);
   VariantResult r;
-  if (reuse(cli.output_dir, id, &r)) return r;
+  if (reuse(ctx.output_dir, id, &r)) return r;
   r = VariantResult{};
   r.name = v.name;
-  fs::remove(output_path(cli.output_dir, kRecord));  // until this run has finished
+  fs::remove(output_path(ctx.output_dir, kRecord));  // until this run has finished
   const auto start = std::chrono::steady_clock::now();
   try {
     refuse_if_too_large(scene);
-    command_run(scene, cli);
-    const nlohmann::json summary = read_json(output_path(cli.output_dir, "summary.json"));
-    if (!summary.is_object()) throw std::runtime_error(cli.output_dir + ": no summary.json");
+    command_run(scene, ctx);
+    const nlohmann::json summary = read_json(output_path(ctx.output_dir, "summary.json"));
+    if (!summary.is_object()) throw std::runtime_error(ctx.output_dir + ": no summary.json");
     r.status = summary.value("status", "");
     r.message = summary.value("status_reason", "");
     r.figures = key_figures(summary);
   } catch (const NumericalError& e) {
     r.status = "failed";
     r.message = e.what();
-    r.figures = key_figures(read_json(output_path(cli.output_dir, "summary.json")));
+    r.figures = key_figures(read_json(output_path(ctx.output_dir, "summary.json")));
   } catch (const InputError& e) {
     r.status = "refused";
     r.message = e.what();
   }
   r.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  fs::create_directories(cli.output_dir);
-  coupling::atomic_write_text(output_path(cli.output_dir, kRecord),
+  fs::create_directories(ctx.output_dir);
+  coupling::atomic_write_text(output_path(ctx.output_dir, kRecord),
                               nlohmann::json{{"identity", id}, {"result", r.to_json()}}.dump(1));
   return r;
 }
