@@ -141,6 +141,10 @@ ROCKFDEM_LAW_INLINE T splat(double x) {
   }
 }
 
+/// The integer lanes of a register's bit patterns.
+template <class T>
+using Bits = decltype(T{} < T{});
+
 /// Whether some lane of x is > 0 (not a number: no).
 template <class T>
 ROCKFDEM_LAW_INLINE bool any_positive(T x) {
@@ -148,10 +152,10 @@ ROCKFDEM_LAW_INLINE bool any_positive(T x) {
     return x > 0.0;
   } else {
     const T one = splat<T>(1.0), zero{};
-    const T count = (x > zero) ? one : zero;
-    double sum = 0.0;
-    for (int i = 0; i < kWidth<T>; ++i) sum += count[i];
-    return sum > 0.0;
+    const auto set = (Bits<T>)((x > zero) ? one : zero);  // a select, then its bits
+    long any = 0;
+    for (int i = 0; i < kWidth<T>; ++i) any |= set[i];
+    return any != 0;
   }
 }
 
@@ -164,10 +168,6 @@ ROCKFDEM_LAW_INLINE T sqrt(T x) {
     return x;
   }
 }
-
-/// The integer lanes of a register's bit patterns.
-template <class T>
-using Bits = decltype(T{} < T{});
 
 template <class T>
 ROCKFDEM_LAW_INLINE T abs(T x) {
