@@ -16,8 +16,9 @@
 // Same bits on both paths: a lane performs the scalar formulas' IEEE
 // operations in their order; a select takes the place of each branch.
 // Everything here is always inlined into its caller, which is compiled for
-// its own instruction set (GCC lowers vector operations after inlining), so
-// the ABI GCC warns about for vector arguments (-Wpsabi) never applies.
+// its own instruction set (GCC lowers arithmetic and selects after
+// inlining; see the rule on comparisons below), so the ABI GCC warns about
+// for vector arguments never applies (crack_batch.cpp: -Wno-psabi).
 #pragma once
 
 #include <algorithm>
@@ -119,8 +120,8 @@ using CrackPoint = CrackPointOf<double>;
 /// laws are compiled outside the kernels' instruction-set regions
 /// (isa_regions.hpp) and inlined into them; GCC lowers arithmetic and
 /// selects in the function they end up in, but a comparison kept as a mask
-/// value in the instruction set of the place it is written (SSE2: lane by
-/// lane, several times slower in the AVX-512 kernel). Reductions over lanes
+/// value is lowered for the instruction set of the place it is written
+/// (SSE2: lane by lane, several times slower in the AVX-512 kernel). Reductions over lanes
 /// go through any_positive.
 namespace lanes {
 
