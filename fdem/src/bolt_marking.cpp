@@ -15,7 +15,6 @@
 #include <string>
 
 #include "rockfdem/error.hpp"
-#include "rockfdem/fdem/constants.hpp"
 
 namespace rockfdem::fdem {
 namespace {
@@ -204,21 +203,6 @@ Bolt bolt_from_head(const Point2& head, const Point2& direction, double length, 
         std::to_string(length) + " m)");
   const Point2 u{direction[0] / norm, direction[1] / norm};
   return {head, {head[0] + length * u[0], head[1] + length * u[1]}, diameter};
-}
-
-std::vector<Bolt> expand_fan(const BoltFan& fan) {
-  if (fan.count < 1 || !(fan.radius > 0))
-    throw InputError("fdem bolts: a fan needs count >= 1 and a positive radius (got count " +
-                     std::to_string(fan.count) + ", radius " + std::to_string(fan.radius) + ")");
-  std::vector<Bolt> bolts;
-  for (int i = 0; i < fan.count; ++i) {
-    const double f = fan.count == 1 ? 0.0 : double(i) / (fan.count - 1);
-    const double angle = (fan.first_deg + f * (fan.last_deg - fan.first_deg)) * kPi / 180.0;
-    const Point2 dir{std::cos(angle), std::sin(angle)};
-    const Point2 head{fan.centre[0] + fan.radius * dir[0], fan.centre[1] + fan.radius * dir[1]};
-    bolts.push_back(bolt_from_head(head, dir, fan.length, fan.diameter));
-  }
-  return bolts;
 }
 
 namespace {

@@ -5,10 +5,10 @@
 #include <array>
 #include <cmath>
 
+#include "rockfdem/fdem/constants.hpp"
+
 namespace rockfdem::fdem {
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
 
 /// The bolt's frame: head A, unit axis t, normal n (t turned 90 deg ccw).
 struct Axis {

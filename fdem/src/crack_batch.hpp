@@ -3,13 +3,13 @@
 //
 // In most steps most crack elements are rock elements whose damage does
 // not grow: intact ones below their peaks, and softened ones whose
-// excursion stays within their history. crack_forces copies the rock
-// elements that are not broken (one material per batch) into a CrackBatch;
-// run_crack_batch evaluates their geometry, law and forces lane by lane
-// without a branch and flags the lanes where some point's damage would
-// grow. Those, and every other element (steel, another material), take the
-// scalar path in element order, so the released energy, histories and
-// state changes are those of a scalar loop.
+// excursion stays within their history. crack_forces copies the elements
+// that are not broken (one material per batch, of a law with kBatched)
+// into a CrackBatch; run_crack_batch evaluates their geometry, law and
+// forces lane by lane without a branch and flags the lanes where some
+// point's damage would grow. Those, and every other element (steel, another
+// material), take the scalar path in element order, so the released
+// energy, histories and state changes are those of a scalar loop.
 // Same bits: one lane performs the scalar formulas' IEEE operations in
 // their order (no contraction), as in contact_roles.hpp.
 #pragma once
@@ -37,8 +37,8 @@ struct CrackBatch {
   double grows[kCrackBatch];
 };
 
-/// Lanes 0 .. n - 1 of `b`, all of rock law `k`, none broken; `scaled`:
-/// each lane's strengths are its factor times k's.
+/// Lanes 0 .. n - 1 of `b`, all of material constants `k` (any law), none
+/// broken; `scaled`: each lane's strengths are its factor times k's.
 void run_crack_batch(CrackBatch& b, int n, const CrackConstants& k, bool scaled,
                      SimdIsa isa = SimdIsa::kBest);
 

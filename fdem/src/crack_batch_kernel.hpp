@@ -1,76 +1,25 @@
 // run_crack_batch's kernel (crack_batch.cpp), written once for any vector
-// width and included once per instruction set (isa_regions.hpp explains
-// why). It is crack_element() (crack_elements.cpp) for a rock element
-// with rock_point() (crack_law.hpp) at its points' damage histories, every
-// branch a select; `grows` marks lanes where accumulate_damage would raise
-// a history (a or b > 0 and sqrt(a^2 + b^2) above it). The softening z(D)
-// is the scalar table look-up, lane by lane. kScaled: each lane's strength
-// terms are its factor's (scaled_strength_terms, as the scalar loop's
-// scale_crack_strength); otherwise k's own, broadcast once.
+// width and any crack law, and included once per instruction set
+// (isa_regions.hpp explains why). It is crack_element() (crack_elements.cpp)
+// with the law's point() (crack_law.hpp) run on a register of elements: the
+// law is the same template the scalar loop runs, so the law is written once.
+// `grows` marks lanes where some point's damage history would rise (their
+// outputs are discarded and the scalar path redoes them). kScaled: each
+// lane's strength terms are its factor's (scaled_strength_terms, as the
+// scalar loop's); otherwise k's own, broadcast once.
 //
 // Expects: CrackBatch, CrackConstants (crack_batch.hpp), the vector types
 // V2, V4, V8 (isa_regions.hpp).
 
 #include "vector_lanes.hpp"
 
-/// pre_peak: (2 - x) x below the peak, 1 from x = 1 on.
-template <class V>
-LANE_INLINE V pre_peak_of(V x) {
-  return (x >= 1.0) ? all<V>(1.0) : (2.0 - x) * x;
-}
-
-/// rock_point at the history `damage` where it does not grow: sigma, tau,
-/// and whether it would grow.
-template <class V>
-LANE_INLINE void rock_point_lanes(const CrackConstants& k, const StrengthTerms<V>& st, V o, V s,
-                                  V h, V inv_h, V damage, V& sigma, V& tau, Mask<V>& grows) {
-  const V zero{};
-  const Mask<V> closed = o < zero;
-  const V sigma_c = closed ? k.pn * o * inv_h : zero;
-  const V fs = st.c - sigma_c * k.tan_phi;
-  V inv_fs = 1.0 / fs;
-  inv_fs = closed ? inv_fs : st.inv_c;
-  const V op = h * st.op_per_h;
-  const V sp = h * fs * k.two_over_pt;
-  const V abs_s = abs_of(s);
-  const V a = (o > op) ? (o - op) * st.inv_open_range : zero;
-  const V b = (abs_s > sp) ? (abs_s - sp) * fs * k.inv_slip_energy : zero;
-  // Only registers with an excursion need its size, only softened ones z.
-  const Mask<V> excursion = (a > zero) | (b > zero);
-  if (any_lane(excursion)) {
-    V trial = a * a + b * b;
-    for (int i = 0; i < kWidth<V>; ++i) trial[i] = __builtin_sqrt(trial[i]);
-    // A history at 1 stays there (accumulate_damage caps at 1).
-    grows = grows | (excursion & (trial > damage) & (damage < 1.0));
-  }
-  V z = all<V>(1.0);
-  const Mask<V> softened = damage > zero;
-  if (any_lane(softened)) {
-    const double* table = softening_table();
-    V table_z;
-    // Lanes at 0 (or not a number) look up 0, not a stray index.
-    for (int i = 0; i < kWidth<V>; ++i)
-      table_z[i] = softening_z(table, damage[i] > 0.0 ? damage[i] : 0.0);
-    z = softened ? table_z : z;
-  }
-  sigma = closed ? sigma_c : pre_peak_of(o * inv_h * st.h_per_op) * z * st.ft;
-  tau = copysign_of(pre_peak_of(abs_s * inv_h * k.half_pt * inv_fs) * z * fs, s);
-}
-
-/// scaled_strength_terms (crack_law.hpp) for a register of factors f: the
-/// same operations, compiled here inside the instruction set's region.
-template <class V>
-LANE_INLINE StrengthTerms<V> scaled_strength_lanes(const CrackConstants& k, V f) {
-  return {k.ft * f, k.c * f, k.inv_c / f, k.op_per_h * f, k.h_per_op / f, k.inv_open_range * f};
-}
-
-template <class V, bool kScaled>
+template <class V, class Law, bool kScaled>
 LANE_INLINE void crack_loop(CrackBatch& b, int n, const CrackConstants& k) {
   const StrengthTerms<V> material{all<V>(k.ft),       all<V>(k.c),        all<V>(k.inv_c),
                                   all<V>(k.op_per_h), all<V>(k.h_per_op), all<V>(k.inv_open_range)};
   for (int r = 0; r < n; r += kWidth<V>) {
     const StrengthTerms<V> st =
-        kScaled ? scaled_strength_lanes(k, load<V>(&b.strength[r])) : material;
+        kScaled ? scaled_strength_terms(k, load<V>(&b.strength[r])) : material;
     const V x0 = load<V>(&b.x[0][r]), y0 = load<V>(&b.y[0][r]);
     const V x1 = load<V>(&b.x[1][r]), y1 = load<V>(&b.y[1][r]);
     const V x2 = load<V>(&b.x[2][r]), y2 = load<V>(&b.y[2][r]);
@@ -89,14 +38,19 @@ LANE_INLINE void crack_loop(CrackBatch& b, int n, const CrackConstants& k) {
       o[i] -= load<V>(&b.off_o[i][r]);
       s[i] -= load<V>(&b.off_s[i][r]);
     }
-    V sigma[3], tau[3];
+    CrackPointOf<V> p[3];
     Mask<V> grows{};
-    for (int i = 0; i < 3; ++i)
-      rock_point_lanes(k, st, o[i], s[i], h, inv_h, load<V>(&b.damage[i][r]), sigma[i], tau[i],
-                       grows);
+    for (int i = 0; i < 3; ++i) {
+      const V before = load<V>(&b.damage[i][r]);
+      V damage = before;
+      p[i] = Law::point(k, st, o[i], s[i], h, inv_h, damage);
+      grows = grows | (damage > before);
+    }
     const V w_end = h / 6.0, w_mid = h / 3.0;
-    const V sn0 = w_end * sigma[0] + w_mid * sigma[1], st0 = w_end * tau[0] + w_mid * tau[1];
-    const V sn1 = w_end * sigma[2] + w_mid * sigma[1], st1 = w_end * tau[2] + w_mid * tau[1];
+    const V sn0 = w_end * p[0].sigma + w_mid * p[1].sigma;
+    const V st0 = w_end * p[0].tau + w_mid * p[1].tau;
+    const V sn1 = w_end * p[2].sigma + w_mid * p[1].sigma;
+    const V st1 = w_end * p[2].tau + w_mid * p[1].tau;
     const V f0x = -(st0 * ex + sn0 * nx), f0y = -(st0 * ey + sn0 * ny);
     const V f1x = -(st1 * ex + sn1 * nx), f1y = -(st1 * ey + sn1 * ny);
     store(&b.out[0][r], f0x);

@@ -23,18 +23,13 @@ void zero_slots(double* s) {
 
 /// The three integration points of one element with law L; the damage
 /// histories are scalars so that they stay in registers.
-template <CrackLaw L>
-inline void law_points(const CrackConstants& k, const double o[3], const double s[3], double h,
-                       double inv_h, double& d0, double& d1, double& d2, CrackPoint p[3]) {
-  if (L == CrackLaw::kBoltSteel) {
-    p[0] = bolt_steel_point(k, o[0], s[0], h, inv_h, d0);
-    p[1] = bolt_steel_point(k, o[1], s[1], h, inv_h, d1);
-    p[2] = bolt_steel_point(k, o[2], s[2], h, inv_h, d2);
-  } else {
-    p[0] = rock_point(k, o[0], s[0], h, inv_h, d0);
-    p[1] = rock_point(k, o[1], s[1], h, inv_h, d1);
-    p[2] = rock_point(k, o[2], s[2], h, inv_h, d2);
-  }
+template <class L>
+inline void law_points(const CrackConstants& k, const StrengthTerms<double>& st, const double o[3],
+                       const double s[3], double h, double inv_h, double& d0, double& d1,
+                       double& d2, CrackPoint p[3]) {
+  p[0] = L::point(k, st, o[0], s[0], h, inv_h, d0);
+  p[1] = L::point(k, st, o[1], s[1], h, inv_h, d1);
+  p[2] = L::point(k, st, o[2], s[2], h, inv_h, d2);
 }
 
 /// Potential of the element's three points (Simpson weights h/6, 2h/3, h/6)
@@ -91,15 +86,12 @@ inline double element_potential(const CrackConstants& k, const double o[3], cons
   const double d0x = x0 - x3, d0y = y0 - y3, d1x = x1 - x2, d1y = y1 - y2;
   double o0 = d0x * nx + d0y * ny, s0 = d0x * ex + d0y * ey;
   double o1 = d1x * nx + d1y * ny, s1 = d1x * ex + d1y * ey;
-  // The material's constants, or this element's with scaled strengths
-  // (a copy only in heterogeneous models).
-  const CrackConstants* law = &d.crack_laws[d.cracks.material[c]];
-  CrackConstants own;
-  if (!d.cracks.strength.empty()) {
-    own = scale_crack_strength(*law, d.cracks.strength[c]);
-    law = &own;
-  }
-  const CrackConstants& k = *law;
+  // The material's constants and strength terms, the latter scaled by the
+  // element's factor in heterogeneous models.
+  const CrackConstants& k = d.crack_laws[d.cracks.material[c]];
+  const StrengthTerms<double> st = d.cracks.strength.empty()
+                                       ? material_terms(k)
+                                       : scaled_strength_terms(k, d.cracks.strength[c]);
   double o[3] = {o0, 0.5 * (o0 + o1), o1}, s[3] = {s0, 0.5 * (s0 + s1), s1};
   if (!d.cracks.offset.empty()) {  // re-joined or pre-stressed elements (per point)
     const double* off = &d.cracks.offset[6 * c];
@@ -113,15 +105,9 @@ inline double element_potential(const CrackConstants& k, const double o[3], cons
   const double before[3] = {damage[0], damage[1], damage[2]};
   double d0 = before[0], d1 = before[1], d2 = before[2];
   CrackPoint pt[3];
-  switch (k.law) {  // one dispatch per element; new laws add a case
-    case CrackLaw::kBoltSteel:
-      law_points<CrackLaw::kBoltSteel>(k, o, s, h, inv_h, d0, d1, d2, pt);
-      break;
-    case CrackLaw::kRock:
-    default:
-      law_points<CrackLaw::kRock>(k, o, s, h, inv_h, d0, d1, d2, pt);
-      break;
-  }
+  with_crack_law(k.law, [&](auto law) {  // one dispatch per element
+    law_points<decltype(law)>(k, st, o, s, h, inv_h, d0, d1, d2, pt);
+  });
   const CrackPoint &p0 = pt[0], &pm = pt[1], &p1 = pt[2];
   // Damage never decreases, so each difference is >= 0 and their sum is
   // > 0 exactly when some point's damage grew. Only then can the element
@@ -221,7 +207,7 @@ FailureMode classify_failure(double sum_a2, double sum_b2) {
 namespace {
 
 /// Whether element c takes the batch path: active, not broken, material
-/// `material` (a rock one, one per batch), and not an intact element with
+/// `material` (one of a batched law, one per batch), and not an intact element with
 /// a damage history (the scalar loop would mark it yielding; growth marks
 /// it in the same step, so this is only a guard).
 inline bool batchable(const EngineData& d, long c, int material) {
@@ -258,7 +244,7 @@ void batch_pass(const EngineData& d, long begin, long end, CrackBatch& b, int* e
   int material = -1;
   for (long c = begin; c < end && material < 0; ++c)
     if (d.cracks.active[c] && d.cracks.state[c] != std::uint8_t(CrackState::kBroken) &&
-        d.crack_laws[d.cracks.material[c]].law == CrackLaw::kRock)
+        crack_law_batched(d.crack_laws[d.cracks.material[c]].law))
       material = d.cracks.material[c];
   if (material < 0) return;
   const CrackConstants& k = d.crack_laws[material];
@@ -292,9 +278,9 @@ void batch_pass(const EngineData& d, long begin, long end, CrackBatch& b, int* e
 }  // namespace
 
 /// Fixed blocks of kEnergyBlock elements: the released potential is a
-/// deterministic block sum (energy.hpp). In each block the rock elements
-/// go through the batch kernel first (crack_batch.hpp); the rest, and those
-/// whose damage grows, through crack_element in element order.
+/// deterministic block sum (energy.hpp). In each block the elements of the
+/// first material with a batched law (rock) go through the batch kernel first (crack_batch.hpp);
+/// the rest, and those whose damage grows, through crack_element in element order.
 long crack_forces(EngineData& d) {
   const long nc = static_cast<long>(d.cracks.size());
   const long n_blocks = (nc + kEnergyBlock - 1) / kEnergyBlock;

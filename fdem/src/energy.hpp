@@ -1,4 +1,4 @@
-// The energy ledger (issue 9): what the step accumulates, and the closed
+// The energy ledger: what the step accumulates, and the closed
 // forms of the stored energies it is checked against.
 //
 // Central differences move energy exactly as

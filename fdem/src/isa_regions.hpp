@@ -5,8 +5,10 @@
 // (GCC: target pragmas; Clang: a target attribute applied to every
 // function). GCC lowers vector operations per function, by that function's
 // own target, so the helpers must be compiled inside the region too, not
-// only the loop that inlines them. No include guard: one inclusion per
-// translation unit, inside that unit's namespace (contact_roles.cpp,
+// only the loop that inlines them. (The crack laws' templates are the
+// exception that proves the rule: written outside, always inlined, with
+// comparisons only as selects' conditions; crack_law_parts.hpp says why.) No include guard: one
+// inclusion per translation unit, inside that unit's namespace (contact_roles.cpp,
 // crack_batch.cpp).
 
 /// W doubles in one register (GCC vector extension).

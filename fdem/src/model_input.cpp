@@ -5,6 +5,7 @@
 #include <string>
 
 #include "rockfdem/error.hpp"
+#include "rockfdem/fdem/crack_law.hpp"
 #include "topology.hpp"
 
 namespace rockfdem::fdem::detail {
@@ -32,20 +33,16 @@ void check_material(const Material& m, std::size_t i) {
   if (!(m.weibull_modulus >= 0) || !std::isfinite(m.weibull_modulus))
     fail(name + "Weibull modulus " + str(m.weibull_modulus) +
          " must be >= 0 (0 = homogeneous strengths)");
-  if (m.weibull_modulus > 0 && m.crack_law != CrackLaw::kRock)
-    fail(name +
-         "a Weibull modulus (strength heterogeneity) applies to the rock crack law "
-         "only; set it to 0 for bolt steel");
-  if (m.crack_law == CrackLaw::kRock) {
-    if (!(m.tensile_strength > 0 && m.cohesion > 0))
-      fail(name + "tensile strength and cohesion must be > 0 for the rock crack law");
-    if (!(m.friction_deg >= 0 && m.friction_deg < 90))
-      fail(name + "friction angle " + str(m.friction_deg) + " must lie in [0, 90) degrees");
-  } else {
-    if (!(m.yield_strength > 0 && m.ultimate_strength >= m.yield_strength &&
-          m.shear_yield_strength > 0))
-      fail(name + "bolt steel needs 0 < yield <= ultimate strength and shear yield > 0");
-  }
+  with_crack_law(m.crack_law, [&](auto law) {
+    using Law = decltype(law);
+    if (m.weibull_modulus > 0 && !Law::kHeterogeneous)
+      fail(name +
+           "a Weibull modulus (strength heterogeneity) applies to the rock crack law "
+           "only; set it to 0 for " +
+           Law::kName);
+    const std::string problem = Law::input_problem(m);
+    if (!problem.empty()) fail(name + problem);
+  });
 }
 
 void check_sizes(const ModelInput& in) {

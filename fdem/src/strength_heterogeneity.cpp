@@ -14,7 +14,7 @@ std::uint64_t splitmix64(std::uint64_t x) {
 }
 
 double strength_factor(const Material& m, int vertex_a, int vertex_b) {
-  if (!(m.weibull_modulus > 0) || m.crack_law != CrackLaw::kRock) return 1.0;
+  if (!(m.weibull_modulus > 0) || !crack_law_heterogeneous(m.crack_law)) return 1.0;
   // The edge as one 64-bit counter (vertex ids are non-negative ints),
   // hashed together with the hashed seed.
   const auto lo = static_cast<std::uint64_t>(std::min(vertex_a, vertex_b));

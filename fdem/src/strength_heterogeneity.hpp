@@ -1,6 +1,6 @@
 // Seeded strength heterogeneity of rock crack elements (Material::
 // weibull_modulus): one Weibull factor per element, scaling its tensile
-// strength and cohesion (crack_law.hpp, scale_crack_strength).
+// strength and cohesion (crack_law_parts.hpp, scaled_strength_terms).
 //
 // The factor is a pure function of (seed, the element's two mesh vertex
 // ids, sorted): a counter-based hash (splitmix64) gives a uniform u in

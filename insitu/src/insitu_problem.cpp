@@ -121,6 +121,7 @@
 
 #include "dealii_grid.hpp"
 #include "rockfdem/error.hpp"
+#include "rockfdem/insitu/constants.hpp"
 #include "rockfdem/insitu/insitu.hpp"
 
 namespace rockfdem::insitu {
@@ -128,8 +129,6 @@ namespace rockfdem::insitu {
 namespace {
 
 using namespace dealii;
-
-constexpr double kPi = 3.14159265358979323846;
 
 // Boundary faces carry the mesh's edge tags as boundary ids (kBottom ...
 // kLeft on the box, kExcavation where the core was removed, 0 untagged);

@@ -5,13 +5,12 @@
 #include <set>
 
 #include "rockfdem/error.hpp"
+#include "rockfdem/insitu/constants.hpp"
 #include "rockfdem/insitu/insitu.hpp"
 
 namespace rockfdem::insitu {
 
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
 
 /// Polar components (tension positive) of the Kirsch field at (r, t), t
 /// measured from the sH direction.

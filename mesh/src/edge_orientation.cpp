@@ -9,10 +9,10 @@
 #include <stdexcept>
 #include <utility>
 
+#include "rockfdem/mesh/constants.hpp"
+
 namespace rockfdem::mesh {
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
 
 // Edges shared by two of the band's triangles, as (low, high) pairs: where
 // crack elements can sit. The band's rims are left out: the excavation

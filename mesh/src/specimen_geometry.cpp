@@ -8,11 +8,9 @@
 
 #include "gmsh_model.hpp"
 #include "rockfdem/error.hpp"
+#include "rockfdem/mesh/constants.hpp"
 
 namespace rockfdem::mesh::detail {
-namespace {
-constexpr double kPi = 3.14159265358979323846;
-}
 
 GmshModelMap add_ucs_model(const SpecimenSpec& s) {
   if (!(s.width > 0 && s.height > 0))

@@ -11,12 +11,11 @@
 
 #include "gmsh_model.hpp"
 #include "rockfdem/error.hpp"
+#include "rockfdem/mesh/constants.hpp"
 #include "rockfdem/mesh/mesh.hpp"
 
 namespace rockfdem::mesh::detail {
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
 
 int add_arc_points(const OutlinePiece& p, std::vector<int>& curves, int start, int end) {
   const int n_sub = std::max(1, static_cast<int>(std::ceil((p.a1 - p.a0) / (kPi / 2) - 1e-9)));

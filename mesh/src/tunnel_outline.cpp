@@ -8,12 +8,11 @@
 #include <string>
 
 #include "rockfdem/error.hpp"
+#include "rockfdem/mesh/constants.hpp"
 #include "rockfdem/mesh/outline.hpp"
 
 namespace rockfdem::mesh {
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
 
 OutlinePiece segment(double x0, double y0, double x1, double y1) {
   OutlinePiece p;

@@ -9,12 +9,11 @@
 #include <cmath>
 
 #include "rockfdem/fdem/bolt_output.hpp"
+#include "rockfdem/fdem/constants.hpp"
 #include "test_models.hpp"
 
 namespace rockfdem::fdem {
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
 
 // A bolt of d = 50 mm on a 0.4 m strip of 8 x 2 cells (50 x 25 mm), both
 // rows its own (long sides on mesh lines), nu = 0 (uniaxial). Every node

@@ -1,4 +1,4 @@
-// Checkpoint (issue 9): save_state / load_state restart a run bit for bit
+// Checkpoint: save_state / load_state restart a run bit for bit
 // with another thread count, refuse truncated, corrupt, foreign-version and
 // foreign-model states without touching the engine, and round-trip exactly.
 //

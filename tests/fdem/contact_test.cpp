@@ -1,4 +1,4 @@
-// Contact (issue 5): Munjiza's potential-based penalty contact with Coulomb
+// Contact: Munjiza's potential-based penalty contact with Coulomb
 // friction, the free-surface broad phase, and determinism.
 #include <gtest/gtest.h>
 

@@ -90,7 +90,7 @@ TEST(CrackElement, crack_law_mode_I_dissipates_GfI) {
   EXPECT_NEAR(u_break, op + k.open_range, 0.01 * k.open_range);
 }
 
-// Grouting (issue 7): a broken element re-joined where it is carries tension
+// Grouting: a broken element re-joined where it is carries tension
 // again from its new zero, up to ft, and dissipates GfI again (2%).
 TEST(CrackElement, rejoined_crack_carries_tension_from_its_new_zero) {
   const double h = 0.01;

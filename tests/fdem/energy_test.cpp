@@ -1,4 +1,4 @@
-// Energy balance (issue 9): work of external forces = change of the stored
+// Energy balance: work of external forces = change of the stored
 // energies + what damping, fracture, friction and absorbing boundaries
 // dissipated + what stage controls took out. Engine::energy_balance()
 // computes every term on its own (closed forms for the stored ones,

@@ -11,11 +11,10 @@
 #include <cmath>
 
 #include "fixtures.hpp"
+#include "rockfdem/insitu/constants.hpp"
 
 namespace rockfdem::insitu::test {
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
 
 /// sigma0 (tension positive) of a rotated biaxial field, with gravity.
 Stress expected_stress(const InsituSpec& s, double y) {

@@ -17,12 +17,11 @@
 #include <cstdio>
 
 #include "fixtures.hpp"
+#include "rockfdem/insitu/constants.hpp"
 #include "rockfdem/mesh/build.hpp"
 
 namespace rockfdem::insitu::test {
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
 
 /// Mean over rays of the yielded-to-elastic transition radius [m].
 double plastic_radius_along_rays(const mesh::Mesh& m, const PlasticField& f, int n_rays) {

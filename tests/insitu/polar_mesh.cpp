@@ -5,11 +5,11 @@
 #include <stdexcept>
 #include <vector>
 
+#include "rockfdem/insitu/constants.hpp"
+
 namespace rockfdem::insitu::test {
 
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
 
 int add_vertex(mesh::Mesh& m, double x, double y) {
   m.x.push_back(x);

@@ -17,11 +17,10 @@
 #include <vector>
 
 #include "rockfdem/mesh/build.hpp"
+#include "rockfdem/mesh/constants.hpp"
 
 namespace rockfdem::mesh {
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
 
 // An equilateral lattice of n x n points (side 1), edges at 0, 60 and 120
 // degrees to the x axis, split into 2 (n-1)^2 counter-clockwise triangles.

@@ -7,11 +7,10 @@
 #include <cmath>
 
 #include "rockfdem/error.hpp"
+#include "rockfdem/mesh/constants.hpp"
 
 namespace rockfdem::mesh {
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
 
 TunnelSpec circular(double r) {
   TunnelSpec t;

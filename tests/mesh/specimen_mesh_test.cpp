@@ -7,13 +7,12 @@
 #include "mesh_checks.hpp"
 #include "rockfdem/error.hpp"
 #include "rockfdem/mesh/build.hpp"
+#include "rockfdem/mesh/constants.hpp"
 
 namespace rockfdem::mesh {
 namespace {
 
 using namespace checks;
-constexpr double kPi = 3.14159265358979323846;
-
 MeshSpec ucs() {
   MeshSpec s;
   s.kind = ModelKind::kUcs;

@@ -11,12 +11,12 @@
 #include "mesh_checks.hpp"
 #include "rockfdem/error.hpp"
 #include "rockfdem/mesh/build.hpp"
+#include "rockfdem/mesh/constants.hpp"
 
 namespace rockfdem::mesh {
 namespace {
 
 using namespace checks;
-constexpr double kPi = 3.14159265358979323846;
 constexpr double kNear = 0.25, kFar = 2.5, kThickness = 0.3, kFracture = 1.0;
 
 struct Case {

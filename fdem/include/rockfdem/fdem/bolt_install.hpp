@@ -73,7 +73,7 @@ struct BoltPlan {
 BoltPlan plan_bolts(ModelInput& in, const std::vector<BoltSpec>& specs);
 
 enum class BoltStart {
-  kStressFree,         ///< the strip starts unstressed in its current shape (issue 7)
+  kStressFree,         ///< the strip starts unstressed in its current shape
   kKeepCurrentStress,  ///< the strip keeps the stress it carries; outputs count from there
 };
 

@@ -1,7 +1,7 @@
-// Rockbolts as plain records, fan patterns, and the marking of the mesh
-// triangles each bolt occupies (seed sec. 2.2.1, eq. 3).
+// Rockbolts as plain records and the marking of the mesh triangles each
+// bolt occupies (seed sec. 2.2.1, eq. 3).
 //
-//   std::vector<Bolt> bolts = expand_fan(fan);            // or explicit Bolt{a, b, d}
+//   std::vector<Bolt> bolts = {Bolt{a, b, d}, bolt_from_head(head, dir, length, d)};
 //   BoltMarks marks = mark_bolts(input, bolts);           // per bolt, ordered along the axis
 //
 // Marking rule (exact for any orientation, deterministic in the touching
@@ -45,22 +45,6 @@ struct Bolt {
 
 /// A bolt from its head point, a direction (need not be unit) and a length.
 Bolt bolt_from_head(const Point2& head, const Point2& direction, double length, double diameter);
-
-/// A radial fan: `count` bolts with heads on the circle (centre, radius),
-/// pointing outward, at angles evenly spread from first_deg to last_deg
-/// (both included; counter-clockwise from +x). count = 1 gives first_deg.
-struct BoltFan {
-  Point2 centre{};
-  double radius = 1;
-  double first_deg = 0;
-  double last_deg = 180;
-  int count = 1;
-  double length = 3;
-  double diameter = 0.025;
-};
-
-/// The single bolts of a fan, in angle order.
-std::vector<Bolt> expand_fan(const BoltFan& fan);
 
 /// Which triangles each bolt occupies.
 struct BoltMarks {

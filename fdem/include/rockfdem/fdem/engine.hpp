@@ -213,7 +213,7 @@ class Engine {
   MassScalingReport mass_scaling_report() const;
   /// Assigns material m (and its crack law) to crack element c.
   void set_crack_material(std::size_t c, int material);
-  /// Re-joins crack element c with material m (grouting, issue 7): damage,
+  /// Re-joins crack element c with material m (grouting): damage,
   /// state, mode and breakage step are reset, and its current opening and
   /// slip become its new zero, so it starts intact where it is.
   void rejoin_crack(std::size_t c, int material);

@@ -13,9 +13,11 @@
 
 namespace rockfdem::fdem {
 
-/// How a crack element's traction follows its opening and slip. Stored per
-/// crack element and dispatched with a switch in the crack loop (no virtual
-/// call per element). New laws (grout) add an enumerator and a case.
+/// How a crack element's traction follows its opening and slip: the id of a
+/// crack law's traits (crack_law.hpp, which turns it into the law once per
+/// element; no virtual call). A new law adds its file, an enumerator here
+/// and an entry in CrackLaws. Grout and the lining bond are rock-law
+/// materials.
 enum class CrackLaw : std::uint8_t {
   kRock = 0,       ///< Evans-Marathe softening, Mohr-Coulomb shear strength (reference sec. 2)
   kBoltSteel = 1,  ///< bilinear hardening in tension, brittle shear (seed eqs. 11-19)
@@ -49,7 +51,7 @@ struct Material {
   // Strength heterogeneity (rock law only). With weibull_modulus m > 0 each
   // rock crack element of this material draws one factor k from a Weibull
   // distribution of shape m and mean 1 (scale 1 / Gamma(1 + 1/m)), clamped
-  // to [kMinStrengthFactor, kMaxStrengthFactor] (crack_law.hpp), and carries
+  // to [kMinStrengthFactor, kMaxStrengthFactor] (crack_law_parts.hpp), and carries
   // k ft and k c; the fracture energies stay, so the softening ranges follow
   // from the scaled strengths. The draw is a hash of (heterogeneity_seed,
   // the element's two mesh vertex ids, sorted): the same for any thread
