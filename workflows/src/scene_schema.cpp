@@ -75,31 +75,41 @@ KeySpec boolean(std::string path, std::string def, std::string what) {
   return k;
 }
 
-void add_material(std::vector<KeySpec>& s, const std::string& name, const std::string& role) {
+// A material's keys. `inherit` ("materials.rock.") makes each default the
+// value of that material's key (the core takes the rock's); empty: the
+// listed values.
+void add_material(std::vector<KeySpec>& s, const std::string& name, const std::string& role,
+                  const std::string& inherit = "") {
   const std::string p = "materials." + name + ".";
-  s.push_back(positive(p + "density", "kg/m^3", "2700", "Density of the " + role + "."));
-  s.push_back(positive(p + "young", "Pa", "", "Young's modulus of the " + role + "."));
-  s.push_back(number(p + "poisson", "-", "", 0, true, 0.45, false,
+  const auto def = [&](const char* key, const char* value) {
+    return inherit.empty() ? std::string(value) : inherit + key;
+  };
+  s.push_back(
+      positive(p + "density", "kg/m^3", def("density", "2700"), "Density of the " + role + "."));
+  s.push_back(
+      positive(p + "young", "Pa", def("young", ""), "Young's modulus of the " + role + "."));
+  s.push_back(number(p + "poisson", "-", def("poisson", ""), 0, true, 0.45, false,
                      "Poisson's ratio of the " + role +
                          ". At most 0.45: the linear "
                          "(constant-strain) triangles of both stages lock as it nears 0.5 (the "
                          "Kirsch case's stress error: 0.85% at 0.25, 3.8% at 0.45, 16% at 0.49, "
                          "366% at 0.4999)."));
-  s.push_back(positive(p + "tensile_strength", "Pa", "",
+  s.push_back(positive(p + "tensile_strength", "Pa", def("tensile_strength", ""),
                        "Tensile strength ft of the " + role + "'s crack elements."));
-  s.push_back(positive(p + "cohesion", "Pa", "",
+  s.push_back(positive(p + "cohesion", "Pa", def("cohesion", ""),
                        "Cohesion c of the " + role + "'s crack elements (Mohr-Coulomb)."));
-  s.push_back(number(p + "friction_angle", "deg", "30", 0, false, 90, true,
+  s.push_back(number(p + "friction_angle", "deg", def("friction_angle", "30"), 0, false, 90, true,
                      "Internal friction angle of the " + role + "'s crack elements."));
+  // The residual angle follows the material's own friction angle.
   s.push_back(number(p + "residual_friction_angle", "deg", "friction_angle", 0, false, 90, true,
                      "Friction angle of broken cracks and contacts in the " + role + "."));
-  s.push_back(positive(p + "fracture_energy_I", "J/m^2", "",
+  s.push_back(positive(p + "fracture_energy_I", "J/m^2", def("fracture_energy_I", ""),
                        "Mode I fracture energy GfI of the " + role + "."));
-  s.push_back(positive(p + "fracture_energy_II", "J/m^2", "",
+  s.push_back(positive(p + "fracture_energy_II", "J/m^2", def("fracture_energy_II", ""),
                        "Mode II fracture energy GfII of the " + role + "."));
-  s.push_back(number(p + "penalty_factor", "-", "10", 1, false, 1000, false,
+  s.push_back(number(p + "penalty_factor", "-", def("penalty_factor", "10"), 1, false, 1000, false,
                      "Crack and contact penalty as a multiple of the Young's modulus."));
-  s.push_back(number(p + "heterogeneity", "-", "0", 0, false, 100, false,
+  s.push_back(number(p + "heterogeneity", "-", def("heterogeneity", "0"), 0, false, 100, false,
                      "Weibull modulus m of the " + role +
                          "'s crack strengths: each crack "
                          "element's tensile strength and cohesion are scaled by one factor drawn "
@@ -107,7 +117,7 @@ void add_material(std::vector<KeySpec>& s, const std::string& name, const std::s
                          "at m = 3, 0.12 at m = 10; clamped to [0.05, 5]); 0: homogeneous. The "
                          "draw depends only on the seed and the element's two mesh vertices, so "
                          "the pattern is the same for any thread count."));
-  s.push_back(integer(p + "heterogeneity_seed", "1", 0, 1e15,
+  s.push_back(integer(p + "heterogeneity_seed", def("heterogeneity_seed", "1"), 0, 1e15,
                       "Seed of the " + role + "'s strength heterogeneity."));
 }
 
@@ -158,16 +168,19 @@ void add_instruments(std::vector<KeySpec>& s) {
 // [references]: figures to compare the run with in report.md (measured
 // convergences, another code's answer).
 void add_references(std::vector<KeySpec>& s) {
+  // No default: a figure not given is not compared.
+  const auto figure = [&](const std::string& key, const std::string& what) {
+    KeySpec k = number("references." + key, "mm", "", -kInf, false, kInf, false, what);
+    k.default_doc = "none";
+    s.push_back(k);
+  };
   for (const char* point :
        {"vault", "left_shoulder", "right_shoulder", "left_wall", "right_wall", "invert"})
-    s.push_back(number(std::string("references.") + point, "mm", "none", -kInf, false, kInf, false,
-                       std::string("Reference radial displacement of the key point ") + point +
-                           " (towards the opening positive), compared with the run's figure in "
-                           "report.md."));
-  s.push_back(number("references.wall_chord", "mm", "none", -kInf, false, kInf, false,
-                     "Reference closure of the chord between the walls."));
-  s.push_back(number("references.shoulder_chord", "mm", "none", -kInf, false, kInf, false,
-                     "Reference closure of the chord between the shoulders."));
+    figure(point, std::string("Reference radial displacement of the key point ") + point +
+                      " (towards the opening positive), compared with the run's figure in "
+                      "report.md.");
+  figure("wall_chord", "Reference closure of the chord between the walls.");
+  figure("shoulder_chord", "Reference closure of the chord between the shoulders.");
   s.push_back(choice("references.from", "start", {"start", "support"},
                      "What the references are measured from: the in-situ state (`start`), or "
                      "the first `lining` or `bolts` stage (`support`, as points installed "
@@ -258,7 +271,7 @@ std::vector<KeySpec> build_schema() {
   s.push_back(algo);
   // [materials.*]
   add_material(s, "rock", "host rock (or the specimen)");
-  add_material(s, "core", "excavation core (defaults to the rock's values)");
+  add_material(s, "core", "excavation core (defaults to the rock's values)", "materials.rock.");
   add_material(s, "lining", "shotcrete lining");
   KeySpec fc = positive("materials.lining.compressive_strength", "Pa", "",
                         "Uniaxial compressive strength of the shotcrete for the lining's "
@@ -325,12 +338,17 @@ std::vector<KeySpec> build_schema() {
                      "Viscous damping of the triangles, a multiple of Munjiza's element "
                      "viscosity eta = 2 h sqrt(E rho) (h: smallest altitude); the stiffest "
                      "element mode then has 1.7-1.8 times this ratio of critical damping."));
-  s.push_back(number("engine.local_damping", "-", "0.8 (tunnel stages), 0 (specimens)", 0, false, 1,
-                     true,
-                     "Cundall local damping coefficient: f -= alpha |f| sign(v) per node "
-                     "component. Tunnel stages are quasi-static and take 0.8 unless given (0 "
-                     "runs them undamped but for the triangles' viscosity); specimen runs "
-                     "take 0. The summary's `damping` entry shows the value used."));
+  std::ostringstream tunnel_local;  // one value for tunnels, none for specimens: no one default
+  tunnel_local << kTunnelLocalDamping;
+  KeySpec local = number("engine.local_damping", "-", "", 0, false, 1, true,
+                         "Cundall local damping coefficient: f -= alpha |f| sign(v) per node "
+                         "component. Tunnel stages are quasi-static and take " +
+                             tunnel_local.str() +
+                             " unless given (0 runs them undamped but for the triangles' "
+                             "viscosity); specimen runs take 0. The summary's `damping` entry "
+                             "shows the value used.");
+  local.default_doc = tunnel_local.str() + " (tunnel stages), 0 (specimens)";
+  s.push_back(local);
   s.push_back(boolean("engine.kinetic_damping", "false",
                       "Cundall's kinetic damping in tunnel stages: every node's velocity is "
                       "set to zero (at the step's midpoint) whenever the total kinetic energy "
@@ -529,6 +547,14 @@ const KeySpec* find_key(const std::string& path) {
   for (const KeySpec& k : scene_schema())
     if (k.path == path) return &k;
   return nullptr;
+}
+
+std::string default_key(const KeySpec& k, const std::string& path) {
+  if (k.default_text.empty()) return "";
+  if (find_key(k.default_text)) return k.default_text;
+  if (find_key(section_of(k.path) + "." + k.default_text))
+    return section_of(path) + "." + k.default_text;
+  return "";
 }
 
 bool is_known_section(const std::string& section) {
