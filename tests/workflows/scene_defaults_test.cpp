@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "rockfdem/mesh/msh_io.hpp"
 #include "rockfdem/workflows/scene.hpp"
 #include "rockfdem/workflows/scene_schema.hpp"
 
@@ -74,10 +75,10 @@ kind = "equilibrium"
 using Number = std::function<double(const Scene&)>;
 using Text = std::function<std::string(const Scene&)>;
 
-const MaterialSpec& mat(const Scene& s, const char* name) { return s.materials.at(name); }
+const MaterialSpec& mat(const Scene& s, mesh::Zone z) { return s.materials.at(z); }
 
-void add_material(std::map<std::string, Number>& f, const char* name) {
-  const std::string p = std::string("materials.") + name + ".";
+void add_material(std::map<std::string, Number>& f, mesh::Zone name) {
+  const std::string p = "materials." + mesh::zone_name(name) + ".";
   f[p + "density"] = [=](const Scene& s) { return mat(s, name).density; };
   f[p + "young"] = [=](const Scene& s) { return mat(s, name).young; };
   f[p + "poisson"] = [=](const Scene& s) { return mat(s, name).poisson; };
@@ -154,7 +155,7 @@ std::map<std::string, Number> number_fields() {
   f["mesh.size_far"] = [](const Scene& s) { return s.mesh.size.size_far; };
   f["mesh.grading_distance"] = [](const Scene& s) { return s.mesh.size.grading_distance; };
   f["mesh.algorithm"] = [](const Scene& s) { return double(s.mesh.size.algorithm); };
-  for (const char* m : {"rock", "core", "lining"}) add_material(f, m);
+  for (mesh::Zone z : mesh::kZones) add_material(f, z);
   f["insitu.angle"] = [](const Scene& s) { return s.insitu.angle_deg; };
   f["insitu.unit_weight"] = [](const Scene& s) { return s.insitu.unit_weight; };
   f["insitu.tolerance"] = [](const Scene& s) { return s.insitu.tolerance; };

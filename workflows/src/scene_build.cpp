@@ -13,6 +13,7 @@
 
 #include "rockfdem/error.hpp"
 #include "rockfdem/mesh/mesh.hpp"
+#include "rockfdem/mesh/msh_io.hpp"
 #include "rockfdem/mesh/outline.hpp"
 #include "rockfdem/workflows/scene.hpp"
 #include "rockfdem/workflows/scene_schema.hpp"
@@ -254,6 +255,14 @@ void read_mesh_sizes(const Reader& r, mesh::MeshSpec& m) {
                                  " m)");
 }
 
+// The zone or edge tag of `all` called `name` (the schema allows no other).
+template <class Named, std::size_t N>
+Named named(const Named (&all)[N], std::string (*name_of)(int), const std::string& name) {
+  for (Named v : all)
+    if (name_of(v) == name) return v;
+  throw std::logic_error("no mesh zone or edge tag is called " + name);
+}
+
 void read_msh(const Reader& r, const std::string& base_dir, mesh::MeshSpec& m) {
   r.require("msh.file", "model.kind is \"msh\"");
   std::string file = r.text("msh.file");
@@ -264,23 +273,20 @@ void read_msh(const Reader& r, const std::string& base_dir, mesh::MeshSpec& m) {
                            " as a file; allowed: the path of a readable "
                            "gmsh .msh file, relative to the scene file");
   m.msh.path = file;
-  static const std::map<std::string, int> zones{
-      {"rock", mesh::kRock}, {"core", mesh::kCore}, {"lining", mesh::kLining}};
-  static const std::map<std::string, int> tags{
-      {"bottom", 1},       {"right", 2}, {"top", 3},      {"left", 4},       {"excavation", 5},
-      {"lining_inner", 6}, {"rim", 7},   {"load_top", 8}, {"load_bottom", 9}};
-  for (auto& [group, zone] : r.string_map("msh.zones")) m.msh.zone_groups[group] = zones.at(zone);
-  for (auto& [group, tag] : r.string_map("msh.edges")) m.msh.edge_groups[group] = tags.at(tag);
+  for (auto& [group, zone] : r.string_map("msh.zones"))
+    m.msh.zone_groups[group] = named(mesh::kZones, mesh::zone_name, zone);
+  for (auto& [group, tag] : r.string_map("msh.edges"))
+    m.msh.edge_groups[group] = named(mesh::kEdgeTags, mesh::edge_tag_name, tag);
   if (m.msh.zone_groups.empty())
     throw InputError(r.source() + ": missing key 'msh.zones' (model.kind is \"msh\"); allowed: " +
                      describe_allowed(*find_key("msh.zones")));
   m.msh.fracture_group = r.text("msh.fracture_group");
 }
 
-MaterialSpec read_material(const Reader& r, const std::string& name) {
-  const std::string p = "materials." + name + ".";
+MaterialSpec read_material(const Reader& r, mesh::Zone zone) {
+  const std::string p = "materials." + mesh::zone_name(zone) + ".";
   // The core's keys default to the rock's (the schema's defaults say so).
-  if (name != "core") {
+  if (zone != mesh::kCore) {
     r.require(p + "young", "every zone of the model needs its material");
     r.require(p + "poisson", "every zone of the model needs its material");
   }
@@ -297,7 +303,7 @@ MaterialSpec read_material(const Reader& r, const std::string& name) {
   m.penalty_factor = r.number(p + "penalty_factor");
   m.heterogeneity = r.number(p + "heterogeneity");
   m.heterogeneity_seed = std::uint64_t(r.number(p + "heterogeneity_seed"));
-  if (name == "lining") m.compressive_strength = r.number_or(p + "compressive_strength", 0);
+  if (zone == mesh::kLining) m.compressive_strength = r.number_or(p + "compressive_strength", 0);
   return m;
 }
 
@@ -316,7 +322,7 @@ bool needs_fracture(const mesh::MeshSpec& m) {
 }
 
 void read_materials(const Reader& r, Scene& s) {
-  s.materials["rock"] = read_material(r, "rock");
+  s.materials[mesh::kRock] = read_material(r, mesh::kRock);
   if (needs_fracture(s.mesh)) {
     for (const char* key :
          {"tensile_strength", "cohesion", "fracture_energy_I", "fracture_energy_II"})
@@ -324,9 +330,9 @@ void read_materials(const Reader& r, Scene& s) {
   }
   const bool tunnel_like =
       s.mesh.kind == mesh::ModelKind::kTunnel || s.mesh.kind == mesh::ModelKind::kMshFile;
-  if (tunnel_like) s.materials["core"] = read_material(r, "core");
+  if (tunnel_like) s.materials[mesh::kCore] = read_material(r, mesh::kCore);
   if (has_ring(s.mesh) || r.has("materials.lining"))
-    s.materials["lining"] = read_material(r, "lining");
+    s.materials[mesh::kLining] = read_material(r, mesh::kLining);
 }
 
 void read_insitu(const Reader& r, Scene& s) {
@@ -366,11 +372,12 @@ void read_insitu(const Reader& r, Scene& s) {
              "exact Kirsch tractions need a circular tunnel, no gradient "
              "and angle 0");
   }
-  if (in.lining_active && !s.materials.count("lining"))
+  if (in.lining_active && !s.materials.count(mesh::kLining))
     r.fail("insitu.lining_active", "the model has no lining ring (tunnel.lining_thickness = 0)");
-  if (in.continuum == "mohr_coulomb" && in.dilation_angle > s.materials.at("rock").friction_angle)
+  if (in.continuum == "mohr_coulomb" &&
+      in.dilation_angle > s.materials.at(mesh::kRock).friction_angle)
     r.fail("insitu.dilation_angle", "must not exceed materials.rock.friction_angle");
-  if (in.continuum == "mohr_coulomb" && !(s.materials.at("rock").cohesion > 0))
+  if (in.continuum == "mohr_coulomb" && !(s.materials.at(mesh::kRock).cohesion > 0))
     r.fail("insitu.continuum",
            "the Mohr-Coulomb continuum needs materials.rock.cohesion > 0 (without it the "
            "unsupported opening collapses)");
@@ -767,7 +774,9 @@ std::string directory_of(const std::string& path) {
 
 }  // namespace
 
-bool has_lining_ring(const Scene& s) { return s.materials.count("lining") && has_ring(s.mesh); }
+bool has_lining_ring(const Scene& s) {
+  return s.materials.count(mesh::kLining) && has_ring(s.mesh);
+}
 
 namespace {
 

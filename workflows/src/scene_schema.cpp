@@ -7,6 +7,8 @@
 #include <array>
 #include <sstream>
 
+#include "rockfdem/mesh/msh_io.hpp"
+
 namespace rockfdem::workflows {
 namespace {
 
@@ -189,8 +191,8 @@ void add_references(std::vector<KeySpec>& s) {
       text("references.source", "\"\"", "Where the references come from (shown in report.md)."));
 }
 
-std::vector<KeySpec> build_schema() {
-  std::vector<KeySpec> s;
+// The model, its domain and geometry.
+void add_model(std::vector<KeySpec>& s) {
   // [model]
   s.push_back(choice("model.kind", "tunnel", {"tunnel", "ucs", "brazilian", "msh"},
                      "What the scene models: a tunnel in a rock domain, a lab specimen, or a "
@@ -229,6 +231,10 @@ std::vector<KeySpec> build_schema() {
   s.push_back(positive("specimen.diameter", "m", "0.05", "Brazilian disc diameter."));
   s.push_back(number("specimen.load_arc_deg", "deg", "10", 0, true, 90, true,
                      "Brazilian disc: angle subtended by each loading arc."));
+}
+
+// A user's .msh file, and the mesh generator's settings.
+void add_mesh(std::vector<KeySpec>& s) {
   // [msh]
   s.push_back(text("msh.file", "",
                    "User's gmsh .msh file (relative to the scene file); "
@@ -238,13 +244,13 @@ std::vector<KeySpec> build_schema() {
   zones.type = KeyType::kStringMap;
   zones.unit = "-";
   zones.default_text = "{}";
-  zones.choices = {"rock", "core", "lining"};
+  for (mesh::Zone z : mesh::kZones) zones.choices.push_back(mesh::zone_name(z));
   zones.description = "Map from 2D physical group name to zone, e.g. { Rock = \"rock\" }.";
   s.push_back(zones);
   KeySpec edges = zones;
   edges.path = "msh.edges";
-  edges.choices = {"bottom",       "right", "top",      "left",       "excavation",
-                   "lining_inner", "rim",   "load_top", "load_bottom"};
+  edges.choices.clear();
+  for (mesh::EdgeTag t : mesh::kEdgeTags) edges.choices.push_back(mesh::edge_tag_name(t));
   edges.description = "Map from 1D physical group name to edge tag, e.g. { Floor = \"bottom\" }.";
   s.push_back(edges);
   s.push_back(text("msh.fracture_group", "\"\"",
@@ -269,17 +275,10 @@ std::vector<KeySpec> build_schema() {
                          "unstructured; 6 meshes the fracture zone as a near-regular lattice "
                          "(91% of nodes of valence 6) whose lines broken cracks then follow.");
   s.push_back(algo);
-  // [materials.*]
-  add_material(s, "rock", "host rock (or the specimen)");
-  add_material(s, "core", "excavation core (defaults to the rock's values)", "materials.rock.");
-  add_material(s, "lining", "shotcrete lining");
-  KeySpec fc = positive("materials.lining.compressive_strength", "Pa", "",
-                        "Uniaxial compressive strength of the shotcrete for the lining's "
-                        "capacity check (docs/support.md): each segment's thrust and moment "
-                        "against the plain section's elastic limit, with tensile_strength as "
-                        "the tensile limit (0 when not given: no tension); not given: no check.");
-  fc.default_doc = "none: no capacity check";
-  s.push_back(fc);
+}
+
+// The in-situ stress and the implicit stage.
+void add_insitu(std::vector<KeySpec>& s) {
   // [insitu]
   // The implicit stage needs compression in both directions (insitu/).
   s.push_back(positive("insitu.sigma_h", "Pa", "",
@@ -326,6 +325,10 @@ std::vector<KeySpec> build_schema() {
   s.push_back(number("insitu.dilation_angle", "deg", "0", 0, false, 90, true,
                      "Mohr-Coulomb continuum: the rock's dilation angle psi (0: no volume "
                      "change in plastic flow; at most materials.rock.friction_angle)."));
+}
+
+// The explicit engine, and the platens of specimen tests.
+void add_engine(std::vector<KeySpec>& s) {
   // [engine]
   s.push_back(integer("engine.steps", "10000", 1, 1e12,
                       "Explicit steps of a specimen run (tunnels: the cap of each stage)."));
@@ -379,6 +382,10 @@ std::vector<KeySpec> build_schema() {
                      "UCS and Brazilian tests: the run ends at the first step whose platen "
                      "stress has fallen to this fraction of the peak so far, once a crack "
                      "element has broken (post-peak stop); 0: runs all engine.steps."));
+}
+
+// The steel of bolts and cables; the grout and lining-rock bonds.
+void add_support(std::vector<KeySpec>& s) {
   // [bolts] and [cables]: the steel each kind of bolt shares. Cables are
   // long bolts of strand (the seed's simplification), here 15.2 mm 7-wire
   // strand Y1860S7 (EN 10138-3): 0.1% proof 1600 MPa, 1860 MPa at 3.5%.
@@ -427,6 +434,10 @@ std::vector<KeySpec> build_schema() {
     s.push_back(
         positive(p + "fracture_energy_II", "J/m^2", k.gf2, what + ": mode II fracture energy."));
   }
+}
+
+// Where the bolts are: one by one, or as fans.
+void add_bolts(std::vector<KeySpec>& s) {
   // [[bolt]] and [[bolt_fan]]
   KeySpec point = number("bolt[].start", "m", "", -kInf, false, kInf, false,
                          "Head (collar) of the bolt, [x, y]: on the excavation boundary or in "
@@ -455,7 +466,9 @@ std::vector<KeySpec> build_schema() {
   KeySpec fan_kind = kind;
   fan_kind.path = "bolt_fan[].kind";
   s.push_back(fan_kind);
-  add_instruments(s);
+}
+
+void add_contact(std::vector<KeySpec>& s) {
   // [contact]
   s.push_back(boolean("contact.enabled", "true",
                       "Penalty contact with friction between triangles on free surfaces and "
@@ -470,6 +483,9 @@ std::vector<KeySpec> build_schema() {
                      "Normal contact damping as a fraction of critical."));
   s.push_back(boolean("contact.friction", "true",
                       "Coulomb friction with mu = tan(residual_friction_angle)."));
+}
+
+void add_stages(std::vector<KeySpec>& s) {
   // [[stages]]
   s.push_back(choice("stages[].kind", "",
                      {"insitu", "soften", "lining", "bolts", "remove_core", "grout", "equilibrium"},
@@ -513,6 +529,9 @@ std::vector<KeySpec> build_schema() {
                       "time has passed), then grout; 0: at once."));
   s.push_back(integer("stages[].every_steps", "output.every_steps", 1, 1e9,
                       "Steps between outputs in this stage."));
+}
+
+void add_output(std::vector<KeySpec>& s) {
   // [output]
   s.push_back(integer("output.every_steps", "1000", 1, 1e9,
                       "Explicit steps between outputs (VTK frames, history rows)."));
@@ -527,6 +546,31 @@ std::vector<KeySpec> build_schema() {
                      "with the support measure; the in-situ state where the scene installs "
                      "none); `start`, the in-situ state (the implicit deconfinement "
                      "included). The axis label names it."));
+}
+
+std::vector<KeySpec> build_schema() {
+  std::vector<KeySpec> s;
+  add_model(s);
+  add_mesh(s);
+  // [materials.*]
+  add_material(s, "rock", "host rock (or the specimen)");
+  add_material(s, "core", "excavation core (defaults to the rock's values)", "materials.rock.");
+  add_material(s, "lining", "shotcrete lining");
+  KeySpec fc = positive("materials.lining.compressive_strength", "Pa", "",
+                        "Uniaxial compressive strength of the shotcrete for the lining's "
+                        "capacity check (docs/support.md): each segment's thrust and moment "
+                        "against the plain section's elastic limit, with tensile_strength as "
+                        "the tensile limit (0 when not given: no tension); not given: no check.");
+  fc.default_doc = "none: no capacity check";
+  s.push_back(fc);
+  add_insitu(s);
+  add_engine(s);
+  add_support(s);
+  add_bolts(s);
+  add_instruments(s);
+  add_contact(s);
+  add_stages(s);
+  add_output(s);
   add_references(s);
   return s;
 }

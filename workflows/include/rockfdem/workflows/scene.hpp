@@ -16,6 +16,7 @@
 #include <string>
 #include <vector>
 
+#include "rockfdem/mesh/mesh.hpp"
 #include "rockfdem/mesh/mesh_spec.hpp"
 #include "rockfdem/workflows/scene_schema.hpp"
 
@@ -171,7 +172,7 @@ struct Scene {
   std::string title;
   bool plane_stress{};
   mesh::MeshSpec mesh;
-  std::map<std::string, MaterialSpec> materials;  ///< "rock", "core", "lining" as present
+  std::map<mesh::Zone, MaterialSpec> materials;  ///< rock, core, lining as present
   InsituSettings insitu;
   EngineSettings engine;
   std::vector<StageSpec> stages;  ///< explicit stages after the implicit one (tunnels)
