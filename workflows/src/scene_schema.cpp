@@ -305,10 +305,11 @@ void add_insitu(std::vector<KeySpec>& s) {
                       "mode; false: the in-situ tractions alone load the box, as in the "
                       "implicit stage, and the run stops if the outer boundary turns by more "
                       "than 0.01 deg as a rigid body."));
-  KeySpec alpha = number("insitu.alpha", "-", "[1.0]", 0, false, 1, false,
-                         "Core softening factors solved implicitly, strictly decreasing in "
-                         "[0, 1]; 0 removes the core. At most 100 values: each is a full "
-                         "implicit solve and output.");
+  KeySpec alpha =
+      number("insitu.alpha", "-", "[1.0]", 0, false, 1, false,
+             "Core softening factors solved implicitly, strictly decreasing in "
+             "[0, 1]; 0 removes the core. At most " +
+                 std::to_string(kMaxAlphas) + " values: each is a full implicit solve and output.");
   alpha.type = KeyType::kNumberArray;
   s.push_back(alpha);
   s.push_back(boolean("insitu.lining_active", "false",

@@ -22,9 +22,6 @@
 
 namespace rockfdem::workflows {
 
-/// Most values insitu.alpha may hold: each is a full implicit solve.
-inline constexpr std::size_t kMaxAlphas = 100;
-
 struct MaterialSpec {
   double density{};                  ///< kg/m^3
   double young{};                    ///< Pa

@@ -5,6 +5,7 @@
 // defaults of their own.
 #pragma once
 
+#include <cstddef>
 #include <string>
 #include <vector>
 
@@ -33,6 +34,9 @@ struct KeySpec {
 
 /// The whole schema in documentation order.
 const std::vector<KeySpec>& scene_schema();
+
+/// Most values insitu.alpha may hold: each is a full implicit solve.
+inline constexpr std::size_t kMaxAlphas = 100;
 
 /// Local damping of tunnel stages when engine.local_damping is not given
 /// (specimen runs: none).
