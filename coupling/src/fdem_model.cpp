@@ -8,7 +8,8 @@
 
 namespace rockfdem::coupling {
 
-fdem::ModelInput model_input(const mesh::Mesh& m, const std::map<int, fdem::Material>& by_zone,
+fdem::ModelInput model_input(const mesh::Mesh& m,
+                             const std::map<mesh::Zone, fdem::Material>& by_zone,
                              fdem::Plane plane) {
   fdem::ModelInput in;
   in.x = m.x;

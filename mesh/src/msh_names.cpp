@@ -30,8 +30,6 @@ std::string edge_tag_name(int tag) {
   }
 }
 
-namespace detail {
-
 std::string zone_name(int zone) {
   switch (zone) {
     case kRock:
@@ -45,8 +43,12 @@ std::string zone_name(int zone) {
   }
 }
 
+namespace detail {
+
 std::map<std::string, int> default_zone_groups() {
-  return {{"rock", kRock}, {"core", kCore}, {"lining", kLining}};
+  std::map<std::string, int> out;
+  for (Zone z : kZones) out[zone_name(z)] = z;
+  return out;
 }
 
 }  // namespace detail

@@ -12,7 +12,6 @@ namespace rockfdem::mesh::detail {
 
 inline const char* const kFractureGroup = "fracture";
 
-std::string zone_name(int zone);
 /// "rock" -> kRock, "core" -> kCore, "lining" -> kLining.
 std::map<std::string, int> default_zone_groups();
 

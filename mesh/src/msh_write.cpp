@@ -55,7 +55,7 @@ void add_triangles(const Mesh& m) {
   }
   for (const auto& [zone, surfaces] : by_zone)
     gmsh::model::setPhysicalName(2, gmsh::model::addPhysicalGroup(2, surfaces, zone),
-                                 detail::zone_name(zone));
+                                 zone_name(zone));
   if (!fractured.empty())
     gmsh::model::setPhysicalName(2, gmsh::model::addPhysicalGroup(2, fractured),
                                  detail::kFractureGroup);

@@ -45,10 +45,10 @@ TEST(Scene, good_scene_fills_defaults) {
   EXPECT_EQ(s.mesh.tunnel.shape, mesh::TunnelShape::kCircular);
   EXPECT_DOUBLE_EQ(s.mesh.tunnel.radius, 3.0);
   EXPECT_EQ(s.mesh.size.algorithm, 5);
-  EXPECT_DOUBLE_EQ(s.materials.at("rock").density, 2700.0);
+  EXPECT_DOUBLE_EQ(s.materials.at(mesh::kRock).density, 2700.0);
   // The core inherits the rock's properties when not given.
-  EXPECT_DOUBLE_EQ(s.materials.at("core").young, 5.0e9);
-  EXPECT_EQ(s.materials.count("lining"), 0u);
+  EXPECT_DOUBLE_EQ(s.materials.at(mesh::kCore).young, 5.0e9);
+  EXPECT_EQ(s.materials.count(mesh::kLining), 0u);
   ASSERT_EQ(s.insitu.alpha.size(), 1u);
   EXPECT_DOUBLE_EQ(s.insitu.alpha[0], 1.0);
 }
@@ -62,7 +62,7 @@ TEST(Scene, default_scene_is_the_seed_tunnel) {
   EXPECT_DOUBLE_EQ(s.mesh.tunnel.lining_thickness, 0.2);
   EXPECT_DOUBLE_EQ(s.insitu.sigma_h, 18.2e6);
   EXPECT_DOUBLE_EQ(s.insitu.sigma_v, 11.4e6);
-  EXPECT_EQ(s.materials.count("lining"), 1u);
+  EXPECT_EQ(s.materials.count(mesh::kLining), 1u);
 }
 
 TEST(Scene, shipped_scenes_are_valid) {

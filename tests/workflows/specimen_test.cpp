@@ -274,7 +274,7 @@ Lateral load_elastically(const std::string& friction) {
   r.stress = PlatenLoad(s).read(e).stress;
   r.broken = e.broken_counts().total();
   // Plane strain under a uniform axial stress alone: eps_xx = -nu (1 + nu) / E sigma_yy.
-  const auto& rock = s.materials.at("rock");
+  const auto& rock = s.materials.at(rockfdem::mesh::kRock);
   r.closed_form = rock.poisson * (1 + rock.poisson) / rock.young * r.stress;
   return r;
 }

@@ -100,7 +100,7 @@ double distance_to_ray(const Segment& s, const Ray& r) {
 
 Resolution fracture_resolution(const Scene& scene, const mesh::Mesh* m) {
   Resolution r;
-  const MaterialSpec& rock = scene.materials.at("rock");
+  const MaterialSpec& rock = scene.materials.at(mesh::kRock);
   if (rock.tensile_strength > 0 && rock.fracture_energy_I > 0)
     r.l_ch = rock.young * rock.fracture_energy_I / (rock.tensile_strength * rock.tensile_strength);
   double sum = 0;

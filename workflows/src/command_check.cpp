@@ -16,6 +16,7 @@
 #include "commands.hpp"
 #include "rockfdem/error.hpp"
 #include "rockfdem/mesh/build.hpp"
+#include "rockfdem/mesh/msh_io.hpp"
 #include "rockfdem/mesh/outline.hpp"
 #include "stage_inputs.hpp"
 
@@ -67,15 +68,11 @@ Estimate estimate_tunnel(const Scene& s) {
 // The in-situ traction loads the box on its four sides: a mesh without one
 // of them cannot carry it.
 void require_box_sides(const Scene& s, const mesh::Mesh& m) {
-  const std::pair<int, const char*> sides[] = {{mesh::kBottom, "bottom"},
-                                               {mesh::kRight, "right"},
-                                               {mesh::kTop, "top"},
-                                               {mesh::kLeft, "left"}};
-  for (const auto& [tag, name] : sides)
+  for (mesh::EdgeTag tag : {mesh::kBottom, mesh::kRight, mesh::kTop, mesh::kLeft})
     if (std::none_of(m.edges.begin(), m.edges.end(),
-                     [tag = tag](const mesh::TaggedEdge& e) { return e.tag == tag; }))
+                     [tag](const mesh::TaggedEdge& e) { return e.tag == tag; }))
       throw InputError(s.source + ": key 'msh.edges': no edge of " + s.mesh.msh.path +
-                       " is tagged \"" + name +
+                       " is tagged \"" + mesh::edge_tag_name(tag) +
                        "\", and the in-situ stress loads the box on "
                        "its bottom, right, top and left sides; allowed: a table mapping the "
                        "file's 1D physical groups to those four tags (and \"excavation\", "
@@ -288,7 +285,7 @@ void print_probe(const Scene& scene, const Probe& p) {
 // Without a probe (a model above kProbeTriangleLimit): the figures from
 // check's estimate and the documented constants above.
 void print_constants(const Scene& scene, const Estimate& e, double cp, int threads) {
-  const MaterialSpec& rock = scene.materials.at("rock");
+  const MaterialSpec& rock = scene.materials.at(mesh::kRock);
   // A gmsh Frontal-Delaunay mesh's smallest altitude is about 0.3 of the
   // near size (measured: 0.095 m at 0.35 m); crack penalties p = f E stiffen
   // it further (dt ~ h sqrt(rho / p)).
@@ -323,7 +320,7 @@ void print_constants(const Scene& scene, const Estimate& e, double cp, int threa
 
 int command_check(const Scene& scene, const RunContext& ctx) {
   const Estimate e = estimate(scene);
-  const double cp = p_wave_speed(scene.materials.at("rock"), scene.plane_stress);
+  const double cp = p_wave_speed(scene.materials.at(mesh::kRock), scene.plane_stress);
   std::printf("scene %s: valid\n", scene.source.c_str());
   if (e.exact) std::printf("  mesh from %s\n", scene.mesh.msh.path.c_str());
   // Crack elements: about 1.5 interior edges per triangle.

@@ -67,7 +67,7 @@ void solve_plastic(const Scene& scene, const mesh::Mesh& m, ContinuumStates& c) 
   spec.lining.active = c.lining_alpha > 0;
   if (spec.lining.active) spec.lining.install_alpha = c.lining_alpha;
   insitu::PlasticSpec p;
-  const MaterialSpec& rock = scene.materials.at("rock");
+  const MaterialSpec& rock = scene.materials.at(mesh::kRock);
   p.rock = {rock.cohesion, rock.friction_angle, scene.insitu.dilation_angle};
   p.release.clear();
   for (const double a : c.alphas)

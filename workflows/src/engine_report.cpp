@@ -91,7 +91,7 @@ std::vector<double> energy_row(const fdem::EnergyBalance& b) {
 }
 
 double energy_floor(const Scene& scene, const mesh::Mesh& m) {
-  const MaterialSpec& rock = scene.materials.at("rock");
+  const MaterialSpec& rock = scene.materials.at(mesh::kRock);
   const double stress = rock.tensile_strength > 0 ? rock.tensile_strength : 1e-3 * rock.young;
   double area = 0;
   for (const auto& t : m.triangles)

@@ -34,7 +34,7 @@ void check_implicit_field(const Scene& scene, const mesh::Mesh& m,
     }
     if (inverted == 0) continue;
     const double stress = std::max(scene.insitu.sigma_h, scene.insitu.sigma_v);
-    const double young = scene.materials.at("rock").young;
+    const double young = scene.materials.at(mesh::kRock).young;
     const auto& v = m.triangles[first];
     char msg[700];
     std::snprintf(msg, sizeof msg,
@@ -53,7 +53,7 @@ void check_implicit_field(const Scene& scene, const mesh::Mesh& m,
 
 std::string with_likely_cause(const Scene& scene, const std::string& what) {
   const double stress = std::max(std::abs(scene.insitu.sigma_h), std::abs(scene.insitu.sigma_v));
-  const double young = scene.materials.at("rock").young;
+  const double young = scene.materials.at(mesh::kRock).young;
   if (!(stress > kStressRatioLimit * young)) return what;
   char cause[600];
   std::snprintf(cause, sizeof cause,

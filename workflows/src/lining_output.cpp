@@ -32,7 +32,7 @@ LiningOutput::LiningOutput(const Scene& scene, const mesh::Mesh& m) {
   if (auto g = lining_geometry(m)) geometry_ = std::move(*g);
   for (std::size_t t = 0; t < m.n_triangles(); ++t)
     if (m.zone[t] == mesh::kLining) triangles_.push_back(int(t));
-  const auto it = scene.materials.find("lining");
+  const auto it = scene.materials.find(mesh::kLining);
   if (it != scene.materials.end() && it->second.compressive_strength > 0) {
     has_strength_ = true;
     strength_ = {it->second.compressive_strength, it->second.tensile_strength};

@@ -7,6 +7,7 @@
 #include "output_dir.hpp"
 #include "rockfdem/coupling/mesh_grid.hpp"
 #include "rockfdem/coupling/plot.hpp"
+#include "rockfdem/mesh/msh_io.hpp"
 #include "rockfdem/mesh/opening.hpp"
 #include "rockfdem/workflows/scene.hpp"
 
@@ -17,10 +18,10 @@ constexpr int kFractureZone = 4;  // the region code of rock with crack elements
 
 // Per triangle: its zone, with the rock that may crack told apart.
 std::vector<double> regions(const mesh::Mesh& m, std::vector<std::pair<int, std::string>>& used) {
-  const std::pair<int, std::string> names[] = {{mesh::kRock, "rock"},
+  const std::pair<int, std::string> names[] = {{mesh::kRock, mesh::zone_name(mesh::kRock)},
                                                {kFractureZone, "fracture zone"},
-                                               {mesh::kCore, "core"},
-                                               {mesh::kLining, "lining"}};
+                                               {mesh::kCore, mesh::zone_name(mesh::kCore)},
+                                               {mesh::kLining, mesh::zone_name(mesh::kLining)}};
   std::vector<double> out(m.n_triangles());
   std::vector<bool> present(kFractureZone + 1, false);
   for (std::size_t t = 0; t < out.size(); ++t) {

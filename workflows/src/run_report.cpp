@@ -6,6 +6,7 @@
 
 #include "output_dir.hpp"
 #include "rockfdem/coupling/atomic_file.hpp"
+#include "rockfdem/mesh/msh_io.hpp"
 
 namespace rockfdem::workflows {
 namespace {
@@ -81,8 +82,8 @@ void inputs(std::ostream& md, const Scene& s, const json& j) {
      << sig(s.mesh.size.size_far) << " m at the boundary; "
      << value_text(mesh.value("triangles", json())) << " triangles, "
      << value_text(mesh.value("vertices", json())) << " vertices |\n";
-  for (const auto& [name, m] : s.materials)
-    if (name != "core") material_rows(md, name, m);  // the core is excavated
+  for (mesh::Zone z : {mesh::kLining, mesh::kRock})  // the core is excavated
+    if (s.materials.count(z)) material_rows(md, mesh::zone_name(z), s.materials.at(z));
   md << "| in-situ stress (compression +) | sigma_h " << mpa(s.insitu.sigma_h) << ", sigma_v "
      << mpa(s.insitu.sigma_v) << ", sigma_h at " << sig(s.insitu.angle_deg)
      << " deg from x |\n| core stiffness factors alpha (implicit) |";

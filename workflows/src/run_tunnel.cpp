@@ -197,7 +197,7 @@ void reporting_failure(const Scene& scene, RunOutputs& out, const fdem::Engine& 
 
 fdem::ModelInput engine_input(const Scene& scene, const mesh::Mesh& m,
                               const insitu::InsituField& handoff, int threads) {
-  std::map<int, fdem::Material> materials = engine_materials(scene);
+  std::map<mesh::Zone, fdem::Material> materials = engine_materials(scene);
   // The implicit stage left the core at alpha_h E; the engine continues from there.
   if (materials.count(mesh::kCore) && handoff.alpha > 0)
     materials[mesh::kCore].young *= handoff.alpha;
@@ -256,7 +256,7 @@ int run_tunnel(const Scene& scene, const RunContext& ctx) {
   SupportMaterials support;
   support.grout = int(in.materials.size());
   in.materials.push_back(grout_material(scene));
-  if (scene.materials.count("lining")) {
+  if (scene.materials.count(mesh::kLining)) {
     support.lining_interface = int(in.materials.size());
     in.materials.push_back(lining_interface_material(scene));
   }

@@ -7,11 +7,13 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <optional>
 #include <set>
 #include <sstream>
 
 #include "rockfdem/error.hpp"
 #include "rockfdem/mesh/mesh.hpp"
+#include "rockfdem/mesh/msh_io.hpp"
 #include "rockfdem/mesh/outline.hpp"
 #include "rockfdem/workflows/scene.hpp"
 #include "rockfdem/workflows/scene_schema.hpp"
@@ -27,7 +29,8 @@ using detail::RawScene;
 
 std::string num(double v) { return detail::number_text(v); }
 
-// Typed reads of validated keys; absent keys take the schema's default.
+// Typed reads of validated keys; absent keys take the schema's default (a
+// value, or another key's value), the only defaults there are.
 class Reader {
  public:
   explicit Reader(const RawScene& raw) : raw_(raw) {}
@@ -35,13 +38,14 @@ class Reader {
   const toml::node* node(const std::string& path) const { return raw_.root.at_path(path).node(); }
   bool has(const std::string& path) const { return node(path) != nullptr; }
 
+  /// A key with a default in the schema, or one required before it is read.
   double number(const std::string& path) const {
-    if (const toml::node* n = node(path))
-      return n->is_integer() ? double(n->as_integer()->get()) : n->as_floating_point()->get();
-    return std::stod(spec(path).default_text);
+    if (const std::optional<double> v = lookup(path)) return *v;
+    throw std::logic_error("scene key without a default read as if it had one: " + path);
   }
-  double number_or(const std::string& path, double fallback) const {
-    return has(path) ? number(path) : fallback;
+  /// A key without a default: `neutral` ("not given") where the file has none.
+  double number_or(const std::string& path, double neutral) const {
+    return lookup(path).value_or(neutral);
   }
   int integer(const std::string& path) const { return int(number(path)); }
   bool boolean(const std::string& path) const {
@@ -55,11 +59,11 @@ class Reader {
   }
   std::vector<double> numbers(const std::string& path) const {
     std::vector<double> out;
-    if (const toml::node* n = node(path)) {
-      for (auto&& v : *n->as_array())
-        out.push_back(v.is_integer() ? double(v.as_integer()->get())
-                                     : v.as_floating_point()->get());
-    }
+    const std::string& def = spec(path).default_text;
+    const toml::table parsed = has(path) || def.empty() ? toml::table{} : toml::parse("v = " + def);
+    const toml::node* n = has(path) ? node(path) : parsed.get("v");
+    if (n)
+      for (auto&& v : *n->as_array()) out.push_back(as_number(v));
     return out;
   }
   std::map<std::string, std::string> string_map(const std::string& path) const {
@@ -92,6 +96,18 @@ class Reader {
     const KeySpec* k = find_key(detail::normalise(path));
     if (!k) throw std::logic_error("scene key not in schema: " + path);
     return *k;
+  }
+  static double as_number(const toml::node& n) {
+    return n.is_integer() ? double(n.as_integer()->get()) : n.as_floating_point()->get();
+  }
+  // The file's value, else the schema's default; nullopt where neither is.
+  std::optional<double> lookup(const std::string& path) const {
+    if (const toml::node* n = node(path)) return as_number(*n);
+    const KeySpec& k = spec(path);
+    const std::string from = default_key(k, path);
+    if (!from.empty()) return lookup(from);
+    if (k.default_text.empty()) return std::nullopt;
+    return std::stod(k.default_text);
   }
   const RawScene& raw_;
 };
@@ -239,6 +255,14 @@ void read_mesh_sizes(const Reader& r, mesh::MeshSpec& m) {
                                  " m)");
 }
 
+// The zone or edge tag of `all` called `name` (the schema allows no other).
+template <class Named, std::size_t N>
+Named named(const Named (&all)[N], std::string (*name_of)(int), const std::string& name) {
+  for (Named v : all)
+    if (name_of(v) == name) return v;
+  throw std::logic_error("no mesh zone or edge tag is called " + name);
+}
+
 void read_msh(const Reader& r, const std::string& base_dir, mesh::MeshSpec& m) {
   r.require("msh.file", "model.kind is \"msh\"");
   std::string file = r.text("msh.file");
@@ -249,40 +273,37 @@ void read_msh(const Reader& r, const std::string& base_dir, mesh::MeshSpec& m) {
                            " as a file; allowed: the path of a readable "
                            "gmsh .msh file, relative to the scene file");
   m.msh.path = file;
-  static const std::map<std::string, int> zones{
-      {"rock", mesh::kRock}, {"core", mesh::kCore}, {"lining", mesh::kLining}};
-  static const std::map<std::string, int> tags{
-      {"bottom", 1},       {"right", 2}, {"top", 3},      {"left", 4},       {"excavation", 5},
-      {"lining_inner", 6}, {"rim", 7},   {"load_top", 8}, {"load_bottom", 9}};
-  for (auto& [group, zone] : r.string_map("msh.zones")) m.msh.zone_groups[group] = zones.at(zone);
-  for (auto& [group, tag] : r.string_map("msh.edges")) m.msh.edge_groups[group] = tags.at(tag);
+  for (auto& [group, zone] : r.string_map("msh.zones"))
+    m.msh.zone_groups[group] = named(mesh::kZones, mesh::zone_name, zone);
+  for (auto& [group, tag] : r.string_map("msh.edges"))
+    m.msh.edge_groups[group] = named(mesh::kEdgeTags, mesh::edge_tag_name, tag);
   if (m.msh.zone_groups.empty())
     throw InputError(r.source() + ": missing key 'msh.zones' (model.kind is \"msh\"); allowed: " +
                      describe_allowed(*find_key("msh.zones")));
   m.msh.fracture_group = r.text("msh.fracture_group");
 }
 
-MaterialSpec read_material(const Reader& r, const std::string& name, const MaterialSpec* base) {
-  const std::string p = "materials." + name + ".";
-  MaterialSpec m = base ? *base : MaterialSpec{};
-  if (!base) {
+MaterialSpec read_material(const Reader& r, mesh::Zone zone) {
+  const std::string p = "materials." + mesh::zone_name(zone) + ".";
+  // The core's keys default to the rock's (the schema's defaults say so).
+  if (zone != mesh::kCore) {
     r.require(p + "young", "every zone of the model needs its material");
     r.require(p + "poisson", "every zone of the model needs its material");
   }
-  m.density = r.number_or(p + "density", base ? base->density : 2700);
-  m.young = r.number_or(p + "young", m.young);
-  m.poisson = r.number_or(p + "poisson", m.poisson);
-  m.tensile_strength = r.number_or(p + "tensile_strength", m.tensile_strength);
-  m.cohesion = r.number_or(p + "cohesion", m.cohesion);
-  m.friction_angle = r.number_or(p + "friction_angle", base ? base->friction_angle : 30);
-  m.residual_friction_angle = r.number_or(p + "residual_friction_angle", m.friction_angle);
-  m.fracture_energy_I = r.number_or(p + "fracture_energy_I", m.fracture_energy_I);
-  m.fracture_energy_II = r.number_or(p + "fracture_energy_II", m.fracture_energy_II);
-  m.penalty_factor = r.number_or(p + "penalty_factor", base ? base->penalty_factor : 10);
-  m.heterogeneity = r.number_or(p + "heterogeneity", base ? base->heterogeneity : 0);
-  m.heterogeneity_seed = std::uint64_t(
-      r.number_or(p + "heterogeneity_seed", base ? double(base->heterogeneity_seed) : 1));
-  if (name == "lining") m.compressive_strength = r.number_or(p + "compressive_strength", 0);
+  MaterialSpec m;
+  m.density = r.number(p + "density");
+  m.young = r.number(p + "young");
+  m.poisson = r.number(p + "poisson");
+  m.tensile_strength = r.number_or(p + "tensile_strength", 0);
+  m.cohesion = r.number_or(p + "cohesion", 0);
+  m.friction_angle = r.number(p + "friction_angle");
+  m.residual_friction_angle = r.number(p + "residual_friction_angle");
+  m.fracture_energy_I = r.number_or(p + "fracture_energy_I", 0);
+  m.fracture_energy_II = r.number_or(p + "fracture_energy_II", 0);
+  m.penalty_factor = r.number(p + "penalty_factor");
+  m.heterogeneity = r.number(p + "heterogeneity");
+  m.heterogeneity_seed = std::uint64_t(r.number(p + "heterogeneity_seed"));
+  if (zone == mesh::kLining) m.compressive_strength = r.number_or(p + "compressive_strength", 0);
   return m;
 }
 
@@ -301,7 +322,7 @@ bool needs_fracture(const mesh::MeshSpec& m) {
 }
 
 void read_materials(const Reader& r, Scene& s) {
-  s.materials["rock"] = read_material(r, "rock", nullptr);
+  s.materials[mesh::kRock] = read_material(r, mesh::kRock);
   if (needs_fracture(s.mesh)) {
     for (const char* key :
          {"tensile_strength", "cohesion", "fracture_energy_I", "fracture_energy_II"})
@@ -309,9 +330,9 @@ void read_materials(const Reader& r, Scene& s) {
   }
   const bool tunnel_like =
       s.mesh.kind == mesh::ModelKind::kTunnel || s.mesh.kind == mesh::ModelKind::kMshFile;
-  if (tunnel_like) s.materials["core"] = read_material(r, "core", &s.materials["rock"]);
+  if (tunnel_like) s.materials[mesh::kCore] = read_material(r, mesh::kCore);
   if (has_ring(s.mesh) || r.has("materials.lining"))
-    s.materials["lining"] = read_material(r, "lining", nullptr);
+    s.materials[mesh::kLining] = read_material(r, mesh::kLining);
 }
 
 void read_insitu(const Reader& r, Scene& s) {
@@ -334,7 +355,7 @@ void read_insitu(const Reader& r, Scene& s) {
   in.tolerance = r.number("insitu.tolerance");
   in.continuum = r.text("insitu.continuum");
   in.dilation_angle = r.number("insitu.dilation_angle");
-  if (r.has("insitu.alpha")) in.alpha = r.numbers("insitu.alpha");
+  in.alpha = r.numbers("insitu.alpha");
   // Each alpha is a whole implicit solve and output (about 12 us per
   // triangle, 107 s for 1000 on the default tunnel): a list past this is a
   // mistake, not a study.
@@ -351,11 +372,12 @@ void read_insitu(const Reader& r, Scene& s) {
              "exact Kirsch tractions need a circular tunnel, no gradient "
              "and angle 0");
   }
-  if (in.lining_active && !s.materials.count("lining"))
+  if (in.lining_active && !s.materials.count(mesh::kLining))
     r.fail("insitu.lining_active", "the model has no lining ring (tunnel.lining_thickness = 0)");
-  if (in.continuum == "mohr_coulomb" && in.dilation_angle > s.materials.at("rock").friction_angle)
+  if (in.continuum == "mohr_coulomb" &&
+      in.dilation_angle > s.materials.at(mesh::kRock).friction_angle)
     r.fail("insitu.dilation_angle", "must not exceed materials.rock.friction_angle");
-  if (in.continuum == "mohr_coulomb" && !(s.materials.at("rock").cohesion > 0))
+  if (in.continuum == "mohr_coulomb" && !(s.materials.at(mesh::kRock).cohesion > 0))
     r.fail("insitu.continuum",
            "the Mohr-Coulomb continuum needs materials.rock.cohesion > 0 (without it the "
            "unsupported opening collapses)");
@@ -390,12 +412,13 @@ SteelSettings read_steel(const Reader& r, const std::string& section) {
 
 BondSettings read_bond(const Reader& r, const std::string& section) {
   BondSettings g;
-  g.young = r.number(section + ".young");
-  g.tensile_strength = r.number(section + ".tensile_strength");
-  g.cohesion = r.number(section + ".cohesion");
-  g.friction_angle = r.number(section + ".friction_angle");
-  g.fracture_energy_I = r.number(section + ".fracture_energy_I");
-  g.fracture_energy_II = r.number(section + ".fracture_energy_II");
+  for (auto [key, field] : {std::pair{".young", &BondSettings::young},
+                            {".tensile_strength", &BondSettings::tensile_strength},
+                            {".cohesion", &BondSettings::cohesion},
+                            {".friction_angle", &BondSettings::friction_angle},
+                            {".fracture_energy_I", &BondSettings::fracture_energy_I},
+                            {".fracture_energy_II", &BondSettings::fracture_energy_II}})
+    g.*field = r.number(section + key);
   return g;
 }
 
@@ -406,9 +429,7 @@ void read_bolts(const Reader& r, Scene& s) {
   s.grout = read_bond(r, "grout");
   s.lining_interface = read_bond(r, "lining_interface");
   std::vector<BoltPlacement> found;
-  const auto is_cable = [&](const std::string& p) {
-    return r.has(p + ".kind") && r.text(p + ".kind") == "cable";
-  };
+  const auto is_cable = [&](const std::string& p) { return r.text(p + ".kind") == "cable"; };
   std::vector<std::uint8_t> cables;
   if (const toml::node* list = r.node("bolt")) {
     for (std::size_t i = 0; i < list->as_array()->size(); ++i) {
@@ -425,11 +446,10 @@ void read_bolts(const Reader& r, Scene& s) {
       const std::string p = "bolt_fan[" + std::to_string(i) + "]";
       for (const char* k : {".radius", ".count", ".length"})
         r.require(p + k, "a bolt fan needs radius, count and length");
-      const std::array<double, 2> c =
-          r.has(p + ".centre") ? point(r, p + ".centre") : std::array<double, 2>{0, 0};
+      const std::array<double, 2> c = point(r, p + ".centre");
       const int count = r.integer(p + ".count");
       const double radius = r.number(p + ".radius"), length = r.number(p + ".length");
-      const double a0 = r.number_or(p + ".first_deg", 0), a1 = r.number_or(p + ".last_deg", 180);
+      const double a0 = r.number(p + ".first_deg"), a1 = r.number(p + ".last_deg");
       for (int k = 0; k < count; ++k) {
         const double deg = count == 1 ? a0 : a0 + (a1 - a0) * k / (count - 1);
         const double cs = std::cos(deg * M_PI / 180), sn = std::sin(deg * M_PI / 180);
@@ -493,8 +513,11 @@ void read_monitors(const Reader& r, Scene& s, std::set<std::string>& names) {
     const std::string p = "monitor[" + std::to_string(i) + "]";
     for (const char* k : {".name", ".x", ".y"}) r.require(p + k, "a monitor needs name, x and y");
     check_instrument_name(r, p + ".name", names);
-    MonitorSpec m{r.text(p + ".name"), r.number(p + ".x"), r.number(p + ".y"),
-                  r.boolean(p + ".relative_to_support")};
+    MonitorSpec m;
+    m.name = r.text(p + ".name");
+    m.x = r.number(p + ".x");
+    m.y = r.number(p + ".y");
+    m.relative_to_support = r.boolean(p + ".relative_to_support");
     const std::string where = misplaced(s, p + " \"" + m.name + "\"", m.x, m.y);
     if (!where.empty()) r.fail(p + ".x", where);
     if (m.relative_to_support && std::none_of(s.stages.begin(), s.stages.end(), [](auto& st) {
@@ -552,35 +575,88 @@ void read_instruments(const Reader& r, Scene& s) {
   }
 }
 
-// The explicit stages after the implicit hand-off. An "insitu" entry may
-// only open the list; a lining only exists with a lining ring; softening
-// only goes down, and only while the core is there.
+// One stage's keys at `p` ("stages[2]"); absent keys take the schema's
+// defaults (max_steps engine.steps, every_steps output.every_steps).
+StageSpec read_stage(const Reader& r, const std::string& p, const std::string& kind) {
+  StageSpec st;
+  st.kind = kind;
+  st.alpha = r.number_or(p + ".alpha", 0);  // soften only, which requires it
+  for (auto [key, field] : {std::pair{".ratio", &StageSpec::ratio},
+                            {".time", &StageSpec::time},
+                            {".settle", &StageSpec::settle},
+                            {".unstable_fraction", &StageSpec::unstable_fraction}})
+    st.*field = r.number(p + key);
+  st.max_steps = long(r.number(p + ".max_steps"));
+  st.trigger_broken = long(r.number(p + ".trigger_broken"));
+  st.every_steps = r.integer(p + ".every_steps");
+  st.hold = r.integer(p + ".hold");
+  st.stop_when_unstable = r.boolean(p + ".stop_when_unstable");
+  return st;
+}
+
+// Without [[stages]]: the stages the reference lists, each with the keys'
+// defaults (read at an index the file does not have). Installing a support
+// and removing the core take no steps; equilibrium runs to its cap.
+void default_stages(const Reader& r, Scene& s) {
+  const auto stage = [&](const char* kind) {
+    StageSpec st = read_stage(r, "stages[0]", kind);
+    if (st.kind != "equilibrium") st.max_steps = 0;
+    return st;
+  };
+  // A ring that carried load in the implicit stage is installed already.
+  if (has_lining_ring(s) && !s.insitu.lining_active) s.stages.push_back(stage("lining"));
+  if (!s.bolts.segments.empty()) s.stages.push_back(stage("bolts"));
+  s.stages.push_back(stage("remove_core"));
+  s.stages.push_back(stage("equilibrium"));
+}
+
+// What the stages so far allow: the core's stiffness factor (0: removed),
+// whether the lining and the bolts are in.
+struct StageOrder {
+  double alpha = 0;
+  bool lined = false, bolted = false;
+};
+
+// An "insitu" entry may only open the list; a lining only exists with a
+// lining ring; softening only goes down, and only while the core is there.
+void check_stage(const Reader& r, const Scene& s, const std::string& p, const StageSpec& st,
+                 StageOrder& at) {
+  const std::string& kind = st.kind;
+  if (kind == "bolts") {
+    if (s.bolts.segments.empty()) r.fail(p + ".kind", "the scene has no [[bolt]] or [[bolt_fan]]");
+    if (at.bolted) r.fail(p + ".kind", "the bolts are installed once");
+    at.bolted = true;
+  }
+  if (kind == "soften") {
+    r.require(p + ".alpha", "a soften stage needs its target alpha");
+    if (!(at.alpha > 0)) r.fail(p + ".kind", "the core is already removed (or alpha = 0)");
+    if (!(st.alpha < at.alpha))
+      r.fail(p + ".alpha", "softening must go down from " + num(at.alpha));
+    at.alpha = st.alpha;
+  }
+  if (kind == "lining") {
+    if (!has_lining_ring(s))
+      r.fail(p + ".kind",
+             "the model has no lining ring (tunnel.lining_thickness, or a "
+             "msh.zones group mapped to \"lining\")");
+    if (at.lined || s.insitu.lining_active) r.fail(p + ".kind", "the lining is installed once");
+    at.lined = true;
+  }
+  if (kind == "remove_core") {
+    if (!(at.alpha > 0)) r.fail(p + ".kind", "the core is already removed");
+    at.alpha = 0;
+  }
+}
+
+// The explicit stages after the implicit hand-off.
 void read_stages(const Reader& r, Scene& s) {
   const toml::node* list = r.node("stages");
-  const bool lining = has_lining_ring(s);
-  const bool bolts = !s.bolts.segments.empty();
-  if (!list) {
-    const auto stage = [&](const char* kind, long max_steps) {
-      StageSpec st;
-      st.kind = kind;
-      st.max_steps = max_steps;
-      st.every_steps = s.output.every_steps;
-      return st;
-    };
-    // A ring that carried load in the implicit stage is installed already.
-    if (lining && !s.insitu.lining_active) s.stages.push_back(stage("lining", 0));
-    if (bolts) s.stages.push_back(stage("bolts", 0));
-    s.stages.push_back(stage("remove_core", 0));
-    s.stages.push_back(stage("equilibrium", s.engine.steps));
-    return;
-  }
-  bool bolted = false;
+  if (!list) return default_stages(r, s);
   if (s.mesh.kind != mesh::ModelKind::kTunnel && s.mesh.kind != mesh::ModelKind::kMshFile)
     r.fail("stages", "construction stages need a tunnel model");
-  double alpha = s.insitu.alpha.back();
-  bool core = alpha > 0, lined = false;
-  const std::size_t n = list->as_array()->size();
-  for (std::size_t i = 0; i < n; ++i) {
+  StageOrder at;
+  at.alpha = s.insitu.alpha.back();
+  for (std::size_t i = 0; i < list->as_array()->size(); ++i) {
     const std::string p = "stages[" + std::to_string(i) + "]";
     r.require(p + ".kind", "every stage has a kind");
     const std::string kind = r.text(p + ".kind");
@@ -588,45 +664,11 @@ void read_stages(const Reader& r, Scene& s) {
       if (i != 0) r.fail(p + ".kind", "the implicit in-situ stage comes first");
       continue;
     }
-    StageSpec st;
-    st.kind = kind;
-    st.alpha = r.number_or(p + ".alpha", 0);
-    st.max_steps = long(r.number_or(p + ".max_steps", double(s.engine.steps)));
-    st.ratio = r.number_or(p + ".ratio", st.ratio);
-    st.time = r.number_or(p + ".time", 0);
-    st.every_steps = int(r.number_or(p + ".every_steps", s.output.every_steps));
-    st.trigger_broken = long(r.number_or(p + ".trigger_broken", 0));
-    st.settle = r.number_or(p + ".settle", st.settle);
-    st.hold = int(r.number_or(p + ".hold", st.hold));
-    st.unstable_fraction = r.number_or(p + ".unstable_fraction", st.unstable_fraction);
-    if (r.has(p + ".stop_when_unstable"))
-      st.stop_when_unstable = r.boolean(p + ".stop_when_unstable");
-    if (kind == "bolts") {
-      if (!bolts) r.fail(p + ".kind", "the scene has no [[bolt]] or [[bolt_fan]]");
-      if (bolted) r.fail(p + ".kind", "the bolts are installed once");
-      bolted = true;
-    }
-    if (kind == "soften") {
-      r.require(p + ".alpha", "a soften stage needs its target alpha");
-      if (!core) r.fail(p + ".kind", "the core is already removed (or alpha = 0)");
-      if (!(st.alpha < alpha)) r.fail(p + ".alpha", "softening must go down from " + num(alpha));
-      alpha = st.alpha;
-    }
-    if (kind == "lining") {
-      if (!lining)
-        r.fail(p + ".kind",
-               "the model has no lining ring (tunnel.lining_thickness, or a "
-               "msh.zones group mapped to \"lining\")");
-      if (lined || s.insitu.lining_active) r.fail(p + ".kind", "the lining is installed once");
-      lined = true;
-    }
-    if (kind == "remove_core") {
-      if (!core) r.fail(p + ".kind", "the core is already removed");
-      core = false;
-    }
+    const StageSpec st = read_stage(r, p, kind);
+    check_stage(r, s, p, st, at);
     s.stages.push_back(st);
   }
-  if (bolts && !bolted)
+  if (!s.bolts.segments.empty() && !at.bolted)
     r.fail("stages", "the scene has bolts but no stage of kind \"bolts\" installs them");
 }
 
@@ -732,7 +774,9 @@ std::string directory_of(const std::string& path) {
 
 }  // namespace
 
-bool has_lining_ring(const Scene& s) { return s.materials.count("lining") && has_ring(s.mesh); }
+bool has_lining_ring(const Scene& s) {
+  return s.materials.count(mesh::kLining) && has_ring(s.mesh);
+}
 
 namespace {
 

@@ -7,6 +7,8 @@
 #include <array>
 #include <sstream>
 
+#include "rockfdem/mesh/msh_io.hpp"
+
 namespace rockfdem::workflows {
 namespace {
 
@@ -75,31 +77,41 @@ KeySpec boolean(std::string path, std::string def, std::string what) {
   return k;
 }
 
-void add_material(std::vector<KeySpec>& s, const std::string& name, const std::string& role) {
+// A material's keys. `inherit` ("materials.rock.") makes each default the
+// value of that material's key (the core takes the rock's); empty: the
+// listed values.
+void add_material(std::vector<KeySpec>& s, const std::string& name, const std::string& role,
+                  const std::string& inherit = "") {
   const std::string p = "materials." + name + ".";
-  s.push_back(positive(p + "density", "kg/m^3", "2700", "Density of the " + role + "."));
-  s.push_back(positive(p + "young", "Pa", "", "Young's modulus of the " + role + "."));
-  s.push_back(number(p + "poisson", "-", "", 0, true, 0.45, false,
+  const auto def = [&](const char* key, const char* value) {
+    return inherit.empty() ? std::string(value) : inherit + key;
+  };
+  s.push_back(
+      positive(p + "density", "kg/m^3", def("density", "2700"), "Density of the " + role + "."));
+  s.push_back(
+      positive(p + "young", "Pa", def("young", ""), "Young's modulus of the " + role + "."));
+  s.push_back(number(p + "poisson", "-", def("poisson", ""), 0, true, 0.45, false,
                      "Poisson's ratio of the " + role +
                          ". At most 0.45: the linear "
                          "(constant-strain) triangles of both stages lock as it nears 0.5 (the "
                          "Kirsch case's stress error: 0.85% at 0.25, 3.8% at 0.45, 16% at 0.49, "
                          "366% at 0.4999)."));
-  s.push_back(positive(p + "tensile_strength", "Pa", "",
+  s.push_back(positive(p + "tensile_strength", "Pa", def("tensile_strength", ""),
                        "Tensile strength ft of the " + role + "'s crack elements."));
-  s.push_back(positive(p + "cohesion", "Pa", "",
+  s.push_back(positive(p + "cohesion", "Pa", def("cohesion", ""),
                        "Cohesion c of the " + role + "'s crack elements (Mohr-Coulomb)."));
-  s.push_back(number(p + "friction_angle", "deg", "30", 0, false, 90, true,
+  s.push_back(number(p + "friction_angle", "deg", def("friction_angle", "30"), 0, false, 90, true,
                      "Internal friction angle of the " + role + "'s crack elements."));
+  // The residual angle follows the material's own friction angle.
   s.push_back(number(p + "residual_friction_angle", "deg", "friction_angle", 0, false, 90, true,
                      "Friction angle of broken cracks and contacts in the " + role + "."));
-  s.push_back(positive(p + "fracture_energy_I", "J/m^2", "",
+  s.push_back(positive(p + "fracture_energy_I", "J/m^2", def("fracture_energy_I", ""),
                        "Mode I fracture energy GfI of the " + role + "."));
-  s.push_back(positive(p + "fracture_energy_II", "J/m^2", "",
+  s.push_back(positive(p + "fracture_energy_II", "J/m^2", def("fracture_energy_II", ""),
                        "Mode II fracture energy GfII of the " + role + "."));
-  s.push_back(number(p + "penalty_factor", "-", "10", 1, false, 1000, false,
+  s.push_back(number(p + "penalty_factor", "-", def("penalty_factor", "10"), 1, false, 1000, false,
                      "Crack and contact penalty as a multiple of the Young's modulus."));
-  s.push_back(number(p + "heterogeneity", "-", "0", 0, false, 100, false,
+  s.push_back(number(p + "heterogeneity", "-", def("heterogeneity", "0"), 0, false, 100, false,
                      "Weibull modulus m of the " + role +
                          "'s crack strengths: each crack "
                          "element's tensile strength and cohesion are scaled by one factor drawn "
@@ -107,7 +119,7 @@ void add_material(std::vector<KeySpec>& s, const std::string& name, const std::s
                          "at m = 3, 0.12 at m = 10; clamped to [0.05, 5]); 0: homogeneous. The "
                          "draw depends only on the seed and the element's two mesh vertices, so "
                          "the pattern is the same for any thread count."));
-  s.push_back(integer(p + "heterogeneity_seed", "1", 0, 1e15,
+  s.push_back(integer(p + "heterogeneity_seed", def("heterogeneity_seed", "1"), 0, 1e15,
                       "Seed of the " + role + "'s strength heterogeneity."));
 }
 
@@ -158,16 +170,19 @@ void add_instruments(std::vector<KeySpec>& s) {
 // [references]: figures to compare the run with in report.md (measured
 // convergences, another code's answer).
 void add_references(std::vector<KeySpec>& s) {
+  // No default: a figure not given is not compared.
+  const auto figure = [&](const std::string& key, const std::string& what) {
+    KeySpec k = number("references." + key, "mm", "", -kInf, false, kInf, false, what);
+    k.default_doc = "none";
+    s.push_back(k);
+  };
   for (const char* point :
        {"vault", "left_shoulder", "right_shoulder", "left_wall", "right_wall", "invert"})
-    s.push_back(number(std::string("references.") + point, "mm", "none", -kInf, false, kInf, false,
-                       std::string("Reference radial displacement of the key point ") + point +
-                           " (towards the opening positive), compared with the run's figure in "
-                           "report.md."));
-  s.push_back(number("references.wall_chord", "mm", "none", -kInf, false, kInf, false,
-                     "Reference closure of the chord between the walls."));
-  s.push_back(number("references.shoulder_chord", "mm", "none", -kInf, false, kInf, false,
-                     "Reference closure of the chord between the shoulders."));
+    figure(point, std::string("Reference radial displacement of the key point ") + point +
+                      " (towards the opening positive), compared with the run's figure in "
+                      "report.md.");
+  figure("wall_chord", "Reference closure of the chord between the walls.");
+  figure("shoulder_chord", "Reference closure of the chord between the shoulders.");
   s.push_back(choice("references.from", "start", {"start", "support"},
                      "What the references are measured from: the in-situ state (`start`), or "
                      "the first `lining` or `bolts` stage (`support`, as points installed "
@@ -176,8 +191,8 @@ void add_references(std::vector<KeySpec>& s) {
       text("references.source", "\"\"", "Where the references come from (shown in report.md)."));
 }
 
-std::vector<KeySpec> build_schema() {
-  std::vector<KeySpec> s;
+// The model, its domain and geometry.
+void add_model(std::vector<KeySpec>& s) {
   // [model]
   s.push_back(choice("model.kind", "tunnel", {"tunnel", "ucs", "brazilian", "msh"},
                      "What the scene models: a tunnel in a rock domain, a lab specimen, or a "
@@ -216,6 +231,10 @@ std::vector<KeySpec> build_schema() {
   s.push_back(positive("specimen.diameter", "m", "0.05", "Brazilian disc diameter."));
   s.push_back(number("specimen.load_arc_deg", "deg", "10", 0, true, 90, true,
                      "Brazilian disc: angle subtended by each loading arc."));
+}
+
+// A user's .msh file, and the mesh generator's settings.
+void add_mesh(std::vector<KeySpec>& s) {
   // [msh]
   s.push_back(text("msh.file", "",
                    "User's gmsh .msh file (relative to the scene file); "
@@ -225,13 +244,13 @@ std::vector<KeySpec> build_schema() {
   zones.type = KeyType::kStringMap;
   zones.unit = "-";
   zones.default_text = "{}";
-  zones.choices = {"rock", "core", "lining"};
+  for (mesh::Zone z : mesh::kZones) zones.choices.push_back(mesh::zone_name(z));
   zones.description = "Map from 2D physical group name to zone, e.g. { Rock = \"rock\" }.";
   s.push_back(zones);
   KeySpec edges = zones;
   edges.path = "msh.edges";
-  edges.choices = {"bottom",       "right", "top",      "left",       "excavation",
-                   "lining_inner", "rim",   "load_top", "load_bottom"};
+  edges.choices.clear();
+  for (mesh::EdgeTag t : mesh::kEdgeTags) edges.choices.push_back(mesh::edge_tag_name(t));
   edges.description = "Map from 1D physical group name to edge tag, e.g. { Floor = \"bottom\" }.";
   s.push_back(edges);
   s.push_back(text("msh.fracture_group", "\"\"",
@@ -256,17 +275,10 @@ std::vector<KeySpec> build_schema() {
                          "unstructured; 6 meshes the fracture zone as a near-regular lattice "
                          "(91% of nodes of valence 6) whose lines broken cracks then follow.");
   s.push_back(algo);
-  // [materials.*]
-  add_material(s, "rock", "host rock (or the specimen)");
-  add_material(s, "core", "excavation core (defaults to the rock's values)");
-  add_material(s, "lining", "shotcrete lining");
-  KeySpec fc = positive("materials.lining.compressive_strength", "Pa", "",
-                        "Uniaxial compressive strength of the shotcrete for the lining's "
-                        "capacity check (docs/support.md): each segment's thrust and moment "
-                        "against the plain section's elastic limit, with tensile_strength as "
-                        "the tensile limit (0 when not given: no tension); not given: no check.");
-  fc.default_doc = "none: no capacity check";
-  s.push_back(fc);
+}
+
+// The in-situ stress and the implicit stage.
+void add_insitu(std::vector<KeySpec>& s) {
   // [insitu]
   // The implicit stage needs compression in both directions (insitu/).
   s.push_back(positive("insitu.sigma_h", "Pa", "",
@@ -293,10 +305,11 @@ std::vector<KeySpec> build_schema() {
                       "mode; false: the in-situ tractions alone load the box, as in the "
                       "implicit stage, and the run stops if the outer boundary turns by more "
                       "than 0.01 deg as a rigid body."));
-  KeySpec alpha = number("insitu.alpha", "-", "[1.0]", 0, false, 1, false,
-                         "Core softening factors solved implicitly, strictly decreasing in "
-                         "[0, 1]; 0 removes the core. At most 100 values: each is a full "
-                         "implicit solve and output.");
+  KeySpec alpha =
+      number("insitu.alpha", "-", "[1.0]", 0, false, 1, false,
+             "Core softening factors solved implicitly, strictly decreasing in "
+             "[0, 1]; 0 removes the core. At most " +
+                 std::to_string(kMaxAlphas) + " values: each is a full implicit solve and output.");
   alpha.type = KeyType::kNumberArray;
   s.push_back(alpha);
   s.push_back(boolean("insitu.lining_active", "false",
@@ -313,6 +326,10 @@ std::vector<KeySpec> build_schema() {
   s.push_back(number("insitu.dilation_angle", "deg", "0", 0, false, 90, true,
                      "Mohr-Coulomb continuum: the rock's dilation angle psi (0: no volume "
                      "change in plastic flow; at most materials.rock.friction_angle)."));
+}
+
+// The explicit engine, and the platens of specimen tests.
+void add_engine(std::vector<KeySpec>& s) {
   // [engine]
   s.push_back(integer("engine.steps", "10000", 1, 1e12,
                       "Explicit steps of a specimen run (tunnels: the cap of each stage)."));
@@ -325,12 +342,17 @@ std::vector<KeySpec> build_schema() {
                      "Viscous damping of the triangles, a multiple of Munjiza's element "
                      "viscosity eta = 2 h sqrt(E rho) (h: smallest altitude); the stiffest "
                      "element mode then has 1.7-1.8 times this ratio of critical damping."));
-  s.push_back(number("engine.local_damping", "-", "0.8 (tunnel stages), 0 (specimens)", 0, false, 1,
-                     true,
-                     "Cundall local damping coefficient: f -= alpha |f| sign(v) per node "
-                     "component. Tunnel stages are quasi-static and take 0.8 unless given (0 "
-                     "runs them undamped but for the triangles' viscosity); specimen runs "
-                     "take 0. The summary's `damping` entry shows the value used."));
+  std::ostringstream tunnel_local;  // one value for tunnels, none for specimens: no one default
+  tunnel_local << kTunnelLocalDamping;
+  KeySpec local = number("engine.local_damping", "-", "", 0, false, 1, true,
+                         "Cundall local damping coefficient: f -= alpha |f| sign(v) per node "
+                         "component. Tunnel stages are quasi-static and take " +
+                             tunnel_local.str() +
+                             " unless given (0 runs them undamped but for the triangles' "
+                             "viscosity); specimen runs take 0. The summary's `damping` entry "
+                             "shows the value used.");
+  local.default_doc = tunnel_local.str() + " (tunnel stages), 0 (specimens)";
+  s.push_back(local);
   s.push_back(boolean("engine.kinetic_damping", "false",
                       "Cundall's kinetic damping in tunnel stages: every node's velocity is "
                       "set to zero (at the step's midpoint) whenever the total kinetic energy "
@@ -361,6 +383,10 @@ std::vector<KeySpec> build_schema() {
                      "UCS and Brazilian tests: the run ends at the first step whose platen "
                      "stress has fallen to this fraction of the peak so far, once a crack "
                      "element has broken (post-peak stop); 0: runs all engine.steps."));
+}
+
+// The steel of bolts and cables; the grout and lining-rock bonds.
+void add_support(std::vector<KeySpec>& s) {
   // [bolts] and [cables]: the steel each kind of bolt shares. Cables are
   // long bolts of strand (the seed's simplification), here 15.2 mm 7-wire
   // strand Y1860S7 (EN 10138-3): 0.1% proof 1600 MPa, 1860 MPa at 3.5%.
@@ -409,6 +435,10 @@ std::vector<KeySpec> build_schema() {
     s.push_back(
         positive(p + "fracture_energy_II", "J/m^2", k.gf2, what + ": mode II fracture energy."));
   }
+}
+
+// Where the bolts are: one by one, or as fans.
+void add_bolts(std::vector<KeySpec>& s) {
   // [[bolt]] and [[bolt_fan]]
   KeySpec point = number("bolt[].start", "m", "", -kInf, false, kInf, false,
                          "Head (collar) of the bolt, [x, y]: on the excavation boundary or in "
@@ -437,7 +467,9 @@ std::vector<KeySpec> build_schema() {
   KeySpec fan_kind = kind;
   fan_kind.path = "bolt_fan[].kind";
   s.push_back(fan_kind);
-  add_instruments(s);
+}
+
+void add_contact(std::vector<KeySpec>& s) {
   // [contact]
   s.push_back(boolean("contact.enabled", "true",
                       "Penalty contact with friction between triangles on free surfaces and "
@@ -452,6 +484,9 @@ std::vector<KeySpec> build_schema() {
                      "Normal contact damping as a fraction of critical."));
   s.push_back(boolean("contact.friction", "true",
                       "Coulomb friction with mu = tan(residual_friction_angle)."));
+}
+
+void add_stages(std::vector<KeySpec>& s) {
   // [[stages]]
   s.push_back(choice("stages[].kind", "",
                      {"insitu", "soften", "lining", "bolts", "remove_core", "grout", "equilibrium"},
@@ -495,6 +530,9 @@ std::vector<KeySpec> build_schema() {
                       "time has passed), then grout; 0: at once."));
   s.push_back(integer("stages[].every_steps", "output.every_steps", 1, 1e9,
                       "Steps between outputs in this stage."));
+}
+
+void add_output(std::vector<KeySpec>& s) {
   // [output]
   s.push_back(integer("output.every_steps", "1000", 1, 1e9,
                       "Explicit steps between outputs (VTK frames, history rows)."));
@@ -509,6 +547,31 @@ std::vector<KeySpec> build_schema() {
                      "with the support measure; the in-situ state where the scene installs "
                      "none); `start`, the in-situ state (the implicit deconfinement "
                      "included). The axis label names it."));
+}
+
+std::vector<KeySpec> build_schema() {
+  std::vector<KeySpec> s;
+  add_model(s);
+  add_mesh(s);
+  // [materials.*]
+  add_material(s, "rock", "host rock (or the specimen)");
+  add_material(s, "core", "excavation core (defaults to the rock's values)", "materials.rock.");
+  add_material(s, "lining", "shotcrete lining");
+  KeySpec fc = positive("materials.lining.compressive_strength", "Pa", "",
+                        "Uniaxial compressive strength of the shotcrete for the lining's "
+                        "capacity check (docs/support.md): each segment's thrust and moment "
+                        "against the plain section's elastic limit, with tensile_strength as "
+                        "the tensile limit (0 when not given: no tension); not given: no check.");
+  fc.default_doc = "none: no capacity check";
+  s.push_back(fc);
+  add_insitu(s);
+  add_engine(s);
+  add_support(s);
+  add_bolts(s);
+  add_instruments(s);
+  add_contact(s);
+  add_stages(s);
+  add_output(s);
   add_references(s);
   return s;
 }
@@ -529,6 +592,14 @@ const KeySpec* find_key(const std::string& path) {
   for (const KeySpec& k : scene_schema())
     if (k.path == path) return &k;
   return nullptr;
+}
+
+std::string default_key(const KeySpec& k, const std::string& path) {
+  if (k.default_text.empty()) return "";
+  if (find_key(k.default_text)) return k.default_text;
+  if (find_key(section_of(k.path) + "." + k.default_text))
+    return section_of(path) + "." + k.default_text;
+  return "";
 }
 
 bool is_known_section(const std::string& section) {

@@ -60,12 +60,9 @@ fdem::BoltSteel steel_of(const SteelSettings& b) {
 
 }  // namespace
 
-std::map<int, fdem::Material> engine_materials(const Scene& s) {
-  std::map<int, fdem::Material> out;
-  const std::pair<const char*, int> zones[] = {
-      {"rock", mesh::kRock}, {"core", mesh::kCore}, {"lining", mesh::kLining}};
-  for (auto [name, zone] : zones)
-    if (s.materials.count(name)) out[zone] = engine_material(s.materials.at(name), s.engine);
+std::map<mesh::Zone, fdem::Material> engine_materials(const Scene& s) {
+  std::map<mesh::Zone, fdem::Material> out;
+  for (const auto& [zone, m] : s.materials) out[zone] = engine_material(m, s.engine);
   return out;
 }
 
@@ -79,11 +76,11 @@ std::vector<std::size_t> lining_interface_cracks(const fdem::Engine& e, const me
 }
 
 fdem::Material grout_material(const Scene& s) {
-  return bond_material(s.grout, s.materials.at("rock").density, s);
+  return bond_material(s.grout, s.materials.at(mesh::kRock).density, s);
 }
 
 fdem::Material lining_interface_material(const Scene& s) {
-  return bond_material(s.lining_interface, s.materials.at("rock").density, s);
+  return bond_material(s.lining_interface, s.materials.at(mesh::kRock).density, s);
 }
 
 std::vector<fdem::BoltSpec> bolt_specs(const Scene& s) {
@@ -104,7 +101,7 @@ std::vector<fdem::BoltSpec> bolt_specs(const Scene& s) {
 fdem::ContactSettings contact_settings(const Scene& s) {
   fdem::ContactSettings c;
   c.enabled = s.engine.contact;
-  c.penalty = s.engine.contact_penalty_factor * s.materials.at("rock").young;
+  c.penalty = s.engine.contact_penalty_factor * s.materials.at(mesh::kRock).young;
   c.damping_ratio = s.engine.contact_damping;
   c.friction = s.engine.contact_friction;
   return c;
@@ -121,9 +118,10 @@ insitu::InsituSpec insitu_spec(const Scene& s) {
     spec.loading = insitu::BoundaryLoading::kKirschExact;
     spec.kirsch_radius = s.mesh.tunnel.radius;
   }
-  spec.materials.rock = elastic(s.materials.at("rock"));
-  if (s.materials.count("core")) spec.materials.core = elastic(s.materials.at("core"));
-  if (s.materials.count("lining")) spec.materials.lining = elastic(s.materials.at("lining"));
+  spec.materials.rock = elastic(s.materials.at(mesh::kRock));
+  if (s.materials.count(mesh::kCore)) spec.materials.core = elastic(s.materials.at(mesh::kCore));
+  if (s.materials.count(mesh::kLining))
+    spec.materials.lining = elastic(s.materials.at(mesh::kLining));
   spec.lining.active = s.insitu.lining_active;
   spec.alphas = s.insitu.alpha;
   spec.solver.tolerance = s.insitu.tolerance;
@@ -166,7 +164,7 @@ bool kirsch_case(const Scene& s, insitu::KirschCase* k) {
   if (m.kind != mesh::ModelKind::kTunnel || m.tunnel.shape != mesh::TunnelShape::kCircular ||
       m.tunnel.lining_thickness > 0 || s.insitu.unit_weight > 0)
     return false;
-  const MaterialSpec& rock = s.materials.at("rock");
+  const MaterialSpec& rock = s.materials.at(mesh::kRock);
   *k = {m.tunnel.radius,    s.insitu.sigma_h, s.insitu.sigma_v,
         s.insitu.angle_deg, rock.young,       rock.poisson};
   return true;

@@ -14,7 +14,7 @@ namespace rockfdem::workflows {
 insitu::InsituSpec insitu_spec(const Scene& scene);
 
 /// The engine's material for each zone present in the scene (rock, core, lining).
-std::map<int, fdem::Material> engine_materials(const Scene& scene);
+std::map<mesh::Zone, fdem::Material> engine_materials(const Scene& scene);
 
 /// The grout as an engine material (rock law with the grout's strengths).
 fdem::Material grout_material(const Scene& scene);

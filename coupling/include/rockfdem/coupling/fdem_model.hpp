@@ -17,7 +17,8 @@ namespace rockfdem::coupling {
 /// Vertices, triangles, zones (as material indices), fracture flags and
 /// tagged edges of `m`; `by_zone` gives each zone present its material.
 /// Throws rockfdem::InputError naming a zone without a material.
-fdem::ModelInput model_input(const mesh::Mesh& m, const std::map<int, fdem::Material>& by_zone,
+fdem::ModelInput model_input(const mesh::Mesh& m,
+                             const std::map<mesh::Zone, fdem::Material>& by_zone,
                              fdem::Plane plane);
 
 /// The implicit field as the engine's initial state: its per-triangle

@@ -30,8 +30,18 @@ void write_msh(const Mesh& m, const std::string& path);
 /// triangle, a triangle in no zone group.
 Mesh read_msh(const MshFileSpec& spec);
 
+/// Every zone and every edge tag with a name, in number order: what name
+/// lookups (zone_name, edge_tag_name below) run over.
+inline constexpr Zone kZones[] = {kRock, kCore, kLining};
+inline constexpr EdgeTag kEdgeTags[] = {kBottom,      kRight, kTop,     kLeft,      kExcavation,
+                                        kLiningInner, kRim,   kLoadTop, kLoadBottom};
+
 /// The physical-group name write_msh uses for an edge tag ("edge_<tag>"
 /// for tags it has no name for).
 std::string edge_tag_name(int tag);
+
+/// The physical-group name write_msh uses for a zone ("zone_<n>" for
+/// numbers that are no Zone).
+std::string zone_name(int zone);
 
 }  // namespace rockfdem::mesh

@@ -2,6 +2,12 @@
 // load_scene() checks the whole file (and every --set override) before any
 // work starts; the first problem is thrown as rockfdem::InputError naming
 // the file, the key, the value and what is allowed.
+//
+// Defaults are the schema's (scene_schema.cpp), the one place they are
+// written: load_scene() fills every member from the file or the schema's
+// default. Members are therefore value-initialised ({}: 0, false, empty);
+// a member with another initialiser holds a neutral value for a key the
+// schema gives no default, and says so.
 #pragma once
 
 #include <array>
@@ -10,101 +16,98 @@
 #include <string>
 #include <vector>
 
+#include "rockfdem/mesh/mesh.hpp"
 #include "rockfdem/mesh/mesh_spec.hpp"
+#include "rockfdem/workflows/scene_schema.hpp"
 
 namespace rockfdem::workflows {
 
-/// Most values insitu.alpha may hold: each is a full implicit solve.
-inline constexpr std::size_t kMaxAlphas = 100;
-
 struct MaterialSpec {
-  double density = 2700;                ///< kg/m^3
-  double young = 0;                     ///< Pa
-  double poisson = 0;                   ///< -
-  double tensile_strength = 0;          ///< Pa (0: not given)
-  double cohesion = 0;                  ///< Pa (0: not given)
-  double friction_angle = 30;           ///< deg
-  double residual_friction_angle = 30;  ///< deg
-  double fracture_energy_I = 0;         ///< J/m^2 (0: not given)
-  double fracture_energy_II = 0;        ///< J/m^2 (0: not given)
-  double penalty_factor = 10;           ///< penalty / Young's modulus
-  double heterogeneity = 0;             ///< Weibull modulus of crack strengths; 0: homogeneous
-  std::uint64_t heterogeneity_seed = 1;
-  double compressive_strength = 0;  ///< Pa, lining only: its capacity check (0: not given)
+  double density{};                  ///< kg/m^3
+  double young{};                    ///< Pa
+  double poisson{};                  ///< -
+  double tensile_strength{};         ///< Pa (0: not given)
+  double cohesion{};                 ///< Pa (0: not given)
+  double friction_angle{};           ///< deg
+  double residual_friction_angle{};  ///< deg
+  double fracture_energy_I{};        ///< J/m^2 (0: not given)
+  double fracture_energy_II{};       ///< J/m^2 (0: not given)
+  double penalty_factor{};           ///< penalty / Young's modulus
+  double heterogeneity{};            ///< Weibull modulus of crack strengths; 0: homogeneous
+  std::uint64_t heterogeneity_seed{};
+  double compressive_strength{};  ///< Pa, lining only: its capacity check (0: not given)
 };
 
 struct InsituSettings {
-  double sigma_h = 0;      ///< Pa, compression positive
-  double sigma_v = 0;      ///< Pa, compression positive
-  double angle_deg = 0;    ///< rotation of sigma_h from x, counter-clockwise
-  double unit_weight = 0;  ///< N/m^3
-  bool kirsch_boundary = false;
-  std::vector<double> alpha{1.0};  ///< at most kMaxAlphas values
-  bool lining_active = false;
-  std::string solver = "auto";
-  double tolerance = 1e-10;
+  double sigma_h{};      ///< Pa, compression positive (0: not given, specimens)
+  double sigma_v{};      ///< Pa, compression positive (0: not given, specimens)
+  double angle_deg{};    ///< rotation of sigma_h from x, counter-clockwise
+  double unit_weight{};  ///< N/m^3
+  bool kirsch_boundary{};
+  std::vector<double> alpha;  ///< at most kMaxAlphas values
+  bool lining_active{};
+  std::string solver;
+  double tolerance{};
   /// Outer boundary in the explicit stages: rollers (normal displacement
   /// held at the hand-off's) or the in-situ tractions alone.
-  bool rollers = true;
+  bool rollers{};
   /// The continuum counterpart of a tunnel run: "elastic" or "mohr_coulomb".
-  std::string continuum = "elastic";
-  double dilation_angle = 0;  ///< deg, Mohr-Coulomb continuum
+  std::string continuum;
+  double dilation_angle{};  ///< deg, Mohr-Coulomb continuum
 };
 
 struct EngineSettings {
-  long steps = 10000;
-  double dt = 0;  ///< s; 0: automatic
-  double dt_safety = 0.8;
-  double damping_ratio = 0.1;
-  /// Cundall local damping; -1: the kind's default (kTunnelLocalDamping in
-  /// tunnel stages, none in specimen runs). Shown in the run summary.
+  long steps{};
+  double dt{};  ///< s; 0: automatic
+  double dt_safety{};
+  double damping_ratio{};
+  /// Cundall local damping; -1 (neutral, the key has no default): the
+  /// kind's (kTunnelLocalDamping in tunnel stages, none in specimen runs).
+  /// Shown in the run summary.
   double local_damping = -1;
-  double mass_damping = 0;       ///< 1/s
-  bool kinetic_damping = false;  ///< Cundall's kinetic damping in tunnel stages
-  double gravity = 0;            ///< m/s^2, acting in -y
-  bool mass_scaling = false;     ///< quasi-static mass scaling (engine.mass_scaling resolved)
-  double mass_scaling_dt = 0;    ///< s; 0: automatic
-  double platen_velocity = 0.5;  ///< m/s, each platen (specimens)
-  bool rough_platens = true;     ///< platens hold the ends laterally (specimens)
-  double stop_after_peak = 0;    ///< post-peak stop: fraction of the peak; 0: none
-  bool contact = true;
-  double contact_penalty_factor = 1;  ///< times the rock's Young's modulus
-  double contact_damping = 0;
-  bool contact_friction = true;
+  double mass_damping{};     ///< 1/s
+  bool kinetic_damping{};    ///< Cundall's kinetic damping in tunnel stages
+  double gravity{};          ///< m/s^2, acting in -y
+  bool mass_scaling{};       ///< quasi-static mass scaling (engine.mass_scaling resolved)
+  double mass_scaling_dt{};  ///< s; 0: automatic
+  double platen_velocity{};  ///< m/s, each platen (specimens)
+  bool rough_platens{};      ///< platens hold the ends laterally (specimens)
+  double stop_after_peak{};  ///< post-peak stop: fraction of the peak; 0: none
+  bool contact{};
+  double contact_penalty_factor{};  ///< times the rock's Young's modulus
+  double contact_damping{};
+  bool contact_friction{};
 };
 
 /// One construction stage of a tunnel run (scene [[stages]]).
 struct StageSpec {
-  std::string kind;     ///< soften, lining, remove_core, equilibrium
-  double alpha = 0;     ///< soften: target core stiffness factor
-  long max_steps = 0;   ///< explicit steps at most
-  double ratio = 1e-3;  ///< stop when the unbalanced-force ratio is below
-  double time = 0;      ///< stop after this simulated time [s]; 0: no limit
-  int every_steps = 1000;
-  long trigger_broken = 0;  ///< grout: broken crack elements that trigger grouting
+  std::string kind;  ///< soften, lining, remove_core, equilibrium
+  double alpha{};    ///< soften: target core stiffness factor (0: not given, other kinds)
+  long max_steps{};  ///< explicit steps at most
+  double ratio{};    ///< stop when the unbalanced-force ratio is below
+  double time{};     ///< stop after this simulated time [s]; 0: no limit
+  int every_steps{};
+  long trigger_broken{};  ///< grout: broken crack elements that trigger grouting
   /// With the ratio, equilibrium needs the monitors settled: the largest
   /// monitor displacement change over one output interval, per 1000 steps,
   /// at most this fraction of the largest monitor displacement; 0: the
   /// ratio alone.
-  double settle = 1e-3;
+  double settle{};
   /// Consecutive outputs at which ratio and settle must both hold.
-  int hold = 2;
+  int hold{};
   /// A monitor displaced by more than this fraction of the opening's span
   /// makes the run unstable (the opening is closing, not stabilising).
-  double unstable_fraction = 0.05;
+  double unstable_fraction{};
   /// Whether finding the opening unstable ends the run there; false runs
   /// on to the cap, the status stays unstable with the first finding.
-  bool stop_when_unstable = true;
+  bool stop_when_unstable{};
 };
-
-/// Local damping of tunnel stages when engine.local_damping is not given.
-constexpr double kTunnelLocalDamping = 0.8;
 
 /// The steel of one kind of bolt (seed sec. 2.2).
 struct SteelSettings {
-  double diameter = 0.025, row_spacing = 1;
-  double young = 200e9, yield_strength = 400e6, ultimate_strength = 500e6;
-  double tangent_modulus = 2e9, shear_yield_strength = 240e6, shear_fracture_energy = 1e4;
+  double diameter{}, row_spacing{};
+  double young{}, yield_strength{}, ultimate_strength{};
+  double tangent_modulus{}, shear_yield_strength{}, shear_fracture_energy{};
 };
 
 /// Rockbolts and cables (long bolts of strand, the seed's simplification),
@@ -118,8 +121,8 @@ struct BoltSettings {
 /// A bond modelled by crack elements: the grout (bolt-rock bond, and what
 /// re-joins broken cracks when grouting) or the shotcrete-rock interface.
 struct BondSettings {
-  double young = 10e9, tensile_strength = 1e6, cohesion = 2e6, friction_angle = 30;
-  double fracture_energy_I = 20, fracture_energy_II = 100;
+  double young{}, tensile_strength{}, cohesion{}, friction_angle{};
+  double fracture_energy_I{}, fracture_energy_II{};
 };
 using GroutSettings = BondSettings;
 
@@ -127,29 +130,29 @@ using GroutSettings = BondSettings;
 /// point at (x, y) of the mesh.
 struct MonitorSpec {
   std::string name;
-  double x = 0, y = 0;               ///< [m]
-  bool relative_to_support = false;  ///< read from the first lining or bolts stage on
+  double x{}, y{};             ///< [m]
+  bool relative_to_support{};  ///< read from the first lining or bolts stage on
 };
 
 /// A borehole extensometer (scene [[extensometer]]): a head and `anchors`
 /// anchors at equal spacing to `length` along a line into the rock.
 struct ExtensometerSpec {
   std::string name;
-  std::string from;               ///< key point the head is at (its outward normal); empty: given
-  double head_x = 0, head_y = 0;  ///< [m], when `from` is empty
-  double dir_x = 0, dir_y = 0;    ///< unit vector into the rock, when `from` is empty
-  double length = 0;              ///< head to the deepest anchor [m]
-  int anchors = 3;
+  std::string from;           ///< key point the head is at (its outward normal); empty: given
+  double head_x{}, head_y{};  ///< [m], when `from` is empty
+  double dir_x{}, dir_y{};    ///< unit vector into the rock, when `from` is empty
+  double length{};            ///< head to the deepest anchor [m]
+  int anchors{};
 };
 
 struct OutputSettings {
-  int every_steps = 1000;
-  bool vtk = true;
-  bool plots = true;
-  long checkpoint_every = 0;  ///< steps between checkpoints; 0: none
+  int every_steps{};
+  bool vtk{};
+  bool plots{};
+  long checkpoint_every{};  ///< steps between checkpoints; 0: none
   /// Origin of the convergence plots: the support's installation (where
   /// the scene has one) rather than the in-situ state.
-  bool convergence_from_support = true;
+  bool convergence_from_support{};
 };
 
 /// Figures the run is compared with in report.md (scene [references]).
@@ -157,16 +160,16 @@ struct ReferenceSettings {
   /// [mm] by name: key points (radial, towards the opening positive),
   /// "wall_chord", "shoulder_chord" (closure); only those given.
   std::map<std::string, double> mm;
-  bool from_support = false;  ///< measured from the support's installation
-  std::string source;         ///< where they come from
+  bool from_support{};  ///< measured from the support's installation
+  std::string source;   ///< where they come from
 };
 
 struct Scene {
   std::string source;  ///< the scene file's path, or "default"
   std::string title;
-  bool plane_stress = false;
+  bool plane_stress{};
   mesh::MeshSpec mesh;
-  std::map<std::string, MaterialSpec> materials;  ///< "rock", "core", "lining" as present
+  std::map<mesh::Zone, MaterialSpec> materials;  ///< rock, core, lining as present
   InsituSettings insitu;
   EngineSettings engine;
   std::vector<StageSpec> stages;  ///< explicit stages after the implicit one (tunnels)
