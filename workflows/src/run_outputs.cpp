@@ -366,6 +366,7 @@ void RunOutputs::finish(const fdem::Engine& e, const mesh::Mesh& m,
   report_dt();
   bolt_outputs(e, bolts);
   j["monitors"] = monitors_json(e, monitors);
+  add_since_support(j["monitors"]);
   j["outer_boundary"] = {{"rotation_deg", boundary_fit(e).rotation * 180 / M_PI},
                          {"max_rotation_deg", max_rotation_deg_},
                          {"limit_deg", kRigidRotationLimitDeg},
@@ -474,6 +475,14 @@ std::map<std::string, double> RunOutputs::since_support() const {
   add("shoulder_chord", "shoulder_chord_convergence_mm",
       mon.value("shoulder_chord_convergence_mm", nlohmann::json()));
   return out;
+}
+
+// What monitoring installed with the support reads (field convergence
+// data): a run without a lining or bolts stage adds nothing.
+void RunOutputs::add_since_support(nlohmann::json& monitors) const {
+  for (const auto& [name, mm] : since_support())
+    if (monitors.contains(name) && monitors[name].is_object())
+      monitors[name]["radial_since_support_mm"] = mm;
 }
 
 void RunOutputs::write_report() const {

@@ -98,6 +98,8 @@ class RunOutputs {
   /// Key points' radial displacement and the chords' closure [mm] since
   /// the support's installation (the summary's figures less the history's then).
   std::map<std::string, double> since_support() const;
+  /// Adds each key point's `radial_since_support_mm` to the summary's monitors.
+  void add_since_support(nlohmann::json& monitors) const;
   /// report.md from the summary as it stands.
   void write_report() const;
   /// The engine grid plus, with bolts installed, "bolt_axial_stress" (steel

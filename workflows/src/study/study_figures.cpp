@@ -34,6 +34,7 @@ std::vector<std::string> figure_columns(const Scene& scene) {
   } else {
     for (const std::string& p : key_point_names()) c.push_back(p + "_radial_mm");
     c.insert(c.end(), std::begin(kChords), std::end(kChords));
+    for (const std::string& p : key_point_names()) c.push_back(p + "_since_support_mm");
   }
   c.insert(c.end(), {"broken_I", "broken_II", "broken_mixed", "steps", "state_hash"});
   return c;
@@ -43,7 +44,10 @@ nlohmann::json key_figures(const nlohmann::json& summary) {
   nlohmann::json f = nlohmann::json::object();
   if (const auto m = summary.find("monitors"); m != summary.end() && m->is_object()) {
     for (const std::string& p : key_point_names())
-      if (m->contains(p)) take(*m, p.c_str(), "radial_mm", p + "_radial_mm", 1, f);
+      if (m->contains(p)) {
+        take(*m, p.c_str(), "radial_mm", p + "_radial_mm", 1, f);
+        take(*m, p.c_str(), "radial_since_support_mm", p + "_since_support_mm", 1, f);
+      }
     for (const char* c : kChords) take(summary, "monitors", c, c, 1, f);
   }
   take(summary, "specimen", "peak_stress", "peak_stress_MPa", 1e-6, f);
@@ -66,6 +70,8 @@ std::vector<TargetName> target_names(const Scene& scene) {
     const std::string column = c;
     names.push_back({column.substr(0, column.size() - 3), column, "mm"});
   }
+  for (const std::string& p : key_point_names())
+    names.push_back({p + "_since_support", p + "_since_support_mm", "mm"});
   return names;
 }
 
