@@ -4,6 +4,8 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <fstream>
+#include <string>
 
 #include "cli_runner.hpp"
 
@@ -70,5 +72,36 @@ TEST(MshScene, check_reads_the_mesh_file_and_refuses_a_bad_one) {
       EXPECT_FALSE(fs::exists(dir / "bad")) << cmd << " " << set;
     }
   }
+  fs::remove_all(dir);
+}
+
+// A user's mesh larger than the generated tunnels' default box (here 240 m)
+// takes a monitor 70 m from the axis, which lies in its rock; a point
+// outside every triangle of it is refused by name once the mesh is read.
+TEST(MshScene, monitors_are_placed_in_the_users_mesh_not_a_default_box) {
+  const fs::path dir = scratch("msh-big");
+  fs::create_directories(dir);
+  const Result meshed = run("mesh " + kTestDir +
+                            "/restart_support.toml -q --set domain.width=240 --set "
+                            "domain.height=240 --set mesh.size_far=20 -o " +
+                            (dir / "mesh").string());
+  ASSERT_EQ(meshed.code, 0) << meshed.output;
+  const fs::path scene = msh_scene(dir / "unused");
+  std::string text = read_text(scene);
+  text.replace(text.find("mesh/mesh.msh"), std::string("mesh/mesh.msh").size(),
+               (dir / "mesh" / "mesh.msh").string());
+  std::ofstream(dir / "inside.toml") << text << "[[monitor]]\nname = \"far\"\nx = 70.0\ny = 0.0\n";
+  const Result inside =
+      run("run " + (dir / "inside.toml").string() +
+          " -q --set output.vtk=false --set output.plots=false -o " + (dir / "out").string());
+  ASSERT_EQ(inside.code, 0) << inside.output;
+  EXPECT_TRUE(read_json(dir / "out" / "summary.json")["monitors"].contains("far"));
+  std::ofstream(dir / "outside.toml")
+      << text << "[[monitor]]\nname = \"far\"\nx = 130.0\ny = 0.0\n";
+  const Result outside =
+      run("run " + (dir / "outside.toml").string() + " -q -o " + (dir / "out2").string());
+  EXPECT_EQ(outside.code, 2) << outside.output;
+  EXPECT_NE(outside.output.find("lies in no triangle of the mesh"), std::string::npos)
+      << outside.output;
   fs::remove_all(dir);
 }

@@ -495,7 +495,11 @@ void check_instrument_name(const Reader& r, const std::string& key, std::set<std
 std::string misplaced(const Scene& s, const std::string& what, double x, double y) {
   const std::string at = what + " at (" + num(x) + ", " + num(y) + ") m ";
   const mesh::DomainSpec& d = s.mesh.domain;
-  if (std::abs(x - d.center_x) >= d.width / 2 || std::abs(y - d.center_y) >= d.height / 2)
+  // A user's .msh has no domain until it is read; its points are placed
+  // (and refused when outside every triangle) once the mesh is.
+  const bool generated = s.mesh.msh.path.empty();
+  if (generated &&
+      (std::abs(x - d.center_x) >= d.width / 2 || std::abs(y - d.center_y) >= d.height / 2))
     return at + "lies outside the rock domain; allowed: x in (" + num(d.center_x - d.width / 2) +
            ", " + num(d.center_x + d.width / 2) + "), y in (" + num(d.center_y - d.height / 2) +
            ", " + num(d.center_y + d.height / 2) + ")";
