@@ -7,6 +7,8 @@
 #include <array>
 #include <sstream>
 
+#include "stages/registry.hpp"
+
 namespace rockfdem::workflows {
 namespace {
 
@@ -453,15 +455,14 @@ std::vector<KeySpec> build_schema() {
   s.push_back(boolean("contact.friction", "true",
                       "Coulomb friction with mu = tan(residual_friction_angle)."));
   // [[stages]]
-  s.push_back(choice("stages[].kind", "",
-                     {"insitu", "soften", "lining", "bolts", "remove_core", "grout", "equilibrium"},
-                     "Construction stage: `insitu` (the implicit stage, first if given), "
-                     "`soften` (core to alpha, explicit), `lining` (install the lining ring "
-                     "stress-free), `bolts` (install every bolt stress-free), `remove_core`, "
-                     "`grout` (re-join broken cracks with grout, once trigger_broken is "
-                     "reached), `equilibrium`. Without [[stages]]: insitu, "
-                     "lining (if the model has a ring not already active in the implicit "
-                     "stage), bolts (if the scene has any), remove_core, equilibrium."));
+  std::vector<std::string> kinds = stage_kinds();  // the registered stages (stages/)
+  kinds.insert(kinds.begin(), "insitu");
+  s.push_back(choice("stages[].kind", "", kinds,
+                     "Construction stage: `insitu` (the implicit stage, first if given), " +
+                         stage_kind_descriptions() +
+                         ". Without [[stages]]: insitu, "
+                         "lining (if the model has a ring not already active in the implicit "
+                         "stage), bolts (if the scene has any), remove_core, equilibrium."));
   s.push_back(number("stages[].alpha", "-", "", 0, true, 1, false,
                      "soften: target core stiffness factor, below the implicit hand-off's."));
   s.push_back(integer("stages[].max_steps", "engine.steps", 0, 1e12,
