@@ -20,7 +20,6 @@ StageRunner::StageRunner(fdem::Engine& engine, const mesh::Mesh& m,
     : model_{engine,
              m,
              ctx,
-             out,
              bolts,
              materials,
              handoff.alpha,
@@ -28,9 +27,10 @@ StageRunner::StageRunner(fdem::Engine& engine, const mesh::Mesh& m,
              handoff.alpha > 0,
              handoff.lining_installed},
       engine_(engine),
+      out_(out),
       scene_(scene),
       monitors_(monitors) {
-  out.set_lining_installed(model_.lining_installed);
+  out_.set_lining_installed(model_.lining_installed);
 }
 
 std::vector<double> StageRunner::monitor_displacements() const {
@@ -123,7 +123,7 @@ double remaining_move(const std::vector<double>& rates, double r, long every_ste
 bool StageRunner::unstable(const StageSpec& stage, bool criteria) {
   cursor_.rates.push_back(last_rate_);
   if (cursor_.rates.size() > 2 * kWindow) cursor_.rates.erase(cursor_.rates.begin());
-  const auto [name, u] = model_.out.largest_key_point(engine_, monitors_);
+  const auto [name, u] = out_.largest_key_point(engine_, monitors_);
   const double span = key_point_span(monitors_);
   const double limit = stage.unstable_fraction * span;
   const bool beyond = span > 0 && u > limit;
@@ -174,8 +174,7 @@ void StageRunner::interrupted(const StageSpec& stage) {
 }
 
 void StageRunner::record_step(const StageSpec& stage) {
-  model_.out.record_step(engine_, model_.mesh, monitors_, *timer_, stage.kind,
-                         model_.support_ratio());
+  out_.record_step(engine_, model_.mesh, monitors_, *timer_, stage.kind, model_.support_ratio());
 }
 
 bool StageRunner::criterion_met(const StageSpec& stage, long broken_target, bool reached) {
@@ -238,6 +237,8 @@ void StageRunner::run(const StageSpec& stage) {
     cursor_.first = engine_.step_count();
     cursor_.t0 = engine_.time();
     cursor_.changes = kind.apply(model_, stage);
+    out_.set_lining_installed(model_.lining_installed);
+    if (kind.installs_support()) out_.support_installed(engine_);
     cursor_.monitor_u = monitor_displacements();
     cursor_.started = true;
   }
@@ -357,7 +358,7 @@ void StageRunner::restore(const nlohmann::json& s) {
   model_.alpha = s.at("alpha").get<double>();
   model_.core_present = s.at("core_present").get<bool>();
   model_.lining_installed = s.at("lining_installed").get<bool>();
-  model_.out.set_lining_installed(model_.lining_installed);
+  out_.set_lining_installed(model_.lining_installed);
   report_ = s.at("report");
   last_checkpoint_ = s.at("last_checkpoint").get<long>();
 }

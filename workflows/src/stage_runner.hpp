@@ -110,6 +110,7 @@ class StageRunner {
 
   StageModel model_;
   fdem::Engine& engine_;  ///< model_.engine
+  RunOutputs& out_;
   const Scene& scene_;
   const std::vector<Monitor>& monitors_;
   PhaseTimer* timer_ = nullptr;  ///< run_all()'s

@@ -2,7 +2,8 @@
 // each kind (the scene's stages[].kind) lives in stage_<kind>.cpp with its
 // change to the model (apply) and its stop criterion (step), and is listed
 // once in registry.cpp. StageRunner keeps the cursor, the outputs and the
-// checkpoints; a stage only says what it changes and when it stops.
+// checkpoints and tells the outputs; a stage only says what it changes in
+// the model and when it stops.
 #pragma once
 
 #include <nlohmann/json.hpp>
@@ -16,7 +17,6 @@
 
 namespace rockfdem::workflows {
 
-class RunOutputs;
 class StageRunner;
 
 /// Engine materials the support stages assign to crack elements.
@@ -31,7 +31,6 @@ struct StageModel {
   fdem::Engine& engine;
   const mesh::Mesh& mesh;
   const RunContext& ctx;
-  RunOutputs& out;
   fdem::BoltPlan& bolts;
   SupportMaterials materials;
   double handoff_alpha;   ///< the core's stiffness factor in the engine at the hand-off
@@ -63,6 +62,9 @@ class Stage {
   /// equilibrium, when that is not the generic finding (a stage that stops
   /// on something else); empty: the generic one.
   virtual std::string not_at_equilibrium() const { return {}; }
+  /// Whether the stage installs support: the instruments' and plots'
+  /// origin of what the support measures.
+  virtual bool installs_support() const { return false; }
 };
 
 }  // namespace rockfdem::workflows

@@ -1,6 +1,5 @@
 // bolts: every bolt of the scene installed stress-free (the steel strips
 // and their grout bond made active in the rock as it is now).
-#include "run_outputs.hpp"
 #include "stages/stage.hpp"
 
 namespace rockfdem::workflows {
@@ -12,13 +11,13 @@ class Bolts : public Stage {
 
   nlohmann::json apply(StageModel& m, const StageSpec&) const override {
     const fdem::BoltInstallReport r = fdem::install_bolts(m.engine, m.bolts);
-    const nlohmann::json done = {{"bolts", m.bolts.specs.size()},
-                                 {"bolt_triangles", r.triangles},
-                                 {"steel_cracks", r.steel_cracks},
-                                 {"grout_cracks", r.grout_cracks}};
-    m.out.support_installed(m.engine);
-    return done;
+    return {{"bolts", m.bolts.specs.size()},
+            {"bolt_triangles", r.triangles},
+            {"steel_cracks", r.steel_cracks},
+            {"grout_cracks", r.grout_cracks}};
   }
+
+  bool installs_support() const override { return true; }
 };
 
 }  // namespace

@@ -1,6 +1,5 @@
 // lining: the lining ring installed stress-free in the deformed shape,
 // bonded to the rock by the lining interface where the two faces are.
-#include "run_outputs.hpp"
 #include "stage_inputs.hpp"
 #include "stages/stage.hpp"
 
@@ -28,11 +27,10 @@ class Lining : public Stage {
     for (std::size_t t = 0; t < m.mesh.n_triangles(); ++t)
       if (m.mesh.zone[t] == mesh::kLining) m.engine.set_stiffness_factor(t, 1.0);
     m.lining_installed = true;
-    m.out.set_lining_installed(true);
-    const nlohmann::json done = {{"interface_cracks", bond_lining(m)}};
-    m.out.support_installed(m.engine);
-    return done;
+    return {{"interface_cracks", bond_lining(m)}};
   }
+
+  bool installs_support() const override { return true; }
 };
 
 }  // namespace
