@@ -78,7 +78,7 @@ std::string refusal(const std::string& path) {
   return "";
 }
 
-// A run state as run_tunnel.cpp writes one: one finished stage, one frame, one bolt.
+// A run state as run.cpp writes one: one finished stage, one frame, one bolt.
 nlohmann::json valid_run_state() {
   const nlohmann::json report = {
       {"kind", "equilibrium"},

@@ -180,7 +180,7 @@ int open_regular(const std::string& path, std::uint64_t& size) {
 }
 
 // ---- The run state's structure ---------------------------------------------
-// run_tunnel.cpp (bolts, start_ratio), RunOutputs::restore (outputs) and
+// run.cpp (bolts, start_ratio), RunOutputs::restore (outputs) and
 // StageRunner::restore and verdict() (stages) read the run state with
 // .at() and .get<T>(), which throw nlohmann's own exceptions (exit 1, a
 // raw message) or, for operator[] on a const object, assert. A forged or

@@ -55,7 +55,7 @@ std::string write_checkpoint(const std::string& output_dir, long step, const Sce
 Checkpoint read_checkpoint(const std::string& path, const Scene& scene);
 
 /// Checks that `run` has every field the restart reads with its type: for
-/// a tunnel (run_tunnel.cpp, RunOutputs::restore, StageRunner::restore and
+/// a tunnel (run.cpp, RunOutputs::restore, StageRunner::restore and
 /// verdict()) a stage index within `scene`'s stages; for a specimen
 /// (run_specimen.cpp, PlatenLoad::restore) its history and peak; frame names
 /// that are plain file names. Throws InputError naming the checkpoint

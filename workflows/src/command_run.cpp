@@ -1,5 +1,5 @@
 // `rockfdem run [SCENE] -o DIR`: the whole pipeline, a tunnel's staged
-// sequence (run_tunnel.cpp) or a specimen's loading (run_specimen.cpp).
+// sequence (run.cpp) or a specimen's loading (run_specimen.cpp).
 #include "commands.hpp"
 #include "interrupt.hpp"
 

@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "rockfdem/mesh/msh_io.hpp"
+#include "stages/registry.hpp"
 
 namespace rockfdem::workflows {
 namespace {
@@ -488,15 +489,14 @@ void add_contact(std::vector<KeySpec>& s) {
 
 void add_stages(std::vector<KeySpec>& s) {
   // [[stages]]
-  s.push_back(choice("stages[].kind", "",
-                     {"insitu", "soften", "lining", "bolts", "remove_core", "grout", "equilibrium"},
-                     "Construction stage: `insitu` (the implicit stage, first if given), "
-                     "`soften` (core to alpha, explicit), `lining` (install the lining ring "
-                     "stress-free), `bolts` (install every bolt stress-free), `remove_core`, "
-                     "`grout` (re-join broken cracks with grout, once trigger_broken is "
-                     "reached), `equilibrium`. Without [[stages]]: insitu, "
-                     "lining (if the model has a ring not already active in the implicit "
-                     "stage), bolts (if the scene has any), remove_core, equilibrium."));
+  std::vector<std::string> kinds = stage_kinds();  // the registered stages (stages/)
+  kinds.insert(kinds.begin(), "insitu");
+  s.push_back(choice("stages[].kind", "", kinds,
+                     "Construction stage: `insitu` (the implicit stage, first if given), " +
+                         stage_kind_descriptions() +
+                         ". Without [[stages]]: insitu, "
+                         "lining (if the model has a ring not already active in the implicit "
+                         "stage), bolts (if the scene has any), remove_core, equilibrium."));
   s.push_back(number("stages[].alpha", "-", "", 0, true, 1, false,
                      "soften: target core stiffness factor, below the implicit hand-off's."));
   s.push_back(integer("stages[].max_steps", "engine.steps", 0, 1e12,

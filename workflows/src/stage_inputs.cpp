@@ -1,11 +1,51 @@
 #include "stage_inputs.hpp"
 
+#include <cmath>
 #include <cstdio>
 
+#include "rockfdem/coupling/fdem_model.hpp"
 #include "rockfdem/error.hpp"
 
 namespace rockfdem::workflows {
 namespace {
+
+// The in-situ stress tensor, tension positive: -sH along `angle`, -sV across.
+std::array<double, 3> insitu_tensor(const InsituSettings& s) {
+  const double a = s.angle_deg * M_PI / 180, c = std::cos(a), n = std::sin(a);
+  return {-(s.sigma_h * c * c + s.sigma_v * n * n), -(s.sigma_h * n * n + s.sigma_v * c * c),
+          -(s.sigma_h - s.sigma_v) * n * c};
+}
+
+// Outer boundary: the in-situ traction sigma0 . n on all four sides, as in
+// the implicit stage, so the box is in equilibrium with the initial stress
+// at step 0. With insitu.rollers (the default) each side is also a roller:
+// its normal displacement stays at the hand-off's, so the traction there
+// becomes the roller's reaction (the same at step 0) and the model has no
+// rigid-body mode left. Tractions alone leave three: the loads are
+// self-equilibrated, but once a ring around the opening is broken the outer
+// block can turn on it (outer_boundary.hpp guards against it). Reported
+// displacements have the mean translation of the outer boundary removed, as
+// the implicit stage removes its rigid motion.
+//
+// Traction sigma0 . n on each side of the box (outward normals); with
+// rollers, the normal velocity held at zero too.
+std::vector<fdem::BoundaryCondition> box_conditions(const InsituSettings& s) {
+  const auto sig = insitu_tensor(s);
+  const std::pair<int, std::array<double, 2>> sides[] = {{mesh::kLeft, {-1, 0}},
+                                                         {mesh::kRight, {1, 0}},
+                                                         {mesh::kBottom, {0, -1}},
+                                                         {mesh::kTop, {0, 1}}};
+  std::vector<fdem::BoundaryCondition> bcs;
+  for (const auto& [tag, n] : sides) {
+    fdem::BoundaryCondition bc;
+    bc.tag = tag;
+    bc.tx = sig[0] * n[0] + sig[2] * n[1];
+    bc.ty = sig[2] * n[0] + sig[1] * n[1];
+    if (s.rollers) (n[0] != 0 ? bc.x : bc.y) = fdem::Constraint::kFixed;
+    bcs.push_back(bc);
+  }
+  return bcs;
+}
 
 insitu::ElasticMaterial elastic(const MaterialSpec& m) { return {m.young, m.poisson}; }
 
@@ -168,6 +208,24 @@ bool kirsch_case(const Scene& s, insitu::KirschCase* k) {
   *k = {m.tunnel.radius,    s.insitu.sigma_h, s.insitu.sigma_v,
         s.insitu.angle_deg, rock.young,       rock.poisson};
   return true;
+}
+
+fdem::ModelInput engine_input(const Scene& scene, const mesh::Mesh& m,
+                              const insitu::InsituField& handoff, int threads) {
+  std::map<mesh::Zone, fdem::Material> materials = engine_materials(scene);
+  // The implicit stage left the core at alpha_h E; the engine continues from there.
+  if (materials.count(mesh::kCore) && handoff.alpha > 0)
+    materials[mesh::kCore].young *= handoff.alpha;
+  fdem::ModelInput in = coupling::model_input(
+      m, materials, scene.plane_stress ? fdem::Plane::kStress : fdem::Plane::kStrain);
+  coupling::apply_insitu(handoff, in);
+  in.boundary_conditions = box_conditions(scene.insitu);
+  in.dt = scene.engine.dt;  // checked by make_engine
+  in.dt_safety = scene.engine.dt_safety;
+  in.threads = threads;
+  in.mass_scaling = {scene.engine.mass_scaling, scene.engine.mass_scaling_dt};
+  in.contact = contact_settings(scene);
+  return in;
 }
 
 }  // namespace rockfdem::workflows

@@ -33,7 +33,7 @@ std::vector<fdem::BoltSpec> bolt_specs(const Scene& scene);
 fdem::ContactSettings contact_settings(const Scene& scene);
 
 /// The engine's input at a tunnel's hand-off from the implicit `handoff`
-/// field (run_tunnel.cpp): its stresses, the core at its alpha, the box's
+/// field: its stresses, the core at its alpha, the box's
 /// in-situ tractions, the scene's dt, mass scaling and contact, on
 /// `threads` OpenMP threads.
 fdem::ModelInput engine_input(const Scene& scene, const mesh::Mesh& m,

@@ -7,10 +7,8 @@
 #include "interrupt.hpp"
 #include "output_dir.hpp"
 #include "progress.hpp"
-#include "rockfdem/coupling/atomic_file.hpp"
 #include "rockfdem/error.hpp"
-#include "rockfdem/fdem/bolt_grouting.hpp"
-#include "stage_inputs.hpp"
+#include "stages/registry.hpp"
 
 namespace rockfdem::workflows {
 
@@ -19,64 +17,20 @@ StageRunner::StageRunner(fdem::Engine& engine, const mesh::Mesh& m,
                          const RunContext& ctx, RunOutputs& out,
                          const std::vector<Monitor>& monitors, fdem::BoltPlan& bolts,
                          SupportMaterials materials)
-    : engine_(engine),
-      mesh_(m),
-      scene_(scene),
-      ctx_(ctx),
+    : model_{engine,
+             m,
+             ctx,
+             bolts,
+             materials,
+             handoff.alpha,
+             handoff.alpha,
+             handoff.alpha > 0,
+             handoff.lining_installed},
+      engine_(engine),
       out_(out),
-      monitors_(monitors),
-      bolts_(bolts),
-      materials_(materials),
-      handoff_alpha_(handoff.alpha),
-      alpha_(handoff.alpha),
-      core_present_(handoff.alpha > 0),
-      lining_installed_(handoff.lining_installed) {
-  out_.set_lining_installed(lining_installed_);
-}
-
-void StageRunner::set_zone(int zone, bool active, fdem::ActivationReference ref) {
-  for (std::size_t t = 0; t < mesh_.n_triangles(); ++t)
-    if (mesh_.zone[t] == zone) engine_.set_active(t, active, ref);
-}
-
-long StageRunner::bond_lining() {
-  if (materials_.lining_interface < 0) return 0;
-  // Sprayed onto the rock as it is now: the bond starts intact where the
-  // two faces are, whatever the rock's convergence so far.
-  const std::vector<std::size_t> bond = lining_interface_cracks(engine_, mesh_);
-  for (std::size_t c : bond) engine_.rejoin_crack(c, materials_.lining_interface);
-  return long(bond.size());
-}
-
-nlohmann::json StageRunner::apply(const StageSpec& stage) {
-  nlohmann::json done = nlohmann::json::object();
-  if (stage.kind == "bolts") {
-    const fdem::BoltInstallReport r = fdem::install_bolts(engine_, bolts_);
-    done = {{"bolts", bolts_.specs.size()},
-            {"bolt_triangles", r.triangles},
-            {"steel_cracks", r.steel_cracks},
-            {"grout_cracks", r.grout_cracks}};
-  } else if (stage.kind == "soften") {
-    // The engine's core already has alpha_h E and stress: scale relative to it.
-    for (std::size_t t = 0; t < mesh_.n_triangles(); ++t)
-      if (mesh_.zone[t] == mesh::kCore || (!lining_installed_ && mesh_.zone[t] == mesh::kLining))
-        engine_.set_stiffness_factor(t, stage.alpha / handoff_alpha_);
-    alpha_ = stage.alpha;
-  } else if (stage.kind == "lining") {
-    // Stress-free in the deformed shape: the lining takes only later load.
-    set_zone(mesh::kLining, true, fdem::ActivationReference::kCurrent);
-    for (std::size_t t = 0; t < mesh_.n_triangles(); ++t)
-      if (mesh_.zone[t] == mesh::kLining) engine_.set_stiffness_factor(t, 1.0);
-    lining_installed_ = true;
-    out_.set_lining_installed(true);
-    done = {{"interface_cracks", bond_lining()}};
-  } else if (stage.kind == "remove_core") {
-    set_zone(mesh::kCore, false, fdem::ActivationReference::kKeep);
-    // A ring never installed is ground still to be excavated.
-    if (!lining_installed_) set_zone(mesh::kLining, false, fdem::ActivationReference::kKeep);
-    core_present_ = false;
-  }
-  return done;
+      scene_(scene),
+      monitors_(monitors) {
+  out_.set_lining_installed(model_.lining_installed);
 }
 
 std::vector<double> StageRunner::monitor_displacements() const {
@@ -209,8 +163,44 @@ bool StageRunner::unstable(const StageSpec& stage, bool criteria) {
   return true;
 }
 
-bool StageRunner::step_until(const StageSpec& stage, PhaseTimer& timer, long broken_target) {
-  Progress progress(stage.kind, stage.max_steps, ctx_.quiet);
+void StageRunner::interrupted(const StageSpec& stage) {
+  // Checkpoint first: the extra row below is not one an uninterrupted run writes.
+  if (save_checkpoint_) save_checkpoint_();
+  record_step(stage);
+  const int sig = interrupt_requested();
+  throw Interrupted(sig, "interrupted by signal " + std::to_string(sig) + " at step " +
+                             std::to_string(engine_.step_count()) + " in stage '" + stage.kind +
+                             "'; outputs and a checkpoint are written");
+}
+
+void StageRunner::record_step(const StageSpec& stage) {
+  out_.record_step(engine_, model_.mesh, monitors_, *timer_, stage.kind, model_.support_ratio());
+}
+
+bool StageRunner::criterion_met(const StageSpec& stage, long broken_target, bool reached) {
+  if (broken_target > 0) return reached;
+  // Equilibrium: balanced forces alone are not enough while cracks keep
+  // breaking and blocks keep sliding (the ratio then stalls near 1e-3
+  // with the walls still converging); the monitors must have settled
+  // too, and both must hold at `hold` consecutive outputs, so that a
+  // ratio met once on the way to a collapse does not count.
+  const bool met = engine_.unbalanced_force_ratio() < stage.ratio &&
+                   (stage.settle <= 0 || last_settle_ <= stage.settle);
+  cursor_.held = met ? cursor_.held + 1 : 0;
+  return cursor_.held >= stage.hold;
+}
+
+void StageRunner::checkpoint_if_due() {
+  if (checkpoint_every_ > 0 && save_checkpoint_ &&
+      engine_.step_count() - last_checkpoint_ >= checkpoint_every_) {
+    save_checkpoint_();
+    last_checkpoint_ = engine_.step_count();
+    timer_->stamp("checkpoint");
+  }
+}
+
+bool StageRunner::step_until(const StageSpec& stage, long broken_target) {
+  Progress progress(stage.kind, stage.max_steps, model_.ctx.quiet);
   const long first = cursor_.first;
   const double t0 = cursor_.t0;
   const auto in_stage = [&] { return engine_.step_count() - first; };
@@ -219,121 +209,74 @@ bool StageRunner::step_until(const StageSpec& stage, PhaseTimer& timer, long bro
   while (in_stage() < stage.max_steps && !done && !out_of_time()) {
     const long chunk = std::min<long>(stage.every_steps - in_stage() % stage.every_steps,
                                       stage.max_steps - in_stage());
-    timer.stamp("output");
+    timer_->stamp("output");
     const long before = engine_.step_count();
     bool reached = false;
     const bool whole = advance(chunk, broken_target, &reached);
-    timer.stamp("fdem");
-    if (!whole) {
-      // Checkpoint first: the extra row below is not one an uninterrupted run writes.
-      if (save_checkpoint_) save_checkpoint_();
-      out_.record_step(engine_, mesh_, monitors_, timer, stage.kind, support_ratio());
-      const int sig = interrupt_requested();
-      throw Interrupted(sig, "interrupted by signal " + std::to_string(sig) + " at step " +
-                                 std::to_string(engine_.step_count()) + " in stage '" + stage.kind +
-                                 "'; outputs and a checkpoint are written");
-    }
-    out_.record_step(engine_, mesh_, monitors_, timer, stage.kind, support_ratio());
-    // Equilibrium: balanced forces alone are not enough while cracks keep
-    // breaking and blocks keep sliding (the ratio then stalls near 1e-3
-    // with the walls still converging); the monitors must have settled
-    // too, and both must hold at `hold` consecutive outputs, so that a
-    // ratio met once on the way to a collapse does not count.
+    timer_->stamp("fdem");
+    if (!whole) interrupted(stage);
+    record_step(stage);
     last_settle_ = settle_measure(engine_.step_count() - before);
-    if (broken_target > 0) {
-      done = reached;
-    } else {
-      const bool met = engine_.unbalanced_force_ratio() < stage.ratio &&
-                       (stage.settle <= 0 || last_settle_ <= stage.settle);
-      cursor_.held = met ? cursor_.held + 1 : 0;
-      done = cursor_.held >= stage.hold;
-    }
+    done = criterion_met(stage, broken_target, reached);
     progress.update(in_stage(), engine_.time() - t0);
     if (!done && unstable(stage, broken_target == 0) && stage.stop_when_unstable) {
       stopped_ = true;
       break;
     }
     // Only where the loop goes on: a restart resumes inside this stage.
-    const bool goes_on = !done && in_stage() < stage.max_steps && !out_of_time();
-    if (goes_on && checkpoint_every_ > 0 && save_checkpoint_ &&
-        engine_.step_count() - last_checkpoint_ >= checkpoint_every_) {
-      save_checkpoint_();
-      last_checkpoint_ = engine_.step_count();
-      timer.stamp("checkpoint");
-    }
+    if (!done && in_stage() < stage.max_steps && !out_of_time()) checkpoint_if_due();
   }
   progress.finish(in_stage(), engine_.time() - t0);
   stage_dt_ = engine_.dt();  // before a grout stage re-joins cracks (a new limit)
   return done;
 }
 
-nlohmann::json StageRunner::grout(const StageSpec& stage, PhaseTimer& timer) {
-  bool triggered =
-      stage.trigger_broken == 0 || engine_.broken_counts().total() >= stage.trigger_broken;
-  // Triggered by the broken count, or by the stage's time when one is given.
-  if (!triggered)
-    triggered = step_until(stage, timer, stage.trigger_broken) ||
-                (!stopped_ && stage.time > 0 && engine_.time() - cursor_.t0 >= stage.time);
-  nlohmann::json done = {{"triggered", triggered},
-                         {"broken_before", engine_.broken_counts().total()}};
-  if (!triggered) return done;
-  const fdem::CrackSelector select = bolts_.specs.empty()
-                                         ? fdem::CrackSelector{}
-                                         : fdem::excluding_bolt_steel(engine_, bolts_, {});
-  const fdem::GroutingResult g = fdem::grout_broken_cracks(engine_, materials_.grout, select);
-  done["rejoined"] = g.count;
-  done["broken_after"] = engine_.broken_counts().total();
-  std::string csv = "crack,x,y\n";
-  for (std::size_t i = 0; i < g.cracks.size(); ++i)
-    csv += std::to_string(g.cracks[i]) + ',' + std::to_string(g.midpoints[i][0]) + ',' +
-           std::to_string(g.midpoints[i][1]) + '\n';
-  coupling::atomic_write_text(output_path(ctx_.output_dir, "grouted_cracks.csv"), csv);
-  done["positions_file"] = "grouted_cracks.csv";
-  return done;
-}
-
-void StageRunner::run(const StageSpec& stage, PhaseTimer& timer) {
+void StageRunner::run(const StageSpec& stage) {
+  const Stage& kind = stage_of(stage.kind);
   if (!cursor_.started) {
     cursor_.first = engine_.step_count();
     cursor_.t0 = engine_.time();
-    cursor_.changes = stage.kind == "grout" ? nlohmann::json::object() : apply(stage);
-    if (stage.kind == "lining" || stage.kind == "bolts") out_.support_installed(engine_);
+    cursor_.changes = kind.apply(model_, stage);
+    out_.set_lining_installed(model_.lining_installed);
+    if (kind.installs_support()) out_.support_installed(engine_);
     cursor_.monitor_u = monitor_displacements();
     cursor_.started = true;
   }
   nlohmann::json done = cursor_.changes;
-  bool converged = false;
   last_settle_ = -1;  // no output interval yet
-  if (stage.kind == "grout")
-    done = grout(stage, timer);
-  else
-    converged = step_until(stage, timer, 0);
+  const bool converged = kind.step(*this, stage, done);
+  report_.push_back(report_entry(stage, done, converged));
+}
+
+nlohmann::json StageRunner::report_entry(const StageSpec& stage, const nlohmann::json& changes,
+                                         bool converged) const {
   const long steps_taken = engine_.step_count() - cursor_.first;
-  report_.push_back(
-      {{"kind", stage.kind},
-       {"changes", done},
-       {"steps", steps_taken},
-       {"simulated_time", engine_.time() - cursor_.t0},
-       {"dt", steps_taken > 0 ? nlohmann::json(stage_dt_) : nlohmann::json()},
-       {"unbalanced_ratio", engine_.unbalanced_force_ratio()},
-       {"settle", last_settle_ >= 0 ? nlohmann::json(last_settle_) : nlohmann::json()},
-       // A stage that took no step has no equilibrium to report.
-       {"converged", steps_taken > 0 ? nlohmann::json(converged) : nlohmann::json()},
-       {"max_steps", stage.max_steps},
-       {"criteria",
-        {{"ratio", stage.ratio},
-         {"settle", stage.settle},
-         {"hold", stage.hold},
-         {"unstable_fraction", stage.unstable_fraction}}},
-       {"moving_most", last_settle_ >= 0 ? nlohmann::json{{"key_point", moving_most_},
-                                                          {"mm_per_1000_steps", 1000 * last_rate_}}
-                                         : nlohmann::json()},
-       {"support_pressure_ratio", support_ratio()}});
+  return {
+      {"kind", stage.kind},
+      {"changes", changes},
+      {"steps", steps_taken},
+      {"simulated_time", engine_.time() - cursor_.t0},
+      {"dt", steps_taken > 0 ? nlohmann::json(stage_dt_) : nlohmann::json()},
+      {"unbalanced_ratio", engine_.unbalanced_force_ratio()},
+      {"settle", last_settle_ >= 0 ? nlohmann::json(last_settle_) : nlohmann::json()},
+      // A stage that took no step has no equilibrium to report.
+      {"converged", steps_taken > 0 ? nlohmann::json(converged) : nlohmann::json()},
+      {"max_steps", stage.max_steps},
+      {"criteria",
+       {{"ratio", stage.ratio},
+        {"settle", stage.settle},
+        {"hold", stage.hold},
+        {"unstable_fraction", stage.unstable_fraction}}},
+      {"moving_most", last_settle_ >= 0 ? nlohmann::json{{"key_point", moving_most_},
+                                                         {"mm_per_1000_steps", 1000 * last_rate_}}
+                                        : nlohmann::json()},
+      {"support_pressure_ratio", model_.support_ratio()}};
 }
 
 void StageRunner::run_all(PhaseTimer& timer) {
+  timer_ = &timer;
   for (; cursor_.index < scene_.stages.size() && !stopped_; ++cursor_.index) {
-    run(scene_.stages[cursor_.index], timer);
+    run(scene_.stages[cursor_.index]);
     if (stopped_) break;
     Cursor next;  // the next stage starts afresh
     next.index = cursor_.index;
@@ -350,10 +293,10 @@ RunVerdict StageRunner::verdict() const {
     if (r["converged"].is_boolean() && r["converged"].get<bool>()) return {};
     const std::string kind = r["kind"].get<std::string>();
     char msg[600];
-    if (kind == "grout") {
-      std::snprintf(msg, sizeof msg,
-                    "the last stage that stepped, 'grout', stops on its trigger, not on "
-                    "equilibrium: add an equilibrium stage after it");
+    const std::string other = stage_of(kind).not_at_equilibrium();
+    if (!other.empty()) {
+      std::snprintf(msg, sizeof msg, "the last stage that stepped, '%s', %s", kind.c_str(),
+                    other.c_str());
     } else {
       const nlohmann::json& m = r["moving_most"];
       std::snprintf(msg, sizeof msg,
@@ -388,9 +331,9 @@ nlohmann::json StageRunner::state() const {
           {"stage_held", cursor_.held},
           {"stage_rates", cursor_.rates},
           {"unstable", unstable_.message},
-          {"alpha", alpha_},
-          {"core_present", core_present_},
-          {"lining_installed", lining_installed_},
+          {"alpha", model_.alpha},
+          {"core_present", model_.core_present},
+          {"lining_installed", model_.lining_installed},
           {"report", report_},
           {"last_checkpoint", engine_.step_count()}};
 }
@@ -412,10 +355,10 @@ void StageRunner::restore(const nlohmann::json& s) {
   cursor_.rates = s.value("stage_rates", std::vector<double>{});
   const std::string unstable = s.value("unstable", std::string());
   if (!unstable.empty()) unstable_ = {"unstable", unstable};
-  alpha_ = s.at("alpha").get<double>();
-  core_present_ = s.at("core_present").get<bool>();
-  lining_installed_ = s.at("lining_installed").get<bool>();
-  out_.set_lining_installed(lining_installed_);
+  model_.alpha = s.at("alpha").get<double>();
+  model_.core_present = s.at("core_present").get<bool>();
+  model_.lining_installed = s.at("lining_installed").get<bool>();
+  out_.set_lining_installed(model_.lining_installed);
   report_ = s.at("report");
   last_checkpoint_ = s.at("last_checkpoint").get<long>();
 }

@@ -24,6 +24,7 @@
 #include "rockfdem/workflows/scene.hpp"
 #include "run_context.hpp"
 #include "run_outputs.hpp"
+#include "stages/stage.hpp"
 
 namespace rockfdem::workflows {
 
@@ -35,12 +36,6 @@ namespace rockfdem::workflows {
 struct RunVerdict {
   std::string status = "completed";
   std::string message;  ///< what a not-completed status rests on; empty when completed
-};
-
-/// Engine materials the support stages assign to crack elements.
-struct SupportMaterials {
-  int grout = -1;             ///< re-joins broken cracks (grout stage)
-  int lining_interface = -1;  ///< lining-rock crack elements at installation
 };
 
 class StageRunner {
@@ -57,11 +52,21 @@ class StageRunner {
   void run_all(PhaseTimer& timer);
   /// One entry per stage run: kind, steps, simulated time, dt, final ratio, converged.
   const nlohmann::json& report() const { return report_; }
-  bool core_present() const { return core_present_; }
+  bool core_present() const { return model_.core_present; }
   /// The run's status from the stages run so far.
   RunVerdict verdict() const;
   nlohmann::json state() const;
   void restore(const nlohmann::json& state);
+
+  // What the stages (stages/stage_<kind>.cpp) drive.
+  StageModel& model() { return model_; }
+  /// Steps in output chunks until the stage's criterion; returns converged.
+  /// With a `broken_target` > 0, until that many crack elements are broken.
+  bool step_until(const StageSpec& stage, long broken_target);
+  /// Whether an unstable opening ended the stages.
+  bool stopped() const { return stopped_; }
+  /// Simulated time since the stage began [s].
+  double stage_time() const { return model_.engine.time() - cursor_.t0; }
 
  private:
   struct Cursor {
@@ -78,13 +83,16 @@ class StageRunner {
   /// of the span, has been accelerating, or (for a stage that stops on its
   /// `criteria`) keeps moving as fast with the forces balanced; true when it did.
   bool unstable(const StageSpec& stage, bool criteria);
-  void run(const StageSpec& stage, PhaseTimer& timer);
-  nlohmann::json apply(const StageSpec& stage);
-  /// grout: steps until `trigger` crack elements are broken (within the
-  /// stage's step cap), then re-joins the broken ones with grout.
-  nlohmann::json grout(const StageSpec& stage, PhaseTimer& timer);
-  /// Steps in output chunks until the stage's criterion; returns converged.
-  bool step_until(const StageSpec& stage, PhaseTimer& timer, long broken_target);
+  void run(const StageSpec& stage);
+  /// Writes a checkpoint and a last history row, then throws Interrupted.
+  [[noreturn]] void interrupted(const StageSpec& stage);
+  /// One history row (and frame) of the stage.
+  void record_step(const StageSpec& stage);
+  /// Whether the stage's stop criterion holds at this output: `reached`
+  /// with a broken-count target, else ratio and settle held `hold` times.
+  bool criterion_met(const StageSpec& stage, long broken_target, bool reached);
+  /// A checkpoint when checkpoint_every steps have passed since the last.
+  void checkpoint_if_due();
   /// Monitors' displacements (ux, uy per monitor) [m].
   std::vector<double> monitor_displacements() const;
   /// The settle measure of the last output interval of `steps` steps: the
@@ -96,25 +104,16 @@ class StageRunner {
   /// after every step, so the trigger does not depend on the output
   /// interval or the mesh; *reached set).
   bool advance(long n, long broken_target, bool* reached);
-  void set_zone(int zone, bool active, fdem::ActivationReference ref);
-  /// Re-joins the crack elements between the lining and the rock with the
-  /// interface's bond, intact where they are; returns how many.
-  long bond_lining();
-  /// Core stiffness factor relative to the full rock (0 once removed).
-  double support_ratio() const { return core_present_ ? alpha_ : 0.0; }
+  /// The stage's report entry (what report() lists).
+  nlohmann::json report_entry(const StageSpec& stage, const nlohmann::json& changes,
+                              bool converged) const;
 
-  fdem::Engine& engine_;
-  const mesh::Mesh& mesh_;
-  const Scene& scene_;
-  const RunContext& ctx_;
+  StageModel model_;
+  fdem::Engine& engine_;  ///< model_.engine
   RunOutputs& out_;
+  const Scene& scene_;
   const std::vector<Monitor>& monitors_;
-  fdem::BoltPlan& bolts_;
-  SupportMaterials materials_;
-  double handoff_alpha_;
-  double alpha_;
-  bool core_present_;
-  bool lining_installed_;
+  PhaseTimer* timer_ = nullptr;  ///< run_all()'s
   Cursor cursor_;
   long checkpoint_every_ = 0;
   double last_settle_ = -1;   ///< settle_measure() of the stage's last interval; -1: none

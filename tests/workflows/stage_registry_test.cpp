@@ -1,0 +1,102 @@
+// A stage kind added outside the library, as a new stage is added: one
+// file (this one) with its registration line. The schema offers the kind,
+// the reader accepts it, and a tunnel run applies it and asks it when to
+// stop, between built-in stages. Its own executable, so the kind stays out
+// of the scene reference the other tests compare with docs/.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+
+#include "commands.hpp"
+#include "rockfdem/workflows/scene_schema.hpp"
+#include "stages/registry.hpp"
+#include "stages/stage.hpp"
+
+namespace rockfdem::workflows {
+namespace {
+
+int applied = 0;  // calls of Mark::apply
+int stepped = 0;  // calls of Mark::step
+
+// Records what the model looked like when it started; stops at once.
+class Mark : public Stage {
+ public:
+  const char* description() const override { return "test only"; }
+  nlohmann::json apply(StageModel& m, const StageSpec&) const override {
+    ++applied;
+    return {{"core_present", m.core_present}};
+  }
+  bool step(StageRunner&, const StageSpec&, nlohmann::json& changes) const override {
+    ++stepped;
+    changes["stepped"] = true;
+    return true;
+  }
+};
+
+const bool registered = (register_stage("mark", std::make_unique<Mark>()), true);
+
+const char* const kScene = R"(
+[model]
+kind = "tunnel"
+[domain]
+width = 40.0
+height = 40.0
+[tunnel]
+shape = "circular"
+radius = 3.0
+[mesh]
+size_near = 1.0
+size_far = 8.0
+[materials.rock]
+young = 5.0e9
+poisson = 0.25
+[insitu]
+sigma_h = 10e6
+sigma_v = 10e6
+[output]
+vtk = false
+plots = false
+every_steps = 50
+[[stages]]
+kind = "remove_core"
+max_steps = 0
+[[stages]]
+kind = "mark"
+[[stages]]
+kind = "equilibrium"
+max_steps = 100
+)";
+
+TEST(StageRegistry, a_registered_kind_runs_between_built_in_stages) {
+  ASSERT_TRUE(registered);
+  const KeySpec* kind = find_key("stages[].kind");
+  ASSERT_NE(kind, nullptr);
+  EXPECT_EQ(kind->choices.back(), "mark");
+  EXPECT_NE(kind->description.find("`equilibrium`, `mark` (test only)"), std::string::npos);
+
+  const Scene scene = parse_scene(kScene, "mark.toml", ".");
+  RunContext ctx;
+  ctx.output_dir = (std::filesystem::temp_directory_path() / "rockfdem-stage-registry").string();
+  ctx.quiet = true;
+  ctx.force = true;
+  std::filesystem::remove_all(ctx.output_dir);
+  EXPECT_EQ(run_tunnel(scene, ctx), 0);
+  EXPECT_EQ(applied, 1);
+  EXPECT_EQ(stepped, 1);
+
+  std::ifstream in(ctx.output_dir + "/summary.json");
+  const nlohmann::json stages = nlohmann::json::parse(in).at("fdem").at("stages");
+  ASSERT_EQ(stages.size(), 3u);
+  EXPECT_EQ(stages[1]["kind"], "mark");
+  // Applied after remove_core, and its step (not the equilibrium loop) ran.
+  EXPECT_EQ(stages[1]["changes"]["core_present"], false);
+  EXPECT_EQ(stages[1]["changes"]["stepped"], true);
+  EXPECT_EQ(stages[1]["steps"], 0);
+  EXPECT_GT(stages[2]["steps"].get<long>(), 0);
+  std::filesystem::remove_all(ctx.output_dir);
+}
+
+}  // namespace
+}  // namespace rockfdem::workflows

@@ -1,0 +1,20 @@
+#include "stages/stage.hpp"
+
+#include "stage_runner.hpp"
+
+namespace rockfdem::workflows {
+
+void StageModel::set_zone(int zone, bool active, fdem::ActivationReference ref) {
+  for (std::size_t t = 0; t < mesh.n_triangles(); ++t)
+    if (mesh.zone[t] == zone) engine.set_active(t, active, ref);
+}
+
+nlohmann::json Stage::apply(StageModel&, const StageSpec&) const {
+  return nlohmann::json::object();
+}
+
+bool Stage::step(StageRunner& runner, const StageSpec& spec, nlohmann::json&) const {
+  return runner.step_until(spec, 0);
+}
+
+}  // namespace rockfdem::workflows

@@ -1,0 +1,70 @@
+// One explicit construction stage of a tunnel run, as a registered piece:
+// each kind (the scene's stages[].kind) lives in stage_<kind>.cpp with its
+// change to the model (apply) and its stop criterion (step), and is listed
+// once in registry.cpp. StageRunner keeps the cursor, the outputs and the
+// checkpoints and tells the outputs; a stage only says what it changes in
+// the model and when it stops.
+#pragma once
+
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "rockfdem/fdem/bolt_install.hpp"
+#include "rockfdem/fdem/engine.hpp"
+#include "rockfdem/mesh/mesh.hpp"
+#include "rockfdem/workflows/scene.hpp"
+#include "run_context.hpp"
+
+namespace rockfdem::workflows {
+
+class StageRunner;
+
+/// Engine materials the support stages assign to crack elements.
+struct SupportMaterials {
+  int grout = -1;             ///< re-joins broken cracks (grout stage)
+  int lining_interface = -1;  ///< lining-rock crack elements at installation
+};
+
+/// What the stages change: the engine, and the construction state a
+/// checkpoint keeps (core stiffness, core and lining present).
+struct StageModel {
+  fdem::Engine& engine;
+  const mesh::Mesh& mesh;
+  const RunContext& ctx;
+  fdem::BoltPlan& bolts;
+  SupportMaterials materials;
+  double handoff_alpha;   ///< the core's stiffness factor in the engine at the hand-off
+  double alpha;           ///< the core's stiffness factor now
+  bool core_present;      ///< the core is not removed yet
+  bool lining_installed;  ///< the lining ring carries load as lining
+
+  /// (De)activates every triangle of `zone`.
+  void set_zone(int zone, bool active, fdem::ActivationReference ref);
+  /// Core stiffness factor relative to the full rock (0 once removed).
+  double support_ratio() const { return core_present ? alpha : 0.0; }
+};
+
+class Stage {
+ public:
+  virtual ~Stage() = default;
+  /// What the stage does, in a few words for the scene reference ("" for
+  /// a kind its name says all of).
+  virtual const char* description() const { return ""; }
+  /// The stage's change to the model at its start; returns what changed
+  /// (the summary's "changes" of the stage).
+  virtual nlohmann::json apply(StageModel& model, const StageSpec& spec) const;
+  /// Steps to the stage's stop criterion through `runner`; returns whether
+  /// the stage converged. A stage whose changes come after its steps
+  /// replaces `changes`. Default: the equilibrium criterion (ratio, settle
+  /// and hold).
+  virtual bool step(StageRunner& runner, const StageSpec& spec, nlohmann::json& changes) const;
+  /// Why a run whose last stage that stepped is this one is not at
+  /// equilibrium, when that is not the generic finding (a stage that stops
+  /// on something else); empty: the generic one.
+  virtual std::string not_at_equilibrium() const { return {}; }
+  /// Whether the stage installs support: the instruments' and plots'
+  /// origin of what the support measures.
+  virtual bool installs_support() const { return false; }
+};
+
+}  // namespace rockfdem::workflows

@@ -1,0 +1,27 @@
+// bolts: every bolt of the scene installed stress-free (the steel strips
+// and their grout bond made active in the rock as it is now).
+#include "stages/stage.hpp"
+
+namespace rockfdem::workflows {
+namespace {
+
+class Bolts : public Stage {
+ public:
+  const char* description() const override { return "install every bolt stress-free"; }
+
+  nlohmann::json apply(StageModel& m, const StageSpec&) const override {
+    const fdem::BoltInstallReport r = fdem::install_bolts(m.engine, m.bolts);
+    return {{"bolts", m.bolts.specs.size()},
+            {"bolt_triangles", r.triangles},
+            {"steel_cracks", r.steel_cracks},
+            {"grout_cracks", r.grout_cracks}};
+  }
+
+  bool installs_support() const override { return true; }
+};
+
+}  // namespace
+
+std::unique_ptr<const Stage> make_bolts_stage() { return std::make_unique<Bolts>(); }
+
+}  // namespace rockfdem::workflows

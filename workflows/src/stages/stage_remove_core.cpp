@@ -1,0 +1,23 @@
+// remove_core: the core excavated (its triangles leave the model, keeping
+// their reference), with a ring never installed, ground still to be dug.
+#include "stages/stage.hpp"
+
+namespace rockfdem::workflows {
+namespace {
+
+class RemoveCore : public Stage {
+ public:
+  nlohmann::json apply(StageModel& m, const StageSpec&) const override {
+    m.set_zone(mesh::kCore, false, fdem::ActivationReference::kKeep);
+    // A ring never installed is ground still to be excavated.
+    if (!m.lining_installed) m.set_zone(mesh::kLining, false, fdem::ActivationReference::kKeep);
+    m.core_present = false;
+    return nlohmann::json::object();
+  }
+};
+
+}  // namespace
+
+std::unique_ptr<const Stage> make_remove_core_stage() { return std::make_unique<RemoveCore>(); }
+
+}  // namespace rockfdem::workflows
