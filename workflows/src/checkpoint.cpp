@@ -472,53 +472,62 @@ void validate_run_state(const std::string& path, const nlohmann::json& run, cons
   RunStateCheck(path, scene).all(run);
 }
 
+namespace {
+
+[[noreturn]] void truncated(const std::string& path, std::uint64_t size, const std::string& what) {
+  refuse(path, "truncated or corrupt: " + what + ", but the file holds " + std::to_string(size) +
+                   " bytes; use the previous checkpoint");
+}
+
+// The fixed header (magic, version) and the declared section sizes, which
+// must add up to the file's size exactly before the body is read: a header
+// that claims more than the file holds (a sparse or damaged file) is
+// refused after 36 bytes.
+void check_header(int fd, const std::string& path, std::uint64_t size) {
+  constexpr std::uint64_t kFixed = sizeof kMagic + sizeof(std::uint32_t) + sizeof(std::uint64_t);
+  constexpr std::uint64_t kSize = sizeof(std::uint64_t);
+  char magic[sizeof kMagic];
+  if (size < sizeof kMagic + kSize || !read_at(fd, 0, magic, sizeof magic) ||
+      std::memcmp(magic, kMagic, sizeof kMagic) != 0)
+    refuse(path, "not a rockfdem checkpoint (no RFDMCKPT header)");
+  std::uint32_t version = 0;
+  if (!read_at(fd, sizeof kMagic, reinterpret_cast<char*>(&version), sizeof version))
+    truncated(path, size, "the header ends within the format version");
+  if (version != kCheckpointVersion)
+    refuse(path, "format version " + std::to_string(version) + "; this build reads version " +
+                     std::to_string(kCheckpointVersion));
+  std::uint64_t n_run = 0, n_engine = 0;
+  if (size < kFixed + kSize || !read_at(fd, kFixed, reinterpret_cast<char*>(&n_run), kSize))
+    truncated(path, size, "the header ends before the run state's size");
+  const std::uint64_t after_run_size = kFixed + kSize;
+  // Room for the run state, the engine state's size and the checksum.
+  if (n_run > size - after_run_size || size - after_run_size - n_run < 2 * kSize)
+    truncated(path, size, "the header declares a run state of " + std::to_string(n_run) + " bytes");
+  const std::uint64_t engine_size_at = after_run_size + n_run;
+  if (!read_at(fd, engine_size_at, reinterpret_cast<char*>(&n_engine), kSize))
+    truncated(path, size, "the file ends within the engine state's size");
+  const std::uint64_t room = size - engine_size_at - 2 * kSize;
+  if (n_engine != room)
+    truncated(path, size,
+              "the header declares a run state of " + std::to_string(n_run) +
+                  " bytes and an engine state of " + std::to_string(n_engine) + " bytes (" +
+                  (n_engine > room ? "more than" : "less than") + " the " + std::to_string(room) +
+                  " bytes left for it)");
+}
+
+}  // namespace
+
 Checkpoint read_checkpoint(const std::string& path, const Scene& scene) {
   // 1. A regular file, or nothing is read at all.
   std::uint64_t size = 0;
   const Fd fd(open_regular(path, size));
+  // 2. The header and the sections' sizes.
+  check_header(fd.get(), path, size);
 
-  // 2. The fixed header: magic, version, scene key, the run state's size.
-  constexpr std::uint64_t kFixed = sizeof kMagic + sizeof(std::uint32_t) + sizeof(std::uint64_t);
-  constexpr std::uint64_t kSize = sizeof(std::uint64_t);
-  char magic[sizeof kMagic];
-  if (size < sizeof kMagic + kSize || !read_at(fd.get(), 0, magic, sizeof magic) ||
-      std::memcmp(magic, kMagic, sizeof kMagic) != 0)
-    refuse(path, "not a rockfdem checkpoint (no RFDMCKPT header)");
-  const auto truncated = [&](const std::string& what) {
-    refuse(path, "truncated or corrupt: " + what + ", but the file holds " + std::to_string(size) +
-                     " bytes; use the previous checkpoint");
-  };
-  std::uint32_t version = 0;
-  if (!read_at(fd.get(), sizeof kMagic, reinterpret_cast<char*>(&version), sizeof version))
-    truncated("the header ends within the format version");
-  if (version != kCheckpointVersion)
-    refuse(path, "format version " + std::to_string(version) + "; this build reads version " +
-                     std::to_string(kCheckpointVersion));
-
-  // 3. The declared section sizes must add up to the file's size exactly
-  //    before the body is read: a header that claims more than the file
-  //    holds (a sparse or damaged file) is refused after 36 bytes.
-  std::uint64_t n_run = 0, n_engine = 0;
-  if (size < kFixed + kSize || !read_at(fd.get(), kFixed, reinterpret_cast<char*>(&n_run), kSize))
-    truncated("the header ends before the run state's size");
-  const std::uint64_t after_run_size = kFixed + kSize;
-  // Room for the run state, the engine state's size and the checksum.
-  if (n_run > size - after_run_size || size - after_run_size - n_run < 2 * kSize)
-    truncated("the header declares a run state of " + std::to_string(n_run) + " bytes");
-  const std::uint64_t engine_size_at = after_run_size + n_run;
-  if (!read_at(fd.get(), engine_size_at, reinterpret_cast<char*>(&n_engine), kSize))
-    truncated("the file ends within the engine state's size");
-  const std::uint64_t room = size - engine_size_at - 2 * kSize;
-  if (n_engine != room)
-    truncated("the header declares a run state of " + std::to_string(n_run) +
-              " bytes and an engine state of " + std::to_string(n_engine) + " bytes (" +
-              (n_engine > room ? "more than" : "less than") + " the " + std::to_string(room) +
-              " bytes left for it)");
-
-  // 4. The body, now known to be what the header says, and its checksum.
+  // 3. The body, now known to be what the header says, and its checksum.
   std::string bytes(size, '\0');
   if (!read_at(fd.get(), 0, bytes.data(), bytes.size()))
-    truncated("the file became shorter while being read");
+    truncated(path, size, "the file became shorter while being read");
   const std::size_t body = bytes.size() - sizeof(std::uint64_t);
   std::uint64_t stored;
   std::memcpy(&stored, bytes.data() + body, sizeof stored);

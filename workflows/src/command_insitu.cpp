@@ -50,6 +50,46 @@ void write_fields(const mesh::Mesh& m, const std::vector<insitu::InsituField>& f
   coupling::write_vtu(coupling::insitu_grid(m, fields.back()), output_path(dir, "insitu.vtu"));
 }
 
+// Each implicit stage's alpha, solver, size and timings.
+void record_stages(const std::vector<insitu::InsituField>& fields, nlohmann::json& insitu) {
+  insitu["alpha"] = nlohmann::json::array();
+  insitu["solver_iterations"] = nlohmann::json::array();
+  insitu["stages"] = nlohmann::json::array();
+  for (const insitu::InsituField& f : fields) {
+    insitu["alpha"].push_back(f.alpha);
+    insitu["solver_iterations"].push_back(f.iterations);
+    insitu["stages"].push_back({{"alpha", f.alpha},
+                                {"solver", f.solver},
+                                {"dofs", f.n_dofs},
+                                {"assembly_seconds", f.assembly_seconds},
+                                {"solve_seconds", f.solve_seconds},
+                                {"total_seconds", f.total_seconds},
+                                {"unbalanced_ratio", f.unbalanced_ratio}});
+  }
+}
+
+// The Kirsch comparison where the scene is a Kirsch case fully excavated,
+// else a note of why it was skipped.
+void compare_with_kirsch(const Scene& scene, const RunContext& ctx, const mesh::Mesh& m,
+                         const insitu::InsituField& last, RunRecord& summary) {
+  insitu::KirschCase k;
+  if (!kirsch_case(scene, &k) || last.alpha != 0.0) {
+    summary.skipped.push_back(
+        "Kirsch comparison: needs a circular opening without lining, uniform stress "
+        "and a last alpha of 0");
+    return;
+  }
+  const insitu::KirschComparison c = insitu::compare_kirsch(m, last, k);
+  auto& j = summary.figures()["insitu"];
+  j["kirsch_rel_l2"] = c.stress_rel_l2;
+  j["kirsch_wall_ur_rel_l2"] = c.wall_ur_rel_l2;
+  j["kirsch_triangles"] = c.n_triangles;
+  coupling::atomic_write_text(output_path(ctx.output_dir, "insitu_vs_analytic.csv"), kirsch_csv(c));
+  if (!ctx.quiet)
+    std::cout << "Kirsch: relative L2 stress error over a <= r <= 5a: " << c.stress_rel_l2 << " ("
+              << c.n_triangles << " triangles); wall u_r error " << c.wall_ur_rel_l2 << '\n';
+}
+
 }  // namespace
 
 int command_insitu(const Scene& scene, const RunContext& ctx) {
@@ -75,37 +115,8 @@ int command_insitu(const Scene& scene, const RunContext& ctx) {
   summary.note_turned_off(scene.output, "insitu.vtu, insitu.pvd, insitu_NN.vtu", false);
   summary.record_mesh(m, report);
   summary.record_insitu_state(fields.back());
-  auto& j = summary.figures();
-  j["insitu"]["alpha"] = nlohmann::json::array();
-  j["insitu"]["solver_iterations"] = nlohmann::json::array();
-  j["insitu"]["stages"] = nlohmann::json::array();
-  for (const insitu::InsituField& f : fields) {
-    j["insitu"]["alpha"].push_back(f.alpha);
-    j["insitu"]["solver_iterations"].push_back(f.iterations);
-    j["insitu"]["stages"].push_back({{"alpha", f.alpha},
-                                     {"solver", f.solver},
-                                     {"dofs", f.n_dofs},
-                                     {"assembly_seconds", f.assembly_seconds},
-                                     {"solve_seconds", f.solve_seconds},
-                                     {"total_seconds", f.total_seconds},
-                                     {"unbalanced_ratio", f.unbalanced_ratio}});
-  }
-  insitu::KirschCase k;
-  if (kirsch_case(scene, &k) && fields.back().alpha == 0.0) {
-    const insitu::KirschComparison c = insitu::compare_kirsch(m, fields.back(), k);
-    j["insitu"]["kirsch_rel_l2"] = c.stress_rel_l2;
-    j["insitu"]["kirsch_wall_ur_rel_l2"] = c.wall_ur_rel_l2;
-    j["insitu"]["kirsch_triangles"] = c.n_triangles;
-    coupling::atomic_write_text(output_path(ctx.output_dir, "insitu_vs_analytic.csv"),
-                                kirsch_csv(c));
-    if (!ctx.quiet)
-      std::cout << "Kirsch: relative L2 stress error over a <= r <= 5a: " << c.stress_rel_l2 << " ("
-                << c.n_triangles << " triangles); wall u_r error " << c.wall_ur_rel_l2 << '\n';
-  } else {
-    summary.skipped.push_back(
-        "Kirsch comparison: needs a circular opening without lining, uniform stress "
-        "and a last alpha of 0");
-  }
+  record_stages(fields, summary.figures()["insitu"]);
+  compare_with_kirsch(scene, ctx, m, fields.back(), summary);
   summary.skipped.push_back("fdem: `rockfdem insitu` runs the implicit stage only");
   summary.status = "completed";
   timer.stamp("output");

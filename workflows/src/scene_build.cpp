@@ -138,6 +138,22 @@ std::string outside_key(const Reader& r, const std::string& domain, const std::s
   return r.has(domain) || r.changed(domain) ? domain : tunnel;
 }
 
+// An arched opening's rise: at most span/2 and below the height.
+void read_arch_rise(const Reader& r, mesh::TunnelSpec& t) {
+  const double w = t.span, h = t.height;
+  r.require("tunnel.rise", "tunnel.shape is \"arched\"");
+  t.rise = r.number("tunnel.rise");
+  if (t.rise <= w / 2 && t.rise < h) return;
+  const char* other = t.rise > w / 2 ? "tunnel.span" : "tunnel.height";
+  if (r.blame_second("tunnel.rise", other))
+    r.fail(other, std::string("leaves the arch's rise (tunnel.rise = ") + num(t.rise) +
+                      " m) above " + (t.rise > w / 2 ? "span/2" : "the height") + "; allowed: " +
+                      (t.rise > w / 2 ? "at least " + num(2 * t.rise) : "above " + num(t.rise)) +
+                      " m");
+  r.fail("tunnel.rise",
+         "must be at most span/2 = " + num(w / 2) + " m and below the height " + num(h) + " m");
+}
+
 void read_tunnel(const Reader& r, mesh::MeshSpec& m) {
   mesh::TunnelSpec& t = m.tunnel;
   t.shape = tunnel_shape(r.text("tunnel.shape"));
@@ -159,21 +175,7 @@ void read_tunnel(const Reader& r, mesh::MeshSpec& m) {
       r.fail("tunnel.height", "a horseshoe's height must be at least span/2 (tunnel.span = " +
                                   num(w) + " m); allowed: at least " + num(w / 2) + " m");
     }
-    if (t.shape == mesh::TunnelShape::kArched) {
-      r.require("tunnel.rise", "tunnel.shape is \"arched\"");
-      t.rise = r.number("tunnel.rise");
-      if (t.rise > w / 2 || t.rise >= h) {
-        const char* other = t.rise > w / 2 ? "tunnel.span" : "tunnel.height";
-        if (r.blame_second("tunnel.rise", other))
-          r.fail(other,
-                 std::string("leaves the arch's rise (tunnel.rise = ") + num(t.rise) +
-                     " m) above " + (t.rise > w / 2 ? "span/2" : "the height") + "; allowed: " +
-                     (t.rise > w / 2 ? "at least " + num(2 * t.rise) : "above " + num(t.rise)) +
-                     " m");
-        r.fail("tunnel.rise", "must be at most span/2 = " + num(w / 2) +
-                                  " m and below the height " + num(h) + " m");
-      }
-    }
+    if (t.shape == mesh::TunnelShape::kArched) read_arch_rise(r, t);
   }
   m.domain.width = r.number("domain.width");
   m.domain.height = r.number("domain.height");
