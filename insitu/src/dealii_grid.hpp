@@ -13,6 +13,7 @@
 #include <deal.II/lac/vector.h>
 
 #include <cstdint>
+#include <string>
 #include <unordered_set>
 #include <vector>
 
@@ -33,6 +34,15 @@ inline bool loaded(const dealii::TriaIterator<dealii::TriaAccessor<1, 2, 2>>& fa
 }
 
 std::uint64_t edge_key(int a, int b);
+
+/// The bottom edge (faces tagged kBase) as a line load carrier: its length,
+/// centroid and second moment about the centroid [m, m, m^3]. Throws
+/// InputError (naming `who`) where the box has no such edge, since gravity
+/// needs one to carry the weight the excavation removes.
+struct BaseMoments {
+  double length = 0, x = 0, inertia = 0;
+};
+BaseMoments base_moments(const dealii::Triangulation<2>& triangulation, const std::string& who);
 
 /// Edges with exactly one triangle in the full mesh: the box.
 std::unordered_set<std::uint64_t> outer_edges(const mesh::Mesh& mesh);

@@ -477,24 +477,10 @@ void InsituProblem::balance_removed_weight(const double alpha) {
   }
   if (F == 0) return;
 
-  double length = 0, first = 0, second = 0;  // int 1, int x, int x^2 over the base
-  for (const auto& cell : triangulation_.active_cell_iterators())
-    for (const unsigned int f : cell->face_indices())
-      if (cell->face(f)->at_boundary() && cell->face(f)->user_index() == kBase) {
-        const double x0 = cell->face(f)->vertex(0)[0], x1 = cell->face(f)->vertex(1)[0];
-        const double l = std::abs(x1 - x0);
-        length += l;
-        first += l * 0.5 * (x0 + x1);
-        second += l * (x0 * x0 + x0 * x1 + x1 * x1) / 3;
-      }
-  if (!(length > 0))
-    throw InputError(
-        "insitu: with gravity the box needs a horizontal bottom edge: it carries the weight "
-        "the excavation removes (set gravity.unit_weight = 0 for this mesh)");
-  base_x_ = first / length;
-  const double inertia = second - length * base_x_ * base_x_;
-  base_q0_ = -F / length;
-  base_q1_ = inertia > 0 ? (-M + F * base_x_) / inertia : 0;
+  const grid::BaseMoments base = grid::base_moments(triangulation_, "insitu");
+  base_x_ = base.x;
+  base_q0_ = -F / base.length;
+  base_q1_ = base.inertia > 0 ? (-M + F * base_x_) / base.inertia : 0;
 }
 
 // ---------------------------------------------------------------------------
@@ -986,6 +972,28 @@ void solve_direct(const SparseMatrix<double>& matrix, Vector<double>& x,
         "that no zone has a zero modulus and that alpha > 0 leaves a stiff core or none");
   }
   direct.vmult(x, rhs);
+}
+
+BaseMoments base_moments(const dealii::Triangulation<2>& triangulation, const std::string& who) {
+  double length = 0, first = 0, second = 0;  // int 1, int x, int x^2 over the base
+  for (const auto& cell : triangulation.active_cell_iterators())
+    for (const unsigned int f : cell->face_indices())
+      if (cell->face(f)->at_boundary() && cell->face(f)->user_index() == kBase) {
+        const double x0 = cell->face(f)->vertex(0)[0], x1 = cell->face(f)->vertex(1)[0];
+        const double l = std::abs(x1 - x0);
+        length += l;
+        first += l * 0.5 * (x0 + x1);
+        second += l * (x0 * x0 + x0 * x1 + x1 * x1) / 3;
+      }
+  if (!(length > 0))
+    throw InputError(who +
+                     ": with gravity the box needs a horizontal bottom edge: it carries the weight "
+                     "the excavation removes (set gravity.unit_weight = 0 for this mesh)");
+  BaseMoments b;
+  b.length = length;
+  b.x = first / length;
+  b.inertia = second - length * b.x * b.x;
+  return b;
 }
 
 }  // namespace grid

@@ -340,23 +340,10 @@ void PlasticProblem::assemble_base_loads() {
   FEFaceValues<2> face_values(mapping_, fe_, face_quadrature_,
                               update_values | update_quadrature_points | update_JxW_values);
   const FEValuesExtractors::Vector displacement(0);
-  double length = 0, first = 0, second = 0;  // int 1, x, x^2 over the base
-  for (const auto& cell : triangulation_.active_cell_iterators())
-    for (const unsigned int f : cell->face_indices())
-      if (cell->face(f)->at_boundary() && cell->face(f)->user_index() == grid::kBase) {
-        const double x0 = cell->face(f)->vertex(0)[0], x1 = cell->face(f)->vertex(1)[0];
-        const double l = std::abs(x1 - x0);
-        length += l;
-        first += l * 0.5 * (x0 + x1);
-        second += l * (x0 * x0 + x0 * x1 + x1 * x1) / 3;
-      }
-  if (!(length > 0))
-    throw InputError(
-        "insitu mohr_coulomb: with gravity the box needs a horizontal bottom edge: it carries "
-        "the weight the excavation removes (set gravity.unit_weight = 0 for this mesh)");
-  base_length_ = length;
-  base_x_ = first / length;
-  base_inertia_ = second - length * base_x_ * base_x_;
+  const grid::BaseMoments base = grid::base_moments(triangulation_, "insitu mohr_coulomb");
+  base_length_ = base.length;
+  base_x_ = base.x;
+  base_inertia_ = base.inertia;
   base_uniform_.reinit(dof_handler_.n_dofs());
   base_linear_.reinit(dof_handler_.n_dofs());
   std::vector<types::global_dof_index> dofs(fe_.n_dofs_per_cell());
