@@ -1,7 +1,7 @@
 // PNG plots: with a display they render a picture of the asked size that is
 // not blank; without one they say why and write nothing. CTest runs this
 // binary under `xvfb-run -a` when that exists (tests/coupling/CMakeLists.txt).
-#include "rockfdem/coupling/plot.hpp"
+#include "rockfdem/plots/plot.hpp"
 
 #include <gtest/gtest.h>
 #include <vtkImageData.h>
@@ -15,10 +15,12 @@
 
 #include "temp_dir.hpp"
 
-namespace rockfdem::coupling {
+namespace rockfdem::plots {
 namespace {
+using coupling::scalar_array;
+using coupling::tensor_array;
 
-using testing::TempDir;
+using coupling::testing::TempDir;
 
 struct Picture {
   int width = 0, height = 0;
@@ -308,4 +310,4 @@ TEST(Plot, mesh_png_of_an_uncracked_int_field_renders) {
 }
 
 }  // namespace
-}  // namespace rockfdem::coupling
+}  // namespace rockfdem::plots

@@ -9,7 +9,7 @@
 #include <string>
 
 #include "cli_runner.hpp"
-#include "outer_boundary.hpp"
+#include "outputs/outer_boundary.hpp"
 #include "rockfdem/error.hpp"
 
 namespace fs = std::filesystem;

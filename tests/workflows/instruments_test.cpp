@@ -10,9 +10,9 @@
 #include <map>
 #include <string>
 
-#include "broken_zone.hpp"
-#include "material_point.hpp"
-#include "monitors.hpp"
+#include "outputs/broken_zone.hpp"
+#include "outputs/material_point.hpp"
+#include "outputs/monitors.hpp"
 #include "rockfdem/mesh/build.hpp"
 
 namespace rockfdem::workflows {

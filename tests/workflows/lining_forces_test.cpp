@@ -3,7 +3,7 @@
 // thrust p a (equilibrium of half the ring), a linear hoop stress the moment
 // k t^3 / 12, a uniform shear stress the shear tau t; and the plain section's
 // safety factor against its closed form.
-#include "lining_forces.hpp"
+#include "outputs/lining_forces.hpp"
 
 #include <gtest/gtest.h>
 

@@ -4,7 +4,7 @@
 // user's .msh with its opening away from the origin, and the error for a
 // .msh without an opening. Built from monitors.cpp, mesh/ and fdem/ only
 // (no deal.II), so it compiles in seconds.
-#include "monitors.hpp"
+#include "outputs/monitors.hpp"
 
 #include <gtest/gtest.h>
 #include <unistd.h>

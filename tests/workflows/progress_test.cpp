@@ -1,6 +1,6 @@
 // Progress lines on stderr: at most one a second while a stage runs, and
 // its last line once.
-#include "progress.hpp"
+#include "run/progress.hpp"
 
 #include <gtest/gtest.h>
 

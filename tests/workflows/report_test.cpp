@@ -12,7 +12,7 @@
 #include <string>
 
 #include "cli_runner.hpp"
-#include "run_timeline.hpp"
+#include "outputs/run_timeline.hpp"
 
 namespace fs = std::filesystem;
 using namespace rockfdem::test;

@@ -20,10 +20,10 @@
 #include <thread>
 #include <vector>
 
-#include "checkpoint.hpp"
 #include "cli_runner.hpp"
 #include "rockfdem/error.hpp"
 #include "rockfdem/workflows/scene.hpp"
+#include "run/checkpoint.hpp"
 
 namespace fs = std::filesystem;
 using namespace rockfdem::test;

@@ -14,12 +14,12 @@
 #include <thread>
 #include <vector>
 
-#include "checkpoint.hpp"
 #include "cli_runner.hpp"
-#include "platen_load.hpp"
 #include "rockfdem/mesh/build.hpp"
 #include "rockfdem/workflows/scene.hpp"
-#include "stage_inputs.hpp"
+#include "run/checkpoint.hpp"
+#include "stages/platen_load.hpp"
+#include "stages/stage_inputs.hpp"
 
 namespace fs = std::filesystem;
 using namespace rockfdem::test;

@@ -9,7 +9,7 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 
-#include "commands.hpp"
+#include "commands/commands.hpp"
 #include "rockfdem/workflows/scene_schema.hpp"
 #include "stages/registry.hpp"
 #include "stages/stage.hpp"

@@ -4,10 +4,10 @@
 // after SIGINT/SIGTERM (interrupt.hpp).
 #include <iostream>
 
-#include "interrupt.hpp"
 #include "rockfdem/error.hpp"
 #include "rockfdem/insitu/insitu.hpp"
 #include "rockfdem/workflows/cli.hpp"
+#include "run/interrupt.hpp"
 #include "study/register_study.hpp"
 
 int main(int argc, char** argv) {

@@ -1,6 +1,6 @@
 #include "stages/stage.hpp"
 
-#include "stage_runner.hpp"
+#include "run/stage_runner.hpp"
 
 namespace rockfdem::workflows {
 

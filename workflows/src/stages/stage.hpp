@@ -13,7 +13,7 @@
 #include "rockfdem/fdem/engine.hpp"
 #include "rockfdem/mesh/mesh.hpp"
 #include "rockfdem/workflows/scene.hpp"
-#include "run_context.hpp"
+#include "run/run_context.hpp"
 
 namespace rockfdem::workflows {
 

@@ -2,10 +2,10 @@
 // stage's time has passed), then re-joins the broken ones with grout and
 // lists where (grouted_cracks.csv). It stops on its trigger, so a run
 // ending on it is not at equilibrium.
-#include "output_dir.hpp"
 #include "rockfdem/coupling/atomic_file.hpp"
 #include "rockfdem/fdem/bolt_grouting.hpp"
-#include "stage_runner.hpp"
+#include "run/output_dir.hpp"
+#include "run/stage_runner.hpp"
 #include "stages/stage.hpp"
 
 namespace rockfdem::workflows {

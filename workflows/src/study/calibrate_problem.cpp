@@ -1,4 +1,4 @@
-#include "calibrate_problem.hpp"
+#include "study/calibrate_problem.hpp"
 
 #include <toml++/toml.h>
 
@@ -7,7 +7,7 @@
 #include <limits>
 #include <optional>
 
-#include "study_ranks.hpp"
+#include "study/study_ranks.hpp"
 
 namespace rockfdem::workflows::study {
 

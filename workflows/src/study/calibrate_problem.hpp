@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "rockfdem/workflows/cli.hpp"
-#include "study_run.hpp"
+#include "study/study_run.hpp"
 
 namespace rockfdem::workflows::study {
 

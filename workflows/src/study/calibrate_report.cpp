@@ -1,4 +1,4 @@
-#include "calibrate_report.hpp"
+#include "study/calibrate_report.hpp"
 
 #include <toml++/toml.h>
 
@@ -8,11 +8,11 @@
 #include <iostream>
 #include <sstream>
 
-#include "../output_dir.hpp"
 #include "rockfdem/coupling/atomic_file.hpp"
-#include "study_inputs.hpp"
-#include "study_ranks.hpp"
-#include "study_table.hpp"
+#include "run/output_dir.hpp"
+#include "study/study_inputs.hpp"
+#include "study/study_ranks.hpp"
+#include "study/study_table.hpp"
 
 namespace fs = std::filesystem;
 
@@ -42,7 +42,7 @@ std::string best_scene_text(const CommandLine& cli, const Evaluation& best) {
 }
 
 void plot_misfit(const CalibrationProblem& problem, const std::string& path) {
-  coupling::PlotSeries all{"each run", {}, {}}, best{"best so far", {}, {}};
+  plots::PlotSeries all{"each run", {}, {}}, best{"best so far", {}, {}};
   double lowest = INFINITY;
   for (std::size_t i = 0; i < problem.record().size(); ++i) {
     const double f = std::max(problem.record()[i].objective, 1e-300);

@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "calibrate_problem.hpp"
+#include "study/calibrate_problem.hpp"
 
 namespace rockfdem::workflows::study {
 

@@ -10,14 +10,14 @@
 #include <iostream>
 #include <nlopt.hpp>
 
-#include "../output_dir.hpp"
-#include "../scene_reader.hpp"
-#include "calibrate_problem.hpp"
-#include "calibrate_report.hpp"
 #include "rockfdem/error.hpp"
 #include "rockfdem/workflows/scene_schema.hpp"
-#include "study_commands.hpp"
-#include "study_ranks.hpp"
+#include "run/output_dir.hpp"
+#include "scene/scene_reader.hpp"
+#include "study/calibrate_problem.hpp"
+#include "study/calibrate_report.hpp"
+#include "study/study_commands.hpp"
+#include "study/study_ranks.hpp"
 
 namespace rockfdem::workflows::study {
 namespace {

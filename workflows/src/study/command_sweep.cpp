@@ -11,13 +11,13 @@
 #include <map>
 #include <optional>
 
-#include "../output_dir.hpp"
 #include "rockfdem/error.hpp"
-#include "study_commands.hpp"
-#include "study_figures.hpp"
-#include "study_ranks.hpp"
-#include "study_run.hpp"
-#include "study_table.hpp"
+#include "run/output_dir.hpp"
+#include "study/study_commands.hpp"
+#include "study/study_figures.hpp"
+#include "study/study_ranks.hpp"
+#include "study/study_run.hpp"
+#include "study/study_table.hpp"
 
 namespace rockfdem::workflows::study {
 namespace {
@@ -131,10 +131,10 @@ std::vector<double> abscissae(const VariedKey& first, const std::vector<Variant>
 
 // One curve per combination of the other keys (all in one, sorted by x,
 // where those are too many: a Latin hypercube).
-std::vector<coupling::PlotSeries> curves(const std::vector<Variant>& variants,
-                                         const std::vector<VariantResult>& results,
-                                         const std::vector<double>& x, const std::string& column) {
-  std::map<std::string, coupling::PlotSeries> groups;
+std::vector<plots::PlotSeries> curves(const std::vector<Variant>& variants,
+                                      const std::vector<VariantResult>& results,
+                                      const std::vector<double>& x, const std::string& column) {
+  std::map<std::string, plots::PlotSeries> groups;
   std::vector<std::size_t> order(variants.size());
   for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
   std::stable_sort(order.begin(), order.end(),
@@ -146,15 +146,15 @@ std::vector<coupling::PlotSeries> curves(const std::vector<Variant>& variants,
               variants[i].settings[k].second;
     const nlohmann::json& y = results[i].figures.value(column, nlohmann::json());
     if (!y.is_number()) continue;
-    coupling::PlotSeries& s = groups[name.empty() ? column : name];
+    plots::PlotSeries& s = groups[name.empty() ? column : name];
     s.name = name.empty() ? column : name;
     s.x.push_back(x[i]);
     s.y.push_back(y.get<double>());
   }
-  std::vector<coupling::PlotSeries> series;
+  std::vector<plots::PlotSeries> series;
   for (auto& [name, s] : groups) series.push_back(s);
   if (series.size() <= kMostSeries) return series;
-  coupling::PlotSeries all{column + " (all variants)", {}, {}};
+  plots::PlotSeries all{column + " (all variants)", {}, {}};
   for (std::size_t i : order)
     if (results[i].figures.value(column, nlohmann::json()).is_number()) {
       all.x.push_back(x[i]);

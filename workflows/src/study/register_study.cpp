@@ -1,7 +1,7 @@
-#include "register_study.hpp"
+#include "study/register_study.hpp"
 
-#include "../commands.hpp"
-#include "study_commands.hpp"
+#include "commands/commands.hpp"
+#include "study/study_commands.hpp"
 
 namespace rockfdem::workflows::study {
 

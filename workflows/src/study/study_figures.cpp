@@ -1,4 +1,4 @@
-#include "study_figures.hpp"
+#include "study/study_figures.hpp"
 
 namespace rockfdem::workflows::study {
 namespace {

@@ -1,14 +1,14 @@
-#include "study_inputs.hpp"
+#include "study/study_inputs.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <set>
 
-#include "../scene_reader.hpp"
 #include "rockfdem/error.hpp"
 #include "rockfdem/workflows/scene_schema.hpp"
-#include "study_figures.hpp"
+#include "scene/scene_reader.hpp"
+#include "study/study_figures.hpp"
 
 namespace rockfdem::workflows::study {
 namespace {

@@ -1,4 +1,4 @@
-#include "study_ranks.hpp"
+#include "study/study_ranks.hpp"
 
 #include <mpi.h>
 
@@ -7,8 +7,8 @@
 #include <thread>
 #include <utility>
 
-#include "../interrupt.hpp"
 #include "rockfdem/error.hpp"
+#include "run/interrupt.hpp"
 
 namespace rockfdem::workflows::study {
 namespace {

@@ -1,4 +1,4 @@
-#include "study_run.hpp"
+#include "study/study_run.hpp"
 
 #include <chrono>
 #include <filesystem>
@@ -6,11 +6,11 @@
 #include <functional>
 #include <optional>
 
-#include "../commands.hpp"
-#include "../output_dir.hpp"
+#include "commands/commands.hpp"
 #include "rockfdem/coupling/atomic_file.hpp"
 #include "rockfdem/error.hpp"
-#include "study_figures.hpp"
+#include "run/output_dir.hpp"
+#include "study/study_figures.hpp"
 
 namespace fs = std::filesystem;
 

@@ -8,7 +8,7 @@
 #include <string>
 
 #include "rockfdem/workflows/cli.hpp"
-#include "study_variants.hpp"
+#include "study/study_variants.hpp"
 
 namespace rockfdem::workflows::study {
 

@@ -1,9 +1,9 @@
-#include "study_table.hpp"
+#include "study/study_table.hpp"
 
 #include <stdexcept>
 
 #include "rockfdem/coupling/atomic_file.hpp"
-#include "study_variants.hpp"
+#include "study/study_variants.hpp"
 
 namespace rockfdem::workflows::study {
 namespace {
@@ -43,10 +43,10 @@ void Table::add(const std::vector<nlohmann::json>& row) {
 void Table::write(const std::string& path) const { coupling::atomic_write_text(path, text_); }
 
 std::string draw(const std::string& path, const std::string& title, const std::string& x_label,
-                 const std::string& y_label, const std::vector<coupling::PlotSeries>& series) {
+                 const std::string& y_label, const std::vector<plots::PlotSeries>& series) {
   std::string why;
   if (series.empty()) return "no finished variant has the figure";
-  if (!coupling::plot_xy_png(title, x_label, y_label, series, path, 900, 600, &why)) return why;
+  if (!plots::plot_xy_png(title, x_label, y_label, series, path, 900, 600, &why)) return why;
   return "";
 }
 

@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "rockfdem/coupling/plot.hpp"
+#include "rockfdem/plots/plot.hpp"
 
 namespace rockfdem::workflows::study {
 
@@ -27,6 +27,6 @@ class Table {
 /// Draws a line plot to `path`; returns "" or why it was not drawn (no
 /// display: run under xvfb-run).
 std::string draw(const std::string& path, const std::string& title, const std::string& x_label,
-                 const std::string& y_label, const std::vector<coupling::PlotSeries>& series);
+                 const std::string& y_label, const std::vector<plots::PlotSeries>& series);
 
 }  // namespace rockfdem::workflows::study

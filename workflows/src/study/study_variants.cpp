@@ -1,4 +1,4 @@
-#include "study_variants.hpp"
+#include "study/study_variants.hpp"
 
 #include <cctype>
 #include <cstdio>
@@ -7,7 +7,7 @@
 #include <random>
 #include <set>
 
-#include "../scene_reader.hpp"
+#include "scene/scene_reader.hpp"
 
 namespace rockfdem::workflows::study {
 namespace {

@@ -6,7 +6,7 @@
 #include <utility>
 #include <vector>
 
-#include "study_inputs.hpp"
+#include "study/study_inputs.hpp"
 
 namespace rockfdem::workflows::study {
 

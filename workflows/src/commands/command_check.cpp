@@ -1,0 +1,350 @@
+// `rockfdem check SCENE`: the scene is valid (validation already ran), so
+// print the figures a user wants before committing to a run: estimated
+// triangle and crack-element counts, memory, run time and the stable time
+// step. No meshing (a .msh scene's file is read: its counts are exact, and a
+// bad file is refused here), nothing written. Every command also refuses,
+// before meshing, a scene whose memory estimate exceeds this machine's memory.
+#include <unistd.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <iostream>
+
+#include "commands/check_probe.hpp"
+#include "commands/commands.hpp"
+#include "outputs/broken_zone.hpp"
+#include "rockfdem/error.hpp"
+#include "rockfdem/mesh/build.hpp"
+#include "rockfdem/mesh/msh_io.hpp"
+#include "rockfdem/mesh/outline.hpp"
+#include "stages/stage_inputs.hpp"
+
+namespace rockfdem::workflows {
+namespace {
+
+struct Estimate {
+  double triangles = 0;
+  double fracture_triangles = 0;
+  double min_altitude = 0;  ///< [m]; 0: not known before meshing
+  bool exact = false;       ///< counted from a .msh file
+};
+
+// Area of an equilateral triangle of edge h, the element gmsh aims for.
+double triangle_area(double h) { return std::sqrt(3.0) / 4 * h * h; }
+
+// Integrates 1 / (triangle area at the local size) over the domain on a
+// sampling grid, with the size graded linearly from the tunnel outwards as
+// the mesher does.
+Estimate estimate_tunnel(const Scene& s) {
+  const mesh::MeshSpec& m = s.mesh;
+  const mesh::Outline outline = mesh::tunnel_outline(m.tunnel);
+  const double grading = m.size.grading_distance > 0
+                             ? m.size.grading_distance
+                             : 0.5 * std::min(m.domain.width, m.domain.height);
+  const int n = 400;
+  const double dx = m.domain.width / n, dy = m.domain.height / n;
+  Estimate e;
+  for (int i = 0; i < n; ++i) {
+    for (int j = 0; j < n; ++j) {
+      const double x = m.domain.center_x - m.domain.width / 2 + (i + 0.5) * dx;
+      const double y = m.domain.center_y - m.domain.height / 2 + (j + 0.5) * dy;
+      if (mesh::inside_outline(outline, x, y)) {
+        e.triangles += dx * dy / triangle_area(m.size.size_near);
+        continue;
+      }
+      const double d = mesh::distance_to_outline(outline, x, y);
+      const double beyond = std::max(0.0, d - m.tunnel.fracture_zone);
+      const double h =
+          m.size.size_near + (m.size.size_far - m.size.size_near) * std::min(1.0, beyond / grading);
+      const double count = dx * dy / triangle_area(h);
+      e.triangles += count;
+      if (d <= m.tunnel.fracture_zone) e.fracture_triangles += count;
+    }
+  }
+  return e;
+}
+
+// The in-situ traction loads the box on its four sides: a mesh without one
+// of them cannot carry it.
+void require_box_sides(const Scene& s, const mesh::Mesh& m) {
+  for (mesh::EdgeTag tag : {mesh::kBottom, mesh::kRight, mesh::kTop, mesh::kLeft})
+    if (std::none_of(m.edges.begin(), m.edges.end(),
+                     [tag](const mesh::TaggedEdge& e) { return e.tag == tag; }))
+      throw InputError(s.source + ": key 'msh.edges': no edge of " + s.mesh.msh.path +
+                       " is tagged \"" + mesh::edge_tag_name(tag) +
+                       "\", and the in-situ stress loads the box on "
+                       "its bottom, right, top and left sides; allowed: a table mapping the "
+                       "file's 1D physical groups to those four tags (and \"excavation\", "
+                       "\"lining_inner\"), e.g. { Floor = \"bottom\" }");
+}
+
+// A user's mesh is read (cheap next to a run): its counts, and a bad file,
+// group name or fracture group refused (InputError) before anything is written.
+Estimate read_msh_figures(const Scene& s) {
+  mesh::MeshReport report;
+  const mesh::Mesh m = mesh::build_mesh(s.mesh, &report);
+  require_box_sides(s, m);
+  Estimate e;
+  e.triangles = double(m.n_triangles());
+  e.fracture_triangles = double(std::count(m.fracture.begin(), m.fracture.end(), 1));
+  e.min_altitude = report.min_altitude;
+  e.exact = true;
+  return e;
+}
+
+Estimate estimate(const Scene& s) {
+  const mesh::MeshSpec& m = s.mesh;
+  const double a = triangle_area(m.size.size_near);
+  switch (m.kind) {
+    case mesh::ModelKind::kTunnel:
+      return estimate_tunnel(s);
+    case mesh::ModelKind::kUcs: {
+      const double t = m.specimen.width * m.specimen.height / a;
+      return {t, t};
+    }
+    case mesh::ModelKind::kBrazilian: {
+      const double t = M_PI * m.specimen.diameter * m.specimen.diameter / 4 / a;
+      return {t, t};
+    }
+    case mesh::ModelKind::kMshFile:
+      return read_msh_figures(s);
+  }
+  return {};
+}
+
+// Peak memory of a run: the libraries' baseline plus, per triangle, the
+// mesh and the implicit stage (measured 0.65 kB per triangle of peak RSS
+// growth between 107k and 390k triangles, `rockfdem insitu`) and the engine
+// (1100 B per triangle, below), with the implicit fields the outputs keep;
+// and each alpha's field (stress, activity, displacements: 37 B per
+// triangle measured, 1000 alphas on the default tunnel's 8,798 triangles
+// peaking at 582 MB). A 2M-triangle .msh peaked at 2,520 B per triangle
+// above the baseline, 26% above this sum: the bound shown adds kMemoryMargin.
+constexpr double kBaseBytes = 256.0 * 1048576;
+constexpr double kBytesPerTriangle = 650 + 1100 + 250;
+constexpr double kBytesPerAlphaTriangle = 40;
+constexpr double kMemoryMargin = 1.5;
+
+double peak_bytes(const Scene& s, const Estimate& e) {
+  return kBaseBytes +
+         (kBytesPerTriangle + kBytesPerAlphaTriangle * double(s.insitu.alpha.size())) * e.triangles;
+}
+
+double machine_bytes() { return double(sysconf(_SC_PHYS_PAGES)) * double(sysconf(_SC_PAGE_SIZE)); }
+
+// Explicit steps at most: the step caps of the stages (tunnels) or the
+// specimen's step count.
+bool staged(const Scene& s) {
+  return s.mesh.kind == mesh::ModelKind::kTunnel || s.mesh.kind == mesh::ModelKind::kMshFile;
+}
+
+double explicit_steps(const Scene& s) {
+  if (!staged(s)) return double(s.engine.steps);
+  double n = s.stages.empty() ? 0 : 1;  // the hand-off step
+  for (const StageSpec& st : s.stages) n += double(st.max_steps);
+  return n;
+}
+
+// Serial engine throughput measured on the 2-core development machine
+// (docs/benchmarks.md, "A vector kernel for the narrow phase"): 11 M
+// triangle-steps/s for intact models (bench_ucs: 15 M), 8 M for a
+// fracturing model with contact (the default tunnel: 10.4 M on one idle
+// thread; a confined specimen after heavy fracture, every triangle
+// fracturing: 5.3 M); 0.9 parallel efficiency at 2 threads; mesh and
+// implicit stage about 90 us per triangle.
+// Each alpha is one implicit solve and its output: 12 us per triangle
+// (1000 alphas on the default tunnel's 8,798 triangles took 107 s). The
+// bound shown is kTimeMargin times this sum: refined meshes ran up to 2.2
+// times the plain figures (size_near 0.05).
+constexpr double kAlphaSecondsPerTriangle = 12e-6;
+constexpr double kTimeMargin = 2.5;
+
+double run_seconds(const Scene& s, const Estimate& e, int threads) {
+  const double serial = e.fracture_triangles > 0 && s.engine.contact ? 8e6 : 11e6;
+  const double rate = serial * std::max(1, threads) * (threads > 1 ? 0.9 : 1.0);
+  const double implicit = kAlphaSecondsPerTriangle * double(s.insitu.alpha.size()) * e.triangles;
+  return 90e-6 * e.triangles + implicit + explicit_steps(s) * e.triangles / rate;
+}
+
+// Plane-strain P-wave speed of the rock.
+double p_wave_speed(const MaterialSpec& r, bool plane_stress) {
+  const double nu = r.poisson;
+  const double modulus =
+      plane_stress ? r.young / (1 - nu * nu) : r.young * (1 - nu) / ((1 + nu) * (1 - 2 * nu));
+  return std::sqrt(modulus / r.density);
+}
+
+}  // namespace
+
+void refuse_if_too_large(const Scene& scene) {
+  const Estimate e = estimate(scene);
+  const double need = peak_bytes(scene, e), have = machine_bytes();
+  if (need <= have) return;
+  char msg[600];
+  if (e.exact)
+    std::snprintf(msg, sizeof msg,
+                  "%s: key 'msh.file' = \"%s\": the mesh has %.0f triangles and would need "
+                  "about %.1f GiB, more than this machine's %.1f GiB; give a coarser mesh",
+                  scene.source.c_str(), scene.mesh.msh.path.c_str(), e.triangles,
+                  need / 1073741824.0, have / 1073741824.0);
+  else
+    std::snprintf(msg, sizeof msg,
+                  "%s: key 'mesh.size_near' = %g: the model would have about %.3g triangles and "
+                  "need about %.1f GiB, more than this machine's %.1f GiB; coarsen "
+                  "mesh.size_near or shrink the domain",
+                  scene.source.c_str(), scene.mesh.size.size_near, e.triangles, need / 1073741824.0,
+                  have / 1073741824.0);
+  throw InputError(msg);
+}
+
+namespace {
+
+// The probe's figures into bounds: the explicit stages' cost per step
+// measured here, raised for fracture (the probe's unloaded model does not
+// fracture; after fracture a step costs more with the touching pairs: a
+// confined specimen fell to 0.24 of its intact throughput, docs/
+// benchmarks.md) by kFractureCost on the share of triangles that may
+// fracture, plus meshing as measured and the implicit stage from its
+// documented constants; memory as measured after meshing and building
+// the engine, plus the implicit stage's share.
+constexpr double kFractureCost = 4.0;
+// Fixed and output costs the probe does not see: the process's start (MPI
+// and library initialisation, scene reading: 0.9 s measured), and writing
+// each output step's frame and history row (2 us per triangle allowed).
+constexpr double kStartSeconds = 2.0;
+constexpr double kOutputSecondsPerTriangle = 2e-6;
+constexpr double kProbeTimeMargin = 1.5;
+constexpr double kProbeMemoryMargin = 1.25;
+constexpr double kImplicitBytesPerTriangle = 650 + 250;
+
+double fracture_factor(const Probe& p) {
+  return 1 + (kFractureCost - 1) * double(p.fracture_triangles) /
+                 double(std::max<std::size_t>(p.triangles, 1));
+}
+
+// Output steps at most: each stage's (and its last), or the specimen's.
+double output_steps(const Scene& s) {
+  if (!staged(s)) return double(s.engine.steps) / std::max(1, s.output.every_steps) + 1;
+  double n = 1;  // the hand-off
+  for (const StageSpec& st : s.stages) n += double(st.max_steps) / std::max(1, st.every_steps) + 1;
+  return n;
+}
+
+double probe_seconds(const Scene& s, const Probe& p) {
+  const double tri = double(p.triangles);
+  const double implicit =
+      staged(s) ? 90e-6 * tri + kAlphaSecondsPerTriangle * tri * double(s.insitu.alpha.size())
+                : 0.0;
+  const double fracture = fracture_factor(p);
+  const double outputs = output_steps(s) * kOutputSecondsPerTriangle * tri;
+  return kStartSeconds + p.mesh_seconds + implicit + outputs +
+         explicit_steps(s) * p.seconds_per_step * fracture;
+}
+
+double probe_bytes(const Scene& s, const Probe& p) {
+  return p.rss_bytes +
+         (kImplicitBytesPerTriangle + kBytesPerAlphaTriangle * double(s.insitu.alpha.size())) *
+             double(p.triangles);
+}
+
+// What the run's time grows with: implicit solves and explicit steps.
+void print_step_counts(const Scene& scene) {
+  std::printf("  implicit solves (alphas):   %zu\n", scene.insitu.alpha.size());
+  std::printf("  explicit steps (at most):   %.0f\n", explicit_steps(scene));
+}
+
+void print_probe(const Scene& scene, const Probe& p) {
+  std::printf("  triangles (meshed):         %zu\n", p.triangles);
+  std::printf("  smallest altitude:          %.3g m\n", p.min_altitude);
+  std::printf(
+      "  peak memory (bound):        %.1f MiB at most, of %.1f MiB on this machine (bound: "
+      "%.1f MiB measured after meshing and building the engine + %.0f B per triangle + %.0f "
+      "B per triangle per alpha for the implicit stage, x %.2f margin)\n",
+      kProbeMemoryMargin * probe_bytes(scene, p) / 1048576.0, machine_bytes() / 1048576.0,
+      p.rss_bytes / 1048576.0, kImplicitBytesPerTriangle, kBytesPerAlphaTriangle,
+      kProbeMemoryMargin);
+  print_step_counts(scene);
+  std::printf(
+      "  run time (bound):           %.0f s at most on %d thread%s (bound: %.3g ms per step "
+      "measured here over %ld steps, x %.2f for fracture, x the steps, + meshing %.2f s + the "
+      "implicit stage + start-up and outputs, x %.1f margin)\n",
+      kProbeTimeMargin * probe_seconds(scene, p), p.threads, p.threads == 1 ? "" : "s",
+      1e3 * p.seconds_per_step, p.steps, fracture_factor(p), p.mesh_seconds, kProbeTimeMargin);
+  std::printf("  stable time step:           %.4g s on true masses (this mesh, its penalties)\n",
+              scene.engine.dt_safety * p.critical_true);
+  std::printf("  time step at the start:     %.8g s%s\n", p.dt_start,
+              scene.engine.mass_scaling ? " (mass-scaled, quasi-static pseudo-time)" : "");
+  if (staged(scene))
+    std::printf(
+        "  time step in the stages:    %.8g s at most (with their damping; a lining, bolts or "
+        "grout may lower it)\n",
+        p.dt_stages);
+}
+
+// Without a probe (a model above kProbeTriangleLimit): the figures from
+// check's estimate and the documented constants above.
+void print_constants(const Scene& scene, const Estimate& e, double cp, int threads) {
+  const MaterialSpec& rock = scene.materials.at(mesh::kRock);
+  // A gmsh Frontal-Delaunay mesh's smallest altitude is about 0.3 of the
+  // near size (measured: 0.095 m at 0.35 m); crack penalties p = f E stiffen
+  // it further (dt ~ h sqrt(rho / p)).
+  const double h = e.min_altitude > 0 ? e.min_altitude : 0.3 * scene.mesh.size.size_near;
+  double dt = h / cp;
+  if (e.fracture_triangles > 0)
+    dt = std::min(dt, h * std::sqrt(rock.density / (rock.penalty_factor * rock.young)));
+  dt *= scene.engine.dt_safety;
+  std::printf("  (no probe above %.0f triangles: documented constants)\n", kProbeTriangleLimit);
+  if (e.exact) {
+    std::printf("  triangles (in the file):    %.0f\n", e.triangles);
+    std::printf("  smallest altitude:          %.3g m\n", e.min_altitude);
+  } else {
+    std::printf("  triangles (estimate):       %.0f\n", e.triangles);
+  }
+  std::printf(
+      "  peak memory (bound):        %.1f MiB at most, of %.1f MiB on this machine (256 MiB "
+      "+ %.0f B per triangle + %.0f B per triangle per alpha, x %.1f margin)\n",
+      kMemoryMargin * peak_bytes(scene, e) / 1048576.0, machine_bytes() / 1048576.0,
+      kBytesPerTriangle, kBytesPerAlphaTriangle, kMemoryMargin);
+  print_step_counts(scene);
+  std::printf(
+      "  run time (bound):           %.0f s at most on %d idle thread%s (measured throughput "
+      "of the 2-core development machine: 8-11 M triangle-steps/s per thread, 12 us per "
+      "triangle per alpha; x %.1f margin)\n",
+      kTimeMargin * run_seconds(scene, e, threads), threads, threads == 1 ? "" : "s", kTimeMargin);
+  std::printf("  stable time step (approx):  %.3g s on true masses (from the smallest altitude)\n",
+              dt);
+}
+
+}  // namespace
+
+int command_check(const Scene& scene, const RunContext& ctx) {
+  const Estimate e = estimate(scene);
+  const double cp = p_wave_speed(scene.materials.at(mesh::kRock), scene.plane_stress);
+  std::printf("scene %s: valid\n", scene.source.c_str());
+  if (e.exact) std::printf("  mesh from %s\n", scene.mesh.msh.path.c_str());
+  // Crack elements: about 1.5 interior edges per triangle.
+  std::printf("  crack elements (estimate):  %.0f\n", 1.5 * e.fracture_triangles);
+  if (e.fracture_triangles > 0) {
+    const Resolution r = fracture_resolution(scene, nullptr);
+    std::printf(
+        "  fracture resolution:        h / l_ch = %.3g (h = %.3g m, l_ch = E GfI / "
+        "ft^2 = %.3g m; limit %g)\n",
+        r.ratio, r.h, r.l_ch, kResolutionLimit);
+    if (r.ratio > kResolutionLimit)
+      std::fprintf(stderr,
+                   "warning: the fracture zone's elements are %.2g times the rock's l_ch "
+                   "(limit %g): crack pattern and displacements depend on the mesh; refine "
+                   "mesh.size_near\n",
+                   r.ratio, kResolutionLimit);
+  }
+  if (e.triangles <= kProbeTriangleLimit)
+    print_probe(scene, probe_scene(scene, ctx));
+  else
+    print_constants(scene, e, cp, ctx.threads);
+  std::printf("  P-wave speed of rock:       %.1f m/s\n", cp);
+  std::printf("  threads:                    %d\n", ctx.threads);
+  return 0;
+}
+
+}  // namespace rockfdem::workflows

@@ -1,0 +1,52 @@
+#include "commands/study_options.hpp"
+
+#include "rockfdem/error.hpp"
+
+namespace po = boost::program_options;
+
+namespace rockfdem::workflows {
+namespace {
+
+using Strings = std::vector<std::string>;
+
+// Which command each study option belongs to.
+const std::pair<const char*, const char*> kOwners[] = {
+    {"vary", "sweep"},       {"samples", "sweep"},  {"target", "calibrate"},
+    {"weight", "calibrate"}, {"free", "calibrate"}, {"max-evals", "calibrate"},
+    {"method", "calibrate"}};
+
+}  // namespace
+
+po::options_description study_options() {
+  po::options_description o("Studies (sweep, calibrate)");
+  o.add_options()("vary", po::value<Strings>()->composing(),
+                  "sweep: KEY=V1,V2,... (the product of the lists) or KEY=LO:HI "
+                  "(with --samples; repeatable)")(
+      "samples", po::value<long>(), "sweep: N Latin hypercube samples over the KEY=LO:HI ranges")(
+      "target", po::value<Strings>()->composing(),
+      "calibrate: NAME=VALUE, a key point's radial displacement [mm] or a specimen's "
+      "peak_stress / tensile_strength [MPa] (repeatable)")(
+      "weight", po::value<Strings>()->composing(), "calibrate: NAME=W, a target's weight (1)")(
+      "free", po::value<Strings>()->composing(),
+      "calibrate: KEY=LO:HI, a scene number to fit within its bounds (repeatable)")(
+      "max-evals", po::value<long>(), "calibrate: at most N runs for the optimiser (60)")(
+      "method", po::value<std::string>(), "calibrate: bobyqa (default) or cobyla");
+  return o;
+}
+
+void read_study_options(const po::variables_map& vm, CommandLine& cli) {
+  for (const auto& [option, owner] : kOwners)
+    if (vm.count(option) && cli.command != owner)
+      throw InputError(std::string("command line: --") + option + " belongs to `rockfdem " + owner +
+                       "`");
+  StudyOptions& s = cli.study;
+  if (vm.count("vary")) s.vary = vm["vary"].as<Strings>();
+  if (vm.count("samples")) s.samples = vm["samples"].as<long>();
+  if (vm.count("target")) s.targets = vm["target"].as<Strings>();
+  if (vm.count("weight")) s.weights = vm["weight"].as<Strings>();
+  if (vm.count("free")) s.free = vm["free"].as<Strings>();
+  if (vm.count("max-evals")) s.max_evals = vm["max-evals"].as<long>();
+  if (vm.count("method")) s.method = vm["method"].as<std::string>();
+}
+
+}  // namespace rockfdem::workflows

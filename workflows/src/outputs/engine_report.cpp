@@ -1,0 +1,131 @@
+#include "outputs/engine_report.hpp"
+
+#include <cmath>
+#include <cstdio>
+
+#include "rockfdem/error.hpp"
+
+namespace rockfdem::workflows {
+
+nlohmann::json state_figures(const fdem::Engine& e, const fdem::EnergyBalance& en) {
+  const fdem::BrokenCounts b = e.broken_counts();
+  return {{"steps", e.step_count()},
+          {"dt", e.dt()},
+          {"simulated_time", e.time()},
+          {"broken", {{"mode_I", b.mode_I}, {"mode_II", b.mode_II}, {"mixed", b.mixed}}},
+          {"energy",
+           {{"external_work", en.external_work},
+            {"kinetic", en.kinetic},
+            {"strain", en.strain},
+            {"crack_elastic", en.crack_elastic},
+            {"contact_elastic", en.contact_elastic},
+            {"initial_stored", en.initial_stored},
+            {"damping", en.damping},
+            {"fracture", en.fracture},
+            {"friction", en.friction},
+            {"absorbing", en.absorbing},
+            {"softening", en.softening},
+            {"removed_by_stages", en.removed},
+            {"residual", en.residual()},
+            {"relative_imbalance", en.imbalance()}}},
+          {"state_hash", e.state_hash()}};
+}
+
+void report_engine(const fdem::Engine& e, const PhaseTimer& timer, RunRecord& summary) {
+  auto& j = summary.figures();
+  j["counts"]["triangles"] = e.n_triangles();
+  j["counts"]["nodes"] = e.n_nodes();
+  j["counts"]["crack_elements"] = e.n_cracks();
+  j.update(state_figures(e, e.energy_balance()));
+  // One dt throughout, unless a staged run widens the range (RunOutputs).
+  j["dt_min"] = j["dt_max"] = e.dt();
+  const double fdem = timer.seconds("fdem");
+  j["throughput"]["triangle_steps_per_second"] =
+      fdem > 0 ? double(e.n_triangles()) * double(e.step_count()) / fdem : 0.0;
+  const fdem::PhaseTimes p = e.phase_times();
+  j["fdem_modules"] = {
+      {"triangles", p.triangles}, {"cracks", p.cracks}, {"nodes", p.nodes}, {"contact", p.contact}};
+  const fdem::ContactCounters c = e.contact_counters();
+  j["contact"] = {{"enabled", c.enabled},
+                  {"detections", c.detections},
+                  {"steps_with_pairs", c.steps_with_pairs},
+                  {"steps_skipped", c.steps_skipped},
+                  {"last_candidates", c.candidates},
+                  {"last_pairs", c.pairs},
+                  {"last_touching", c.touching},
+                  {"kernel", c.kernel}};
+  if (!c.enabled)
+    summary.skipped.push_back("contact: disabled by the scene (contact.enabled = false)");
+  else if (c.steps_with_pairs == 0)
+    summary.skipped.push_back("contact: nothing could touch in " + std::to_string(e.step_count()) +
+                              " steps");
+  else if (c.steps_skipped > 0)
+    summary.skipped.push_back("contact: nothing could touch in " + std::to_string(c.steps_skipped) +
+                              " of " + std::to_string(e.step_count()) + " steps");
+  if (e.n_cracks() == 0) summary.skipped.push_back("crack elements: fracture is allowed nowhere");
+  const fdem::MassScalingReport ms = e.mass_scaling_report();
+  j["mass_scaling"] = {{"enabled", ms.enabled}};
+  if (ms.enabled)
+    j["mass_scaling"].update({{"target_dt", ms.target_dt},
+                              {"max_factor", ms.max_factor},
+                              {"mass_ratio", ms.mass_ratio},
+                              {"scaled_triangles", ms.scaled_triangles},
+                              {"note",
+                               "quasi-static: densities scaled, statics unchanged; "
+                               "simulated_time is pseudo-time"}});
+  else
+    summary.skipped.push_back("mass scaling: off (engine.mass_scaling); dynamics at true masses");
+  j["memory_bytes"] = e.memory_bytes();
+  j["memory_bytes_per_triangle"] = double(e.memory_bytes()) / double(e.n_triangles());
+}
+
+std::vector<std::string> energy_columns() {
+  return {"external_work",     "stored_change",   "dissipated",
+          "removed_by_stages", "energy_residual", "energy_imbalance"};
+}
+
+std::vector<double> energy_row(const fdem::EnergyBalance& b) {
+  return {b.external_work, b.stored() - b.initial_stored,
+          b.dissipated(),  b.softening + b.removed,
+          b.residual(),    b.imbalance()};
+}
+
+double energy_floor(const Scene& scene, const mesh::Mesh& m) {
+  const MaterialSpec& rock = scene.materials.at(mesh::kRock);
+  const double stress = rock.tensile_strength > 0 ? rock.tensile_strength : 1e-3 * rock.young;
+  double area = 0;
+  for (const auto& t : m.triangles)
+    area += 0.5 * std::abs((m.x[t[1]] - m.x[t[0]]) * (m.y[t[2]] - m.y[t[0]]) -
+                           (m.x[t[2]] - m.x[t[0]]) * (m.y[t[1]] - m.y[t[0]]));
+  return 1e-6 * stress * stress / (2 * rock.young) * area;
+}
+
+void warn_if_unbalanced(const fdem::Engine& e, double floor, bool quiet, RunRecord& summary) {
+  const fdem::EnergyBalance b = e.energy_balance();
+  if (!(std::abs(b.imbalance()) > kEnergyWarningLimit) || std::abs(b.residual()) <= floor) return;
+  char msg[400];
+  std::snprintf(msg, sizeof msg,
+                "energy: the balance closes only within %.1f%% (sound runs: a few tenths of a "
+                "per cent, at most 3%%): extreme parameters or penalties far stiffer than the "
+                "rock; treat the results with care (docs/reliability.md)",
+                100 * std::abs(b.imbalance()));
+  summary.warnings.push_back(msg);
+  if (!quiet) std::fprintf(stderr, "rockfdem: warning: %s\n", msg);
+}
+
+void check_energy(const fdem::EnergyBalance& b, long step, double floor) {
+  const bool sound =
+      !(std::abs(b.imbalance()) > kEnergyImbalanceLimit) || std::abs(b.residual()) <= floor;
+  if (sound && std::isfinite(b.imbalance())) return;
+  char msg[600];
+  std::snprintf(msg, sizeof msg,
+                "fdem: step %ld: energy balance broken: relative imbalance %.3g (limit %g): "
+                "external work %.4g J/m, stored change %.4g, dissipated %.4g, taken out by "
+                "stages %.4g: energy was created, so the integration diverged (a dt "
+                "forced above the stability limit, or penalties far stiffer than the rock)",
+                step, b.imbalance(), kEnergyImbalanceLimit, b.external_work,
+                b.stored() - b.initial_stored, b.dissipated(), b.softening + b.removed);
+  throw NumericalError(msg);
+}
+
+}  // namespace rockfdem::workflows

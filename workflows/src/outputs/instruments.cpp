@@ -1,0 +1,181 @@
+#include "outputs/instruments.hpp"
+
+#include <cmath>
+
+#include "rockfdem/error.hpp"
+#include "scene/scene_reader.hpp"
+
+namespace rockfdem::workflows {
+namespace {
+
+double mm(double metres) { return 1000 * metres; }
+
+std::string num(double v) { return detail::number_text(v); }
+
+// The point's triangle, refused where a reading means nothing: outside
+// every triangle, or in the core the excavation takes away.
+MaterialPoint place(const Scene& scene, const mesh::Mesh& m, const fdem::Engine& e,
+                    const std::string& what, double x, double y) {
+  const std::optional<MaterialPoint> p = locate(m, e, x, y);
+  const std::string at = scene.source + ": " + what + " at (" + num(x) + ", " + num(y) + ") m ";
+  if (!p)
+    throw InputError(at +
+                     "lies in no triangle of the mesh (outside the rock domain or in a hole); "
+                     "allowed: a point in the rock or the lining");
+  if (p->zone == mesh::kCore)
+    throw InputError(at + "lies in the excavated core (triangle " + std::to_string(p->triangle) +
+                     "); allowed: a point in the rock or the lining");
+  return *p;
+}
+
+const Monitor& key_point(const std::vector<Monitor>& key_points, const std::string& name) {
+  for (const Monitor& k : key_points)
+    if (k.name == name) return k;
+  throw std::logic_error("no key point " + name);
+}
+
+}  // namespace
+
+Instruments::Instruments(const Scene& scene, const mesh::Mesh& m, const fdem::Engine& e,
+                         const std::vector<Monitor>& key_points, const fdem::BoltPlan& bolts)
+    : scene_(scene),
+      half_width_(fracture_resolution(scene, &m).h / 2),
+      bolted_(bolt_triangles(&bolts, m.n_triangles())) {
+  for (std::size_t i = 0; i < scene.monitors.size(); ++i) {
+    const MonitorSpec& s = scene.monitors[i];
+    monitors_.push_back(
+        place(scene, m, e, "monitor[" + std::to_string(i) + "] \"" + s.name + "\"", s.x, s.y));
+  }
+  for (std::size_t i = 0; i < scene.extensometers.size(); ++i) {
+    const ExtensometerSpec& s = scene.extensometers[i];
+    Extensometer x{&s, s.head_x, s.head_y, s.dir_x, s.dir_y, {}};
+    if (!s.from.empty()) {
+      const Monitor& k = key_point(key_points, s.from);
+      x.x = k.x, x.y = k.y, x.dx = -k.inward_x, x.dy = -k.inward_y;
+    }
+    const std::string key = "extensometer[" + std::to_string(i) + "] \"" + s.name + "\" ";
+    for (int a = 0; a <= s.anchors; ++a) {
+      const double depth = s.length * a / s.anchors;
+      x.points.push_back(place(scene, m, e, key + (a ? "anchor " + std::to_string(a) : "head"),
+                               x.x + depth * x.dx, x.y + depth * x.dy));
+    }
+    extensometers_.push_back(std::move(x));
+  }
+  for (const Monitor& k : key_points) {
+    ray_names_.push_back(k.name);
+    rays_.push_back({k.x, k.y, -k.inward_x, -k.inward_y});
+  }
+}
+
+std::vector<std::string> Instruments::columns() const {
+  std::vector<std::string> cols;
+  for (const MonitorSpec& s : scene_.monitors)
+    for (const char* c : {"_ux_mm", "_uy_mm", "_u_mm"}) cols.push_back(s.name + c);
+  for (const Extensometer& x : extensometers_) {
+    const int n = x.spec->anchors;
+    for (int a = 0; a < n; ++a) cols.push_back(x.spec->name + "_a" + std::to_string(a) + "_mm");
+    for (int a = 0; a <= n; ++a)
+      cols.push_back(x.spec->name + "_a" + std::to_string(a) + "_abs_mm");
+  }
+  for (const std::string& k : ray_names_) cols.push_back(k + "_broken_depth_m");
+  return cols;
+}
+
+std::array<double, 2> Instruments::monitor_u(std::size_t i, const NodeDisplacement& u) const {
+  const std::array<double, 2> d = interpolate(monitors_[i], u);
+  if (!scene_.monitors[i].relative_to_support) return d;
+  if (!installed_) return {0, 0};
+  return {d[0] - support_u_[2 * i], d[1] - support_u_[2 * i + 1]};
+}
+
+std::vector<double> Instruments::axial(const Extensometer& x, const NodeDisplacement& u) const {
+  std::vector<double> out;
+  for (const MaterialPoint& p : x.points) {
+    const std::array<double, 2> d = interpolate(p, u);
+    out.push_back(-(d[0] * x.dx + d[1] * x.dy));
+  }
+  return out;
+}
+
+void Instruments::support_installed(const NodeDisplacement& u) {
+  if (installed_) return;
+  installed_ = true;
+  support_u_.clear();
+  for (const MaterialPoint& p : monitors_)
+    for (double v : interpolate(p, u)) support_u_.push_back(v);
+}
+
+std::vector<double> Instruments::row(const fdem::Engine& e, const mesh::Mesh& m,
+                                     const NodeDisplacement& u) const {
+  std::vector<double> row;
+  for (std::size_t i = 0; i < monitors_.size(); ++i) {
+    const std::array<double, 2> d = monitor_u(i, u);
+    row.insert(row.end(), {mm(d[0]), mm(d[1]), mm(std::hypot(d[0], d[1]))});
+  }
+  for (const Extensometer& x : extensometers_) {
+    const std::vector<double> a = axial(x, u);
+    for (std::size_t k = 0; k + 1 < a.size(); ++k) row.push_back(mm(a[k] - a.back()));
+    for (double v : a) row.push_back(mm(v));
+  }
+  for (double d : broken_depth_along_rays(e, m, rays_, half_width_, bolted_)) row.push_back(d);
+  return row;
+}
+
+void Instruments::add_monitors(nlohmann::json& monitors, const NodeDisplacement& u) const {
+  for (std::size_t i = 0; i < monitors_.size(); ++i) {
+    const MonitorSpec& s = scene_.monitors[i];
+    const std::array<double, 2> d = monitor_u(i, u);
+    monitors[s.name] = {{"ux_mm", mm(d[0])},
+                        {"uy_mm", mm(d[1])},
+                        {"u_mm", mm(std::hypot(d[0], d[1]))},
+                        {"x", s.x},
+                        {"y", s.y},
+                        {"triangle", monitors_[i].triangle},
+                        {"from", s.relative_to_support ? "support" : "in-situ state"}};
+  }
+}
+
+void Instruments::finish(nlohmann::json& summary, const fdem::Engine& e, const mesh::Mesh& m,
+                         const NodeDisplacement& u) const {
+  nlohmann::json ext = nlohmann::json::object();
+  for (const Extensometer& x : extensometers_) {
+    const std::vector<double> a = axial(x, u);
+    nlohmann::json points = nlohmann::json::array();
+    for (std::size_t k = 0; k < a.size(); ++k)
+      points.push_back({{"point", k == 0 ? "head" : "anchor " + std::to_string(k)},
+                        {"depth_m", x.spec->length * double(k) / x.spec->anchors},
+                        {"relative_mm", mm(a[k] - a.back())},
+                        {"absolute_mm", mm(a[k])}});
+    ext[x.spec->name] = {
+        {"head", {x.x, x.y}},
+        {"direction", {x.dx, x.dy}},
+        {"from", x.spec->from.empty() ? nlohmann::json() : nlohmann::json(x.spec->from)},
+        {"length_m", x.spec->length},
+        {"points", points}};
+  }
+  if (!extensometers_.empty()) summary["extensometers"] = ext;
+  nlohmann::json rays = nlohmann::json::object();
+  const std::vector<double> depth = broken_depth_along_rays(e, m, rays_, half_width_, bolted_);
+  for (std::size_t i = 0; i < rays_.size(); ++i)
+    rays[ray_names_[i]] = {{"depth_m", depth[i]},
+                           {"origin", {rays_[i].x, rays_[i].y}},
+                           {"direction", {rays_[i].dx, rays_[i].dy}}};
+  summary["broken_zone"]["along_rays"] = rays;
+  summary["broken_zone"]["ray_half_width_m"] = half_width_;
+}
+
+nlohmann::json Instruments::state() const {
+  return {{"support_installed", installed_}, {"support_u", support_u_}};
+}
+
+void Instruments::restore(const nlohmann::json& s) {
+  installed_ = s.value("support_installed", false);
+  support_u_ = s.value("support_u", std::vector<double>{});
+  if (installed_ && support_u_.size() != 2 * monitors_.size())
+    throw InputError("corrupt run state: the instruments' support reference holds " +
+                     std::to_string(support_u_.size()) + " values; the scene's " +
+                     std::to_string(monitors_.size()) + " monitors need " +
+                     std::to_string(2 * monitors_.size()));
+}
+
+}  // namespace rockfdem::workflows

@@ -1,0 +1,153 @@
+#include "outputs/lining_output.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+#include "rockfdem/coupling/atomic_file.hpp"
+#include "run/output_dir.hpp"
+
+namespace rockfdem::workflows {
+namespace {
+
+// Index of the segment where `value` of the forces is largest.
+template <class F>
+std::size_t arg_max(const std::vector<SectionForces>& f, F value) {
+  std::size_t best = 0;
+  for (std::size_t i = 1; i < f.size(); ++i)
+    if (value(f[i]) > value(f[best])) best = i;
+  return best;
+}
+
+double median_thickness(const LiningGeometry& g) {
+  std::vector<double> t;
+  for (const LiningSegment& s : g.segments) t.push_back(s.thickness);
+  std::nth_element(t.begin(), t.begin() + long(t.size() / 2), t.end());
+  return t[t.size() / 2];
+}
+
+}  // namespace
+
+LiningOutput::LiningOutput(const Scene& scene, const mesh::Mesh& m) {
+  if (auto g = lining_geometry(m)) geometry_ = std::move(*g);
+  for (std::size_t t = 0; t < m.n_triangles(); ++t)
+    if (m.zone[t] == mesh::kLining) triangles_.push_back(int(t));
+  const auto it = scene.materials.find(mesh::kLining);
+  if (it != scene.materials.end() && it->second.compressive_strength > 0) {
+    has_strength_ = true;
+    strength_ = {it->second.compressive_strength, it->second.tensile_strength};
+  }
+}
+
+bool LiningOutput::installed(const fdem::Engine& e) const {
+  if (!has_ring()) return false;
+  for (int t : triangles_)
+    if (!e.active(std::size_t(t))) return false;
+  return true;
+}
+
+std::vector<SectionForces> LiningOutput::forces(const fdem::Engine& e) const {
+  std::vector<std::array<double, 3>> stress(e.n_triangles(), {0, 0, 0});
+  for (int t : triangles_) stress[std::size_t(t)] = e.triangle_stress(std::size_t(t));
+  return lining_forces(geometry_, stress);
+}
+
+void LiningOutput::record(const fdem::Engine& e, const std::string& dir) {
+  if (!installed(e)) return;
+  char name[40];
+  std::snprintf(name, sizeof name, "lining_%06ld.csv", e.step_count());
+  coupling::atomic_write_text(
+      output_path(dir, name),
+      lining_csv(e.step_count(), geometry_, forces(e), has_strength_ ? &strength_ : nullptr));
+}
+
+void LiningOutput::finish(const fdem::Engine& e, const std::string& dir, nlohmann::json& j) {
+  last_ = forces(e);
+  coupling::atomic_write_text(
+      output_path(dir, "lining.csv"),
+      lining_csv(e.step_count(), geometry_, last_, has_strength_ ? &strength_ : nullptr));
+  const auto angle = [&](std::size_t i) { return geometry_.segments[i].angle_deg; };
+  const std::size_t n_max = arg_max(last_, [](const SectionForces& f) { return f.thrust; });
+  const std::size_t n_min = arg_max(last_, [](const SectionForces& f) { return -f.thrust; });
+  const std::size_t m_max =
+      arg_max(last_, [](const SectionForces& f) { return std::abs(f.moment); });
+  const std::size_t v_max =
+      arg_max(last_, [](const SectionForces& f) { return std::abs(f.shear); });
+  j["file"] = "lining.csv";
+  j["step"] = e.step_count();
+  j["segments"] = geometry_.segments.size();
+  j["thickness_m"] = median_thickness(geometry_);
+  j["corner_segments"] = std::count_if(geometry_.segments.begin(), geometry_.segments.end(),
+                                       [](const LiningSegment& s) { return s.corner; });
+  j["max_thrust_kN_per_m"] = last_[n_max].thrust / 1e3;
+  j["max_thrust_angle_deg"] = angle(n_max);
+  j["min_thrust_kN_per_m"] = last_[n_min].thrust / 1e3;
+  j["min_thrust_angle_deg"] = angle(n_min);
+  j["max_abs_moment_kNm_per_m"] = std::abs(last_[m_max].moment) / 1e3;
+  j["max_abs_moment_angle_deg"] = angle(m_max);
+  j["max_abs_shear_kN_per_m"] = std::abs(last_[v_max].shear) / 1e3;
+  j["max_abs_shear_angle_deg"] = angle(v_max);
+  capacity_json(j);
+}
+
+void LiningOutput::capacity_json(nlohmann::json& j) const {
+  if (!has_strength_) {
+    j["capacity"] = "not checked: materials.lining.compressive_strength not given";
+    return;
+  }
+  std::vector<double> fs;
+  for (std::size_t i = 0; i < last_.size(); ++i)
+    fs.push_back(safety_factor(last_[i], geometry_.segments[i].thickness, strength_));
+  const std::size_t i = std::size_t(std::min_element(fs.begin(), fs.end()) - fs.begin());
+  const LiningSegment& s = geometry_.segments[i];
+  j["capacity"] =
+      "plain shotcrete section, elastic: N/t +- 6M/t^2 within [-tensile, compressive] strength";
+  j["compressive_strength_Pa"] = strength_.compressive;
+  j["tensile_strength_Pa"] = strength_.tensile;
+  // An unloaded ring has no finite factor: JSON null.
+  j["min_safety_factor"] = std::isfinite(fs[i]) ? nlohmann::json(fs[i]) : nlohmann::json();
+  j["min_safety_factor_angle_deg"] = s.angle_deg;
+  j["min_safety_factor_x_m"] = s.x;
+  j["min_safety_factor_y_m"] = s.y;
+  j["min_safety_factor_at_corner"] = s.corner;
+  j["segments_below_1"] = std::count_if(fs.begin(), fs.end(), [](double f) { return f < 1; });
+}
+
+void LiningOutput::plots(PlotWriter& plots) const {
+  if (last_.empty()) return;
+  std::vector<double> angle, n, m, v;
+  for (std::size_t i = 0; i < last_.size(); ++i) {
+    angle.push_back(geometry_.segments[i].angle_deg);
+    n.push_back(last_[i].thrust / 1e3);
+    m.push_back(last_[i].moment / 1e3);
+    v.push_back(last_[i].shear / 1e3);
+  }
+  plots.panels("lining_forces.png",
+               "Lining forces per metre, end of run (N: compression +; M > 0: rock side "
+               "compressed)",
+               "angle about the opening's centroid [deg] (0: right springline, 90: crown)",
+               {{"thrust N [kN/m]", {{"N", angle, n}}, {}},
+                {"moment M [kNm/m]", {{"M", angle, m}}, {}},
+                {"shear V [kN/m]", {{"V", angle, v}}, {}}},
+               1000);
+  if (!has_strength_) return;
+  std::vector<plots::PlotSeries> envelopes;
+  const double t = median_thickness(geometry_);
+  for (double fs : {1.0, 1.5}) {
+    plots::PlotSeries c{
+        "capacity, safety factor " + std::string(fs == 1.0 ? "1.0" : "1.5"), {}, {}};
+    for (const auto& p : capacity_envelope(t, strength_, fs)) {
+      c.x.push_back(p[0] / 1e3);
+      c.y.push_back(p[1] / 1e3);
+    }
+    envelopes.push_back(std::move(c));
+  }
+  char title[160];
+  std::snprintf(title, sizeof title,
+                "Lining capacity (plain shotcrete, t = %.3g m, fc = %.3g MPa, ft = %.3g MPa)", t,
+                strength_.compressive / 1e6, strength_.tensile / 1e6);
+  plots.panels("lining_capacity.png", title, "bending moment M [kNm/m]",
+               {{"thrust N [kN/m]", envelopes, {{"segments, end of run", m, n}}}}, 800);
+}
+
+}  // namespace rockfdem::workflows

@@ -1,0 +1,45 @@
+// What a run writes about its lining ring once installed: lining_NNNNNN.csv
+// at each output step, lining.csv at the end, summary "lining" (extremes
+// and the smallest safety factor) and the pictures lining_forces.png and
+// lining_capacity.png (docs/output-formats.md, docs/support.md).
+#pragma once
+
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "outputs/lining_forces.hpp"
+#include "outputs/run_plots.hpp"
+#include "rockfdem/fdem/engine.hpp"
+#include "rockfdem/workflows/scene.hpp"
+
+namespace rockfdem::workflows {
+
+class LiningOutput {
+ public:
+  /// The ring's segments of `m`; `scene` gives the shotcrete's strengths.
+  LiningOutput(const Scene& scene, const mesh::Mesh& m);
+  /// Whether the mesh has a ring to cut into segments.
+  bool has_ring() const { return !geometry_.segments.empty(); }
+  /// Whether every lining triangle carries load in `e`.
+  bool installed(const fdem::Engine& e) const;
+  /// DIR/lining_<step>.csv, when every lining triangle is active.
+  void record(const fdem::Engine& e, const std::string& dir);
+  /// DIR/lining.csv and the summary's figures into `j` (summary "lining").
+  void finish(const fdem::Engine& e, const std::string& dir, nlohmann::json& j);
+  /// lining_forces.png and (with a compressive strength) lining_capacity.png
+  /// of the state finish() saw.
+  void plots(PlotWriter& plots) const;
+
+ private:
+  std::vector<SectionForces> forces(const fdem::Engine& e) const;
+  /// The figures of the safety factor check into `j`.
+  void capacity_json(nlohmann::json& j) const;
+  LiningGeometry geometry_;
+  std::vector<int> triangles_;  ///< every lining triangle
+  bool has_strength_ = false;
+  ShotcreteStrength strength_;
+  std::vector<SectionForces> last_;  ///< forces of finish()
+};
+
+}  // namespace rockfdem::workflows

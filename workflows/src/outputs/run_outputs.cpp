@@ -1,0 +1,568 @@
+#include "outputs/run_outputs.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+
+#include "outputs/broken_zone.hpp"
+#include "outputs/engine_report.hpp"
+#include "outputs/run_pictures.hpp"
+#include "outputs/run_report.hpp"
+#include "rockfdem/coupling/atomic_file.hpp"
+#include "rockfdem/coupling/fdem_model.hpp"
+#include "rockfdem/coupling/insitu_grid.hpp"
+#include "rockfdem/fdem/bolt_output.hpp"
+#include "run/checkpoint.hpp"
+#include "run/output_dir.hpp"
+#include "stages/stage_inputs.hpp"
+
+namespace rockfdem::workflows {
+namespace {
+
+double mm(double metres) { return 1000 * metres; }
+
+// %g with up to 6 digits: alpha as the scene gives it (0.01, 0.5).
+std::string detail_number(double v) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%g", v);
+  return text;
+}
+
+// Monitors' mesh vertices: the implicit fields are per vertex.
+int vertex_of(const fdem::Engine& e, const Monitor& mon) { return e.node_vertex()[mon.node]; }
+
+const Monitor& find(const std::vector<Monitor>& ms, const std::string& name) {
+  for (const Monitor& m : ms)
+    if (m.name == name) return m;
+  throw std::logic_error("no monitor " + name);
+}
+
+}  // namespace
+
+RigidFit RunOutputs::boundary_fit(const fdem::Engine& e) const {
+  if (boundary_vertices_.empty()) return {};
+  // Every monitor of a step needs the same fit: compute it once per step.
+  if (fit_step_ == e.step_count()) return fit_;
+  std::vector<double> x, y, ux, uy;
+  const std::vector<int>& vertex = e.node_vertex();
+  const std::vector<double>& pos = e.positions();
+  for (std::size_t node = 0; node < e.n_nodes(); ++node) {
+    if (!std::binary_search(boundary_vertices_.begin(), boundary_vertices_.end(), vertex[node]))
+      continue;
+    const auto d = e.displacement(node);
+    x.push_back(pos[2 * node] - d[0]);
+    y.push_back(pos[2 * node + 1] - d[1]);
+    ux.push_back(d[0]);
+    uy.push_back(d[1]);
+  }
+  fit_ = rigid_fit(x, y, ux, uy);
+  fit_step_ = e.step_count();
+  return fit_;
+}
+
+void RunOutputs::check_rigid_motion(const fdem::Engine& e, long step) {
+  const RigidFit fit = boundary_fit(e);
+  max_rotation_deg_ = std::max(max_rotation_deg_, std::abs(fit.rotation) * 180 / M_PI);
+  check_rigid_rotation(fit, scene_.insitu.rollers, step);
+}
+
+std::array<double, 2> RunOutputs::displacement(const fdem::Engine& e, const Monitor& mon) const {
+  return node_displacements(e)(mon.node);
+}
+
+NodeDisplacement RunOutputs::node_displacements(const fdem::Engine& e) const {
+  static const std::vector<double> none;
+  const std::vector<double>& ux = fields_.empty() ? none : fields_.back().ux;
+  const std::vector<double>& uy = fields_.empty() ? none : fields_.back().uy;
+  // Remove the engine's mean translation of the outer boundary (the
+  // implicit part already has its rigid motion removed).
+  const RigidFit fit = boundary_fit(e);
+  return [&e, &ux, &uy, fit](int node) {
+    std::array<double, 2> u = node_displacement(e, node, ux, uy);
+    return std::array<double, 2>{u[0] - fit.tx, u[1] - fit.ty};
+  };
+}
+
+std::array<double, 4> RunOutputs::key_point(const fdem::Engine& e, const Monitor& mon) const {
+  const std::array<double, 2> u = displacement(e, mon);
+  return {mm(u[0]), mm(u[1]), mm(std::hypot(u[0], u[1])), mm(radial_convergence(mon, u))};
+}
+
+double RunOutputs::convergence(const fdem::Engine& e, const std::vector<Monitor>& ms,
+                               const std::string& a, const std::string& b) const {
+  const Monitor &ma = find(ms, a), &mb = find(ms, b);
+  const auto ua = displacement(e, ma), ub = displacement(e, mb);
+  const double dx = mb.x - ma.x, dy = mb.y - ma.y, len = std::hypot(dx, dy);
+  return ((ua[0] - ub[0]) * dx + (ua[1] - ub[1]) * dy) / len;
+}
+
+std::pair<std::string, double> RunOutputs::largest_key_point(
+    const fdem::Engine& e, const std::vector<Monitor>& monitors) const {
+  std::pair<std::string, double> most{"", 0.0};
+  for (const Monitor& mon : monitors) {
+    const auto u = displacement(e, mon);
+    if (std::hypot(u[0], u[1]) > most.second) most = {mon.name, std::hypot(u[0], u[1])};
+  }
+  return most;
+}
+
+RunOutputs::RunOutputs(const Scene& scene, const RunContext& ctx, RunRecord& summary)
+    : scene_(scene), ctx_(ctx), summary_(summary), pvd_(output_path(ctx.output_dir, "fdem.pvd")) {
+  summary_.note_turned_off(scene.output, "fdem.pvd, fdem_NNNN.vtu, insitu.vtu, continuum.vtu",
+                           true);
+}
+
+void RunOutputs::record_insitu(const mesh::Mesh& m,
+                               const std::vector<insitu::InsituField>& fields) {
+  fields_ = fields;
+  auto& j = summary_.figures()["insitu"];
+  j["alpha"] = nlohmann::json::array();
+  j["solver_iterations"] = nlohmann::json::array();
+  for (const insitu::InsituField& f : fields) {
+    j["alpha"].push_back(f.alpha);
+    j["solver_iterations"].push_back(f.iterations);
+  }
+  summary_.record_insitu_state(fields.back());
+  if (scene_.output.vtk)
+    coupling::write_vtu(coupling::insitu_grid(m, fields.back()),
+                        output_path(ctx_.output_dir, "insitu.vtu"));
+  insitu::KirschCase k;
+  if (kirsch_case(scene_, &k) && fields.back().alpha == 0.0)
+    j["kirsch_rel_l2"] = insitu::compare_kirsch(m, fields.back(), k).stress_rel_l2;
+}
+
+void RunOutputs::set_bolts(const fdem::BoltPlan* bolts) {
+  bolts_ = bolts;
+  if (bolts && !bolts->specs.empty())
+    bolt_results_ = std::make_unique<BoltResults>(*bolts, scene_.bolts.is_cable, ctx_.output_dir);
+}
+
+std::vector<std::string> RunOutputs::history_columns(const std::vector<Monitor>& monitors) const {
+  std::vector<std::string> cols{
+      "stage",    "step",      "time",        "kinetic_energy", "unbalanced_ratio",
+      "broken_I", "broken_II", "broken_mixed"};
+  for (const Monitor& mon : monitors)
+    for (const char* c : {"_ux_mm", "_uy_mm", "_u_mm", "_radial_mm"}) cols.push_back(mon.name + c);
+  cols.insert(cols.end(),
+              {"vault_settlement_mm", "wall_chord_convergence_mm", "shoulder_chord_convergence_mm",
+               "outer_rotation_deg", "support_pressure_ratio"});
+  for (const std::string& c : energy_columns()) cols.push_back(c);
+  if (bolt_results_)
+    for (const std::string& c : bolt_results_->history_columns()) cols.push_back(c);
+  if (instruments_)
+    for (const std::string& c : instruments_->columns()) cols.push_back(c);
+  return cols;
+}
+
+void RunOutputs::begin_history(const std::vector<Monitor>& monitors, const mesh::Mesh& m) {
+  energy_floor_ = energy_floor(scene_, m);
+  for (const mesh::TaggedEdge& edge : m.edges)
+    if (edge.tag >= mesh::kBottom && edge.tag <= mesh::kLeft) {
+      boundary_vertices_.push_back(edge.a);
+      boundary_vertices_.push_back(edge.b);
+    }
+  std::sort(boundary_vertices_.begin(), boundary_vertices_.end());
+  boundary_vertices_.erase(std::unique(boundary_vertices_.begin(), boundary_vertices_.end()),
+                           boundary_vertices_.end());
+  monitors_ = monitors;
+  if (has_lining_ring(scene_)) {
+    lining_ = std::make_unique<LiningOutput>(scene_, m);
+    if (!lining_->has_ring()) lining_.reset();
+  }
+  history_ = std::make_unique<History>(output_path(ctx_.output_dir, "history.csv"),
+                                       history_columns(monitors));
+}
+
+void RunOutputs::record_step(const fdem::Engine& e, const mesh::Mesh& m,
+                             const std::vector<Monitor>& monitors, PhaseTimer& timer,
+                             const std::string& stage, double support_ratio) {
+  if (stage_names_.empty() || stage_names_.back() != stage) stage_names_.push_back(stage);
+  const fdem::BrokenCounts b = e.broken_counts();
+  std::vector<double> row{double(stage_names_.size() - 1),
+                          double(e.step_count()),
+                          e.time(),
+                          e.kinetic_energy(),
+                          e.unbalanced_force_ratio(),
+                          double(b.mode_I),
+                          double(b.mode_II),
+                          double(b.mixed)};
+  for (const Monitor& mon : monitors)
+    for (double v : key_point(e, mon)) row.push_back(v);
+  row.push_back(-mm(displacement(e, find(monitors, "vault"))[1]));
+  row.push_back(mm(convergence(e, monitors, "left_wall", "right_wall")));
+  row.push_back(mm(convergence(e, monitors, "left_shoulder", "right_shoulder")));
+  row.push_back(boundary_fit(e).rotation * 180 / M_PI);
+  row.push_back(support_ratio);
+  const fdem::EnergyBalance energy = e.energy_balance();
+  for (double v : energy_row(energy)) row.push_back(v);
+  if (bolt_results_)
+    for (double v : bolt_results_->record(e, e.step_count(), e.time(), int(row[0])))
+      row.push_back(v);
+  if (instruments_)
+    for (double v : instruments_->row(e, m, node_displacements(e))) row.push_back(v);
+  history_->add(row);
+  if (lining_ && lining_installed_) lining_->record(e, ctx_.output_dir);
+  // Before the frame: the last frame stays the last good state.
+  check_energy(energy, e.step_count(), energy_floor_);
+  check_rigid_motion(e, e.step_count());
+  // The hand-off step's dt, once it passed (a failed one is no good state).
+  if (stage == "handoff" && stage_names_.size() == 1) handoff_dt_ = e.dt();
+  if (scene_.output.vtk) {
+    char name[32];
+    std::snprintf(name, sizeof name, "fdem_%04d.vtu", frame_++);
+    coupling::VtkGrid g = frame_grid(e, m);
+    coupling::add_frame_info(g.field, stage, e.step_count(), e.time());
+    coupling::write_vtu(g, output_path(ctx_.output_dir, name));
+    pvd_.add(e.time(), name);
+    pvd_.write();
+    std::snprintf(name, sizeof name, "bolts_%04d.vtp", frame_ - 1);
+    if (bolt_results_) bolt_results_->write_frame(name, g.field);
+  }
+  last_good_.take(e, energy, monitors_json(e, monitors));
+  timer.stamp("output");
+}
+
+nlohmann::json RunOutputs::monitors_json(const fdem::Engine& e,
+                                         const std::vector<Monitor>& monitors) const {
+  nlohmann::json j = nlohmann::json::object();
+  for (const Monitor& mon : monitors) {
+    const auto k = key_point(e, mon);
+    j[mon.name] = {{"ux_mm", k[0]},
+                   {"uy_mm", k[1]},
+                   {"u_mm", k[2]},
+                   {"radial_mm", k[3]},
+                   {"x", mon.node_x},
+                   {"y", mon.node_y},
+                   {"inward", {mon.inward_x, mon.inward_y}}};
+  }
+  // Per point (as field convergence points are read) and, apart, the
+  // change of length of two chords between points.
+  j["vault_settlement_mm"] = -mm(displacement(e, find(monitors, "vault"))[1]);
+  j["wall_chord_convergence_mm"] = mm(convergence(e, monitors, "left_wall", "right_wall"));
+  j["shoulder_chord_convergence_mm"] =
+      mm(convergence(e, monitors, "left_shoulder", "right_shoulder"));
+  if (instruments_) instruments_->add_monitors(j, node_displacements(e));
+  return j;
+}
+
+void RunOutputs::report_dt() {
+  auto& j = summary_.figures();
+  // Steps and time add up: the hand-off step, then each stage's (dt is
+  // constant within a stage: the limit changes only with a stage's changes).
+  double lo = j["dt"].get<double>(), hi = lo;
+  if (handoff_dt_ > 0) {
+    j["fdem"]["handoff_step"] = {
+        {"steps", 1}, {"dt", handoff_dt_}, {"simulated_time", handoff_dt_}};
+    lo = std::min(lo, handoff_dt_);
+    hi = std::max(hi, handoff_dt_);
+  }
+  const nlohmann::json none = nlohmann::json::array();
+  const auto fdem = j.find("fdem");
+  for (const auto& stage : fdem != j.end() ? fdem->value("stages", none) : none)
+    if (stage.contains("dt") && stage["dt"].is_number()) {
+      lo = std::min(lo, stage["dt"].get<double>());
+      hi = std::max(hi, stage["dt"].get<double>());
+    }
+  j["dt_min"] = lo;
+  j["dt_max"] = hi;
+}
+
+void RunOutputs::report_failure(const fdem::Engine& e, PhaseTimer& timer, const std::string& why) {
+  last_good_.report_failure(e, timer, why, summary_);
+  report_dt();
+  summary_.write(output_path(ctx_.output_dir, "summary.json"));
+  write_report();
+}
+
+coupling::VtkGrid RunOutputs::frame_grid(const fdem::Engine& e, const mesh::Mesh& m) const {
+  coupling::VtkGrid g = coupling::fdem_grid(e, m, fields_.empty() ? nullptr : &fields_.back());
+  if (!bolts_ || bolts_->specs.empty()) return g;
+  std::vector<double> stress(e.n_triangles(), std::nan(""));
+  for (std::size_t b = 0; b < bolts_->specs.size(); ++b) {
+    if (!bolts_->installed[b]) continue;
+    for (const fdem::BoltSample& p : fdem::bolt_axial_profile(e, *bolts_, int(b)))
+      stress[p.triangle] = p.steel_stress;
+  }
+  g.cell_arrays.push_back(coupling::triangle_cell_array(
+      g, coupling::scalar_array("bolt_axial_stress", std::move(stress))));
+  return g;
+}
+
+nlohmann::json RunOutputs::state() const {
+  return {{"history", history_->rows()},
+          {"stages", stage_names_},
+          {"frames", frames_state(pvd_)},
+          {"handoff_dt", handoff_dt_},
+          {"max_rotation_deg", max_rotation_deg_},
+          {"bolts", bolt_results_ ? bolt_results_->state() : nlohmann::json()},
+          {"instruments", instruments_ ? instruments_->state() : nlohmann::json()}};
+}
+
+void RunOutputs::restore(const nlohmann::json& s, const std::string& from_dir) {
+  namespace fs = std::filesystem;
+  history_->restore(s.at("history").get<std::vector<std::vector<double>>>());
+  stage_names_ = s.at("stages").get<std::vector<std::string>>();
+  handoff_dt_ = s.value("handoff_dt", 0.0);  // 0: a checkpoint from before it was kept
+  max_rotation_deg_ = s.value("max_rotation_deg", 0.0);
+  if (instruments_ && s.contains("instruments") && s.at("instruments").is_object())
+    instruments_->restore(s.at("instruments"));
+  frame_ += restore_frames(s.at("frames"), from_dir, ctx_.output_dir, pvd_, summary_);
+  if (bolt_results_ && s.contains("bolts") && !s["bolts"].is_null())
+    bolt_results_->restore(s["bolts"], from_dir);
+  std::error_code same_ec;
+  const bool same_dir = fs::equivalent(from_dir, ctx_.output_dir, same_ec);
+  // Files an earlier stage wrote once, which the summary names, and the
+  // lining's forces at the earlier outputs.
+  std::vector<std::string> earlier{"grouted_cracks.csv"};
+  for (const std::vector<double>& row : history_->rows()) {
+    char name[40];
+    std::snprintf(name, sizeof name, "lining_%06ld.csv", long(row.at(1)));
+    earlier.push_back(name);
+  }
+  if (!same_dir)
+    for (const std::string& name : earlier) {
+      std::error_code ec;
+      if (fs::exists(output_path(from_dir, name), ec))
+        fs::copy_file(output_path(from_dir, name), output_path(ctx_.output_dir, name),
+                      fs::copy_options::overwrite_existing, ec);
+    }
+}
+
+void RunOutputs::lining_outputs(const fdem::Engine& e, const mesh::Mesh& m) {
+  // A bond acts only between two active triangles: a ring that was never
+  // installed (or was removed) has none.
+  long n_bond = 0, broken = 0;
+  for (std::size_t c : lining_interface_cracks(e, m)) {
+    const auto t = e.crack_triangles(c);
+    if (!e.active(t[0]) || !e.active(t[1])) continue;
+    ++n_bond;
+    broken += e.crack_state(c) == fdem::CrackState::kBroken;
+  }
+  nlohmann::json j = nlohmann::json::object();
+  if (n_bond > 0) j = {{"interface_cracks", n_bond}, {"interface_broken", broken}};
+  if (lining_ && lining_installed_ && lining_->installed(e)) lining_->finish(e, ctx_.output_dir, j);
+  if (!j.empty())
+    summary_.figures()["lining"] = j;
+  else if (has_lining_ring(scene_))
+    summary_.skipped.push_back("lining: the ring is not installed at the end of the run");
+}
+
+void RunOutputs::bolt_outputs(const fdem::Engine& e, const fdem::BoltPlan& bolts) {
+  summary_.figures()["counts"]["bolts"] = bolts.specs.size();
+  if (bolt_results_)
+    bolt_results_->finish(e, summary_);
+  else
+    summary_.skipped.push_back("bolts: none in the scene");
+}
+
+void RunOutputs::finish(const fdem::Engine& e, const mesh::Mesh& m,
+                        const std::vector<Monitor>& monitors, PhaseTimer& timer,
+                        const fdem::BoltPlan& bolts) {
+  auto& j = summary_.figures();
+  report_engine(e, timer, summary_);
+  warn_if_unbalanced(e, energy_floor_, ctx_.quiet, summary_);
+  report_dt();
+  bolt_outputs(e, bolts);
+  j["monitors"] = monitors_json(e, monitors);
+  add_since_support(j["monitors"]);
+  j["outer_boundary"] = {{"rotation_deg", boundary_fit(e).rotation * 180 / M_PI},
+                         {"max_rotation_deg", max_rotation_deg_},
+                         {"limit_deg", kRigidRotationLimitDeg},
+                         {"translation_mm", {mm(boundary_fit(e).tx), mm(boundary_fit(e).ty)}},
+                         {"support", scene_.insitu.rollers ? "rollers" : "tractions"}};
+  // Ground reaction curve, implicit part: the core's share of the in-situ
+  // stress (alpha) against the vault settlement it allows.
+  const int vault_vertex = vertex_of(e, find(monitors, "vault"));
+  nlohmann::json grc = nlohmann::json::array();
+  for (const insitu::InsituField& f : fields_)
+    grc.push_back({{"support_pressure_ratio", f.alpha},
+                   {"vault_settlement_mm", -mm(f.uy[vault_vertex])},
+                   {"point", "implicit stage, alpha = " + detail_number(f.alpha)}});
+  // The end: the core's factor then (0 once removed), the support carrying the rest.
+  const double end_ratio =
+      history_->rows().empty() ? 0.0 : history_->column("support_pressure_ratio").back();
+  grc.push_back(
+      {{"support_pressure_ratio", end_ratio},
+       {"vault_settlement_mm", j["monitors"]["vault_settlement_mm"]},
+       {"point", end_ratio > 0 ? "end of run (FDEM), core at alpha = " + detail_number(end_ratio)
+                               : std::string("end of run (FDEM), core removed")}});
+  j["ground_reaction_curve"] = grc;
+  lining_outputs(e, m);
+  damage_outputs(e, m);
+  if (instruments_) instruments_->finish(j, e, m, node_displacements(e));
+  j["history_stages"] = stage_names_;  // history.csv's "stage" column indexes this list
+  if (scene_.output.plots) plots(e, m);
+  timer.stamp("output");
+  summary_.set_timings(timer);
+  summary_.write(output_path(ctx_.output_dir, "summary.json"));
+  write_report();
+  const fdem::BrokenCounts b = e.broken_counts();
+  if (!ctx_.quiet)
+    std::cout << "vault settlement " << j["monitors"]["vault_settlement_mm"].get<double>()
+              << " mm, wall chord convergence "
+              << j["monitors"]["wall_chord_convergence_mm"].get<double>() << " mm, broken cracks "
+              << b.total() << ", state hash " << e.state_hash() << '\n'
+              << timer.table();
+}
+
+void RunOutputs::damage_outputs(const fdem::Engine& e, const mesh::Mesh& m) {
+  auto& j = summary_.figures();
+  const Resolution r = fracture_resolution(scene_, &m);
+  j["resolution"] = {
+      {"h_m", r.h}, {"l_ch_m", r.l_ch}, {"h_over_l_ch", r.ratio}, {"limit", kResolutionLimit}};
+  const auto warn = [&](const std::string& msg) {
+    summary_.warnings.push_back(msg);
+    if (!ctx_.quiet) std::cerr << "warning: " << msg << '\n';
+  };
+  char msg[500];
+  if (r.ratio > kResolutionLimit) {
+    std::snprintf(msg, sizeof msg,
+                  "the fracture zone's elements (h = %.3g m) are %.2g times the rock's "
+                  "characteristic length l_ch = E GfI / ft^2 = %.3g m (limit %g): crack "
+                  "pattern and displacements depend on the mesh; refine mesh.size_near",
+                  r.h, r.ratio, r.l_ch, kResolutionLimit);
+    warn(msg);
+  }
+  const BrokenZone z = broken_zone(e, m, r.h, bolt_triangles(bolts_, m.n_triangles()));
+  j["broken_zone"] = {
+      {"broken_rock_cracks", z.broken},
+      {"depth_m", z.depth},
+      {"fracture_zone_m", z.zone_depth},
+      {"clearance_m", z.clearance >= 0 ? nlohmann::json(z.clearance) : nlohmann::json()},
+      {"capped", z.at_edge}};
+  if (z.at_edge) {
+    std::snprintf(msg, sizeof msg,
+                  "broken crack elements reach %.2g m from the fracture zone's outer edge "
+                  "(less than %g elements of %.3g m): the zone caps the damage; widen "
+                  "tunnel.fracture_zone (now %.3g m deep)",
+                  z.clearance, kEdgeElements, r.h, z.zone_depth);
+    warn(msg);
+  }
+}
+
+std::vector<StageSpan> RunOutputs::timeline() const {
+  // The spans point into the summary's stage report: take it by reference.
+  const auto& j = summary_.figures();
+  const auto fdem = j.find("fdem");
+  if (!history_ || history_->rows().empty() || fdem == j.end() || !fdem->contains("stages"))
+    return {};
+  return stage_spans(fdem->at("stages"), history_->column("time").front());
+}
+
+std::optional<std::size_t> RunOutputs::support_row() const {
+  const std::vector<StageSpan> spans = timeline();
+  const StageSpan* support = support_stage(spans);
+  if (!support) return std::nullopt;
+  return row_at(history_->column("time"), support->start);
+}
+
+std::map<std::string, double> RunOutputs::since_support() const {
+  const std::optional<std::size_t> row = support_row();
+  const auto& mon = summary_.figures().value("monitors", nlohmann::json::object());
+  std::map<std::string, double> out;
+  if (!row) return out;
+  const auto add = [&](const std::string& name, const std::string& column,
+                       const nlohmann::json& v) {
+    if (v.is_number()) out[name] = v.get<double>() - history_->column(column)[*row];
+  };
+  for (const Monitor& m : monitors_)
+    if (mon.contains(m.name))
+      add(m.name, m.name + "_radial_mm", mon[m.name].value("radial_mm", nlohmann::json()));
+  add("wall_chord", "wall_chord_convergence_mm",
+      mon.value("wall_chord_convergence_mm", nlohmann::json()));
+  add("shoulder_chord", "shoulder_chord_convergence_mm",
+      mon.value("shoulder_chord_convergence_mm", nlohmann::json()));
+  return out;
+}
+
+// What monitoring installed with the support reads (field convergence
+// data): a run without a lining or bolts stage adds nothing.
+void RunOutputs::add_since_support(nlohmann::json& monitors) const {
+  for (const auto& [name, mm] : since_support())
+    if (monitors.contains(name) && monitors[name].is_object())
+      monitors[name]["radial_since_support_mm"] = mm;
+}
+
+void RunOutputs::write_report() const {
+  ReportExtras extras;
+  extras.since_support_mm = since_support();
+  extras.pictures = pictures_;
+  workflows::write_report(ctx_.output_dir, scene_, summary_.to_json(), extras);
+}
+
+void RunOutputs::plots(const fdem::Engine& e, const mesh::Mesh& m) {
+  PlotWriter plots(ctx_.output_dir, summary_, ctx_.quiet);
+  if (!plots.available()) return;
+  const std::vector<plots::PlotMarker> markers = stage_markers(timeline());
+  time_plots(plots, e, markers);
+  ground_reaction_plot(plots);
+  if (lining_) lining_->plots(plots);
+  if (bolt_results_) {
+    const std::vector<plots::PlotSeries> bolts = bolt_results_->force_curves(e);
+    const std::string title = "Bolt axial force (section force) at step " +
+                              std::to_string(e.step_count()) + ", end of run";
+    if (!bolts.empty())
+      plots.xy("bolt_forces.png", title, "distance from the collar [m]",
+               "axial force [kN per bar], tension +", bolts);
+  }
+  const PictureContext c{e, m, scene_, bolts_};
+  const coupling::VtkGrid grid = picture_grid(e);
+  plots.picture("displacement.png", grid, displacement_picture(c, node_displacements(e)));
+  plots.picture("sigma_max_compressive.png", grid, principal_picture(c, true));
+  plots.picture("sigma_min_compressive.png", grid, principal_picture(c, false));
+  plots.final_mesh(e, false);
+  pictures_ = plots.rendered();
+}
+
+void RunOutputs::time_plots(PlotWriter& plots, const fdem::Engine& e,
+                            const std::vector<plots::PlotMarker>& markers) {
+  const History& h = *history_;
+  const std::vector<double> t = h.column("time");
+  // From the support's installation where asked (and installed): the
+  // rows from then on, less their value then.
+  const std::optional<std::size_t> support = support_row();
+  const bool since = scene_.output.convergence_from_support && support;
+  const std::size_t from = since ? *support : 0;
+  const auto curve = [&](const std::string& column) {
+    return since ? since_row(h.column(column), from) : h.column(column);
+  };
+  const std::vector<double> tt(t.begin() + long(from), t.end());
+  const std::string origin = since ? "since the support's installation" : "from the in-situ state";
+  std::vector<plots::PlotSeries> points;
+  for (const Monitor& mon : monitors_)
+    points.push_back({mon.name, tt, curve(mon.name + "_radial_mm")});
+  plots.xy("convergence.png", "Key points: radial displacement towards the opening",
+           time_axis_label(e), "radial displacement " + origin + " [mm]", points, markers);
+  plots.xy("chord_convergence.png", "Chord convergence (closure between key points)",
+           time_axis_label(e), "closure " + origin + " [mm]",
+           {{"walls (chord)", tt, curve("wall_chord_convergence_mm")},
+            {"shoulders (chord)", tt, curve("shoulder_chord_convergence_mm")}},
+           markers);
+  plots.broken_cracks(e, h, markers);
+}
+
+void RunOutputs::ground_reaction_plot(PlotWriter& plots) {
+  // The implicit stage's points (alpha, the vault's displacement it
+  // allows), and apart the run's final state, which is no point of the
+  // unsupported curve: the support carries the load there.
+  std::vector<double> ratio, settlement;
+  const nlohmann::json& grc = summary_.figures()["ground_reaction_curve"];
+  for (std::size_t i = 0; i + 1 < grc.size(); ++i) {
+    ratio.push_back(grc[i]["support_pressure_ratio"].get<double>());
+    settlement.push_back(grc[i]["vault_settlement_mm"].get<double>());
+  }
+  std::vector<plots::PlotSeries> series{
+      {"implicit stage: core stiffness factor alpha", settlement, ratio}};
+  if (!grc.empty())
+    series.push_back({grc.back()["point"].get<std::string>(),
+                      {grc.back()["vault_settlement_mm"].get<double>()},
+                      {grc.back()["support_pressure_ratio"].get<double>()},
+                      true});
+  plots.xy("ground_reaction.png", "Ground reaction curve at the vault",
+           "vault radial displacement (settlement) from the in-situ state [mm]",
+           "support pressure ratio p/p0 = core stiffness factor alpha [-]", series);
+}
+
+}  // namespace rockfdem::workflows

@@ -1,0 +1,155 @@
+// Everything a tunnel run writes besides the engine's work: history.csv,
+// ParaView frames, the ground reaction curve, PNG plots and summary.json.
+#pragma once
+
+#include <map>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "outputs/bolt_results.hpp"
+#include "outputs/history.hpp"
+#include "outputs/instruments.hpp"
+#include "outputs/lining_output.hpp"
+#include "outputs/monitors.hpp"
+#include "outputs/outer_boundary.hpp"
+#include "outputs/run_plots.hpp"
+#include "outputs/run_timeline.hpp"
+#include "rockfdem/coupling/vtk_writer.hpp"
+#include "rockfdem/fdem/bolt_install.hpp"
+#include "rockfdem/insitu/insitu.hpp"
+#include "rockfdem/workflows/scene.hpp"
+#include "run/last_good.hpp"
+#include "run/phase_timer.hpp"
+#include "run/run_context.hpp"
+#include "run/summary.hpp"
+
+namespace rockfdem::workflows {
+
+class RunOutputs {
+ public:
+  RunOutputs(const Scene& scene, const RunContext& ctx, RunRecord& summary);
+  /// summary.json's insitu keys and the implicit part of the ground reaction curve.
+  void record_insitu(const mesh::Mesh& m, const std::vector<insitu::InsituField>& fields);
+  /// Starts history.csv; `m`'s outer boundary defines the rigid translation
+  /// removed from reported displacements.
+  void begin_history(const std::vector<Monitor>& monitors, const mesh::Mesh& m);
+  /// Bolts whose axial stress the ParaView frames carry (once installed)
+  /// and whose section forces the outputs report (BoltResults); before
+  /// begin_history, which adds their columns.
+  void set_bolts(const fdem::BoltPlan* bolts);
+  /// history.csv's columns for these key points: the run's figures, then
+  /// the bolts' (set_bolts) and the instruments' (set_instruments).
+  std::vector<std::string> history_columns(const std::vector<Monitor>& monitors) const;
+  /// The scene's monitors, extensometers and broken depth along rays:
+  /// history columns after the energy terms, summary entries.
+  void set_instruments(std::unique_ptr<Instruments> instruments) {
+    instruments_ = std::move(instruments);
+  }
+  /// A `lining` or `bolts` stage installed its support (Instruments).
+  void support_installed(const fdem::Engine& e) {
+    if (instruments_) instruments_->support_installed(node_displacements(e));
+  }
+  /// Whether the lining ring is installed as lining (before, its triangles
+  /// are ground still to be excavated): its forces are written from then.
+  void set_lining_installed(bool installed) { lining_installed_ = installed; }
+  /// One history row and (if enabled) one ParaView frame.
+  void record_step(const fdem::Engine& e, const mesh::Mesh& m, const std::vector<Monitor>& monitors,
+                   PhaseTimer& timer, const std::string& stage, double support_ratio);
+  /// The key point displaced most from the in-situ state and |u| [m].
+  std::pair<std::string, double> largest_key_point(const fdem::Engine& e,
+                                                   const std::vector<Monitor>& monitors) const;
+  /// What a restart needs to continue the outputs: history rows, stage
+  /// names, frames written.
+  nlohmann::json state() const;
+  /// Puts state() back; frames listed there are copied from `from_dir` when
+  /// the restart writes to another directory.
+  void restore(const nlohmann::json& state, const std::string& from_dir);
+  /// Counts, monitors, broken cracks, hash, plots, timings; writes summary.json.
+  void finish(const fdem::Engine& e, const mesh::Mesh& m, const std::vector<Monitor>& monitors,
+              PhaseTimer& timer, const fdem::BoltPlan& bolts);
+  /// The hand-off state, before the first explicit step: what a failure in
+  /// that step reports as the last good state (nothing is written yet).
+  void keep_start(const fdem::Engine& e) { last_good_.take(e, e.energy_balance()); }
+  /// summary.json of a run a NumericalError stopped (`why`): the last good
+  /// state's figures (LastGoodState), the dt range, status and diagnostic.
+  void report_failure(const fdem::Engine& e, PhaseTimer& timer, const std::string& why);
+
+ private:
+  /// summary "monitors": each monitor's ux, uy [mm] and position, vault
+  /// settlement, wall and shoulder convergence [mm].
+  nlohmann::json monitors_json(const fdem::Engine& e, const std::vector<Monitor>& monitors) const;
+  /// fdem.handoff_step and dt_min, dt_max over it, the stages' dt and the
+  /// last step's (summary "fdem" holds the stage reports by then).
+  void report_dt();
+  void plots(const fdem::Engine& e, const mesh::Mesh& m);
+  /// convergence.png, chord_convergence.png (from the support's
+  /// installation where the scene asks) and broken.png, with `markers`.
+  void time_plots(PlotWriter& plots, const fdem::Engine& e,
+                  const std::vector<plots::PlotMarker>& markers);
+  /// ground_reaction.png from the summary's ground_reaction_curve.
+  void ground_reaction_plot(PlotWriter& plots);
+  /// The explicit stages on the history's time axis (run_timeline.hpp).
+  std::vector<StageSpan> timeline() const;
+  /// The history row of the support's installation (the first lining or
+  /// bolts stage's start); nothing when the run installed no support.
+  std::optional<std::size_t> support_row() const;
+  /// Key points' radial displacement and the chords' closure [mm] since
+  /// the support's installation (the summary's figures less the history's then).
+  std::map<std::string, double> since_support() const;
+  /// Adds each key point's `radial_since_support_mm` to the summary's monitors.
+  void add_since_support(nlohmann::json& monitors) const;
+  /// report.md from the summary as it stands.
+  void write_report() const;
+  /// The engine grid plus, with bolts installed, "bolt_axial_stress" (steel
+  /// stress along the axis per bolt triangle, NaN elsewhere).
+  coupling::VtkGrid frame_grid(const fdem::Engine& e, const mesh::Mesh& m) const;
+  /// bolt_NN.csv (axial stress and force along each bolt) and summary "bolts".
+  void bolt_outputs(const fdem::Engine& e, const fdem::BoltPlan& bolts);
+  /// summary "resolution" (h / l_ch) and "broken_zone" (depth, clearance to
+  /// the fracture zone's edge), with warnings when either limits the answer.
+  void damage_outputs(const fdem::Engine& e, const mesh::Mesh& m);
+  /// summary "lining": the lining-rock crack elements and how many broke,
+  /// and the ring's section forces (lining.csv).
+  void lining_outputs(const fdem::Engine& e, const mesh::Mesh& m);
+  /// Rigid motion of the outer boundary in the engine (fit to its nodes).
+  RigidFit boundary_fit(const fdem::Engine& e) const;
+  /// Stops the run (NumericalError) when the boundary turns as a rigid body.
+  void check_rigid_motion(const fdem::Engine& e, long step);
+  /// One key point's figures [mm]: ux, uy, |u| and the component towards
+  /// the opening (convergence positive).
+  std::array<double, 4> key_point(const fdem::Engine& e, const Monitor& mon) const;
+  /// Monitor displacement from the in-situ state (implicit part + engine increment).
+  std::array<double, 2> displacement(const fdem::Engine& e, const Monitor& mon) const;
+  /// The same for any engine node, as the instruments read it.
+  NodeDisplacement node_displacements(const fdem::Engine& e) const;
+  /// Closure between two monitors along the line joining them, positive inwards [m].
+  double convergence(const fdem::Engine& e, const std::vector<Monitor>& ms, const std::string& a,
+                     const std::string& b) const;
+  const Scene& scene_;
+  const RunContext& ctx_;
+  RunRecord& summary_;
+  std::vector<insitu::InsituField> fields_;
+  std::unique_ptr<History> history_;
+  std::unique_ptr<Instruments> instruments_;
+  coupling::PvdCollection pvd_;
+  int frame_ = 0;
+  const fdem::BoltPlan* bolts_ = nullptr;
+  std::unique_ptr<BoltResults> bolt_results_;  ///< with bolts in the scene
+  std::unique_ptr<LiningOutput> lining_;       ///< null: no lining ring
+  bool lining_installed_ = false;
+  std::vector<int> boundary_vertices_;  ///< outer boundary, for the rigid translation
+  mutable long fit_step_ = -1;          ///< step the cached fit belongs to
+  mutable RigidFit fit_;
+  double max_rotation_deg_ = 0;    ///< largest |rotation| of the outer boundary so far
+  std::vector<Monitor> monitors_;  ///< the key points (history columns, pictures' window)
+  std::vector<std::string> stage_names_;
+  std::vector<std::string> pictures_;  ///< PNG files rendered, for report.md
+  double handoff_dt_ = 0;    ///< dt of the hand-off step (0: not taken by this run's record)
+  double energy_floor_ = 0;  ///< energy_floor of the model (set by begin_history)
+  LastGoodState last_good_;
+  double fdem_seconds_at_start_ = 0;
+};
+
+}  // namespace rockfdem::workflows

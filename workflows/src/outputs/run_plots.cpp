@@ -1,0 +1,94 @@
+#include "outputs/run_plots.hpp"
+
+#include <cmath>
+#include <iostream>
+
+#include "outputs/run_pictures.hpp"
+#include "run/output_dir.hpp"
+
+namespace rockfdem::workflows {
+namespace {
+
+std::vector<double> scaled(std::vector<double> v, double factor) {
+  for (double& x : v) x *= factor;
+  return v;
+}
+
+}  // namespace
+
+PlotWriter::PlotWriter(std::string dir, RunRecord& summary, bool quiet)
+    : dir_(std::move(dir)), summary_(summary) {
+  std::string why;  // ends with the advice to run under xvfb-run
+  available_ = plots::rendering_available(&why);
+  if (available_) return;
+  summary_.skipped.push_back("plots: " + why);
+  if (!quiet) std::cerr << "rockfdem: plots skipped: " << why << '\n';
+}
+
+void PlotWriter::note(bool rendered, const std::string& file, const std::string& why) {
+  if (rendered)
+    rendered_.push_back(file);
+  else
+    summary_.skipped.push_back("plot " + file + ": " + why);
+}
+
+void PlotWriter::xy(const std::string& file, const std::string& title, const std::string& x_label,
+                    const std::string& y_label, const std::vector<plots::PlotSeries>& series,
+                    const std::vector<plots::PlotMarker>& markers) {
+  std::string why;
+  note(plots::plot_xy_png(title, x_label, y_label, series, output_path(dir_, file), 900, 600, &why,
+                          markers),
+       file, why);
+}
+
+void PlotWriter::panels(const std::string& file, const std::string& title,
+                        const std::string& x_label, const std::vector<plots::PlotPanel>& panels,
+                        int height) {
+  std::string why;
+  note(plots::plot_panels_png(title, x_label, panels, output_path(dir_, file), 900, height, &why),
+       file, why);
+}
+
+void PlotWriter::broken_cracks(const fdem::Engine& e, const History& h,
+                               const std::vector<plots::PlotMarker>& markers) {
+  const std::vector<double> t = h.column("time");
+  xy("broken.png", "Broken crack elements by failure mode", time_axis_label(e),
+     "broken crack elements [count]",
+     {{"mode I", t, h.column("broken_I")},
+      {"mode II", t, h.column("broken_II")},
+      {"mixed", t, h.column("broken_mixed")}},
+     markers);
+}
+
+void PlotWriter::picture(const std::string& file, const coupling::VtkGrid& grid,
+                         const plots::MeshPicture& p) {
+  std::string why;
+  note(plots::render_picture_png(grid, p, output_path(dir_, file), 1000, 800, &why), file, why);
+}
+
+void PlotWriter::final_mesh(const fdem::Engine& e, bool most_tensile) {
+  picture("final_mesh.png", picture_grid(e), whole_model_picture(e, most_tensile));
+}
+
+std::string time_axis_label(const fdem::Engine& e) {
+  // Scaled masses make the simulated time a pseudo-time: say so on the axis.
+  return e.mass_scaling_report().enabled ? "pseudo-time [s] (mass-scaled)" : "time [s]";
+}
+
+void specimen_plots(const fdem::Engine& e, const History& h, bool disc, const std::string& dir,
+                    RunRecord& summary, bool quiet) {
+  PlotWriter plots(dir, summary, quiet);
+  if (!plots.available()) return;
+  const char* stress = disc ? "tensile_stress" : "axial_stress";
+  plots.xy("stress_strain.png", disc ? "Brazilian test: tensile stress 2P/(pi D)" : "UCS test",
+           "nominal axial strain (platen closure / length)",
+           disc ? "tensile stress [MPa]" : "axial stress [MPa]",
+           {{disc ? "tensile stress" : "axial stress", h.column("axial_strain"),
+             scaled(h.column(stress), 1e-6)}});
+  plots.broken_cracks(e, h);
+  // A disc splits in tension (the major principal stress), a UCS specimen
+  // is crushed (the minor).
+  plots.final_mesh(e, disc);
+}
+
+}  // namespace rockfdem::workflows

@@ -1,0 +1,61 @@
+// PNG plots of a run, tunnel or specimen, from its history and final state
+// (docs/output-formats.md, "PNG plots"). Without a display nothing is
+// rendered and `skipped` says why, once; a picture that fails later (the
+// display went away) is named there too.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "outputs/history.hpp"
+#include "rockfdem/fdem/engine.hpp"
+#include "rockfdem/mesh/mesh.hpp"
+#include "rockfdem/plots/plot.hpp"
+#include "run/summary.hpp"
+
+namespace rockfdem::workflows {
+
+class PlotWriter {
+ public:
+  /// Asks for a display; without one, notes why in `skipped` (and on
+  /// stderr unless `quiet`) and available() is false.
+  PlotWriter(std::string dir, RunRecord& summary, bool quiet);
+  bool available() const { return available_; }
+  /// DIR/`file`: a line plot of `series`, with vertical `markers`.
+  void xy(const std::string& file, const std::string& title, const std::string& x_label,
+          const std::string& y_label, const std::vector<plots::PlotSeries>& series,
+          const std::vector<plots::PlotMarker>& markers = {});
+  /// DIR/`file`: charts stacked top to bottom (plots::plot_panels_png).
+  void panels(const std::string& file, const std::string& title, const std::string& x_label,
+              const std::vector<plots::PlotPanel>& panels, int height);
+  /// broken.png: broken crack elements by mode against (pseudo-)time.
+  void broken_cracks(const fdem::Engine& e, const History& h,
+                     const std::vector<plots::PlotMarker>& markers = {});
+  /// final_mesh.png: the whole model coloured by the most compressive
+  /// in-plane principal stress [MPa] (compression positive), or for a
+  /// Brazilian disc (`most_tensile`) the most tensile (tension positive);
+  /// broken cracks in black, excavated triangles grey.
+  void final_mesh(const fdem::Engine& e, bool most_tensile);
+  /// DIR/`file`: a mesh picture of `grid`.
+  void picture(const std::string& file, const coupling::VtkGrid& grid, const plots::MeshPicture& p);
+  /// The files rendered so far, in order (report.md links them).
+  const std::vector<std::string>& rendered() const { return rendered_; }
+
+ private:
+  void note(bool rendered, const std::string& file, const std::string& why);
+  std::string dir_;
+  std::vector<std::string> rendered_;
+  RunRecord& summary_;
+  bool available_ = false;
+};
+
+/// The time axis' label: pseudo-time when the masses are scaled.
+std::string time_axis_label(const fdem::Engine& e);
+
+/// A specimen's pictures: stress_strain.png (axial stress of a UCS test,
+/// or the Brazilian tensile stress 2P / (pi D) of a disc, against the
+/// platens' nominal strain), broken.png and final_mesh.png.
+void specimen_plots(const fdem::Engine& e, const History& h, bool disc, const std::string& dir,
+                    RunRecord& summary, bool quiet);
+
+}  // namespace rockfdem::workflows

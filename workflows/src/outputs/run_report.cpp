@@ -1,0 +1,289 @@
+#include "outputs/run_report.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <sstream>
+
+#include "rockfdem/coupling/atomic_file.hpp"
+#include "rockfdem/mesh/msh_io.hpp"
+#include "run/output_dir.hpp"
+
+namespace rockfdem::workflows {
+namespace {
+
+using nlohmann::json;
+
+// `v` with `decimals` digits after the point.
+std::string fixed(double v, int decimals) {
+  char text[64];
+  std::snprintf(text, sizeof text, "%.*f", decimals, v);
+  return text;
+}
+
+// Three significant digits (stresses, moduli, ratios).
+std::string sig(double v) {
+  char text[64];
+  std::snprintf(text, sizeof text, "%.3g", v);
+  return text;
+}
+
+// A strength or stress [Pa] in MPa; "not given" for 0 (the scene's "none").
+std::string mpa(double pa) { return pa == 0 ? "not given" : sig(pa / 1e6) + " MPa"; }
+
+// A summary scalar as text; "-" where absent or null.
+std::string value_text(const json& v) {
+  if (v.is_number_integer()) return std::to_string(v.get<long>());
+  if (v.is_number()) return sig(v.get<double>());
+  if (v.is_boolean()) return v.get<bool>() ? "yes" : "no";
+  if (v.is_string()) return v.get<std::string>();
+  return "-";
+}
+
+const char* shape_name(mesh::TunnelShape s) {
+  switch (s) {
+    case mesh::TunnelShape::kCircular:
+      return "circular";
+    case mesh::TunnelShape::kHorseshoe:
+      return "horseshoe";
+    case mesh::TunnelShape::kArched:
+      return "arched";
+    case mesh::TunnelShape::kRectangular:
+      return "rectangular";
+  }
+  return "?";
+}
+
+void material_rows(std::ostream& md, const std::string& name, const MaterialSpec& m) {
+  md << "| " << name << " | E " << sig(m.young / 1e9) << " GPa, nu " << sig(m.poisson)
+     << ", density " << sig(m.density) << " kg/m^3 |\n"
+     << "| " << name << " cracks | ft " << mpa(m.tensile_strength) << ", c " << mpa(m.cohesion)
+     << ", phi " << sig(m.friction_angle) << " deg (residual " << sig(m.residual_friction_angle)
+     << " deg), GfI " << sig(m.fracture_energy_I) << " J/m^2, GfII " << sig(m.fracture_energy_II)
+     << " J/m^2 |\n";
+}
+
+void opening_row(std::ostream& md, const Scene& s) {
+  const mesh::TunnelSpec& t = s.mesh.tunnel;
+  md << "| opening | " << shape_name(t.shape) << ", ";
+  if (t.shape == mesh::TunnelShape::kCircular)
+    md << "radius " << sig(t.radius) << " m";
+  else
+    md << "span " << sig(t.span) << " m, height " << sig(t.height) << " m";
+  md << ", lining " << sig(1000 * t.lining_thickness) << " mm, fracture zone "
+     << sig(t.fracture_zone) << " m; domain " << sig(s.mesh.domain.width) << " x "
+     << sig(s.mesh.domain.height) << " m |\n";
+}
+
+void inputs(std::ostream& md, const Scene& s, const json& j) {
+  md << "## Inputs\n\n| what | value |\n|---|---|\n";
+  if (s.mesh.kind == mesh::ModelKind::kTunnel) opening_row(md, s);
+  const json& mesh = j.value("mesh", json::object());
+  md << "| mesh | element size " << sig(s.mesh.size.size_near) << " m at the opening, "
+     << sig(s.mesh.size.size_far) << " m at the boundary; "
+     << value_text(mesh.value("triangles", json())) << " triangles, "
+     << value_text(mesh.value("vertices", json())) << " vertices |\n";
+  for (mesh::Zone z : {mesh::kLining, mesh::kRock})  // the core is excavated
+    if (s.materials.count(z)) material_rows(md, mesh::zone_name(z), s.materials.at(z));
+  md << "| in-situ stress (compression +) | sigma_h " << mpa(s.insitu.sigma_h) << ", sigma_v "
+     << mpa(s.insitu.sigma_v) << ", sigma_h at " << sig(s.insitu.angle_deg)
+     << " deg from x |\n| core stiffness factors alpha (implicit) |";
+  for (double a : s.insitu.alpha) md << ' ' << sig(a);
+  md << " |\n";
+  const BoltSettings& b = s.bolts;
+  long cables = 0;
+  for (auto c : b.is_cable) cables += c;
+  if (!b.segments.empty())
+    md << "| bolts | " << long(b.segments.size()) - cables << " bolts (diameter "
+       << sig(1000 * b.bolt.diameter) << " mm, yield " << mpa(b.bolt.yield_strength) << "), "
+       << cables << " cables (diameter " << sig(1000 * b.cable.diameter) << " mm, yield "
+       << mpa(b.cable.yield_strength) << "), row spacing " << sig(b.bolt.row_spacing)
+       << " m; grout E " << sig(s.grout.young / 1e9) << " GPa |\n";
+}
+
+// One stage's status: what it reached, in words.
+std::string stage_status(const json& st) {
+  const json changes = st.value("changes", json::object());
+  if (st.value("kind", std::string()) == "grout" && changes.is_object()) {
+    if (!changes.value("triggered", false)) return "not triggered";
+    return "grouted " + value_text(changes.value("rejoined", json())) + " cracks";
+  }
+  const json c = st.value("converged", json());
+  if (c.is_null()) {
+    const std::string kind = st.value("kind", std::string());
+    return kind == "lining" || kind == "bolts" ? "installed"
+           : kind == "remove_core"             ? "core removed"
+                                               : "applied (no steps)";
+  }
+  return c.get<bool>() ? "converged" : "stopped before its criteria";
+}
+
+void stages(std::ostream& md, const json& j) {
+  md << "\n## Stages\n\n| # | stage | steps | simulated time [s] | unbalanced ratio at end | "
+        "status |\n|---|---|---|---|---|---|\n";
+  const json& fdem = j.value("fdem", json::object());
+  if (fdem.contains("handoff_step"))
+    md << "| 0 | handoff (implicit to explicit) | 1 | "
+       << sig(fdem["handoff_step"].value("simulated_time", 0.0)) << " | - | - |\n";
+  int i = 1;
+  for (const json& st : fdem.value("stages", json::array()))
+    md << "| " << i++ << " | " << value_text(st.value("kind", json())) << " | "
+       << value_text(st.value("steps", json())) << " | "
+       << value_text(st.value("simulated_time", json())) << " | "
+       << value_text(st.value("unbalanced_ratio", json())) << " | " << stage_status(st) << " |\n";
+}
+
+void status(std::ostream& md, const json& j) {
+  md << "\n## Status\n\n**" << value_text(j.value("status", json("unknown"))) << "**";
+  if (j.contains("status_reason")) md << ": " << value_text(j["status_reason"]);
+  if (j.contains("failure")) md << ": " << value_text(j["failure"]);
+  md << "\n\n";
+  const json& fdem = j.value("fdem", json::object());
+  md << "- steps " << value_text(j.value("steps", json())) << ", simulated time "
+     << value_text(j.value("simulated_time", json())) << " s (pseudo-time where masses are "
+     << "scaled)\n- unbalanced-force ratio: "
+     << value_text(fdem.value("unbalanced_ratio_at_start", json())) << " after the hand-off step, "
+     << value_text(fdem.value("unbalanced_ratio_at_end", json()))
+     << " at the end (equilibrium: below the stage's `ratio`, the key points settled)\n";
+  for (const json& w : j.value("warnings", json::array()))
+    md << "- warning: " << value_text(w) << '\n';
+}
+
+// A row of the key-point table: the figure, since support, the reference.
+void point_row(std::ostream& md, const std::string& name, double total, const ReportExtras& x,
+               const ReferenceSettings& ref) {
+  md << "| " << name << " | " << fixed(total, 2) << " | ";
+  const auto since = x.since_support_mm.find(name);
+  md << (since == x.since_support_mm.end() ? "-" : fixed(since->second, 2)) << " | ";
+  const auto r = ref.mm.find(name);
+  if (r == ref.mm.end()) {
+    md << "- | - |\n";
+    return;
+  }
+  const double computed =
+      ref.from_support && since != x.since_support_mm.end() ? since->second : total;
+  md << fixed(r->second, 2) << " | " << fixed(computed - r->second, 2) << " ("
+     << (r->second != 0 ? fixed(100 * (computed - r->second) / std::abs(r->second), 1) + "%"
+                        : std::string("-"))
+     << ") |\n";
+}
+
+void key_points(std::ostream& md, const Scene& s, const json& j, const ReportExtras& x) {
+  const json& mon = j.value("monitors", json::object());
+  const ReferenceSettings& ref = s.references;
+  md << "\n## Key points and chords (end of run)\n\nRadial displacement: towards the opening "
+        "positive, from the in-situ state (the implicit deconfinement included) and since the "
+        "support's installation. Chords: closure between two key points.";
+  if (!ref.mm.empty())
+    md << " References" << (ref.source.empty() ? "" : " (" + ref.source + ")")
+       << " are measured from "
+       << (ref.from_support ? "the support's installation" : "the in-situ state")
+       << "; difference = computed - reference.";
+  md << "\n\n| point | radial [mm] | since support [mm] | reference [mm] | difference [mm] |\n"
+        "|---|---|---|---|---|\n";
+  for (const char* p :
+       {"vault", "left_shoulder", "right_shoulder", "left_wall", "right_wall", "invert"})
+    if (mon.contains(p) && mon[p].contains("radial_mm"))
+      point_row(md, p, mon[p]["radial_mm"].get<double>(), x, ref);
+  for (const auto& [name, key] :
+       {std::pair<const char*, const char*>{"wall_chord", "wall_chord_convergence_mm"},
+        {"shoulder_chord", "shoulder_chord_convergence_mm"}})
+    if (mon.contains(key)) point_row(md, name, mon[key].get<double>(), x, ref);
+  if (mon.contains("vault_settlement_mm"))
+    md << "\nVault settlement (-uy): " << fixed(mon["vault_settlement_mm"].get<double>(), 2)
+       << " mm.\n";
+}
+
+void bolts(std::ostream& md, const json& j) {
+  if (!j.contains("bolts") || !j["bolts"].is_object()) return;
+  const json& b = j["bolts"];
+  md << "\n## Bolts and cables (end of run)\n\n| bolt | kind | max axial force [kN per bar] | "
+        "at [m from the collar] | max steel stress [MPa] | yielded | broken |\n"
+        "|---|---|---|---|---|---|---|\n";
+  for (const json& e : b.value("each", json::array()))
+    md << "| " << value_text(e.value("name", json())) << " | "
+       << value_text(e.value("kind", json())) << " | "
+       << value_text(e.value("max_axial_force_kN_per_bar", json())) << " | "
+       << value_text(e.value("station_m", json())) << " | "
+       << value_text(e.value("max_steel_stress_MPa", json())) << " | "
+       << value_text(e.value("yielded", json())) << " | " << value_text(e.value("broken", json()))
+       << " |\n";
+  md << "\nSteel crack elements yielding " << value_text(b.value("steel_cracks_yielding", json()))
+     << ", broken " << value_text(b.value("steel_cracks_broken", json()))
+     << "; grout crack elements broken " << value_text(b.value("grout_cracks_broken", json()))
+     << ".\n";
+}
+
+// The scalars of a summary object, one row each (a parallel key's figures
+// carry their unit in the key's name); nested objects one level down.
+void scalar_table(std::ostream& md, const json& o) {
+  md << "| figure | value |\n|---|---|\n";
+  for (const auto& [key, v] : o.items()) {
+    if (v.is_object()) {
+      for (const auto& [sub, w] : v.items())
+        if (!w.is_structured()) md << "| " << key << '.' << sub << " | " << value_text(w) << " |\n";
+    } else if (!v.is_array()) {
+      md << "| " << key << " | " << value_text(v) << " |\n";
+    }
+  }
+}
+
+void lining(std::ostream& md, const json& j) {
+  if (!j.contains("lining") || !j["lining"].is_object()) return;
+  md << "\n## Lining (end of run)\n\n";
+  scalar_table(md, j["lining"]);
+}
+
+void broken_zone(std::ostream& md, const json& j) {
+  const json& b = j.value("broken", json::object());
+  md << "\n## Broken zone (end of run)\n\nBroken crack elements: mode I "
+     << value_text(b.value("mode_I", json())) << ", mode II "
+     << value_text(b.value("mode_II", json())) << ", mixed " << value_text(b.value("mixed", json()))
+     << ".\n\n";
+  if (!j.contains("broken_zone")) return;
+  json z = j["broken_zone"];
+  json rays = z.value("along_rays", json::object());
+  z.erase("along_rays");
+  scalar_table(md, z);
+  if (rays.empty()) return;
+  md << "\n| ray from | broken depth [m] |\n|---|---|\n";
+  for (const auto& [name, r] : rays.items())
+    md << "| " << name << " | " << value_text(r.value("depth_m", json())) << " |\n";
+}
+
+void pictures(std::ostream& md, const ReportExtras& x) {
+  if (x.pictures.empty()) {
+    md << "\n## Pictures\n\nNone rendered (see `skipped` in summary.json).\n";
+    return;
+  }
+  md << "\n## Pictures\n\n";
+  for (const std::string& p : x.pictures) md << "![" << p << "](" << p << ")\n\n";
+}
+
+}  // namespace
+
+std::string report_markdown(const Scene& scene, const json& summary, const ReportExtras& extras) {
+  std::ostringstream md;
+  md << "# Run report: " << (scene.title.empty() ? scene.source : scene.title) << "\n\n"
+     << "Scene `" << scene.source << "`, rockfdem "
+     << value_text(summary.value("rockfdem_version", json())) << ", "
+     << value_text(summary.value("threads", json())) << " threads, state hash `"
+     << value_text(summary.value("state_hash", json())) << "`. Figures in full: summary.json, "
+     << "history.csv.\n\n";
+  inputs(md, scene, summary);
+  stages(md, summary);
+  status(md, summary);
+  key_points(md, scene, summary, extras);
+  bolts(md, summary);
+  lining(md, summary);
+  broken_zone(md, summary);
+  pictures(md, extras);
+  return md.str();
+}
+
+void write_report(const std::string& dir, const Scene& scene, const json& summary,
+                  const ReportExtras& extras) {
+  coupling::atomic_write_text(output_path(dir, "report.md"),
+                              report_markdown(scene, summary, extras));
+}
+
+}  // namespace rockfdem::workflows

@@ -1,0 +1,61 @@
+#include "outputs/run_timeline.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace rockfdem::workflows {
+
+std::vector<StageSpan> stage_spans(const nlohmann::json& stages, double t_handoff) {
+  std::vector<StageSpan> spans;
+  double t = t_handoff;
+  for (const nlohmann::json& s : stages) {
+    const double dt = s.value("simulated_time", 0.0);
+    spans.push_back({s.value("kind", std::string("?")), t, t + dt, &s});
+    t += dt;
+  }
+  return spans;
+}
+
+std::vector<plots::PlotMarker> stage_markers(const std::vector<StageSpan>& spans) {
+  std::vector<plots::PlotMarker> out;
+  const double length = spans.empty() ? 0.0 : spans.back().end - spans.front().start;
+  const auto add = [&](double x, const std::string& label) {
+    // Stages of no steps start where the next one does: one marker, all names.
+    if (!out.empty() && std::abs(out.back().x - x) <= 1e-9 * length)
+      out.back().label += ", " + label;
+    else
+      out.push_back({x, label});
+  };
+  for (const StageSpan& s : spans) {
+    add(s.start, s.kind);
+    const nlohmann::json changes =
+        s.report ? s.report->value("changes", nlohmann::json()) : nlohmann::json();
+    if (s.kind == "grout" && changes.is_object() && changes.value("triggered", false))
+      add(s.end, "grouting: " + std::to_string(changes.value("rejoined", 0L)) +
+                     " broken cracks re-joined");
+  }
+  return out;
+}
+
+const StageSpan* support_stage(const std::vector<StageSpan>& spans) {
+  for (const StageSpan& s : spans)
+    if (s.kind == "lining" || s.kind == "bolts") return &s;
+  return nullptr;
+}
+
+std::size_t row_at(const std::vector<double>& times, double t) {
+  if (times.empty()) return 0;
+  const double tol = 1e-9 * std::abs(times.back() - times.front());
+  std::size_t row = 0;
+  for (std::size_t i = 0; i < times.size(); ++i)
+    if (times[i] <= t + tol) row = i;
+  return row;
+}
+
+std::vector<double> since_row(const std::vector<double>& values, std::size_t from) {
+  std::vector<double> out;
+  for (std::size_t i = from; i < values.size(); ++i) out.push_back(values[i] - values[from]);
+  return out;
+}
+
+}  // namespace rockfdem::workflows

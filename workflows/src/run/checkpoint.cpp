@@ -1,0 +1,596 @@
+#include "run/checkpoint.hpp"
+
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cctype>
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+#include <map>
+#include <vector>
+
+#include "rockfdem/coupling/atomic_file.hpp"
+#include "rockfdem/coupling/vtk_writer.hpp"
+#include "rockfdem/error.hpp"
+#include "rockfdem/fdem/bits_hash.hpp"
+#include "rockfdem/workflows/scene.hpp"
+#include "run/output_dir.hpp"
+#include "run/summary.hpp"
+
+namespace fs = std::filesystem;
+
+namespace rockfdem::workflows {
+namespace {
+
+constexpr char kMagic[8] = {'R', 'F', 'D', 'M', 'C', 'K', 'P', 'T'};
+constexpr const char* kPrefix = "checkpoint_";
+constexpr const char* kSuffix = ".rfck";
+
+template <class T>
+void put(std::string& out, T value) {
+  out.append(reinterpret_cast<const char*>(&value), sizeof value);
+}
+
+void put_block(std::string& out, const std::string& block) {
+  put<std::uint64_t>(out, block.size());
+  out += block;
+}
+
+// Reads from a byte buffer, naming the file and offset when it runs out.
+class Reader {
+ public:
+  Reader(const std::string& path, const std::string& bytes, std::size_t end)
+      : path_(path), bytes_(bytes), end_(end) {}
+  template <class T>
+  T get() {
+    T value;
+    need(sizeof value);
+    std::memcpy(&value, bytes_.data() + at_, sizeof value);
+    at_ += sizeof value;
+    return value;
+  }
+  std::string block() {
+    const auto n = get<std::uint64_t>();
+    need(n);
+    std::string b = bytes_.substr(at_, n);
+    at_ += n;
+    return b;
+  }
+
+ private:
+  void need(std::uint64_t n) const {
+    if (n > end_ - at_)
+      throw InputError("checkpoint " + path_ + ": truncated or corrupt at byte " +
+                       std::to_string(at_) + "; use the previous checkpoint");
+  }
+  const std::string& path_;
+  const std::string& bytes_;
+  std::size_t end_;
+  std::size_t at_ = 0;
+};
+
+// Checkpoints in `dir` (and temporary files of interrupted writes), oldest first.
+void prune(const fs::path& dir, std::size_t keep) {
+  std::vector<fs::path> done, temps;
+  std::error_code ec;
+  for (const auto& entry : fs::directory_iterator(dir, ec)) {
+    const std::string name = entry.path().filename().string();
+    if (name.rfind(kPrefix, 0) == 0 && name.size() > std::strlen(kSuffix) &&
+        name.compare(name.size() - std::strlen(kSuffix), std::string::npos, kSuffix) == 0)
+      done.push_back(entry.path());
+    else if (name.rfind(std::string(".") + kPrefix, 0) == 0)
+      temps.push_back(entry.path());
+  }
+  std::sort(done.begin(), done.end());  // zero-padded step numbers sort in time
+  for (std::size_t i = 0; i + keep < done.size(); ++i) fs::remove(done[i], ec);
+  for (const fs::path& t : temps) fs::remove(t, ec);
+}
+
+}  // namespace
+
+std::uint64_t scene_key(const Scene& scene) {
+  return fdem::fnv1a(scene.restart_key.data(), scene.restart_key.size());
+}
+
+std::string write_checkpoint(const std::string& output_dir, long step, const Scene& scene,
+                             const Checkpoint& checkpoint) {
+  const fs::path dir = fs::path(output_dir) / "checkpoints";
+  std::error_code ec;
+  fs::create_directories(dir, ec);
+  if (ec) throw std::runtime_error("cannot create " + dir.string() + ": " + ec.message());
+  std::string bytes(kMagic, sizeof kMagic);
+  put<std::uint32_t>(bytes, kCheckpointVersion);
+  put<std::uint64_t>(bytes, scene_key(scene));
+  put_block(bytes, checkpoint.run.dump());
+  put_block(bytes, checkpoint.engine_state);
+  put<std::uint64_t>(bytes, fdem::fnv1a(bytes.data(), bytes.size()));
+  char name[64];
+  std::snprintf(name, sizeof name, "%s%012ld%s", kPrefix, step, kSuffix);
+  const std::string path = (dir / name).string();
+  coupling::atomic_write_text(path, bytes);
+  prune(dir, 2);
+  return path;
+}
+
+namespace {
+
+[[noreturn]] void refuse(const std::string& path, const std::string& why) {
+  throw InputError("checkpoint " + path + ": " + why);
+}
+
+// What stat() says a path is, for a message: "a directory", "a FIFO".
+std::string file_kind(mode_t mode) {
+  if (S_ISDIR(mode)) return "a directory";
+  if (S_ISFIFO(mode)) return "a FIFO (named pipe)";
+  if (S_ISCHR(mode)) return "a character device";
+  if (S_ISBLK(mode)) return "a block device";
+  if (S_ISSOCK(mode)) return "a socket";
+  return "not a regular file";
+}
+
+// An open file descriptor, closed by scope.
+class Fd {
+ public:
+  explicit Fd(int fd) : fd_(fd) {}
+  ~Fd() {
+    if (fd_ >= 0) ::close(fd_);
+  }
+  Fd(const Fd&) = delete;
+  Fd& operator=(const Fd&) = delete;
+  int get() const { return fd_; }
+
+ private:
+  int fd_;
+};
+
+// Reads exactly n bytes at `offset`; false when the file ends first.
+bool read_at(int fd, std::uint64_t offset, char* into, std::size_t n) {
+  while (n > 0) {
+    const ssize_t got = ::pread(fd, into, n, static_cast<off_t>(offset));
+    if (got < 0 && errno == EINTR) continue;
+    if (got <= 0) return false;
+    into += got, offset += std::uint64_t(got), n -= std::size_t(got);
+  }
+  return true;
+}
+
+// Opens `path` only if it is a regular file: a FIFO, a device (/dev/urandom,
+// /dev/zero) or a directory is refused by stat() before it is opened, and
+// O_NONBLOCK with fstat() after the open closes the gap in between (a FIFO
+// put in its place then neither blocks the open nor gets read).
+int open_regular(const std::string& path, std::uint64_t& size) {
+  struct stat st {};
+  if (::stat(path.c_str(), &st) != 0)
+    refuse(path, std::string("cannot open the file (") + std::strerror(errno) + ")");
+  if (!S_ISREG(st.st_mode))
+    refuse(path, "is " + file_kind(st.st_mode) + ", not a regular file; give a checkpoint_<step>" +
+                     kSuffix + " file that `rockfdem run --checkpoint-every` wrote");
+  const int fd = ::open(path.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC);
+  if (fd < 0) refuse(path, std::string("cannot open the file (") + std::strerror(errno) + ")");
+  if (::fstat(fd, &st) != 0 || !S_ISREG(st.st_mode)) {
+    ::close(fd);
+    refuse(path, "is not a regular file (it changed while being opened)");
+  }
+  size = std::uint64_t(st.st_size);
+  return fd;
+}
+
+// ---- The run state's structure ---------------------------------------------
+// run.cpp (bolts, start_ratio), RunOutputs::restore (outputs) and
+// StageRunner::restore and verdict() (stages) read the run state with
+// .at() and .get<T>(), which throw nlohmann's own exceptions (exit 1, a
+// raw message) or, for operator[] on a const object, assert. A forged or
+// damaged checkpoint whose checksum was recomputed would reach them: every
+// field they read is checked here first, with its type, so nothing
+// downstream sees a malformed run state.
+
+using nlohmann::json;
+
+class RunStateCheck {
+ public:
+  RunStateCheck(const std::string& path, const Scene& scene) : path_(path), scene_(scene) {}
+
+  void all(const json& run) {
+    object(run, "run state");
+    // nlohmann parses without recursion but dumps (the summary, a message)
+    // with it: a run state nested deeper than any the writer makes is
+    // refused before anything dumps it.
+    if (nesting(run) > kMaxNesting)
+      refuse(path_, "corrupt run state: nested more than " + std::to_string(kMaxNesting) +
+                        " levels deep (a written run state nests 5); use the previous checkpoint");
+    if (scene_.mesh.kind == mesh::ModelKind::kUcs ||
+        scene_.mesh.kind == mesh::ModelKind::kBrazilian)
+      return specimen(member(run, "", "specimen"));
+    stages(member(run, "", "stages"));
+    outputs(member(run, "", "outputs"));
+    bolts(member(run, "", "bolts"));
+    number(member(run, "", "start_ratio"), "start_ratio");
+  }
+
+ private:
+  [[noreturn]] void bad(const std::string& field, const json* value,
+                        const std::string& expected) const {
+    std::string msg = "corrupt run state: field '" + field + "'";
+    if (value)
+      msg += " = " + shown(*value) + " is not " + expected;
+    else
+      msg += " is missing (expected " + expected + ")";
+    refuse(path_, msg + "; use the previous checkpoint");
+  }
+
+  // A value for a message: JSON with every control character and non-ASCII
+  // byte escaped, cut to 60 characters.
+  static constexpr std::size_t kMaxNesting = 32;
+
+  // The deepest nesting of arrays and objects in `v`, without recursion.
+  static std::size_t nesting(const json& v) {
+    std::size_t deepest = 0;
+    std::vector<std::pair<const json*, std::size_t>> todo{{&v, 1}};
+    while (!todo.empty()) {
+      const auto [node, depth] = todo.back();
+      todo.pop_back();
+      if (!node->is_structured()) continue;
+      deepest = std::max(deepest, depth);
+      if (depth > kMaxNesting) break;
+      for (const json& child : *node) todo.push_back({&child, depth + 1});
+    }
+    return deepest;
+  }
+
+  static std::string shown(const json& v) {
+    std::string text = v.dump(-1, ' ', true, json::error_handler_t::replace);
+    if (text.size() > 60) text = text.substr(0, 57) + "...";
+    return text;
+  }
+
+  static std::string join(const std::string& at, const std::string& key) {
+    return at.empty() ? key : at + "." + key;
+  }
+
+  const json& member(const json& obj, const std::string& at, const char* key) const {
+    const auto it = obj.find(key);
+    if (it == obj.end()) bad(join(at, key), nullptr, expected_of(key));
+    return *it;
+  }
+
+  // The expected kind of a missing field, for its message.
+  static std::string expected_of(const std::string& key) {
+    static const std::map<std::string, std::string> kinds = {
+        {"stages", "an object"},
+        {"outputs", "an object"},
+        {"bolts", "an object"},
+        {"stage_index", "an unsigned integer"},
+        {"stage_started", "true or false"},
+        {"stage_first_step", "an integer"},
+        {"stage_t0", "a number"},
+        {"stage_changes", "an object"},
+        {"stage_monitor_u", "an array of numbers"},
+        {"alpha", "a number"},
+        {"core_present", "true or false"},
+        {"lining_installed", "true or false"},
+        {"report", "an array of stage reports"},
+        {"last_checkpoint", "an integer"},
+        {"history", "an array of rows of numbers"},
+        {"frames", "an array of [time, file name] pairs"},
+        {"installed", "an array of 0 and 1"},
+        {"installed_stress", "an array of arrays of [xx, yy, xy] stresses"},
+        {"kind", "a string"},
+        {"steps", "an integer"},
+        {"max_steps", "an integer"},
+        {"unbalanced_ratio", "a number"},
+        {"criteria", "an object"},
+        {"ratio", "a number"},
+        {"settle", "a number or null"},
+        {"converged", "true, false or null"},
+        {"moving_most", "an object or null"},
+        {"key_point", "a string"},
+        {"mm_per_1000_steps", "a number"},
+        {"start_ratio", "a number"},
+        {"specimen", "an object"},
+        {"load", "an object"},
+        {"peak_stress", "a number"},
+        {"peak_strain", "a number"},
+        {"peak_step", "an integer"},
+        {"stopped", "true or false"}};
+    const auto it = kinds.find(key);
+    return it == kinds.end() ? "a value" : it->second;
+  }
+
+  void object(const json& v, const std::string& f) const {
+    if (!v.is_object()) bad(f, &v, "an object");
+  }
+  void array(const json& v, const std::string& f, const std::string& of) const {
+    if (!v.is_array()) bad(f, &v, of);
+  }
+  void boolean(const json& v, const std::string& f) const {
+    if (!v.is_boolean()) bad(f, &v, "true or false");
+  }
+  void integer(const json& v, const std::string& f) const {
+    if (!v.is_number_integer()) bad(f, &v, "an integer");
+  }
+  void number(const json& v, const std::string& f) const {
+    if (!v.is_number()) bad(f, &v, "a number");
+  }
+  void string(const json& v, const std::string& f) const {
+    if (!v.is_string()) bad(f, &v, "a string");
+  }
+  void numbers(const json& v, const std::string& f) const {
+    array(v, f, "an array of numbers");
+    for (std::size_t i = 0; i < v.size(); ++i) number(v[i], f + "[" + std::to_string(i) + "]");
+  }
+
+  void stages(const json& s) {
+    const std::string at = "stages";
+    object(s, at);
+    const json& index = member(s, at, "stage_index");
+    const std::size_t n_stages = scene_.stages.size();
+    if (!index.is_number_unsigned() || index.get<std::uint64_t>() > n_stages)
+      bad(at + ".stage_index", &index,
+          "a stage index from 0 to " + std::to_string(n_stages) + " (the scene's stages)");
+    boolean(member(s, at, "stage_started"), at + ".stage_started");
+    integer(member(s, at, "stage_first_step"), at + ".stage_first_step");
+    number(member(s, at, "stage_t0"), at + ".stage_t0");
+    object(member(s, at, "stage_changes"), at + ".stage_changes");
+    numbers(member(s, at, "stage_monitor_u"), at + ".stage_monitor_u");
+    // Optional: checkpoints from before they were kept lack them.
+    if (s.contains("stage_held")) integer(s["stage_held"], at + ".stage_held");
+    if (s.contains("stage_rates")) numbers(s["stage_rates"], at + ".stage_rates");
+    if (s.contains("unstable")) string(s["unstable"], at + ".unstable");
+    number(member(s, at, "alpha"), at + ".alpha");
+    boolean(member(s, at, "core_present"), at + ".core_present");
+    boolean(member(s, at, "lining_installed"), at + ".lining_installed");
+    const json& report = member(s, at, "report");
+    array(report, at + ".report", "an array of stage reports");
+    for (std::size_t i = 0; i < report.size(); ++i)
+      stage_report(report[i], at + ".report[" + std::to_string(i) + "]");
+    integer(member(s, at, "last_checkpoint"), at + ".last_checkpoint");
+  }
+
+  // The fields StageRunner::verdict() reads from each finished stage.
+  void stage_report(const json& r, const std::string& at) {
+    object(r, at);
+    string(member(r, at, "kind"), at + ".kind");
+    integer(member(r, at, "steps"), at + ".steps");
+    integer(member(r, at, "max_steps"), at + ".max_steps");
+    number(member(r, at, "unbalanced_ratio"), at + ".unbalanced_ratio");
+    const json& converged = member(r, at, "converged");
+    if (!converged.is_boolean() && !converged.is_null())
+      bad(at + ".converged", &converged, "true, false or null");
+    const json& settle = member(r, at, "settle");
+    if (!settle.is_number() && !settle.is_null()) bad(at + ".settle", &settle, "a number or null");
+    const json& criteria = member(r, at, "criteria");
+    object(criteria, at + ".criteria");
+    number(member(criteria, at + ".criteria", "ratio"), at + ".criteria.ratio");
+    number(member(criteria, at + ".criteria", "settle"), at + ".criteria.settle");
+    const json& moving = member(r, at, "moving_most");
+    if (moving.is_null()) return;
+    if (!moving.is_object()) bad(at + ".moving_most", &moving, "an object or null");
+    string(member(moving, at + ".moving_most", "key_point"), at + ".moving_most.key_point");
+    number(member(moving, at + ".moving_most", "mm_per_1000_steps"),
+           at + ".moving_most.mm_per_1000_steps");
+  }
+
+  void outputs(const json& o) {
+    const std::string at = "outputs";
+    object(o, at);
+    history_rows(member(o, at, "history"), at + ".history");
+    const json& names = member(o, at, "stages");
+    array(names, at + ".stages", "an array of stage names");
+    for (std::size_t i = 0; i < names.size(); ++i)
+      string(names[i], at + ".stages[" + std::to_string(i) + "]");
+    if (o.contains("handoff_dt")) number(o["handoff_dt"], at + ".handoff_dt");
+    if (o.contains("max_rotation_deg")) number(o["max_rotation_deg"], at + ".max_rotation_deg");
+    frame_list(member(o, at, "frames"), at + ".frames");
+  }
+
+  void frame_list(const json& frames, const std::string& at) const {
+    array(frames, at, "an array of [time, file name] pairs");
+    for (std::size_t i = 0; i < frames.size(); ++i) {
+      const std::string f = at + "[" + std::to_string(i) + "]";
+      const json& frame = frames[i];
+      if (!frame.is_array() || frame.size() != 2 || !frame[0].is_number() || !frame[1].is_string())
+        bad(f, &frame, "a [time, file name] pair");
+      // The frame is copied from beside the checkpoint into the output
+      // directory by this name: a path would reach outside both.
+      // It is written into the .pvd's XML too.
+      const std::string name = frame[1].get<std::string>();
+      const bool plain = !name.empty() && name.size() <= 255 && name[0] != '.' &&
+                         std::all_of(name.begin(), name.end(), [](char ch) {
+                           return std::isalnum(static_cast<unsigned char>(ch)) || ch == '_' ||
+                                  ch == '-' || ch == '.';
+                         });
+      if (!plain)
+        bad(f + "[1]", &frame[1],
+            "a plain file name (letters, digits, '_', '-' and '.', not starting with '.')");
+    }
+  }
+
+  void history_rows(const json& history, const std::string& at) const {
+    array(history, at, "an array of rows of numbers");
+    for (std::size_t i = 0; i < history.size(); ++i) {
+      const std::string row = at + "[" + std::to_string(i) + "]";
+      numbers(history[i], row);
+      if (history[i].size() != history[0].size())
+        bad(row, &history[i],
+            "a row of " + std::to_string(history[0].size()) + " numbers like the first row");
+    }
+  }
+
+  // What run_specimen.cpp and PlatenLoad::restore read.
+  void specimen(const json& s) const {
+    const std::string at = "specimen";
+    object(s, at);
+    history_rows(member(s, at, "history"), at + ".history");
+    frame_list(member(s, at, "frames"), at + ".frames");
+    integer(member(s, at, "last_checkpoint"), at + ".last_checkpoint");
+    const json& load = member(s, at, "load");
+    object(load, at + ".load");
+    for (const char* key : {"peak_stress", "peak_strain"})
+      number(member(load, at + ".load", key), at + ".load." + key);
+    integer(member(load, at + ".load", "peak_step"), at + ".load.peak_step");
+    boolean(member(load, at + ".load", "stopped"), at + ".load.stopped");
+  }
+
+  void bolts(const json& b) {
+    const std::string at = "bolts";
+    object(b, at);
+    const json& installed = member(b, at, "installed");
+    array(installed, at + ".installed", "an array of 0 and 1");
+    for (std::size_t i = 0; i < installed.size(); ++i) {
+      const json& v = installed[i];
+      if (!v.is_number_integer() || (v.get<std::int64_t>() != 0 && v.get<std::int64_t>() != 1))
+        bad(at + ".installed[" + std::to_string(i) + "]", &v, "0 or 1");
+    }
+    const json& stress = member(b, at, "installed_stress");
+    array(stress, at + ".installed_stress", "an array of arrays of [xx, yy, xy] stresses");
+    if (stress.size() != installed.size())
+      bad(at + ".installed_stress", &stress,
+          "an array of " + std::to_string(installed.size()) + " entries, one per bolt");
+    for (std::size_t i = 0; i < stress.size(); ++i) {
+      const std::string f = at + ".installed_stress[" + std::to_string(i) + "]";
+      array(stress[i], f, "an array of [xx, yy, xy] stresses");
+      for (std::size_t k = 0; k < stress[i].size(); ++k) {
+        const json& s = stress[i][k];
+        const std::string g = f + "[" + std::to_string(k) + "]";
+        if (!s.is_array() || s.size() != 3) bad(g, &s, "an [xx, yy, xy] stress");
+        for (std::size_t c = 0; c < 3; ++c) number(s[c], g + "[" + std::to_string(c) + "]");
+      }
+    }
+  }
+
+  const std::string& path_;
+  const Scene& scene_;
+};
+
+}  // namespace
+
+void validate_run_state(const std::string& path, const nlohmann::json& run, const Scene& scene) {
+  RunStateCheck(path, scene).all(run);
+}
+
+namespace {
+
+[[noreturn]] void truncated(const std::string& path, std::uint64_t size, const std::string& what) {
+  refuse(path, "truncated or corrupt: " + what + ", but the file holds " + std::to_string(size) +
+                   " bytes; use the previous checkpoint");
+}
+
+// The fixed header (magic, version) and the declared section sizes, which
+// must add up to the file's size exactly before the body is read: a header
+// that claims more than the file holds (a sparse or damaged file) is
+// refused after 36 bytes.
+void check_header(int fd, const std::string& path, std::uint64_t size) {
+  constexpr std::uint64_t kFixed = sizeof kMagic + sizeof(std::uint32_t) + sizeof(std::uint64_t);
+  constexpr std::uint64_t kSize = sizeof(std::uint64_t);
+  char magic[sizeof kMagic];
+  if (size < sizeof kMagic + kSize || !read_at(fd, 0, magic, sizeof magic) ||
+      std::memcmp(magic, kMagic, sizeof kMagic) != 0)
+    refuse(path, "not a rockfdem checkpoint (no RFDMCKPT header)");
+  std::uint32_t version = 0;
+  if (!read_at(fd, sizeof kMagic, reinterpret_cast<char*>(&version), sizeof version))
+    truncated(path, size, "the header ends within the format version");
+  if (version != kCheckpointVersion)
+    refuse(path, "format version " + std::to_string(version) + "; this build reads version " +
+                     std::to_string(kCheckpointVersion));
+  std::uint64_t n_run = 0, n_engine = 0;
+  if (size < kFixed + kSize || !read_at(fd, kFixed, reinterpret_cast<char*>(&n_run), kSize))
+    truncated(path, size, "the header ends before the run state's size");
+  const std::uint64_t after_run_size = kFixed + kSize;
+  // Room for the run state, the engine state's size and the checksum.
+  if (n_run > size - after_run_size || size - after_run_size - n_run < 2 * kSize)
+    truncated(path, size, "the header declares a run state of " + std::to_string(n_run) + " bytes");
+  const std::uint64_t engine_size_at = after_run_size + n_run;
+  if (!read_at(fd, engine_size_at, reinterpret_cast<char*>(&n_engine), kSize))
+    truncated(path, size, "the file ends within the engine state's size");
+  const std::uint64_t room = size - engine_size_at - 2 * kSize;
+  if (n_engine != room)
+    truncated(path, size,
+              "the header declares a run state of " + std::to_string(n_run) +
+                  " bytes and an engine state of " + std::to_string(n_engine) + " bytes (" +
+                  (n_engine > room ? "more than" : "less than") + " the " + std::to_string(room) +
+                  " bytes left for it)");
+}
+
+}  // namespace
+
+Checkpoint read_checkpoint(const std::string& path, const Scene& scene) {
+  // 1. A regular file, or nothing is read at all.
+  std::uint64_t size = 0;
+  const Fd fd(open_regular(path, size));
+  // 2. The header and the sections' sizes.
+  check_header(fd.get(), path, size);
+
+  // 3. The body, now known to be what the header says, and its checksum.
+  std::string bytes(size, '\0');
+  if (!read_at(fd.get(), 0, bytes.data(), bytes.size()))
+    truncated(path, size, "the file became shorter while being read");
+  const std::size_t body = bytes.size() - sizeof(std::uint64_t);
+  std::uint64_t stored;
+  std::memcpy(&stored, bytes.data() + body, sizeof stored);
+  if (stored != fdem::fnv1a(bytes.data(), body))
+    refuse(path, "checksum mismatch (" + std::to_string(bytes.size()) +
+                     " bytes, truncated or corrupt); use the previous checkpoint");
+  Reader r(path, bytes, body);
+  r.get<std::uint64_t>();  // magic
+  r.get<std::uint32_t>();  // version, checked above
+  if (r.get<std::uint64_t>() != scene_key(scene))
+    refuse(path,
+           "written for another scene (or other --set values); restart with the scene "
+           "and overrides of the original run");
+  Checkpoint c;
+  try {
+    c.run = nlohmann::json::parse(r.block());
+  } catch (const nlohmann::json::exception& e) {
+    refuse(path, std::string("corrupt run state: ") + e.what());
+  }
+  validate_run_state(path, c.run, scene);
+  c.engine_state = r.block();
+  return c;
+}
+
+std::string run_dir_of(const std::string& checkpoint) {
+  const fs::path p = fs::absolute(checkpoint);
+  return p.parent_path().parent_path().string();
+}
+
+bool claim_output_dir(const Scene& scene, const RunContext& ctx) {
+  const bool continues_here =
+      !ctx.restart.empty() && same_directory(ctx.output_dir, run_dir_of(ctx.restart));
+  return prepare_output_dir(ctx.output_dir, scene, ctx.force, continues_here);
+}
+
+nlohmann::json frames_state(const coupling::PvdCollection& pvd) {
+  nlohmann::json frames = nlohmann::json::array();
+  for (const coupling::PvdEntry& f : pvd.entries()) frames.push_back({f.time, f.file});
+  return frames;
+}
+
+int restore_frames(const nlohmann::json& frames, const std::string& from_dir,
+                   const std::string& to_dir, coupling::PvdCollection& pvd, RunRecord& summary) {
+  std::error_code same_ec;
+  const bool same_dir = fs::equivalent(from_dir, to_dir, same_ec);
+  int n = 0;
+  for (const auto& f : frames) {
+    const std::string name = f.at(1).get<std::string>();
+    if (!same_dir) {
+      // The earlier frames live beside the checkpoint's run; the series
+      // stays whole only if they come along.
+      std::error_code ec;
+      fs::copy_file(output_path(from_dir, name), output_path(to_dir, name),
+                    fs::copy_options::overwrite_existing, ec);
+      if (ec)
+        summary.skipped.push_back("frame " + name + " of the restarted run: not found in " +
+                                  from_dir);
+    }
+    pvd.add(f.at(0).get<double>(), name);
+    ++n;
+  }
+  if (n > 0) pvd.write();
+  return n;
+}
+
+}  // namespace rockfdem::workflows

@@ -1,0 +1,33 @@
+// The state a failed run reports. A NumericalError leaves the engine
+// diverged (an inverted triangle, a broken energy balance); the outputs
+// keep the last state that passed its checks, the one the last frame
+// shows, and summary.json describes that one, not the wreck.
+#pragma once
+
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "rockfdem/fdem/engine.hpp"
+#include "run/phase_timer.hpp"
+#include "run/summary.hpp"
+
+namespace rockfdem::workflows {
+
+class LastGoodState {
+ public:
+  /// Notes the engine's state once it passed the energy check (`energy`,
+  /// its balance) and was written; `monitors`: summary.json's monitor
+  /// entries for it (none for specimens).
+  void take(const fdem::Engine& e, const fdem::EnergyBalance& energy,
+            nlohmann::json monitors = nlohmann::json::object());
+  /// summary.json of a run a NumericalError stopped: the model's counts
+  /// and the timings so far, this state's steps, dt, time, broken counts,
+  /// energy, monitors and hash, status "failed" and the diagnostic.
+  void report_failure(const fdem::Engine& e, const PhaseTimer& timer, const std::string& why,
+                      RunRecord& summary) const;
+
+ private:
+  nlohmann::json figures_;  ///< summary keys of the last good state; null before the first
+};
+
+}  // namespace rockfdem::workflows

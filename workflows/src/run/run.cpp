@@ -1,0 +1,374 @@
+// `rockfdem run` of a tunnel: the staged sequence of the seed paper.
+//
+//   1. mesh (gmsh)
+//   2. in-situ and core softening, implicit (deal.II), one solve per alpha
+//   3. hand-off: the last alpha's field becomes the engine's initial state
+//      (the core keeps alpha_h E, so a later factor alpha is alpha / alpha_h)
+//   4. the scene's explicit stages in order (soften, lining, remove_core,
+//      equilibrium), each to its own stop criterion
+//
+// Nothing is written until the engine has accepted the scene (engine.dt
+// included) and a restart's checkpoint fits it: a refused run leaves OUTDIR
+// as it found it.
+#include "run/run.hpp"
+
+#include <iostream>
+#include <sstream>
+
+#include "commands/commands.hpp"
+#include "outputs/continuum_comparison.hpp"
+#include "outputs/continuum_counterpart.hpp"
+#include "rockfdem/error.hpp"
+#include "rockfdem/mesh/build.hpp"
+#include "rockfdem/mesh/msh_io.hpp"
+#include "run/implicit_check.hpp"
+#include "run/interrupt.hpp"
+#include "run/output_dir.hpp"
+#include "scene/scene_reader.hpp"
+#include "stages/stage_inputs.hpp"
+
+namespace rockfdem::workflows {
+namespace {
+
+// Bolt installation is state a restart needs: which bolts and their stress then.
+nlohmann::json bolt_state(const fdem::BoltPlan& bolts) {
+  return {{"installed", bolts.installed}, {"installed_stress", bolts.installed_stress}};
+}
+
+void restore_bolts(const nlohmann::json& s, fdem::BoltPlan& bolts, const std::string& file) {
+  std::vector<char> installed = s.at("installed").get<std::vector<char>>();
+  auto stress = s.at("installed_stress").get<std::vector<std::vector<std::array<double, 3>>>>();
+  // The plan comes from the scene: a checkpoint of another plan would be
+  // indexed out of its bounds.
+  if (installed.size() != bolts.specs.size() || stress.size() != bolts.specs.size())
+    throw InputError(file + ": corrupt run state: field 'bolts' holds " +
+                     std::to_string(installed.size()) + " bolts; the scene has " +
+                     std::to_string(bolts.specs.size()));
+  for (std::size_t b = 0; b < stress.size(); ++b)
+    if (!stress[b].empty() && stress[b].size() != bolts.owned[b].size())
+      throw InputError(file + ": corrupt run state: field 'bolts.installed_stress' of bolt " +
+                       std::to_string(b) + " has " + std::to_string(stress[b].size()) +
+                       " triangles; the bolt owns " + std::to_string(bolts.owned[b].size()));
+  bolts.installed = std::move(installed);
+  bolts.installed_stress = std::move(stress);
+}
+
+// The run state's fields sized by the key points: history rows (one value
+// per history.csv column) and the stage's monitor displacements (a pair per
+// key point). Checked here as the restore would, before anything is written.
+void check_key_point_fields(const nlohmann::json& run, const std::vector<Monitor>& monitors,
+                            const RunOutputs& out, const std::string& file) {
+  const std::size_t width = out.history_columns(monitors).size();
+  for (const auto& row : run.at("outputs").at("history"))
+    if (row.size() != width)
+      throw InputError(file + ": corrupt run state: a history row has " +
+                       std::to_string(row.size()) + " values; history.csv has " +
+                       std::to_string(width) + " columns");
+  const std::size_t n_u = run.at("stages").at("stage_monitor_u").size();
+  if (n_u != 2 * monitors.size())
+    throw InputError(file + ": corrupt run state: field 'stages.stage_monitor_u' holds " +
+                     std::to_string(n_u) + " values; the model's " +
+                     std::to_string(monitors.size()) + " key points need " +
+                     std::to_string(2 * monitors.size()));
+}
+
+/// A restart's engine state and bolts put back, and the run state checked
+/// against the scene and mesh, before the output folder is claimed: a
+/// checkpoint that does not fit leaves OUTDIR as it found it. Returns the
+/// hand-off's unbalanced-force ratio.
+double restore_before_writing(const Checkpoint& resume, const std::string& file,
+                              const std::vector<Monitor>& monitors, const RunOutputs& out,
+                              fdem::Engine& engine, fdem::BoltPlan& bolts) {
+  try {
+    std::istringstream state(resume.engine_state);
+    engine.load_state(state);
+  } catch (const InputError& e) {
+    throw InputError("checkpoint " + file + ": its engine state: " + e.what());
+  }
+  restore_bolts(resume.run.at("bolts"), bolts, file);
+  check_key_point_fields(resume.run, monitors, out, file);
+  return resume.run.at("start_ratio").get<double>();
+}
+
+/// The bolts marked on the mesh and their steel models. The engine's
+/// refusals (a strip too stiff or too soft for the rock around it, a bolt
+/// crossing no triangle edge) arise from the design and the mesh together;
+/// they get the scene and its keys here, before anything is written.
+fdem::BoltPlan planned_bolts(const Scene& scene, fdem::ModelInput& in) {
+  try {
+    return fdem::plan_bolts(in, bolt_specs(scene));
+  } catch (const InputError& e) {
+    throw InputError(scene.source + ": the bolt design cannot be modelled on this mesh (" +
+                     e.what() +
+                     "); adjust [bolts] / [cables] (young, diameter, row_spacing, "
+                     "strengths), materials.rock.young or mesh.size_near");
+  }
+}
+
+}  // namespace
+
+Run::Run(const Scene& scene, const RunContext& ctx)
+    : scene_(scene),
+      ctx_(ctx),
+      restart_(!ctx.restart.empty()),
+      summary_(scene, ctx.threads),
+      out_(scene, ctx, summary_) {}
+
+template <class F>
+void Run::reporting_failure(F&& f) {
+  try {
+    f();
+  } catch (const NumericalError& err) {
+    const std::string why = with_likely_cause(scene_, err.what());
+    out_.report_failure(engine(), timer_, why);
+    throw NumericalError(why);
+  }
+}
+
+int Run::run() {
+  refuse_unsupported();
+  read_restart();
+  make_mesh();
+  solve_insitu();
+  if (scene_.stages.empty()) return write_implicit_results_only();
+  build_engine();
+  place_instruments();
+  write_first_outputs();
+  take_handoff_step();
+  begin_stages();
+  run_stages();
+  compare_with_references();
+  finish();
+  return 0;
+}
+
+void Run::refuse_unsupported() const {
+  if (scene_.insitu.unit_weight > 0)
+    throw InputError(scene_.source + ": key 'insitu.unit_weight' = " +
+                     detail::number_text(scene_.insitu.unit_weight) +
+                     ": `rockfdem run` of a tunnel needs a uniform in-situ stress (0); the "
+                     "gradient is supported by `rockfdem insitu`");
+}
+
+// A bad checkpoint is refused before anything is written.
+void Run::read_restart() {
+  if (restart_) resume_ = read_checkpoint(ctx_.restart, scene_);
+}
+
+void Run::make_mesh() {
+  mesh::MeshReport report;
+  mesh_ = keeping_threads(ctx_, [&] { return mesh::build_mesh(scene_.mesh, &report); });
+  summary_.record_mesh(mesh_, report);
+  timer_.stamp("mesh");
+  stop_if_interrupted("meshing");
+}
+
+void Run::solve_insitu() {
+  fields_ = keeping_threads(ctx_, [&] { return insitu::solve_insitu(mesh_, insitu_spec(scene_)); });
+  check_implicit_field(scene_, mesh_, fields_);
+  timer_.stamp("insitu");
+  stop_if_interrupted("the implicit stage");
+}
+
+// [[stages]] holds only "insitu": the scene asks for the elastic implicit
+// results alone.
+int Run::write_implicit_results_only() {
+  write_first_outputs();
+  summary_.skipped.push_back("fdem: the scene's only stage is the implicit in-situ stage");
+  summary_.status = "completed";
+  summary_.set_timings(timer_);
+  summary_.write(output_path(ctx_.output_dir, "summary.json"));
+  return 0;
+}
+
+void Run::build_engine() {
+  fdem::ModelInput in = engine_input(scene_, mesh_, handoff(), ctx_.threads);
+  add_support_materials(in);
+  if (!scene_.bolts.segments.empty()) bolts_ = planned_bolts(scene_, in);
+  engine_.emplace(make_engine(in, scene_, ctx_.force_dt));
+  refuse_dt_with_stage_damping(in.damping);
+}
+
+// Key points and instruments before anything is written: a point in no
+// triangle or in the core is refused first, as is a restart's run state
+// that does not fit them.
+void Run::place_instruments() {
+  monitors_ = tunnel_monitors(scene_.mesh, mesh_, engine());
+  out_.set_instruments(std::make_unique<Instruments>(scene_, mesh_, engine(), monitors_, bolts_));
+  out_.set_bolts(&bolts_);
+  if (restart_)
+    start_ratio_ = restore_before_writing(resume_, ctx_.restart, monitors_, out_, engine(), bolts_);
+  timer_.stamp("fdem setup");
+}
+
+// The scene is accepted: make (or claim) OUTDIR and write what the mesh and
+// the implicit stage give.
+void Run::write_first_outputs() {
+  const bool claimed = claim_output_dir(scene_, ctx_);
+  // A fresh run's checkpoints must not mix with an earlier run's (and a
+  // folder no run claimed keeps whatever it holds).
+  if (!restart_ && claimed) remove_checkpoints(ctx_.output_dir);
+  mesh::write_msh(mesh_, output_path(ctx_.output_dir, "mesh.msh"));
+  out_.record_insitu(mesh_, fields_);
+  timer_.stamp("output");
+}
+
+// The first explicit step, with the hand-off's damping: its unbalanced
+// force ratio is the start's. A restart has it from its checkpoint.
+void Run::take_handoff_step() {
+  if (!restart_) {
+    for (std::size_t t = 0; t < mesh_.n_triangles(); ++t)
+      if (!handoff().active[t]) engine().set_active(t, false);
+    out_.keep_start(engine());
+    reporting_failure([&] { engine().step(); });
+    start_ratio_ = engine().unbalanced_force_ratio();
+    engine().set_damping(stage_damping(scene_));
+  }
+  timer_.stamp("fdem setup");
+}
+
+void Run::begin_stages() {
+  out_.begin_history(monitors_, mesh_);
+  stages_ = std::make_unique<StageRunner>(engine(), mesh_, handoff(), scene_, ctx_, out_, monitors_,
+                                          bolts_, support_);
+  if (restart_) {
+    try {
+      out_.restore(resume_.run.at("outputs"), run_dir_of(ctx_.restart));
+      stages_->restore(resume_.run.at("stages"));
+    } catch (const InputError& e) {
+      throw InputError(ctx_.restart + ": " + e.what());
+    }
+    summary_.restarted_from = CheckpointMark{ctx_.restart, engine().step_count()};
+  } else {
+    reporting_failure(
+        [&] { out_.record_step(engine(), mesh_, monitors_, timer_, "handoff", handoff().alpha); });
+  }
+  stages_->set_checkpoint(
+      ctx_.checkpoint_every >= 0 ? ctx_.checkpoint_every : scene_.output.checkpoint_every,
+      [this] { save_checkpoint(); });
+}
+
+void Run::run_stages() {
+  try {
+    stages_->run_all(timer_);
+  } catch (const Interrupted&) {
+    summary_.status = "interrupted";
+    summary_.figures()["fdem"] = {{"stages", stages_->report()}};
+    out_.finish(engine(), mesh_, monitors_, timer_, bolts_);
+    throw;
+  } catch (const NumericalError& e) {
+    // The frames and history rows written so far are the last good output.
+    summary_.figures()["fdem"] = {{"stages", stages_->report()}};
+    const std::string why = with_likely_cause(scene_, e.what());
+    out_.report_failure(engine(), timer_, why);
+    throw NumericalError(why);
+  } catch (const InputError& e) {
+    const std::string why = stage_input_error(e);
+    summary_.figures()["fdem"] = {{"stages", stages_->report()}};
+    out_.report_failure(engine(), timer_, why);
+    throw InputError(why);
+  }
+}
+
+// With the core removed: the continuum reference of the relaxed state, the
+// open excavation.
+void Run::compare_with_references() {
+  if (stages_->core_present()) return;
+  insitu::InsituSpec open = insitu_spec(scene_);
+  open.alphas = {0.0};
+  open.lining.active = false;
+  if (!has_lining_ring(scene_)) {
+    const insitu::InsituField reference =
+        keeping_threads(ctx_, [&] { return insitu::solve_insitu(mesh_, open).back(); });
+    summary_.figures()["comparison"] = compare_with_continuum(
+        scene_, mesh_, engine(), reference, output_path(ctx_.output_dir, "fdem_vs_continuum.csv"));
+  }
+  compare_with_continuum_counterpart(scene_, ctx_, mesh_, engine(), handoff(), monitors_, summary_);
+  timer_.stamp("insitu");
+}
+
+// The verdict of the stages, the run's figures and the last outputs.
+void Run::finish() {
+  const RunVerdict verdict = stages_->verdict();
+  summary_.status = verdict.status;
+  if (!verdict.message.empty()) {
+    summary_.status_reason = verdict.message;
+    summary_.warnings.push_back(verdict.status + ": " + verdict.message);
+    std::cerr << "warning: " << verdict.status << ": " << verdict.message << '\n';
+  }
+  summary_.figures()["damping"] = {{"local", stage_damping(scene_).local},
+                                   {"mass_proportional", scene_.engine.mass_damping},
+                                   {"kinetic", scene_.engine.kinetic_damping},
+                                   {"local_given", scene_.engine.local_damping >= 0}};
+  summary_.figures()["fdem"] = {{"unbalanced_ratio_at_start", start_ratio_},
+                                {"unbalanced_ratio_at_end", engine().unbalanced_force_ratio()},
+                                {"handoff_alpha", handoff().alpha},
+                                {"stages", stages_->report()}};
+  out_.finish(engine(), mesh_, monitors_, timer_, bolts_);
+  if (!ctx_.quiet)
+    std::cout << "status: " << verdict.status
+              << (verdict.message.empty() ? " (every stage met its criteria)"
+                                          : " (" + verdict.message + ")")
+              << '\n';
+}
+
+// A signal between the implicit phases: nothing to checkpoint yet. The
+// scene is valid, so the output directory may be made for the summary.
+void Run::stop_if_interrupted(const char* after) {
+  const int sig = interrupt_requested();
+  if (!sig) return;
+  claim_output_dir(scene_, ctx_);
+  summary_.status = "interrupted";
+  summary_.set_timings(timer_);
+  summary_.write(output_path(ctx_.output_dir, "summary.json"));
+  throw Interrupted(sig, std::string("interrupted by signal ") + std::to_string(sig) + " after " +
+                             after +
+                             "; summary.json is written (no explicit step yet, so no checkpoint)");
+}
+
+// The grout and the lining-rock bond: engine materials the support stages
+// give crack elements.
+void Run::add_support_materials(fdem::ModelInput& in) {
+  support_.grout = int(in.materials.size());
+  in.materials.push_back(grout_material(scene_));
+  if (scene_.materials.count(mesh::kLining)) {
+    support_.lining_interface = int(in.materials.size());
+    in.materials.push_back(lining_interface_material(scene_));
+  }
+}
+
+// The stages' local damping lowers the limit by sqrt(1 + alpha): an
+// explicit dt must hold then too, and is refused before anything is written.
+void Run::refuse_dt_with_stage_damping(const fdem::DampingSettings& handoff_damping) {
+  if (scene_.engine.dt <= 0 || ctx_.force_dt) return;
+  engine().set_damping(stage_damping(scene_));
+  refuse_dt_above(scene_, scene_.engine.dt, engine().critical_dt(),
+                  "this mesh and its penalties with the stages' damping");
+  engine().set_damping(handoff_damping);
+}
+
+void Run::save_checkpoint() {
+  Checkpoint c;
+  c.run = {{"stages", stages_->state()},
+           {"outputs", out_.state()},
+           {"bolts", bolt_state(bolts_)},
+           {"start_ratio", start_ratio_}};
+  std::ostringstream bytes;
+  engine().save_state(bytes);
+  c.engine_state = bytes.str();
+  const std::string path = write_checkpoint(ctx_.output_dir, engine().step_count(), scene_, c);
+  summary_.checkpoint = CheckpointMark{path, engine().step_count()};
+}
+
+// An explicit dt above the limit a later stage brings (lining, bolts, grout
+// stiffen the model) is found only there, after outputs exist.
+std::string Run::stage_input_error(const InputError& e) {
+  const bool dt = scene_.engine.dt > 0 && engine().critical_dt() < scene_.engine.dt;
+  if (!dt) return scene_.source + ": " + e.what();
+  return scene_.source + ": key 'engine.dt' = " + detail::number_text(scene_.engine.dt) +
+         " s: " + e.what() + " (engine.dt = 0 follows the limit through every stage)";
+}
+
+int run_tunnel(const Scene& scene, const RunContext& ctx) { return Run(scene, ctx).run(); }
+
+}  // namespace rockfdem::workflows

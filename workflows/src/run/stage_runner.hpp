@@ -1,0 +1,130 @@
+// The explicit construction stages of a tunnel run, in the scene's order.
+// Each stage changes the model (soften the core, install the lining or the
+// bolts, remove the core, grout) and then steps to its own stop criterion
+// (unbalanced-force ratio, step cap, simulated time), writing history rows
+// and frames.
+//
+// Checkpoints: a cursor (stage index, the stage's first step and time, the
+// changes it made) and the runner's flags make its state(); restore() puts
+// them back, and run_all() then continues the stage where it stopped.
+// Output chunks end on multiples of the stage's every_steps counted from
+// the stage's first step, so a restarted run outputs at the same steps as
+// an uninterrupted one.
+#pragma once
+
+#include <functional>
+#include <nlohmann/json.hpp>
+#include <vector>
+
+#include "outputs/monitors.hpp"
+#include "outputs/run_outputs.hpp"
+#include "rockfdem/fdem/bolt_install.hpp"
+#include "rockfdem/fdem/engine.hpp"
+#include "rockfdem/insitu/insitu.hpp"
+#include "rockfdem/workflows/scene.hpp"
+#include "run/phase_timer.hpp"
+#include "run/run_context.hpp"
+#include "stages/stage.hpp"
+
+namespace rockfdem::workflows {
+
+/// Where a run stands once its stages end (summary.json "status"):
+/// completed (the last stage that stepped met its equilibrium criteria),
+/// not_at_equilibrium (it stopped at its cap or time first), unstable (a
+/// key point moved beyond the stage's fraction of the span, or accelerated:
+/// the opening is closing, an engineering answer rather than a failure).
+struct RunVerdict {
+  std::string status = "completed";
+  std::string message;  ///< what a not-completed status rests on; empty when completed
+};
+
+class StageRunner {
+ public:
+  StageRunner(fdem::Engine& engine, const mesh::Mesh& m, const insitu::InsituField& handoff,
+              const Scene& scene, const RunContext& ctx, RunOutputs& out,
+              const std::vector<Monitor>& monitors, fdem::BoltPlan& bolts,
+              SupportMaterials materials);
+  /// Called to write a checkpoint: every `every` steps (at the next output
+  /// step; 0: never) and when a signal interrupts the run.
+  void set_checkpoint(long every, std::function<void()> save);
+  /// Runs the stages from the cursor to the end. Throws Interrupted (after
+  /// a checkpoint and a last history row) when SIGINT or SIGTERM arrives.
+  void run_all(PhaseTimer& timer);
+  /// One entry per stage run: kind, steps, simulated time, dt, final ratio, converged.
+  const nlohmann::json& report() const { return report_; }
+  bool core_present() const { return model_.core_present; }
+  /// The run's status from the stages run so far.
+  RunVerdict verdict() const;
+  nlohmann::json state() const;
+  void restore(const nlohmann::json& state);
+
+  // What the stages (stages/stage_<kind>.cpp) drive.
+  StageModel& model() { return model_; }
+  /// Steps in output chunks until the stage's criterion; returns converged.
+  /// With a `broken_target` > 0, until that many crack elements are broken.
+  bool step_until(const StageSpec& stage, long broken_target);
+  /// Whether an unstable opening ended the stages.
+  bool stopped() const { return stopped_; }
+  /// Simulated time since the stage began [s].
+  double stage_time() const { return model_.engine.time() - cursor_.t0; }
+
+ private:
+  struct Cursor {
+    std::size_t index = 0;  ///< stage in scene.stages
+    bool started = false;   ///< the stage's changes are made; it is stepping
+    long first = 0;         ///< the stage's first step
+    double t0 = 0;          ///< the simulated time at its start
+    nlohmann::json changes = nlohmann::json::object();
+    std::vector<double> monitor_u;  ///< monitors' (ux, uy) at the last output [m]
+    int held = 0;                   ///< consecutive outputs meeting ratio and settle
+    std::vector<double> rates;      ///< largest monitor move per 1000 steps, per output [m]
+  };
+  /// Stops the run as unstable when a key point passed the stage's fraction
+  /// of the span, has been accelerating, or (for a stage that stops on its
+  /// `criteria`) keeps moving as fast with the forces balanced; true when it did.
+  bool unstable(const StageSpec& stage, bool criteria);
+  void run(const StageSpec& stage);
+  /// Writes a checkpoint and a last history row, then throws Interrupted.
+  [[noreturn]] void interrupted(const StageSpec& stage);
+  /// One history row (and frame) of the stage.
+  void record_step(const StageSpec& stage);
+  /// Whether the stage's stop criterion holds at this output: `reached`
+  /// with a broken-count target, else ratio and settle held `hold` times.
+  bool criterion_met(const StageSpec& stage, long broken_target, bool reached);
+  /// A checkpoint when checkpoint_every steps have passed since the last.
+  void checkpoint_if_due();
+  /// Monitors' displacements (ux, uy per monitor) [m].
+  std::vector<double> monitor_displacements() const;
+  /// The settle measure of the last output interval of `steps` steps: the
+  /// largest monitor displacement change per 1000 steps over the largest
+  /// monitor displacement (0 when nothing moved); updates cursor_.monitor_u.
+  double settle_measure(long steps);
+  /// Steps `n` times unless a signal arrives (false) or, with a
+  /// `broken_target` > 0, that many crack elements are broken (checked
+  /// after every step, so the trigger does not depend on the output
+  /// interval or the mesh; *reached set).
+  bool advance(long n, long broken_target, bool* reached);
+  /// The stage's report entry (what report() lists).
+  nlohmann::json report_entry(const StageSpec& stage, const nlohmann::json& changes,
+                              bool converged) const;
+
+  StageModel model_;
+  fdem::Engine& engine_;  ///< model_.engine
+  RunOutputs& out_;
+  const Scene& scene_;
+  const std::vector<Monitor>& monitors_;
+  PhaseTimer* timer_ = nullptr;  ///< run_all()'s
+  Cursor cursor_;
+  long checkpoint_every_ = 0;
+  double last_settle_ = -1;   ///< settle_measure() of the stage's last interval; -1: none
+  double last_rate_ = 0;      ///< the largest monitor move per 1000 steps then [m]
+  std::string moving_most_;   ///< the monitor that moved most then
+  RunVerdict unstable_;       ///< the first finding that the opening is unstable
+  bool stopped_ = false;      ///< an unstable opening ended the stages
+  double stage_dt_ = 0;       ///< the dt of the stage's steps (one limit per stage)
+  long last_checkpoint_ = 0;  ///< step of the last checkpoint (or of the start)
+  std::function<void()> save_checkpoint_;
+  nlohmann::json report_ = nlohmann::json::array();
+};
+
+}  // namespace rockfdem::workflows

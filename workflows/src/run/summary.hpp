@@ -1,0 +1,85 @@
+// The run's record, written as summary.json (docs/output-formats.md). The
+// stages and outputs fill it as the run goes; summary.cpp alone turns it
+// into JSON. It is written atomically at the end of a run (status
+// completed or not_at_equilibrium), and where a run stops early once its
+// output directory is claimed: a numerical failure, a stage's refusal of
+// engine.dt, a signal. A scene or checkpoint refused before anything is
+// written leaves no summary; checkpoints do not rewrite it.
+#pragma once
+
+#include <map>
+#include <nlohmann/json.hpp>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "run/phase_timer.hpp"
+
+namespace rockfdem::mesh {
+struct Mesh;
+struct MeshReport;
+}  // namespace rockfdem::mesh
+namespace rockfdem::insitu {
+struct InsituField;
+}
+
+namespace rockfdem::workflows {
+
+struct Scene;
+struct OutputSettings;
+
+/// summary.json's "format_version": raised whenever a key is renamed,
+/// removed or changes meaning (docs/output-formats.md lists the changes).
+constexpr int kSummaryFormatVersion = 2;
+
+/// A checkpoint a run wrote or continued from, and its step.
+struct CheckpointMark {
+  std::string path;
+  long step = 0;
+};
+
+class RunRecord {
+ public:
+  /// The fixed keys, with counts.bolts the scene's bolts and cables and
+  /// the scene's warnings.
+  RunRecord(const Scene& scene, int threads);
+
+  /// How the run ended: completed, not_at_equilibrium, failed, interrupted
+  /// (empty: not yet; no key).
+  std::string status;
+  std::optional<std::string> status_reason;  ///< why not at equilibrium
+  std::optional<std::string> failure;        ///< the diagnostic of a failed or interrupted run
+  std::vector<std::string> warnings;         ///< the scene's, then the run's
+  std::vector<std::string> skipped;          ///< modules and outputs left out, and why
+  std::optional<CheckpointMark> restarted_from;
+  std::optional<CheckpointMark> checkpoint;  ///< the last one written
+
+  /// The record's figures not yet held as members (counts, mesh, insitu,
+  /// fdem, monitors, bolts, lining, broken zone, ...), as summary.json's keys.
+  nlohmann::json& figures() { return figures_; }
+  const nlohmann::json& figures() const { return figures_; }
+
+  /// Notes in `skipped` the outputs the scene turned off: `paraview_files`
+  /// (what output.vtk = false leaves out) and, where the command renders
+  /// any, the plots.
+  void note_turned_off(const OutputSettings& output, const std::string& paraview_files,
+                       bool renders_plots);
+  /// counts (triangles; the mesh's vertices as nodes), "mesh" (sizes and
+  /// quality) and the state hash of the mesh: its vertex coordinates' bits.
+  /// A later stage's figures replace counts and hash.
+  void record_mesh(const mesh::Mesh& m, const mesh::MeshReport& report);
+  /// The state hash of an implicit result: the bits of its displacement
+  /// field (ux, uy per vertex), which the coordinates' bits would blur.
+  void record_insitu_state(const insitu::InsituField& field);
+  void set_timings(const PhaseTimer& timer);
+
+  /// summary.json's content.
+  nlohmann::json to_json() const;
+  void write(const std::string& path) const;
+
+ private:
+  std::map<std::string, double> timings_;  ///< per phase (snake_case) and "total" [s]
+  nlohmann::json figures_;
+};
+
+}  // namespace rockfdem::workflows

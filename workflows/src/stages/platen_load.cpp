@@ -1,0 +1,99 @@
+#include "stages/platen_load.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "rockfdem/coupling/fdem_model.hpp"
+#include "rockfdem/mesh/mesh.hpp"
+#include "stages/stage_inputs.hpp"
+
+namespace rockfdem::workflows {
+
+std::vector<fdem::BoundaryCondition> specimen_platens(const Scene& s) {
+  const bool disc = s.mesh.kind == mesh::ModelKind::kBrazilian;
+  const double v = s.engine.platen_velocity;
+  fdem::BoundaryCondition lower, upper;
+  lower.tag = disc ? mesh::kLoadBottom : mesh::kBottom;
+  upper.tag = disc ? mesh::kLoadTop : mesh::kTop;
+  if (s.engine.rough_platens) lower.x = upper.x = fdem::Constraint::kFixed;
+  lower.y = upper.y = fdem::Constraint::kVelocity;
+  lower.vy = v;
+  upper.vy = -v;
+  return {lower, upper};
+}
+
+fdem::ModelInput specimen_model_input(const Scene& scene, const mesh::Mesh& m, int threads) {
+  fdem::ModelInput in = coupling::model_input(
+      m, engine_materials(scene), scene.plane_stress ? fdem::Plane::kStress : fdem::Plane::kStrain);
+  in.boundary_conditions = specimen_platens(scene);
+  in.dt = scene.engine.dt;  // checked by make_engine
+  in.dt_safety = scene.engine.dt_safety;
+  in.damping.local = std::max(scene.engine.local_damping, 0.0);  // -1: not given, none
+  in.damping.mass_proportional = scene.engine.mass_damping;
+  in.gravity_y = -scene.engine.gravity;
+  in.threads = threads;
+  in.mass_scaling = {scene.engine.mass_scaling, scene.engine.mass_scaling_dt};
+  in.contact = contact_settings(scene);
+  return in;
+}
+
+PlatenLoad::PlatenLoad(const Scene& s)
+    : disc_(s.mesh.kind == mesh::ModelKind::kBrazilian),
+      upper_tag_(disc_ ? mesh::kLoadTop : mesh::kTop),
+      length_(disc_ ? s.mesh.specimen.diameter : s.mesh.specimen.height),
+      section_(disc_ ? 1.0 : s.mesh.specimen.width),
+      velocity_(s.engine.platen_velocity),
+      stop_fraction_(s.engine.stop_after_peak) {}
+
+PlatenReading PlatenLoad::read(const fdem::Engine& e) const {
+  PlatenReading r;
+  r.force = -e.boundary_force(upper_tag_)[1];
+  // UCS: mean axial stress; disc: the Brazilian tensile stress 2P/(pi D t).
+  r.stress = disc_ ? 2 * r.force / (M_PI * length_) : r.force / section_;
+  r.strain = 2 * velocity_ * e.time() / length_;
+  return r;
+}
+
+bool PlatenLoad::after_step(const fdem::Engine& e) {
+  if (stopped_) return true;
+  const PlatenReading r = read(e);
+  if (r.stress > peak_.stress) {
+    peak_ = r;
+    peak_step_ = e.step_count();
+  }
+  // Broken crack elements are counted only when the stress is low enough:
+  // before the first break (the loading wave's first steps) the stress may
+  // dip below the fraction without any fracture.
+  if (stop_fraction_ > 0 && peak_.stress > 0 && r.stress <= stop_fraction_ * peak_.stress &&
+      e.broken_counts().total() > 0) {
+    stopped_ = true;
+    stop_step_ = e.step_count();
+  }
+  return stopped_;
+}
+
+nlohmann::json PlatenLoad::state() const {
+  return {{"peak_stress", peak_.stress}, {"peak_strain", peak_.strain}, {"peak_force", peak_.force},
+          {"peak_step", peak_step_},     {"stopped", stopped_},         {"stop_step", stop_step_}};
+}
+
+void PlatenLoad::restore(const nlohmann::json& s) {
+  peak_.stress = s.at("peak_stress").get<double>();
+  peak_.strain = s.at("peak_strain").get<double>();
+  peak_.force = s.value("peak_force", 0.0);
+  peak_step_ = s.at("peak_step").get<long>();
+  stopped_ = s.at("stopped").get<bool>();
+  stop_step_ = s.value("stop_step", 0L);
+}
+
+nlohmann::json PlatenLoad::report() const {
+  nlohmann::json j = {
+      {"kind", disc_ ? "brazilian" : "ucs"}, {"peak_stress", peak_.stress},
+      {"peak_force", peak_.force},           {"peak_step", peak_step_},
+      {"peak_strain", peak_.strain},         {"strain_rate", 2 * velocity_ / length_},
+      {"stop_after_peak", stop_fraction_},   {"stopped_after_peak_at_step", nullptr}};
+  if (stopped_) j["stopped_after_peak_at_step"] = stop_step_;
+  return j;
+}
+
+}  // namespace rockfdem::workflows

@@ -1,0 +1,231 @@
+#include "stages/stage_inputs.hpp"
+
+#include <cmath>
+#include <cstdio>
+
+#include "rockfdem/coupling/fdem_model.hpp"
+#include "rockfdem/error.hpp"
+
+namespace rockfdem::workflows {
+namespace {
+
+// The in-situ stress tensor, tension positive: -sH along `angle`, -sV across.
+std::array<double, 3> insitu_tensor(const InsituSettings& s) {
+  const double a = s.angle_deg * M_PI / 180, c = std::cos(a), n = std::sin(a);
+  return {-(s.sigma_h * c * c + s.sigma_v * n * n), -(s.sigma_h * n * n + s.sigma_v * c * c),
+          -(s.sigma_h - s.sigma_v) * n * c};
+}
+
+// Outer boundary: the in-situ traction sigma0 . n on all four sides, as in
+// the implicit stage, so the box is in equilibrium with the initial stress
+// at step 0. With insitu.rollers (the default) each side is also a roller:
+// its normal displacement stays at the hand-off's, so the traction there
+// becomes the roller's reaction (the same at step 0) and the model has no
+// rigid-body mode left. Tractions alone leave three: the loads are
+// self-equilibrated, but once a ring around the opening is broken the outer
+// block can turn on it (outer_boundary.hpp guards against it). Reported
+// displacements have the mean translation of the outer boundary removed, as
+// the implicit stage removes its rigid motion.
+//
+// Traction sigma0 . n on each side of the box (outward normals); with
+// rollers, the normal velocity held at zero too.
+std::vector<fdem::BoundaryCondition> box_conditions(const InsituSettings& s) {
+  const auto sig = insitu_tensor(s);
+  const std::pair<int, std::array<double, 2>> sides[] = {{mesh::kLeft, {-1, 0}},
+                                                         {mesh::kRight, {1, 0}},
+                                                         {mesh::kBottom, {0, -1}},
+                                                         {mesh::kTop, {0, 1}}};
+  std::vector<fdem::BoundaryCondition> bcs;
+  for (const auto& [tag, n] : sides) {
+    fdem::BoundaryCondition bc;
+    bc.tag = tag;
+    bc.tx = sig[0] * n[0] + sig[2] * n[1];
+    bc.ty = sig[2] * n[0] + sig[1] * n[1];
+    if (s.rollers) (n[0] != 0 ? bc.x : bc.y) = fdem::Constraint::kFixed;
+    bcs.push_back(bc);
+  }
+  return bcs;
+}
+
+insitu::ElasticMaterial elastic(const MaterialSpec& m) { return {m.young, m.poisson}; }
+
+fdem::Material engine_material(const MaterialSpec& m, const EngineSettings& e) {
+  fdem::Material f;
+  f.density = m.density;
+  f.young = m.young;
+  f.poisson = m.poisson;
+  f.tensile_strength = m.tensile_strength;
+  f.cohesion = m.cohesion;
+  f.friction_deg = m.friction_angle;
+  f.residual_friction_deg = m.residual_friction_angle;
+  f.gf_I = m.fracture_energy_I;
+  f.gf_II = m.fracture_energy_II;
+  // A zone given no strength is elastic: the crack elements that may touch
+  // it (next to a fracture zone) get a strength no stress reaches.
+  if (f.tensile_strength <= 0) f.tensile_strength = 10 * m.young;
+  if (f.cohesion <= 0) f.cohesion = 10 * m.young;
+  if (f.gf_I <= 0) f.gf_I = 1e9;
+  if (f.gf_II <= 0) f.gf_II = 1e9;
+  f.normal_penalty = m.penalty_factor * m.young;
+  f.weibull_modulus = m.heterogeneity;
+  f.heterogeneity_seed = m.heterogeneity_seed;
+  f.damping_ratio = e.damping_ratio;
+  return f;
+}
+
+fdem::Material bond_material(const BondSettings& g, double density, const Scene& s) {
+  fdem::Material m;
+  m.density = density;
+  m.young = g.young;
+  m.poisson = 0.25;
+  m.tensile_strength = g.tensile_strength;
+  m.cohesion = g.cohesion;
+  m.friction_deg = m.residual_friction_deg = g.friction_angle;
+  m.gf_I = g.fracture_energy_I;
+  m.gf_II = g.fracture_energy_II;
+  m.damping_ratio = s.engine.damping_ratio;
+  return m;
+}
+
+fdem::BoltSteel steel_of(const SteelSettings& b) {
+  fdem::BoltSteel steel;
+  steel.young = b.young;
+  steel.yield_strength = b.yield_strength;
+  steel.ultimate_strength = b.ultimate_strength;
+  steel.tangent_modulus = b.tangent_modulus;
+  steel.shear_yield_strength = b.shear_yield_strength;
+  steel.gf_II = b.shear_fracture_energy;
+  return steel;
+}
+
+}  // namespace
+
+std::map<mesh::Zone, fdem::Material> engine_materials(const Scene& s) {
+  std::map<mesh::Zone, fdem::Material> out;
+  for (const auto& [zone, m] : s.materials) out[zone] = engine_material(m, s.engine);
+  return out;
+}
+
+std::vector<std::size_t> lining_interface_cracks(const fdem::Engine& e, const mesh::Mesh& m) {
+  std::vector<std::size_t> out;
+  for (std::size_t c = 0; c < e.n_cracks(); ++c) {
+    const auto t = e.crack_triangles(c);
+    if ((m.zone[t[0]] == mesh::kLining) != (m.zone[t[1]] == mesh::kLining)) out.push_back(c);
+  }
+  return out;
+}
+
+fdem::Material grout_material(const Scene& s) {
+  return bond_material(s.grout, s.materials.at(mesh::kRock).density, s);
+}
+
+fdem::Material lining_interface_material(const Scene& s) {
+  return bond_material(s.lining_interface, s.materials.at(mesh::kRock).density, s);
+}
+
+std::vector<fdem::BoltSpec> bolt_specs(const Scene& s) {
+  std::vector<fdem::BoltSpec> specs;
+  for (std::size_t i = 0; i < s.bolts.segments.size(); ++i) {
+    const auto& seg = s.bolts.segments[i];
+    const SteelSettings& kind = s.bolts.is_cable[i] ? s.bolts.cable : s.bolts.bolt;
+    fdem::BoltSpec spec;
+    spec.bolt = {{seg[0], seg[1]}, {seg[2], seg[3]}, kind.diameter};
+    spec.row_spacing = kind.row_spacing;
+    spec.steel = steel_of(kind);
+    spec.grout = grout_material(s);
+    specs.push_back(spec);
+  }
+  return specs;
+}
+
+fdem::ContactSettings contact_settings(const Scene& s) {
+  fdem::ContactSettings c;
+  c.enabled = s.engine.contact;
+  c.penalty = s.engine.contact_penalty_factor * s.materials.at(mesh::kRock).young;
+  c.damping_ratio = s.engine.contact_damping;
+  c.friction = s.engine.contact_friction;
+  return c;
+}
+
+insitu::InsituSpec insitu_spec(const Scene& s) {
+  insitu::InsituSpec spec;
+  spec.far_field.sH = s.insitu.sigma_h;
+  spec.far_field.sV = s.insitu.sigma_v;
+  spec.far_field.angle_deg = s.insitu.angle_deg;
+  spec.gravity.unit_weight = s.insitu.unit_weight;
+  spec.gravity.reference_y = 0;  // the stresses hold at the opening's centre
+  if (s.insitu.kirsch_boundary) {
+    spec.loading = insitu::BoundaryLoading::kKirschExact;
+    spec.kirsch_radius = s.mesh.tunnel.radius;
+  }
+  spec.materials.rock = elastic(s.materials.at(mesh::kRock));
+  if (s.materials.count(mesh::kCore)) spec.materials.core = elastic(s.materials.at(mesh::kCore));
+  if (s.materials.count(mesh::kLining))
+    spec.materials.lining = elastic(s.materials.at(mesh::kLining));
+  spec.lining.active = s.insitu.lining_active;
+  spec.alphas = s.insitu.alpha;
+  spec.solver.tolerance = s.insitu.tolerance;
+  if (s.insitu.solver == "amg") spec.solver.kind = insitu::LinearSolver::kAmgCg;
+  if (s.insitu.solver == "direct") spec.solver.kind = insitu::LinearSolver::kDirect;
+  return spec;
+}
+
+void refuse_dt_above(const Scene& scene, double dt, double limit, const char* model) {
+  if (!(dt > limit)) return;
+  char msg[500];
+  std::snprintf(msg, sizeof msg,
+                "%s: key 'engine.dt' = %g s: above the stability limit %.6g s of %s; allowed "
+                "0 < dt <= %.6g s (engine.dt = 0 takes engine.dt_safety = %g of it), or pass "
+                "--force-dt to run with it anyway",
+                scene.source.c_str(), dt, limit, model, limit, scene.engine.dt_safety);
+  throw InputError(msg);
+}
+
+fdem::Engine make_engine(fdem::ModelInput in, const Scene& scene, bool force_dt) {
+  const double dt = in.dt;
+  in.dt = 0;  // built with the automatic step, then given the scene's
+  fdem::Engine engine(in);
+  if (dt <= 0) return engine;
+  if (!force_dt) refuse_dt_above(scene, dt, engine.critical_dt(), "this mesh and its penalties");
+  engine.set_dt(dt, force_dt ? fdem::DtCheck::kForce : fdem::DtCheck::kRefuseAboveLimit);
+  return engine;
+}
+
+fdem::DampingSettings stage_damping(const Scene& s) {
+  fdem::DampingSettings d;
+  d.local = s.engine.local_damping >= 0 ? s.engine.local_damping : kTunnelLocalDamping;
+  d.mass_proportional = s.engine.mass_damping;
+  d.kinetic = s.engine.kinetic_damping;
+  return d;
+}
+
+bool kirsch_case(const Scene& s, insitu::KirschCase* k) {
+  const mesh::MeshSpec& m = s.mesh;
+  if (m.kind != mesh::ModelKind::kTunnel || m.tunnel.shape != mesh::TunnelShape::kCircular ||
+      m.tunnel.lining_thickness > 0 || s.insitu.unit_weight > 0)
+    return false;
+  const MaterialSpec& rock = s.materials.at(mesh::kRock);
+  *k = {m.tunnel.radius,    s.insitu.sigma_h, s.insitu.sigma_v,
+        s.insitu.angle_deg, rock.young,       rock.poisson};
+  return true;
+}
+
+fdem::ModelInput engine_input(const Scene& scene, const mesh::Mesh& m,
+                              const insitu::InsituField& handoff, int threads) {
+  std::map<mesh::Zone, fdem::Material> materials = engine_materials(scene);
+  // The implicit stage left the core at alpha_h E; the engine continues from there.
+  if (materials.count(mesh::kCore) && handoff.alpha > 0)
+    materials[mesh::kCore].young *= handoff.alpha;
+  fdem::ModelInput in = coupling::model_input(
+      m, materials, scene.plane_stress ? fdem::Plane::kStress : fdem::Plane::kStrain);
+  coupling::apply_insitu(handoff, in);
+  in.boundary_conditions = box_conditions(scene.insitu);
+  in.dt = scene.engine.dt;  // checked by make_engine
+  in.dt_safety = scene.engine.dt_safety;
+  in.threads = threads;
+  in.mass_scaling = {scene.engine.mass_scaling, scene.engine.mass_scaling_dt};
+  in.contact = contact_settings(scene);
+  return in;
+}
+
+}  // namespace rockfdem::workflows
