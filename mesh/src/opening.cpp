@@ -116,12 +116,19 @@ Centres shape_centres(const OpeningBoundary& b, const TunnelSpec& t) {
       return {xc, yc, yc, xc, yc, -diagonal, diagonal};
     case TunnelShape::kHorseshoe: {
       const double springline = b.ymax - half_width;  // semicircular arch of radius span/2
-      return {xc, yc, (springline + b.ymin) / 2, xc, springline, -diagonal, diagonal};
+      return {xc,        yc,      (springline + b.ymin + t.invert_rise) / 2, xc, springline,
+              -diagonal, diagonal};
     }
     case TunnelShape::kArched: {
       const double radius = (t.span * t.span / 4 + t.rise * t.rise) / (2 * t.rise);
       const double springing = b.ymax - t.rise, centre = b.ymax - radius;
-      return {xc, yc, (springing + b.ymin) / 2, xc, centre, -half_width, springing - centre};
+      return {xc,
+              yc,
+              (springing + b.ymin + t.invert_rise) / 2,
+              xc,
+              centre,
+              -half_width,
+              springing - centre};
     }
     case TunnelShape::kRectangular:
       return {xc, yc, yc, xc, yc, -half_width, b.ymax - yc};

@@ -40,19 +40,29 @@ Outline circle(double r) {
   return o;
 }
 
-// Floor at y_floor between x = -w and x = +w, vertical walls, and an arch of
-// radius r about (0, yc) meeting the wall tops (r >= w). r = w gives a
-// semicircular (horseshoe) arch. Zero-length walls are left out.
-Outline arched_box(double w, double y_floor, double yc, double r) {
+// The floor between x = -w and x = +w: flat at y_foot, or an invert arc of
+// radius ri about (0, yi) bulging down to meet the walls' feet at y_foot.
+OutlinePiece floor_piece(double w, double y_foot, double yi, double ri) {
+  if (ri <= 0) return segment(-w, y_foot, w, y_foot);
+  const double b = std::acos(std::min(1.0, w / ri));
+  OutlinePiece p = arc(0, yi, ri, kPi + b, 2 * kPi - b);
+  p.x0 = -w, p.y0 = y_foot, p.x1 = w, p.y1 = y_foot;  // exact joints
+  return p;
+}
+
+// A floor (flat or an invert, floor_piece), vertical walls from y_foot, and
+// an arch of radius r about (0, yc) meeting the wall tops (r >= w). r = w
+// gives a semicircular (horseshoe) arch. Zero-length walls are left out.
+Outline arched_box(double w, double y_foot, double yc, double r, double yi = 0, double ri = 0) {
   const double a0 = std::acos(std::min(1.0, w / r));
   const double y_wall = yc + r * std::sin(a0);
   Outline o;
-  o.pieces.push_back(segment(-w, y_floor, w, y_floor));
-  if (y_wall > y_floor) o.pieces.push_back(segment(w, y_floor, w, y_wall));
+  o.pieces.push_back(floor_piece(w, y_foot, yi, ri));
+  if (y_wall > y_foot) o.pieces.push_back(segment(w, y_foot, w, y_wall));
   OutlinePiece top = arc(0, yc, r, a0, kPi - a0);
   top.x0 = w, top.y0 = y_wall, top.x1 = -w, top.y1 = y_wall;  // exact joints
   o.pieces.push_back(top);
-  if (y_wall > y_floor) o.pieces.push_back(segment(-w, y_wall, -w, y_floor));
+  if (y_wall > y_foot) o.pieces.push_back(segment(-w, y_wall, -w, y_foot));
   return o;
 }
 
@@ -107,6 +117,33 @@ bool inside_arc_segment(const OutlinePiece& p, double x, double y) {
   return cross < 0;
 }
 
+// Horseshoe and arched openings: the arch's crown at +height/2, the floor's
+// lowest point at -height/2; with an invert the walls' feet are invert_rise
+// above it. The inset outline offsets every piece inwards: the same centres,
+// radii less the inset.
+Outline arched_outline(const TunnelSpec& t, double inset) {
+  const bool horseshoe = t.shape == TunnelShape::kHorseshoe;
+  const double rise = horseshoe ? t.span / 2 : t.rise;
+  require(t.span > 0 && t.height > 0, "span and height must be > 0");
+  require(rise > 0 && rise <= t.span / 2 + 1e-12,
+          "arch rise = " + std::to_string(rise) + " must be in (0, span/2]");
+  require(t.invert_rise >= 0 && t.invert_rise <= t.span / 2 + 1e-12,
+          "invert rise = " + std::to_string(t.invert_rise) + " must be in [0, span/2]");
+  require(rise + t.invert_rise <= t.height,
+          "arch rise (span/2 for a horseshoe) plus invert rise must not exceed the height");
+  require(2 * inset < std::min(t.span, t.height),
+          "lining thickness must be below half the span and half the height");
+  const double r = horseshoe ? t.span / 2 : arc_radius_for_rise(t.span, rise);
+  const double yc = t.height / 2 - r;  // crown at +height/2
+  const double w = t.span / 2 - inset;
+  if (t.invert_rise <= 0) return arched_box(w, -t.height / 2 + inset, yc, r - inset);
+  const double ri = arc_radius_for_rise(t.span, t.invert_rise);
+  const double yi = -t.height / 2 + ri;  // lowest point at -height/2
+  require(inset < t.invert_rise, "lining thickness must be below the invert rise");
+  const double y_foot = yi - std::sqrt((ri - inset) * (ri - inset) - w * w);
+  return arched_box(w, y_foot, yc, r - inset, yi, ri - inset);
+}
+
 }  // namespace
 
 Outline tunnel_outline(const TunnelSpec& t, double inset) {
@@ -122,19 +159,8 @@ Outline tunnel_outline(const TunnelSpec& t, double inset) {
               "lining thickness must be below half the span and half the height");
       return box(t.span / 2 - inset, t.height / 2 - inset);
     case TunnelShape::kHorseshoe:
-    case TunnelShape::kArched: {
-      const bool horseshoe = t.shape == TunnelShape::kHorseshoe;
-      const double rise = horseshoe ? t.span / 2 : t.rise;
-      require(t.span > 0 && t.height > 0, "span and height must be > 0");
-      require(rise > 0 && rise <= t.span / 2 + 1e-12,
-              "arch rise = " + std::to_string(rise) + " must be in (0, span/2]");
-      require(rise <= t.height, "arch rise (span/2 for a horseshoe) must not exceed the height");
-      require(2 * inset < std::min(t.span, t.height),
-              "lining thickness must be below half the span and half the height");
-      const double r = horseshoe ? t.span / 2 : arc_radius_for_rise(t.span, rise);
-      const double yc = t.height / 2 - r;  // crown at +height/2
-      return arched_box(t.span / 2 - inset, -t.height / 2 + inset, yc, r - inset);
-    }
+    case TunnelShape::kArched:
+      return arched_outline(t, inset);
   }
   throw InputError("tunnel geometry: unknown shape");
 }

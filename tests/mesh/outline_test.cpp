@@ -49,6 +49,41 @@ TEST(TunnelOutline, arched_area_is_walls_plus_circular_segment) {
   EXPECT_NEAR(opening_area(t), s * (h - f) + r * r * (theta - std::sin(theta)) / 2, 1e-10);
 }
 
+// A curved invert of rise g adds its circular segment below the walls'
+// feet, which rise by g: walls s (h - s/2 - g), half disc, invert segment.
+TEST(TunnelOutline, horseshoe_with_invert_adds_the_inverts_segment) {
+  const double s = 11.3, h = 8.8, g = 1.2;
+  TunnelSpec t = shaped(TunnelShape::kHorseshoe, s, h);
+  t.invert_rise = g;
+  const double r = (s * s / 4 + g * g) / (2 * g), theta = 2 * std::asin(s / (2 * r));
+  EXPECT_NEAR(opening_area(t),
+              s * (h - s / 2 - g) + kPi * s * s / 8 + r * r * (theta - std::sin(theta)) / 2, 1e-10);
+  EXPECT_NEAR(outline_perimeter(tunnel_outline(t)), 2 * (h - s / 2 - g) + kPi * s / 2 + r * theta,
+              1e-10);
+  // The lowest point sits at -h/2 on the axis, inset or not.
+  EXPECT_NEAR(distance_to_outline(tunnel_outline(t), 0, -h / 2), 0, 1e-12);
+  EXPECT_NEAR(distance_to_outline(tunnel_outline(t, 0.2), 0, -h / 2 + 0.2), 0, 1e-12);
+  EXPECT_TRUE(inside_outline(tunnel_outline(t), 0, -h / 2 + 0.01));
+  EXPECT_FALSE(inside_outline(tunnel_outline(t), s / 2 - 0.01, -h / 2 + 0.01));
+}
+
+// The inset outline is the inward offset: every joint of its pieces, and
+// every piece's midpoint, lies at the inset's distance from the outline.
+TEST(TunnelOutline, invert_inset_lies_at_the_inset_distance) {
+  const double s = 11.3, h = 8.8, d = 0.2;
+  TunnelSpec t = shaped(TunnelShape::kHorseshoe, s, h);
+  t.invert_rise = 1.2;
+  const Outline o = tunnel_outline(t), in = tunnel_outline(t, d);
+  ASSERT_EQ(in.pieces.size(), 4u);
+  for (const OutlinePiece& p : in.pieces) {
+    const double a = (p.a0 + p.a1) / 2;
+    const double mx = p.is_arc ? p.cx + p.radius * std::cos(a) : (p.x0 + p.x1) / 2;
+    const double my = p.is_arc ? p.cy + p.radius * std::sin(a) : (p.y0 + p.y1) / 2;
+    EXPECT_NEAR(distance_to_outline(o, p.x0, p.y0), d, 1e-12);
+    EXPECT_NEAR(distance_to_outline(o, mx, my), d, 1e-12);
+  }
+}
+
 TEST(TunnelOutline, rectangular_area_is_span_times_height) {
   EXPECT_NEAR(opening_area(shaped(TunnelShape::kRectangular, 7, 5)), 35, 1e-12);
 }
@@ -94,6 +129,9 @@ TEST(TunnelOutline, impossible_shapes_are_input_errors) {
   EXPECT_THROW(tunnel_outline(circular(1), 1.5), InputError);
   EXPECT_THROW(tunnel_outline(shaped(TunnelShape::kArched, 8, 6, 5)), InputError);
   EXPECT_THROW(tunnel_outline(shaped(TunnelShape::kHorseshoe, 10, 4)), InputError);
+  TunnelSpec deep = shaped(TunnelShape::kHorseshoe, 10, 8);
+  deep.invert_rise = 3.5;  // 5 + 3.5 > 8: no wall left
+  EXPECT_THROW(tunnel_outline(deep), InputError);
 }
 
 }  // namespace

@@ -181,6 +181,17 @@ TEST(Scene, cross_key_errors_name_the_changed_key_with_short_numbers) {
   // and round numbers print plainly (40, not 4e+01).
   expect_contains(error_of([&] { load_scene(seed, {"tunnel.fracture_zone=40"}); }),
                   {"--set tunnel.fracture_zone=40: ", "fracture zone 40 m", "(width 80 m)"});
+  // A curved invert leaves the walls a length and the lining a core.
+  expect_contains(
+      error_of([&] { load_scene(seed, {"tunnel.invert_rise=3.5"}); }),
+      {"--set tunnel.invert_rise=3.5: ", "arch's rise (5.65 m)", "allowed: at most 3.15 m"});
+  expect_contains(error_of([&] { load_scene(seed, {"tunnel.invert_rise=0.1"}); }),
+                  {"--set tunnel.invert_rise=0.1: ", "lining thickness 0.2 m"});
+  expect_contains(
+      error_of([&] {
+        load_scene(seed, {"tunnel.shape=circular", "tunnel.radius=5", "tunnel.invert_rise=1"});
+      }),
+      {"tunnel.invert_rise", "horseshoe and arched openings only"});
 }
 
 // The reference's default stage list is the one the reader builds: a

@@ -154,6 +154,28 @@ void read_arch_rise(const Reader& r, mesh::TunnelSpec& t) {
          "must be at most span/2 = " + num(w / 2) + " m and below the height " + num(h) + " m");
 }
 
+// A curved invert: horseshoe and arched openings only; its rise at most
+// span/2 and, with the arch's, within the height (the walls keep a length).
+void read_invert(const Reader& r, mesh::TunnelSpec& t) {
+  t.invert_rise = r.number("tunnel.invert_rise");
+  if (t.invert_rise == 0) return;
+  const bool arched =
+      t.shape == mesh::TunnelShape::kHorseshoe || t.shape == mesh::TunnelShape::kArched;
+  if (!arched)
+    r.fail("tunnel.invert_rise", "applies to horseshoe and arched openings only; allowed: 0 here");
+  const double arch = t.shape == mesh::TunnelShape::kHorseshoe ? t.span / 2 : t.rise;
+  if (t.invert_rise > t.span / 2)
+    r.fail("tunnel.invert_rise", "must be at most span/2 = " + num(t.span / 2) + " m");
+  if (arch + t.invert_rise > t.height) {
+    const double room = std::floor((t.height - arch) * 1000 + 1e-6) / 1000;  // to the mm
+    r.fail("tunnel.invert_rise", "plus the arch's rise (" + num(arch) + " m) exceeds the height " +
+                                     num(t.height) + " m; allowed: at most " + num(room) + " m");
+  }
+  if (t.lining_thickness >= t.invert_rise)
+    r.fail("tunnel.invert_rise",
+           "must exceed the lining thickness " + num(t.lining_thickness) + " m");
+}
+
 void read_tunnel(const Reader& r, mesh::MeshSpec& m) {
   mesh::TunnelSpec& t = m.tunnel;
   t.shape = tunnel_shape(r.text("tunnel.shape"));
@@ -177,6 +199,7 @@ void read_tunnel(const Reader& r, mesh::MeshSpec& m) {
     }
     if (t.shape == mesh::TunnelShape::kArched) read_arch_rise(r, t);
   }
+  read_invert(r, t);
   m.domain.width = r.number("domain.width");
   m.domain.height = r.number("domain.height");
   m.domain.center_x = r.number("domain.center_x");

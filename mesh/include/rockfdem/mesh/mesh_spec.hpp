@@ -13,10 +13,12 @@ enum class TunnelShape { kCircular, kHorseshoe, kArched, kRectangular };
 
 struct TunnelSpec {
   TunnelShape shape = TunnelShape::kHorseshoe;
-  double radius = 0;            ///< circular
-  double span = 11.3;           ///< horseshoe, arched, rectangular: width of the opening
-  double height = 8.8;          ///< horseshoe, arched, rectangular: floor to crown
-  double rise = 0;              ///< arched: rise of the arch above the walls (0 < rise <= span/2)
+  double radius = 0;    ///< circular
+  double span = 11.3;   ///< horseshoe, arched, rectangular: width of the opening
+  double height = 8.8;  ///< horseshoe, arched, rectangular: lowest floor point to crown
+  double rise = 0;      ///< arched: rise of the arch above the walls (0 < rise <= span/2)
+  double invert_rise =
+      0;  ///< horseshoe, arched: depth of a curved invert below the walls' feet; 0: flat floor
   double lining_thickness = 0;  ///< 0: no lining ring
   double fracture_zone =
       0;  ///< crack elements allowed within this distance outside the opening; 0: none

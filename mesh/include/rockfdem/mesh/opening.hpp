@@ -60,11 +60,11 @@ struct KeyPoint {
 /// boundary's bounding box, the arch radius or rise from the spec):
 /// | shape | axis x | wall height | shoulder rays |
 /// | circular | box centre | centre | 45 deg from the centre |
-/// | horseshoe | box centre | midway springline (ymax - span/2) - floor | 45 deg from the arch
-/// centre | | arched | box centre | midway springing (ymax - rise) - floor | from the arch centre
-/// through the springing points | | rectangular | box centre | mid-height | from the centre through
-/// the top corners | Without `shape` (a user's mesh): everything from the area centroid, walls at
-/// its height, shoulders at 45 deg.
+/// | horseshoe | box centre | midway springline (ymax - span/2) - wall foot | 45 deg from the arch
+/// centre | | arched | box centre | midway springing (ymax - rise) - wall foot | from the arch
+/// centre through the springing points | | rectangular | box centre | mid-height | from the centre
+/// through the top corners | Without `shape` (a user's mesh): everything from the area centroid,
+/// walls at its height, shoulders at 45 deg.
 std::vector<KeyPoint> opening_key_points(const Mesh& m, const OpeningBoundary& b,
                                          const TunnelSpec* shape);
 
