@@ -197,7 +197,7 @@ TEST(Scene, cross_key_errors_name_the_changed_key_with_short_numbers) {
 // The reference's default stage list is the one the reader builds: a
 // tunnel with a ring and bolts and no [[stages]] gets lining, bolts,
 // remove_core, equilibrium; a ring active in the implicit stage is not
-// installed again.
+// installed again. A specimen's one stage is load_platens, for engine.steps.
 TEST(Scene, default_stage_list_is_the_documented_one) {
   std::string text = read_file(std::string(ROCKFDEM_SOURCE_DIR) + "/scenes/tunnel-seed.toml");
   text = text.substr(0, text.find("[[stages]]"));
@@ -213,9 +213,17 @@ TEST(Scene, default_stage_list_is_the_documented_one) {
   ASSERT_NE(kind, nullptr);
   EXPECT_NE(kind->description.find("Without [[stages]]: insitu, lining (if the model has a ring "
                                    "not already active in the implicit stage), bolts (if the "
-                                   "scene has any), remove_core, equilibrium."),
+                                   "scene has any), remove_core, equilibrium; UCS and "
+                                   "Brazilian specimens (which take no [[stages]]): "
+                                   "load_platens."),
             std::string::npos)
       << kind->description;
+  for (const char* scene : {"ucs-33k", "brazilian-disc"}) {
+    const Scene s = load_scene(std::string(ROCKFDEM_SOURCE_DIR) + "/scenes/" + scene + ".toml");
+    EXPECT_EQ(kinds(s), "load_platens") << scene;
+    EXPECT_EQ(s.stages.front().max_steps, s.engine.steps) << scene;
+    EXPECT_EQ(s.stages.front().every_steps, s.output.every_steps) << scene;
+  }
 }
 
 // Each section of the reference appears once (the bolt tables did twice).

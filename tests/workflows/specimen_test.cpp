@@ -163,13 +163,13 @@ TEST_F(SpecimenRestart, forged_run_state_is_refused_naming_the_field) {
       load_scene(kTestDir + "/ucs_small.toml", {"engine.steps=3000", "output.every_steps=250"});
   const Checkpoint good = read_checkpoint(checkpoints(*ref_).back().string(), scene);
   nlohmann::json state = good.run;
-  state["specimen"]["load"].erase("peak_stress");
+  state["outputs"]["load"].erase("peak_stress");
   const std::string forged = write_checkpoint(dir.string(), 1, scene, {state, good.engine_state});
   const fs::path out = dir / "out";
   const Result r = run("run " + kScene + " --restart " + forged + " -o " + out.string());
   EXPECT_EQ(r.code, 2) << r.output;
   EXPECT_NE(r.output.find("checkpoint " + forged +
-                          ": corrupt run state: field 'specimen.load.peak_stress' is missing"),
+                          ": corrupt run state: field 'outputs.load.peak_stress' is missing"),
             std::string::npos)
       << r.output;
   EXPECT_FALSE(fs::exists(out)) << "nothing written";

@@ -74,7 +74,8 @@ TEST(StageRegistry, a_registered_kind_runs_between_built_in_stages) {
   const KeySpec* kind = find_key("stages[].kind");
   ASSERT_NE(kind, nullptr);
   EXPECT_EQ(kind->choices.back(), "mark");
-  EXPECT_NE(kind->description.find("`equilibrium`, `mark` (test only)"), std::string::npos);
+  EXPECT_NE(kind->description.find("`equilibrium`, `load_platens` ("), std::string::npos);
+  EXPECT_NE(kind->description.find("), `mark` (test only)"), std::string::npos);
 
   const Scene scene = parse_scene(kScene, "mark.toml", ".");
   RunContext ctx;

@@ -16,6 +16,7 @@
 #include "outputs/outer_boundary.hpp"
 #include "outputs/run_plots.hpp"
 #include "outputs/run_timeline.hpp"
+#include "outputs/step_outputs.hpp"
 #include "rockfdem/coupling/vtk_writer.hpp"
 #include "rockfdem/fdem/bolt_install.hpp"
 #include "rockfdem/insitu/insitu.hpp"
@@ -27,7 +28,7 @@
 
 namespace rockfdem::workflows {
 
-class RunOutputs {
+class RunOutputs : public StepOutputs {
  public:
   RunOutputs(const Scene& scene, const RunContext& ctx, RunRecord& summary);
   /// summary.json's insitu keys and the implicit part of the ground reaction curve.
@@ -48,18 +49,18 @@ class RunOutputs {
     instruments_ = std::move(instruments);
   }
   /// A `lining` or `bolts` stage installed its support (Instruments).
-  void support_installed(const fdem::Engine& e) {
+  void support_installed(const fdem::Engine& e) override {
     if (instruments_) instruments_->support_installed(node_displacements(e));
   }
   /// Whether the lining ring is installed as lining (before, its triangles
   /// are ground still to be excavated): its forces are written from then.
-  void set_lining_installed(bool installed) { lining_installed_ = installed; }
+  void set_lining_installed(bool installed) override { lining_installed_ = installed; }
   /// One history row and (if enabled) one ParaView frame.
   void record_step(const fdem::Engine& e, const mesh::Mesh& m, const std::vector<Monitor>& monitors,
-                   PhaseTimer& timer, const std::string& stage, double support_ratio);
+                   PhaseTimer& timer, const std::string& stage, double support_ratio) override;
   /// The key point displaced most from the in-situ state and |u| [m].
-  std::pair<std::string, double> largest_key_point(const fdem::Engine& e,
-                                                   const std::vector<Monitor>& monitors) const;
+  std::pair<std::string, double> largest_key_point(
+      const fdem::Engine& e, const std::vector<Monitor>& monitors) const override;
   /// What a restart needs to continue the outputs: history rows, stage
   /// names, frames written.
   nlohmann::json state() const;

@@ -180,8 +180,9 @@ int open_regular(const std::string& path, std::uint64_t& size) {
 }
 
 // ---- The run state's structure ---------------------------------------------
-// run.cpp (bolts, start_ratio), RunOutputs::restore (outputs) and
-// StageRunner::restore and verdict() (stages) read the run state with
+// run.cpp (bolts, start_ratio), RunOutputs::restore and
+// SpecimenOutputs::restore (outputs) and StageRunner::restore and
+// verdict() (stages) read the run state with
 // .at() and .get<T>(), which throw nlohmann's own exceptions (exit 1, a
 // raw message) or, for operator[] on a const object, assert. A forged or
 // damaged checkpoint whose checksum was recomputed would reach them: every
@@ -202,10 +203,10 @@ class RunStateCheck {
     if (nesting(run) > kMaxNesting)
       refuse(path_, "corrupt run state: nested more than " + std::to_string(kMaxNesting) +
                         " levels deep (a written run state nests 5); use the previous checkpoint");
+    stages(member(run, "", "stages"));
     if (scene_.mesh.kind == mesh::ModelKind::kUcs ||
         scene_.mesh.kind == mesh::ModelKind::kBrazilian)
-      return specimen(member(run, "", "specimen"));
-    stages(member(run, "", "stages"));
+      return specimen_outputs(member(run, "", "outputs"));
     outputs(member(run, "", "outputs"));
     bolts(member(run, "", "bolts"));
     number(member(run, "", "start_ratio"), "start_ratio");
@@ -290,7 +291,6 @@ class RunStateCheck {
         {"key_point", "a string"},
         {"mm_per_1000_steps", "a number"},
         {"start_ratio", "a number"},
-        {"specimen", "an object"},
         {"load", "an object"},
         {"peak_stress", "a number"},
         {"peak_strain", "a number"},
@@ -420,13 +420,12 @@ class RunStateCheck {
     }
   }
 
-  // What run_specimen.cpp and PlatenLoad::restore read.
-  void specimen(const json& s) const {
-    const std::string at = "specimen";
+  // What SpecimenOutputs::restore and PlatenLoad::restore read.
+  void specimen_outputs(const json& s) const {
+    const std::string at = "outputs";
     object(s, at);
     history_rows(member(s, at, "history"), at + ".history");
     frame_list(member(s, at, "frames"), at + ".frames");
-    integer(member(s, at, "last_checkpoint"), at + ".last_checkpoint");
     const json& load = member(s, at, "load");
     object(load, at + ".load");
     for (const char* key : {"peak_stress", "peak_strain"})

@@ -6,8 +6,8 @@
 // that wrote it):
 //   "RFDMCKPT"  u32 format version  u64 scene key (FNV-1a of the scene
 //   without output.checkpoint_every)  u64 n + n bytes: the run's state as
-//   JSON (tunnels: stage cursor, history rows, frames, bolt installation;
-//   specimens: history rows, frames, the platen's peak and stop state)
+//   JSON (the stage cursor, history rows and frames; tunnels: bolt
+//   installation; specimens: the platen's peak and stop state)
 //   u64 n + n bytes: Engine::save_state()  u64 FNV-1a of everything before
 // (fdem::fnv1a: FNV-1a 64 with the offset basis 1469598103934665603, not
 // the standard 14695981039346656037; see docs/reliability.md)
@@ -55,9 +55,10 @@ std::string write_checkpoint(const std::string& output_dir, long step, const Sce
 Checkpoint read_checkpoint(const std::string& path, const Scene& scene);
 
 /// Checks that `run` has every field the restart reads with its type: for
-/// a tunnel (run.cpp, RunOutputs::restore, StageRunner::restore and
-/// verdict()) a stage index within `scene`'s stages; for a specimen
-/// (run_specimen.cpp, PlatenLoad::restore) its history and peak; frame names
+/// every run (StageRunner::restore and verdict()) a stage index within
+/// `scene`'s stages; for a tunnel (run.cpp, RunOutputs::restore) its
+/// outputs and bolts; for a specimen (SpecimenOutputs::restore,
+/// PlatenLoad::restore) its history and peak; frame names
 /// that are plain file names. Throws InputError naming the checkpoint
 /// `path` and the field.
 void validate_run_state(const std::string& path, const nlohmann::json& run, const Scene& scene);

@@ -14,7 +14,7 @@ namespace rockfdem::workflows {
 
 StageRunner::StageRunner(fdem::Engine& engine, const mesh::Mesh& m,
                          const insitu::InsituField& handoff, const Scene& scene,
-                         const RunContext& ctx, RunOutputs& out,
+                         const RunContext& ctx, StepOutputs& out,
                          const std::vector<Monitor>& monitors, fdem::BoltPlan& bolts,
                          SupportMaterials materials)
     : model_{engine,
@@ -62,11 +62,11 @@ double StageRunner::settle_measure(long steps) {
   return size > 0 && steps > 0 ? change / size * (1000.0 / double(steps)) : 0.0;
 }
 
-bool StageRunner::advance(long n, long broken_target, bool* reached) {
+bool StageRunner::advance(long n, const StopTest& stop, bool* reached) {
   for (long i = 0; i < n; ++i) {
     if (interrupt_requested()) return false;
     engine_.step();
-    if (broken_target > 0 && engine_.broken_counts().total() >= broken_target) {
+    if (stop && stop()) {
       *reached = true;
       return true;
     }
@@ -177,8 +177,8 @@ void StageRunner::record_step(const StageSpec& stage) {
   out_.record_step(engine_, model_.mesh, monitors_, *timer_, stage.kind, model_.support_ratio());
 }
 
-bool StageRunner::criterion_met(const StageSpec& stage, long broken_target, bool reached) {
-  if (broken_target > 0) return reached;
+bool StageRunner::criterion_met(const StageSpec& stage, bool tested, bool reached) {
+  if (tested) return reached;
   // Equilibrium: balanced forces alone are not enough while cracks keep
   // breaking and blocks keep sliding (the ratio then stalls near 1e-3
   // with the walls still converging); the monitors must have settled
@@ -199,7 +199,7 @@ void StageRunner::checkpoint_if_due() {
   }
 }
 
-bool StageRunner::step_until(const StageSpec& stage, long broken_target) {
+bool StageRunner::step_until(const StageSpec& stage, const StopTest& stop) {
   Progress progress(stage.kind, stage.max_steps, model_.ctx.quiet);
   const long first = cursor_.first;
   const double t0 = cursor_.t0;
@@ -212,14 +212,14 @@ bool StageRunner::step_until(const StageSpec& stage, long broken_target) {
     timer_->stamp("output");
     const long before = engine_.step_count();
     bool reached = false;
-    const bool whole = advance(chunk, broken_target, &reached);
+    const bool whole = advance(chunk, stop, &reached);
     timer_->stamp("fdem");
     if (!whole) interrupted(stage);
     record_step(stage);
     last_settle_ = settle_measure(engine_.step_count() - before);
-    done = criterion_met(stage, broken_target, reached);
+    done = criterion_met(stage, bool(stop), reached);
     progress.update(in_stage(), engine_.time() - t0);
-    if (!done && unstable(stage, broken_target == 0) && stage.stop_when_unstable) {
+    if (!done && unstable(stage, !stop) && stage.stop_when_unstable) {
       stopped_ = true;
       break;
     }

@@ -1,8 +1,9 @@
-// The explicit construction stages of a tunnel run, in the scene's order.
-// Each stage changes the model (soften the core, install the lining or the
-// bolts, remove the core, grout) and then steps to its own stop criterion
-// (unbalanced-force ratio, step cap, simulated time), writing history rows
-// and frames.
+// The explicit stages of a run, in the scene's order: a tunnel's
+// construction stages, a specimen's load_platens. Each stage changes the
+// model (soften the core, install the lining or the bolts, remove the core,
+// grout) and then steps to its own stop criterion (unbalanced-force ratio,
+// step cap, simulated time, a test after every step), telling the outputs
+// (StepOutputs) at each output step.
 //
 // Checkpoints: a cursor (stage index, the stage's first step and time, the
 // changes it made) and the runner's flags make its state(); restore() puts
@@ -17,7 +18,7 @@
 #include <vector>
 
 #include "outputs/monitors.hpp"
-#include "outputs/run_outputs.hpp"
+#include "outputs/step_outputs.hpp"
 #include "rockfdem/fdem/bolt_install.hpp"
 #include "rockfdem/fdem/engine.hpp"
 #include "rockfdem/insitu/insitu.hpp"
@@ -41,7 +42,7 @@ struct RunVerdict {
 class StageRunner {
  public:
   StageRunner(fdem::Engine& engine, const mesh::Mesh& m, const insitu::InsituField& handoff,
-              const Scene& scene, const RunContext& ctx, RunOutputs& out,
+              const Scene& scene, const RunContext& ctx, StepOutputs& out,
               const std::vector<Monitor>& monitors, fdem::BoltPlan& bolts,
               SupportMaterials materials);
   /// Called to write a checkpoint: every `every` steps (at the next output
@@ -60,9 +61,12 @@ class StageRunner {
 
   // What the stages (stages/stage_<kind>.cpp) drive.
   StageModel& model() { return model_; }
+  /// A stop test run after every step: true stops the stage there.
+  using StopTest = std::function<bool()>;
   /// Steps in output chunks until the stage's criterion; returns converged.
-  /// With a `broken_target` > 0, until that many crack elements are broken.
-  bool step_until(const StageSpec& stage, long broken_target);
+  /// With a `stop` test, until it holds (checked after every step, so the
+  /// trigger does not depend on the output interval or the mesh).
+  bool step_until(const StageSpec& stage, const StopTest& stop = {});
   /// Whether an unstable opening ended the stages.
   bool stopped() const { return stopped_; }
   /// Simulated time since the stage began [s].
@@ -89,8 +93,8 @@ class StageRunner {
   /// One history row (and frame) of the stage.
   void record_step(const StageSpec& stage);
   /// Whether the stage's stop criterion holds at this output: `reached`
-  /// with a broken-count target, else ratio and settle held `hold` times.
-  bool criterion_met(const StageSpec& stage, long broken_target, bool reached);
+  /// with a stop test, else ratio and settle held `hold` times.
+  bool criterion_met(const StageSpec& stage, bool tested, bool reached);
   /// A checkpoint when checkpoint_every steps have passed since the last.
   void checkpoint_if_due();
   /// Monitors' displacements (ux, uy per monitor) [m].
@@ -99,18 +103,16 @@ class StageRunner {
   /// largest monitor displacement change per 1000 steps over the largest
   /// monitor displacement (0 when nothing moved); updates cursor_.monitor_u.
   double settle_measure(long steps);
-  /// Steps `n` times unless a signal arrives (false) or, with a
-  /// `broken_target` > 0, that many crack elements are broken (checked
-  /// after every step, so the trigger does not depend on the output
-  /// interval or the mesh; *reached set).
-  bool advance(long n, long broken_target, bool* reached);
+  /// Steps `n` times unless a signal arrives (false) or the `stop` test
+  /// holds after a step (*reached set).
+  bool advance(long n, const StopTest& stop, bool* reached);
   /// The stage's report entry (what report() lists).
   nlohmann::json report_entry(const StageSpec& stage, const nlohmann::json& changes,
                               bool converged) const;
 
   StageModel model_;
   fdem::Engine& engine_;  ///< model_.engine
-  RunOutputs& out_;
+  StepOutputs& out_;
   const Scene& scene_;
   const std::vector<Monitor>& monitors_;
   PhaseTimer* timer_ = nullptr;  ///< run_all()'s

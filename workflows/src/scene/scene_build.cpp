@@ -625,13 +625,16 @@ StageSpec read_stage(const Reader& r, const std::string& p, const std::string& k
 
 // Without [[stages]]: the stages the reference lists, each with the keys'
 // defaults (read at an index the file does not have). Installing a support
-// and removing the core take no steps; equilibrium runs to its cap.
+// and removing the core take no steps; equilibrium runs to its cap. A
+// specimen's one stage loads it for engine.steps (the post-peak stop).
 void default_stages(const Reader& r, Scene& s) {
   const auto stage = [&](const char* kind) {
     StageSpec st = read_stage(r, "stages[0]", kind);
-    if (st.kind != "equilibrium") st.max_steps = 0;
+    if (st.kind != "equilibrium" && st.kind != "load_platens") st.max_steps = 0;
     return st;
   };
+  if (s.mesh.kind == mesh::ModelKind::kUcs || s.mesh.kind == mesh::ModelKind::kBrazilian)
+    return s.stages.push_back(stage("load_platens"));
   // A ring that carried load in the implicit stage is installed already.
   if (has_lining_ring(s) && !s.insitu.lining_active) s.stages.push_back(stage("lining"));
   if (!s.bolts.segments.empty()) s.stages.push_back(stage("bolts"));
@@ -651,6 +654,8 @@ struct StageOrder {
 void check_stage(const Reader& r, const Scene& s, const std::string& p, const StageSpec& st,
                  StageOrder& at) {
   const std::string& kind = st.kind;
+  if (kind == "load_platens")
+    r.fail(p + ".kind", "loads a UCS or Brazilian specimen (model.kind), not a tunnel");
   if (kind == "bolts") {
     if (s.bolts.segments.empty()) r.fail(p + ".kind", "the scene has no [[bolt]] or [[bolt_fan]]");
     if (at.bolted) r.fail(p + ".kind", "the bolts are installed once");

@@ -1,5 +1,6 @@
-// The scene file's keys. To add a key: add one line here, read it in
-// scene_build.cpp, and regenerate docs/scene-reference.md
+// The scene file's keys. To add a key: add one line here (or, for a key
+// only a stage reads, in its stage's keys()), read it in scene_build.cpp, and regenerate
+// docs/scene-reference.md
 // (`rockfdem --scene-reference > docs/scene-reference.md`; a test checks it).
 #include "rockfdem/workflows/scene_schema.hpp"
 
@@ -8,12 +9,16 @@
 #include <sstream>
 
 #include "rockfdem/mesh/msh_io.hpp"
+#include "scene/schema_keys.hpp"
 #include "stages/registry.hpp"
+#include "stages/stage.hpp"
 
 namespace rockfdem::workflows {
 namespace {
-
 constexpr double kInf = 1e300;
+}  // namespace
+
+namespace schema {
 
 KeySpec number(std::string path, std::string unit, std::string def, double min, bool min_open,
                double max, bool max_open, std::string what) {
@@ -77,6 +82,12 @@ KeySpec boolean(std::string path, std::string def, std::string what) {
   k.description = std::move(what);
   return k;
 }
+
+}  // namespace schema
+
+namespace {
+
+using namespace schema;
 
 // A material's keys. `inherit` ("materials.rock.") makes each default the
 // value of that material's key (the core takes the rock's); empty: the
@@ -377,17 +388,9 @@ void add_engine(std::vector<KeySpec>& s) {
                            "constrained node's stability limit."));
   s.push_back(non_negative("engine.gravity", "m/s^2", "0",
                            "Gravitational acceleration acting in -y; 0: none."));
-  // [loading]
-  s.push_back(positive("loading.platen_velocity", "m/s", "0.5",
-                       "UCS and Brazilian tests: speed of each platen towards the other."));
-  s.push_back(choice("loading.platen_friction", "rough", {"rough", "frictionless"},
-                     "UCS and Brazilian tests: rough platens hold the loaded ends laterally "
-                     "(both velocity components prescribed); frictionless ones prescribe only "
-                     "the loading-direction velocity (rollers), so the ends spread freely."));
-  s.push_back(number("loading.stop_after_peak", "-", "0", 0, false, 1, true,
-                     "UCS and Brazilian tests: the run ends at the first step whose platen "
-                     "stress has fallen to this fraction of the peak so far, once a crack "
-                     "element has broken (post-peak stop); 0: runs all engine.steps."));
+  // The stages' own keys ([loading]: stage_load_platens.cpp).
+  for (const std::string& kind : stage_kinds())
+    for (KeySpec& k : stage_of(kind).keys()) s.push_back(std::move(k));
 }
 
 // The steel of bolts and cables; the grout and lining-rock bonds.
@@ -500,7 +503,8 @@ void add_stages(std::vector<KeySpec>& s) {
                          stage_kind_descriptions() +
                          ". Without [[stages]]: insitu, "
                          "lining (if the model has a ring not already active in the implicit "
-                         "stage), bolts (if the scene has any), remove_core, equilibrium."));
+                         "stage), bolts (if the scene has any), remove_core, equilibrium; UCS and "
+                         "Brazilian specimens (which take no [[stages]]): load_platens."));
   s.push_back(number("stages[].alpha", "-", "", 0, true, 1, false,
                      "soften: target core stiffness factor, below the implicit hand-off's."));
   s.push_back(integer("stages[].max_steps", "engine.steps", 0, 1e12,

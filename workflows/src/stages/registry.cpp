@@ -16,7 +16,8 @@ namespace rockfdem::workflows {
   STAGE(bolts)                         \
   STAGE(remove_core)                   \
   STAGE(grout)                         \
-  STAGE(equilibrium)
+  STAGE(equilibrium)                   \
+  STAGE(load_platens)
 
 #define ROCKFDEM_DECLARE_STAGE(kind) std::unique_ptr<const Stage> make_##kind##_stage();
 ROCKFDEM_BUILTIN_STAGES(ROCKFDEM_DECLARE_STAGE)

@@ -14,7 +14,7 @@ nlohmann::json Stage::apply(StageModel&, const StageSpec&) const {
 }
 
 bool Stage::step(StageRunner& runner, const StageSpec& spec, nlohmann::json&) const {
-  return runner.step_until(spec, 0);
+  return runner.step_until(spec);
 }
 
 }  // namespace rockfdem::workflows

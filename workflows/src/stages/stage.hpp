@@ -1,23 +1,27 @@
-// One explicit construction stage of a tunnel run, as a registered piece:
-// each kind (the scene's stages[].kind) lives in stage_<kind>.cpp with its
-// change to the model (apply) and its stop criterion (step), and is listed
-// once in registry.cpp. StageRunner keeps the cursor, the outputs and the
+// One explicit stage of a run, as a registered piece: each kind (the
+// scene's stages[].kind; a specimen's implicit load_platens) lives in
+// stage_<kind>.cpp with its scene keys (keys), its change to the model
+// (apply) and its stop criterion (step), and is listed once in
+// registry.cpp. StageRunner keeps the cursor, the outputs and the
 // checkpoints and tells the outputs; a stage only says what it changes in
 // the model and when it stops.
 #pragma once
 
 #include <nlohmann/json.hpp>
 #include <string>
+#include <vector>
 
 #include "rockfdem/fdem/bolt_install.hpp"
 #include "rockfdem/fdem/engine.hpp"
 #include "rockfdem/mesh/mesh.hpp"
 #include "rockfdem/workflows/scene.hpp"
+#include "rockfdem/workflows/scene_schema.hpp"
 #include "run/run_context.hpp"
 
 namespace rockfdem::workflows {
 
 class StageRunner;
+class PlatenLoad;
 
 /// Engine materials the support stages assign to crack elements.
 struct SupportMaterials {
@@ -37,6 +41,8 @@ struct StageModel {
   double alpha;           ///< the core's stiffness factor now
   bool core_present;      ///< the core is not removed yet
   bool lining_installed;  ///< the lining ring carries load as lining
+  /// A specimen's platens, read after every step by load_platens; null for tunnels.
+  PlatenLoad* platens = nullptr;
 
   /// (De)activates every triangle of `zone`.
   void set_zone(int zone, bool active, fdem::ActivationReference ref);
@@ -50,6 +56,9 @@ class Stage {
   /// What the stage does, in a few words for the scene reference ("" for
   /// a kind its name says all of).
   virtual const char* description() const { return ""; }
+  /// The scene keys the stage reads beyond stages[] (scene_schema() lists
+  /// them where the reference has them); none by default.
+  virtual std::vector<KeySpec> keys() const { return {}; }
   /// The stage's change to the model at its start; returns what changed
   /// (the summary's "changes" of the stage).
   virtual nlohmann::json apply(StageModel& model, const StageSpec& spec) const;

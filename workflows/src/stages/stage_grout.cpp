@@ -40,8 +40,9 @@ class Grout : public Stage {
         spec.trigger_broken == 0 || m.engine.broken_counts().total() >= spec.trigger_broken;
     // Triggered by the broken count, or by the stage's time when one is given.
     if (!triggered)
-      triggered = runner.step_until(spec, spec.trigger_broken) ||
-                  (!runner.stopped() && spec.time > 0 && runner.stage_time() >= spec.time);
+      triggered = runner.step_until(spec, [&] {
+        return m.engine.broken_counts().total() >= spec.trigger_broken;
+      }) || (!runner.stopped() && spec.time > 0 && runner.stage_time() >= spec.time);
     changes = {{"triggered", triggered}, {"broken_before", m.engine.broken_counts().total()}};
     if (triggered) grout_broken(m, changes);
     return false;

@@ -1,0 +1,38 @@
+// What the stage loop (StageRunner) tells a run's outputs: one row (and
+// frame) per output step, and the support's installation. A tunnel's
+// outputs (RunOutputs) and a specimen's (SpecimenOutputs) both observe the
+// loop through this one interface.
+#pragma once
+
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "outputs/monitors.hpp"
+#include "rockfdem/fdem/engine.hpp"
+#include "rockfdem/mesh/mesh.hpp"
+#include "run/phase_timer.hpp"
+
+namespace rockfdem::workflows {
+
+class StepOutputs {
+ public:
+  virtual ~StepOutputs() = default;
+  /// One history row and (if enabled) one ParaView frame of `stage`;
+  /// `support_ratio`: the core's stiffness factor then (0 once removed).
+  virtual void record_step(const fdem::Engine& e, const mesh::Mesh& m,
+                           const std::vector<Monitor>& monitors, PhaseTimer& timer,
+                           const std::string& stage, double support_ratio) = 0;
+  /// Whether the lining ring is installed as lining (tunnels).
+  virtual void set_lining_installed(bool) {}
+  /// A `lining` or `bolts` stage installed its support (tunnels).
+  virtual void support_installed(const fdem::Engine&) {}
+  /// The key point displaced most from the in-situ state and |u| [m]; none
+  /// (an empty name, 0) without key points.
+  virtual std::pair<std::string, double> largest_key_point(const fdem::Engine&,
+                                                           const std::vector<Monitor>&) const {
+    return {"", 0.0};
+  }
+};
+
+}  // namespace rockfdem::workflows
