@@ -102,6 +102,13 @@ TEST(Study, sweep_runs_each_variant_once_and_resumes) {
     EXPECT_TRUE(fs::exists(out / "variants" / rows[r][0] / "summary.json")) << rows[r][0];
     u[rows[r][0]] = std::stod(rows[r][vault]);
   }
+  // A symmetric pair's column is the mean of its two points' readings.
+  const std::size_t walls = column(rows[0], "walls_radial_mm"),
+                    left = column(rows[0], "left_wall_radial_mm"),
+                    right = column(rows[0], "right_wall_radial_mm");
+  for (std::size_t r = 1; r < rows.size(); ++r)
+    EXPECT_DOUBLE_EQ(std::stod(rows[r][walls]),
+                     (std::stod(rows[r][left]) + std::stod(rows[r][right])) / 2);
   const double soft = u.at("materials.rock.young=3e9_insitu.sigma_h=12e6");
   const double stiff = u.at("materials.rock.young=6e9_insitu.sigma_h=12e6");
   EXPECT_NEAR(soft / stiff, 2.0, 1e-9);
@@ -132,7 +139,10 @@ TEST(Study, calibrate_recovers_young_modulus_from_its_own_targets) {
   std::ostringstream targets;
   targets.precision(17);
   targets << " --target vault=" << monitors["vault"]["radial_mm"].get<double>()
-          << " --target left_wall=" << monitors["left_wall"]["radial_mm"].get<double>();
+          << " --target walls="
+          << (monitors["left_wall"]["radial_mm"].get<double>() +
+              monitors["right_wall"]["radial_mm"].get<double>()) /
+                 2;
   const Result r =
       run("calibrate " + kScene + targets.str() +
           " --free materials.rock.young=2e9:2e10 --max-evals 40 -j 1 -o " + out.string());
