@@ -48,6 +48,16 @@ std::map<std::string, double> first_history_row(const fs::path& csv) {
   return row;
 }
 
+// A stage's report entry as the timeline reads it: kind, duration, changes.
+rockfdem::workflows::StageRecord stage_record(const std::string& kind, double simulated_time,
+                                              const nlohmann::json& changes) {
+  rockfdem::workflows::StageRecord r;
+  r.kind = kind;
+  r.simulated_time = simulated_time;
+  r.changes = changes.is_null() ? nlohmann::json::object() : changes;
+  return r;
+}
+
 std::string two_decimals(double v) {
   char text[32];
   std::snprintf(text, sizeof text, "%.2f", v);
@@ -141,13 +151,12 @@ TEST(Report, failed_run_reports_its_last_good_state) {
 // cracks, then equilibrium. One marker holds the three with the grout
 // stage's start; the grouting and the equilibrium's start share the next.
 TEST(StageMarkers, stages_starting_together_share_a_marker_and_grouting_has_its_own) {
-  const nlohmann::json stages = nlohmann::json::parse(R"([
-    {"kind": "lining", "simulated_time": 0.0, "changes": {}},
-    {"kind": "bolts", "simulated_time": 0.0, "changes": {}},
-    {"kind": "remove_core", "simulated_time": 0.0, "changes": {}},
-    {"kind": "grout", "simulated_time": 0.0048,
-     "changes": {"triggered": true, "rejoined": 324}},
-    {"kind": "equilibrium", "simulated_time": 0.736, "changes": {}}])");
+  using rockfdem::workflows::StageRecord;
+  const std::vector<StageRecord> stages = {
+      stage_record("lining", 0.0, {}), stage_record("bolts", 0.0, {}),
+      stage_record("remove_core", 0.0, {}),
+      stage_record("grout", 0.0048, {{"triggered", true}, {"rejoined", 324}}),
+      stage_record("equilibrium", 0.736, {})};
   using namespace rockfdem::workflows;
   const std::vector<StageSpan> spans = stage_spans(stages, 0.0005);
   const auto markers = stage_markers(spans);
@@ -168,10 +177,10 @@ TEST(StageMarkers, stages_starting_together_share_a_marker_and_grouting_has_its_
 // A grout stage that did not trigger adds no grouting marker; a run
 // without lining or bolts stages has no support to measure from.
 TEST(StageMarkers, untriggered_grout_and_no_support) {
-  const nlohmann::json stages = nlohmann::json::parse(R"([
-    {"kind": "remove_core", "simulated_time": 0.0},
-    {"kind": "grout", "simulated_time": 0.1, "changes": {"triggered": false}},
-    {"kind": "equilibrium", "simulated_time": 0.2}])");
+  using rockfdem::workflows::StageRecord;
+  const std::vector<StageRecord> stages = {stage_record("remove_core", 0.0, {}),
+                                           stage_record("grout", 0.1, {{"triggered", false}}),
+                                           stage_record("equilibrium", 0.2, {})};
   using namespace rockfdem::workflows;
   const std::vector<StageSpan> spans = stage_spans(stages, 0.0);
   const auto markers = stage_markers(spans);

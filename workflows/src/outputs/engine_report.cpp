@@ -7,28 +7,8 @@
 
 namespace rockfdem::workflows {
 
-nlohmann::json state_figures(const fdem::Engine& e, const fdem::EnergyBalance& en) {
-  const fdem::BrokenCounts b = e.broken_counts();
-  return {{"steps", e.step_count()},
-          {"dt", e.dt()},
-          {"simulated_time", e.time()},
-          {"broken", {{"mode_I", b.mode_I}, {"mode_II", b.mode_II}, {"mixed", b.mixed}}},
-          {"energy",
-           {{"external_work", en.external_work},
-            {"kinetic", en.kinetic},
-            {"strain", en.strain},
-            {"crack_elastic", en.crack_elastic},
-            {"contact_elastic", en.contact_elastic},
-            {"initial_stored", en.initial_stored},
-            {"damping", en.damping},
-            {"fracture", en.fracture},
-            {"friction", en.friction},
-            {"absorbing", en.absorbing},
-            {"softening", en.softening},
-            {"removed_by_stages", en.removed},
-            {"residual", en.residual()},
-            {"relative_imbalance", en.imbalance()}}},
-          {"state_hash", e.state_hash()}};
+EngineState engine_state(const fdem::Engine& e, const fdem::EnergyBalance& en) {
+  return {e.step_count(), e.dt(), e.time(), e.broken_counts(), en, e.state_hash()};
 }
 
 void report_engine(const fdem::Engine& e, const PhaseTimer& timer, RunRecord& summary) {
@@ -36,9 +16,9 @@ void report_engine(const fdem::Engine& e, const PhaseTimer& timer, RunRecord& su
   j["counts"]["triangles"] = e.n_triangles();
   j["counts"]["nodes"] = e.n_nodes();
   j["counts"]["crack_elements"] = e.n_cracks();
-  j.update(state_figures(e, e.energy_balance()));
+  summary.state = engine_state(e, e.energy_balance());
   // One dt throughout, unless a staged run widens the range (RunOutputs).
-  j["dt_min"] = j["dt_max"] = e.dt();
+  summary.dt_range = std::make_pair(e.dt(), e.dt());
   const double fdem = timer.seconds("fdem");
   j["throughput"]["triangle_steps_per_second"] =
       fdem > 0 ? double(e.n_triangles()) * double(e.step_count()) / fdem : 0.0;

@@ -121,17 +121,17 @@ std::vector<double> Instruments::row(const fdem::Engine& e, const mesh::Mesh& m,
   return row;
 }
 
-void Instruments::add_monitors(nlohmann::json& monitors, const NodeDisplacement& u) const {
+void Instruments::add_monitors(MonitorRecord& monitors, const NodeDisplacement& u) const {
   for (std::size_t i = 0; i < monitors_.size(); ++i) {
     const MonitorSpec& s = scene_.monitors[i];
     const std::array<double, 2> d = monitor_u(i, u);
-    monitors[s.name] = {{"ux_mm", mm(d[0])},
-                        {"uy_mm", mm(d[1])},
-                        {"u_mm", mm(std::hypot(d[0], d[1]))},
-                        {"x", s.x},
-                        {"y", s.y},
-                        {"triangle", monitors_[i].triangle},
-                        {"from", s.relative_to_support ? "support" : "in-situ state"}};
+    monitors.points[s.name] = {mm(d[0]),
+                               mm(d[1]),
+                               mm(std::hypot(d[0], d[1])),
+                               s.x,
+                               s.y,
+                               long(monitors_[i].triangle),
+                               s.relative_to_support ? "support" : "in-situ state"};
   }
 }
 

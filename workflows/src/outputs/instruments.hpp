@@ -21,6 +21,7 @@
 #include "outputs/monitors.hpp"
 #include "rockfdem/fdem/bolt_install.hpp"
 #include "rockfdem/workflows/scene.hpp"
+#include "run/run_figures.hpp"
 
 namespace rockfdem::workflows {
 
@@ -44,8 +45,8 @@ class Instruments {
   /// call fixes the zero of the monitors read relative to the support.
   void support_installed(const NodeDisplacement& u);
   /// Adds each monitor's ux_mm, uy_mm, u_mm, point and convention to
-  /// summary.json's "monitors".
-  void add_monitors(nlohmann::json& monitors, const NodeDisplacement& u) const;
+  /// The scene's monitors into the record's monitors.
+  void add_monitors(MonitorRecord& monitors, const NodeDisplacement& u) const;
   /// summary.json's "extensometers" and "broken_zone"."along_rays".
   void finish(nlohmann::json& summary, const fdem::Engine& e, const mesh::Mesh& m,
               const NodeDisplacement& u) const;

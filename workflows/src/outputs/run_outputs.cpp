@@ -220,53 +220,44 @@ void RunOutputs::record_step(const fdem::Engine& e, const mesh::Mesh& m,
     std::snprintf(name, sizeof name, "bolts_%04d.vtp", frame_ - 1);
     if (bolt_results_) bolt_results_->write_frame(name, g.field);
   }
-  last_good_.take(e, energy, monitors_json(e, monitors));
+  last_good_.take(e, energy, monitor_figures(e, monitors));
   timer.stamp("output");
 }
 
-nlohmann::json RunOutputs::monitors_json(const fdem::Engine& e,
-                                         const std::vector<Monitor>& monitors) const {
-  nlohmann::json j = nlohmann::json::object();
+MonitorRecord RunOutputs::monitor_figures(const fdem::Engine& e,
+                                          const std::vector<Monitor>& monitors) const {
+  MonitorRecord r;
   for (const Monitor& mon : monitors) {
     const auto k = key_point(e, mon);
-    j[mon.name] = {{"ux_mm", k[0]},
-                   {"uy_mm", k[1]},
-                   {"u_mm", k[2]},
-                   {"radial_mm", k[3]},
-                   {"x", mon.node_x},
-                   {"y", mon.node_y},
-                   {"inward", {mon.inward_x, mon.inward_y}}};
+    r.key_points[mon.name] = {k[0],       k[1],       k[2],         k[3],
+                              mon.node_x, mon.node_y, mon.inward_x, mon.inward_y};
   }
   // Per point (as field convergence points are read) and, apart, the
   // change of length of two chords between points.
-  j["vault_settlement_mm"] = -mm(displacement(e, find(monitors, "vault"))[1]);
-  j["wall_chord_convergence_mm"] = mm(convergence(e, monitors, "left_wall", "right_wall"));
-  j["shoulder_chord_convergence_mm"] =
-      mm(convergence(e, monitors, "left_shoulder", "right_shoulder"));
-  if (instruments_) instruments_->add_monitors(j, node_displacements(e));
-  return j;
+  r.chords = ChordFigures{-mm(displacement(e, find(monitors, "vault"))[1]),
+                          mm(convergence(e, monitors, "left_wall", "right_wall")),
+                          mm(convergence(e, monitors, "left_shoulder", "right_shoulder"))};
+  if (instruments_) instruments_->add_monitors(r, node_displacements(e));
+  return r;
 }
 
 void RunOutputs::report_dt() {
-  auto& j = summary_.figures();
   // Steps and time add up: the hand-off step, then each stage's (dt is
   // constant within a stage: the limit changes only with a stage's changes).
-  double lo = j["dt"].get<double>(), hi = lo;
+  double lo = summary_.state.dt, hi = lo;
   if (handoff_dt_ > 0) {
-    j["fdem"]["handoff_step"] = {
-        {"steps", 1}, {"dt", handoff_dt_}, {"simulated_time", handoff_dt_}};
+    if (!summary_.fdem) summary_.fdem.emplace();
+    summary_.fdem->handoff_dt = handoff_dt_;
     lo = std::min(lo, handoff_dt_);
     hi = std::max(hi, handoff_dt_);
   }
-  const nlohmann::json none = nlohmann::json::array();
-  const auto fdem = j.find("fdem");
-  for (const auto& stage : fdem != j.end() ? fdem->value("stages", none) : none)
-    if (stage.contains("dt") && stage["dt"].is_number()) {
-      lo = std::min(lo, stage["dt"].get<double>());
-      hi = std::max(hi, stage["dt"].get<double>());
-    }
-  j["dt_min"] = lo;
-  j["dt_max"] = hi;
+  if (summary_.fdem && summary_.fdem->stages)
+    for (const StageRecord& stage : *summary_.fdem->stages)
+      if (stage.dt) {
+        lo = std::min(lo, *stage.dt);
+        hi = std::max(hi, *stage.dt);
+      }
+  summary_.dt_range = std::make_pair(lo, hi);
 }
 
 void RunOutputs::report_failure(const fdem::Engine& e, PhaseTimer& timer, const std::string& why) {
@@ -365,34 +356,18 @@ void RunOutputs::finish(const fdem::Engine& e, const mesh::Mesh& m,
   warn_if_unbalanced(e, energy_floor_, ctx_.quiet, summary_);
   report_dt();
   bolt_outputs(e, bolts);
-  j["monitors"] = monitors_json(e, monitors);
-  add_since_support(j["monitors"]);
+  summary_.monitors = monitor_figures(e, monitors);
+  add_since_support(summary_.monitors);
   j["outer_boundary"] = {{"rotation_deg", boundary_fit(e).rotation * 180 / M_PI},
                          {"max_rotation_deg", max_rotation_deg_},
                          {"limit_deg", kRigidRotationLimitDeg},
                          {"translation_mm", {mm(boundary_fit(e).tx), mm(boundary_fit(e).ty)}},
                          {"support", scene_.insitu.rollers ? "rollers" : "tractions"}};
-  // Ground reaction curve, implicit part: the core's share of the in-situ
-  // stress (alpha) against the vault settlement it allows.
-  const int vault_vertex = vertex_of(e, find(monitors, "vault"));
-  nlohmann::json grc = nlohmann::json::array();
-  for (const insitu::InsituField& f : fields_)
-    grc.push_back({{"support_pressure_ratio", f.alpha},
-                   {"vault_settlement_mm", -mm(f.uy[vault_vertex])},
-                   {"point", "implicit stage, alpha = " + detail_number(f.alpha)}});
-  // The end: the core's factor then (0 once removed), the support carrying the rest.
-  const double end_ratio =
-      history_->rows().empty() ? 0.0 : history_->column("support_pressure_ratio").back();
-  grc.push_back(
-      {{"support_pressure_ratio", end_ratio},
-       {"vault_settlement_mm", j["monitors"]["vault_settlement_mm"]},
-       {"point", end_ratio > 0 ? "end of run (FDEM), core at alpha = " + detail_number(end_ratio)
-                               : std::string("end of run (FDEM), core removed")}});
-  j["ground_reaction_curve"] = grc;
+  record_ground_reaction(e, monitors);
   lining_outputs(e, m);
   damage_outputs(e, m);
   if (instruments_) instruments_->finish(j, e, m, node_displacements(e));
-  j["history_stages"] = stage_names_;  // history.csv's "stage" column indexes this list
+  summary_.history_stages = stage_names_;  // history.csv's "stage" column indexes this list
   if (scene_.output.plots) plots(e, m);
   timer.stamp("output");
   summary_.set_timings(timer);
@@ -400,11 +375,29 @@ void RunOutputs::finish(const fdem::Engine& e, const mesh::Mesh& m,
   write_report();
   const fdem::BrokenCounts b = e.broken_counts();
   if (!ctx_.quiet)
-    std::cout << "vault settlement " << j["monitors"]["vault_settlement_mm"].get<double>()
+    std::cout << "vault settlement " << summary_.monitors.chords->vault_settlement_mm
               << " mm, wall chord convergence "
-              << j["monitors"]["wall_chord_convergence_mm"].get<double>() << " mm, broken cracks "
+              << summary_.monitors.chords->wall_chord_convergence_mm << " mm, broken cracks "
               << b.total() << ", state hash " << e.state_hash() << '\n'
               << timer.table();
+}
+
+// Ground reaction curve, implicit part: the core's share of the in-situ
+// stress (alpha) against the vault settlement it allows.
+void RunOutputs::record_ground_reaction(const fdem::Engine& e,
+                                        const std::vector<Monitor>& monitors) {
+  const int vault_vertex = vertex_of(e, find(monitors, "vault"));
+  std::vector<GroundReactionPoint>& grc = summary_.ground_reaction_curve;
+  grc.clear();
+  for (const insitu::InsituField& f : fields_)
+    grc.push_back(
+        {f.alpha, -mm(f.uy[vault_vertex]), "implicit stage, alpha = " + detail_number(f.alpha)});
+  // The end: the core's factor then (0 once removed), the support carrying the rest.
+  const double end_ratio =
+      history_->rows().empty() ? 0.0 : history_->column("support_pressure_ratio").back();
+  grc.push_back({end_ratio, summary_.monitors.chords->vault_settlement_mm,
+                 end_ratio > 0 ? "end of run (FDEM), core at alpha = " + detail_number(end_ratio)
+                               : std::string("end of run (FDEM), core removed")});
 }
 
 void RunOutputs::damage_outputs(const fdem::Engine& e, const mesh::Mesh& m) {
@@ -443,12 +436,10 @@ void RunOutputs::damage_outputs(const fdem::Engine& e, const mesh::Mesh& m) {
 }
 
 std::vector<StageSpan> RunOutputs::timeline() const {
-  // The spans point into the summary's stage report: take it by reference.
-  const auto& j = summary_.figures();
-  const auto fdem = j.find("fdem");
-  if (!history_ || history_->rows().empty() || fdem == j.end() || !fdem->contains("stages"))
-    return {};
-  return stage_spans(fdem->at("stages"), history_->column("time").front());
+  // The spans point into the record's stage reports: take them by reference.
+  const std::optional<FdemRecord>& fdem = summary_.fdem;
+  if (!history_ || history_->rows().empty() || !fdem || !fdem->stages) return {};
+  return stage_spans(*fdem->stages, history_->column("time").front());
 }
 
 std::optional<std::size_t> RunOutputs::support_row() const {
@@ -460,36 +451,40 @@ std::optional<std::size_t> RunOutputs::support_row() const {
 
 std::map<std::string, double> RunOutputs::since_support() const {
   const std::optional<std::size_t> row = support_row();
-  const auto& mon = summary_.figures().value("monitors", nlohmann::json::object());
+  const MonitorRecord& mon = summary_.monitors;
   std::map<std::string, double> out;
   if (!row) return out;
-  const auto add = [&](const std::string& name, const std::string& column,
-                       const nlohmann::json& v) {
-    if (v.is_number()) out[name] = v.get<double>() - history_->column(column)[*row];
+  const auto add = [&](const std::string& name, const std::string& column, double v) {
+    out[name] = v - history_->column(column)[*row];
   };
-  for (const Monitor& m : monitors_)
-    if (mon.contains(m.name))
-      add(m.name, m.name + "_radial_mm", mon[m.name].value("radial_mm", nlohmann::json()));
-  add("wall_chord", "wall_chord_convergence_mm",
-      mon.value("wall_chord_convergence_mm", nlohmann::json()));
-  add("shoulder_chord", "shoulder_chord_convergence_mm",
-      mon.value("shoulder_chord_convergence_mm", nlohmann::json()));
+  for (const Monitor& m : monitors_) {
+    const auto k = mon.key_points.find(m.name);
+    if (k != mon.key_points.end() && !mon.points.count(m.name))
+      add(m.name, m.name + "_radial_mm", k->second.radial_mm);
+  }
+  if (mon.chords) {
+    add("wall_chord", "wall_chord_convergence_mm", mon.chords->wall_chord_convergence_mm);
+    add("shoulder_chord", "shoulder_chord_convergence_mm",
+        mon.chords->shoulder_chord_convergence_mm);
+  }
   return out;
 }
 
 // What monitoring installed with the support reads (field convergence
 // data): a run without a lining or bolts stage adds nothing.
-void RunOutputs::add_since_support(nlohmann::json& monitors) const {
-  for (const auto& [name, mm] : since_support())
-    if (monitors.contains(name) && monitors[name].is_object())
-      monitors[name]["radial_since_support_mm"] = mm;
+void RunOutputs::add_since_support(MonitorRecord& monitors) const {
+  for (const auto& [name, mm] : since_support()) {
+    const auto k = monitors.key_points.find(name);
+    if (k != monitors.key_points.end() && !monitors.points.count(name))
+      k->second.radial_since_support_mm = mm;
+  }
 }
 
 void RunOutputs::write_report() const {
   ReportExtras extras;
   extras.since_support_mm = since_support();
   extras.pictures = pictures_;
-  workflows::write_report(ctx_.output_dir, scene_, summary_.to_json(), extras);
+  workflows::write_report(ctx_.output_dir, scene_, summary_, extras);
 }
 
 void RunOutputs::plots(const fdem::Engine& e, const mesh::Mesh& m) {
@@ -548,17 +543,17 @@ void RunOutputs::ground_reaction_plot(PlotWriter& plots) {
   // allows), and apart the run's final state, which is no point of the
   // unsupported curve: the support carries the load there.
   std::vector<double> ratio, settlement;
-  const nlohmann::json& grc = summary_.figures()["ground_reaction_curve"];
+  const std::vector<GroundReactionPoint>& grc = summary_.ground_reaction_curve;
   for (std::size_t i = 0; i + 1 < grc.size(); ++i) {
-    ratio.push_back(grc[i]["support_pressure_ratio"].get<double>());
-    settlement.push_back(grc[i]["vault_settlement_mm"].get<double>());
+    ratio.push_back(grc[i].support_pressure_ratio);
+    settlement.push_back(grc[i].vault_settlement_mm);
   }
   std::vector<plots::PlotSeries> series{
       {"implicit stage: core stiffness factor alpha", settlement, ratio}};
   if (!grc.empty())
-    series.push_back({grc.back()["point"].get<std::string>(),
-                      {grc.back()["vault_settlement_mm"].get<double>()},
-                      {grc.back()["support_pressure_ratio"].get<double>()},
+    series.push_back({grc.back().point,
+                      {grc.back().vault_settlement_mm},
+                      {grc.back().support_pressure_ratio},
                       true});
   plots.xy("ground_reaction.png", "Ground reaction curve at the vault",
            "vault radial displacement (settlement) from the in-situ state [mm]",

@@ -77,18 +77,21 @@ class RunOutputs {
   void report_failure(const fdem::Engine& e, PhaseTimer& timer, const std::string& why);
 
  private:
-  /// summary "monitors": each monitor's ux, uy [mm] and position, vault
-  /// settlement, wall and shoulder convergence [mm].
-  nlohmann::json monitors_json(const fdem::Engine& e, const std::vector<Monitor>& monitors) const;
-  /// fdem.handoff_step and dt_min, dt_max over it, the stages' dt and the
-  /// last step's (summary "fdem" holds the stage reports by then).
+  /// The record's monitors: each key point's ux, uy [mm] and position, vault
+  /// settlement, wall and shoulder convergence [mm], the scene's monitors.
+  MonitorRecord monitor_figures(const fdem::Engine& e, const std::vector<Monitor>& monitors) const;
+  /// The hand-off step and dt_min, dt_max over it, the stages' dt and the
+  /// last step's (the record holds the stage reports by then).
   void report_dt();
+  /// The record's ground reaction curve: the implicit stage's points and
+  /// the end of the run (after the monitors).
+  void record_ground_reaction(const fdem::Engine& e, const std::vector<Monitor>& monitors);
   void plots(const fdem::Engine& e, const mesh::Mesh& m);
   /// convergence.png, chord_convergence.png (from the support's
   /// installation where the scene asks) and broken.png, with `markers`.
   void time_plots(PlotWriter& plots, const fdem::Engine& e,
                   const std::vector<plots::PlotMarker>& markers);
-  /// ground_reaction.png from the summary's ground_reaction_curve.
+  /// ground_reaction.png from the record's ground reaction curve.
   void ground_reaction_plot(PlotWriter& plots);
   /// The explicit stages on the history's time axis (run_timeline.hpp).
   std::vector<StageSpan> timeline() const;
@@ -96,11 +99,11 @@ class RunOutputs {
   /// bolts stage's start); nothing when the run installed no support.
   std::optional<std::size_t> support_row() const;
   /// Key points' radial displacement and the chords' closure [mm] since
-  /// the support's installation (the summary's figures less the history's then).
+  /// the support's installation (the record's figures less the history's then).
   std::map<std::string, double> since_support() const;
-  /// Adds each key point's `radial_since_support_mm` to the summary's monitors.
-  void add_since_support(nlohmann::json& monitors) const;
-  /// report.md from the summary as it stands.
+  /// Adds each key point's `radial_since_support_mm` to the record's monitors.
+  void add_since_support(MonitorRecord& monitors) const;
+  /// report.md from the record as it stands.
   void write_report() const;
   /// The engine grid plus, with bolts installed, "bolt_axial_stress" (steel
   /// stress along the axis per bolt triangle, NaN elsewhere).

@@ -105,6 +105,13 @@ fdem::BoltPlan planned_bolts(const Scene& scene, fdem::ModelInput& in) {
   }
 }
 
+// The record's "fdem" of a run the stages left early: their reports alone.
+FdemRecord stages_only(const StageRunner& stages) {
+  FdemRecord f;
+  f.stages = stages.report();
+  return f;
+}
+
 }  // namespace
 
 Run::Run(const Scene& scene, const RunContext& ctx)
@@ -253,18 +260,18 @@ void Run::run_stages() {
     stages_->run_all(timer_);
   } catch (const Interrupted&) {
     summary_.status = "interrupted";
-    summary_.figures()["fdem"] = {{"stages", stages_->report()}};
+    summary_.fdem = stages_only(*stages_);
     out_.finish(engine(), mesh_, monitors_, timer_, bolts_);
     throw;
   } catch (const NumericalError& e) {
     // The frames and history rows written so far are the last good output.
-    summary_.figures()["fdem"] = {{"stages", stages_->report()}};
+    summary_.fdem = stages_only(*stages_);
     const std::string why = with_likely_cause(scene_, e.what());
     out_.report_failure(engine(), timer_, why);
     throw NumericalError(why);
   } catch (const InputError& e) {
     const std::string why = stage_input_error(e);
-    summary_.figures()["fdem"] = {{"stages", stages_->report()}};
+    summary_.fdem = stages_only(*stages_);
     out_.report_failure(engine(), timer_, why);
     throw InputError(why);
   }
@@ -300,10 +307,10 @@ void Run::finish() {
                                    {"mass_proportional", scene_.engine.mass_damping},
                                    {"kinetic", scene_.engine.kinetic_damping},
                                    {"local_given", scene_.engine.local_damping >= 0}};
-  summary_.figures()["fdem"] = {{"unbalanced_ratio_at_start", start_ratio_},
-                                {"unbalanced_ratio_at_end", engine().unbalanced_force_ratio()},
-                                {"handoff_alpha", handoff().alpha},
-                                {"stages", stages_->report()}};
+  summary_.fdem = stages_only(*stages_);
+  summary_.fdem->unbalanced_ratio_at_start = start_ratio_;
+  summary_.fdem->unbalanced_ratio_at_end = engine().unbalanced_force_ratio();
+  summary_.fdem->handoff_alpha = handoff().alpha;
   out_.finish(engine(), mesh_, monitors_, timer_, bolts_);
   if (!ctx_.quiet)
     std::cout << "status: " << verdict.status

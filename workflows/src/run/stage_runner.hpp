@@ -24,6 +24,7 @@
 #include "rockfdem/workflows/scene.hpp"
 #include "run/phase_timer.hpp"
 #include "run/run_context.hpp"
+#include "run/run_figures.hpp"
 #include "stages/stage.hpp"
 
 namespace rockfdem::workflows {
@@ -51,7 +52,7 @@ class StageRunner {
   /// a checkpoint and a last history row) when SIGINT or SIGTERM arrives.
   void run_all(PhaseTimer& timer);
   /// One entry per stage run: kind, steps, simulated time, dt, final ratio, converged.
-  const nlohmann::json& report() const { return report_; }
+  const std::vector<StageRecord>& report() const { return report_; }
   bool core_present() const { return model_.core_present; }
   /// The run's status from the stages run so far.
   RunVerdict verdict() const;
@@ -105,8 +106,8 @@ class StageRunner {
   /// interval or the mesh; *reached set).
   bool advance(long n, long broken_target, bool* reached);
   /// The stage's report entry (what report() lists).
-  nlohmann::json report_entry(const StageSpec& stage, const nlohmann::json& changes,
-                              bool converged) const;
+  StageRecord report_entry(const StageSpec& stage, const nlohmann::json& changes,
+                           bool converged) const;
 
   StageModel model_;
   fdem::Engine& engine_;  ///< model_.engine
@@ -124,7 +125,7 @@ class StageRunner {
   double stage_dt_ = 0;       ///< the dt of the stage's steps (one limit per stage)
   long last_checkpoint_ = 0;  ///< step of the last checkpoint (or of the start)
   std::function<void()> save_checkpoint_;
-  nlohmann::json report_ = nlohmann::json::array();
+  std::vector<StageRecord> report_;
 };
 
 }  // namespace rockfdem::workflows

@@ -33,10 +33,155 @@ nlohmann::json mark_json(const char* path_key, const CheckpointMark& m) {
   return {{path_key, m.path}, {"step", m.step}};
 }
 
+template <class T>
+nlohmann::json or_null(const std::optional<T>& v) {
+  return v ? nlohmann::json(*v) : nlohmann::json();
+}
+
+nlohmann::json stage_json(const StageRecord& s) {
+  return {{"kind", s.kind},
+          {"changes", s.changes},
+          {"steps", s.steps},
+          {"simulated_time", s.simulated_time},
+          {"dt", or_null(s.dt)},
+          {"unbalanced_ratio", s.unbalanced_ratio},
+          {"settle", or_null(s.settle)},
+          {"converged", or_null(s.converged)},
+          {"max_steps", s.max_steps},
+          {"criteria",
+           {{"ratio", s.ratio},
+            {"settle", s.settle_limit},
+            {"hold", s.hold},
+            {"unstable_fraction", s.unstable_fraction}}},
+          {"moving_most",
+           s.moving_most ? nlohmann::json{{"key_point", s.moving_most->key_point},
+                                          {"mm_per_1000_steps", s.moving_most->mm_per_1000_steps}}
+                         : nlohmann::json()},
+          {"support_pressure_ratio", s.support_pressure_ratio}};
+}
+
+template <class T>
+std::optional<T> optional_at(const nlohmann::json& j, const char* key) {
+  if (!j.contains(key) || j.at(key).is_null()) return std::nullopt;
+  return j.at(key).get<T>();
+}
+
+StageRecord stage_from_json(const nlohmann::json& j) {
+  StageRecord s;
+  s.kind = j.at("kind").get<std::string>();
+  s.changes = j.at("changes");
+  s.steps = j.at("steps").get<long>();
+  s.simulated_time = j.at("simulated_time").get<double>();
+  s.dt = optional_at<double>(j, "dt");
+  s.unbalanced_ratio = j.at("unbalanced_ratio").get<double>();
+  s.settle = optional_at<double>(j, "settle");
+  s.converged = optional_at<bool>(j, "converged");
+  s.max_steps = j.at("max_steps").get<long>();
+  const nlohmann::json& c = j.at("criteria");
+  s.ratio = c.at("ratio").get<double>();
+  s.settle_limit = c.at("settle").get<double>();
+  s.hold = c.at("hold").get<int>();
+  s.unstable_fraction = c.at("unstable_fraction").get<double>();
+  const nlohmann::json& m = j.value("moving_most", nlohmann::json());
+  if (m.is_object())
+    s.moving_most =
+        MovingMost{m.at("key_point").get<std::string>(), m.at("mm_per_1000_steps").get<double>()};
+  s.support_pressure_ratio = j.at("support_pressure_ratio").get<double>();
+  return s;
+}
+
+nlohmann::json fdem_json(const FdemRecord& f) {
+  nlohmann::json j = nlohmann::json::object();
+  if (f.unbalanced_ratio_at_start) j["unbalanced_ratio_at_start"] = *f.unbalanced_ratio_at_start;
+  if (f.unbalanced_ratio_at_end) j["unbalanced_ratio_at_end"] = *f.unbalanced_ratio_at_end;
+  if (f.handoff_alpha) j["handoff_alpha"] = *f.handoff_alpha;
+  if (f.stages) j["stages"] = stage_records_json(*f.stages);
+  if (f.handoff_dt)
+    j["handoff_step"] = {{"steps", 1}, {"dt", *f.handoff_dt}, {"simulated_time", *f.handoff_dt}};
+  return j;
+}
+
+nlohmann::json energy_json(const fdem::EnergyBalance& en) {
+  return {{"external_work", en.external_work},
+          {"kinetic", en.kinetic},
+          {"strain", en.strain},
+          {"crack_elastic", en.crack_elastic},
+          {"contact_elastic", en.contact_elastic},
+          {"initial_stored", en.initial_stored},
+          {"damping", en.damping},
+          {"fracture", en.fracture},
+          {"friction", en.friction},
+          {"absorbing", en.absorbing},
+          {"softening", en.softening},
+          {"removed_by_stages", en.removed},
+          {"residual", en.residual()},
+          {"relative_imbalance", en.imbalance()}};
+}
+
+// steps, dt, simulated_time, broken, energy, state_hash.
+void add_state(nlohmann::json& j, const EngineState& s) {
+  j["steps"] = s.steps;
+  j["dt"] = s.dt;
+  j["simulated_time"] = s.simulated_time;
+  j["broken"] = {
+      {"mode_I", s.broken.mode_I}, {"mode_II", s.broken.mode_II}, {"mixed", s.broken.mixed}};
+  if (s.energy) j["energy"] = energy_json(*s.energy);
+  j["state_hash"] = s.state_hash;
+}
+
+nlohmann::json key_point_json(const KeyPointFigures& k) {
+  nlohmann::json j = {{"ux_mm", k.ux_mm},
+                      {"uy_mm", k.uy_mm},
+                      {"u_mm", k.u_mm},
+                      {"radial_mm", k.radial_mm},
+                      {"x", k.x},
+                      {"y", k.y},
+                      {"inward", {k.inward_x, k.inward_y}}};
+  if (k.radial_since_support_mm) j["radial_since_support_mm"] = *k.radial_since_support_mm;
+  return j;
+}
+
+// Key points, chords, then the scene's monitors (a name of both: the monitor's).
+nlohmann::json monitors_json(const MonitorRecord& m) {
+  nlohmann::json j = nlohmann::json::object();
+  for (const auto& [name, k] : m.key_points) j[name] = key_point_json(k);
+  if (m.chords) {
+    j["vault_settlement_mm"] = m.chords->vault_settlement_mm;
+    j["wall_chord_convergence_mm"] = m.chords->wall_chord_convergence_mm;
+    j["shoulder_chord_convergence_mm"] = m.chords->shoulder_chord_convergence_mm;
+  }
+  for (const auto& [name, p] : m.points)
+    j[name] = {{"ux_mm", p.ux_mm}, {"uy_mm", p.uy_mm},       {"u_mm", p.u_mm}, {"x", p.x},
+               {"y", p.y},         {"triangle", p.triangle}, {"from", p.from}};
+  return j;
+}
+
+nlohmann::json ground_reaction_json(const std::vector<GroundReactionPoint>& curve) {
+  nlohmann::json j = nlohmann::json::array();
+  for (const GroundReactionPoint& p : curve)
+    j.push_back({{"support_pressure_ratio", p.support_pressure_ratio},
+                 {"vault_settlement_mm", p.vault_settlement_mm},
+                 {"point", p.point}});
+  return j;
+}
+
 }  // namespace
+
+nlohmann::json stage_records_json(const std::vector<StageRecord>& stages) {
+  nlohmann::json j = nlohmann::json::array();
+  for (const StageRecord& s : stages) j.push_back(stage_json(s));
+  return j;
+}
+
+std::vector<StageRecord> stage_records_from_json(const nlohmann::json& stages) {
+  std::vector<StageRecord> out;
+  for (const nlohmann::json& s : stages) out.push_back(stage_from_json(s));
+  return out;
+}
 
 RunRecord::RunRecord(const Scene& scene, int threads)
     : warnings(scene.warnings),
+      threads(threads),
       timings_{{"mesh", 0.0}, {"insitu", 0.0}, {"fdem", 0.0}, {"output", 0.0}, {"total", 0.0}} {
   using nlohmann::json;
   figures_ = {{"format_version", kSummaryFormatVersion},
@@ -44,23 +189,16 @@ RunRecord::RunRecord(const Scene& scene, int threads)
               {"scene", scene.source},
               {"overrides", scene.overrides},
               {"title", scene.title},
-              {"threads", threads},
               {"counts",
                {{"triangles", 0},
                 {"nodes", 0},
                 {"crack_elements", 0},
                 {"bolts", scene.bolts.segments.size()}}},
-              {"steps", 0},
-              {"dt", 0.0},
-              {"simulated_time", 0.0},
               {"throughput", {{"triangle_steps_per_second", 0.0}}},
-              {"broken", {{"mode_I", 0}, {"mode_II", 0}, {"mixed", 0}}},
-              {"monitors", json::object()},
               {"insitu",
                {{"alpha", json::array()},
                 {"kirsch_rel_l2", nullptr},
-                {"solver_iterations", json::array()}}},
-              {"state_hash", ""}};
+                {"solver_iterations", json::array()}}}};
 }
 
 void RunRecord::note_turned_off(const OutputSettings& output, const std::string& paraview_files,
@@ -72,16 +210,12 @@ void RunRecord::note_turned_off(const OutputSettings& output, const std::string&
 void RunRecord::record_mesh(const mesh::Mesh& m, const mesh::MeshReport& report) {
   figures_["counts"]["triangles"] = m.n_triangles();
   figures_["counts"]["nodes"] = m.n_vertices();
-  figures_["mesh"] = {{"triangles", report.n_triangles},
-                      {"vertices", report.n_vertices},
-                      {"min_altitude", report.min_altitude},
-                      {"min_angle_deg", report.min_angle_deg},
-                      {"seconds", report.seconds}};
-  figures_["state_hash"] = fdem::bits_hash(interleave(m.x, m.y));
+  mesh = report;
+  state.state_hash = fdem::bits_hash(interleave(m.x, m.y));
 }
 
 void RunRecord::record_insitu_state(const insitu::InsituField& field) {
-  figures_["state_hash"] = fdem::bits_hash(interleave(field.ux, field.uy));
+  state.state_hash = fdem::bits_hash(interleave(field.ux, field.uy));
 }
 
 void RunRecord::set_timings(const PhaseTimer& timer) {
@@ -91,6 +225,23 @@ void RunRecord::set_timings(const PhaseTimer& timer) {
 
 nlohmann::json RunRecord::to_json() const {
   nlohmann::json j = figures_;
+  j["threads"] = threads;
+  add_state(j, state);
+  if (mesh)
+    j["mesh"] = {{"triangles", mesh->n_triangles},
+                 {"vertices", mesh->n_vertices},
+                 {"min_altitude", mesh->min_altitude},
+                 {"min_angle_deg", mesh->min_angle_deg},
+                 {"seconds", mesh->seconds}};
+  if (dt_range) {
+    j["dt_min"] = dt_range->first;
+    j["dt_max"] = dt_range->second;
+  }
+  if (fdem) j["fdem"] = fdem_json(*fdem);
+  j["monitors"] = monitors_json(monitors);
+  if (!ground_reaction_curve.empty())
+    j["ground_reaction_curve"] = ground_reaction_json(ground_reaction_curve);
+  if (history_stages) j["history_stages"] = *history_stages;
   if (!status.empty()) j["status"] = status;
   if (status_reason) j["status_reason"] = *status_reason;
   if (failure) j["failure"] = *failure;

@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "run/phase_timer.hpp"
+#include "run/run_figures.hpp"
 
 namespace rockfdem::mesh {
 struct Mesh;
@@ -53,9 +54,17 @@ class RunRecord {
   std::vector<std::string> skipped;          ///< modules and outputs left out, and why
   std::optional<CheckpointMark> restarted_from;
   std::optional<CheckpointMark> checkpoint;  ///< the last one written
+  int threads = 0;
+  std::optional<mesh::MeshReport> mesh;               ///< "mesh": sizes and quality
+  EngineState state;                                  ///< steps, dt, ..., state_hash
+  std::optional<std::pair<double, double>> dt_range;  ///< dt_min, dt_max [s]
+  std::optional<FdemRecord> fdem;
+  MonitorRecord monitors;
+  std::vector<GroundReactionPoint> ground_reaction_curve;  ///< empty: not drawn (no key)
+  std::optional<std::vector<std::string>> history_stages;  ///< history.csv's stage names
 
   /// The record's figures not yet held as members (counts, mesh, insitu,
-  /// fdem, monitors, bolts, lining, broken zone, ...), as summary.json's keys.
+  /// bolts, lining, broken zone, ...), as summary.json's keys.
   nlohmann::json& figures() { return figures_; }
   const nlohmann::json& figures() const { return figures_; }
 
@@ -81,5 +90,10 @@ class RunRecord {
   std::map<std::string, double> timings_;  ///< per phase (snake_case) and "total" [s]
   nlohmann::json figures_;
 };
+
+/// summary.json's "fdem"."stages" (also the checkpoints' copy of them).
+nlohmann::json stage_records_json(const std::vector<StageRecord>& stages);
+/// The stage records a checkpoint file holds (stage_records_json's form).
+std::vector<StageRecord> stage_records_from_json(const nlohmann::json& stages);
 
 }  // namespace rockfdem::workflows
