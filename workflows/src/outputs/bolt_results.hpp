@@ -34,8 +34,8 @@ class BoltResults {
   /// bolt_NN.csv (final profiles) and summary "bolts".
   void finish(const fdem::Engine& e, RunRecord& summary) const;
   /// One bolt's summary entry; writes its bolt_NN.csv when installed.
-  nlohmann::json summary_entry(const fdem::Engine& e, std::size_t b,
-                               const std::vector<fdem::BoltStation>& final_profile) const;
+  BoltFigures summary_entry(const fdem::Engine& e, std::size_t b,
+                            const std::vector<fdem::BoltStation>& final_profile) const;
   /// bolt_forces.png's curves: kN per bar against the distance from the
   /// collar, one per installed bolt (final state).
   std::vector<plots::PlotSeries> force_curves(const fdem::Engine& e) const;

@@ -135,7 +135,7 @@ void Instruments::add_monitors(MonitorRecord& monitors, const NodeDisplacement& 
   }
 }
 
-void Instruments::finish(nlohmann::json& summary, const fdem::Engine& e, const mesh::Mesh& m,
+void Instruments::finish(RunRecord& summary, const fdem::Engine& e, const mesh::Mesh& m,
                          const NodeDisplacement& u) const {
   nlohmann::json ext = nlohmann::json::object();
   for (const Extensometer& x : extensometers_) {
@@ -153,15 +153,13 @@ void Instruments::finish(nlohmann::json& summary, const fdem::Engine& e, const m
         {"length_m", x.spec->length},
         {"points", points}};
   }
-  if (!extensometers_.empty()) summary["extensometers"] = ext;
-  nlohmann::json rays = nlohmann::json::object();
+  if (!extensometers_.empty()) summary.figures()["extensometers"] = ext;
+  BrokenZoneRecord& zone =
+      summary.broken_zone ? *summary.broken_zone : summary.broken_zone.emplace();
   const std::vector<double> depth = broken_depth_along_rays(e, m, rays_, half_width_, bolted_);
   for (std::size_t i = 0; i < rays_.size(); ++i)
-    rays[ray_names_[i]] = {{"depth_m", depth[i]},
-                           {"origin", {rays_[i].x, rays_[i].y}},
-                           {"direction", {rays_[i].dx, rays_[i].dy}}};
-  summary["broken_zone"]["along_rays"] = rays;
-  summary["broken_zone"]["ray_half_width_m"] = half_width_;
+    zone.rays[ray_names_[i]] = {depth[i], {rays_[i].x, rays_[i].y}, {rays_[i].dx, rays_[i].dy}};
+  zone.ray_half_width_m = half_width_;
 }
 
 nlohmann::json Instruments::state() const {

@@ -21,7 +21,7 @@
 #include "outputs/monitors.hpp"
 #include "rockfdem/fdem/bolt_install.hpp"
 #include "rockfdem/workflows/scene.hpp"
-#include "run/run_figures.hpp"
+#include "run/summary.hpp"
 
 namespace rockfdem::workflows {
 
@@ -44,11 +44,11 @@ class Instruments {
   /// A `lining` or `bolts` stage has just installed its support: the first
   /// call fixes the zero of the monitors read relative to the support.
   void support_installed(const NodeDisplacement& u);
-  /// Adds each monitor's ux_mm, uy_mm, u_mm, point and convention to
-  /// The scene's monitors into the record's monitors.
+  /// Adds each of the scene's monitors (ux, uy, |u| [mm], point and
+  /// convention) to the record's monitors.
   void add_monitors(MonitorRecord& monitors, const NodeDisplacement& u) const;
   /// summary.json's "extensometers" and "broken_zone"."along_rays".
-  void finish(nlohmann::json& summary, const fdem::Engine& e, const mesh::Mesh& m,
+  void finish(RunRecord& summary, const fdem::Engine& e, const mesh::Mesh& m,
               const NodeDisplacement& u) const;
   /// The support reference, for a restart.
   nlohmann::json state() const;

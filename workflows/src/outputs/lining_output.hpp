@@ -12,6 +12,7 @@
 #include "outputs/run_plots.hpp"
 #include "rockfdem/fdem/engine.hpp"
 #include "rockfdem/workflows/scene.hpp"
+#include "run/support_figures.hpp"
 
 namespace rockfdem::workflows {
 
@@ -25,16 +26,16 @@ class LiningOutput {
   bool installed(const fdem::Engine& e) const;
   /// DIR/lining_<step>.csv, when every lining triangle is active.
   void record(const fdem::Engine& e, const std::string& dir);
-  /// DIR/lining.csv and the summary's figures into `j` (summary "lining").
-  void finish(const fdem::Engine& e, const std::string& dir, nlohmann::json& j);
+  /// DIR/lining.csv and the ring's force extremes and capacity check.
+  LiningForceFigures finish(const fdem::Engine& e, const std::string& dir);
   /// lining_forces.png and (with a compressive strength) lining_capacity.png
   /// of the state finish() saw.
   void plots(PlotWriter& plots) const;
 
  private:
   std::vector<SectionForces> forces(const fdem::Engine& e) const;
-  /// The figures of the safety factor check into `j`.
-  void capacity_json(nlohmann::json& j) const;
+  /// The figures of the safety factor check into `f`.
+  void check_capacity(LiningForceFigures& f) const;
   LiningGeometry geometry_;
   std::vector<int> triangles_;  ///< every lining triangle
   bool has_strength_ = false;

@@ -229,8 +229,8 @@ MonitorRecord RunOutputs::monitor_figures(const fdem::Engine& e,
   MonitorRecord r;
   for (const Monitor& mon : monitors) {
     const auto k = key_point(e, mon);
-    r.key_points[mon.name] = {k[0],       k[1],       k[2],         k[3],
-                              mon.node_x, mon.node_y, mon.inward_x, mon.inward_y};
+    r.key_points[mon.name] = {k[0],       k[1],         k[2],         k[3],        mon.node_x,
+                              mon.node_y, mon.inward_x, mon.inward_y, std::nullopt};
   }
   // Per point (as field convergence points are read) and, apart, the
   // change of length of two chords between points.
@@ -331,12 +331,12 @@ void RunOutputs::lining_outputs(const fdem::Engine& e, const mesh::Mesh& m) {
     ++n_bond;
     broken += e.crack_state(c) == fdem::CrackState::kBroken;
   }
-  nlohmann::json j = nlohmann::json::object();
-  if (n_bond > 0) j = {{"interface_cracks", n_bond}, {"interface_broken", broken}};
-  if (lining_ && lining_installed_ && lining_->installed(e)) lining_->finish(e, ctx_.output_dir, j);
-  if (!j.empty())
-    summary_.figures()["lining"] = j;
-  else if (has_lining_ring(scene_))
+  LiningRecord& r = summary_.lining;
+  r = LiningRecord{};
+  if (n_bond > 0) r.interface = std::make_pair(n_bond, broken);
+  if (lining_ && lining_installed_ && lining_->installed(e))
+    r.forces = lining_->finish(e, ctx_.output_dir);
+  if (r.empty() && has_lining_ring(scene_))
     summary_.skipped.push_back("lining: the ring is not installed at the end of the run");
 }
 
@@ -366,7 +366,7 @@ void RunOutputs::finish(const fdem::Engine& e, const mesh::Mesh& m,
   record_ground_reaction(e, monitors);
   lining_outputs(e, m);
   damage_outputs(e, m);
-  if (instruments_) instruments_->finish(j, e, m, node_displacements(e));
+  if (instruments_) instruments_->finish(summary_, e, m, node_displacements(e));
   summary_.history_stages = stage_names_;  // history.csv's "stage" column indexes this list
   if (scene_.output.plots) plots(e, m);
   timer.stamp("output");
@@ -401,10 +401,8 @@ void RunOutputs::record_ground_reaction(const fdem::Engine& e,
 }
 
 void RunOutputs::damage_outputs(const fdem::Engine& e, const mesh::Mesh& m) {
-  auto& j = summary_.figures();
   const Resolution r = fracture_resolution(scene_, &m);
-  j["resolution"] = {
-      {"h_m", r.h}, {"l_ch_m", r.l_ch}, {"h_over_l_ch", r.ratio}, {"limit", kResolutionLimit}};
+  summary_.resolution = ResolutionFigures{r.h, r.l_ch, r.ratio, kResolutionLimit};
   const auto warn = [&](const std::string& msg) {
     summary_.warnings.push_back(msg);
     if (!ctx_.quiet) std::cerr << "warning: " << msg << '\n';
@@ -419,12 +417,12 @@ void RunOutputs::damage_outputs(const fdem::Engine& e, const mesh::Mesh& m) {
     warn(msg);
   }
   const BrokenZone z = broken_zone(e, m, r.h, bolt_triangles(bolts_, m.n_triangles()));
-  j["broken_zone"] = {
-      {"broken_rock_cracks", z.broken},
-      {"depth_m", z.depth},
-      {"fracture_zone_m", z.zone_depth},
-      {"clearance_m", z.clearance >= 0 ? nlohmann::json(z.clearance) : nlohmann::json()},
-      {"capped", z.at_edge}};
+  BrokenZoneRecord& zone = summary_.broken_zone.emplace();
+  zone.broken_rock_cracks = z.broken;
+  zone.depth_m = z.depth;
+  zone.fracture_zone_m = z.zone_depth;
+  if (z.clearance >= 0) zone.clearance_m = z.clearance;
+  zone.capped = z.at_edge;
   if (z.at_edge) {
     std::snprintf(msg, sizeof msg,
                   "broken crack elements reach %.2g m from the fracture zone's outer edge "

@@ -196,58 +196,92 @@ void key_points(std::ostream& md, const Scene& s, const MonitorRecord& mon, cons
   md << "\nVault settlement (-uy): " << fixed(mon.chords->vault_settlement_mm, 2) << " mm.\n";
 }
 
-void bolts(std::ostream& md, const json& j) {
-  if (!j.contains("bolts") || !j["bolts"].is_object()) return;
-  const json& b = j["bolts"];
+std::string value_text(bool v) { return v ? "yes" : "no"; }
+
+void bolts(std::ostream& md, const std::optional<BoltRecord>& r) {
+  if (!r) return;
   md << "\n## Bolts and cables (end of run)\n\n| bolt | kind | max axial force [kN per bar] | "
         "at [m from the collar] | max steel stress [MPa] | yielded | broken |\n"
         "|---|---|---|---|---|---|---|\n";
-  for (const json& e : b.value("each", json::array()))
-    md << "| " << value_text(e.value("name", json())) << " | "
-       << value_text(e.value("kind", json())) << " | "
-       << value_text(e.value("max_axial_force_kN_per_bar", json())) << " | "
-       << value_text(e.value("station_m", json())) << " | "
-       << value_text(e.value("max_steel_stress_MPa", json())) << " | "
-       << value_text(e.value("yielded", json())) << " | " << value_text(e.value("broken", json()))
-       << " |\n";
-  md << "\nSteel crack elements yielding " << value_text(b.value("steel_cracks_yielding", json()))
-     << ", broken " << value_text(b.value("steel_cracks_broken", json()))
-     << "; grout crack elements broken " << value_text(b.value("grout_cracks_broken", json()))
-     << ".\n";
-}
-
-// The scalars of a summary object, one row each (a parallel key's figures
-// carry their unit in the key's name); nested objects one level down.
-void scalar_table(std::ostream& md, const json& o) {
-  md << "| figure | value |\n|---|---|\n";
-  for (const auto& [key, v] : o.items()) {
-    if (v.is_object()) {
-      for (const auto& [sub, w] : v.items())
-        if (!w.is_structured()) md << "| " << key << '.' << sub << " | " << value_text(w) << " |\n";
-    } else if (!v.is_array()) {
-      md << "| " << key << " | " << value_text(v) << " |\n";
-    }
+  for (const BoltFigures& b : r->each) {
+    md << "| " << b.name << " | " << b.kind << " | ";
+    if (b.peak)
+      md << value_text(b.peak->max_axial_force_kN_per_bar) << " | " << value_text(b.peak->station_m)
+         << " | " << value_text(b.peak->max_steel_stress_MPa) << " | "
+         << value_text(b.peak->yielded) << " | " << value_text(b.peak->broken) << " |\n";
+    else
+      md << "- | - | - | - | - |\n";
   }
+  md << "\nSteel crack elements yielding " << value_text(r->steel_cracks_yielding) << ", broken "
+     << value_text(r->steel_cracks_broken) << "; grout crack elements broken "
+     << value_text(r->grout_cracks_broken) << ".\n";
 }
 
-void lining(std::ostream& md, const json& j) {
-  if (!j.contains("lining") || !j["lining"].is_object()) return;
+// Rows of figures by name, in the order of their names (summary.json's).
+using Rows = std::map<std::string, std::string>;
+
+void scalar_table(std::ostream& md, const Rows& rows) {
+  md << "| figure | value |\n|---|---|\n";
+  for (const auto& [key, text] : rows) md << "| " << key << " | " << text << " |\n";
+}
+
+void capacity_rows(Rows& t, const LiningCapacityFigures& c) {
+  t["compressive_strength_Pa"] = value_text(c.compressive_strength_Pa);
+  t["tensile_strength_Pa"] = value_text(c.tensile_strength_Pa);
+  t["min_safety_factor"] = value_text(c.min_safety_factor);
+  t["min_safety_factor_angle_deg"] = value_text(c.min_safety_factor_angle_deg);
+  t["min_safety_factor_x_m"] = value_text(c.min_safety_factor_x_m);
+  t["min_safety_factor_y_m"] = value_text(c.min_safety_factor_y_m);
+  t["min_safety_factor_at_corner"] = value_text(c.min_safety_factor_at_corner);
+  t["segments_below_1"] = value_text(c.segments_below_1);
+}
+
+void force_rows(Rows& t, const LiningForceFigures& f) {
+  t["file"] = "lining.csv";
+  t["step"] = value_text(f.step);
+  t["segments"] = value_text(f.segments);
+  t["thickness_m"] = value_text(f.thickness_m);
+  t["corner_segments"] = value_text(f.corner_segments);
+  t["max_thrust_kN_per_m"] = value_text(f.max_thrust_kN_per_m);
+  t["max_thrust_angle_deg"] = value_text(f.max_thrust_angle_deg);
+  t["min_thrust_kN_per_m"] = value_text(f.min_thrust_kN_per_m);
+  t["min_thrust_angle_deg"] = value_text(f.min_thrust_angle_deg);
+  t["max_abs_moment_kNm_per_m"] = value_text(f.max_abs_moment_kNm_per_m);
+  t["max_abs_moment_angle_deg"] = value_text(f.max_abs_moment_angle_deg);
+  t["max_abs_shear_kN_per_m"] = value_text(f.max_abs_shear_kN_per_m);
+  t["max_abs_shear_angle_deg"] = value_text(f.max_abs_shear_angle_deg);
+  t["capacity"] = f.capacity;
+  if (f.check) capacity_rows(t, *f.check);
+}
+
+void lining(std::ostream& md, const LiningRecord& r) {
+  if (r.empty()) return;
   md << "\n## Lining (end of run)\n\n";
-  scalar_table(md, j["lining"]);
+  Rows t;
+  if (r.interface) {
+    t["interface_cracks"] = value_text(r.interface->first);
+    t["interface_broken"] = value_text(r.interface->second);
+  }
+  if (r.forces) force_rows(t, *r.forces);
+  scalar_table(md, t);
 }
 
-void broken_zone(std::ostream& md, const fdem::BrokenCounts& b, const json& j) {
+void broken_zone(std::ostream& md, const fdem::BrokenCounts& b,
+                 const std::optional<BrokenZoneRecord>& z) {
   md << "\n## Broken zone (end of run)\n\nBroken crack elements: mode I " << value_text(b.mode_I)
      << ", mode II " << value_text(b.mode_II) << ", mixed " << value_text(b.mixed) << ".\n\n";
-  if (!j.contains("broken_zone")) return;
-  json z = j["broken_zone"];
-  json rays = z.value("along_rays", json::object());
-  z.erase("along_rays");
-  scalar_table(md, z);
-  if (rays.empty()) return;
+  if (!z) return;
+  Rows t{{"broken_rock_cracks", value_text(z->broken_rock_cracks)},
+         {"depth_m", value_text(z->depth_m)},
+         {"fracture_zone_m", value_text(z->fracture_zone_m)},
+         {"clearance_m", value_text(z->clearance_m)},
+         {"capped", value_text(z->capped)}};
+  if (z->ray_half_width_m) t["ray_half_width_m"] = value_text(*z->ray_half_width_m);
+  scalar_table(md, t);
+  if (z->rays.empty()) return;
   md << "\n| ray from | broken depth [m] |\n|---|---|\n";
-  for (const auto& [name, r] : rays.items())
-    md << "| " << name << " | " << value_text(r.value("depth_m", json())) << " |\n";
+  for (const auto& [name, r] : z->rays)
+    md << "| " << name << " | " << value_text(r.depth_m) << " |\n";
 }
 
 void pictures(std::ostream& md, const ReportExtras& x) {
@@ -264,7 +298,6 @@ void pictures(std::ostream& md, const ReportExtras& x) {
 std::string report_markdown(const Scene& scene, const RunRecord& record,
                             const ReportExtras& extras) {
   std::ostringstream md;
-  const json& j = record.figures();
   md << "# Run report: " << (scene.title.empty() ? scene.source : scene.title) << "\n\n"
      << "Scene `" << scene.source << "`, rockfdem " << version_string() << ", " << record.threads
      << " threads, state hash `" << record.state.state_hash << "`. Figures in full: summary.json, "
@@ -273,9 +306,9 @@ std::string report_markdown(const Scene& scene, const RunRecord& record,
   stages(md, record);
   status(md, record);
   key_points(md, scene, record.monitors, extras);
-  bolts(md, j);
-  lining(md, j);
-  broken_zone(md, record.state.broken, j);
+  bolts(md, record.bolts);
+  lining(md, record.lining);
+  broken_zone(md, record.state.broken, record.broken_zone);
   pictures(md, extras);
   return md.str();
 }

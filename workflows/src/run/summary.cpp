@@ -165,6 +165,99 @@ nlohmann::json ground_reaction_json(const std::vector<GroundReactionPoint>& curv
   return j;
 }
 
+nlohmann::json bolt_json(const BoltFigures& b) {
+  nlohmann::json j = {{"name", b.name},
+                      {"kind", b.kind},
+                      {"head", b.head},
+                      {"end", b.end},
+                      {"installed", b.installed},
+                      {"steel_cracks_yielding", b.steel_cracks_yielding},
+                      {"steel_cracks_broken", b.steel_cracks_broken},
+                      {"grout_cracks_broken", b.grout_cracks_broken}};
+  if (!b.peak) return j;
+  j["file"] = b.peak->file;
+  j["max_axial_force_kN_per_bar"] = b.peak->max_axial_force_kN_per_bar;
+  j["max_steel_stress_MPa"] = b.peak->max_steel_stress_MPa;
+  j["station_m"] = b.peak->station_m;
+  j["yielded"] = b.peak->yielded;
+  j["broken"] = b.peak->broken;
+  return j;
+}
+
+nlohmann::json bolts_json(const BoltRecord& r) {
+  nlohmann::json each = nlohmann::json::array();
+  for (const BoltFigures& b : r.each) each.push_back(bolt_json(b));
+  return {{"count", r.count},
+          {"steel_cracks_yielding", r.steel_cracks_yielding},
+          {"steel_cracks_broken", r.steel_cracks_broken},
+          {"grout_cracks_broken", r.grout_cracks_broken},
+          {"each", each}};
+}
+
+void add_capacity(nlohmann::json& j, const LiningCapacityFigures& c) {
+  j["compressive_strength_Pa"] = c.compressive_strength_Pa;
+  j["tensile_strength_Pa"] = c.tensile_strength_Pa;
+  j["min_safety_factor"] = or_null(c.min_safety_factor);
+  j["min_safety_factor_angle_deg"] = c.min_safety_factor_angle_deg;
+  j["min_safety_factor_x_m"] = c.min_safety_factor_x_m;
+  j["min_safety_factor_y_m"] = c.min_safety_factor_y_m;
+  j["min_safety_factor_at_corner"] = c.min_safety_factor_at_corner;
+  j["segments_below_1"] = c.segments_below_1;
+}
+
+void add_lining_forces(nlohmann::json& j, const LiningForceFigures& f) {
+  j["file"] = "lining.csv";
+  j["step"] = f.step;
+  j["segments"] = f.segments;
+  j["thickness_m"] = f.thickness_m;
+  j["corner_segments"] = f.corner_segments;
+  j["max_thrust_kN_per_m"] = f.max_thrust_kN_per_m;
+  j["max_thrust_angle_deg"] = f.max_thrust_angle_deg;
+  j["min_thrust_kN_per_m"] = f.min_thrust_kN_per_m;
+  j["min_thrust_angle_deg"] = f.min_thrust_angle_deg;
+  j["max_abs_moment_kNm_per_m"] = f.max_abs_moment_kNm_per_m;
+  j["max_abs_moment_angle_deg"] = f.max_abs_moment_angle_deg;
+  j["max_abs_shear_kN_per_m"] = f.max_abs_shear_kN_per_m;
+  j["max_abs_shear_angle_deg"] = f.max_abs_shear_angle_deg;
+  j["capacity"] = f.capacity;
+  if (f.check) add_capacity(j, *f.check);
+}
+
+nlohmann::json lining_json(const LiningRecord& r) {
+  nlohmann::json j = nlohmann::json::object();
+  if (r.interface)
+    j = {{"interface_cracks", r.interface->first}, {"interface_broken", r.interface->second}};
+  if (r.forces) add_lining_forces(j, *r.forces);
+  return j;
+}
+
+nlohmann::json broken_zone_json(const BrokenZoneRecord& z) {
+  nlohmann::json j = {{"broken_rock_cracks", z.broken_rock_cracks},
+                      {"depth_m", z.depth_m},
+                      {"fracture_zone_m", z.fracture_zone_m},
+                      {"clearance_m", or_null(z.clearance_m)},
+                      {"capped", z.capped}};
+  if (!z.ray_half_width_m) return j;
+  nlohmann::json rays = nlohmann::json::object();
+  for (const auto& [name, r] : z.rays)
+    rays[name] = {{"depth_m", r.depth_m}, {"origin", r.origin}, {"direction", r.direction}};
+  j["along_rays"] = rays;
+  j["ray_half_width_m"] = *z.ray_half_width_m;
+  return j;
+}
+
+// The support and damage figures at the end of a tunnel run.
+void add_support(nlohmann::json& j, const RunRecord& r) {
+  if (r.bolts) j["bolts"] = bolts_json(*r.bolts);
+  if (!r.lining.empty()) j["lining"] = lining_json(r.lining);
+  if (r.resolution)
+    j["resolution"] = {{"h_m", r.resolution->h_m},
+                       {"l_ch_m", r.resolution->l_ch_m},
+                       {"h_over_l_ch", r.resolution->h_over_l_ch},
+                       {"limit", r.resolution->limit}};
+  if (r.broken_zone) j["broken_zone"] = broken_zone_json(*r.broken_zone);
+}
+
 }  // namespace
 
 nlohmann::json stage_records_json(const std::vector<StageRecord>& stages) {
@@ -242,6 +335,7 @@ nlohmann::json RunRecord::to_json() const {
   if (!ground_reaction_curve.empty())
     j["ground_reaction_curve"] = ground_reaction_json(ground_reaction_curve);
   if (history_stages) j["history_stages"] = *history_stages;
+  add_support(j, *this);
   if (!status.empty()) j["status"] = status;
   if (status_reason) j["status_reason"] = *status_reason;
   if (failure) j["failure"] = *failure;

@@ -15,6 +15,7 @@
 
 #include "run/phase_timer.hpp"
 #include "run/run_figures.hpp"
+#include "run/support_figures.hpp"
 
 namespace rockfdem::mesh {
 struct Mesh;
@@ -62,9 +63,13 @@ class RunRecord {
   MonitorRecord monitors;
   std::vector<GroundReactionPoint> ground_reaction_curve;  ///< empty: not drawn (no key)
   std::optional<std::vector<std::string>> history_stages;  ///< history.csv's stage names
+  std::optional<BoltRecord> bolts;
+  LiningRecord lining;  ///< empty: no key
+  std::optional<ResolutionFigures> resolution;
+  std::optional<BrokenZoneRecord> broken_zone;
 
-  /// The record's figures not yet held as members (counts, mesh, insitu,
-  /// bolts, lining, broken zone, ...), as summary.json's keys.
+  /// The record's figures not yet held as members (counts, insitu, ...),
+  /// as summary.json's keys.
   nlohmann::json& figures() { return figures_; }
   const nlohmann::json& figures() const { return figures_; }
 
