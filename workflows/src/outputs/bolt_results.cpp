@@ -89,6 +89,11 @@ std::vector<double> BoltResults::record(const fdem::Engine& e, long step, double
   return row;
 }
 
+void BoltResults::at_output_step(const OutputStep& s, std::vector<double>& row) {
+  for (double v : record(s.engine, s.engine.step_count(), s.engine.time(), s.stage_index))
+    row.push_back(v);
+}
+
 void BoltResults::write_frame(const std::string& file, const coupling::VtkFieldData& frame) {
   coupling::VtkPolylines l;
   std::vector<double> force, stress, station;

@@ -67,7 +67,7 @@ Instruments::Instruments(const Scene& scene, const mesh::Mesh& m, const fdem::En
   }
 }
 
-std::vector<std::string> Instruments::columns() const {
+std::vector<std::string> Instruments::history_columns() const {
   std::vector<std::string> cols;
   for (const MonitorSpec& s : scene_.monitors)
     for (const char* c : {"_ux_mm", "_uy_mm", "_u_mm"}) cols.push_back(s.name + c);

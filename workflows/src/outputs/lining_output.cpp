@@ -28,7 +28,8 @@ double median_thickness(const LiningGeometry& g) {
 
 }  // namespace
 
-LiningOutput::LiningOutput(const Scene& scene, const mesh::Mesh& m) {
+LiningOutput::LiningOutput(const Scene& scene, const mesh::Mesh& m, std::string dir)
+    : dir_(std::move(dir)) {
   if (auto g = lining_geometry(m)) geometry_ = std::move(*g);
   for (std::size_t t = 0; t < m.n_triangles(); ++t)
     if (m.zone[t] == mesh::kLining) triangles_.push_back(int(t));
@@ -52,12 +53,13 @@ std::vector<SectionForces> LiningOutput::forces(const fdem::Engine& e) const {
   return lining_forces(geometry_, stress);
 }
 
-void LiningOutput::record(const fdem::Engine& e, const std::string& dir) {
-  if (!installed(e)) return;
+void LiningOutput::at_output_step(const OutputStep& step, std::vector<double>&) {
+  const fdem::Engine& e = step.engine;
+  if (!installed_ || !installed(e)) return;
   char name[40];
   std::snprintf(name, sizeof name, "lining_%06ld.csv", e.step_count());
   coupling::atomic_write_text(
-      output_path(dir, name),
+      output_path(dir_, name),
       lining_csv(e.step_count(), geometry_, forces(e), has_strength_ ? &strength_ : nullptr));
 }
 

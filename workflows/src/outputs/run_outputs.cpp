@@ -149,10 +149,8 @@ std::vector<std::string> RunOutputs::history_columns(const std::vector<Monitor>&
               {"vault_settlement_mm", "wall_chord_convergence_mm", "shoulder_chord_convergence_mm",
                "outer_rotation_deg", "support_pressure_ratio"});
   for (const std::string& c : energy_columns()) cols.push_back(c);
-  if (bolt_results_)
-    for (const std::string& c : bolt_results_->history_columns()) cols.push_back(c);
-  if (instruments_)
-    for (const std::string& c : instruments_->columns()) cols.push_back(c);
+  for (const OutputStepObserver* o : observers())
+    for (const std::string& c : o->history_columns()) cols.push_back(c);
   return cols;
 }
 
@@ -168,16 +166,29 @@ void RunOutputs::begin_history(const std::vector<Monitor>& monitors, const mesh:
                            boundary_vertices_.end());
   monitors_ = monitors;
   if (has_lining_ring(scene_)) {
-    lining_ = std::make_unique<LiningOutput>(scene_, m);
+    lining_ = std::make_unique<LiningOutput>(scene_, m, ctx_.output_dir);
     if (!lining_->has_ring()) lining_.reset();
+    if (lining_) lining_->set_installed(lining_installed_);
   }
   history_ = std::make_unique<History>(output_path(ctx_.output_dir, "history.csv"),
                                        history_columns(monitors));
 }
 
-void RunOutputs::record_step(const fdem::Engine& e, const mesh::Mesh& m,
-                             const std::vector<Monitor>& monitors, PhaseTimer& timer,
-                             const std::string& stage, double support_ratio) {
+std::vector<OutputStepObserver*> RunOutputs::observers() const {
+  std::vector<OutputStepObserver*> out;
+  for (OutputStepObserver* o : std::initializer_list<OutputStepObserver*>{
+           bolt_results_.get(), instruments_.get(), lining_.get()})
+    if (o) out.push_back(o);
+  return out;
+}
+
+void RunOutputs::set_lining_installed(bool installed) {
+  lining_installed_ = installed;
+  if (lining_) lining_->set_installed(installed);
+}
+
+void RunOutputs::record_rows(const fdem::Engine& e, const mesh::Mesh& m, const std::string& stage,
+                             double support_ratio) {
   if (stage_names_.empty() || stage_names_.back() != stage) stage_names_.push_back(stage);
   const fdem::BrokenCounts b = e.broken_counts();
   std::vector<double> row{double(stage_names_.size() - 1),
@@ -188,24 +199,22 @@ void RunOutputs::record_step(const fdem::Engine& e, const mesh::Mesh& m,
                           double(b.mode_I),
                           double(b.mode_II),
                           double(b.mixed)};
-  for (const Monitor& mon : monitors)
+  for (const Monitor& mon : monitors_)
     for (double v : key_point(e, mon)) row.push_back(v);
-  row.push_back(-mm(displacement(e, find(monitors, "vault"))[1]));
-  row.push_back(mm(convergence(e, monitors, "left_wall", "right_wall")));
-  row.push_back(mm(convergence(e, monitors, "left_shoulder", "right_shoulder")));
+  row.push_back(-mm(displacement(e, find(monitors_, "vault"))[1]));
+  row.push_back(mm(convergence(e, monitors_, "left_wall", "right_wall")));
+  row.push_back(mm(convergence(e, monitors_, "left_shoulder", "right_shoulder")));
   row.push_back(boundary_fit(e).rotation * 180 / M_PI);
   row.push_back(support_ratio);
-  const fdem::EnergyBalance energy = e.energy_balance();
-  for (double v : energy_row(energy)) row.push_back(v);
-  if (bolt_results_)
-    for (double v : bolt_results_->record(e, e.step_count(), e.time(), int(row[0])))
-      row.push_back(v);
-  if (instruments_)
-    for (double v : instruments_->row(e, m, node_displacements(e))) row.push_back(v);
+  for (double v : energy_row(e.energy_balance())) row.push_back(v);
+  const NodeDisplacement u = node_displacements(e);
+  const OutputStep step{e, m, int(stage_names_.size() - 1), u};
+  for (OutputStepObserver* o : observers()) o->at_output_step(step, row);
   history_->add(row);
-  if (lining_ && lining_installed_) lining_->record(e, ctx_.output_dir);
-  // Before the frame: the last frame stays the last good state.
-  check_energy(energy, e.step_count(), energy_floor_);
+}
+
+void RunOutputs::record_frame(const fdem::Engine& e, const mesh::Mesh& m, const std::string& stage,
+                              PhaseTimer& timer) {
   check_rigid_motion(e, e.step_count());
   // The hand-off step's dt, once it passed (a failed one is no good state).
   if (stage == "handoff" && stage_names_.size() == 1) handoff_dt_ = e.dt();
@@ -220,7 +229,7 @@ void RunOutputs::record_step(const fdem::Engine& e, const mesh::Mesh& m,
     std::snprintf(name, sizeof name, "bolts_%04d.vtp", frame_ - 1);
     if (bolt_results_) bolt_results_->write_frame(name, g.field);
   }
-  last_good_.take(e, energy, monitor_figures(e, monitors));
+  last_good_.take(e, e.energy_balance(), monitor_figures(e, monitors_));
   timer.stamp("output");
 }
 

@@ -53,10 +53,18 @@ class RunOutputs {
   }
   /// Whether the lining ring is installed as lining (before, its triangles
   /// are ground still to be excavated): its forces are written from then.
-  void set_lining_installed(bool installed) { lining_installed_ = installed; }
-  /// One history row and (if enabled) one ParaView frame.
-  void record_step(const fdem::Engine& e, const mesh::Mesh& m, const std::vector<Monitor>& monitors,
-                   PhaseTimer& timer, const std::string& stage, double support_ratio);
+  void set_lining_installed(bool installed);
+  /// An output step's history row, with the columns and files of the
+  /// outputs that observe output steps (bolts, instruments, lining);
+  /// before the run's checks of the step, so that a failing step has its row.
+  void record_rows(const fdem::Engine& e, const mesh::Mesh& m, const std::string& stage,
+                   double support_ratio);
+  /// The output step once the run's checks passed: the outer boundary's
+  /// rigid-motion check, the ParaView frame (if enabled) and the last good state.
+  void record_frame(const fdem::Engine& e, const mesh::Mesh& m, const std::string& stage,
+                    PhaseTimer& timer);
+  /// The outputs that observe output steps, in history.csv's column order.
+  std::vector<OutputStepObserver*> observers() const;
   /// The key point displaced most from the in-situ state and |u| [m].
   std::pair<std::string, double> largest_key_point(const fdem::Engine& e,
                                                    const std::vector<Monitor>& monitors) const;

@@ -247,8 +247,7 @@ void Run::begin_stages() {
     }
     summary_.restarted_from = CheckpointMark{ctx_.restart, engine().step_count()};
   } else {
-    reporting_failure(
-        [&] { out_.record_step(engine(), mesh_, monitors_, timer_, "handoff", handoff().alpha); });
+    reporting_failure([&] { stages_->record_output("handoff", timer_); });
   }
   stages_->set_checkpoint(
       ctx_.checkpoint_every >= 0 ? ctx_.checkpoint_every : scene_.output.checkpoint_every,

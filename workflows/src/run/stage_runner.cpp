@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 
+#include "outputs/engine_report.hpp"
 #include "rockfdem/error.hpp"
 #include "run/interrupt.hpp"
 #include "run/output_dir.hpp"
@@ -30,7 +31,8 @@ StageRunner::StageRunner(fdem::Engine& engine, const mesh::Mesh& m,
       engine_(engine),
       out_(out),
       scene_(scene),
-      monitors_(monitors) {
+      monitors_(monitors),
+      energy_floor_(energy_floor(scene, m)) {
   out_.set_lining_installed(model_.lining_installed);
 }
 
@@ -174,8 +176,11 @@ void StageRunner::interrupted(const StageSpec& stage) {
                              "'; outputs and a checkpoint are written");
 }
 
-void StageRunner::record_step(const StageSpec& stage) {
-  out_.record_step(engine_, model_.mesh, monitors_, *timer_, stage.kind, model_.support_ratio());
+void StageRunner::record_output(const std::string& stage, PhaseTimer& timer) {
+  out_.record_rows(engine_, model_.mesh, stage, model_.support_ratio());
+  // Before the frame: the last frame stays the last good state.
+  check_energy(engine_.energy_balance(), engine_.step_count(), energy_floor_);
+  out_.record_frame(engine_, model_.mesh, stage, timer);
 }
 
 bool StageRunner::criterion_met(const StageSpec& stage, long broken_target, bool reached) {

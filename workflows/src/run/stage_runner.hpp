@@ -66,6 +66,9 @@ class StageRunner {
   bool step_until(const StageSpec& stage, long broken_target);
   /// Whether an unstable opening ended the stages.
   bool stopped() const { return stopped_; }
+  /// One output step of `stage` (a kind, or "handoff"): history row, the
+  /// energy balance's check, then the frame (RunOutputs).
+  void record_output(const std::string& stage, PhaseTimer& timer);
   /// Simulated time since the stage began [s].
   double stage_time() const { return model_.engine.time() - cursor_.t0; }
 
@@ -87,8 +90,8 @@ class StageRunner {
   void run(const StageSpec& stage);
   /// Writes a checkpoint and a last history row, then throws Interrupted.
   [[noreturn]] void interrupted(const StageSpec& stage);
-  /// One history row (and frame) of the stage.
-  void record_step(const StageSpec& stage);
+  /// One output step of the stage (record_output).
+  void record_step(const StageSpec& stage) { record_output(stage.kind, *timer_); }
   /// Whether the stage's stop criterion holds at this output: `reached`
   /// with a broken-count target, else ratio and settle held `hold` times.
   bool criterion_met(const StageSpec& stage, long broken_target, bool reached);
@@ -126,6 +129,7 @@ class StageRunner {
   long last_checkpoint_ = 0;  ///< step of the last checkpoint (or of the start)
   std::function<void()> save_checkpoint_;
   std::vector<StageRecord> report_;
+  double energy_floor_ = 0;  ///< energy_floor of the model
 };
 
 }  // namespace rockfdem::workflows
