@@ -350,7 +350,7 @@ void RunOutputs::lining_outputs(const fdem::Engine& e, const mesh::Mesh& m) {
 }
 
 void RunOutputs::bolt_outputs(const fdem::Engine& e, const fdem::BoltPlan& bolts) {
-  summary_.figures()["counts"]["bolts"] = bolts.specs.size();
+  summary_.counts.bolts = long(bolts.specs.size());
   if (bolt_results_)
     bolt_results_->finish(e, summary_);
   else
@@ -360,18 +360,17 @@ void RunOutputs::bolt_outputs(const fdem::Engine& e, const fdem::BoltPlan& bolts
 void RunOutputs::finish(const fdem::Engine& e, const mesh::Mesh& m,
                         const std::vector<Monitor>& monitors, PhaseTimer& timer,
                         const fdem::BoltPlan& bolts) {
-  auto& j = summary_.figures();
   report_engine(e, timer, summary_);
   warn_if_unbalanced(e, energy_floor_, ctx_.quiet, summary_);
   report_dt();
   bolt_outputs(e, bolts);
   summary_.monitors = monitor_figures(e, monitors);
   add_since_support(summary_.monitors);
-  j["outer_boundary"] = {{"rotation_deg", boundary_fit(e).rotation * 180 / M_PI},
-                         {"max_rotation_deg", max_rotation_deg_},
-                         {"limit_deg", kRigidRotationLimitDeg},
-                         {"translation_mm", {mm(boundary_fit(e).tx), mm(boundary_fit(e).ty)}},
-                         {"support", scene_.insitu.rollers ? "rollers" : "tractions"}};
+  summary_.outer_boundary = OuterBoundaryFigures{boundary_fit(e).rotation * 180 / M_PI,
+                                                 max_rotation_deg_,
+                                                 kRigidRotationLimitDeg,
+                                                 {mm(boundary_fit(e).tx), mm(boundary_fit(e).ty)},
+                                                 scene_.insitu.rollers ? "rollers" : "tractions"};
   record_ground_reaction(e, monitors);
   lining_outputs(e, m);
   damage_outputs(e, m);

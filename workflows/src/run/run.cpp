@@ -302,10 +302,9 @@ void Run::finish() {
     summary_.warnings.push_back(verdict.status + ": " + verdict.message);
     std::cerr << "warning: " << verdict.status << ": " << verdict.message << '\n';
   }
-  summary_.figures()["damping"] = {{"local", stage_damping(scene_).local},
-                                   {"mass_proportional", scene_.engine.mass_damping},
-                                   {"kinetic", scene_.engine.kinetic_damping},
-                                   {"local_given", scene_.engine.local_damping >= 0}};
+  summary_.damping =
+      DampingFigures{stage_damping(scene_).local, scene_.engine.mass_damping,
+                     scene_.engine.kinetic_damping, scene_.engine.local_damping >= 0};
   summary_.fdem = stages_only(*stages_);
   summary_.fdem->unbalanced_ratio_at_start = start_ratio_;
   summary_.fdem->unbalanced_ratio_at_end = engine().unbalanced_force_ratio();

@@ -61,6 +61,24 @@ struct EngineState {
   std::string state_hash;
 };
 
+/// "counts": the model's sizes.
+struct ModelCounts {
+  long triangles = 0;
+  long nodes = 0;  ///< the engine's (before it, the mesh's vertices)
+  long crack_elements = 0;
+  long bolts = 0;  ///< bolts and cables
+};
+
+/// The engine's own figures at the end ("fdem_modules", "contact",
+/// "mass_scaling", "memory_bytes", "memory_bytes_per_triangle").
+struct EngineFigures {
+  fdem::PhaseTimes modules;  ///< [s] per phase of the step
+  fdem::ContactCounters contact;
+  fdem::MassScalingReport mass_scaling;
+  long memory_bytes = 0;
+  double memory_bytes_per_triangle = 0;
+};
+
 /// One key point of the opening ("monitors".NAME) [mm, m].
 struct KeyPointFigures {
   double ux_mm = 0, uy_mm = 0, u_mm = 0;

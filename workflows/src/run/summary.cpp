@@ -246,6 +246,37 @@ nlohmann::json broken_zone_json(const BrokenZoneRecord& z) {
   return j;
 }
 
+nlohmann::json mass_scaling_json(const fdem::MassScalingReport& ms) {
+  nlohmann::json j = {{"enabled", ms.enabled}};
+  if (ms.enabled)
+    j.update({{"target_dt", ms.target_dt},
+              {"max_factor", ms.max_factor},
+              {"mass_ratio", ms.mass_ratio},
+              {"scaled_triangles", ms.scaled_triangles},
+              {"note",
+               "quasi-static: densities scaled, statics unchanged; "
+               "simulated_time is pseudo-time"}});
+  return j;
+}
+
+void add_engine(nlohmann::json& j, const EngineFigures& f) {
+  const fdem::PhaseTimes& p = f.modules;
+  j["fdem_modules"] = {
+      {"triangles", p.triangles}, {"cracks", p.cracks}, {"nodes", p.nodes}, {"contact", p.contact}};
+  const fdem::ContactCounters& c = f.contact;
+  j["contact"] = {{"enabled", c.enabled},
+                  {"detections", c.detections},
+                  {"steps_with_pairs", c.steps_with_pairs},
+                  {"steps_skipped", c.steps_skipped},
+                  {"last_candidates", c.candidates},
+                  {"last_pairs", c.pairs},
+                  {"last_touching", c.touching},
+                  {"kernel", c.kernel}};
+  j["mass_scaling"] = mass_scaling_json(f.mass_scaling);
+  j["memory_bytes"] = f.memory_bytes;
+  j["memory_bytes_per_triangle"] = f.memory_bytes_per_triangle;
+}
+
 // The support and damage figures at the end of a tunnel run.
 void add_support(nlohmann::json& j, const RunRecord& r) {
   if (r.bolts) j["bolts"] = bolts_json(*r.bolts);
@@ -256,6 +287,17 @@ void add_support(nlohmann::json& j, const RunRecord& r) {
                        {"h_over_l_ch", r.resolution->h_over_l_ch},
                        {"limit", r.resolution->limit}};
   if (r.broken_zone) j["broken_zone"] = broken_zone_json(*r.broken_zone);
+  if (const auto& b = r.outer_boundary)
+    j["outer_boundary"] = {{"rotation_deg", b->rotation_deg},
+                           {"max_rotation_deg", b->max_rotation_deg},
+                           {"limit_deg", b->limit_deg},
+                           {"translation_mm", b->translation_mm},
+                           {"support", b->support}};
+  if (const auto& d = r.damping)
+    j["damping"] = {{"local", d->local},
+                    {"mass_proportional", d->mass_proportional},
+                    {"kinetic", d->kinetic},
+                    {"local_given", d->local_given}};
 }
 
 }  // namespace
@@ -275,6 +317,7 @@ std::vector<StageRecord> stage_records_from_json(const nlohmann::json& stages) {
 RunRecord::RunRecord(const Scene& scene, int threads)
     : warnings(scene.warnings),
       threads(threads),
+      counts{0, 0, 0, long(scene.bolts.segments.size())},
       timings_{{"mesh", 0.0}, {"insitu", 0.0}, {"fdem", 0.0}, {"output", 0.0}, {"total", 0.0}} {
   using nlohmann::json;
   figures_ = {{"format_version", kSummaryFormatVersion},
@@ -282,12 +325,6 @@ RunRecord::RunRecord(const Scene& scene, int threads)
               {"scene", scene.source},
               {"overrides", scene.overrides},
               {"title", scene.title},
-              {"counts",
-               {{"triangles", 0},
-                {"nodes", 0},
-                {"crack_elements", 0},
-                {"bolts", scene.bolts.segments.size()}}},
-              {"throughput", {{"triangle_steps_per_second", 0.0}}},
               {"insitu",
                {{"alpha", json::array()},
                 {"kirsch_rel_l2", nullptr},
@@ -301,8 +338,8 @@ void RunRecord::note_turned_off(const OutputSettings& output, const std::string&
 }
 
 void RunRecord::record_mesh(const mesh::Mesh& m, const mesh::MeshReport& report) {
-  figures_["counts"]["triangles"] = m.n_triangles();
-  figures_["counts"]["nodes"] = m.n_vertices();
+  counts.triangles = long(m.n_triangles());
+  counts.nodes = long(m.n_vertices());
   mesh = report;
   state.state_hash = fdem::bits_hash(interleave(m.x, m.y));
 }
@@ -319,6 +356,12 @@ void RunRecord::set_timings(const PhaseTimer& timer) {
 nlohmann::json RunRecord::to_json() const {
   nlohmann::json j = figures_;
   j["threads"] = threads;
+  j["counts"] = {{"triangles", counts.triangles},
+                 {"nodes", counts.nodes},
+                 {"crack_elements", counts.crack_elements},
+                 {"bolts", counts.bolts}};
+  j["throughput"] = {{"triangle_steps_per_second", triangle_steps_per_second}};
+  if (engine) add_engine(j, *engine);
   add_state(j, state);
   if (mesh)
     j["mesh"] = {{"triangles", mesh->n_triangles},

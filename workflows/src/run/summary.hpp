@@ -56,8 +56,11 @@ class RunRecord {
   std::optional<CheckpointMark> restarted_from;
   std::optional<CheckpointMark> checkpoint;  ///< the last one written
   int threads = 0;
-  std::optional<mesh::MeshReport> mesh;               ///< "mesh": sizes and quality
-  EngineState state;                                  ///< steps, dt, ..., state_hash
+  std::optional<mesh::MeshReport> mesh;  ///< "mesh": sizes and quality
+  ModelCounts counts;
+  EngineState state;                     ///< steps, dt, ..., state_hash
+  double triangle_steps_per_second = 0;  ///< "throughput" over the time loop
+  std::optional<EngineFigures> engine;
   std::optional<std::pair<double, double>> dt_range;  ///< dt_min, dt_max [s]
   std::optional<FdemRecord> fdem;
   MonitorRecord monitors;
@@ -66,6 +69,8 @@ class RunRecord {
   std::optional<BoltRecord> bolts;
   LiningRecord lining;  ///< empty: no key
   std::optional<ResolutionFigures> resolution;
+  std::optional<OuterBoundaryFigures> outer_boundary;
+  std::optional<DampingFigures> damping;
   std::optional<BrokenZoneRecord> broken_zone;
 
   /// The record's figures not yet held as members (counts, insitu, ...),

@@ -68,6 +68,21 @@ struct LiningRecord {
   bool empty() const { return !interface && !forces; }
 };
 
+/// "outer_boundary": the rigid motion of the model's outer boundary.
+struct OuterBoundaryFigures {
+  double rotation_deg = 0, max_rotation_deg = 0, limit_deg = 0;
+  std::array<double, 2> translation_mm{};
+  std::string support;  ///< "rollers" or "tractions"
+};
+
+/// "damping": the stages' damping.
+struct DampingFigures {
+  double local = 0;
+  double mass_proportional = 0;  ///< [1/s]
+  bool kinetic = false;
+  bool local_given = false;  ///< engine.local_damping given by the scene
+};
+
 /// "resolution": the fracture zone's element size against l_ch.
 struct ResolutionFigures {
   double h_m = 0, l_ch_m = 0, h_over_l_ch = 0, limit = 0;
