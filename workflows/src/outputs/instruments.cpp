@@ -137,23 +137,16 @@ void Instruments::add_monitors(MonitorRecord& monitors, const NodeDisplacement& 
 
 void Instruments::finish(RunRecord& summary, const fdem::Engine& e, const mesh::Mesh& m,
                          const NodeDisplacement& u) const {
-  nlohmann::json ext = nlohmann::json::object();
   for (const Extensometer& x : extensometers_) {
     const std::vector<double> a = axial(x, u);
-    nlohmann::json points = nlohmann::json::array();
+    ExtensometerFigures& f = summary.extensometers[x.spec->name];
+    f = ExtensometerFigures{{x.x, x.y}, {x.dx, x.dy}, std::nullopt, x.spec->length, {}};
+    if (!x.spec->from.empty()) f.from = x.spec->from;
     for (std::size_t k = 0; k < a.size(); ++k)
-      points.push_back({{"point", k == 0 ? "head" : "anchor " + std::to_string(k)},
-                        {"depth_m", x.spec->length * double(k) / x.spec->anchors},
-                        {"relative_mm", mm(a[k] - a.back())},
-                        {"absolute_mm", mm(a[k])}});
-    ext[x.spec->name] = {
-        {"head", {x.x, x.y}},
-        {"direction", {x.dx, x.dy}},
-        {"from", x.spec->from.empty() ? nlohmann::json() : nlohmann::json(x.spec->from)},
-        {"length_m", x.spec->length},
-        {"points", points}};
+      f.points.push_back({k == 0 ? "head" : "anchor " + std::to_string(k),
+                          x.spec->length * double(k) / x.spec->anchors, mm(a[k] - a.back()),
+                          mm(a[k])});
   }
-  if (!extensometers_.empty()) summary.figures()["extensometers"] = ext;
   BrokenZoneRecord& zone =
       summary.broken_zone ? *summary.broken_zone : summary.broken_zone.emplace();
   const std::vector<double> depth = broken_depth_along_rays(e, m, rays_, half_width_, bolted_);

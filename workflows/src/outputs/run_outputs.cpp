@@ -117,20 +117,13 @@ RunOutputs::RunOutputs(const Scene& scene, const RunContext& ctx, RunRecord& sum
 void RunOutputs::record_insitu(const mesh::Mesh& m,
                                const std::vector<insitu::InsituField>& fields) {
   fields_ = fields;
-  auto& j = summary_.figures()["insitu"];
-  j["alpha"] = nlohmann::json::array();
-  j["solver_iterations"] = nlohmann::json::array();
-  for (const insitu::InsituField& f : fields) {
-    j["alpha"].push_back(f.alpha);
-    j["solver_iterations"].push_back(f.iterations);
-  }
-  summary_.record_insitu_state(fields.back());
+  summary_.record_insitu(fields);
   if (scene_.output.vtk)
     coupling::write_vtu(coupling::insitu_grid(m, fields.back()),
                         output_path(ctx_.output_dir, "insitu.vtu"));
   insitu::KirschCase k;
   if (kirsch_case(scene_, &k) && fields.back().alpha == 0.0)
-    j["kirsch_rel_l2"] = insitu::compare_kirsch(m, fields.back(), k).stress_rel_l2;
+    summary_.insitu.kirsch_rel_l2 = insitu::compare_kirsch(m, fields.back(), k).stress_rel_l2;
 }
 
 void RunOutputs::set_bolts(const fdem::BoltPlan* bolts) {

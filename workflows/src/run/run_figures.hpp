@@ -41,6 +41,25 @@ struct StageRecord {
   double support_pressure_ratio = 0;  ///< the core's factor alpha at its end
 };
 
+/// One implicit solve ("insitu"."stages"[i], `rockfdem insitu` only).
+struct InsituSolveFigures {
+  double alpha = 0;
+  std::string solver;
+  long dofs = 0;
+  double assembly_seconds = 0, solve_seconds = 0, total_seconds = 0;
+  double unbalanced_ratio = 0;
+};
+
+/// "insitu": the implicit stage, one entry per core stiffness factor alpha.
+struct InsituRecord {
+  std::vector<double> alpha;
+  std::vector<long> solver_iterations;  ///< CG iterations (0: direct)
+  std::optional<double> kirsch_rel_l2;  ///< stress error against Kirsch; none: not compared
+  std::optional<double> kirsch_wall_ur_rel_l2;
+  std::optional<long> kirsch_triangles;
+  std::optional<std::vector<InsituSolveFigures>> stages;
+};
+
 /// The explicit part of a run ("fdem"): present once the stages report.
 struct FdemRecord {
   std::optional<double> unbalanced_ratio_at_start;  ///< after the hand-off step

@@ -277,6 +277,39 @@ void add_engine(nlohmann::json& j, const EngineFigures& f) {
   j["memory_bytes_per_triangle"] = f.memory_bytes_per_triangle;
 }
 
+nlohmann::json insitu_json(const InsituRecord& r) {
+  nlohmann::json j = {{"alpha", r.alpha},
+                      {"solver_iterations", r.solver_iterations},
+                      {"kirsch_rel_l2", or_null(r.kirsch_rel_l2)}};
+  if (r.kirsch_wall_ur_rel_l2) j["kirsch_wall_ur_rel_l2"] = *r.kirsch_wall_ur_rel_l2;
+  if (r.kirsch_triangles) j["kirsch_triangles"] = *r.kirsch_triangles;
+  if (!r.stages) return j;
+  j["stages"] = nlohmann::json::array();
+  for (const InsituSolveFigures& s : *r.stages)
+    j["stages"].push_back({{"alpha", s.alpha},
+                           {"solver", s.solver},
+                           {"dofs", s.dofs},
+                           {"assembly_seconds", s.assembly_seconds},
+                           {"solve_seconds", s.solve_seconds},
+                           {"total_seconds", s.total_seconds},
+                           {"unbalanced_ratio", s.unbalanced_ratio}});
+  return j;
+}
+
+nlohmann::json extensometer_json(const ExtensometerFigures& x) {
+  nlohmann::json points = nlohmann::json::array();
+  for (const ExtensometerPoint& p : x.points)
+    points.push_back({{"point", p.point},
+                      {"depth_m", p.depth_m},
+                      {"relative_mm", p.relative_mm},
+                      {"absolute_mm", p.absolute_mm}});
+  return {{"head", x.head},
+          {"direction", x.direction},
+          {"from", or_null(x.from)},
+          {"length_m", x.length_m},
+          {"points", points}};
+}
+
 // The support and damage figures at the end of a tunnel run.
 void add_support(nlohmann::json& j, const RunRecord& r) {
   if (r.bolts) j["bolts"] = bolts_json(*r.bolts);
@@ -287,6 +320,7 @@ void add_support(nlohmann::json& j, const RunRecord& r) {
                        {"h_over_l_ch", r.resolution->h_over_l_ch},
                        {"limit", r.resolution->limit}};
   if (r.broken_zone) j["broken_zone"] = broken_zone_json(*r.broken_zone);
+  for (const auto& [name, x] : r.extensometers) j["extensometers"][name] = extensometer_json(x);
   if (const auto& b = r.outer_boundary)
     j["outer_boundary"] = {{"rotation_deg", b->rotation_deg},
                            {"max_rotation_deg", b->max_rotation_deg},
@@ -320,15 +354,13 @@ RunRecord::RunRecord(const Scene& scene, int threads)
       counts{0, 0, 0, long(scene.bolts.segments.size())},
       timings_{{"mesh", 0.0}, {"insitu", 0.0}, {"fdem", 0.0}, {"output", 0.0}, {"total", 0.0}} {
   using nlohmann::json;
-  figures_ = {{"format_version", kSummaryFormatVersion},
-              {"rockfdem_version", version_string()},
-              {"scene", scene.source},
-              {"overrides", scene.overrides},
-              {"title", scene.title},
-              {"insitu",
-               {{"alpha", json::array()},
-                {"kirsch_rel_l2", nullptr},
-                {"solver_iterations", json::array()}}}};
+  figures_ = {
+      {"format_version", kSummaryFormatVersion},
+      {"rockfdem_version", version_string()},
+      {"scene", scene.source},
+      {"overrides", scene.overrides},
+      {"title", scene.title},
+  };
 }
 
 void RunRecord::note_turned_off(const OutputSettings& output, const std::string& paraview_files,
@@ -344,8 +376,14 @@ void RunRecord::record_mesh(const mesh::Mesh& m, const mesh::MeshReport& report)
   state.state_hash = fdem::bits_hash(interleave(m.x, m.y));
 }
 
-void RunRecord::record_insitu_state(const insitu::InsituField& field) {
-  state.state_hash = fdem::bits_hash(interleave(field.ux, field.uy));
+void RunRecord::record_insitu(const std::vector<insitu::InsituField>& fields) {
+  insitu.alpha.clear();
+  insitu.solver_iterations.clear();
+  for (const insitu::InsituField& f : fields) {
+    insitu.alpha.push_back(f.alpha);
+    insitu.solver_iterations.push_back(f.iterations);
+  }
+  state.state_hash = fdem::bits_hash(interleave(fields.back().ux, fields.back().uy));
 }
 
 void RunRecord::set_timings(const PhaseTimer& timer) {
@@ -363,6 +401,7 @@ nlohmann::json RunRecord::to_json() const {
   j["throughput"] = {{"triangle_steps_per_second", triangle_steps_per_second}};
   if (engine) add_engine(j, *engine);
   add_state(j, state);
+  j["insitu"] = insitu_json(insitu);
   if (mesh)
     j["mesh"] = {{"triangles", mesh->n_triangles},
                  {"vertices", mesh->n_vertices},

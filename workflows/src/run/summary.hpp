@@ -62,6 +62,7 @@ class RunRecord {
   double triangle_steps_per_second = 0;  ///< "throughput" over the time loop
   std::optional<EngineFigures> engine;
   std::optional<std::pair<double, double>> dt_range;  ///< dt_min, dt_max [s]
+  InsituRecord insitu;
   std::optional<FdemRecord> fdem;
   MonitorRecord monitors;
   std::vector<GroundReactionPoint> ground_reaction_curve;  ///< empty: not drawn (no key)
@@ -71,6 +72,7 @@ class RunRecord {
   std::optional<ResolutionFigures> resolution;
   std::optional<OuterBoundaryFigures> outer_boundary;
   std::optional<DampingFigures> damping;
+  std::map<std::string, ExtensometerFigures> extensometers;  ///< empty: no key
   std::optional<BrokenZoneRecord> broken_zone;
 
   /// The record's figures not yet held as members (counts, insitu, ...),
@@ -87,9 +89,10 @@ class RunRecord {
   /// quality) and the state hash of the mesh: its vertex coordinates' bits.
   /// A later stage's figures replace counts and hash.
   void record_mesh(const mesh::Mesh& m, const mesh::MeshReport& report);
-  /// The state hash of an implicit result: the bits of its displacement
-  /// field (ux, uy per vertex), which the coordinates' bits would blur.
-  void record_insitu_state(const insitu::InsituField& field);
+  /// Each implicit solve's alpha and iterations, and the state hash of the
+  /// last: the bits of its displacement field (ux, uy per vertex), which
+  /// the coordinates' bits would blur.
+  void record_insitu(const std::vector<insitu::InsituField>& fields);
   void set_timings(const PhaseTimer& timer);
 
   /// summary.json's content.

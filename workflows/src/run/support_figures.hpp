@@ -68,6 +68,22 @@ struct LiningRecord {
   bool empty() const { return !interface && !forces; }
 };
 
+/// One point of an extensometer: its head or an anchor.
+struct ExtensometerPoint {
+  std::string point;  ///< "head", "anchor K"
+  double depth_m = 0;
+  double relative_mm = 0;  ///< against the deepest anchor
+  double absolute_mm = 0;  ///< from the in-situ state
+};
+
+/// "extensometers".NAME: a scene's extensometer at the end of the run.
+struct ExtensometerFigures {
+  std::array<double, 2> head{}, direction{};
+  std::optional<std::string> from;  ///< the key point it starts at
+  double length_m = 0;
+  std::vector<ExtensometerPoint> points;
+};
+
 /// "outer_boundary": the rigid motion of the model's outer boundary.
 struct OuterBoundaryFigures {
   double rotation_deg = 0, max_rotation_deg = 0, limit_deg = 0;
