@@ -286,8 +286,9 @@ void Run::compare_with_references() {
   if (!has_lining_ring(scene_)) {
     const insitu::InsituField reference =
         keeping_threads(ctx_, [&] { return insitu::solve_insitu(mesh_, open).back(); });
-    summary_.figures()["comparison"] = compare_with_continuum(
-        scene_, mesh_, engine(), reference, output_path(ctx_.output_dir, "fdem_vs_continuum.csv"));
+    summary_.add_figures("comparison", compare_with_continuum(
+                                           scene_, mesh_, engine(), reference,
+                                           output_path(ctx_.output_dir, "fdem_vs_continuum.csv")));
   }
   compare_with_continuum_counterpart(scene_, ctx_, mesh_, engine(), handoff(), monitors_, summary_);
   timer_.stamp("insitu");

@@ -114,24 +114,23 @@ class SpecimenRun {
   }
 
   void finish() {
-    auto& j = summary_.figures();
     if (scene_.output.plots)
       specimen_plots(e_, history_, disc_, ctx_.output_dir, summary_, ctx_.quiet);
     timer_.stamp("output");
     summary_.status = "completed";
     report_engine(e_, timer_, summary_);
     warn_if_unbalanced(e_, floor_, ctx_.quiet, summary_);
-    j["specimen"] = load_.report();
+    const nlohmann::json specimen = load_.report();
+    summary_.add_figures("specimen", specimen);
     summary_.skipped.push_back("insitu: a specimen starts stress-free");
     summary_.set_timings(timer_);
     summary_.write(output_path(ctx_.output_dir, "summary.json"));
     if (!ctx_.quiet)
       std::cout << (disc_ ? "peak tensile stress " : "peak axial stress ")
-                << j["specimen"]["peak_stress"].get<double>() / 1e6 << " MPa at step "
-                << j["specimen"]["peak_step"].get<long>()
-                << " (upper platen, read every step), broken " << e_.broken_counts().total()
-                << " of " << e_.n_cracks() << " crack elements, state hash " << e_.state_hash()
-                << '\n'
+                << specimen["peak_stress"].get<double>() / 1e6 << " MPa at step "
+                << specimen["peak_step"].get<long>() << " (upper platen, read every step), broken "
+                << e_.broken_counts().total() << " of " << e_.n_cracks()
+                << " crack elements, state hash " << e_.state_hash() << '\n'
                 << timer_.table();
   }
 
@@ -192,7 +191,7 @@ class SpecimenRun {
     const std::string why = "interrupted by signal " + std::to_string(sig) + " at step " +
                             std::to_string(e_.step_count());
     report_engine(e_, timer_, summary_);
-    summary_.figures()["specimen"] = load_.report();
+    summary_.add_figures("specimen", load_.report());
     write_summary("interrupted", why);
     throw Interrupted(sig, why + "; outputs and a checkpoint are written");
   }

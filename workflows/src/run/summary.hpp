@@ -75,10 +75,12 @@ class RunRecord {
   std::map<std::string, ExtensometerFigures> extensometers;  ///< empty: no key
   std::optional<BrokenZoneRecord> broken_zone;
 
-  /// The record's figures not yet held as members (counts, insitu, ...),
-  /// as summary.json's keys.
-  nlohmann::json& figures() { return figures_; }
-  const nlohmann::json& figures() const { return figures_; }
+  /// Figures another module gives as JSON (the continuum comparisons, a
+  /// specimen's load report), kept as they are under summary.json's `key`;
+  /// the record writes them and nothing reads them back.
+  void add_figures(const std::string& key, nlohmann::json figures) {
+    figures_[key] = std::move(figures);
+  }
 
   /// Notes in `skipped` the outputs the scene turned off: `paraview_files`
   /// (what output.vtk = false leaves out) and, where the command renders
