@@ -1,8 +1,9 @@
-// The outputs that act at each output step (bolts.csv and frames, the
-// instruments' readings, the lining's forces) and the one interface through
-// which the run's outputs call them. The time loop (run/stage_runner.cpp)
-// drives an output step: history.csv's row with these outputs' files, then
-// its checks, then the ParaView frame (outputs/run_outputs.hpp).
+// The outputs that act at each output step (bolts.csv, the instruments'
+// readings, the lining's forces, the ParaView frames) and the one interface
+// through which the run's outputs call them. The time loop
+// (run/stage_runner.cpp) drives an output step: history.csv's row with the
+// files of the outputs that add to it, then its checks, then the frames
+// (outputs/run_outputs.hpp).
 #pragma once
 
 #include <string>
@@ -18,6 +19,7 @@ namespace rockfdem::workflows {
 struct OutputStep {
   const fdem::Engine& engine;
   const mesh::Mesh& mesh;
+  const std::string& stage;   ///< the stage's kind; "handoff" for the hand-off step
   int stage_index;            ///< history.csv's stage column (summary history_stages)
   const NodeDisplacement& u;  ///< node displacement from the in-situ state [m]
 };

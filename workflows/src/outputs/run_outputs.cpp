@@ -109,7 +109,7 @@ std::pair<std::string, double> RunOutputs::largest_key_point(
 }
 
 RunOutputs::RunOutputs(const Scene& scene, const RunContext& ctx, RunRecord& summary)
-    : scene_(scene), ctx_(ctx), summary_(summary), pvd_(output_path(ctx.output_dir, "fdem.pvd")) {
+    : scene_(scene), ctx_(ctx), summary_(summary) {
   summary_.note_turned_off(scene.output, "fdem.pvd, fdem_NNNN.vtu, insitu.vtu, continuum.vtu",
                            true);
 }
@@ -163,6 +163,7 @@ void RunOutputs::begin_history(const std::vector<Monitor>& monitors, const mesh:
     if (!lining_->has_ring()) lining_.reset();
     if (lining_) lining_->set_installed(lining_installed_);
   }
+  frames_ = std::make_unique<FrameOutput>(ctx_.output_dir, fields_, bolts_, bolt_results_.get());
   history_ = std::make_unique<History>(output_path(ctx_.output_dir, "history.csv"),
                                        history_columns(monitors));
 }
@@ -201,7 +202,7 @@ void RunOutputs::record_rows(const fdem::Engine& e, const mesh::Mesh& m, const s
   row.push_back(support_ratio);
   for (double v : energy_row(e.energy_balance())) row.push_back(v);
   const NodeDisplacement u = node_displacements(e);
-  const OutputStep step{e, m, int(stage_names_.size() - 1), u};
+  const OutputStep step{e, m, stage, int(stage_names_.size() - 1), u};
   for (OutputStepObserver* o : observers()) o->at_output_step(step, row);
   history_->add(row);
 }
@@ -212,15 +213,9 @@ void RunOutputs::record_frame(const fdem::Engine& e, const mesh::Mesh& m, const 
   // The hand-off step's dt, once it passed (a failed one is no good state).
   if (stage == "handoff" && stage_names_.size() == 1) handoff_dt_ = e.dt();
   if (scene_.output.vtk) {
-    char name[32];
-    std::snprintf(name, sizeof name, "fdem_%04d.vtu", frame_++);
-    coupling::VtkGrid g = frame_grid(e, m);
-    coupling::add_frame_info(g.field, stage, e.step_count(), e.time());
-    coupling::write_vtu(g, output_path(ctx_.output_dir, name));
-    pvd_.add(e.time(), name);
-    pvd_.write();
-    std::snprintf(name, sizeof name, "bolts_%04d.vtp", frame_ - 1);
-    if (bolt_results_) bolt_results_->write_frame(name, g.field);
+    const NodeDisplacement u = node_displacements(e);
+    std::vector<double> no_columns;
+    frames_->at_output_step({e, m, stage, int(stage_names_.size() - 1), u}, no_columns);
   }
   last_good_.take(e, e.energy_balance(), monitor_figures(e, monitors_));
   timer.stamp("output");
@@ -269,24 +264,10 @@ void RunOutputs::report_failure(const fdem::Engine& e, PhaseTimer& timer, const 
   write_report();
 }
 
-coupling::VtkGrid RunOutputs::frame_grid(const fdem::Engine& e, const mesh::Mesh& m) const {
-  coupling::VtkGrid g = coupling::fdem_grid(e, m, fields_.empty() ? nullptr : &fields_.back());
-  if (!bolts_ || bolts_->specs.empty()) return g;
-  std::vector<double> stress(e.n_triangles(), std::nan(""));
-  for (std::size_t b = 0; b < bolts_->specs.size(); ++b) {
-    if (!bolts_->installed[b]) continue;
-    for (const fdem::BoltSample& p : fdem::bolt_axial_profile(e, *bolts_, int(b)))
-      stress[p.triangle] = p.steel_stress;
-  }
-  g.cell_arrays.push_back(coupling::triangle_cell_array(
-      g, coupling::scalar_array("bolt_axial_stress", std::move(stress))));
-  return g;
-}
-
 nlohmann::json RunOutputs::state() const {
   return {{"history", history_->rows()},
           {"stages", stage_names_},
-          {"frames", frames_state(pvd_)},
+          {"frames", frames_->state()},
           {"handoff_dt", handoff_dt_},
           {"max_rotation_deg", max_rotation_deg_},
           {"bolts", bolt_results_ ? bolt_results_->state() : nlohmann::json()},
@@ -301,7 +282,7 @@ void RunOutputs::restore(const nlohmann::json& s, const std::string& from_dir) {
   max_rotation_deg_ = s.value("max_rotation_deg", 0.0);
   if (instruments_ && s.contains("instruments") && s.at("instruments").is_object())
     instruments_->restore(s.at("instruments"));
-  frame_ += restore_frames(s.at("frames"), from_dir, ctx_.output_dir, pvd_, summary_);
+  frames_->restore(s.at("frames"), from_dir, summary_);
   if (bolt_results_ && s.contains("bolts") && !s["bolts"].is_null())
     bolt_results_->restore(s["bolts"], from_dir);
   std::error_code same_ec;

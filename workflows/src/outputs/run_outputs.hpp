@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "outputs/bolt_results.hpp"
+#include "outputs/frame_output.hpp"
 #include "outputs/history.hpp"
 #include "outputs/instruments.hpp"
 #include "outputs/lining_output.hpp"
@@ -113,9 +114,6 @@ class RunOutputs {
   void add_since_support(MonitorRecord& monitors) const;
   /// report.md from the record as it stands.
   void write_report() const;
-  /// The engine grid plus, with bolts installed, "bolt_axial_stress" (steel
-  /// stress along the axis per bolt triangle, NaN elsewhere).
-  coupling::VtkGrid frame_grid(const fdem::Engine& e, const mesh::Mesh& m) const;
   /// bolt_NN.csv (axial stress and force along each bolt) and summary "bolts".
   void bolt_outputs(const fdem::Engine& e, const fdem::BoltPlan& bolts);
   /// summary "resolution" (h / l_ch) and "broken_zone" (depth, clearance to
@@ -144,8 +142,7 @@ class RunOutputs {
   std::vector<insitu::InsituField> fields_;
   std::unique_ptr<History> history_;
   std::unique_ptr<Instruments> instruments_;
-  coupling::PvdCollection pvd_;
-  int frame_ = 0;
+  std::unique_ptr<FrameOutput> frames_;  ///< from begin_history
   const fdem::BoltPlan* bolts_ = nullptr;
   std::unique_ptr<BoltResults> bolt_results_;  ///< with bolts in the scene
   std::unique_ptr<LiningOutput> lining_;       ///< null: no lining ring
