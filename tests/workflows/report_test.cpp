@@ -13,6 +13,7 @@
 
 #include "cli_runner.hpp"
 #include "outputs/run_timeline.hpp"
+#include "run/summary.hpp"
 
 namespace fs = std::filesystem;
 using namespace rockfdem::test;
@@ -189,4 +190,54 @@ TEST(StageMarkers, untriggered_grout_and_no_support) {
   EXPECT_EQ(markers[1].label, "equilibrium");
   EXPECT_DOUBLE_EQ(markers[1].x, 0.1);
   EXPECT_EQ(support_stage(spans), nullptr);
+}
+
+// A checkpoint keeps the stages' reports as summary.json writes them; a
+// restart reads them back field for field. A stage that took no step has
+// no dt, settle, verdict or moving key point: null in the file, none again.
+TEST(StageRecords, checkpoint_copy_reads_back_every_field) {
+  using namespace rockfdem::workflows;
+  StageRecord none = stage_record("lining", 0.0, {});
+  none.max_steps = 0;
+  StageRecord full = stage_record("equilibrium", 0.736, {{"released", 0.5}});
+  full.steps = 2000;
+  full.dt = 3.68e-4;
+  full.unbalanced_ratio = 1.12e-3;
+  full.settle = 0.532;
+  full.converged = false;
+  full.max_steps = 2000;
+  full.ratio = 1e-3;
+  full.settle_limit = 1e-3;
+  full.hold = 3;
+  full.unstable_fraction = 0.1;
+  full.moving_most = MovingMost{"invert", 18.3};
+  full.support_pressure_ratio = 0.25;
+  const nlohmann::json j = stage_records_json({none, full});
+  EXPECT_TRUE(j[0]["dt"].is_null());
+  EXPECT_TRUE(j[0]["converged"].is_null());
+  EXPECT_TRUE(j[0]["moving_most"].is_null());
+  EXPECT_EQ(j[1]["criteria"]["hold"], 3);
+  EXPECT_EQ(j[1]["moving_most"]["key_point"], "invert");
+  const std::vector<StageRecord> back = stage_records_from_json(nlohmann::json::parse(j.dump()));
+  ASSERT_EQ(back.size(), 2u);
+  EXPECT_FALSE(back[0].dt || back[0].settle || back[0].converged || back[0].moving_most);
+  const StageRecord& b = back[1];
+  EXPECT_EQ(b.kind, "equilibrium");
+  EXPECT_EQ(b.changes, full.changes);
+  EXPECT_EQ(b.steps, 2000);
+  EXPECT_EQ(b.simulated_time, 0.736);
+  EXPECT_EQ(b.dt, full.dt);
+  EXPECT_EQ(b.unbalanced_ratio, full.unbalanced_ratio);
+  EXPECT_EQ(b.settle, full.settle);
+  EXPECT_EQ(b.converged, std::optional<bool>(false));
+  EXPECT_EQ(b.max_steps, 2000);
+  EXPECT_EQ(b.ratio, 1e-3);
+  EXPECT_EQ(b.settle_limit, 1e-3);
+  EXPECT_EQ(b.hold, 3);
+  EXPECT_EQ(b.unstable_fraction, 0.1);
+  ASSERT_TRUE(b.moving_most);
+  EXPECT_EQ(b.moving_most->key_point, "invert");
+  EXPECT_EQ(b.moving_most->mm_per_1000_steps, 18.3);
+  EXPECT_EQ(b.support_pressure_ratio, 0.25);
+  EXPECT_EQ(stage_records_json(back), j);
 }
