@@ -13,6 +13,7 @@
 
 #include "cli_runner.hpp"
 #include "outputs/run_timeline.hpp"
+#include "run/summary.hpp"
 
 namespace fs = std::filesystem;
 using namespace rockfdem::test;
@@ -46,6 +47,16 @@ std::map<std::string, double> first_history_row(const fs::path& csv) {
   while (std::getline(names, name, ',') && std::getline(values, value, ','))
     row[name] = std::stod(value);
   return row;
+}
+
+// A stage's report entry as the timeline reads it: kind, duration, changes.
+rockfdem::workflows::StageRecord stage_record(const std::string& kind, double simulated_time,
+                                              const nlohmann::json& changes) {
+  rockfdem::workflows::StageRecord r;
+  r.kind = kind;
+  r.simulated_time = simulated_time;
+  r.changes = changes.is_null() ? nlohmann::json::object() : changes;
+  return r;
 }
 
 std::string two_decimals(double v) {
@@ -141,13 +152,12 @@ TEST(Report, failed_run_reports_its_last_good_state) {
 // cracks, then equilibrium. One marker holds the three with the grout
 // stage's start; the grouting and the equilibrium's start share the next.
 TEST(StageMarkers, stages_starting_together_share_a_marker_and_grouting_has_its_own) {
-  const nlohmann::json stages = nlohmann::json::parse(R"([
-    {"kind": "lining", "simulated_time": 0.0, "changes": {}},
-    {"kind": "bolts", "simulated_time": 0.0, "changes": {}},
-    {"kind": "remove_core", "simulated_time": 0.0, "changes": {}},
-    {"kind": "grout", "simulated_time": 0.0048,
-     "changes": {"triggered": true, "rejoined": 324}},
-    {"kind": "equilibrium", "simulated_time": 0.736, "changes": {}}])");
+  using rockfdem::workflows::StageRecord;
+  const std::vector<StageRecord> stages = {
+      stage_record("lining", 0.0, {}), stage_record("bolts", 0.0, {}),
+      stage_record("remove_core", 0.0, {}),
+      stage_record("grout", 0.0048, {{"triggered", true}, {"rejoined", 324}}),
+      stage_record("equilibrium", 0.736, {})};
   using namespace rockfdem::workflows;
   const std::vector<StageSpan> spans = stage_spans(stages, 0.0005);
   const auto markers = stage_markers(spans);
@@ -168,10 +178,10 @@ TEST(StageMarkers, stages_starting_together_share_a_marker_and_grouting_has_its_
 // A grout stage that did not trigger adds no grouting marker; a run
 // without lining or bolts stages has no support to measure from.
 TEST(StageMarkers, untriggered_grout_and_no_support) {
-  const nlohmann::json stages = nlohmann::json::parse(R"([
-    {"kind": "remove_core", "simulated_time": 0.0},
-    {"kind": "grout", "simulated_time": 0.1, "changes": {"triggered": false}},
-    {"kind": "equilibrium", "simulated_time": 0.2}])");
+  using rockfdem::workflows::StageRecord;
+  const std::vector<StageRecord> stages = {stage_record("remove_core", 0.0, {}),
+                                           stage_record("grout", 0.1, {{"triggered", false}}),
+                                           stage_record("equilibrium", 0.2, {})};
   using namespace rockfdem::workflows;
   const std::vector<StageSpan> spans = stage_spans(stages, 0.0);
   const auto markers = stage_markers(spans);
@@ -180,4 +190,54 @@ TEST(StageMarkers, untriggered_grout_and_no_support) {
   EXPECT_EQ(markers[1].label, "equilibrium");
   EXPECT_DOUBLE_EQ(markers[1].x, 0.1);
   EXPECT_EQ(support_stage(spans), nullptr);
+}
+
+// A checkpoint keeps the stages' reports as summary.json writes them; a
+// restart reads them back field for field. A stage that took no step has
+// no dt, settle, verdict or moving key point: null in the file, none again.
+TEST(StageRecords, checkpoint_copy_reads_back_every_field) {
+  using namespace rockfdem::workflows;
+  StageRecord none = stage_record("lining", 0.0, {});
+  none.max_steps = 0;
+  StageRecord full = stage_record("equilibrium", 0.736, {{"released", 0.5}});
+  full.steps = 2000;
+  full.dt = 3.68e-4;
+  full.unbalanced_ratio = 1.12e-3;
+  full.settle = 0.532;
+  full.converged = false;
+  full.max_steps = 2000;
+  full.ratio = 1e-3;
+  full.settle_limit = 1e-3;
+  full.hold = 3;
+  full.unstable_fraction = 0.1;
+  full.moving_most = MovingMost{"invert", 18.3};
+  full.support_pressure_ratio = 0.25;
+  const nlohmann::json j = stage_records_json({none, full});
+  EXPECT_TRUE(j[0]["dt"].is_null());
+  EXPECT_TRUE(j[0]["converged"].is_null());
+  EXPECT_TRUE(j[0]["moving_most"].is_null());
+  EXPECT_EQ(j[1]["criteria"]["hold"], 3);
+  EXPECT_EQ(j[1]["moving_most"]["key_point"], "invert");
+  const std::vector<StageRecord> back = stage_records_from_json(nlohmann::json::parse(j.dump()));
+  ASSERT_EQ(back.size(), 2u);
+  EXPECT_FALSE(back[0].dt || back[0].settle || back[0].converged || back[0].moving_most);
+  const StageRecord& b = back[1];
+  EXPECT_EQ(b.kind, "equilibrium");
+  EXPECT_EQ(b.changes, full.changes);
+  EXPECT_EQ(b.steps, 2000);
+  EXPECT_EQ(b.simulated_time, 0.736);
+  EXPECT_EQ(b.dt, full.dt);
+  EXPECT_EQ(b.unbalanced_ratio, full.unbalanced_ratio);
+  EXPECT_EQ(b.settle, full.settle);
+  EXPECT_EQ(b.converged, std::optional<bool>(false));
+  EXPECT_EQ(b.max_steps, 2000);
+  EXPECT_EQ(b.ratio, 1e-3);
+  EXPECT_EQ(b.settle_limit, 1e-3);
+  EXPECT_EQ(b.hold, 3);
+  EXPECT_EQ(b.unstable_fraction, 0.1);
+  ASSERT_TRUE(b.moving_most);
+  EXPECT_EQ(b.moving_most->key_point, "invert");
+  EXPECT_EQ(b.moving_most->mm_per_1000_steps, 18.3);
+  EXPECT_EQ(b.support_pressure_ratio, 0.25);
+  EXPECT_EQ(stage_records_json(back), j);
 }

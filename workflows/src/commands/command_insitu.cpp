@@ -51,21 +51,12 @@ void write_fields(const mesh::Mesh& m, const std::vector<insitu::InsituField>& f
 }
 
 // Each implicit stage's alpha, solver, size and timings.
-void record_stages(const std::vector<insitu::InsituField>& fields, nlohmann::json& insitu) {
-  insitu["alpha"] = nlohmann::json::array();
-  insitu["solver_iterations"] = nlohmann::json::array();
-  insitu["stages"] = nlohmann::json::array();
-  for (const insitu::InsituField& f : fields) {
-    insitu["alpha"].push_back(f.alpha);
-    insitu["solver_iterations"].push_back(f.iterations);
-    insitu["stages"].push_back({{"alpha", f.alpha},
-                                {"solver", f.solver},
-                                {"dofs", f.n_dofs},
-                                {"assembly_seconds", f.assembly_seconds},
-                                {"solve_seconds", f.solve_seconds},
-                                {"total_seconds", f.total_seconds},
-                                {"unbalanced_ratio", f.unbalanced_ratio}});
-  }
+std::vector<InsituSolveFigures> solves(const std::vector<insitu::InsituField>& fields) {
+  std::vector<InsituSolveFigures> out;
+  for (const insitu::InsituField& f : fields)
+    out.push_back({f.alpha, f.solver, long(f.n_dofs), f.assembly_seconds, f.solve_seconds,
+                   f.total_seconds, f.unbalanced_ratio});
+  return out;
 }
 
 // The Kirsch comparison where the scene is a Kirsch case fully excavated,
@@ -80,10 +71,9 @@ void compare_with_kirsch(const Scene& scene, const RunContext& ctx, const mesh::
     return;
   }
   const insitu::KirschComparison c = insitu::compare_kirsch(m, last, k);
-  auto& j = summary.figures()["insitu"];
-  j["kirsch_rel_l2"] = c.stress_rel_l2;
-  j["kirsch_wall_ur_rel_l2"] = c.wall_ur_rel_l2;
-  j["kirsch_triangles"] = c.n_triangles;
+  summary.insitu.kirsch_rel_l2 = c.stress_rel_l2;
+  summary.insitu.kirsch_wall_ur_rel_l2 = c.wall_ur_rel_l2;
+  summary.insitu.kirsch_triangles = long(c.n_triangles);
   coupling::atomic_write_text(output_path(ctx.output_dir, "insitu_vs_analytic.csv"), kirsch_csv(c));
   if (!ctx.quiet)
     std::cout << "Kirsch: relative L2 stress error over a <= r <= 5a: " << c.stress_rel_l2 << " ("
@@ -114,8 +104,8 @@ int command_insitu(const Scene& scene, const RunContext& ctx) {
   if (scene.output.vtk) write_fields(m, fields, ctx.output_dir);
   summary.note_turned_off(scene.output, "insitu.vtu, insitu.pvd, insitu_NN.vtu", false);
   summary.record_mesh(m, report);
-  summary.record_insitu_state(fields.back());
-  record_stages(fields, summary.figures()["insitu"]);
+  summary.record_insitu(fields);
+  summary.insitu.stages = solves(fields);
   compare_with_kirsch(scene, ctx, m, fields.back(), summary);
   summary.skipped.push_back("fdem: `rockfdem insitu` runs the implicit stage only");
   summary.status = "completed";

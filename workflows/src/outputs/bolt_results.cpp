@@ -89,6 +89,11 @@ std::vector<double> BoltResults::record(const fdem::Engine& e, long step, double
   return row;
 }
 
+void BoltResults::at_output_step(const OutputStep& s, std::vector<double>& row) {
+  for (double v : record(s.engine, s.engine.step_count(), s.engine.time(), s.stage_index))
+    row.push_back(v);
+}
+
 void BoltResults::write_frame(const std::string& file, const coupling::VtkFieldData& frame) {
   coupling::VtkPolylines l;
   std::vector<double> force, stress, station;
@@ -144,43 +149,40 @@ std::vector<plots::PlotSeries> BoltResults::force_curves(const fdem::Engine& e) 
   return out;
 }
 
-nlohmann::json BoltResults::summary_entry(const fdem::Engine& e, std::size_t b,
-                                          const std::vector<fdem::BoltStation>& st) const {
+BoltFigures BoltResults::summary_entry(const fdem::Engine& e, std::size_t b,
+                                       const std::vector<fdem::BoltStation>& st) const {
   const fdem::Bolt& bolt = plan_.specs[b].bolt;
   const fdem::BoltCounts c = fdem::bolt_counts(e, plan_, int(b));
-  nlohmann::json j = {{"name", bolt_name(b)},
-                      {"kind", is_cable_[b] ? "cable" : "bolt"},
-                      {"head", {bolt.a[0], bolt.a[1]}},
-                      {"end", {bolt.b[0], bolt.b[1]}},
-                      {"installed", plan_.installed[b] != 0},
-                      {"steel_cracks_yielding", c.yielding},
-                      {"steel_cracks_broken", c.broken},
-                      {"grout_cracks_broken", c.grout_broken}};
+  BoltFigures f{bolt_name(b),
+                is_cable_[b] ? "cable" : "bolt",
+                {bolt.a[0], bolt.a[1]},
+                {bolt.b[0], bolt.b[1]},
+                plan_.installed[b] != 0,
+                c.yielding,
+                c.broken,
+                c.grout_broken,
+                std::nullopt};
   const fdem::BoltStation* p = peak(st);
-  if (!p) return j;  // not installed: no force to report
+  if (!p) return f;  // not installed: no force to report
   const std::string file = bolt_name(b) + ".csv";
   coupling::atomic_write_text(
       output_path(dir_, file),
       "station_m,x_m,y_m,axial_force_kN,steel_stress_MPa,state\n" + station_rows("", st));
-  j["file"] = file;
-  j["max_axial_force_kN_per_bar"] = p->bar_force / 1e3;
-  j["max_steel_stress_MPa"] = p->steel_stress / 1e6;
-  j["station_m"] = p->station;
-  j["yielded"] = worst_state(st) >= 1;
-  j["broken"] = worst_state(st) == 2;
-  return j;
+  f.peak = BoltPeak{file,       p->bar_force / 1e3,   p->steel_stress / 1e6,
+                    p->station, worst_state(st) >= 1, worst_state(st) == 2};
+  return f;
 }
 
 void BoltResults::finish(const fdem::Engine& e, RunRecord& summary) const {
   const auto now = profiles(e, plan_);
-  nlohmann::json list = nlohmann::json::array();
-  for (std::size_t b = 0; b < now.size(); ++b) list.push_back(summary_entry(e, b, now[b]));
+  BoltRecord r;
+  for (std::size_t b = 0; b < now.size(); ++b) r.each.push_back(summary_entry(e, b, now[b]));
   const fdem::BoltCounts all = fdem::bolt_counts(e, plan_, -1);
-  summary.figures()["bolts"] = {{"count", plan_.specs.size()},
-                                {"steel_cracks_yielding", all.yielding},
-                                {"steel_cracks_broken", all.broken},
-                                {"grout_cracks_broken", all.grout_broken},
-                                {"each", list}};
+  r.count = long(plan_.specs.size());
+  r.steel_cracks_yielding = all.yielding;
+  r.steel_cracks_broken = all.broken;
+  r.grout_cracks_broken = all.grout_broken;
+  summary.bolts = std::move(r);
 }
 
 nlohmann::json BoltResults::state() const {

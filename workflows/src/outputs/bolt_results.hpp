@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "outputs/output_step.hpp"
 #include "rockfdem/coupling/vtk_writer.hpp"
 #include "rockfdem/fdem/bolt_sections.hpp"
 #include "rockfdem/plots/plot.hpp"
@@ -18,12 +19,14 @@
 
 namespace rockfdem::workflows {
 
-class BoltResults {
+class BoltResults : public OutputStepObserver {
  public:
   /// `is_cable` per bolt (kind in the outputs); files go to `dir`.
   BoltResults(const fdem::BoltPlan& plan, std::vector<std::uint8_t> is_cable, std::string dir);
   /// "bolt_NN_max_axial_kN" per bolt.
-  std::vector<std::string> history_columns() const;
+  std::vector<std::string> history_columns() const override;
+  /// record()'s forces into the row.
+  void at_output_step(const OutputStep& step, std::vector<double>& row) override;
   /// Takes this output step's profiles, appends them to bolts.csv
   /// (rewritten atomically) and returns each bolt's axial force of largest
   /// magnitude [kN per bar, tension positive]; 0 while not installed.
@@ -34,8 +37,8 @@ class BoltResults {
   /// bolt_NN.csv (final profiles) and summary "bolts".
   void finish(const fdem::Engine& e, RunRecord& summary) const;
   /// One bolt's summary entry; writes its bolt_NN.csv when installed.
-  nlohmann::json summary_entry(const fdem::Engine& e, std::size_t b,
-                               const std::vector<fdem::BoltStation>& final_profile) const;
+  BoltFigures summary_entry(const fdem::Engine& e, std::size_t b,
+                            const std::vector<fdem::BoltStation>& final_profile) const;
   /// bolt_forces.png's curves: kN per bar against the distance from the
   /// collar, one per installed bolt (final state).
   std::vector<plots::PlotSeries> force_curves(const fdem::Engine& e) const;

@@ -282,8 +282,9 @@ void compare_with_continuum_counterpart(const Scene& scene, const RunContext& ct
   try {
     const ContinuumStates c =
         keeping_threads(ctx, [&] { return solve_continuum_counterpart(scene, m); });
-    summary.figures()["continuum_comparison"] = compare_with_counterpart(
-        scene, m, e, fdem_handoff, c, monitors, ctx.output_dir, summary, ctx.quiet);
+    summary.add_figures("continuum_comparison",
+                        compare_with_counterpart(scene, m, e, fdem_handoff, c, monitors,
+                                                 ctx.output_dir, summary, ctx.quiet));
   } catch (const InputError& err) {
     skip(err);
   } catch (const NumericalError& err) {

@@ -7,53 +7,15 @@
 
 namespace rockfdem::workflows {
 
-nlohmann::json state_figures(const fdem::Engine& e, const fdem::EnergyBalance& en) {
-  const fdem::BrokenCounts b = e.broken_counts();
-  return {{"steps", e.step_count()},
-          {"dt", e.dt()},
-          {"simulated_time", e.time()},
-          {"broken", {{"mode_I", b.mode_I}, {"mode_II", b.mode_II}, {"mixed", b.mixed}}},
-          {"energy",
-           {{"external_work", en.external_work},
-            {"kinetic", en.kinetic},
-            {"strain", en.strain},
-            {"crack_elastic", en.crack_elastic},
-            {"contact_elastic", en.contact_elastic},
-            {"initial_stored", en.initial_stored},
-            {"damping", en.damping},
-            {"fracture", en.fracture},
-            {"friction", en.friction},
-            {"absorbing", en.absorbing},
-            {"softening", en.softening},
-            {"removed_by_stages", en.removed},
-            {"residual", en.residual()},
-            {"relative_imbalance", en.imbalance()}}},
-          {"state_hash", e.state_hash()}};
+EngineState engine_state(const fdem::Engine& e, const fdem::EnergyBalance& en) {
+  return {e.step_count(), e.dt(), e.time(), e.broken_counts(), en, e.state_hash()};
 }
 
-void report_engine(const fdem::Engine& e, const PhaseTimer& timer, RunRecord& summary) {
-  auto& j = summary.figures();
-  j["counts"]["triangles"] = e.n_triangles();
-  j["counts"]["nodes"] = e.n_nodes();
-  j["counts"]["crack_elements"] = e.n_cracks();
-  j.update(state_figures(e, e.energy_balance()));
-  // One dt throughout, unless a staged run widens the range (RunOutputs).
-  j["dt_min"] = j["dt_max"] = e.dt();
-  const double fdem = timer.seconds("fdem");
-  j["throughput"]["triangle_steps_per_second"] =
-      fdem > 0 ? double(e.n_triangles()) * double(e.step_count()) / fdem : 0.0;
-  const fdem::PhaseTimes p = e.phase_times();
-  j["fdem_modules"] = {
-      {"triangles", p.triangles}, {"cracks", p.cracks}, {"nodes", p.nodes}, {"contact", p.contact}};
+namespace {
+
+// What the run skipped of the engine's modules, and why.
+void note_skipped(const fdem::Engine& e, RunRecord& summary) {
   const fdem::ContactCounters c = e.contact_counters();
-  j["contact"] = {{"enabled", c.enabled},
-                  {"detections", c.detections},
-                  {"steps_with_pairs", c.steps_with_pairs},
-                  {"steps_skipped", c.steps_skipped},
-                  {"last_candidates", c.candidates},
-                  {"last_pairs", c.pairs},
-                  {"last_touching", c.touching},
-                  {"kernel", c.kernel}};
   if (!c.enabled)
     summary.skipped.push_back("contact: disabled by the scene (contact.enabled = false)");
   else if (c.steps_with_pairs == 0)
@@ -63,20 +25,26 @@ void report_engine(const fdem::Engine& e, const PhaseTimer& timer, RunRecord& su
     summary.skipped.push_back("contact: nothing could touch in " + std::to_string(c.steps_skipped) +
                               " of " + std::to_string(e.step_count()) + " steps");
   if (e.n_cracks() == 0) summary.skipped.push_back("crack elements: fracture is allowed nowhere");
-  const fdem::MassScalingReport ms = e.mass_scaling_report();
-  j["mass_scaling"] = {{"enabled", ms.enabled}};
-  if (ms.enabled)
-    j["mass_scaling"].update({{"target_dt", ms.target_dt},
-                              {"max_factor", ms.max_factor},
-                              {"mass_ratio", ms.mass_ratio},
-                              {"scaled_triangles", ms.scaled_triangles},
-                              {"note",
-                               "quasi-static: densities scaled, statics unchanged; "
-                               "simulated_time is pseudo-time"}});
-  else
+  if (!e.mass_scaling_report().enabled)
     summary.skipped.push_back("mass scaling: off (engine.mass_scaling); dynamics at true masses");
-  j["memory_bytes"] = e.memory_bytes();
-  j["memory_bytes_per_triangle"] = double(e.memory_bytes()) / double(e.n_triangles());
+}
+
+}  // namespace
+
+void report_engine(const fdem::Engine& e, const PhaseTimer& timer, RunRecord& summary) {
+  summary.counts.triangles = long(e.n_triangles());
+  summary.counts.nodes = long(e.n_nodes());
+  summary.counts.crack_elements = long(e.n_cracks());
+  summary.state = engine_state(e, e.energy_balance());
+  // One dt throughout, unless a staged run widens the range (RunOutputs).
+  summary.dt_range = std::make_pair(e.dt(), e.dt());
+  const double fdem = timer.seconds("fdem");
+  summary.triangle_steps_per_second =
+      fdem > 0 ? double(e.n_triangles()) * double(e.step_count()) / fdem : 0.0;
+  summary.engine =
+      EngineFigures{e.phase_times(), e.contact_counters(), e.mass_scaling_report(),
+                    long(e.memory_bytes()), double(e.memory_bytes()) / double(e.n_triangles())};
+  note_skipped(e, summary);
 }
 
 std::vector<std::string> energy_columns() {

@@ -16,10 +16,10 @@ namespace rockfdem::workflows {
 
 void report_engine(const fdem::Engine& e, const PhaseTimer& timer, RunRecord& summary);
 
-/// The summary keys that describe one state of the engine: steps, dt (the
+/// One state of the engine as the record describes it: steps, dt (the
 /// last step's), simulated_time, broken, energy (`en`, the state's balance)
 /// and state_hash.
-nlohmann::json state_figures(const fdem::Engine& e, const fdem::EnergyBalance& en);
+EngineState engine_state(const fdem::Engine& e, const fdem::EnergyBalance& en);
 
 /// history.csv's energy columns and one row of them (energy since the
 /// first step [J/m]: external work, change of stored energy, dissipated and

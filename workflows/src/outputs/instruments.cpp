@@ -67,7 +67,7 @@ Instruments::Instruments(const Scene& scene, const mesh::Mesh& m, const fdem::En
   }
 }
 
-std::vector<std::string> Instruments::columns() const {
+std::vector<std::string> Instruments::history_columns() const {
   std::vector<std::string> cols;
   for (const MonitorSpec& s : scene_.monitors)
     for (const char* c : {"_ux_mm", "_uy_mm", "_u_mm"}) cols.push_back(s.name + c);
@@ -121,47 +121,38 @@ std::vector<double> Instruments::row(const fdem::Engine& e, const mesh::Mesh& m,
   return row;
 }
 
-void Instruments::add_monitors(nlohmann::json& monitors, const NodeDisplacement& u) const {
+void Instruments::add_monitors(MonitorRecord& monitors, const NodeDisplacement& u) const {
   for (std::size_t i = 0; i < monitors_.size(); ++i) {
     const MonitorSpec& s = scene_.monitors[i];
     const std::array<double, 2> d = monitor_u(i, u);
-    monitors[s.name] = {{"ux_mm", mm(d[0])},
-                        {"uy_mm", mm(d[1])},
-                        {"u_mm", mm(std::hypot(d[0], d[1]))},
-                        {"x", s.x},
-                        {"y", s.y},
-                        {"triangle", monitors_[i].triangle},
-                        {"from", s.relative_to_support ? "support" : "in-situ state"}};
+    monitors.points[s.name] = {mm(d[0]),
+                               mm(d[1]),
+                               mm(std::hypot(d[0], d[1])),
+                               s.x,
+                               s.y,
+                               long(monitors_[i].triangle),
+                               s.relative_to_support ? "support" : "in-situ state"};
   }
 }
 
-void Instruments::finish(nlohmann::json& summary, const fdem::Engine& e, const mesh::Mesh& m,
+void Instruments::finish(RunRecord& summary, const fdem::Engine& e, const mesh::Mesh& m,
                          const NodeDisplacement& u) const {
-  nlohmann::json ext = nlohmann::json::object();
   for (const Extensometer& x : extensometers_) {
     const std::vector<double> a = axial(x, u);
-    nlohmann::json points = nlohmann::json::array();
+    ExtensometerFigures& f = summary.extensometers[x.spec->name];
+    f = ExtensometerFigures{{x.x, x.y}, {x.dx, x.dy}, std::nullopt, x.spec->length, {}};
+    if (!x.spec->from.empty()) f.from = x.spec->from;
     for (std::size_t k = 0; k < a.size(); ++k)
-      points.push_back({{"point", k == 0 ? "head" : "anchor " + std::to_string(k)},
-                        {"depth_m", x.spec->length * double(k) / x.spec->anchors},
-                        {"relative_mm", mm(a[k] - a.back())},
-                        {"absolute_mm", mm(a[k])}});
-    ext[x.spec->name] = {
-        {"head", {x.x, x.y}},
-        {"direction", {x.dx, x.dy}},
-        {"from", x.spec->from.empty() ? nlohmann::json() : nlohmann::json(x.spec->from)},
-        {"length_m", x.spec->length},
-        {"points", points}};
+      f.points.push_back({k == 0 ? "head" : "anchor " + std::to_string(k),
+                          x.spec->length * double(k) / x.spec->anchors, mm(a[k] - a.back()),
+                          mm(a[k])});
   }
-  if (!extensometers_.empty()) summary["extensometers"] = ext;
-  nlohmann::json rays = nlohmann::json::object();
+  BrokenZoneRecord& zone =
+      summary.broken_zone ? *summary.broken_zone : summary.broken_zone.emplace();
   const std::vector<double> depth = broken_depth_along_rays(e, m, rays_, half_width_, bolted_);
   for (std::size_t i = 0; i < rays_.size(); ++i)
-    rays[ray_names_[i]] = {{"depth_m", depth[i]},
-                           {"origin", {rays_[i].x, rays_[i].y}},
-                           {"direction", {rays_[i].dx, rays_[i].dy}}};
-  summary["broken_zone"]["along_rays"] = rays;
-  summary["broken_zone"]["ray_half_width_m"] = half_width_;
+    zone.rays[ray_names_[i]] = {depth[i], {rays_[i].x, rays_[i].y}, {rays_[i].dx, rays_[i].dy}};
+  zone.ray_half_width_m = half_width_;
 }
 
 nlohmann::json Instruments::state() const {

@@ -19,12 +19,14 @@
 #include "outputs/broken_zone.hpp"
 #include "outputs/material_point.hpp"
 #include "outputs/monitors.hpp"
+#include "outputs/output_step.hpp"
 #include "rockfdem/fdem/bolt_install.hpp"
 #include "rockfdem/workflows/scene.hpp"
+#include "run/summary.hpp"
 
 namespace rockfdem::workflows {
 
-class Instruments {
+class Instruments : public OutputStepObserver {
  public:
   /// Places every monitor and extensometer point in the mesh. Throws
   /// rockfdem::InputError naming the scene, the key (monitor[i],
@@ -36,18 +38,21 @@ class Instruments {
   /// history.csv's columns: per monitor <name>_ux_mm, _uy_mm, _u_mm; per
   /// extensometer <name>_a<k>_mm (relative, k = 0 .. n - 1) and
   /// <name>_a<k>_abs_mm (k = 0 .. n); per key point <name>_broken_depth_m.
-  std::vector<std::string> columns() const;
-  /// The values of columns() for a history row.
+  std::vector<std::string> history_columns() const override;
+  /// The values of history_columns() for a history row.
   std::vector<double> row(const fdem::Engine& e, const mesh::Mesh& m,
                           const NodeDisplacement& u) const;
+  void at_output_step(const OutputStep& s, std::vector<double>& r) override {
+    for (double v : row(s.engine, s.mesh, s.u)) r.push_back(v);
+  }
   /// A `lining` or `bolts` stage has just installed its support: the first
   /// call fixes the zero of the monitors read relative to the support.
   void support_installed(const NodeDisplacement& u);
-  /// Adds each monitor's ux_mm, uy_mm, u_mm, point and convention to
-  /// summary.json's "monitors".
-  void add_monitors(nlohmann::json& monitors, const NodeDisplacement& u) const;
+  /// Adds each of the scene's monitors (ux, uy, |u| [mm], point and
+  /// convention) to the record's monitors.
+  void add_monitors(MonitorRecord& monitors, const NodeDisplacement& u) const;
   /// summary.json's "extensometers" and "broken_zone"."along_rays".
-  void finish(nlohmann::json& summary, const fdem::Engine& e, const mesh::Mesh& m,
+  void finish(RunRecord& summary, const fdem::Engine& e, const mesh::Mesh& m,
               const NodeDisplacement& u) const;
   /// The support reference, for a restart.
   nlohmann::json state() const;

@@ -28,7 +28,8 @@ double median_thickness(const LiningGeometry& g) {
 
 }  // namespace
 
-LiningOutput::LiningOutput(const Scene& scene, const mesh::Mesh& m) {
+LiningOutput::LiningOutput(const Scene& scene, const mesh::Mesh& m, std::string dir)
+    : dir_(std::move(dir)) {
   if (auto g = lining_geometry(m)) geometry_ = std::move(*g);
   for (std::size_t t = 0; t < m.n_triangles(); ++t)
     if (m.zone[t] == mesh::kLining) triangles_.push_back(int(t));
@@ -52,16 +53,17 @@ std::vector<SectionForces> LiningOutput::forces(const fdem::Engine& e) const {
   return lining_forces(geometry_, stress);
 }
 
-void LiningOutput::record(const fdem::Engine& e, const std::string& dir) {
-  if (!installed(e)) return;
+void LiningOutput::at_output_step(const OutputStep& step, std::vector<double>&) {
+  const fdem::Engine& e = step.engine;
+  if (!installed_ || !installed(e)) return;
   char name[40];
   std::snprintf(name, sizeof name, "lining_%06ld.csv", e.step_count());
   coupling::atomic_write_text(
-      output_path(dir, name),
+      output_path(dir_, name),
       lining_csv(e.step_count(), geometry_, forces(e), has_strength_ ? &strength_ : nullptr));
 }
 
-void LiningOutput::finish(const fdem::Engine& e, const std::string& dir, nlohmann::json& j) {
+LiningForceFigures LiningOutput::finish(const fdem::Engine& e, const std::string& dir) {
   last_ = forces(e);
   coupling::atomic_write_text(
       output_path(dir, "lining.csv"),
@@ -73,26 +75,27 @@ void LiningOutput::finish(const fdem::Engine& e, const std::string& dir, nlohman
       arg_max(last_, [](const SectionForces& f) { return std::abs(f.moment); });
   const std::size_t v_max =
       arg_max(last_, [](const SectionForces& f) { return std::abs(f.shear); });
-  j["file"] = "lining.csv";
-  j["step"] = e.step_count();
-  j["segments"] = geometry_.segments.size();
-  j["thickness_m"] = median_thickness(geometry_);
-  j["corner_segments"] = std::count_if(geometry_.segments.begin(), geometry_.segments.end(),
-                                       [](const LiningSegment& s) { return s.corner; });
-  j["max_thrust_kN_per_m"] = last_[n_max].thrust / 1e3;
-  j["max_thrust_angle_deg"] = angle(n_max);
-  j["min_thrust_kN_per_m"] = last_[n_min].thrust / 1e3;
-  j["min_thrust_angle_deg"] = angle(n_min);
-  j["max_abs_moment_kNm_per_m"] = std::abs(last_[m_max].moment) / 1e3;
-  j["max_abs_moment_angle_deg"] = angle(m_max);
-  j["max_abs_shear_kN_per_m"] = std::abs(last_[v_max].shear) / 1e3;
-  j["max_abs_shear_angle_deg"] = angle(v_max);
-  capacity_json(j);
+  LiningForceFigures f;
+  f.step = e.step_count();
+  f.segments = long(geometry_.segments.size());
+  f.thickness_m = median_thickness(geometry_);
+  f.corner_segments = std::count_if(geometry_.segments.begin(), geometry_.segments.end(),
+                                    [](const LiningSegment& s) { return s.corner; });
+  f.max_thrust_kN_per_m = last_[n_max].thrust / 1e3;
+  f.max_thrust_angle_deg = angle(n_max);
+  f.min_thrust_kN_per_m = last_[n_min].thrust / 1e3;
+  f.min_thrust_angle_deg = angle(n_min);
+  f.max_abs_moment_kNm_per_m = std::abs(last_[m_max].moment) / 1e3;
+  f.max_abs_moment_angle_deg = angle(m_max);
+  f.max_abs_shear_kN_per_m = std::abs(last_[v_max].shear) / 1e3;
+  f.max_abs_shear_angle_deg = angle(v_max);
+  check_capacity(f);
+  return f;
 }
 
-void LiningOutput::capacity_json(nlohmann::json& j) const {
+void LiningOutput::check_capacity(LiningForceFigures& f) const {
   if (!has_strength_) {
-    j["capacity"] = "not checked: materials.lining.compressive_strength not given";
+    f.capacity = "not checked: materials.lining.compressive_strength not given";
     return;
   }
   std::vector<double> fs;
@@ -100,17 +103,19 @@ void LiningOutput::capacity_json(nlohmann::json& j) const {
     fs.push_back(safety_factor(last_[i], geometry_.segments[i].thickness, strength_));
   const std::size_t i = std::size_t(std::min_element(fs.begin(), fs.end()) - fs.begin());
   const LiningSegment& s = geometry_.segments[i];
-  j["capacity"] =
+  f.capacity =
       "plain shotcrete section, elastic: N/t +- 6M/t^2 within [-tensile, compressive] strength";
-  j["compressive_strength_Pa"] = strength_.compressive;
-  j["tensile_strength_Pa"] = strength_.tensile;
+  LiningCapacityFigures c;
+  c.compressive_strength_Pa = strength_.compressive;
+  c.tensile_strength_Pa = strength_.tensile;
   // An unloaded ring has no finite factor: JSON null.
-  j["min_safety_factor"] = std::isfinite(fs[i]) ? nlohmann::json(fs[i]) : nlohmann::json();
-  j["min_safety_factor_angle_deg"] = s.angle_deg;
-  j["min_safety_factor_x_m"] = s.x;
-  j["min_safety_factor_y_m"] = s.y;
-  j["min_safety_factor_at_corner"] = s.corner;
-  j["segments_below_1"] = std::count_if(fs.begin(), fs.end(), [](double f) { return f < 1; });
+  if (std::isfinite(fs[i])) c.min_safety_factor = fs[i];
+  c.min_safety_factor_angle_deg = s.angle_deg;
+  c.min_safety_factor_x_m = s.x;
+  c.min_safety_factor_y_m = s.y;
+  c.min_safety_factor_at_corner = s.corner;
+  c.segments_below_1 = std::count_if(fs.begin(), fs.end(), [](double v) { return v < 1; });
+  f.check = c;
 }
 
 void LiningOutput::plots(PlotWriter& plots) const {

@@ -9,37 +9,45 @@
 #include <vector>
 
 #include "outputs/lining_forces.hpp"
+#include "outputs/output_step.hpp"
 #include "outputs/run_plots.hpp"
 #include "rockfdem/fdem/engine.hpp"
 #include "rockfdem/workflows/scene.hpp"
+#include "run/support_figures.hpp"
 
 namespace rockfdem::workflows {
 
-class LiningOutput {
+class LiningOutput : public OutputStepObserver {
  public:
-  /// The ring's segments of `m`; `scene` gives the shotcrete's strengths.
-  LiningOutput(const Scene& scene, const mesh::Mesh& m);
+  /// The ring's segments of `m`; `scene` gives the shotcrete's strengths;
+  /// files go to `dir`.
+  LiningOutput(const Scene& scene, const mesh::Mesh& m, std::string dir);
   /// Whether the mesh has a ring to cut into segments.
   bool has_ring() const { return !geometry_.segments.empty(); }
   /// Whether every lining triangle carries load in `e`.
   bool installed(const fdem::Engine& e) const;
-  /// DIR/lining_<step>.csv, when every lining triangle is active.
-  void record(const fdem::Engine& e, const std::string& dir);
-  /// DIR/lining.csv and the summary's figures into `j` (summary "lining").
-  void finish(const fdem::Engine& e, const std::string& dir, nlohmann::json& j);
+  /// Whether the run has installed the ring as lining (before, its
+  /// triangles are ground still to be excavated): its forces count from then.
+  void set_installed(bool installed) { installed_ = installed; }
+  /// DIR/lining_<step>.csv, once installed and every lining triangle is active.
+  void at_output_step(const OutputStep& step, std::vector<double>& row) override;
+  /// DIR/lining.csv and the ring's force extremes and capacity check.
+  LiningForceFigures finish(const fdem::Engine& e, const std::string& dir);
   /// lining_forces.png and (with a compressive strength) lining_capacity.png
   /// of the state finish() saw.
   void plots(PlotWriter& plots) const;
 
  private:
   std::vector<SectionForces> forces(const fdem::Engine& e) const;
-  /// The figures of the safety factor check into `j`.
-  void capacity_json(nlohmann::json& j) const;
+  /// The figures of the safety factor check into `f`.
+  void check_capacity(LiningForceFigures& f) const;
   LiningGeometry geometry_;
   std::vector<int> triangles_;  ///< every lining triangle
   bool has_strength_ = false;
   ShotcreteStrength strength_;
   std::vector<SectionForces> last_;  ///< forces of finish()
+  std::string dir_;
+  bool installed_ = false;
 };
 
 }  // namespace rockfdem::workflows

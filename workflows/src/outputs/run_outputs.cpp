@@ -109,7 +109,7 @@ std::pair<std::string, double> RunOutputs::largest_key_point(
 }
 
 RunOutputs::RunOutputs(const Scene& scene, const RunContext& ctx, RunRecord& summary)
-    : scene_(scene), ctx_(ctx), summary_(summary), pvd_(output_path(ctx.output_dir, "fdem.pvd")) {
+    : scene_(scene), ctx_(ctx), summary_(summary) {
   summary_.note_turned_off(scene.output, "fdem.pvd, fdem_NNNN.vtu, insitu.vtu, continuum.vtu",
                            true);
 }
@@ -117,20 +117,13 @@ RunOutputs::RunOutputs(const Scene& scene, const RunContext& ctx, RunRecord& sum
 void RunOutputs::record_insitu(const mesh::Mesh& m,
                                const std::vector<insitu::InsituField>& fields) {
   fields_ = fields;
-  auto& j = summary_.figures()["insitu"];
-  j["alpha"] = nlohmann::json::array();
-  j["solver_iterations"] = nlohmann::json::array();
-  for (const insitu::InsituField& f : fields) {
-    j["alpha"].push_back(f.alpha);
-    j["solver_iterations"].push_back(f.iterations);
-  }
-  summary_.record_insitu_state(fields.back());
+  summary_.record_insitu(fields);
   if (scene_.output.vtk)
     coupling::write_vtu(coupling::insitu_grid(m, fields.back()),
                         output_path(ctx_.output_dir, "insitu.vtu"));
   insitu::KirschCase k;
   if (kirsch_case(scene_, &k) && fields.back().alpha == 0.0)
-    j["kirsch_rel_l2"] = insitu::compare_kirsch(m, fields.back(), k).stress_rel_l2;
+    summary_.insitu.kirsch_rel_l2 = insitu::compare_kirsch(m, fields.back(), k).stress_rel_l2;
 }
 
 void RunOutputs::set_bolts(const fdem::BoltPlan* bolts) {
@@ -149,10 +142,8 @@ std::vector<std::string> RunOutputs::history_columns(const std::vector<Monitor>&
               {"vault_settlement_mm", "wall_chord_convergence_mm", "shoulder_chord_convergence_mm",
                "outer_rotation_deg", "support_pressure_ratio"});
   for (const std::string& c : energy_columns()) cols.push_back(c);
-  if (bolt_results_)
-    for (const std::string& c : bolt_results_->history_columns()) cols.push_back(c);
-  if (instruments_)
-    for (const std::string& c : instruments_->columns()) cols.push_back(c);
+  for (const OutputStepObserver* o : observers())
+    for (const std::string& c : o->history_columns()) cols.push_back(c);
   return cols;
 }
 
@@ -168,16 +159,30 @@ void RunOutputs::begin_history(const std::vector<Monitor>& monitors, const mesh:
                            boundary_vertices_.end());
   monitors_ = monitors;
   if (has_lining_ring(scene_)) {
-    lining_ = std::make_unique<LiningOutput>(scene_, m);
+    lining_ = std::make_unique<LiningOutput>(scene_, m, ctx_.output_dir);
     if (!lining_->has_ring()) lining_.reset();
+    if (lining_) lining_->set_installed(lining_installed_);
   }
+  frames_ = std::make_unique<FrameOutput>(ctx_.output_dir, fields_, bolts_, bolt_results_.get());
   history_ = std::make_unique<History>(output_path(ctx_.output_dir, "history.csv"),
                                        history_columns(monitors));
 }
 
-void RunOutputs::record_step(const fdem::Engine& e, const mesh::Mesh& m,
-                             const std::vector<Monitor>& monitors, PhaseTimer& timer,
-                             const std::string& stage, double support_ratio) {
+std::vector<OutputStepObserver*> RunOutputs::observers() const {
+  std::vector<OutputStepObserver*> out;
+  for (OutputStepObserver* o : std::initializer_list<OutputStepObserver*>{
+           bolt_results_.get(), instruments_.get(), lining_.get()})
+    if (o) out.push_back(o);
+  return out;
+}
+
+void RunOutputs::set_lining_installed(bool installed) {
+  lining_installed_ = installed;
+  if (lining_) lining_->set_installed(installed);
+}
+
+void RunOutputs::record_rows(const fdem::Engine& e, const mesh::Mesh& m, const std::string& stage,
+                             double support_ratio) {
   if (stage_names_.empty() || stage_names_.back() != stage) stage_names_.push_back(stage);
   const fdem::BrokenCounts b = e.broken_counts();
   std::vector<double> row{double(stage_names_.size() - 1),
@@ -188,85 +193,68 @@ void RunOutputs::record_step(const fdem::Engine& e, const mesh::Mesh& m,
                           double(b.mode_I),
                           double(b.mode_II),
                           double(b.mixed)};
-  for (const Monitor& mon : monitors)
+  for (const Monitor& mon : monitors_)
     for (double v : key_point(e, mon)) row.push_back(v);
-  row.push_back(-mm(displacement(e, find(monitors, "vault"))[1]));
-  row.push_back(mm(convergence(e, monitors, "left_wall", "right_wall")));
-  row.push_back(mm(convergence(e, monitors, "left_shoulder", "right_shoulder")));
+  row.push_back(-mm(displacement(e, find(monitors_, "vault"))[1]));
+  row.push_back(mm(convergence(e, monitors_, "left_wall", "right_wall")));
+  row.push_back(mm(convergence(e, monitors_, "left_shoulder", "right_shoulder")));
   row.push_back(boundary_fit(e).rotation * 180 / M_PI);
   row.push_back(support_ratio);
-  const fdem::EnergyBalance energy = e.energy_balance();
-  for (double v : energy_row(energy)) row.push_back(v);
-  if (bolt_results_)
-    for (double v : bolt_results_->record(e, e.step_count(), e.time(), int(row[0])))
-      row.push_back(v);
-  if (instruments_)
-    for (double v : instruments_->row(e, m, node_displacements(e))) row.push_back(v);
+  for (double v : energy_row(e.energy_balance())) row.push_back(v);
+  const NodeDisplacement u = node_displacements(e);
+  const OutputStep step{e, m, stage, int(stage_names_.size() - 1), u};
+  for (OutputStepObserver* o : observers()) o->at_output_step(step, row);
   history_->add(row);
-  if (lining_ && lining_installed_) lining_->record(e, ctx_.output_dir);
-  // Before the frame: the last frame stays the last good state.
-  check_energy(energy, e.step_count(), energy_floor_);
+}
+
+void RunOutputs::record_frame(const fdem::Engine& e, const mesh::Mesh& m, const std::string& stage,
+                              PhaseTimer& timer) {
   check_rigid_motion(e, e.step_count());
   // The hand-off step's dt, once it passed (a failed one is no good state).
   if (stage == "handoff" && stage_names_.size() == 1) handoff_dt_ = e.dt();
   if (scene_.output.vtk) {
-    char name[32];
-    std::snprintf(name, sizeof name, "fdem_%04d.vtu", frame_++);
-    coupling::VtkGrid g = frame_grid(e, m);
-    coupling::add_frame_info(g.field, stage, e.step_count(), e.time());
-    coupling::write_vtu(g, output_path(ctx_.output_dir, name));
-    pvd_.add(e.time(), name);
-    pvd_.write();
-    std::snprintf(name, sizeof name, "bolts_%04d.vtp", frame_ - 1);
-    if (bolt_results_) bolt_results_->write_frame(name, g.field);
+    const NodeDisplacement u = node_displacements(e);
+    std::vector<double> no_columns;
+    frames_->at_output_step({e, m, stage, int(stage_names_.size() - 1), u}, no_columns);
   }
-  last_good_.take(e, energy, monitors_json(e, monitors));
+  last_good_.take(e, e.energy_balance(), monitor_figures(e, monitors_));
   timer.stamp("output");
 }
 
-nlohmann::json RunOutputs::monitors_json(const fdem::Engine& e,
-                                         const std::vector<Monitor>& monitors) const {
-  nlohmann::json j = nlohmann::json::object();
+MonitorRecord RunOutputs::monitor_figures(const fdem::Engine& e,
+                                          const std::vector<Monitor>& monitors) const {
+  MonitorRecord r;
   for (const Monitor& mon : monitors) {
     const auto k = key_point(e, mon);
-    j[mon.name] = {{"ux_mm", k[0]},
-                   {"uy_mm", k[1]},
-                   {"u_mm", k[2]},
-                   {"radial_mm", k[3]},
-                   {"x", mon.node_x},
-                   {"y", mon.node_y},
-                   {"inward", {mon.inward_x, mon.inward_y}}};
+    r.key_points[mon.name] = {k[0],       k[1],         k[2],         k[3],        mon.node_x,
+                              mon.node_y, mon.inward_x, mon.inward_y, std::nullopt};
   }
   // Per point (as field convergence points are read) and, apart, the
   // change of length of two chords between points.
-  j["vault_settlement_mm"] = -mm(displacement(e, find(monitors, "vault"))[1]);
-  j["wall_chord_convergence_mm"] = mm(convergence(e, monitors, "left_wall", "right_wall"));
-  j["shoulder_chord_convergence_mm"] =
-      mm(convergence(e, monitors, "left_shoulder", "right_shoulder"));
-  if (instruments_) instruments_->add_monitors(j, node_displacements(e));
-  return j;
+  r.chords = ChordFigures{-mm(displacement(e, find(monitors, "vault"))[1]),
+                          mm(convergence(e, monitors, "left_wall", "right_wall")),
+                          mm(convergence(e, monitors, "left_shoulder", "right_shoulder"))};
+  if (instruments_) instruments_->add_monitors(r, node_displacements(e));
+  return r;
 }
 
 void RunOutputs::report_dt() {
-  auto& j = summary_.figures();
   // Steps and time add up: the hand-off step, then each stage's (dt is
   // constant within a stage: the limit changes only with a stage's changes).
-  double lo = j["dt"].get<double>(), hi = lo;
+  double lo = summary_.state.dt, hi = lo;
   if (handoff_dt_ > 0) {
-    j["fdem"]["handoff_step"] = {
-        {"steps", 1}, {"dt", handoff_dt_}, {"simulated_time", handoff_dt_}};
+    if (!summary_.fdem) summary_.fdem.emplace();
+    summary_.fdem->handoff_dt = handoff_dt_;
     lo = std::min(lo, handoff_dt_);
     hi = std::max(hi, handoff_dt_);
   }
-  const nlohmann::json none = nlohmann::json::array();
-  const auto fdem = j.find("fdem");
-  for (const auto& stage : fdem != j.end() ? fdem->value("stages", none) : none)
-    if (stage.contains("dt") && stage["dt"].is_number()) {
-      lo = std::min(lo, stage["dt"].get<double>());
-      hi = std::max(hi, stage["dt"].get<double>());
-    }
-  j["dt_min"] = lo;
-  j["dt_max"] = hi;
+  if (summary_.fdem && summary_.fdem->stages)
+    for (const StageRecord& stage : *summary_.fdem->stages)
+      if (stage.dt) {
+        lo = std::min(lo, *stage.dt);
+        hi = std::max(hi, *stage.dt);
+      }
+  summary_.dt_range = std::make_pair(lo, hi);
 }
 
 void RunOutputs::report_failure(const fdem::Engine& e, PhaseTimer& timer, const std::string& why) {
@@ -276,24 +264,10 @@ void RunOutputs::report_failure(const fdem::Engine& e, PhaseTimer& timer, const 
   write_report();
 }
 
-coupling::VtkGrid RunOutputs::frame_grid(const fdem::Engine& e, const mesh::Mesh& m) const {
-  coupling::VtkGrid g = coupling::fdem_grid(e, m, fields_.empty() ? nullptr : &fields_.back());
-  if (!bolts_ || bolts_->specs.empty()) return g;
-  std::vector<double> stress(e.n_triangles(), std::nan(""));
-  for (std::size_t b = 0; b < bolts_->specs.size(); ++b) {
-    if (!bolts_->installed[b]) continue;
-    for (const fdem::BoltSample& p : fdem::bolt_axial_profile(e, *bolts_, int(b)))
-      stress[p.triangle] = p.steel_stress;
-  }
-  g.cell_arrays.push_back(coupling::triangle_cell_array(
-      g, coupling::scalar_array("bolt_axial_stress", std::move(stress))));
-  return g;
-}
-
 nlohmann::json RunOutputs::state() const {
   return {{"history", history_->rows()},
           {"stages", stage_names_},
-          {"frames", frames_state(pvd_)},
+          {"frames", frames_->state()},
           {"handoff_dt", handoff_dt_},
           {"max_rotation_deg", max_rotation_deg_},
           {"bolts", bolt_results_ ? bolt_results_->state() : nlohmann::json()},
@@ -308,7 +282,7 @@ void RunOutputs::restore(const nlohmann::json& s, const std::string& from_dir) {
   max_rotation_deg_ = s.value("max_rotation_deg", 0.0);
   if (instruments_ && s.contains("instruments") && s.at("instruments").is_object())
     instruments_->restore(s.at("instruments"));
-  frame_ += restore_frames(s.at("frames"), from_dir, ctx_.output_dir, pvd_, summary_);
+  frames_->restore(s.at("frames"), from_dir, summary_);
   if (bolt_results_ && s.contains("bolts") && !s["bolts"].is_null())
     bolt_results_->restore(s["bolts"], from_dir);
   std::error_code same_ec;
@@ -340,17 +314,17 @@ void RunOutputs::lining_outputs(const fdem::Engine& e, const mesh::Mesh& m) {
     ++n_bond;
     broken += e.crack_state(c) == fdem::CrackState::kBroken;
   }
-  nlohmann::json j = nlohmann::json::object();
-  if (n_bond > 0) j = {{"interface_cracks", n_bond}, {"interface_broken", broken}};
-  if (lining_ && lining_installed_ && lining_->installed(e)) lining_->finish(e, ctx_.output_dir, j);
-  if (!j.empty())
-    summary_.figures()["lining"] = j;
-  else if (has_lining_ring(scene_))
+  LiningRecord& r = summary_.lining;
+  r = LiningRecord{};
+  if (n_bond > 0) r.interface = std::make_pair(n_bond, broken);
+  if (lining_ && lining_installed_ && lining_->installed(e))
+    r.forces = lining_->finish(e, ctx_.output_dir);
+  if (r.empty() && has_lining_ring(scene_))
     summary_.skipped.push_back("lining: the ring is not installed at the end of the run");
 }
 
 void RunOutputs::bolt_outputs(const fdem::Engine& e, const fdem::BoltPlan& bolts) {
-  summary_.figures()["counts"]["bolts"] = bolts.specs.size();
+  summary_.counts.bolts = long(bolts.specs.size());
   if (bolt_results_)
     bolt_results_->finish(e, summary_);
   else
@@ -360,39 +334,22 @@ void RunOutputs::bolt_outputs(const fdem::Engine& e, const fdem::BoltPlan& bolts
 void RunOutputs::finish(const fdem::Engine& e, const mesh::Mesh& m,
                         const std::vector<Monitor>& monitors, PhaseTimer& timer,
                         const fdem::BoltPlan& bolts) {
-  auto& j = summary_.figures();
   report_engine(e, timer, summary_);
   warn_if_unbalanced(e, energy_floor_, ctx_.quiet, summary_);
   report_dt();
   bolt_outputs(e, bolts);
-  j["monitors"] = monitors_json(e, monitors);
-  add_since_support(j["monitors"]);
-  j["outer_boundary"] = {{"rotation_deg", boundary_fit(e).rotation * 180 / M_PI},
-                         {"max_rotation_deg", max_rotation_deg_},
-                         {"limit_deg", kRigidRotationLimitDeg},
-                         {"translation_mm", {mm(boundary_fit(e).tx), mm(boundary_fit(e).ty)}},
-                         {"support", scene_.insitu.rollers ? "rollers" : "tractions"}};
-  // Ground reaction curve, implicit part: the core's share of the in-situ
-  // stress (alpha) against the vault settlement it allows.
-  const int vault_vertex = vertex_of(e, find(monitors, "vault"));
-  nlohmann::json grc = nlohmann::json::array();
-  for (const insitu::InsituField& f : fields_)
-    grc.push_back({{"support_pressure_ratio", f.alpha},
-                   {"vault_settlement_mm", -mm(f.uy[vault_vertex])},
-                   {"point", "implicit stage, alpha = " + detail_number(f.alpha)}});
-  // The end: the core's factor then (0 once removed), the support carrying the rest.
-  const double end_ratio =
-      history_->rows().empty() ? 0.0 : history_->column("support_pressure_ratio").back();
-  grc.push_back(
-      {{"support_pressure_ratio", end_ratio},
-       {"vault_settlement_mm", j["monitors"]["vault_settlement_mm"]},
-       {"point", end_ratio > 0 ? "end of run (FDEM), core at alpha = " + detail_number(end_ratio)
-                               : std::string("end of run (FDEM), core removed")}});
-  j["ground_reaction_curve"] = grc;
+  summary_.monitors = monitor_figures(e, monitors);
+  add_since_support(summary_.monitors);
+  summary_.outer_boundary = OuterBoundaryFigures{boundary_fit(e).rotation * 180 / M_PI,
+                                                 max_rotation_deg_,
+                                                 kRigidRotationLimitDeg,
+                                                 {mm(boundary_fit(e).tx), mm(boundary_fit(e).ty)},
+                                                 scene_.insitu.rollers ? "rollers" : "tractions"};
+  record_ground_reaction(e, monitors);
   lining_outputs(e, m);
   damage_outputs(e, m);
-  if (instruments_) instruments_->finish(j, e, m, node_displacements(e));
-  j["history_stages"] = stage_names_;  // history.csv's "stage" column indexes this list
+  if (instruments_) instruments_->finish(summary_, e, m, node_displacements(e));
+  summary_.history_stages = stage_names_;  // history.csv's "stage" column indexes this list
   if (scene_.output.plots) plots(e, m);
   timer.stamp("output");
   summary_.set_timings(timer);
@@ -400,18 +357,34 @@ void RunOutputs::finish(const fdem::Engine& e, const mesh::Mesh& m,
   write_report();
   const fdem::BrokenCounts b = e.broken_counts();
   if (!ctx_.quiet)
-    std::cout << "vault settlement " << j["monitors"]["vault_settlement_mm"].get<double>()
+    std::cout << "vault settlement " << summary_.monitors.chords->vault_settlement_mm
               << " mm, wall chord convergence "
-              << j["monitors"]["wall_chord_convergence_mm"].get<double>() << " mm, broken cracks "
+              << summary_.monitors.chords->wall_chord_convergence_mm << " mm, broken cracks "
               << b.total() << ", state hash " << e.state_hash() << '\n'
               << timer.table();
 }
 
+// Ground reaction curve, implicit part: the core's share of the in-situ
+// stress (alpha) against the vault settlement it allows.
+void RunOutputs::record_ground_reaction(const fdem::Engine& e,
+                                        const std::vector<Monitor>& monitors) {
+  const int vault_vertex = vertex_of(e, find(monitors, "vault"));
+  std::vector<GroundReactionPoint>& grc = summary_.ground_reaction_curve;
+  grc.clear();
+  for (const insitu::InsituField& f : fields_)
+    grc.push_back(
+        {f.alpha, -mm(f.uy[vault_vertex]), "implicit stage, alpha = " + detail_number(f.alpha)});
+  // The end: the core's factor then (0 once removed), the support carrying the rest.
+  const double end_ratio =
+      history_->rows().empty() ? 0.0 : history_->column("support_pressure_ratio").back();
+  grc.push_back({end_ratio, summary_.monitors.chords->vault_settlement_mm,
+                 end_ratio > 0 ? "end of run (FDEM), core at alpha = " + detail_number(end_ratio)
+                               : std::string("end of run (FDEM), core removed")});
+}
+
 void RunOutputs::damage_outputs(const fdem::Engine& e, const mesh::Mesh& m) {
-  auto& j = summary_.figures();
   const Resolution r = fracture_resolution(scene_, &m);
-  j["resolution"] = {
-      {"h_m", r.h}, {"l_ch_m", r.l_ch}, {"h_over_l_ch", r.ratio}, {"limit", kResolutionLimit}};
+  summary_.resolution = ResolutionFigures{r.h, r.l_ch, r.ratio, kResolutionLimit};
   const auto warn = [&](const std::string& msg) {
     summary_.warnings.push_back(msg);
     if (!ctx_.quiet) std::cerr << "warning: " << msg << '\n';
@@ -426,12 +399,12 @@ void RunOutputs::damage_outputs(const fdem::Engine& e, const mesh::Mesh& m) {
     warn(msg);
   }
   const BrokenZone z = broken_zone(e, m, r.h, bolt_triangles(bolts_, m.n_triangles()));
-  j["broken_zone"] = {
-      {"broken_rock_cracks", z.broken},
-      {"depth_m", z.depth},
-      {"fracture_zone_m", z.zone_depth},
-      {"clearance_m", z.clearance >= 0 ? nlohmann::json(z.clearance) : nlohmann::json()},
-      {"capped", z.at_edge}};
+  BrokenZoneRecord& zone = summary_.broken_zone.emplace();
+  zone.broken_rock_cracks = z.broken;
+  zone.depth_m = z.depth;
+  zone.fracture_zone_m = z.zone_depth;
+  if (z.clearance >= 0) zone.clearance_m = z.clearance;
+  zone.capped = z.at_edge;
   if (z.at_edge) {
     std::snprintf(msg, sizeof msg,
                   "broken crack elements reach %.2g m from the fracture zone's outer edge "
@@ -443,12 +416,10 @@ void RunOutputs::damage_outputs(const fdem::Engine& e, const mesh::Mesh& m) {
 }
 
 std::vector<StageSpan> RunOutputs::timeline() const {
-  // The spans point into the summary's stage report: take it by reference.
-  const auto& j = summary_.figures();
-  const auto fdem = j.find("fdem");
-  if (!history_ || history_->rows().empty() || fdem == j.end() || !fdem->contains("stages"))
-    return {};
-  return stage_spans(fdem->at("stages"), history_->column("time").front());
+  // The spans point into the record's stage reports: take them by reference.
+  const std::optional<FdemRecord>& fdem = summary_.fdem;
+  if (!history_ || history_->rows().empty() || !fdem || !fdem->stages) return {};
+  return stage_spans(*fdem->stages, history_->column("time").front());
 }
 
 std::optional<std::size_t> RunOutputs::support_row() const {
@@ -460,36 +431,40 @@ std::optional<std::size_t> RunOutputs::support_row() const {
 
 std::map<std::string, double> RunOutputs::since_support() const {
   const std::optional<std::size_t> row = support_row();
-  const auto& mon = summary_.figures().value("monitors", nlohmann::json::object());
+  const MonitorRecord& mon = summary_.monitors;
   std::map<std::string, double> out;
   if (!row) return out;
-  const auto add = [&](const std::string& name, const std::string& column,
-                       const nlohmann::json& v) {
-    if (v.is_number()) out[name] = v.get<double>() - history_->column(column)[*row];
+  const auto add = [&](const std::string& name, const std::string& column, double v) {
+    out[name] = v - history_->column(column)[*row];
   };
-  for (const Monitor& m : monitors_)
-    if (mon.contains(m.name))
-      add(m.name, m.name + "_radial_mm", mon[m.name].value("radial_mm", nlohmann::json()));
-  add("wall_chord", "wall_chord_convergence_mm",
-      mon.value("wall_chord_convergence_mm", nlohmann::json()));
-  add("shoulder_chord", "shoulder_chord_convergence_mm",
-      mon.value("shoulder_chord_convergence_mm", nlohmann::json()));
+  for (const Monitor& m : monitors_) {
+    const auto k = mon.key_points.find(m.name);
+    if (k != mon.key_points.end() && !mon.points.count(m.name))
+      add(m.name, m.name + "_radial_mm", k->second.radial_mm);
+  }
+  if (mon.chords) {
+    add("wall_chord", "wall_chord_convergence_mm", mon.chords->wall_chord_convergence_mm);
+    add("shoulder_chord", "shoulder_chord_convergence_mm",
+        mon.chords->shoulder_chord_convergence_mm);
+  }
   return out;
 }
 
 // What monitoring installed with the support reads (field convergence
 // data): a run without a lining or bolts stage adds nothing.
-void RunOutputs::add_since_support(nlohmann::json& monitors) const {
-  for (const auto& [name, mm] : since_support())
-    if (monitors.contains(name) && monitors[name].is_object())
-      monitors[name]["radial_since_support_mm"] = mm;
+void RunOutputs::add_since_support(MonitorRecord& monitors) const {
+  for (const auto& [name, mm] : since_support()) {
+    const auto k = monitors.key_points.find(name);
+    if (k != monitors.key_points.end() && !monitors.points.count(name))
+      k->second.radial_since_support_mm = mm;
+  }
 }
 
 void RunOutputs::write_report() const {
   ReportExtras extras;
   extras.since_support_mm = since_support();
   extras.pictures = pictures_;
-  workflows::write_report(ctx_.output_dir, scene_, summary_.to_json(), extras);
+  workflows::write_report(ctx_.output_dir, scene_, summary_, extras);
 }
 
 void RunOutputs::plots(const fdem::Engine& e, const mesh::Mesh& m) {
@@ -548,17 +523,17 @@ void RunOutputs::ground_reaction_plot(PlotWriter& plots) {
   // allows), and apart the run's final state, which is no point of the
   // unsupported curve: the support carries the load there.
   std::vector<double> ratio, settlement;
-  const nlohmann::json& grc = summary_.figures()["ground_reaction_curve"];
+  const std::vector<GroundReactionPoint>& grc = summary_.ground_reaction_curve;
   for (std::size_t i = 0; i + 1 < grc.size(); ++i) {
-    ratio.push_back(grc[i]["support_pressure_ratio"].get<double>());
-    settlement.push_back(grc[i]["vault_settlement_mm"].get<double>());
+    ratio.push_back(grc[i].support_pressure_ratio);
+    settlement.push_back(grc[i].vault_settlement_mm);
   }
   std::vector<plots::PlotSeries> series{
       {"implicit stage: core stiffness factor alpha", settlement, ratio}};
   if (!grc.empty())
-    series.push_back({grc.back()["point"].get<std::string>(),
-                      {grc.back()["vault_settlement_mm"].get<double>()},
-                      {grc.back()["support_pressure_ratio"].get<double>()},
+    series.push_back({grc.back().point,
+                      {grc.back().vault_settlement_mm},
+                      {grc.back().support_pressure_ratio},
                       true});
   plots.xy("ground_reaction.png", "Ground reaction curve at the vault",
            "vault radial displacement (settlement) from the in-situ state [mm]",

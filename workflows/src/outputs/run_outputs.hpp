@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "outputs/bolt_results.hpp"
+#include "outputs/frame_output.hpp"
 #include "outputs/history.hpp"
 #include "outputs/instruments.hpp"
 #include "outputs/lining_output.hpp"
@@ -54,10 +55,18 @@ class RunOutputs : public StepOutputs {
   }
   /// Whether the lining ring is installed as lining (before, its triangles
   /// are ground still to be excavated): its forces are written from then.
-  void set_lining_installed(bool installed) override { lining_installed_ = installed; }
-  /// One history row and (if enabled) one ParaView frame.
-  void record_step(const fdem::Engine& e, const mesh::Mesh& m, const std::vector<Monitor>& monitors,
-                   PhaseTimer& timer, const std::string& stage, double support_ratio) override;
+  void set_lining_installed(bool installed) override;
+  /// An output step's history row, with the columns and files of the
+  /// outputs that observe output steps (bolts, instruments, lining);
+  /// before the run's checks of the step, so that a failing step has its row.
+  void record_rows(const fdem::Engine& e, const mesh::Mesh& m, const std::string& stage,
+                   double support_ratio) override;
+  /// The output step once the run's checks passed: the outer boundary's
+  /// rigid-motion check, the ParaView frame (if enabled) and the last good state.
+  void record_frame(const fdem::Engine& e, const mesh::Mesh& m, const std::string& stage,
+                    PhaseTimer& timer);
+  /// The outputs that observe output steps, in history.csv's column order.
+  std::vector<OutputStepObserver*> observers() const;
   /// The key point displaced most from the in-situ state and |u| [m].
   std::pair<std::string, double> largest_key_point(
       const fdem::Engine& e, const std::vector<Monitor>& monitors) const override;
@@ -78,18 +87,21 @@ class RunOutputs : public StepOutputs {
   void report_failure(const fdem::Engine& e, PhaseTimer& timer, const std::string& why);
 
  private:
-  /// summary "monitors": each monitor's ux, uy [mm] and position, vault
-  /// settlement, wall and shoulder convergence [mm].
-  nlohmann::json monitors_json(const fdem::Engine& e, const std::vector<Monitor>& monitors) const;
-  /// fdem.handoff_step and dt_min, dt_max over it, the stages' dt and the
-  /// last step's (summary "fdem" holds the stage reports by then).
+  /// The record's monitors: each key point's ux, uy [mm] and position, vault
+  /// settlement, wall and shoulder convergence [mm], the scene's monitors.
+  MonitorRecord monitor_figures(const fdem::Engine& e, const std::vector<Monitor>& monitors) const;
+  /// The hand-off step and dt_min, dt_max over it, the stages' dt and the
+  /// last step's (the record holds the stage reports by then).
   void report_dt();
+  /// The record's ground reaction curve: the implicit stage's points and
+  /// the end of the run (after the monitors).
+  void record_ground_reaction(const fdem::Engine& e, const std::vector<Monitor>& monitors);
   void plots(const fdem::Engine& e, const mesh::Mesh& m);
   /// convergence.png, chord_convergence.png (from the support's
   /// installation where the scene asks) and broken.png, with `markers`.
   void time_plots(PlotWriter& plots, const fdem::Engine& e,
                   const std::vector<plots::PlotMarker>& markers);
-  /// ground_reaction.png from the summary's ground_reaction_curve.
+  /// ground_reaction.png from the record's ground reaction curve.
   void ground_reaction_plot(PlotWriter& plots);
   /// The explicit stages on the history's time axis (run_timeline.hpp).
   std::vector<StageSpan> timeline() const;
@@ -97,15 +109,12 @@ class RunOutputs : public StepOutputs {
   /// bolts stage's start); nothing when the run installed no support.
   std::optional<std::size_t> support_row() const;
   /// Key points' radial displacement and the chords' closure [mm] since
-  /// the support's installation (the summary's figures less the history's then).
+  /// the support's installation (the record's figures less the history's then).
   std::map<std::string, double> since_support() const;
-  /// Adds each key point's `radial_since_support_mm` to the summary's monitors.
-  void add_since_support(nlohmann::json& monitors) const;
-  /// report.md from the summary as it stands.
+  /// Adds each key point's `radial_since_support_mm` to the record's monitors.
+  void add_since_support(MonitorRecord& monitors) const;
+  /// report.md from the record as it stands.
   void write_report() const;
-  /// The engine grid plus, with bolts installed, "bolt_axial_stress" (steel
-  /// stress along the axis per bolt triangle, NaN elsewhere).
-  coupling::VtkGrid frame_grid(const fdem::Engine& e, const mesh::Mesh& m) const;
   /// bolt_NN.csv (axial stress and force along each bolt) and summary "bolts".
   void bolt_outputs(const fdem::Engine& e, const fdem::BoltPlan& bolts);
   /// summary "resolution" (h / l_ch) and "broken_zone" (depth, clearance to
@@ -134,8 +143,7 @@ class RunOutputs : public StepOutputs {
   std::vector<insitu::InsituField> fields_;
   std::unique_ptr<History> history_;
   std::unique_ptr<Instruments> instruments_;
-  coupling::PvdCollection pvd_;
-  int frame_ = 0;
+  std::unique_ptr<FrameOutput> frames_;  ///< from begin_history
   const fdem::BoltPlan* bolts_ = nullptr;
   std::unique_ptr<BoltResults> bolt_results_;  ///< with bolts in the scene
   std::unique_ptr<LiningOutput> lining_;       ///< null: no lining ring

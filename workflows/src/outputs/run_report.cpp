@@ -6,6 +6,7 @@
 
 #include "rockfdem/coupling/atomic_file.hpp"
 #include "rockfdem/mesh/msh_io.hpp"
+#include "rockfdem/workflows/version.hpp"
 #include "run/output_dir.hpp"
 
 namespace rockfdem::workflows {
@@ -37,6 +38,13 @@ std::string value_text(const json& v) {
   if (v.is_boolean()) return v.get<bool>() ? "yes" : "no";
   if (v.is_string()) return v.get<std::string>();
   return "-";
+}
+
+std::string value_text(long v) { return std::to_string(v); }
+std::string value_text(double v) { return sig(v); }
+template <class T>
+std::string value_text(const std::optional<T>& v) {
+  return v ? value_text(*v) : "-";
 }
 
 const char* shape_name(mesh::TunnelShape s) {
@@ -74,14 +82,15 @@ void opening_row(std::ostream& md, const Scene& s) {
      << sig(s.mesh.domain.height) << " m |\n";
 }
 
-void inputs(std::ostream& md, const Scene& s, const json& j) {
+void inputs(std::ostream& md, const Scene& s, const RunRecord& r) {
   md << "## Inputs\n\n| what | value |\n|---|---|\n";
   if (s.mesh.kind == mesh::ModelKind::kTunnel) opening_row(md, s);
-  const json& mesh = j.value("mesh", json::object());
+  const auto count = [&](std::size_t mesh::MeshReport::*n) {
+    return r.mesh ? value_text(long((*r.mesh).*n)) : "-";
+  };
   md << "| mesh | element size " << sig(s.mesh.size.size_near) << " m at the opening, "
-     << sig(s.mesh.size.size_far) << " m at the boundary; "
-     << value_text(mesh.value("triangles", json())) << " triangles, "
-     << value_text(mesh.value("vertices", json())) << " vertices |\n";
+     << sig(s.mesh.size.size_far) << " m at the boundary; " << count(&mesh::MeshReport::n_triangles)
+     << " triangles, " << count(&mesh::MeshReport::n_vertices) << " vertices |\n";
   for (mesh::Zone z : {mesh::kLining, mesh::kRock})  // the core is excavated
     if (s.materials.count(z)) material_rows(md, mesh::zone_name(z), s.materials.at(z));
   md << "| in-situ stress (compression +) | sigma_h " << mpa(s.insitu.sigma_h) << ", sigma_v "
@@ -101,51 +110,46 @@ void inputs(std::ostream& md, const Scene& s, const json& j) {
 }
 
 // One stage's status: what it reached, in words.
-std::string stage_status(const json& st) {
-  const json changes = st.value("changes", json::object());
-  if (st.value("kind", std::string()) == "grout" && changes.is_object()) {
+std::string stage_status(const StageRecord& st) {
+  const json& changes = st.changes;
+  if (st.kind == "grout" && changes.is_object()) {
     if (!changes.value("triggered", false)) return "not triggered";
     return "grouted " + value_text(changes.value("rejoined", json())) + " cracks";
   }
-  const json c = st.value("converged", json());
-  if (c.is_null()) {
-    const std::string kind = st.value("kind", std::string());
-    return kind == "lining" || kind == "bolts" ? "installed"
-           : kind == "remove_core"             ? "core removed"
-                                               : "applied (no steps)";
-  }
-  return c.get<bool>() ? "converged" : "stopped before its criteria";
+  if (!st.converged)
+    return st.kind == "lining" || st.kind == "bolts" ? "installed"
+           : st.kind == "remove_core"                ? "core removed"
+                                                     : "applied (no steps)";
+  return *st.converged ? "converged" : "stopped before its criteria";
 }
 
-void stages(std::ostream& md, const json& j) {
+void stages(std::ostream& md, const RunRecord& r) {
   md << "\n## Stages\n\n| # | stage | steps | simulated time [s] | unbalanced ratio at end | "
         "status |\n|---|---|---|---|---|---|\n";
-  const json& fdem = j.value("fdem", json::object());
-  if (fdem.contains("handoff_step"))
-    md << "| 0 | handoff (implicit to explicit) | 1 | "
-       << sig(fdem["handoff_step"].value("simulated_time", 0.0)) << " | - | - |\n";
+  if (!r.fdem) return;
+  if (r.fdem->handoff_dt)
+    md << "| 0 | handoff (implicit to explicit) | 1 | " << sig(*r.fdem->handoff_dt)
+       << " | - | - |\n";
   int i = 1;
-  for (const json& st : fdem.value("stages", json::array()))
-    md << "| " << i++ << " | " << value_text(st.value("kind", json())) << " | "
-       << value_text(st.value("steps", json())) << " | "
-       << value_text(st.value("simulated_time", json())) << " | "
-       << value_text(st.value("unbalanced_ratio", json())) << " | " << stage_status(st) << " |\n";
+  for (const StageRecord& st : r.fdem->stages.value_or(std::vector<StageRecord>{}))
+    md << "| " << i++ << " | " << st.kind << " | " << value_text(st.steps) << " | "
+       << value_text(st.simulated_time) << " | " << value_text(st.unbalanced_ratio) << " | "
+       << stage_status(st) << " |\n";
 }
 
-void status(std::ostream& md, const json& j) {
-  md << "\n## Status\n\n**" << value_text(j.value("status", json("unknown"))) << "**";
-  if (j.contains("status_reason")) md << ": " << value_text(j["status_reason"]);
-  if (j.contains("failure")) md << ": " << value_text(j["failure"]);
+void status(std::ostream& md, const RunRecord& r) {
+  md << "\n## Status\n\n**" << (r.status.empty() ? "unknown" : r.status) << "**";
+  if (r.status_reason) md << ": " << *r.status_reason;
+  if (r.failure) md << ": " << *r.failure;
   md << "\n\n";
-  const json& fdem = j.value("fdem", json::object());
-  md << "- steps " << value_text(j.value("steps", json())) << ", simulated time "
-     << value_text(j.value("simulated_time", json())) << " s (pseudo-time where masses are "
+  const std::optional<double> none;
+  md << "- steps " << value_text(r.state.steps) << ", simulated time "
+     << value_text(r.state.simulated_time) << " s (pseudo-time where masses are "
      << "scaled)\n- unbalanced-force ratio: "
-     << value_text(fdem.value("unbalanced_ratio_at_start", json())) << " after the hand-off step, "
-     << value_text(fdem.value("unbalanced_ratio_at_end", json()))
+     << value_text(r.fdem ? r.fdem->unbalanced_ratio_at_start : none)
+     << " after the hand-off step, " << value_text(r.fdem ? r.fdem->unbalanced_ratio_at_end : none)
      << " at the end (equilibrium: below the stage's `ratio`, the key points settled)\n";
-  for (const json& w : j.value("warnings", json::array()))
-    md << "- warning: " << value_text(w) << '\n';
+  for (const std::string& w : r.warnings) md << "- warning: " << w << '\n';
 }
 
 // A row of the key-point table: the figure, since support, the reference.
@@ -167,8 +171,7 @@ void point_row(std::ostream& md, const std::string& name, double total, const Re
      << ") |\n";
 }
 
-void key_points(std::ostream& md, const Scene& s, const json& j, const ReportExtras& x) {
-  const json& mon = j.value("monitors", json::object());
+void key_points(std::ostream& md, const Scene& s, const MonitorRecord& mon, const ReportExtras& x) {
   const ReferenceSettings& ref = s.references;
   md << "\n## Key points and chords (end of run)\n\nRadial displacement: towards the opening "
         "positive, from the in-situ state (the implicit deconfinement included) and since the "
@@ -181,73 +184,104 @@ void key_points(std::ostream& md, const Scene& s, const json& j, const ReportExt
   md << "\n\n| point | radial [mm] | since support [mm] | reference [mm] | difference [mm] |\n"
         "|---|---|---|---|---|\n";
   for (const char* p :
-       {"vault", "left_shoulder", "right_shoulder", "left_wall", "right_wall", "invert"})
-    if (mon.contains(p) && mon[p].contains("radial_mm"))
-      point_row(md, p, mon[p]["radial_mm"].get<double>(), x, ref);
-  for (const auto& [name, key] :
-       {std::pair<const char*, const char*>{"wall_chord", "wall_chord_convergence_mm"},
-        {"shoulder_chord", "shoulder_chord_convergence_mm"}})
-    if (mon.contains(key)) point_row(md, name, mon[key].get<double>(), x, ref);
-  if (mon.contains("vault_settlement_mm"))
-    md << "\nVault settlement (-uy): " << fixed(mon["vault_settlement_mm"].get<double>(), 2)
-       << " mm.\n";
+       {"vault", "left_shoulder", "right_shoulder", "left_wall", "right_wall", "invert"}) {
+    const auto k = mon.key_points.find(p);
+    // A scene monitor of the same name stands in the summary instead.
+    if (k != mon.key_points.end() && !mon.points.count(p))
+      point_row(md, p, k->second.radial_mm, x, ref);
+  }
+  if (!mon.chords) return;
+  point_row(md, "wall_chord", mon.chords->wall_chord_convergence_mm, x, ref);
+  point_row(md, "shoulder_chord", mon.chords->shoulder_chord_convergence_mm, x, ref);
+  md << "\nVault settlement (-uy): " << fixed(mon.chords->vault_settlement_mm, 2) << " mm.\n";
 }
 
-void bolts(std::ostream& md, const json& j) {
-  if (!j.contains("bolts") || !j["bolts"].is_object()) return;
-  const json& b = j["bolts"];
+std::string value_text(bool v) { return v ? "yes" : "no"; }
+
+void bolts(std::ostream& md, const std::optional<BoltRecord>& r) {
+  if (!r) return;
   md << "\n## Bolts and cables (end of run)\n\n| bolt | kind | max axial force [kN per bar] | "
         "at [m from the collar] | max steel stress [MPa] | yielded | broken |\n"
         "|---|---|---|---|---|---|---|\n";
-  for (const json& e : b.value("each", json::array()))
-    md << "| " << value_text(e.value("name", json())) << " | "
-       << value_text(e.value("kind", json())) << " | "
-       << value_text(e.value("max_axial_force_kN_per_bar", json())) << " | "
-       << value_text(e.value("station_m", json())) << " | "
-       << value_text(e.value("max_steel_stress_MPa", json())) << " | "
-       << value_text(e.value("yielded", json())) << " | " << value_text(e.value("broken", json()))
-       << " |\n";
-  md << "\nSteel crack elements yielding " << value_text(b.value("steel_cracks_yielding", json()))
-     << ", broken " << value_text(b.value("steel_cracks_broken", json()))
-     << "; grout crack elements broken " << value_text(b.value("grout_cracks_broken", json()))
-     << ".\n";
-}
-
-// The scalars of a summary object, one row each (a parallel key's figures
-// carry their unit in the key's name); nested objects one level down.
-void scalar_table(std::ostream& md, const json& o) {
-  md << "| figure | value |\n|---|---|\n";
-  for (const auto& [key, v] : o.items()) {
-    if (v.is_object()) {
-      for (const auto& [sub, w] : v.items())
-        if (!w.is_structured()) md << "| " << key << '.' << sub << " | " << value_text(w) << " |\n";
-    } else if (!v.is_array()) {
-      md << "| " << key << " | " << value_text(v) << " |\n";
-    }
+  for (const BoltFigures& b : r->each) {
+    md << "| " << b.name << " | " << b.kind << " | ";
+    if (b.peak)
+      md << value_text(b.peak->max_axial_force_kN_per_bar) << " | " << value_text(b.peak->station_m)
+         << " | " << value_text(b.peak->max_steel_stress_MPa) << " | "
+         << value_text(b.peak->yielded) << " | " << value_text(b.peak->broken) << " |\n";
+    else
+      md << "- | - | - | - | - |\n";
   }
+  md << "\nSteel crack elements yielding " << value_text(r->steel_cracks_yielding) << ", broken "
+     << value_text(r->steel_cracks_broken) << "; grout crack elements broken "
+     << value_text(r->grout_cracks_broken) << ".\n";
 }
 
-void lining(std::ostream& md, const json& j) {
-  if (!j.contains("lining") || !j["lining"].is_object()) return;
+// Rows of figures by name, in the order of their names (summary.json's).
+using Rows = std::map<std::string, std::string>;
+
+void scalar_table(std::ostream& md, const Rows& rows) {
+  md << "| figure | value |\n|---|---|\n";
+  for (const auto& [key, text] : rows) md << "| " << key << " | " << text << " |\n";
+}
+
+void capacity_rows(Rows& t, const LiningCapacityFigures& c) {
+  t["compressive_strength_Pa"] = value_text(c.compressive_strength_Pa);
+  t["tensile_strength_Pa"] = value_text(c.tensile_strength_Pa);
+  t["min_safety_factor"] = value_text(c.min_safety_factor);
+  t["min_safety_factor_angle_deg"] = value_text(c.min_safety_factor_angle_deg);
+  t["min_safety_factor_x_m"] = value_text(c.min_safety_factor_x_m);
+  t["min_safety_factor_y_m"] = value_text(c.min_safety_factor_y_m);
+  t["min_safety_factor_at_corner"] = value_text(c.min_safety_factor_at_corner);
+  t["segments_below_1"] = value_text(c.segments_below_1);
+}
+
+void force_rows(Rows& t, const LiningForceFigures& f) {
+  t["file"] = "lining.csv";
+  t["step"] = value_text(f.step);
+  t["segments"] = value_text(f.segments);
+  t["thickness_m"] = value_text(f.thickness_m);
+  t["corner_segments"] = value_text(f.corner_segments);
+  t["max_thrust_kN_per_m"] = value_text(f.max_thrust_kN_per_m);
+  t["max_thrust_angle_deg"] = value_text(f.max_thrust_angle_deg);
+  t["min_thrust_kN_per_m"] = value_text(f.min_thrust_kN_per_m);
+  t["min_thrust_angle_deg"] = value_text(f.min_thrust_angle_deg);
+  t["max_abs_moment_kNm_per_m"] = value_text(f.max_abs_moment_kNm_per_m);
+  t["max_abs_moment_angle_deg"] = value_text(f.max_abs_moment_angle_deg);
+  t["max_abs_shear_kN_per_m"] = value_text(f.max_abs_shear_kN_per_m);
+  t["max_abs_shear_angle_deg"] = value_text(f.max_abs_shear_angle_deg);
+  t["capacity"] = f.capacity;
+  if (f.check) capacity_rows(t, *f.check);
+}
+
+void lining(std::ostream& md, const LiningRecord& r) {
+  if (r.empty()) return;
   md << "\n## Lining (end of run)\n\n";
-  scalar_table(md, j["lining"]);
+  Rows t;
+  if (r.interface) {
+    t["interface_cracks"] = value_text(r.interface->first);
+    t["interface_broken"] = value_text(r.interface->second);
+  }
+  if (r.forces) force_rows(t, *r.forces);
+  scalar_table(md, t);
 }
 
-void broken_zone(std::ostream& md, const json& j) {
-  const json& b = j.value("broken", json::object());
-  md << "\n## Broken zone (end of run)\n\nBroken crack elements: mode I "
-     << value_text(b.value("mode_I", json())) << ", mode II "
-     << value_text(b.value("mode_II", json())) << ", mixed " << value_text(b.value("mixed", json()))
-     << ".\n\n";
-  if (!j.contains("broken_zone")) return;
-  json z = j["broken_zone"];
-  json rays = z.value("along_rays", json::object());
-  z.erase("along_rays");
-  scalar_table(md, z);
-  if (rays.empty()) return;
+void broken_zone(std::ostream& md, const fdem::BrokenCounts& b,
+                 const std::optional<BrokenZoneRecord>& z) {
+  md << "\n## Broken zone (end of run)\n\nBroken crack elements: mode I " << value_text(b.mode_I)
+     << ", mode II " << value_text(b.mode_II) << ", mixed " << value_text(b.mixed) << ".\n\n";
+  if (!z) return;
+  Rows t{{"broken_rock_cracks", value_text(z->broken_rock_cracks)},
+         {"depth_m", value_text(z->depth_m)},
+         {"fracture_zone_m", value_text(z->fracture_zone_m)},
+         {"clearance_m", value_text(z->clearance_m)},
+         {"capped", value_text(z->capped)}};
+  if (z->ray_half_width_m) t["ray_half_width_m"] = value_text(*z->ray_half_width_m);
+  scalar_table(md, t);
+  if (z->rays.empty()) return;
   md << "\n| ray from | broken depth [m] |\n|---|---|\n";
-  for (const auto& [name, r] : rays.items())
-    md << "| " << name << " | " << value_text(r.value("depth_m", json())) << " |\n";
+  for (const auto& [name, r] : z->rays)
+    md << "| " << name << " | " << value_text(r.depth_m) << " |\n";
 }
 
 void pictures(std::ostream& md, const ReportExtras& x) {
@@ -261,29 +295,28 @@ void pictures(std::ostream& md, const ReportExtras& x) {
 
 }  // namespace
 
-std::string report_markdown(const Scene& scene, const json& summary, const ReportExtras& extras) {
+std::string report_markdown(const Scene& scene, const RunRecord& record,
+                            const ReportExtras& extras) {
   std::ostringstream md;
   md << "# Run report: " << (scene.title.empty() ? scene.source : scene.title) << "\n\n"
-     << "Scene `" << scene.source << "`, rockfdem "
-     << value_text(summary.value("rockfdem_version", json())) << ", "
-     << value_text(summary.value("threads", json())) << " threads, state hash `"
-     << value_text(summary.value("state_hash", json())) << "`. Figures in full: summary.json, "
+     << "Scene `" << scene.source << "`, rockfdem " << version_string() << ", " << record.threads
+     << " threads, state hash `" << record.state.state_hash << "`. Figures in full: summary.json, "
      << "history.csv.\n\n";
-  inputs(md, scene, summary);
-  stages(md, summary);
-  status(md, summary);
-  key_points(md, scene, summary, extras);
-  bolts(md, summary);
-  lining(md, summary);
-  broken_zone(md, summary);
+  inputs(md, scene, record);
+  stages(md, record);
+  status(md, record);
+  key_points(md, scene, record.monitors, extras);
+  bolts(md, record.bolts);
+  lining(md, record.lining);
+  broken_zone(md, record.state.broken, record.broken_zone);
   pictures(md, extras);
   return md.str();
 }
 
-void write_report(const std::string& dir, const Scene& scene, const json& summary,
+void write_report(const std::string& dir, const Scene& scene, const RunRecord& record,
                   const ReportExtras& extras) {
   coupling::atomic_write_text(output_path(dir, "report.md"),
-                              report_markdown(scene, summary, extras));
+                              report_markdown(scene, record, extras));
 }
 
 }  // namespace rockfdem::workflows

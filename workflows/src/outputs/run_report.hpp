@@ -9,10 +9,11 @@
 #include <vector>
 
 #include "rockfdem/workflows/scene.hpp"
+#include "run/summary.hpp"
 
 namespace rockfdem::workflows {
 
-/// What the report needs besides the scene and the summary.
+/// What the report needs besides the scene and the run's record.
 struct ReportExtras {
   /// Key points (radial) and chords ("wall_chord", "shoulder_chord") [mm]
   /// measured from the support's installation; empty when the run has none.
@@ -23,11 +24,11 @@ struct ReportExtras {
 /// The report's Markdown text: inputs, stage table, status and equilibrium
 /// figures, key points and chords against the scene's [references], bolt
 /// and lining maxima, the broken zone, the pictures.
-std::string report_markdown(const Scene& scene, const nlohmann::json& summary,
+std::string report_markdown(const Scene& scene, const RunRecord& record,
                             const ReportExtras& extras);
 
 /// Writes report.md into `dir` atomically.
-void write_report(const std::string& dir, const Scene& scene, const nlohmann::json& summary,
+void write_report(const std::string& dir, const Scene& scene, const RunRecord& record,
                   const ReportExtras& extras);
 
 }  // namespace rockfdem::workflows

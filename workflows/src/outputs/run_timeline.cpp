@@ -5,13 +5,12 @@
 
 namespace rockfdem::workflows {
 
-std::vector<StageSpan> stage_spans(const nlohmann::json& stages, double t_handoff) {
+std::vector<StageSpan> stage_spans(const std::vector<StageRecord>& stages, double t_handoff) {
   std::vector<StageSpan> spans;
   double t = t_handoff;
-  for (const nlohmann::json& s : stages) {
-    const double dt = s.value("simulated_time", 0.0);
-    spans.push_back({s.value("kind", std::string("?")), t, t + dt, &s});
-    t += dt;
+  for (const StageRecord& s : stages) {
+    spans.push_back({s.kind, t, t + s.simulated_time, &s});
+    t += s.simulated_time;
   }
   return spans;
 }
@@ -28,8 +27,7 @@ std::vector<plots::PlotMarker> stage_markers(const std::vector<StageSpan>& spans
   };
   for (const StageSpan& s : spans) {
     add(s.start, s.kind);
-    const nlohmann::json changes =
-        s.report ? s.report->value("changes", nlohmann::json()) : nlohmann::json();
+    const nlohmann::json changes = s.report ? s.report->changes : nlohmann::json();
     if (s.kind == "grout" && changes.is_object() && changes.value("triggered", false))
       add(s.end, "grouting: " + std::to_string(changes.value("rejoined", 0L)) +
                      " broken cracks re-joined");

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "rockfdem/plots/plot.hpp"
+#include "run/run_figures.hpp"
 
 namespace rockfdem::workflows {
 
@@ -15,14 +16,14 @@ namespace rockfdem::workflows {
 struct StageSpan {
   std::string kind;
   double start = 0, end = 0;
-  const nlohmann::json* report = nullptr;  ///< its entry of summary fdem.stages
+  const StageRecord* report = nullptr;  ///< its entry of the record's stages
 };
 
-/// The stages of `stages` (summary "fdem"."stages": kind, simulated_time per
-/// stage, in order) laid end to end from `t_handoff`, the time at the end of
+/// The stages of `stages` (the record's stage reports: kind, simulated_time
+/// per stage, in order) laid end to end from `t_handoff`, the time at the end of
 /// the hand-off step (history.csv's first row). The spans point into
 /// `stages`, which must outlive them.
-std::vector<StageSpan> stage_spans(const nlohmann::json& stages, double t_handoff);
+std::vector<StageSpan> stage_spans(const std::vector<StageRecord>& stages, double t_handoff);
 
 /// One marker per stage start, stages starting together sharing one
 /// ("lining, bolts, remove_core"); a grout stage that grouted adds one at

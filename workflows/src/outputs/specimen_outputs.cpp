@@ -37,20 +37,21 @@ SpecimenOutputs::SpecimenOutputs(const Scene& scene, const RunContext& ctx, RunR
 
 void SpecimenOutputs::begin(const mesh::Mesh& m) { floor_ = energy_floor(scene_, m); }
 
-void SpecimenOutputs::record_step(const fdem::Engine& e, const mesh::Mesh& m,
-                                  const std::vector<Monitor>&, PhaseTimer& timer,
-                                  const std::string& stage, double) {
+void SpecimenOutputs::record_rows(const fdem::Engine& e, const mesh::Mesh&, const std::string&,
+                                  double) {
   const PlatenReading r = load_.read(e);
   const fdem::BrokenCounts b = e.broken_counts();
   std::vector<double> row{
       double(e.step_count()), e.time(),         r.strain,          r.stress,       r.force,
       e.kinetic_energy(),     double(b.mode_I), double(b.mode_II), double(b.mixed)};
-  const fdem::EnergyBalance energy = e.energy_balance();
-  for (double v : energy_row(energy)) row.push_back(v);
+  for (double v : energy_row(e.energy_balance())) row.push_back(v);
   history_.add(row);
-  check_energy(energy, e.step_count(), floor_);  // before the frame: keep the last good one
+}
+
+void SpecimenOutputs::record_frame(const fdem::Engine& e, const mesh::Mesh& m,
+                                   const std::string& stage, PhaseTimer& timer) {
   if (scene_.output.vtk) write_frame(e, m, stage);
-  last_good_.take(e, energy);
+  last_good_.take(e, e.energy_balance());
   timer.stamp("output");
 }
 
@@ -90,7 +91,8 @@ void SpecimenOutputs::finish(const fdem::Engine& e, PhaseTimer& timer) {
   summary_.status = "completed";
   report_engine(e, timer, summary_);
   warn_if_unbalanced(e, floor_, ctx_.quiet, summary_);
-  const nlohmann::json& peak = summary_.figures()["specimen"] = load_.report();
+  const nlohmann::json peak = load_.report();
+  summary_.add_figures("specimen", peak);
   summary_.skipped.push_back("insitu: a specimen starts stress-free");
   write_summary(timer);
   if (!ctx_.quiet)
@@ -111,7 +113,7 @@ void SpecimenOutputs::report_failure(const fdem::Engine& e, PhaseTimer& timer,
 void SpecimenOutputs::report_interrupted(const fdem::Engine& e, PhaseTimer& timer,
                                          const std::string& why) {
   report_engine(e, timer, summary_);
-  summary_.figures()["specimen"] = load_.report();
+  summary_.add_figures("specimen", load_.report());
   summary_.status = "interrupted";
   summary_.failure = why;
   write_summary(timer);

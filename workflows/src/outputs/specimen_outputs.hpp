@@ -27,8 +27,10 @@ class SpecimenOutputs : public StepOutputs {
   /// Starts history.csv (nothing is written before the first row);
   /// `m`'s area sets the energy check's floor.
   void begin(const mesh::Mesh& m);
-  void record_step(const fdem::Engine& e, const mesh::Mesh& m, const std::vector<Monitor>& monitors,
-                   PhaseTimer& timer, const std::string& stage, double support_ratio) override;
+  void record_rows(const fdem::Engine& e, const mesh::Mesh& m, const std::string& stage,
+                   double support_ratio) override;
+  void record_frame(const fdem::Engine& e, const mesh::Mesh& m, const std::string& stage,
+                    PhaseTimer& timer) override;
   /// What a restart needs: history rows, frames, the peak and stop.
   nlohmann::json state() const;
   /// Refuses (InputError) a state() whose rows do not fit history.csv,

@@ -1,7 +1,7 @@
-// What the stage loop (StageRunner) tells a run's outputs: one row (and
-// frame) per output step, and the support's installation. A tunnel's
-// outputs (RunOutputs) and a specimen's (SpecimenOutputs) both observe the
-// loop through this one interface.
+// What the stage loop (StageRunner) tells a run's outputs: per output
+// step a row, then (after the energy check) a frame; and the support's
+// installation. A tunnel's outputs (RunOutputs) and a specimen's
+// (SpecimenOutputs) both observe the loop through this one interface.
 #pragma once
 
 #include <string>
@@ -18,11 +18,15 @@ namespace rockfdem::workflows {
 class StepOutputs {
  public:
   virtual ~StepOutputs() = default;
-  /// One history row and (if enabled) one ParaView frame of `stage`;
-  /// `support_ratio`: the core's stiffness factor then (0 once removed).
-  virtual void record_step(const fdem::Engine& e, const mesh::Mesh& m,
-                           const std::vector<Monitor>& monitors, PhaseTimer& timer,
-                           const std::string& stage, double support_ratio) = 0;
+  /// An output step's history row of `stage`, before the run's checks of
+  /// the step (so that a failing step has its row); `support_ratio`: the
+  /// core's stiffness factor then (0 once removed).
+  virtual void record_rows(const fdem::Engine& e, const mesh::Mesh& m, const std::string& stage,
+                           double support_ratio) = 0;
+  /// The output step once the run's checks passed: the ParaView frame (if
+  /// enabled) and the last good state.
+  virtual void record_frame(const fdem::Engine& e, const mesh::Mesh& m, const std::string& stage,
+                            PhaseTimer& timer) = 0;
   /// Whether the lining ring is installed as lining (tunnels).
   virtual void set_lining_installed(bool) {}
   /// A `lining` or `bolts` stage installed its support (tunnels).

@@ -4,7 +4,7 @@
 // shows, and summary.json describes that one, not the wreck.
 #pragma once
 
-#include <nlohmann/json.hpp>
+#include <optional>
 #include <string>
 
 #include "rockfdem/fdem/engine.hpp"
@@ -16,10 +16,9 @@ namespace rockfdem::workflows {
 class LastGoodState {
  public:
   /// Notes the engine's state once it passed the energy check (`energy`,
-  /// its balance) and was written; `monitors`: summary.json's monitor
-  /// entries for it (none for specimens).
-  void take(const fdem::Engine& e, const fdem::EnergyBalance& energy,
-            nlohmann::json monitors = nlohmann::json::object());
+  /// its balance) and was written; `monitors`: the record's monitor
+  /// figures for it (none for specimens).
+  void take(const fdem::Engine& e, const fdem::EnergyBalance& energy, MonitorRecord monitors = {});
   /// summary.json of a run a NumericalError stopped: the model's counts
   /// and the timings so far, this state's steps, dt, time, broken counts,
   /// energy, monitors and hash, status "failed" and the diagnostic.
@@ -27,7 +26,8 @@ class LastGoodState {
                       RunRecord& summary) const;
 
  private:
-  nlohmann::json figures_;  ///< summary keys of the last good state; null before the first
+  std::optional<EngineState> state_;  ///< the last good state; none before the first
+  MonitorRecord monitors_;
 };
 
 }  // namespace rockfdem::workflows

@@ -105,6 +105,13 @@ fdem::BoltPlan planned_bolts(const Scene& scene, fdem::ModelInput& in) {
   }
 }
 
+// The record's "fdem" of a run the stages left early: their reports alone.
+FdemRecord stages_only(const StageRunner& stages) {
+  FdemRecord f;
+  f.stages = stages.report();
+  return f;
+}
+
 }  // namespace
 
 Run::Run(const Scene& scene, const RunContext& ctx)
@@ -240,8 +247,7 @@ void Run::begin_stages() {
     }
     summary_.restarted_from = CheckpointMark{ctx_.restart, engine().step_count()};
   } else {
-    reporting_failure(
-        [&] { out_.record_step(engine(), mesh_, monitors_, timer_, "handoff", handoff().alpha); });
+    reporting_failure([&] { stages_->record_output("handoff", timer_); });
   }
   stages_->set_checkpoint(
       ctx_.checkpoint_every >= 0 ? ctx_.checkpoint_every : scene_.output.checkpoint_every,
@@ -253,18 +259,18 @@ void Run::run_stages() {
     stages_->run_all(timer_);
   } catch (const Interrupted&) {
     summary_.status = "interrupted";
-    summary_.figures()["fdem"] = {{"stages", stages_->report()}};
+    summary_.fdem = stages_only(*stages_);
     out_.finish(engine(), mesh_, monitors_, timer_, bolts_);
     throw;
   } catch (const NumericalError& e) {
     // The frames and history rows written so far are the last good output.
-    summary_.figures()["fdem"] = {{"stages", stages_->report()}};
+    summary_.fdem = stages_only(*stages_);
     const std::string why = with_likely_cause(scene_, e.what());
     out_.report_failure(engine(), timer_, why);
     throw NumericalError(why);
   } catch (const InputError& e) {
     const std::string why = stage_input_error(e);
-    summary_.figures()["fdem"] = {{"stages", stages_->report()}};
+    summary_.fdem = stages_only(*stages_);
     out_.report_failure(engine(), timer_, why);
     throw InputError(why);
   }
@@ -280,8 +286,9 @@ void Run::compare_with_references() {
   if (!has_lining_ring(scene_)) {
     const insitu::InsituField reference =
         keeping_threads(ctx_, [&] { return insitu::solve_insitu(mesh_, open).back(); });
-    summary_.figures()["comparison"] = compare_with_continuum(
-        scene_, mesh_, engine(), reference, output_path(ctx_.output_dir, "fdem_vs_continuum.csv"));
+    summary_.add_figures("comparison", compare_with_continuum(
+                                           scene_, mesh_, engine(), reference,
+                                           output_path(ctx_.output_dir, "fdem_vs_continuum.csv")));
   }
   compare_with_continuum_counterpart(scene_, ctx_, mesh_, engine(), handoff(), monitors_, summary_);
   timer_.stamp("insitu");
@@ -296,14 +303,13 @@ void Run::finish() {
     summary_.warnings.push_back(verdict.status + ": " + verdict.message);
     std::cerr << "warning: " << verdict.status << ": " << verdict.message << '\n';
   }
-  summary_.figures()["damping"] = {{"local", stage_damping(scene_).local},
-                                   {"mass_proportional", scene_.engine.mass_damping},
-                                   {"kinetic", scene_.engine.kinetic_damping},
-                                   {"local_given", scene_.engine.local_damping >= 0}};
-  summary_.figures()["fdem"] = {{"unbalanced_ratio_at_start", start_ratio_},
-                                {"unbalanced_ratio_at_end", engine().unbalanced_force_ratio()},
-                                {"handoff_alpha", handoff().alpha},
-                                {"stages", stages_->report()}};
+  summary_.damping =
+      DampingFigures{stage_damping(scene_).local, scene_.engine.mass_damping,
+                     scene_.engine.kinetic_damping, scene_.engine.local_damping >= 0};
+  summary_.fdem = stages_only(*stages_);
+  summary_.fdem->unbalanced_ratio_at_start = start_ratio_;
+  summary_.fdem->unbalanced_ratio_at_end = engine().unbalanced_force_ratio();
+  summary_.fdem->handoff_alpha = handoff().alpha;
   out_.finish(engine(), mesh_, monitors_, timer_, bolts_);
   if (!ctx_.quiet)
     std::cout << "status: " << verdict.status

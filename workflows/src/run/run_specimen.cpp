@@ -106,9 +106,7 @@ class SpecimenRun {
       }
       summary_.restarted_from = CheckpointMark{ctx_.restart, engine_->step_count()};
     } else {
-      reporting_failure([&] {
-        out_.record_step(*engine_, mesh_, no_key_points_, timer_, scene_.stages.front().kind, 0);
-      });
+      reporting_failure([&] { stages_->record_output(scene_.stages.front().kind, timer_); });
     }
     stages_->set_checkpoint(
         ctx_.checkpoint_every >= 0 ? ctx_.checkpoint_every : scene_.output.checkpoint_every,

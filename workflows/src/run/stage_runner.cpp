@@ -4,10 +4,12 @@
 #include <cmath>
 #include <limits>
 
+#include "outputs/engine_report.hpp"
 #include "rockfdem/error.hpp"
 #include "run/interrupt.hpp"
 #include "run/output_dir.hpp"
 #include "run/progress.hpp"
+#include "run/summary.hpp"
 #include "stages/registry.hpp"
 
 namespace rockfdem::workflows {
@@ -29,7 +31,8 @@ StageRunner::StageRunner(fdem::Engine& engine, const mesh::Mesh& m,
       engine_(engine),
       out_(out),
       scene_(scene),
-      monitors_(monitors) {
+      monitors_(monitors),
+      energy_floor_(energy_floor(scene, m)) {
   out_.set_lining_installed(model_.lining_installed);
 }
 
@@ -173,8 +176,11 @@ void StageRunner::interrupted(const StageSpec& stage) {
                              "'; outputs and a checkpoint are written");
 }
 
-void StageRunner::record_step(const StageSpec& stage) {
-  out_.record_step(engine_, model_.mesh, monitors_, *timer_, stage.kind, model_.support_ratio());
+void StageRunner::record_output(const std::string& stage, PhaseTimer& timer) {
+  out_.record_rows(engine_, model_.mesh, stage, model_.support_ratio());
+  // Before the frame: the last frame stays the last good state.
+  check_energy(engine_.energy_balance(), engine_.step_count(), energy_floor_);
+  out_.record_frame(engine_, model_.mesh, stage, timer);
 }
 
 bool StageRunner::criterion_met(const StageSpec& stage, bool tested, bool reached) {
@@ -248,29 +254,26 @@ void StageRunner::run(const StageSpec& stage) {
   report_.push_back(report_entry(stage, done, converged));
 }
 
-nlohmann::json StageRunner::report_entry(const StageSpec& stage, const nlohmann::json& changes,
-                                         bool converged) const {
-  const long steps_taken = engine_.step_count() - cursor_.first;
-  return {
-      {"kind", stage.kind},
-      {"changes", changes},
-      {"steps", steps_taken},
-      {"simulated_time", engine_.time() - cursor_.t0},
-      {"dt", steps_taken > 0 ? nlohmann::json(stage_dt_) : nlohmann::json()},
-      {"unbalanced_ratio", engine_.unbalanced_force_ratio()},
-      {"settle", last_settle_ >= 0 ? nlohmann::json(last_settle_) : nlohmann::json()},
-      // A stage that took no step has no equilibrium to report.
-      {"converged", steps_taken > 0 ? nlohmann::json(converged) : nlohmann::json()},
-      {"max_steps", stage.max_steps},
-      {"criteria",
-       {{"ratio", stage.ratio},
-        {"settle", stage.settle},
-        {"hold", stage.hold},
-        {"unstable_fraction", stage.unstable_fraction}}},
-      {"moving_most", last_settle_ >= 0 ? nlohmann::json{{"key_point", moving_most_},
-                                                         {"mm_per_1000_steps", 1000 * last_rate_}}
-                                        : nlohmann::json()},
-      {"support_pressure_ratio", model_.support_ratio()}};
+StageRecord StageRunner::report_entry(const StageSpec& stage, const nlohmann::json& changes,
+                                      bool converged) const {
+  StageRecord r;
+  r.kind = stage.kind;
+  r.changes = changes;
+  r.steps = engine_.step_count() - cursor_.first;
+  r.simulated_time = engine_.time() - cursor_.t0;
+  if (r.steps > 0) r.dt = stage_dt_;
+  r.unbalanced_ratio = engine_.unbalanced_force_ratio();
+  if (last_settle_ >= 0) r.settle = last_settle_;
+  // A stage that took no step has no equilibrium to report.
+  if (r.steps > 0) r.converged = converged;
+  r.max_steps = stage.max_steps;
+  r.ratio = stage.ratio;
+  r.settle_limit = stage.settle;
+  r.hold = stage.hold;
+  r.unstable_fraction = stage.unstable_fraction;
+  if (last_settle_ >= 0) r.moving_most = MovingMost{moving_most_, 1000 * last_rate_};
+  r.support_pressure_ratio = model_.support_ratio();
+  return r;
 }
 
 void StageRunner::run_all(PhaseTimer& timer) {
@@ -288,27 +291,23 @@ RunVerdict StageRunner::verdict() const {
   if (!unstable_.message.empty()) return unstable_;
   // The last stage that stepped decides: its end is the state reported.
   for (auto it = report_.rbegin(); it != report_.rend(); ++it) {
-    const nlohmann::json& r = *it;
-    if (r["steps"].get<long>() == 0) continue;
-    if (r["converged"].is_boolean() && r["converged"].get<bool>()) return {};
-    const std::string kind = r["kind"].get<std::string>();
+    const StageRecord& r = *it;
+    if (r.steps == 0) continue;
+    if (r.converged && *r.converged) return {};
     char msg[600];
-    const std::string other = stage_of(kind).not_at_equilibrium();
+    const std::string other = stage_of(r.kind).not_at_equilibrium();
     if (!other.empty()) {
-      std::snprintf(msg, sizeof msg, "the last stage that stepped, '%s', %s", kind.c_str(),
+      std::snprintf(msg, sizeof msg, "the last stage that stepped, '%s', %s", r.kind.c_str(),
                     other.c_str());
     } else {
-      const nlohmann::json& m = r["moving_most"];
+      const std::optional<MovingMost>& m = r.moving_most;
       std::snprintf(msg, sizeof msg,
                     "stage '%s' stopped after %ld steps (cap %ld) without equilibrium: "
                     "unbalanced ratio %.3g (limit %g), settle %.3g (limit %g), key point "
                     "moving most: %s, %.3g mm per 1000 steps",
-                    kind.c_str(), r["steps"].get<long>(), r["max_steps"].get<long>(),
-                    r["unbalanced_ratio"].get<double>(), r["criteria"]["ratio"].get<double>(),
-                    r["settle"].is_number() ? r["settle"].get<double>() : -1.0,
-                    r["criteria"]["settle"].get<double>(),
-                    m.is_object() ? m["key_point"].get<std::string>().c_str() : "none",
-                    m.is_object() ? m["mm_per_1000_steps"].get<double>() : 0.0);
+                    r.kind.c_str(), r.steps, r.max_steps, r.unbalanced_ratio, r.ratio,
+                    r.settle ? *r.settle : -1.0, r.settle_limit, m ? m->key_point.c_str() : "none",
+                    m ? m->mm_per_1000_steps : 0.0);
     }
     return {"not_at_equilibrium", msg};
   }
@@ -334,7 +333,7 @@ nlohmann::json StageRunner::state() const {
           {"alpha", model_.alpha},
           {"core_present", model_.core_present},
           {"lining_installed", model_.lining_installed},
-          {"report", report_},
+          {"report", stage_records_json(report_)},
           {"last_checkpoint", engine_.step_count()}};
 }
 
@@ -359,7 +358,7 @@ void StageRunner::restore(const nlohmann::json& s) {
   model_.core_present = s.at("core_present").get<bool>();
   model_.lining_installed = s.at("lining_installed").get<bool>();
   out_.set_lining_installed(model_.lining_installed);
-  report_ = s.at("report");
+  report_ = stage_records_from_json(s.at("report"));
   last_checkpoint_ = s.at("last_checkpoint").get<long>();
 }
 

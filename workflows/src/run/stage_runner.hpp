@@ -25,6 +25,7 @@
 #include "rockfdem/workflows/scene.hpp"
 #include "run/phase_timer.hpp"
 #include "run/run_context.hpp"
+#include "run/run_figures.hpp"
 #include "stages/stage.hpp"
 
 namespace rockfdem::workflows {
@@ -52,7 +53,7 @@ class StageRunner {
   /// a checkpoint and a last history row) when SIGINT or SIGTERM arrives.
   void run_all(PhaseTimer& timer);
   /// One entry per stage run: kind, steps, simulated time, dt, final ratio, converged.
-  const nlohmann::json& report() const { return report_; }
+  const std::vector<StageRecord>& report() const { return report_; }
   bool core_present() const { return model_.core_present; }
   /// The run's status from the stages run so far.
   RunVerdict verdict() const;
@@ -69,6 +70,9 @@ class StageRunner {
   bool step_until(const StageSpec& stage, const StopTest& stop = {});
   /// Whether an unstable opening ended the stages.
   bool stopped() const { return stopped_; }
+  /// One output step of `stage` (a kind, or "handoff"): history row, the
+  /// energy balance's check, then the frame (RunOutputs).
+  void record_output(const std::string& stage, PhaseTimer& timer);
   /// Simulated time since the stage began [s].
   double stage_time() const { return model_.engine.time() - cursor_.t0; }
 
@@ -90,8 +94,8 @@ class StageRunner {
   void run(const StageSpec& stage);
   /// Writes a checkpoint and a last history row, then throws Interrupted.
   [[noreturn]] void interrupted(const StageSpec& stage);
-  /// One history row (and frame) of the stage.
-  void record_step(const StageSpec& stage);
+  /// One output step of the stage (record_output).
+  void record_step(const StageSpec& stage) { record_output(stage.kind, *timer_); }
   /// Whether the stage's stop criterion holds at this output: `reached`
   /// with a stop test, else ratio and settle held `hold` times.
   bool criterion_met(const StageSpec& stage, bool tested, bool reached);
@@ -107,8 +111,8 @@ class StageRunner {
   /// holds after a step (*reached set).
   bool advance(long n, const StopTest& stop, bool* reached);
   /// The stage's report entry (what report() lists).
-  nlohmann::json report_entry(const StageSpec& stage, const nlohmann::json& changes,
-                              bool converged) const;
+  StageRecord report_entry(const StageSpec& stage, const nlohmann::json& changes,
+                           bool converged) const;
 
   StageModel model_;
   fdem::Engine& engine_;  ///< model_.engine
@@ -126,7 +130,8 @@ class StageRunner {
   double stage_dt_ = 0;       ///< the dt of the stage's steps (one limit per stage)
   long last_checkpoint_ = 0;  ///< step of the last checkpoint (or of the start)
   std::function<void()> save_checkpoint_;
-  nlohmann::json report_ = nlohmann::json::array();
+  std::vector<StageRecord> report_;
+  double energy_floor_ = 0;  ///< energy_floor of the model
 };
 
 }  // namespace rockfdem::workflows

@@ -33,34 +33,334 @@ nlohmann::json mark_json(const char* path_key, const CheckpointMark& m) {
   return {{path_key, m.path}, {"step", m.step}};
 }
 
+template <class T>
+nlohmann::json or_null(const std::optional<T>& v) {
+  return v ? nlohmann::json(*v) : nlohmann::json();
+}
+
+nlohmann::json stage_json(const StageRecord& s) {
+  return {{"kind", s.kind},
+          {"changes", s.changes},
+          {"steps", s.steps},
+          {"simulated_time", s.simulated_time},
+          {"dt", or_null(s.dt)},
+          {"unbalanced_ratio", s.unbalanced_ratio},
+          {"settle", or_null(s.settle)},
+          {"converged", or_null(s.converged)},
+          {"max_steps", s.max_steps},
+          {"criteria",
+           {{"ratio", s.ratio},
+            {"settle", s.settle_limit},
+            {"hold", s.hold},
+            {"unstable_fraction", s.unstable_fraction}}},
+          {"moving_most",
+           s.moving_most ? nlohmann::json{{"key_point", s.moving_most->key_point},
+                                          {"mm_per_1000_steps", s.moving_most->mm_per_1000_steps}}
+                         : nlohmann::json()},
+          {"support_pressure_ratio", s.support_pressure_ratio}};
+}
+
+template <class T>
+std::optional<T> optional_at(const nlohmann::json& j, const char* key) {
+  if (!j.contains(key) || j.at(key).is_null()) return std::nullopt;
+  return j.at(key).get<T>();
+}
+
+StageRecord stage_from_json(const nlohmann::json& j) {
+  StageRecord s;
+  s.kind = j.at("kind").get<std::string>();
+  s.changes = j.at("changes");
+  s.steps = j.at("steps").get<long>();
+  s.simulated_time = j.at("simulated_time").get<double>();
+  s.dt = optional_at<double>(j, "dt");
+  s.unbalanced_ratio = j.at("unbalanced_ratio").get<double>();
+  s.settle = optional_at<double>(j, "settle");
+  s.converged = optional_at<bool>(j, "converged");
+  s.max_steps = j.at("max_steps").get<long>();
+  const nlohmann::json& c = j.at("criteria");
+  s.ratio = c.at("ratio").get<double>();
+  s.settle_limit = c.at("settle").get<double>();
+  s.hold = c.at("hold").get<int>();
+  s.unstable_fraction = c.at("unstable_fraction").get<double>();
+  const nlohmann::json& m = j.value("moving_most", nlohmann::json());
+  if (m.is_object())
+    s.moving_most =
+        MovingMost{m.at("key_point").get<std::string>(), m.at("mm_per_1000_steps").get<double>()};
+  s.support_pressure_ratio = j.at("support_pressure_ratio").get<double>();
+  return s;
+}
+
+nlohmann::json fdem_json(const FdemRecord& f) {
+  nlohmann::json j = nlohmann::json::object();
+  if (f.unbalanced_ratio_at_start) j["unbalanced_ratio_at_start"] = *f.unbalanced_ratio_at_start;
+  if (f.unbalanced_ratio_at_end) j["unbalanced_ratio_at_end"] = *f.unbalanced_ratio_at_end;
+  if (f.handoff_alpha) j["handoff_alpha"] = *f.handoff_alpha;
+  if (f.stages) j["stages"] = stage_records_json(*f.stages);
+  if (f.handoff_dt)
+    j["handoff_step"] = {{"steps", 1}, {"dt", *f.handoff_dt}, {"simulated_time", *f.handoff_dt}};
+  return j;
+}
+
+nlohmann::json energy_json(const fdem::EnergyBalance& en) {
+  return {{"external_work", en.external_work},
+          {"kinetic", en.kinetic},
+          {"strain", en.strain},
+          {"crack_elastic", en.crack_elastic},
+          {"contact_elastic", en.contact_elastic},
+          {"initial_stored", en.initial_stored},
+          {"damping", en.damping},
+          {"fracture", en.fracture},
+          {"friction", en.friction},
+          {"absorbing", en.absorbing},
+          {"softening", en.softening},
+          {"removed_by_stages", en.removed},
+          {"residual", en.residual()},
+          {"relative_imbalance", en.imbalance()}};
+}
+
+// steps, dt, simulated_time, broken, energy, state_hash.
+void add_state(nlohmann::json& j, const EngineState& s) {
+  j["steps"] = s.steps;
+  j["dt"] = s.dt;
+  j["simulated_time"] = s.simulated_time;
+  j["broken"] = {
+      {"mode_I", s.broken.mode_I}, {"mode_II", s.broken.mode_II}, {"mixed", s.broken.mixed}};
+  if (s.energy) j["energy"] = energy_json(*s.energy);
+  j["state_hash"] = s.state_hash;
+}
+
+nlohmann::json key_point_json(const KeyPointFigures& k) {
+  nlohmann::json j = {{"ux_mm", k.ux_mm},
+                      {"uy_mm", k.uy_mm},
+                      {"u_mm", k.u_mm},
+                      {"radial_mm", k.radial_mm},
+                      {"x", k.x},
+                      {"y", k.y},
+                      {"inward", {k.inward_x, k.inward_y}}};
+  if (k.radial_since_support_mm) j["radial_since_support_mm"] = *k.radial_since_support_mm;
+  return j;
+}
+
+// Key points, chords, then the scene's monitors (a name of both: the monitor's).
+nlohmann::json monitors_json(const MonitorRecord& m) {
+  nlohmann::json j = nlohmann::json::object();
+  for (const auto& [name, k] : m.key_points) j[name] = key_point_json(k);
+  if (m.chords) {
+    j["vault_settlement_mm"] = m.chords->vault_settlement_mm;
+    j["wall_chord_convergence_mm"] = m.chords->wall_chord_convergence_mm;
+    j["shoulder_chord_convergence_mm"] = m.chords->shoulder_chord_convergence_mm;
+  }
+  for (const auto& [name, p] : m.points)
+    j[name] = {{"ux_mm", p.ux_mm}, {"uy_mm", p.uy_mm},       {"u_mm", p.u_mm}, {"x", p.x},
+               {"y", p.y},         {"triangle", p.triangle}, {"from", p.from}};
+  return j;
+}
+
+nlohmann::json ground_reaction_json(const std::vector<GroundReactionPoint>& curve) {
+  nlohmann::json j = nlohmann::json::array();
+  for (const GroundReactionPoint& p : curve)
+    j.push_back({{"support_pressure_ratio", p.support_pressure_ratio},
+                 {"vault_settlement_mm", p.vault_settlement_mm},
+                 {"point", p.point}});
+  return j;
+}
+
+nlohmann::json bolt_json(const BoltFigures& b) {
+  nlohmann::json j = {{"name", b.name},
+                      {"kind", b.kind},
+                      {"head", b.head},
+                      {"end", b.end},
+                      {"installed", b.installed},
+                      {"steel_cracks_yielding", b.steel_cracks_yielding},
+                      {"steel_cracks_broken", b.steel_cracks_broken},
+                      {"grout_cracks_broken", b.grout_cracks_broken}};
+  if (!b.peak) return j;
+  j["file"] = b.peak->file;
+  j["max_axial_force_kN_per_bar"] = b.peak->max_axial_force_kN_per_bar;
+  j["max_steel_stress_MPa"] = b.peak->max_steel_stress_MPa;
+  j["station_m"] = b.peak->station_m;
+  j["yielded"] = b.peak->yielded;
+  j["broken"] = b.peak->broken;
+  return j;
+}
+
+nlohmann::json bolts_json(const BoltRecord& r) {
+  nlohmann::json each = nlohmann::json::array();
+  for (const BoltFigures& b : r.each) each.push_back(bolt_json(b));
+  return {{"count", r.count},
+          {"steel_cracks_yielding", r.steel_cracks_yielding},
+          {"steel_cracks_broken", r.steel_cracks_broken},
+          {"grout_cracks_broken", r.grout_cracks_broken},
+          {"each", each}};
+}
+
+void add_capacity(nlohmann::json& j, const LiningCapacityFigures& c) {
+  j["compressive_strength_Pa"] = c.compressive_strength_Pa;
+  j["tensile_strength_Pa"] = c.tensile_strength_Pa;
+  j["min_safety_factor"] = or_null(c.min_safety_factor);
+  j["min_safety_factor_angle_deg"] = c.min_safety_factor_angle_deg;
+  j["min_safety_factor_x_m"] = c.min_safety_factor_x_m;
+  j["min_safety_factor_y_m"] = c.min_safety_factor_y_m;
+  j["min_safety_factor_at_corner"] = c.min_safety_factor_at_corner;
+  j["segments_below_1"] = c.segments_below_1;
+}
+
+void add_lining_forces(nlohmann::json& j, const LiningForceFigures& f) {
+  j["file"] = "lining.csv";
+  j["step"] = f.step;
+  j["segments"] = f.segments;
+  j["thickness_m"] = f.thickness_m;
+  j["corner_segments"] = f.corner_segments;
+  j["max_thrust_kN_per_m"] = f.max_thrust_kN_per_m;
+  j["max_thrust_angle_deg"] = f.max_thrust_angle_deg;
+  j["min_thrust_kN_per_m"] = f.min_thrust_kN_per_m;
+  j["min_thrust_angle_deg"] = f.min_thrust_angle_deg;
+  j["max_abs_moment_kNm_per_m"] = f.max_abs_moment_kNm_per_m;
+  j["max_abs_moment_angle_deg"] = f.max_abs_moment_angle_deg;
+  j["max_abs_shear_kN_per_m"] = f.max_abs_shear_kN_per_m;
+  j["max_abs_shear_angle_deg"] = f.max_abs_shear_angle_deg;
+  j["capacity"] = f.capacity;
+  if (f.check) add_capacity(j, *f.check);
+}
+
+nlohmann::json lining_json(const LiningRecord& r) {
+  nlohmann::json j = nlohmann::json::object();
+  if (r.interface)
+    j = {{"interface_cracks", r.interface->first}, {"interface_broken", r.interface->second}};
+  if (r.forces) add_lining_forces(j, *r.forces);
+  return j;
+}
+
+nlohmann::json broken_zone_json(const BrokenZoneRecord& z) {
+  nlohmann::json j = {{"broken_rock_cracks", z.broken_rock_cracks},
+                      {"depth_m", z.depth_m},
+                      {"fracture_zone_m", z.fracture_zone_m},
+                      {"clearance_m", or_null(z.clearance_m)},
+                      {"capped", z.capped}};
+  if (!z.ray_half_width_m) return j;
+  nlohmann::json rays = nlohmann::json::object();
+  for (const auto& [name, r] : z.rays)
+    rays[name] = {{"depth_m", r.depth_m}, {"origin", r.origin}, {"direction", r.direction}};
+  j["along_rays"] = rays;
+  j["ray_half_width_m"] = *z.ray_half_width_m;
+  return j;
+}
+
+nlohmann::json mass_scaling_json(const fdem::MassScalingReport& ms) {
+  nlohmann::json j = {{"enabled", ms.enabled}};
+  if (ms.enabled)
+    j.update({{"target_dt", ms.target_dt},
+              {"max_factor", ms.max_factor},
+              {"mass_ratio", ms.mass_ratio},
+              {"scaled_triangles", ms.scaled_triangles},
+              {"note",
+               "quasi-static: densities scaled, statics unchanged; "
+               "simulated_time is pseudo-time"}});
+  return j;
+}
+
+void add_engine(nlohmann::json& j, const EngineFigures& f) {
+  const fdem::PhaseTimes& p = f.modules;
+  j["fdem_modules"] = {
+      {"triangles", p.triangles}, {"cracks", p.cracks}, {"nodes", p.nodes}, {"contact", p.contact}};
+  const fdem::ContactCounters& c = f.contact;
+  j["contact"] = {{"enabled", c.enabled},
+                  {"detections", c.detections},
+                  {"steps_with_pairs", c.steps_with_pairs},
+                  {"steps_skipped", c.steps_skipped},
+                  {"last_candidates", c.candidates},
+                  {"last_pairs", c.pairs},
+                  {"last_touching", c.touching},
+                  {"kernel", c.kernel}};
+  j["mass_scaling"] = mass_scaling_json(f.mass_scaling);
+  j["memory_bytes"] = f.memory_bytes;
+  j["memory_bytes_per_triangle"] = f.memory_bytes_per_triangle;
+}
+
+nlohmann::json insitu_json(const InsituRecord& r) {
+  nlohmann::json j = {{"alpha", r.alpha},
+                      {"solver_iterations", r.solver_iterations},
+                      {"kirsch_rel_l2", or_null(r.kirsch_rel_l2)}};
+  if (r.kirsch_wall_ur_rel_l2) j["kirsch_wall_ur_rel_l2"] = *r.kirsch_wall_ur_rel_l2;
+  if (r.kirsch_triangles) j["kirsch_triangles"] = *r.kirsch_triangles;
+  if (!r.stages) return j;
+  j["stages"] = nlohmann::json::array();
+  for (const InsituSolveFigures& s : *r.stages)
+    j["stages"].push_back({{"alpha", s.alpha},
+                           {"solver", s.solver},
+                           {"dofs", s.dofs},
+                           {"assembly_seconds", s.assembly_seconds},
+                           {"solve_seconds", s.solve_seconds},
+                           {"total_seconds", s.total_seconds},
+                           {"unbalanced_ratio", s.unbalanced_ratio}});
+  return j;
+}
+
+nlohmann::json extensometer_json(const ExtensometerFigures& x) {
+  nlohmann::json points = nlohmann::json::array();
+  for (const ExtensometerPoint& p : x.points)
+    points.push_back({{"point", p.point},
+                      {"depth_m", p.depth_m},
+                      {"relative_mm", p.relative_mm},
+                      {"absolute_mm", p.absolute_mm}});
+  return {{"head", x.head},
+          {"direction", x.direction},
+          {"from", or_null(x.from)},
+          {"length_m", x.length_m},
+          {"points", points}};
+}
+
+// The support and damage figures at the end of a tunnel run.
+void add_support(nlohmann::json& j, const RunRecord& r) {
+  if (r.bolts) j["bolts"] = bolts_json(*r.bolts);
+  if (!r.lining.empty()) j["lining"] = lining_json(r.lining);
+  if (r.resolution)
+    j["resolution"] = {{"h_m", r.resolution->h_m},
+                       {"l_ch_m", r.resolution->l_ch_m},
+                       {"h_over_l_ch", r.resolution->h_over_l_ch},
+                       {"limit", r.resolution->limit}};
+  if (r.broken_zone) j["broken_zone"] = broken_zone_json(*r.broken_zone);
+  for (const auto& [name, x] : r.extensometers) j["extensometers"][name] = extensometer_json(x);
+  if (const auto& b = r.outer_boundary)
+    j["outer_boundary"] = {{"rotation_deg", b->rotation_deg},
+                           {"max_rotation_deg", b->max_rotation_deg},
+                           {"limit_deg", b->limit_deg},
+                           {"translation_mm", b->translation_mm},
+                           {"support", b->support}};
+  if (const auto& d = r.damping)
+    j["damping"] = {{"local", d->local},
+                    {"mass_proportional", d->mass_proportional},
+                    {"kinetic", d->kinetic},
+                    {"local_given", d->local_given}};
+}
+
 }  // namespace
+
+nlohmann::json stage_records_json(const std::vector<StageRecord>& stages) {
+  nlohmann::json j = nlohmann::json::array();
+  for (const StageRecord& s : stages) j.push_back(stage_json(s));
+  return j;
+}
+
+std::vector<StageRecord> stage_records_from_json(const nlohmann::json& stages) {
+  std::vector<StageRecord> out;
+  for (const nlohmann::json& s : stages) out.push_back(stage_from_json(s));
+  return out;
+}
 
 RunRecord::RunRecord(const Scene& scene, int threads)
     : warnings(scene.warnings),
+      threads(threads),
+      counts{0, 0, 0, long(scene.bolts.segments.size())},
       timings_{{"mesh", 0.0}, {"insitu", 0.0}, {"fdem", 0.0}, {"output", 0.0}, {"total", 0.0}} {
   using nlohmann::json;
-  figures_ = {{"format_version", kSummaryFormatVersion},
-              {"rockfdem_version", version_string()},
-              {"scene", scene.source},
-              {"overrides", scene.overrides},
-              {"title", scene.title},
-              {"threads", threads},
-              {"counts",
-               {{"triangles", 0},
-                {"nodes", 0},
-                {"crack_elements", 0},
-                {"bolts", scene.bolts.segments.size()}}},
-              {"steps", 0},
-              {"dt", 0.0},
-              {"simulated_time", 0.0},
-              {"throughput", {{"triangle_steps_per_second", 0.0}}},
-              {"broken", {{"mode_I", 0}, {"mode_II", 0}, {"mixed", 0}}},
-              {"monitors", json::object()},
-              {"insitu",
-               {{"alpha", json::array()},
-                {"kirsch_rel_l2", nullptr},
-                {"solver_iterations", json::array()}}},
-              {"state_hash", ""}};
+  figures_ = {
+      {"format_version", kSummaryFormatVersion},
+      {"rockfdem_version", version_string()},
+      {"scene", scene.source},
+      {"overrides", scene.overrides},
+      {"title", scene.title},
+  };
 }
 
 void RunRecord::note_turned_off(const OutputSettings& output, const std::string& paraview_files,
@@ -70,18 +370,20 @@ void RunRecord::note_turned_off(const OutputSettings& output, const std::string&
 }
 
 void RunRecord::record_mesh(const mesh::Mesh& m, const mesh::MeshReport& report) {
-  figures_["counts"]["triangles"] = m.n_triangles();
-  figures_["counts"]["nodes"] = m.n_vertices();
-  figures_["mesh"] = {{"triangles", report.n_triangles},
-                      {"vertices", report.n_vertices},
-                      {"min_altitude", report.min_altitude},
-                      {"min_angle_deg", report.min_angle_deg},
-                      {"seconds", report.seconds}};
-  figures_["state_hash"] = fdem::bits_hash(interleave(m.x, m.y));
+  counts.triangles = long(m.n_triangles());
+  counts.nodes = long(m.n_vertices());
+  mesh = report;
+  state.state_hash = fdem::bits_hash(interleave(m.x, m.y));
 }
 
-void RunRecord::record_insitu_state(const insitu::InsituField& field) {
-  figures_["state_hash"] = fdem::bits_hash(interleave(field.ux, field.uy));
+void RunRecord::record_insitu(const std::vector<insitu::InsituField>& fields) {
+  insitu.alpha.clear();
+  insitu.solver_iterations.clear();
+  for (const insitu::InsituField& f : fields) {
+    insitu.alpha.push_back(f.alpha);
+    insitu.solver_iterations.push_back(f.iterations);
+  }
+  state.state_hash = fdem::bits_hash(interleave(fields.back().ux, fields.back().uy));
 }
 
 void RunRecord::set_timings(const PhaseTimer& timer) {
@@ -91,6 +393,31 @@ void RunRecord::set_timings(const PhaseTimer& timer) {
 
 nlohmann::json RunRecord::to_json() const {
   nlohmann::json j = figures_;
+  j["threads"] = threads;
+  j["counts"] = {{"triangles", counts.triangles},
+                 {"nodes", counts.nodes},
+                 {"crack_elements", counts.crack_elements},
+                 {"bolts", counts.bolts}};
+  j["throughput"] = {{"triangle_steps_per_second", triangle_steps_per_second}};
+  if (engine) add_engine(j, *engine);
+  add_state(j, state);
+  j["insitu"] = insitu_json(insitu);
+  if (mesh)
+    j["mesh"] = {{"triangles", mesh->n_triangles},
+                 {"vertices", mesh->n_vertices},
+                 {"min_altitude", mesh->min_altitude},
+                 {"min_angle_deg", mesh->min_angle_deg},
+                 {"seconds", mesh->seconds}};
+  if (dt_range) {
+    j["dt_min"] = dt_range->first;
+    j["dt_max"] = dt_range->second;
+  }
+  if (fdem) j["fdem"] = fdem_json(*fdem);
+  j["monitors"] = monitors_json(monitors);
+  if (!ground_reaction_curve.empty())
+    j["ground_reaction_curve"] = ground_reaction_json(ground_reaction_curve);
+  if (history_stages) j["history_stages"] = *history_stages;
+  add_support(j, *this);
   if (!status.empty()) j["status"] = status;
   if (status_reason) j["status_reason"] = *status_reason;
   if (failure) j["failure"] = *failure;

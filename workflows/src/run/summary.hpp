@@ -14,6 +14,8 @@
 #include <vector>
 
 #include "run/phase_timer.hpp"
+#include "run/run_figures.hpp"
+#include "run/support_figures.hpp"
 
 namespace rockfdem::mesh {
 struct Mesh;
@@ -53,11 +55,32 @@ class RunRecord {
   std::vector<std::string> skipped;          ///< modules and outputs left out, and why
   std::optional<CheckpointMark> restarted_from;
   std::optional<CheckpointMark> checkpoint;  ///< the last one written
+  int threads = 0;
+  std::optional<mesh::MeshReport> mesh;  ///< "mesh": sizes and quality
+  ModelCounts counts;
+  EngineState state;                     ///< steps, dt, ..., state_hash
+  double triangle_steps_per_second = 0;  ///< "throughput" over the time loop
+  std::optional<EngineFigures> engine;
+  std::optional<std::pair<double, double>> dt_range;  ///< dt_min, dt_max [s]
+  InsituRecord insitu;
+  std::optional<FdemRecord> fdem;
+  MonitorRecord monitors;
+  std::vector<GroundReactionPoint> ground_reaction_curve;  ///< empty: not drawn (no key)
+  std::optional<std::vector<std::string>> history_stages;  ///< history.csv's stage names
+  std::optional<BoltRecord> bolts;
+  LiningRecord lining;  ///< empty: no key
+  std::optional<ResolutionFigures> resolution;
+  std::optional<OuterBoundaryFigures> outer_boundary;
+  std::optional<DampingFigures> damping;
+  std::map<std::string, ExtensometerFigures> extensometers;  ///< empty: no key
+  std::optional<BrokenZoneRecord> broken_zone;
 
-  /// The record's figures not yet held as members (counts, mesh, insitu,
-  /// fdem, monitors, bolts, lining, broken zone, ...), as summary.json's keys.
-  nlohmann::json& figures() { return figures_; }
-  const nlohmann::json& figures() const { return figures_; }
+  /// Figures another module gives as JSON (the continuum comparisons, a
+  /// specimen's load report), kept as they are under summary.json's `key`;
+  /// the record writes them and nothing reads them back.
+  void add_figures(const std::string& key, nlohmann::json figures) {
+    figures_[key] = std::move(figures);
+  }
 
   /// Notes in `skipped` the outputs the scene turned off: `paraview_files`
   /// (what output.vtk = false leaves out) and, where the command renders
@@ -68,9 +91,10 @@ class RunRecord {
   /// quality) and the state hash of the mesh: its vertex coordinates' bits.
   /// A later stage's figures replace counts and hash.
   void record_mesh(const mesh::Mesh& m, const mesh::MeshReport& report);
-  /// The state hash of an implicit result: the bits of its displacement
-  /// field (ux, uy per vertex), which the coordinates' bits would blur.
-  void record_insitu_state(const insitu::InsituField& field);
+  /// Each implicit solve's alpha and iterations, and the state hash of the
+  /// last: the bits of its displacement field (ux, uy per vertex), which
+  /// the coordinates' bits would blur.
+  void record_insitu(const std::vector<insitu::InsituField>& fields);
   void set_timings(const PhaseTimer& timer);
 
   /// summary.json's content.
@@ -81,5 +105,10 @@ class RunRecord {
   std::map<std::string, double> timings_;  ///< per phase (snake_case) and "total" [s]
   nlohmann::json figures_;
 };
+
+/// summary.json's "fdem"."stages" (also the checkpoints' copy of them).
+nlohmann::json stage_records_json(const std::vector<StageRecord>& stages);
+/// The stage records a checkpoint file holds (stage_records_json's form).
+std::vector<StageRecord> stage_records_from_json(const nlohmann::json& stages);
 
 }  // namespace rockfdem::workflows

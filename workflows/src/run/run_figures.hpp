@@ -1,0 +1,139 @@
+// The typed parts of a run's record (RunRecord): what the stages and the
+// outputs fill and the report, the plots and the timeline read. Each is
+// written to summary.json by summary.cpp alone, under the key its comment
+// names (docs/output-formats.md).
+#pragma once
+
+#include <map>
+#include <nlohmann/json.hpp>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "rockfdem/fdem/engine.hpp"
+#include "rockfdem/mesh/build.hpp"
+
+namespace rockfdem::workflows {
+
+/// The key point moving most over a stage's last output interval.
+struct MovingMost {
+  std::string key_point;
+  double mm_per_1000_steps = 0;
+};
+
+/// One explicit stage as it ended ("fdem"."stages"[i]).
+struct StageRecord {
+  std::string kind;
+  nlohmann::json changes = nlohmann::json::object();  ///< the stage's own report of its changes
+  long steps = 0;
+  double simulated_time = 0;      ///< [s]
+  std::optional<double> dt;       ///< [s]; none when it took no step
+  double unbalanced_ratio = 0;    ///< at its end
+  std::optional<double> settle;   ///< of its last output interval; none before one
+  std::optional<bool> converged;  ///< none when it took no step
+  long max_steps = 0;
+  // Its criteria ("criteria"): the scene's StageSpec values.
+  double ratio = 0;
+  double settle_limit = 0;
+  int hold = 0;
+  double unstable_fraction = 0;
+  std::optional<MovingMost> moving_most;
+  double support_pressure_ratio = 0;  ///< the core's factor alpha at its end
+};
+
+/// One implicit solve ("insitu"."stages"[i], `rockfdem insitu` only).
+struct InsituSolveFigures {
+  double alpha = 0;
+  std::string solver;
+  long dofs = 0;
+  double assembly_seconds = 0, solve_seconds = 0, total_seconds = 0;
+  double unbalanced_ratio = 0;
+};
+
+/// "insitu": the implicit stage, one entry per core stiffness factor alpha.
+struct InsituRecord {
+  std::vector<double> alpha;
+  std::vector<long> solver_iterations;  ///< CG iterations (0: direct)
+  std::optional<double> kirsch_rel_l2;  ///< stress error against Kirsch; none: not compared
+  std::optional<double> kirsch_wall_ur_rel_l2;
+  std::optional<long> kirsch_triangles;
+  std::optional<std::vector<InsituSolveFigures>> stages;
+};
+
+/// The explicit part of a run ("fdem"): present once the stages report.
+struct FdemRecord {
+  std::optional<double> unbalanced_ratio_at_start;  ///< after the hand-off step
+  std::optional<double> unbalanced_ratio_at_end;
+  std::optional<double> handoff_alpha;
+  std::optional<double> handoff_dt;  ///< "handoff_step": one step of this dt [s]
+  std::optional<std::vector<StageRecord>> stages;
+};
+
+/// The engine's state the record describes (steps, dt, simulated_time,
+/// broken, energy, state_hash): the end's, or a failed run's last good one.
+struct EngineState {
+  long steps = 0;
+  double dt = 0;              ///< [s]
+  double simulated_time = 0;  ///< [s]
+  fdem::BrokenCounts broken;
+  std::optional<fdem::EnergyBalance> energy;  ///< [J/m]; none before the engine's
+  std::string state_hash;
+};
+
+/// "counts": the model's sizes.
+struct ModelCounts {
+  long triangles = 0;
+  long nodes = 0;  ///< the engine's (before it, the mesh's vertices)
+  long crack_elements = 0;
+  long bolts = 0;  ///< bolts and cables
+};
+
+/// The engine's own figures at the end ("fdem_modules", "contact",
+/// "mass_scaling", "memory_bytes", "memory_bytes_per_triangle").
+struct EngineFigures {
+  fdem::PhaseTimes modules;  ///< [s] per phase of the step
+  fdem::ContactCounters contact;
+  fdem::MassScalingReport mass_scaling;
+  long memory_bytes = 0;
+  double memory_bytes_per_triangle = 0;
+};
+
+/// One key point of the opening ("monitors".NAME) [mm, m].
+struct KeyPointFigures {
+  double ux_mm = 0, uy_mm = 0, u_mm = 0;
+  double radial_mm = 0;  ///< towards the opening, convergence positive
+  double x = 0, y = 0;   ///< its node
+  double inward_x = 0, inward_y = 0;
+  std::optional<double> radial_since_support_mm;
+};
+
+/// A scene's [[monitors]] point ("monitors".NAME) [mm, m].
+struct MonitorPointFigures {
+  double ux_mm = 0, uy_mm = 0, u_mm = 0;
+  double x = 0, y = 0;
+  long triangle = 0;
+  std::string from;  ///< "support" or "in-situ state"
+};
+
+/// The vault's settlement and the two chords' closure [mm].
+struct ChordFigures {
+  double vault_settlement_mm = 0;
+  double wall_chord_convergence_mm = 0;
+  double shoulder_chord_convergence_mm = 0;
+};
+
+/// "monitors": the key points, the chords and the scene's monitors.
+struct MonitorRecord {
+  std::map<std::string, KeyPointFigures> key_points;
+  std::optional<ChordFigures> chords;
+  std::map<std::string, MonitorPointFigures> points;
+};
+
+/// One point of the ground reaction curve ("ground_reaction_curve"[i]).
+struct GroundReactionPoint {
+  double support_pressure_ratio = 0;  ///< p/p0 = the core's factor alpha
+  double vault_settlement_mm = 0;
+  std::string point;  ///< what the point is, in words
+};
+
+}  // namespace rockfdem::workflows

@@ -1,0 +1,123 @@
+// The typed parts of a tunnel run's record about its support and damage at
+// the end of the run: bolts and cables, the lining ring, the broken zone.
+// summary.cpp writes them as summary.json's "bolts", "lining",
+// "resolution" and "broken_zone" (docs/output-formats.md).
+#pragma once
+
+#include <array>
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace rockfdem::workflows {
+
+/// The peak of an installed bolt's axial force profile.
+struct BoltPeak {
+  std::string file;  ///< its profile, bolt_NN.csv
+  double max_axial_force_kN_per_bar = 0;
+  double max_steel_stress_MPa = 0;
+  double station_m = 0;  ///< of the peak, from the collar
+  bool yielded = false;
+  bool broken = false;
+};
+
+/// One bolt or cable ("bolts"."each"[i]).
+struct BoltFigures {
+  std::string name;
+  std::string kind;  ///< "bolt" or "cable"
+  std::array<double, 2> head{}, end{};
+  bool installed = false;
+  long steel_cracks_yielding = 0, steel_cracks_broken = 0, grout_cracks_broken = 0;
+  std::optional<BoltPeak> peak;  ///< none when not installed
+};
+
+/// "bolts": the crack element counts over all bolts, and each.
+struct BoltRecord {
+  long count = 0;
+  long steel_cracks_yielding = 0, steel_cracks_broken = 0, grout_cracks_broken = 0;
+  std::vector<BoltFigures> each;
+};
+
+/// The plain shotcrete section's check (where a compressive strength is given).
+struct LiningCapacityFigures {
+  double compressive_strength_Pa = 0, tensile_strength_Pa = 0;
+  std::optional<double> min_safety_factor;  ///< none: an unloaded ring
+  double min_safety_factor_angle_deg = 0, min_safety_factor_x_m = 0, min_safety_factor_y_m = 0;
+  bool min_safety_factor_at_corner = false;
+  long segments_below_1 = 0;
+};
+
+/// The lining's section force extremes [kN/m, kNm/m] at the end's step.
+struct LiningForceFigures {
+  long step = 0;
+  long segments = 0, corner_segments = 0;
+  double thickness_m = 0;  ///< the median segment's
+  double max_thrust_kN_per_m = 0, max_thrust_angle_deg = 0;
+  double min_thrust_kN_per_m = 0, min_thrust_angle_deg = 0;
+  double max_abs_moment_kNm_per_m = 0, max_abs_moment_angle_deg = 0;
+  double max_abs_shear_kN_per_m = 0, max_abs_shear_angle_deg = 0;
+  std::string capacity;                        ///< what the check is, or why none
+  std::optional<LiningCapacityFigures> check;  ///< with a compressive strength
+};
+
+/// "lining": the lining-rock bond and, once the ring is installed, its forces.
+struct LiningRecord {
+  std::optional<std::pair<long, long>> interface;  ///< bond crack elements, broken
+  std::optional<LiningForceFigures> forces;        ///< with lining.csv
+  bool empty() const { return !interface && !forces; }
+};
+
+/// One point of an extensometer: its head or an anchor.
+struct ExtensometerPoint {
+  std::string point;  ///< "head", "anchor K"
+  double depth_m = 0;
+  double relative_mm = 0;  ///< against the deepest anchor
+  double absolute_mm = 0;  ///< from the in-situ state
+};
+
+/// "extensometers".NAME: a scene's extensometer at the end of the run.
+struct ExtensometerFigures {
+  std::array<double, 2> head{}, direction{};
+  std::optional<std::string> from;  ///< the key point it starts at
+  double length_m = 0;
+  std::vector<ExtensometerPoint> points;
+};
+
+/// "outer_boundary": the rigid motion of the model's outer boundary.
+struct OuterBoundaryFigures {
+  double rotation_deg = 0, max_rotation_deg = 0, limit_deg = 0;
+  std::array<double, 2> translation_mm{};
+  std::string support;  ///< "rollers" or "tractions"
+};
+
+/// "damping": the stages' damping.
+struct DampingFigures {
+  double local = 0;
+  double mass_proportional = 0;  ///< [1/s]
+  bool kinetic = false;
+  bool local_given = false;  ///< engine.local_damping given by the scene
+};
+
+/// "resolution": the fracture zone's element size against l_ch.
+struct ResolutionFigures {
+  double h_m = 0, l_ch_m = 0, h_over_l_ch = 0, limit = 0;
+};
+
+/// The broken depth along one ray from the opening.
+struct RayFigures {
+  double depth_m = 0;
+  std::array<double, 2> origin{}, direction{};
+};
+
+/// "broken_zone": how deep the broken crack elements reach.
+struct BrokenZoneRecord {
+  long broken_rock_cracks = 0;
+  double depth_m = 0, fracture_zone_m = 0;
+  std::optional<double> clearance_m;  ///< none: no broken crack element
+  bool capped = false;
+  std::optional<double> ray_half_width_m;  ///< with the rays
+  std::map<std::string, RayFigures> rays;  ///< "along_rays"
+};
+
+}  // namespace rockfdem::workflows
