@@ -248,8 +248,8 @@ std::map<std::string, Text> text_fields() {
 
 // Keys whose default another scene shows (a horseshoe tunnel, a .msh model).
 const std::set<std::string> kElsewhere = {
-    "tunnel.shape", "tunnel.span", "tunnel.height",     "tunnel.lining_thickness",
-    "msh.zones",    "msh.edges",   "msh.fracture_group"};
+    "tunnel.shape",       "tunnel.span", "tunnel.height", "tunnel.lining_thickness",
+    "tunnel.invert_rise", "msh.zones",   "msh.edges",     "msh.fracture_group"};
 
 std::string normalised(const std::string& path) {
   return std::regex_replace(path, std::regex(R"(\[[0-9]+\])"), "[]");
@@ -343,6 +343,7 @@ TEST(SceneDefaults, a_horseshoe_and_a_msh_model_hold_their_defaults) {
   EXPECT_EQ(h.mesh.tunnel.height, std::stod(spec_of("tunnel.height").default_text));
   EXPECT_EQ(h.mesh.tunnel.lining_thickness,
             std::stod(spec_of("tunnel.lining_thickness").default_text));
+  EXPECT_EQ(h.mesh.tunnel.invert_rise, std::stod(spec_of("tunnel.invert_rise").default_text));
   // The reader only needs msh.file to be a readable file here.
   const Scene m = parse_scene(
       "[model]\nkind = \"msh\"\n[msh]\nfile = \"scene_defaults_test.cpp\"\n"
