@@ -50,13 +50,22 @@ std::map<std::string, double> first_history_row(const fs::path& csv) {
 }
 
 // A stage's report entry as the timeline reads it: kind, duration, changes.
-rockfdem::workflows::StageRecord stage_record(const std::string& kind, double simulated_time,
-                                              const nlohmann::json& changes) {
+rockfdem::workflows::StageRecord stage_record(
+    const std::string& kind, double simulated_time,
+    const rockfdem::workflows::StageChanges& changes = {}) {
   rockfdem::workflows::StageRecord r;
   r.kind = kind;
   r.simulated_time = simulated_time;
-  r.changes = changes.is_null() ? nlohmann::json::object() : changes;
+  r.changes = changes;
   return r;
+}
+
+// A grout stage's changes: triggered or not, and how many it re-joined.
+rockfdem::workflows::StageChanges grouting(bool triggered, std::optional<long> rejoined) {
+  rockfdem::workflows::StageChanges c;
+  c.triggered = triggered;
+  c.rejoined = rejoined;
+  return c;
 }
 
 std::string two_decimals(double v) {
@@ -154,10 +163,8 @@ TEST(Report, failed_run_reports_its_last_good_state) {
 TEST(StageMarkers, stages_starting_together_share_a_marker_and_grouting_has_its_own) {
   using rockfdem::workflows::StageRecord;
   const std::vector<StageRecord> stages = {
-      stage_record("lining", 0.0, {}), stage_record("bolts", 0.0, {}),
-      stage_record("remove_core", 0.0, {}),
-      stage_record("grout", 0.0048, {{"triggered", true}, {"rejoined", 324}}),
-      stage_record("equilibrium", 0.736, {})};
+      stage_record("lining", 0.0), stage_record("bolts", 0.0), stage_record("remove_core", 0.0),
+      stage_record("grout", 0.0048, grouting(true, 324)), stage_record("equilibrium", 0.736)};
   using namespace rockfdem::workflows;
   const std::vector<StageSpan> spans = stage_spans(stages, 0.0005);
   const auto markers = stage_markers(spans);
@@ -179,9 +186,9 @@ TEST(StageMarkers, stages_starting_together_share_a_marker_and_grouting_has_its_
 // without lining or bolts stages has no support to measure from.
 TEST(StageMarkers, untriggered_grout_and_no_support) {
   using rockfdem::workflows::StageRecord;
-  const std::vector<StageRecord> stages = {stage_record("remove_core", 0.0, {}),
-                                           stage_record("grout", 0.1, {{"triggered", false}}),
-                                           stage_record("equilibrium", 0.2, {})};
+  const std::vector<StageRecord> stages = {stage_record("remove_core", 0.0),
+                                           stage_record("grout", 0.1, grouting(false, {})),
+                                           stage_record("equilibrium", 0.2)};
   using namespace rockfdem::workflows;
   const std::vector<StageSpan> spans = stage_spans(stages, 0.0);
   const auto markers = stage_markers(spans);
@@ -197,9 +204,13 @@ TEST(StageMarkers, untriggered_grout_and_no_support) {
 // no dt, settle, verdict or moving key point: null in the file, none again.
 TEST(StageRecords, checkpoint_copy_reads_back_every_field) {
   using namespace rockfdem::workflows;
-  StageRecord none = stage_record("lining", 0.0, {});
+  StageRecord none = stage_record("lining", 0.0);
   none.max_steps = 0;
-  StageRecord full = stage_record("equilibrium", 0.736, {{"released", 0.5}});
+  // Named changes of each kind, and a stage kind's own by name.
+  StageChanges changes = grouting(true, 70);
+  changes.positions_file = "grouted_cracks.csv";
+  changes.other = {{"released", 0.5}, {"stepped", true}, {"count", 3L}, {"note", "x"}};
+  StageRecord full = stage_record("equilibrium", 0.736, changes);
   full.steps = 2000;
   full.dt = 3.68e-4;
   full.unbalanced_ratio = 1.12e-3;
@@ -218,12 +229,20 @@ TEST(StageRecords, checkpoint_copy_reads_back_every_field) {
   EXPECT_TRUE(j[0]["moving_most"].is_null());
   EXPECT_EQ(j[1]["criteria"]["hold"], 3);
   EXPECT_EQ(j[1]["moving_most"]["key_point"], "invert");
+  EXPECT_EQ(j[0]["changes"], nlohmann::json::object());
+  EXPECT_EQ(j[1]["changes"].dump(),
+            R"({"count":3,"note":"x","positions_file":"grouted_cracks.csv","rejoined":70,)"
+            R"("released":0.5,"stepped":true,"triggered":true})");
   const std::vector<StageRecord> back = stage_records_from_json(nlohmann::json::parse(j.dump()));
   ASSERT_EQ(back.size(), 2u);
   EXPECT_FALSE(back[0].dt || back[0].settle || back[0].converged || back[0].moving_most);
   const StageRecord& b = back[1];
   EXPECT_EQ(b.kind, "equilibrium");
-  EXPECT_EQ(b.changes, full.changes);
+  EXPECT_EQ(b.changes.triggered, std::optional<bool>(true));
+  EXPECT_EQ(b.changes.rejoined, std::optional<long>(70));
+  EXPECT_EQ(b.changes.positions_file, full.changes.positions_file);
+  EXPECT_FALSE(b.changes.broken_before || b.changes.bolts || b.changes.interface_cracks);
+  EXPECT_EQ(b.changes.other, full.changes.other);
   EXPECT_EQ(b.steps, 2000);
   EXPECT_EQ(b.simulated_time, 0.736);
   EXPECT_EQ(b.dt, full.dt);

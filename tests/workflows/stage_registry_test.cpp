@@ -24,13 +24,15 @@ int stepped = 0;  // calls of Mark::step
 class Mark : public Stage {
  public:
   const char* description() const override { return "test only"; }
-  nlohmann::json apply(StageModel& m, const StageSpec&) const override {
+  StageChanges apply(StageModel& m, const StageSpec&) const override {
     ++applied;
-    return {{"core_present", m.core_present}};
+    StageChanges done;
+    done.other["core_present"] = m.core_present;
+    return done;
   }
-  bool step(StageRunner&, const StageSpec&, nlohmann::json& changes) const override {
+  bool step(StageRunner&, const StageSpec&, StageChanges& changes) const override {
     ++stepped;
-    changes["stepped"] = true;
+    changes.other["stepped"] = true;
     return true;
   }
 };

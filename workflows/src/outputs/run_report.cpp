@@ -12,8 +12,6 @@
 namespace rockfdem::workflows {
 namespace {
 
-using nlohmann::json;
-
 // `v` with `decimals` digits after the point.
 std::string fixed(double v, int decimals) {
   char text[64];
@@ -31,15 +29,7 @@ std::string sig(double v) {
 // A strength or stress [Pa] in MPa; "not given" for 0 (the scene's "none").
 std::string mpa(double pa) { return pa == 0 ? "not given" : sig(pa / 1e6) + " MPa"; }
 
-// A summary scalar as text; "-" where absent or null.
-std::string value_text(const json& v) {
-  if (v.is_number_integer()) return std::to_string(v.get<long>());
-  if (v.is_number()) return sig(v.get<double>());
-  if (v.is_boolean()) return v.get<bool>() ? "yes" : "no";
-  if (v.is_string()) return v.get<std::string>();
-  return "-";
-}
-
+// A record's scalar as text; "-" where absent.
 std::string value_text(long v) { return std::to_string(v); }
 std::string value_text(double v) { return sig(v); }
 template <class T>
@@ -111,10 +101,10 @@ void inputs(std::ostream& md, const Scene& s, const RunRecord& r) {
 
 // One stage's status: what it reached, in words.
 std::string stage_status(const StageRecord& st) {
-  const json& changes = st.changes;
-  if (st.kind == "grout" && changes.is_object()) {
-    if (!changes.value("triggered", false)) return "not triggered";
-    return "grouted " + value_text(changes.value("rejoined", json())) + " cracks";
+  const StageChanges& changes = st.changes;
+  if (st.kind == "grout") {
+    if (!changes.triggered.value_or(false)) return "not triggered";
+    return "grouted " + value_text(changes.rejoined) + " cracks";
   }
   if (!st.converged)
     return st.kind == "lining" || st.kind == "bolts" ? "installed"

@@ -27,10 +27,11 @@ std::vector<plots::PlotMarker> stage_markers(const std::vector<StageSpan>& spans
   };
   for (const StageSpan& s : spans) {
     add(s.start, s.kind);
-    const nlohmann::json changes = s.report ? s.report->changes : nlohmann::json();
-    if (s.kind == "grout" && changes.is_object() && changes.value("triggered", false))
-      add(s.end, "grouting: " + std::to_string(changes.value("rejoined", 0L)) +
-                     " broken cracks re-joined");
+    const StageChanges none;
+    const StageChanges& changes = s.report ? s.report->changes : none;
+    if (s.kind == "grout" && changes.triggered.value_or(false))
+      add(s.end,
+          "grouting: " + std::to_string(changes.rejoined.value_or(0)) + " broken cracks re-joined");
   }
   return out;
 }

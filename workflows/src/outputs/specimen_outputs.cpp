@@ -91,14 +91,13 @@ void SpecimenOutputs::finish(const fdem::Engine& e, PhaseTimer& timer) {
   summary_.status = "completed";
   report_engine(e, timer, summary_);
   warn_if_unbalanced(e, floor_, ctx_.quiet, summary_);
-  const nlohmann::json peak = load_.report();
-  summary_.add_figures("specimen", peak);
+  summary_.specimen = load_.record();
+  const SpecimenRecord& peak = *summary_.specimen;
   summary_.skipped.push_back("insitu: a specimen starts stress-free");
   write_summary(timer);
   if (!ctx_.quiet)
-    std::cout << (disc_ ? "peak tensile stress " : "peak axial stress ")
-              << peak["peak_stress"].get<double>() / 1e6 << " MPa at step "
-              << peak["peak_step"].get<long>() << " (upper platen, read every step), broken "
+    std::cout << (disc_ ? "peak tensile stress " : "peak axial stress ") << peak.peak_stress / 1e6
+              << " MPa at step " << peak.peak_step << " (upper platen, read every step), broken "
               << e.broken_counts().total() << " of " << e.n_cracks()
               << " crack elements, state hash " << e.state_hash() << '\n'
               << timer.table();
@@ -113,7 +112,7 @@ void SpecimenOutputs::report_failure(const fdem::Engine& e, PhaseTimer& timer,
 void SpecimenOutputs::report_interrupted(const fdem::Engine& e, PhaseTimer& timer,
                                          const std::string& why) {
   report_engine(e, timer, summary_);
-  summary_.add_figures("specimen", load_.report());
+  summary_.specimen = load_.record();
   summary_.status = "interrupted";
   summary_.failure = why;
   write_summary(timer);

@@ -269,6 +269,7 @@ class RunStateCheck {
         {"stage_first_step", "an integer"},
         {"stage_t0", "a number"},
         {"stage_changes", "an object"},
+        {"changes", "an object"},
         {"stage_monitor_u", "an array of numbers"},
         {"alpha", "a number"},
         {"core_present", "true or false"},
@@ -334,7 +335,7 @@ class RunStateCheck {
     boolean(member(s, at, "stage_started"), at + ".stage_started");
     integer(member(s, at, "stage_first_step"), at + ".stage_first_step");
     number(member(s, at, "stage_t0"), at + ".stage_t0");
-    object(member(s, at, "stage_changes"), at + ".stage_changes");
+    changes(member(s, at, "stage_changes"), at + ".stage_changes");
     numbers(member(s, at, "stage_monitor_u"), at + ".stage_monitor_u");
     // Optional: checkpoints from before they were kept lack them.
     if (s.contains("stage_held")) integer(s["stage_held"], at + ".stage_held");
@@ -350,10 +351,21 @@ class RunStateCheck {
     integer(member(s, at, "last_checkpoint"), at + ".last_checkpoint");
   }
 
+  // What stage_changes_from_json reads: each entry of the kind its name
+  // asks for (a key from the file is shown escaped, as a value is).
+  void changes(const json& c, const std::string& at) const {
+    object(c, at);
+    for (auto it = c.begin(); it != c.end(); ++it) {
+      const std::string want = stage_change_mismatch(it.key(), it.value());
+      if (!want.empty()) bad(at + "[" + shown(it.key()) + "]", &it.value(), want);
+    }
+  }
+
   // The fields StageRunner::verdict() reads from each finished stage.
   void stage_report(const json& r, const std::string& at) {
     object(r, at);
     string(member(r, at, "kind"), at + ".kind");
+    changes(member(r, at, "changes"), at + ".changes");
     integer(member(r, at, "steps"), at + ".steps");
     integer(member(r, at, "max_steps"), at + ".max_steps");
     number(member(r, at, "unbalanced_ratio"), at + ".unbalanced_ratio");

@@ -5,9 +5,9 @@
 #pragma once
 
 #include <map>
-#include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
+#include <variant>
 #include <vector>
 
 #include "rockfdem/fdem/engine.hpp"
@@ -21,10 +21,33 @@ struct MovingMost {
   double mm_per_1000_steps = 0;
 };
 
+/// What a stage changed in the model, as the stage reports it
+/// ("fdem"."stages"[i]."changes", each member under its own name; unset
+/// members are left out). Stage::apply fills it, Stage::step may add to it.
+struct StageChanges {
+  // lining
+  std::optional<long> interface_cracks;  ///< lining-rock crack elements bonded
+  // bolts
+  std::optional<long> bolts;           ///< bolts and cables installed
+  std::optional<long> bolt_triangles;  ///< their steel triangles made active
+  std::optional<long> steel_cracks;    ///< their steel crack elements
+  std::optional<long> grout_cracks;    ///< their grout-bond crack elements
+  // grout
+  std::optional<bool> triggered;              ///< trigger_broken (or the stage's time) was reached
+  std::optional<long> broken_before;          ///< broken crack elements when the stepping ended
+  std::optional<long> rejoined;               ///< of them, re-joined with grout (triggered only)
+  std::optional<long> broken_after;           ///< broken crack elements after the re-joining
+  std::optional<std::string> positions_file;  ///< the re-joined ones' list (grouted_cracks.csv)
+  /// A stage kind none of these describe (one registered outside the
+  /// library) reports by name; the names differ from the members above.
+  using Figure = std::variant<bool, long, double, std::string>;
+  std::map<std::string, Figure> other;
+};
+
 /// One explicit stage as it ended ("fdem"."stages"[i]).
 struct StageRecord {
   std::string kind;
-  nlohmann::json changes = nlohmann::json::object();  ///< the stage's own report of its changes
+  StageChanges changes;  ///< the stage's own report of its changes
   long steps = 0;
   double simulated_time = 0;      ///< [s]
   std::optional<double> dt;       ///< [s]; none when it took no step
@@ -39,6 +62,19 @@ struct StageRecord {
   double unstable_fraction = 0;
   std::optional<MovingMost> moving_most;
   double support_pressure_ratio = 0;  ///< the core's factor alpha at its end
+};
+
+/// "specimen": a specimen's peak load, read from the upper platen after
+/// every step, and its post-peak stop.
+struct SpecimenRecord {
+  std::string kind;            ///< "ucs" or "brazilian"
+  double peak_stress = 0;      ///< UCS: mean axial stress; disc: tensile stress 2P/(pi D) [Pa]
+  double peak_force = 0;       ///< the platen's reaction per unit thickness at the peak [N/m]
+  long peak_step = 0;          ///< the step of the peak
+  double peak_strain = 0;      ///< nominal axial strain at the peak [-]
+  double strain_rate = 0;      ///< nominal axial strain rate 2 v / L [1/s]
+  double stop_after_peak = 0;  ///< loading.stop_after_peak [-]
+  std::optional<long> stopped_after_peak_at_step;  ///< none: not stopped after the peak
 };
 
 /// One implicit solve ("insitu"."stages"[i], `rockfdem insitu` only).

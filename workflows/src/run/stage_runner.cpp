@@ -248,13 +248,13 @@ void StageRunner::run(const StageSpec& stage) {
     cursor_.monitor_u = monitor_displacements();
     cursor_.started = true;
   }
-  nlohmann::json done = cursor_.changes;
+  StageChanges done = cursor_.changes;
   last_settle_ = -1;  // no output interval yet
   const bool converged = kind.step(*this, stage, done);
   report_.push_back(report_entry(stage, done, converged));
 }
 
-StageRecord StageRunner::report_entry(const StageSpec& stage, const nlohmann::json& changes,
+StageRecord StageRunner::report_entry(const StageSpec& stage, const StageChanges& changes,
                                       bool converged) const {
   StageRecord r;
   r.kind = stage.kind;
@@ -325,7 +325,7 @@ nlohmann::json StageRunner::state() const {
           {"stage_started", cursor_.started},
           {"stage_first_step", cursor_.first},
           {"stage_t0", cursor_.t0},
-          {"stage_changes", cursor_.changes},
+          {"stage_changes", stage_changes_json(cursor_.changes)},
           {"stage_monitor_u", cursor_.monitor_u},
           {"stage_held", cursor_.held},
           {"stage_rates", cursor_.rates},
@@ -342,7 +342,7 @@ void StageRunner::restore(const nlohmann::json& s) {
   cursor_.started = s.at("stage_started").get<bool>();
   cursor_.first = s.at("stage_first_step").get<long>();
   cursor_.t0 = s.at("stage_t0").get<double>();
-  cursor_.changes = s.at("stage_changes");
+  cursor_.changes = stage_changes_from_json(s.at("stage_changes"));
   cursor_.monitor_u = s.at("stage_monitor_u").get<std::vector<double>>();
   // settle_measure() reads a pair per monitor.
   if (cursor_.monitor_u.size() != 2 * monitors_.size())

@@ -82,7 +82,7 @@ class StageRunner {
     bool started = false;   ///< the stage's changes are made; it is stepping
     long first = 0;         ///< the stage's first step
     double t0 = 0;          ///< the simulated time at its start
-    nlohmann::json changes = nlohmann::json::object();
+    StageChanges changes;
     std::vector<double> monitor_u;  ///< monitors' (ux, uy) at the last output [m]
     int held = 0;                   ///< consecutive outputs meeting ratio and settle
     std::vector<double> rates;      ///< largest monitor move per 1000 steps, per output [m]
@@ -111,7 +111,7 @@ class StageRunner {
   /// holds after a step (*reached set).
   bool advance(long n, const StopTest& stop, bool* reached);
   /// The stage's report entry (what report() lists).
-  StageRecord report_entry(const StageSpec& stage, const nlohmann::json& changes,
+  StageRecord report_entry(const StageSpec& stage, const StageChanges& changes,
                            bool converged) const;
 
   StageModel model_;

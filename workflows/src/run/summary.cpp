@@ -1,6 +1,7 @@
 #include "run/summary.hpp"
 
 #include <algorithm>
+#include <variant>
 
 #include "rockfdem/coupling/atomic_file.hpp"
 #include "rockfdem/fdem/bits_hash.hpp"
@@ -38,9 +39,36 @@ nlohmann::json or_null(const std::optional<T>& v) {
   return v ? nlohmann::json(*v) : nlohmann::json();
 }
 
+// The counts among a stage's changes, under their summary.json names.
+struct ChangeCount {
+  const char* key;
+  std::optional<long> StageChanges::*member;
+};
+constexpr ChangeCount kChangeCounts[] = {{"interface_cracks", &StageChanges::interface_cracks},
+                                         {"bolts", &StageChanges::bolts},
+                                         {"bolt_triangles", &StageChanges::bolt_triangles},
+                                         {"steel_cracks", &StageChanges::steel_cracks},
+                                         {"grout_cracks", &StageChanges::grout_cracks},
+                                         {"broken_before", &StageChanges::broken_before},
+                                         {"rejoined", &StageChanges::rejoined},
+                                         {"broken_after", &StageChanges::broken_after}};
+
+const ChangeCount* change_count(const std::string& key) {
+  for (const ChangeCount& c : kChangeCounts)
+    if (key == c.key) return &c;
+  return nullptr;
+}
+
+StageChanges::Figure other_figure(const nlohmann::json& v) {
+  if (v.is_boolean()) return v.get<bool>();
+  if (v.is_number_integer()) return v.get<long>();
+  if (v.is_number()) return v.get<double>();
+  return v.get<std::string>();
+}
+
 nlohmann::json stage_json(const StageRecord& s) {
   return {{"kind", s.kind},
-          {"changes", s.changes},
+          {"changes", stage_changes_json(s.changes)},
           {"steps", s.steps},
           {"simulated_time", s.simulated_time},
           {"dt", or_null(s.dt)},
@@ -69,7 +97,7 @@ std::optional<T> optional_at(const nlohmann::json& j, const char* key) {
 StageRecord stage_from_json(const nlohmann::json& j) {
   StageRecord s;
   s.kind = j.at("kind").get<std::string>();
-  s.changes = j.at("changes");
+  s.changes = stage_changes_from_json(j.at("changes"));
   s.steps = j.at("steps").get<long>();
   s.simulated_time = j.at("simulated_time").get<double>();
   s.dt = optional_at<double>(j, "dt");
@@ -99,6 +127,17 @@ nlohmann::json fdem_json(const FdemRecord& f) {
   if (f.handoff_dt)
     j["handoff_step"] = {{"steps", 1}, {"dt", *f.handoff_dt}, {"simulated_time", *f.handoff_dt}};
   return j;
+}
+
+nlohmann::json specimen_json(const SpecimenRecord& s) {
+  return {{"kind", s.kind},
+          {"peak_stress", s.peak_stress},
+          {"peak_force", s.peak_force},
+          {"peak_step", s.peak_step},
+          {"peak_strain", s.peak_strain},
+          {"strain_rate", s.strain_rate},
+          {"stop_after_peak", s.stop_after_peak},
+          {"stopped_after_peak_at_step", or_null(s.stopped_after_peak_at_step)}};
 }
 
 nlohmann::json energy_json(const fdem::EnergyBalance& en) {
@@ -348,6 +387,40 @@ std::vector<StageRecord> stage_records_from_json(const nlohmann::json& stages) {
   return out;
 }
 
+nlohmann::json stage_changes_json(const StageChanges& c) {
+  nlohmann::json j = nlohmann::json::object();
+  for (const auto& [name, figure] : c.other)
+    j[name] = std::visit([](const auto& v) { return nlohmann::json(v); }, figure);
+  for (const ChangeCount& k : kChangeCounts)
+    if (c.*k.member) j[k.key] = *(c.*k.member);
+  if (c.triggered) j["triggered"] = *c.triggered;
+  if (c.positions_file) j["positions_file"] = *c.positions_file;
+  return j;
+}
+
+StageChanges stage_changes_from_json(const nlohmann::json& j) {
+  StageChanges c;
+  for (auto it = j.begin(); it != j.end(); ++it) {
+    const nlohmann::json& v = it.value();
+    if (const ChangeCount* k = change_count(it.key()))
+      c.*k->member = v.get<long>();
+    else if (it.key() == "triggered")
+      c.triggered = v.get<bool>();
+    else if (it.key() == "positions_file")
+      c.positions_file = v.get<std::string>();
+    else
+      c.other[it.key()] = other_figure(v);
+  }
+  return c;
+}
+
+std::string stage_change_mismatch(const std::string& key, const nlohmann::json& v) {
+  if (change_count(key)) return v.is_number_integer() ? "" : "an integer";
+  if (key == "triggered") return v.is_boolean() ? "" : "true or false";
+  if (key == "positions_file") return v.is_string() ? "" : "a string";
+  return v.is_primitive() && !v.is_null() ? "" : "true, false, a number or a string";
+}
+
 RunRecord::RunRecord(const Scene& scene, int threads)
     : warnings(scene.warnings),
       threads(threads),
@@ -413,6 +486,7 @@ nlohmann::json RunRecord::to_json() const {
     j["dt_max"] = dt_range->second;
   }
   if (fdem) j["fdem"] = fdem_json(*fdem);
+  if (specimen) j["specimen"] = specimen_json(*specimen);
   j["monitors"] = monitors_json(monitors);
   if (!ground_reaction_curve.empty())
     j["ground_reaction_curve"] = ground_reaction_json(ground_reaction_curve);

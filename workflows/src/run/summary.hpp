@@ -74,10 +74,11 @@ class RunRecord {
   std::optional<DampingFigures> damping;
   std::map<std::string, ExtensometerFigures> extensometers;  ///< empty: no key
   std::optional<BrokenZoneRecord> broken_zone;
+  std::optional<SpecimenRecord> specimen;  ///< a specimen's peak and post-peak stop
 
-  /// Figures another module gives as JSON (the continuum comparisons, a
-  /// specimen's load report), kept as they are under summary.json's `key`;
-  /// the record writes them and nothing reads them back.
+  /// Figures another module gives as JSON (the continuum comparisons),
+  /// kept as they are under summary.json's `key`; the record writes them
+  /// and nothing reads them back.
   void add_figures(const std::string& key, nlohmann::json figures) {
     figures_[key] = std::move(figures);
   }
@@ -110,5 +111,13 @@ class RunRecord {
 nlohmann::json stage_records_json(const std::vector<StageRecord>& stages);
 /// The stage records a checkpoint file holds (stage_records_json's form).
 std::vector<StageRecord> stage_records_from_json(const nlohmann::json& stages);
+/// A stage's "changes" (also the checkpoints' copy of the running stage's).
+nlohmann::json stage_changes_json(const StageChanges& changes);
+/// The changes a checkpoint file holds (stage_changes_json's form), each
+/// entry checked first with stage_change_mismatch.
+StageChanges stage_changes_from_json(const nlohmann::json& changes);
+/// What a "changes" entry named `key` must be ("an integer", ...); empty
+/// when `value` is that.
+std::string stage_change_mismatch(const std::string& key, const nlohmann::json& value);
 
 }  // namespace rockfdem::workflows

@@ -86,14 +86,17 @@ void PlatenLoad::restore(const nlohmann::json& s) {
   stop_step_ = s.value("stop_step", 0L);
 }
 
-nlohmann::json PlatenLoad::report() const {
-  nlohmann::json j = {
-      {"kind", disc_ ? "brazilian" : "ucs"}, {"peak_stress", peak_.stress},
-      {"peak_force", peak_.force},           {"peak_step", peak_step_},
-      {"peak_strain", peak_.strain},         {"strain_rate", 2 * velocity_ / length_},
-      {"stop_after_peak", stop_fraction_},   {"stopped_after_peak_at_step", nullptr}};
-  if (stopped_) j["stopped_after_peak_at_step"] = stop_step_;
-  return j;
+SpecimenRecord PlatenLoad::record() const {
+  SpecimenRecord r;
+  r.kind = disc_ ? "brazilian" : "ucs";
+  r.peak_stress = peak_.stress;
+  r.peak_force = peak_.force;
+  r.peak_step = peak_step_;
+  r.peak_strain = peak_.strain;
+  r.strain_rate = 2 * velocity_ / length_;
+  r.stop_after_peak = stop_fraction_;
+  if (stopped_) r.stopped_after_peak_at_step = stop_step_;
+  return r;
 }
 
 }  // namespace rockfdem::workflows

@@ -11,6 +11,7 @@
 #include "rockfdem/fdem/model_input.hpp"
 #include "rockfdem/mesh/mesh.hpp"
 #include "rockfdem/workflows/scene.hpp"
+#include "run/run_figures.hpp"
 
 namespace rockfdem::workflows {
 
@@ -42,8 +43,8 @@ class PlatenLoad {
   /// The state a checkpoint keeps, and its restoration.
   nlohmann::json state() const;
   void restore(const nlohmann::json& s);
-  /// summary.json's "specimen" entry.
-  nlohmann::json report() const;
+  /// The peak and the post-peak stop so far (summary.json's "specimen").
+  SpecimenRecord record() const;
 
  private:
   bool disc_;

@@ -9,11 +9,9 @@ void StageModel::set_zone(int zone, bool active, fdem::ActivationReference ref) 
     if (mesh.zone[t] == zone) engine.set_active(t, active, ref);
 }
 
-nlohmann::json Stage::apply(StageModel&, const StageSpec&) const {
-  return nlohmann::json::object();
-}
+StageChanges Stage::apply(StageModel&, const StageSpec&) const { return {}; }
 
-bool Stage::step(StageRunner& runner, const StageSpec& spec, nlohmann::json&) const {
+bool Stage::step(StageRunner& runner, const StageSpec& spec, StageChanges&) const {
   return runner.step_until(spec);
 }
 

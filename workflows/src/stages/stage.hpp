@@ -7,7 +7,6 @@
 // the model and when it stops.
 #pragma once
 
-#include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
 
@@ -17,6 +16,7 @@
 #include "rockfdem/workflows/scene.hpp"
 #include "rockfdem/workflows/scene_schema.hpp"
 #include "run/run_context.hpp"
+#include "run/run_figures.hpp"
 
 namespace rockfdem::workflows {
 
@@ -60,13 +60,13 @@ class Stage {
   /// them where the reference has them); none by default.
   virtual std::vector<KeySpec> keys() const { return {}; }
   /// The stage's change to the model at its start; returns what changed
-  /// (the summary's "changes" of the stage).
-  virtual nlohmann::json apply(StageModel& model, const StageSpec& spec) const;
+  /// (the summary's "changes" of the stage): nothing by default.
+  virtual StageChanges apply(StageModel& model, const StageSpec& spec) const;
   /// Steps to the stage's stop criterion through `runner`; returns whether
-  /// the stage converged. A stage whose changes come after its steps
-  /// replaces `changes`. Default: the equilibrium criterion (ratio, settle
-  /// and hold).
-  virtual bool step(StageRunner& runner, const StageSpec& spec, nlohmann::json& changes) const;
+  /// the stage converged. A stage whose changes come after its steps sets
+  /// them in `changes` (apply's, copied). Default: the equilibrium
+  /// criterion (ratio, settle and hold).
+  virtual bool step(StageRunner& runner, const StageSpec& spec, StageChanges& changes) const;
   /// Why a run whose last stage that stepped is this one is not at
   /// equilibrium, when that is not the generic finding (a stage that stops
   /// on something else); empty: the generic one.

@@ -9,12 +9,14 @@ class Bolts : public Stage {
  public:
   const char* description() const override { return "install every bolt stress-free"; }
 
-  nlohmann::json apply(StageModel& m, const StageSpec&) const override {
+  StageChanges apply(StageModel& m, const StageSpec&) const override {
     const fdem::BoltInstallReport r = fdem::install_bolts(m.engine, m.bolts);
-    return {{"bolts", m.bolts.specs.size()},
-            {"bolt_triangles", r.triangles},
-            {"steel_cracks", r.steel_cracks},
-            {"grout_cracks", r.grout_cracks}};
+    StageChanges done;
+    done.bolts = long(m.bolts.specs.size());
+    done.bolt_triangles = r.triangles;
+    done.steel_cracks = r.steel_cracks;
+    done.grout_cracks = r.grout_cracks;
+    return done;
   }
 
   bool installs_support() const override { return true; }

@@ -13,19 +13,19 @@ namespace {
 
 // Re-joins the broken crack elements (not a bolt's steel) with grout;
 // adds the count and the positions file to `done`.
-void grout_broken(StageModel& m, nlohmann::json& done) {
+void grout_broken(StageModel& m, StageChanges& done) {
   const fdem::CrackSelector select = m.bolts.specs.empty()
                                          ? fdem::CrackSelector{}
                                          : fdem::excluding_bolt_steel(m.engine, m.bolts, {});
   const fdem::GroutingResult g = fdem::grout_broken_cracks(m.engine, m.materials.grout, select);
-  done["rejoined"] = g.count;
-  done["broken_after"] = m.engine.broken_counts().total();
+  done.rejoined = g.count;
+  done.broken_after = m.engine.broken_counts().total();
   std::string csv = "crack,x,y\n";
   for (std::size_t i = 0; i < g.cracks.size(); ++i)
     csv += std::to_string(g.cracks[i]) + ',' + std::to_string(g.midpoints[i][0]) + ',' +
            std::to_string(g.midpoints[i][1]) + '\n';
   coupling::atomic_write_text(output_path(m.ctx.output_dir, "grouted_cracks.csv"), csv);
-  done["positions_file"] = "grouted_cracks.csv";
+  done.positions_file = "grouted_cracks.csv";
 }
 
 class Grout : public Stage {
@@ -34,7 +34,7 @@ class Grout : public Stage {
     return "re-join broken cracks with grout, once trigger_broken is reached";
   }
 
-  bool step(StageRunner& runner, const StageSpec& spec, nlohmann::json& changes) const override {
+  bool step(StageRunner& runner, const StageSpec& spec, StageChanges& changes) const override {
     StageModel& m = runner.model();
     bool triggered =
         spec.trigger_broken == 0 || m.engine.broken_counts().total() >= spec.trigger_broken;
@@ -43,7 +43,9 @@ class Grout : public Stage {
       triggered = runner.step_until(spec, [&] {
         return m.engine.broken_counts().total() >= spec.trigger_broken;
       }) || (!runner.stopped() && spec.time > 0 && runner.stage_time() >= spec.time);
-    changes = {{"triggered", triggered}, {"broken_before", m.engine.broken_counts().total()}};
+    changes = {};
+    changes.triggered = triggered;
+    changes.broken_before = m.engine.broken_counts().total();
     if (triggered) grout_broken(m, changes);
     return false;
   }

@@ -21,13 +21,15 @@ class Lining : public Stage {
  public:
   const char* description() const override { return "install the lining ring stress-free"; }
 
-  nlohmann::json apply(StageModel& m, const StageSpec&) const override {
+  StageChanges apply(StageModel& m, const StageSpec&) const override {
     // Stress-free in the deformed shape: the lining takes only later load.
     m.set_zone(mesh::kLining, true, fdem::ActivationReference::kCurrent);
     for (std::size_t t = 0; t < m.mesh.n_triangles(); ++t)
       if (m.mesh.zone[t] == mesh::kLining) m.engine.set_stiffness_factor(t, 1.0);
     m.lining_installed = true;
-    return {{"interface_cracks", bond_lining(m)}};
+    StageChanges done;
+    done.interface_cracks = bond_lining(m);
+    return done;
   }
 
   bool installs_support() const override { return true; }

@@ -36,7 +36,7 @@ class LoadPlatens : public Stage {
 
   // Ends on its own criterion, the post-peak stop or the step count: a
   // specimen has no equilibrium to reach.
-  bool step(StageRunner& runner, const StageSpec& spec, nlohmann::json&) const override {
+  bool step(StageRunner& runner, const StageSpec& spec, StageChanges&) const override {
     PlatenLoad& load = *runner.model().platens;
     const fdem::Engine& e = runner.model().engine;
     runner.step_until(spec, [&] { return load.after_step(e); });

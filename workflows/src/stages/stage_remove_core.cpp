@@ -7,12 +7,12 @@ namespace {
 
 class RemoveCore : public Stage {
  public:
-  nlohmann::json apply(StageModel& m, const StageSpec&) const override {
+  StageChanges apply(StageModel& m, const StageSpec&) const override {
     m.set_zone(mesh::kCore, false, fdem::ActivationReference::kKeep);
     // A ring never installed is ground still to be excavated.
     if (!m.lining_installed) m.set_zone(mesh::kLining, false, fdem::ActivationReference::kKeep);
     m.core_present = false;
-    return nlohmann::json::object();
+    return {};
   }
 };
 

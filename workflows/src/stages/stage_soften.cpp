@@ -10,13 +10,13 @@ class Soften : public Stage {
  public:
   const char* description() const override { return "core to alpha, explicit"; }
 
-  nlohmann::json apply(StageModel& m, const StageSpec& spec) const override {
+  StageChanges apply(StageModel& m, const StageSpec& spec) const override {
     // The engine's core already has alpha_h E and stress: scale relative to it.
     for (std::size_t t = 0; t < m.mesh.n_triangles(); ++t)
       if (m.mesh.zone[t] == mesh::kCore || (!m.lining_installed && m.mesh.zone[t] == mesh::kLining))
         m.engine.set_stiffness_factor(t, spec.alpha / m.handoff_alpha);
     m.alpha = spec.alpha;
-    return nlohmann::json::object();
+    return {};
   }
 };
 
