@@ -90,21 +90,6 @@ double restore_before_writing(const Checkpoint& resume, const std::string& file,
   return resume.run.at("start_ratio").get<double>();
 }
 
-/// The bolts marked on the mesh and their steel models. The engine's
-/// refusals (a strip too stiff or too soft for the rock around it, a bolt
-/// crossing no triangle edge) arise from the design and the mesh together;
-/// they get the scene and its keys here, before anything is written.
-fdem::BoltPlan planned_bolts(const Scene& scene, fdem::ModelInput& in) {
-  try {
-    return fdem::plan_bolts(in, bolt_specs(scene));
-  } catch (const InputError& e) {
-    throw InputError(scene.source + ": the bolt design cannot be modelled on this mesh (" +
-                     e.what() +
-                     "); adjust [bolts] / [cables] (young, diameter, row_spacing, "
-                     "strengths), materials.rock.young or mesh.size_near");
-  }
-}
-
 // The record's "fdem" of a run the stages left early: their reports alone.
 FdemRecord stages_only(const StageRunner& stages) {
   FdemRecord f;
@@ -189,11 +174,10 @@ int Run::write_implicit_results_only() {
 }
 
 void Run::build_engine() {
-  fdem::ModelInput in = engine_input(scene_, mesh_, handoff(), ctx_.threads);
-  add_support_materials(in);
-  if (!scene_.bolts.segments.empty()) bolts_ = planned_bolts(scene_, in);
-  engine_.emplace(make_engine(in, scene_, ctx_.force_dt));
-  refuse_dt_with_stage_damping(in.damping);
+  EngineSetup setup = setup_engine(scene_, mesh_, handoff(), ctx_.threads, ctx_.force_dt);
+  support_ = setup.support;
+  bolts_ = std::move(setup.bolts);
+  engine_.emplace(std::move(setup.engine));
 }
 
 // Key points and instruments before anything is written: a point in no
@@ -330,27 +314,6 @@ void Run::stop_if_interrupted(const char* after) {
   throw Interrupted(sig, std::string("interrupted by signal ") + std::to_string(sig) + " after " +
                              after +
                              "; summary.json is written (no explicit step yet, so no checkpoint)");
-}
-
-// The grout and the lining-rock bond: engine materials the support stages
-// give crack elements.
-void Run::add_support_materials(fdem::ModelInput& in) {
-  support_.grout = int(in.materials.size());
-  in.materials.push_back(grout_material(scene_));
-  if (scene_.materials.count(mesh::kLining)) {
-    support_.lining_interface = int(in.materials.size());
-    in.materials.push_back(lining_interface_material(scene_));
-  }
-}
-
-// The stages' local damping lowers the limit by sqrt(1 + alpha): an
-// explicit dt must hold then too, and is refused before anything is written.
-void Run::refuse_dt_with_stage_damping(const fdem::DampingSettings& handoff_damping) {
-  if (scene_.engine.dt <= 0 || ctx_.force_dt) return;
-  engine().set_damping(stage_damping(scene_));
-  refuse_dt_above(scene_, scene_.engine.dt, engine().critical_dt(),
-                  "this mesh and its penalties with the stages' damping");
-  engine().set_damping(handoff_damping);
 }
 
 void Run::save_checkpoint() {

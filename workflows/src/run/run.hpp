@@ -53,8 +53,6 @@ class Run {
   const insitu::InsituField& handoff() const { return fields_.back(); }
   fdem::Engine& engine() { return *engine_; }
   void stop_if_interrupted(const char* after);
-  void add_support_materials(fdem::ModelInput& in);
-  void refuse_dt_with_stage_damping(const fdem::DampingSettings& handoff_damping);
   void save_checkpoint();
   /// The message of an InputError from a stage, with engine.dt named when
   /// a later stage's stability limit is below it.

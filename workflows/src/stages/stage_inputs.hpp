@@ -8,6 +8,7 @@
 #include "rockfdem/fdem/model_input.hpp"
 #include "rockfdem/insitu/insitu.hpp"
 #include "rockfdem/workflows/scene.hpp"
+#include "stages/stage.hpp"
 
 namespace rockfdem::workflows {
 
@@ -43,6 +44,22 @@ fdem::ModelInput engine_input(const Scene& scene, const mesh::Mesh& m,
 /// (InputError naming engine.dt) unless `force_dt`: then the run keeps it
 /// and stops with a diagnostic if it diverges.
 fdem::Engine make_engine(fdem::ModelInput in, const Scene& scene, bool force_dt);
+
+/// What a tunnel run's engine setup gives the run: the engine materials the
+/// support stages give crack elements, the bolt plan (empty without bolts)
+/// and the engine.
+struct EngineSetup {
+  SupportMaterials support;
+  fdem::BoltPlan bolts;  ///< marks bolt triangles and allows fracture there
+  fdem::Engine engine;
+};
+
+/// The engine of a tunnel at the hand-off (engine_input) with the support
+/// materials and bolts, and engine.dt checked against the stability limit
+/// with the hand-off's damping and with the stages' (InputError naming the
+/// scene's keys, before anything is written; nothing when `force_dt`).
+EngineSetup setup_engine(const Scene& scene, const mesh::Mesh& m,
+                         const insitu::InsituField& handoff, int threads, bool force_dt);
 
 /// Throws the scene's InputError for an explicit engine.dt above `limit`
 /// (the stability limit of `model`, in words); nothing when dt <= limit.
