@@ -30,82 +30,17 @@ std::string detail_number(double v) {
   return text;
 }
 
-// Monitors' mesh vertices: the implicit fields are per vertex.
-int vertex_of(const fdem::Engine& e, const Monitor& mon) { return e.node_vertex()[mon.node]; }
-
-const Monitor& find(const std::vector<Monitor>& ms, const std::string& name) {
-  for (const Monitor& m : ms)
-    if (m.name == name) return m;
-  throw std::logic_error("no monitor " + name);
-}
-
 }  // namespace
 
-RigidFit RunOutputs::boundary_fit(const fdem::Engine& e) const {
-  if (boundary_vertices_.empty()) return {};
-  // Every monitor of a step needs the same fit: compute it once per step.
-  if (fit_step_ == e.step_count()) return fit_;
-  std::vector<double> x, y, ux, uy;
-  const std::vector<int>& vertex = e.node_vertex();
-  const std::vector<double>& pos = e.positions();
-  for (std::size_t node = 0; node < e.n_nodes(); ++node) {
-    if (!std::binary_search(boundary_vertices_.begin(), boundary_vertices_.end(), vertex[node]))
-      continue;
-    const auto d = e.displacement(node);
-    x.push_back(pos[2 * node] - d[0]);
-    y.push_back(pos[2 * node + 1] - d[1]);
-    ux.push_back(d[0]);
-    uy.push_back(d[1]);
-  }
-  fit_ = rigid_fit(x, y, ux, uy);
-  fit_step_ = e.step_count();
-  return fit_;
-}
-
 void RunOutputs::check_rigid_motion(const fdem::Engine& e, long step) {
-  const RigidFit fit = boundary_fit(e);
+  const RigidFit fit = key_points_.boundary_fit(e);
   max_rotation_deg_ = std::max(max_rotation_deg_, std::abs(fit.rotation) * 180 / M_PI);
   check_rigid_rotation(fit, scene_.insitu.rollers, step);
 }
 
-std::array<double, 2> RunOutputs::displacement(const fdem::Engine& e, const Monitor& mon) const {
-  return node_displacements(e)(mon.node);
-}
-
-NodeDisplacement RunOutputs::node_displacements(const fdem::Engine& e) const {
-  static const std::vector<double> none;
-  const std::vector<double>& ux = fields_.empty() ? none : fields_.back().ux;
-  const std::vector<double>& uy = fields_.empty() ? none : fields_.back().uy;
-  // Remove the engine's mean translation of the outer boundary (the
-  // implicit part already has its rigid motion removed).
-  const RigidFit fit = boundary_fit(e);
-  return [&e, &ux, &uy, fit](int node) {
-    std::array<double, 2> u = node_displacement(e, node, ux, uy);
-    return std::array<double, 2>{u[0] - fit.tx, u[1] - fit.ty};
-  };
-}
-
-std::array<double, 4> RunOutputs::key_point(const fdem::Engine& e, const Monitor& mon) const {
-  const std::array<double, 2> u = displacement(e, mon);
-  return {mm(u[0]), mm(u[1]), mm(std::hypot(u[0], u[1])), mm(radial_convergence(mon, u))};
-}
-
-double RunOutputs::convergence(const fdem::Engine& e, const std::vector<Monitor>& ms,
-                               const std::string& a, const std::string& b) const {
-  const Monitor &ma = find(ms, a), &mb = find(ms, b);
-  const auto ua = displacement(e, ma), ub = displacement(e, mb);
-  const double dx = mb.x - ma.x, dy = mb.y - ma.y, len = std::hypot(dx, dy);
-  return ((ua[0] - ub[0]) * dx + (ua[1] - ub[1]) * dy) / len;
-}
-
 std::pair<std::string, double> RunOutputs::largest_key_point(
     const fdem::Engine& e, const std::vector<Monitor>& monitors) const {
-  std::pair<std::string, double> most{"", 0.0};
-  for (const Monitor& mon : monitors) {
-    const auto u = displacement(e, mon);
-    if (std::hypot(u[0], u[1]) > most.second) most = {mon.name, std::hypot(u[0], u[1])};
-  }
-  return most;
+  return key_points_.largest(e, monitors);
 }
 
 RunOutputs::RunOutputs(const Scene& scene, const RunContext& ctx, RunRecord& summary)
@@ -149,15 +84,8 @@ std::vector<std::string> RunOutputs::history_columns(const std::vector<Monitor>&
 
 void RunOutputs::begin_history(const std::vector<Monitor>& monitors, const mesh::Mesh& m) {
   energy_floor_ = energy_floor(scene_, m);
-  for (const mesh::TaggedEdge& edge : m.edges)
-    if (edge.tag >= mesh::kBottom && edge.tag <= mesh::kLeft) {
-      boundary_vertices_.push_back(edge.a);
-      boundary_vertices_.push_back(edge.b);
-    }
-  std::sort(boundary_vertices_.begin(), boundary_vertices_.end());
-  boundary_vertices_.erase(std::unique(boundary_vertices_.begin(), boundary_vertices_.end()),
-                           boundary_vertices_.end());
-  monitors_ = monitors;
+  key_points_ = fields_.empty() ? KeyPoints(monitors, m, {}, {})
+                                : KeyPoints(monitors, m, fields_.back().ux, fields_.back().uy);
   if (has_lining_ring(scene_)) {
     lining_ = std::make_unique<LiningOutput>(scene_, m, ctx_.output_dir);
     if (!lining_->has_ring()) lining_.reset();
@@ -193,15 +121,13 @@ void RunOutputs::record_rows(const fdem::Engine& e, const mesh::Mesh& m, const s
                           double(b.mode_I),
                           double(b.mode_II),
                           double(b.mixed)};
-  for (const Monitor& mon : monitors_)
-    for (double v : key_point(e, mon)) row.push_back(v);
-  row.push_back(-mm(displacement(e, find(monitors_, "vault"))[1]));
-  row.push_back(mm(convergence(e, monitors_, "left_wall", "right_wall")));
-  row.push_back(mm(convergence(e, monitors_, "left_shoulder", "right_shoulder")));
-  row.push_back(boundary_fit(e).rotation * 180 / M_PI);
+  for (const Monitor& mon : key_points_.monitors())
+    for (double v : key_points_.figures(e, mon)) row.push_back(v);
+  for (double v : key_points_.chords_mm(e)) row.push_back(v);
+  row.push_back(key_points_.boundary_fit(e).rotation * 180 / M_PI);
   row.push_back(support_ratio);
   for (double v : energy_row(e.energy_balance())) row.push_back(v);
-  const NodeDisplacement u = node_displacements(e);
+  const NodeDisplacement u = key_points_.node_displacements(e);
   const OutputStep step{e, m, stage, int(stage_names_.size() - 1), u};
   for (OutputStepObserver* o : observers()) o->at_output_step(step, row);
   history_->add(row);
@@ -213,28 +139,26 @@ void RunOutputs::record_frame(const fdem::Engine& e, const mesh::Mesh& m, const 
   // The hand-off step's dt, once it passed (a failed one is no good state).
   if (stage == "handoff" && stage_names_.size() == 1) handoff_dt_ = e.dt();
   if (scene_.output.vtk) {
-    const NodeDisplacement u = node_displacements(e);
+    const NodeDisplacement u = key_points_.node_displacements(e);
     std::vector<double> no_columns;
     frames_->at_output_step({e, m, stage, int(stage_names_.size() - 1), u}, no_columns);
   }
-  last_good_.take(e, e.energy_balance(), monitor_figures(e, monitors_));
+  last_good_.take(e, e.energy_balance(), monitor_figures(e));
   timer.stamp("output");
 }
 
-MonitorRecord RunOutputs::monitor_figures(const fdem::Engine& e,
-                                          const std::vector<Monitor>& monitors) const {
+MonitorRecord RunOutputs::monitor_figures(const fdem::Engine& e) const {
   MonitorRecord r;
-  for (const Monitor& mon : monitors) {
-    const auto k = key_point(e, mon);
+  for (const Monitor& mon : key_points_.monitors()) {
+    const auto k = key_points_.figures(e, mon);
     r.key_points[mon.name] = {k[0],       k[1],         k[2],         k[3],        mon.node_x,
                               mon.node_y, mon.inward_x, mon.inward_y, std::nullopt};
   }
   // Per point (as field convergence points are read) and, apart, the
   // change of length of two chords between points.
-  r.chords = ChordFigures{-mm(displacement(e, find(monitors, "vault"))[1]),
-                          mm(convergence(e, monitors, "left_wall", "right_wall")),
-                          mm(convergence(e, monitors, "left_shoulder", "right_shoulder"))};
-  if (instruments_) instruments_->add_monitors(r, node_displacements(e));
+  const std::array<double, 3> chords = key_points_.chords_mm(e);
+  r.chords = ChordFigures{chords[0], chords[1], chords[2]};
+  if (instruments_) instruments_->add_monitors(r, key_points_.node_displacements(e));
   return r;
 }
 
@@ -331,24 +255,24 @@ void RunOutputs::bolt_outputs(const fdem::Engine& e, const fdem::BoltPlan& bolts
     summary_.skipped.push_back("bolts: none in the scene");
 }
 
-void RunOutputs::finish(const fdem::Engine& e, const mesh::Mesh& m,
-                        const std::vector<Monitor>& monitors, PhaseTimer& timer,
+void RunOutputs::finish(const fdem::Engine& e, const mesh::Mesh& m, PhaseTimer& timer,
                         const fdem::BoltPlan& bolts) {
   report_engine(e, timer, summary_);
   warn_if_unbalanced(e, energy_floor_, ctx_.quiet, summary_);
   report_dt();
   bolt_outputs(e, bolts);
-  summary_.monitors = monitor_figures(e, monitors);
+  summary_.monitors = monitor_figures(e);
   add_since_support(summary_.monitors);
-  summary_.outer_boundary = OuterBoundaryFigures{boundary_fit(e).rotation * 180 / M_PI,
+  const RigidFit fit = key_points_.boundary_fit(e);
+  summary_.outer_boundary = OuterBoundaryFigures{fit.rotation * 180 / M_PI,
                                                  max_rotation_deg_,
                                                  kRigidRotationLimitDeg,
-                                                 {mm(boundary_fit(e).tx), mm(boundary_fit(e).ty)},
+                                                 {mm(fit.tx), mm(fit.ty)},
                                                  scene_.insitu.rollers ? "rollers" : "tractions"};
-  record_ground_reaction(e, monitors);
+  record_ground_reaction(e);
   lining_outputs(e, m);
   damage_outputs(e, m);
-  if (instruments_) instruments_->finish(summary_, e, m, node_displacements(e));
+  if (instruments_) instruments_->finish(summary_, e, m, key_points_.node_displacements(e));
   summary_.history_stages = stage_names_;  // history.csv's "stage" column indexes this list
   if (scene_.output.plots) plots(e, m);
   timer.stamp("output");
@@ -366,9 +290,8 @@ void RunOutputs::finish(const fdem::Engine& e, const mesh::Mesh& m,
 
 // Ground reaction curve, implicit part: the core's share of the in-situ
 // stress (alpha) against the vault settlement it allows.
-void RunOutputs::record_ground_reaction(const fdem::Engine& e,
-                                        const std::vector<Monitor>& monitors) {
-  const int vault_vertex = vertex_of(e, find(monitors, "vault"));
+void RunOutputs::record_ground_reaction(const fdem::Engine& e) {
+  const int vault_vertex = e.node_vertex()[key_points_.find("vault").node];
   std::vector<GroundReactionPoint>& grc = summary_.ground_reaction_curve;
   grc.clear();
   for (const insitu::InsituField& f : fields_)
@@ -437,7 +360,7 @@ std::map<std::string, double> RunOutputs::since_support() const {
   const auto add = [&](const std::string& name, const std::string& column, double v) {
     out[name] = v - history_->column(column)[*row];
   };
-  for (const Monitor& m : monitors_) {
+  for (const Monitor& m : key_points_.monitors()) {
     const auto k = mon.key_points.find(m.name);
     if (k != mon.key_points.end() && !mon.points.count(m.name))
       add(m.name, m.name + "_radial_mm", k->second.radial_mm);
@@ -484,7 +407,8 @@ void RunOutputs::plots(const fdem::Engine& e, const mesh::Mesh& m) {
   }
   const PictureContext c{e, m, scene_, bolts_};
   const coupling::VtkGrid grid = picture_grid(e);
-  plots.picture("displacement.png", grid, displacement_picture(c, node_displacements(e)));
+  plots.picture("displacement.png", grid,
+                displacement_picture(c, key_points_.node_displacements(e)));
   plots.picture("sigma_max_compressive.png", grid, principal_picture(c, true));
   plots.picture("sigma_min_compressive.png", grid, principal_picture(c, false));
   plots.final_mesh(e, false);
@@ -506,7 +430,7 @@ void RunOutputs::time_plots(PlotWriter& plots, const fdem::Engine& e,
   const std::vector<double> tt(t.begin() + long(from), t.end());
   const std::string origin = since ? "since the support's installation" : "from the in-situ state";
   std::vector<plots::PlotSeries> points;
-  for (const Monitor& mon : monitors_)
+  for (const Monitor& mon : key_points_.monitors())
     points.push_back({mon.name, tt, curve(mon.name + "_radial_mm")});
   plots.xy("convergence.png", "Key points: radial displacement towards the opening",
            time_axis_label(e), "radial displacement " + origin + " [mm]", points, markers);

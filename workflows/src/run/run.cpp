@@ -244,7 +244,7 @@ void Run::run_stages() {
   } catch (const Interrupted&) {
     summary_.status = "interrupted";
     summary_.fdem = stages_only(*stages_);
-    out_.finish(engine(), mesh_, monitors_, timer_, bolts_);
+    out_.finish(engine(), mesh_, timer_, bolts_);
     throw;
   } catch (const NumericalError& e) {
     // The frames and history rows written so far are the last good output.
@@ -294,7 +294,7 @@ void Run::finish() {
   summary_.fdem->unbalanced_ratio_at_start = start_ratio_;
   summary_.fdem->unbalanced_ratio_at_end = engine().unbalanced_force_ratio();
   summary_.fdem->handoff_alpha = handoff().alpha;
-  out_.finish(engine(), mesh_, monitors_, timer_, bolts_);
+  out_.finish(engine(), mesh_, timer_, bolts_);
   if (!ctx_.quiet)
     std::cout << "status: " << verdict.status
               << (verdict.message.empty() ? " (every stage met its criteria)"
