@@ -63,7 +63,14 @@ void LiningOutput::at_output_step(const OutputStep& step, std::vector<double>&) 
       lining_csv(e.step_count(), geometry_, forces(e), has_strength_ ? &strength_ : nullptr));
 }
 
-LiningForceFigures LiningOutput::finish(const fdem::Engine& e, const std::string& dir) {
+LiningForceFigures LiningOutput::finish(const fdem::Engine& e, const std::string& dir,
+                                        PlotWriter* plots) {
+  const LiningForceFigures f = figures(e, dir);
+  if (plots) this->plots(*plots);
+  return f;
+}
+
+LiningForceFigures LiningOutput::figures(const fdem::Engine& e, const std::string& dir) {
   last_ = forces(e);
   coupling::atomic_write_text(
       output_path(dir, "lining.csv"),

@@ -8,7 +8,6 @@
 
 #include "outputs/broken_zone.hpp"
 #include "outputs/engine_report.hpp"
-#include "outputs/run_pictures.hpp"
 #include "outputs/run_report.hpp"
 #include "rockfdem/coupling/atomic_file.hpp"
 #include "rockfdem/coupling/fdem_model.hpp"
@@ -228,7 +227,7 @@ void RunOutputs::restore(const nlohmann::json& s, const std::string& from_dir) {
     }
 }
 
-void RunOutputs::lining_outputs(const fdem::Engine& e, const mesh::Mesh& m) {
+bool RunOutputs::lining_outputs(const fdem::Engine& e, const mesh::Mesh& m) {
   // A bond acts only between two active triangles: a ring that was never
   // installed (or was removed) has none.
   long n_bond = 0, broken = 0;
@@ -241,18 +240,10 @@ void RunOutputs::lining_outputs(const fdem::Engine& e, const mesh::Mesh& m) {
   LiningRecord& r = summary_.lining;
   r = LiningRecord{};
   if (n_bond > 0) r.interface = std::make_pair(n_bond, broken);
-  if (lining_ && lining_installed_ && lining_->installed(e))
-    r.forces = lining_->finish(e, ctx_.output_dir);
-  if (r.empty() && has_lining_ring(scene_))
+  const bool forces = lining_ && lining_installed_ && lining_->installed(e);
+  if (!r.interface && !forces && has_lining_ring(scene_))
     summary_.skipped.push_back("lining: the ring is not installed at the end of the run");
-}
-
-void RunOutputs::bolt_outputs(const fdem::Engine& e, const fdem::BoltPlan& bolts) {
-  summary_.counts.bolts = long(bolts.specs.size());
-  if (bolt_results_)
-    bolt_results_->finish(e, summary_);
-  else
-    summary_.skipped.push_back("bolts: none in the scene");
+  return forces;
 }
 
 void RunOutputs::finish(const fdem::Engine& e, const mesh::Mesh& m, PhaseTimer& timer,
@@ -260,7 +251,8 @@ void RunOutputs::finish(const fdem::Engine& e, const mesh::Mesh& m, PhaseTimer& 
   report_engine(e, timer, summary_);
   warn_if_unbalanced(e, energy_floor_, ctx_.quiet, summary_);
   report_dt();
-  bolt_outputs(e, bolts);
+  summary_.counts.bolts = long(bolts.specs.size());
+  if (!bolt_results_) summary_.skipped.push_back("bolts: none in the scene");
   summary_.monitors = monitor_figures(e);
   add_since_support(summary_.monitors);
   const RigidFit fit = key_points_.boundary_fit(e);
@@ -270,11 +262,19 @@ void RunOutputs::finish(const fdem::Engine& e, const mesh::Mesh& m, PhaseTimer& 
                                                  {mm(fit.tx), mm(fit.ty)},
                                                  scene_.insitu.rollers ? "rollers" : "tractions"};
   record_ground_reaction(e);
-  lining_outputs(e, m);
+  const bool lining_forces = lining_outputs(e, m);
   damage_outputs(e, m);
   if (instruments_) instruments_->finish(summary_, e, m, key_points_.node_displacements(e));
   summary_.history_stages = stage_names_;  // history.csv's "stage" column indexes this list
-  if (scene_.output.plots) plots(e, m);
+  // The run's curves, then the support's outputs (each with its plots),
+  // then the pictures of the final state.
+  const std::unique_ptr<PlotWriter> plots = curves(e);
+  if (lining_forces) summary_.lining.forces = lining_->finish(e, ctx_.output_dir, plots.get());
+  if (bolt_results_) bolt_results_->finish(e, summary_, plots.get());
+  if (plots) {
+    tunnel_pictures(*plots, {e, m, scene_, bolts_}, key_points_.node_displacements(e));
+    pictures_ = plots->rendered();
+  }
   timer.stamp("output");
   summary_.set_timings(timer);
   summary_.write(output_path(ctx_.output_dir, "summary.json"));
@@ -390,78 +390,16 @@ void RunOutputs::write_report() const {
   workflows::write_report(ctx_.output_dir, scene_, summary_, extras);
 }
 
-void RunOutputs::plots(const fdem::Engine& e, const mesh::Mesh& m) {
-  PlotWriter plots(ctx_.output_dir, summary_, ctx_.quiet);
-  if (!plots.available()) return;
-  const std::vector<plots::PlotMarker> markers = stage_markers(timeline());
-  time_plots(plots, e, markers);
-  ground_reaction_plot(plots);
-  if (lining_) lining_->plots(plots);
-  if (bolt_results_) {
-    const std::vector<plots::PlotSeries> bolts = bolt_results_->force_curves(e);
-    const std::string title = "Bolt axial force (section force) at step " +
-                              std::to_string(e.step_count()) + ", end of run";
-    if (!bolts.empty())
-      plots.xy("bolt_forces.png", title, "distance from the collar [m]",
-               "axial force [kN per bar], tension +", bolts);
-  }
-  const PictureContext c{e, m, scene_, bolts_};
-  const coupling::VtkGrid grid = picture_grid(e);
-  plots.picture("displacement.png", grid,
-                displacement_picture(c, key_points_.node_displacements(e)));
-  plots.picture("sigma_max_compressive.png", grid, principal_picture(c, true));
-  plots.picture("sigma_min_compressive.png", grid, principal_picture(c, false));
-  plots.final_mesh(e, false);
-  pictures_ = plots.rendered();
-}
-
-void RunOutputs::time_plots(PlotWriter& plots, const fdem::Engine& e,
-                            const std::vector<plots::PlotMarker>& markers) {
-  const History& h = *history_;
-  const std::vector<double> t = h.column("time");
-  // From the support's installation where asked (and installed): the
-  // rows from then on, less their value then.
-  const std::optional<std::size_t> support = support_row();
-  const bool since = scene_.output.convergence_from_support && support;
-  const std::size_t from = since ? *support : 0;
-  const auto curve = [&](const std::string& column) {
-    return since ? since_row(h.column(column), from) : h.column(column);
-  };
-  const std::vector<double> tt(t.begin() + long(from), t.end());
-  const std::string origin = since ? "since the support's installation" : "from the in-situ state";
-  std::vector<plots::PlotSeries> points;
-  for (const Monitor& mon : key_points_.monitors())
-    points.push_back({mon.name, tt, curve(mon.name + "_radial_mm")});
-  plots.xy("convergence.png", "Key points: radial displacement towards the opening",
-           time_axis_label(e), "radial displacement " + origin + " [mm]", points, markers);
-  plots.xy("chord_convergence.png", "Chord convergence (closure between key points)",
-           time_axis_label(e), "closure " + origin + " [mm]",
-           {{"walls (chord)", tt, curve("wall_chord_convergence_mm")},
-            {"shoulders (chord)", tt, curve("shoulder_chord_convergence_mm")}},
-           markers);
-  plots.broken_cracks(e, h, markers);
-}
-
-void RunOutputs::ground_reaction_plot(PlotWriter& plots) {
-  // The implicit stage's points (alpha, the vault's displacement it
-  // allows), and apart the run's final state, which is no point of the
-  // unsupported curve: the support carries the load there.
-  std::vector<double> ratio, settlement;
-  const std::vector<GroundReactionPoint>& grc = summary_.ground_reaction_curve;
-  for (std::size_t i = 0; i + 1 < grc.size(); ++i) {
-    ratio.push_back(grc[i].support_pressure_ratio);
-    settlement.push_back(grc[i].vault_settlement_mm);
-  }
-  std::vector<plots::PlotSeries> series{
-      {"implicit stage: core stiffness factor alpha", settlement, ratio}};
-  if (!grc.empty())
-    series.push_back({grc.back().point,
-                      {grc.back().vault_settlement_mm},
-                      {grc.back().support_pressure_ratio},
-                      true});
-  plots.xy("ground_reaction.png", "Ground reaction curve at the vault",
-           "vault radial displacement (settlement) from the in-situ state [mm]",
-           "support pressure ratio p/p0 = core stiffness factor alpha [-]", series);
+std::unique_ptr<PlotWriter> RunOutputs::curves(const fdem::Engine& e) {
+  if (!scene_.output.plots) return nullptr;
+  auto plots = std::make_unique<PlotWriter>(ctx_.output_dir, summary_, ctx_.quiet);
+  if (!plots->available()) return nullptr;
+  // From the support's installation where asked (and installed).
+  const std::optional<std::size_t> from =
+      scene_.output.convergence_from_support ? support_row() : std::nullopt;
+  tunnel_curves(*plots, e, *history_, key_points_.monitors(), timeline(), from);
+  ground_reaction_plot(*plots, summary_.ground_reaction_curve);
+  return plots;
 }
 
 }  // namespace rockfdem::workflows

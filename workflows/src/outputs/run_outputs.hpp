@@ -96,13 +96,9 @@ class RunOutputs : public StepOutputs {
   /// The record's ground reaction curve: the implicit stage's points and
   /// the end of the run (after the monitors).
   void record_ground_reaction(const fdem::Engine& e);
-  void plots(const fdem::Engine& e, const mesh::Mesh& m);
-  /// convergence.png, chord_convergence.png (from the support's
-  /// installation where the scene asks) and broken.png, with `markers`.
-  void time_plots(PlotWriter& plots, const fdem::Engine& e,
-                  const std::vector<plots::PlotMarker>& markers);
-  /// ground_reaction.png from the record's ground reaction curve.
-  void ground_reaction_plot(PlotWriter& plots);
+  /// With plots asked for and a display: the writer, after the run's
+  /// curves against time (run_plots.hpp) and ground_reaction.png; else null.
+  std::unique_ptr<PlotWriter> curves(const fdem::Engine& e);
   /// The explicit stages on the history's time axis (run_timeline.hpp).
   std::vector<StageSpan> timeline() const;
   /// The history row of the support's installation (the first lining or
@@ -115,14 +111,12 @@ class RunOutputs : public StepOutputs {
   void add_since_support(MonitorRecord& monitors) const;
   /// report.md from the record as it stands.
   void write_report() const;
-  /// bolt_NN.csv (axial stress and force along each bolt) and summary "bolts".
-  void bolt_outputs(const fdem::Engine& e, const fdem::BoltPlan& bolts);
   /// summary "resolution" (h / l_ch) and "broken_zone" (depth, clearance to
   /// the fracture zone's edge), with warnings when either limits the answer.
   void damage_outputs(const fdem::Engine& e, const mesh::Mesh& m);
-  /// summary "lining": the lining-rock crack elements and how many broke,
-  /// and the ring's section forces (lining.csv).
-  void lining_outputs(const fdem::Engine& e, const mesh::Mesh& m);
+  /// summary "lining": the lining-rock crack elements and how many broke;
+  /// returns whether the ring is installed, to report its section forces.
+  bool lining_outputs(const fdem::Engine& e, const mesh::Mesh& m);
   /// Stops the run (NumericalError) when the boundary turns as a rigid body.
   void check_rigid_motion(const fdem::Engine& e, long step);
   const Scene& scene_;
