@@ -5,7 +5,9 @@
 #pragma once
 
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "outputs/lining_forces.hpp"
@@ -52,5 +54,13 @@ class LiningOutput : public OutputStepObserver {
   std::string dir_;
   bool installed_ = false;
 };
+
+/// Crack elements joining a lining triangle to a triangle of another zone
+/// (the shotcrete-rock bond), in crack order.
+std::vector<std::size_t> lining_interface_cracks(const fdem::Engine& engine, const mesh::Mesh& m);
+
+/// The bond's crack elements between two active triangles and how many
+/// broke; none when no bond acts (a ring never installed, or removed).
+std::optional<std::pair<long, long>> lining_bond(const fdem::Engine& e, const mesh::Mesh& m);
 
 }  // namespace rockfdem::workflows

@@ -7,6 +7,7 @@
 #include <iostream>
 
 #include "outputs/broken_zone.hpp"
+#include "outputs/continuum_comparison.hpp"
 #include "outputs/engine_report.hpp"
 #include "outputs/run_report.hpp"
 #include "rockfdem/coupling/atomic_file.hpp"
@@ -15,7 +16,6 @@
 #include "rockfdem/fdem/bolt_output.hpp"
 #include "run/checkpoint.hpp"
 #include "run/output_dir.hpp"
-#include "stages/stage_inputs.hpp"
 
 namespace rockfdem::workflows {
 namespace {
@@ -82,10 +82,9 @@ std::vector<std::string> RunOutputs::history_columns(const std::vector<Monitor>&
 }
 
 void RunOutputs::begin_history(const std::vector<Monitor>& monitors, const mesh::Mesh& m) {
-  energy_floor_ = energy_floor(scene_, m);
   key_points_ = fields_.empty() ? KeyPoints(monitors, m, {}, {})
                                 : KeyPoints(monitors, m, fields_.back().ux, fields_.back().uy);
-  if (has_lining_ring(scene_)) {
+  if (scene_.lining_ring) {
     lining_ = std::make_unique<LiningOutput>(scene_, m, ctx_.output_dir);
     if (!lining_->has_ring()) lining_.reset();
     if (lining_) lining_->set_installed(lining_installed_);
@@ -228,20 +227,11 @@ void RunOutputs::restore(const nlohmann::json& s, const std::string& from_dir) {
 }
 
 bool RunOutputs::lining_outputs(const fdem::Engine& e, const mesh::Mesh& m) {
-  // A bond acts only between two active triangles: a ring that was never
-  // installed (or was removed) has none.
-  long n_bond = 0, broken = 0;
-  for (std::size_t c : lining_interface_cracks(e, m)) {
-    const auto t = e.crack_triangles(c);
-    if (!e.active(t[0]) || !e.active(t[1])) continue;
-    ++n_bond;
-    broken += e.crack_state(c) == fdem::CrackState::kBroken;
-  }
   LiningRecord& r = summary_.lining;
   r = LiningRecord{};
-  if (n_bond > 0) r.interface = std::make_pair(n_bond, broken);
+  r.interface = lining_bond(e, m);
   const bool forces = lining_ && lining_installed_ && lining_->installed(e);
-  if (!r.interface && !forces && has_lining_ring(scene_))
+  if (!r.interface && !forces && scene_.lining_ring)
     summary_.skipped.push_back("lining: the ring is not installed at the end of the run");
   return forces;
 }

@@ -53,6 +53,9 @@ class RunOutputs : public StepOutputs {
   void support_installed(const fdem::Engine& e) override {
     if (instruments_) instruments_->support_installed(key_points_.node_displacements(e));
   }
+  /// The floor of the energy check (energy_floor), computed once by the
+  /// stage loop: below it an unbalanced energy is no warning at the end.
+  void set_energy_floor(double floor) { energy_floor_ = floor; }
   /// Whether the lining ring is installed as lining (before, its triangles
   /// are ground still to be excavated): its forces are written from then.
   void set_lining_installed(bool installed) override;
@@ -135,7 +138,7 @@ class RunOutputs : public StepOutputs {
   std::vector<std::string> stage_names_;
   std::vector<std::string> pictures_;  ///< PNG files rendered, for report.md
   double handoff_dt_ = 0;    ///< dt of the hand-off step (0: not taken by this run's record)
-  double energy_floor_ = 0;  ///< energy_floor of the model (set by begin_history)
+  double energy_floor_ = 0;  ///< energy_floor of the model (set_energy_floor)
   LastGoodState last_good_;
   double fdem_seconds_at_start_ = 0;
 };

@@ -222,6 +222,7 @@ void Run::begin_stages() {
   out_.begin_history(monitors_, mesh_);
   stages_ = std::make_unique<StageRunner>(engine(), mesh_, handoff(), scene_, ctx_, out_, monitors_,
                                           bolts_, support_);
+  out_.set_energy_floor(stages_->energy_check_floor());
   if (restart_) {
     try {
       out_.restore(resume_.run.at("outputs"), run_dir_of(ctx_.restart));
@@ -267,7 +268,7 @@ void Run::compare_with_references() {
   insitu::InsituSpec open = insitu_spec(scene_);
   open.alphas = {0.0};
   open.lining.active = false;
-  if (!has_lining_ring(scene_)) {
+  if (!scene_.lining_ring) {
     const insitu::InsituField reference =
         keeping_threads(ctx_, [&] { return insitu::solve_insitu(mesh_, open).back(); });
     summary_.add_figures("comparison", compare_with_continuum(

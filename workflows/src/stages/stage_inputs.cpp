@@ -106,15 +106,6 @@ std::map<mesh::Zone, fdem::Material> engine_materials(const Scene& s) {
   return out;
 }
 
-std::vector<std::size_t> lining_interface_cracks(const fdem::Engine& e, const mesh::Mesh& m) {
-  std::vector<std::size_t> out;
-  for (std::size_t c = 0; c < e.n_cracks(); ++c) {
-    const auto t = e.crack_triangles(c);
-    if ((m.zone[t[0]] == mesh::kLining) != (m.zone[t[1]] == mesh::kLining)) out.push_back(c);
-  }
-  return out;
-}
-
 fdem::Material grout_material(const Scene& s) {
   return bond_material(s.grout, s.materials.at(mesh::kRock).density, s);
 }
@@ -197,17 +188,6 @@ fdem::DampingSettings stage_damping(const Scene& s) {
   d.mass_proportional = s.engine.mass_damping;
   d.kinetic = s.engine.kinetic_damping;
   return d;
-}
-
-bool kirsch_case(const Scene& s, insitu::KirschCase* k) {
-  const mesh::MeshSpec& m = s.mesh;
-  if (m.kind != mesh::ModelKind::kTunnel || m.tunnel.shape != mesh::TunnelShape::kCircular ||
-      m.tunnel.lining_thickness > 0 || s.insitu.unit_weight > 0)
-    return false;
-  const MaterialSpec& rock = s.materials.at(mesh::kRock);
-  *k = {m.tunnel.radius,    s.insitu.sigma_h, s.insitu.sigma_v,
-        s.insitu.angle_deg, rock.young,       rock.poisson};
-  return true;
 }
 
 fdem::ModelInput engine_input(const Scene& scene, const mesh::Mesh& m,

@@ -23,10 +23,6 @@ fdem::Material grout_material(const Scene& scene);
 /// The shotcrete-rock bond as an engine material ([lining_interface]).
 fdem::Material lining_interface_material(const Scene& scene);
 
-/// Crack elements joining a lining triangle to a triangle of another zone
-/// (the shotcrete-rock bond), in crack order.
-std::vector<std::size_t> lining_interface_cracks(const fdem::Engine& engine, const mesh::Mesh& m);
-
 /// The scene's bolts as the engine's bolt records.
 std::vector<fdem::BoltSpec> bolt_specs(const Scene& scene);
 
@@ -68,9 +64,5 @@ void refuse_dt_above(const Scene& scene, double dt, double limit, const char* mo
 /// The damping of the explicit stages after the hand-off step: the scene's
 /// local damping (0.8 unless set) and mass-proportional damping.
 fdem::DampingSettings stage_damping(const Scene& s);
-
-/// Whether the scene's geometry has the Kirsch closed form (circular opening,
-/// uniform stress, no lining) and its parameters.
-bool kirsch_case(const Scene& scene, insitu::KirschCase* k);
 
 }  // namespace rockfdem::workflows
