@@ -15,7 +15,6 @@
 #include <iostream>
 #include <sstream>
 
-#include "commands/commands.hpp"
 #include "outputs/continuum_comparison.hpp"
 #include "outputs/continuum_counterpart.hpp"
 #include "rockfdem/error.hpp"
@@ -195,10 +194,7 @@ void Run::place_instruments() {
 // The scene is accepted: make (or claim) OUTDIR and write what the mesh and
 // the implicit stage give.
 void Run::write_first_outputs() {
-  const bool claimed = claim_output_dir(scene_, ctx_);
-  // A fresh run's checkpoints must not mix with an earlier run's (and a
-  // folder no run claimed keeps whatever it holds).
-  if (!restart_ && claimed) remove_checkpoints(ctx_.output_dir);
+  claim_output_dir(scene_, ctx_, true);
   mesh::write_msh(mesh_, output_path(ctx_.output_dir, "mesh.msh"));
   out_.record_insitu(mesh_, fields_);
   timer_.stamp("output");
@@ -308,7 +304,7 @@ void Run::finish() {
 void Run::stop_if_interrupted(const char* after) {
   const int sig = interrupt_requested();
   if (!sig) return;
-  claim_output_dir(scene_, ctx_);
+  claim_output_dir(scene_, ctx_, false);
   summary_.status = "interrupted";
   summary_.set_timings(timer_);
   summary_.write(output_path(ctx_.output_dir, "summary.json"));

@@ -80,4 +80,7 @@ class Run {
   std::unique_ptr<StageRunner> stages_;
 };
 
+/// `rockfdem run` of a tunnel: Run(scene, ctx).run().
+int run_tunnel(const Scene& scene, const RunContext& ctx);
+
 }  // namespace rockfdem::workflows
