@@ -11,6 +11,7 @@
 
 #include "commands/commands.hpp"
 #include "rockfdem/workflows/scene_schema.hpp"
+#include "run/run.hpp"
 #include "stages/registry.hpp"
 #include "stages/stage.hpp"
 

@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include "commands/commands.hpp"
+#include "outputs/continuum_comparison.hpp"
 #include "rockfdem/coupling/atomic_file.hpp"
 #include "rockfdem/coupling/insitu_grid.hpp"
 #include "rockfdem/coupling/vtk_writer.hpp"

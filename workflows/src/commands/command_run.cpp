@@ -2,6 +2,7 @@
 // sequence (run.cpp) or a specimen's loading (run_specimen.cpp).
 #include "commands/commands.hpp"
 #include "run/interrupt.hpp"
+#include "run/run.hpp"
 
 namespace rockfdem::workflows {
 

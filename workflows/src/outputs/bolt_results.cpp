@@ -173,7 +173,7 @@ BoltFigures BoltResults::summary_entry(const fdem::Engine& e, std::size_t b,
   return f;
 }
 
-void BoltResults::finish(const fdem::Engine& e, RunRecord& summary) const {
+void BoltResults::finish(const fdem::Engine& e, RunRecord& summary, PlotWriter* plots) const {
   const auto now = profiles(e, plan_);
   BoltRecord r;
   for (std::size_t b = 0; b < now.size(); ++b) r.each.push_back(summary_entry(e, b, now[b]));
@@ -183,6 +183,13 @@ void BoltResults::finish(const fdem::Engine& e, RunRecord& summary) const {
   r.steel_cracks_broken = all.broken;
   r.grout_cracks_broken = all.grout_broken;
   summary.bolts = std::move(r);
+  if (!plots) return;
+  const std::vector<plots::PlotSeries> curves = force_curves(e);
+  const std::string title =
+      "Bolt axial force (section force) at step " + std::to_string(e.step_count()) + ", end of run";
+  if (!curves.empty())
+    plots->xy("bolt_forces.png", title, "distance from the collar [m]",
+              "axial force [kN per bar], tension +", curves);
 }
 
 nlohmann::json BoltResults::state() const {

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "outputs/output_step.hpp"
+#include "outputs/run_plots.hpp"
 #include "rockfdem/coupling/vtk_writer.hpp"
 #include "rockfdem/fdem/bolt_sections.hpp"
 #include "rockfdem/plots/plot.hpp"
@@ -34,8 +35,9 @@ class BoltResults : public OutputStepObserver {
   /// bolts_NNNN.vtp (`file`) of the profiles record() took, listed in
   /// bolts.pvd at `time`; nothing while no bolt is installed.
   void write_frame(const std::string& file, const coupling::VtkFieldData& frame);
-  /// bolt_NN.csv (final profiles) and summary "bolts".
-  void finish(const fdem::Engine& e, RunRecord& summary) const;
+  /// bolt_NN.csv (final profiles), summary "bolts" and, given `plots`,
+  /// bolt_forces.png (force_curves).
+  void finish(const fdem::Engine& e, RunRecord& summary, PlotWriter* plots) const;
   /// One bolt's summary entry; writes its bolt_NN.csv when installed.
   BoltFigures summary_entry(const fdem::Engine& e, std::size_t b,
                             const std::vector<fdem::BoltStation>& final_profile) const;

@@ -5,9 +5,20 @@
 
 #include "rockfdem/coupling/atomic_file.hpp"
 #include "rockfdem/mesh/outline.hpp"
-#include "stages/stage_inputs.hpp"
 
 namespace rockfdem::workflows {
+
+bool kirsch_case(const Scene& s, insitu::KirschCase* k) {
+  const mesh::MeshSpec& m = s.mesh;
+  if (m.kind != mesh::ModelKind::kTunnel || m.tunnel.shape != mesh::TunnelShape::kCircular ||
+      m.tunnel.lining_thickness > 0 || s.insitu.unit_weight > 0)
+    return false;
+  const MaterialSpec& rock = s.materials.at(mesh::kRock);
+  *k = {m.tunnel.radius,    s.insitu.sigma_h, s.insitu.sigma_v,
+        s.insitu.angle_deg, rock.young,       rock.poisson};
+  return true;
+}
+
 nlohmann::json compare_with_continuum(const Scene& scene, const mesh::Mesh& m,
                                       const fdem::Engine& e, const insitu::InsituField& open_hole,
                                       const std::string& csv_path) {

@@ -28,6 +28,10 @@ struct StressL2 {
   double value() const { return den > 0 ? std::sqrt(num / den) : 0.0; }
 };
 
+/// Whether the scene's geometry has the Kirsch closed form (circular opening,
+/// uniform stress, no lining) and its parameters.
+bool kirsch_case(const Scene& scene, insitu::KirschCase* k);
+
 /// Compares over the rock triangles whose centroid lies within 5 half-spans
 /// of the opening's centre (the annulus a <= r <= 5a for a circle); writes
 /// `csv_path` and returns the summary entry.

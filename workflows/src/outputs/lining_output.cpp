@@ -63,7 +63,14 @@ void LiningOutput::at_output_step(const OutputStep& step, std::vector<double>&) 
       lining_csv(e.step_count(), geometry_, forces(e), has_strength_ ? &strength_ : nullptr));
 }
 
-LiningForceFigures LiningOutput::finish(const fdem::Engine& e, const std::string& dir) {
+LiningForceFigures LiningOutput::finish(const fdem::Engine& e, const std::string& dir,
+                                        PlotWriter* plots) {
+  const LiningForceFigures f = figures(e, dir);
+  if (plots) this->plots(*plots);
+  return f;
+}
+
+LiningForceFigures LiningOutput::figures(const fdem::Engine& e, const std::string& dir) {
   last_ = forces(e);
   coupling::atomic_write_text(
       output_path(dir, "lining.csv"),
@@ -153,6 +160,29 @@ void LiningOutput::plots(PlotWriter& plots) const {
                 strength_.compressive / 1e6, strength_.tensile / 1e6);
   plots.panels("lining_capacity.png", title, "bending moment M [kNm/m]",
                {{"thrust N [kN/m]", envelopes, {{"segments, end of run", m, n}}}}, 800);
+}
+
+std::vector<std::size_t> lining_interface_cracks(const fdem::Engine& e, const mesh::Mesh& m) {
+  std::vector<std::size_t> out;
+  for (std::size_t c = 0; c < e.n_cracks(); ++c) {
+    const auto t = e.crack_triangles(c);
+    if ((m.zone[t[0]] == mesh::kLining) != (m.zone[t[1]] == mesh::kLining)) out.push_back(c);
+  }
+  return out;
+}
+
+std::optional<std::pair<long, long>> lining_bond(const fdem::Engine& e, const mesh::Mesh& m) {
+  // A bond acts only between two active triangles: a ring that was never
+  // installed (or was removed) has none.
+  long n_bond = 0, broken = 0;
+  for (std::size_t c : lining_interface_cracks(e, m)) {
+    const auto t = e.crack_triangles(c);
+    if (!e.active(t[0]) || !e.active(t[1])) continue;
+    ++n_bond;
+    broken += e.crack_state(c) == fdem::CrackState::kBroken;
+  }
+  if (n_bond == 0) return std::nullopt;
+  return std::make_pair(n_bond, broken);
 }
 
 }  // namespace rockfdem::workflows

@@ -5,7 +5,9 @@
 #pragma once
 
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "outputs/lining_forces.hpp"
@@ -31,13 +33,16 @@ class LiningOutput : public OutputStepObserver {
   void set_installed(bool installed) { installed_ = installed; }
   /// DIR/lining_<step>.csv, once installed and every lining triangle is active.
   void at_output_step(const OutputStep& step, std::vector<double>& row) override;
-  /// DIR/lining.csv and the ring's force extremes and capacity check.
-  LiningForceFigures finish(const fdem::Engine& e, const std::string& dir);
-  /// lining_forces.png and (with a compressive strength) lining_capacity.png
-  /// of the state finish() saw.
-  void plots(PlotWriter& plots) const;
+  /// DIR/lining.csv and the ring's force extremes and capacity check; given
+  /// `plots`, lining_forces.png and (with a compressive strength)
+  /// lining_capacity.png.
+  LiningForceFigures finish(const fdem::Engine& e, const std::string& dir, PlotWriter* plots);
 
  private:
+  /// DIR/lining.csv and the figures of finish().
+  LiningForceFigures figures(const fdem::Engine& e, const std::string& dir);
+  /// The pictures of finish(), of the state figures() saw.
+  void plots(PlotWriter& plots) const;
   std::vector<SectionForces> forces(const fdem::Engine& e) const;
   /// The figures of the safety factor check into `f`.
   void check_capacity(LiningForceFigures& f) const;
@@ -49,5 +54,13 @@ class LiningOutput : public OutputStepObserver {
   std::string dir_;
   bool installed_ = false;
 };
+
+/// Crack elements joining a lining triangle to a triangle of another zone
+/// (the shotcrete-rock bond), in crack order.
+std::vector<std::size_t> lining_interface_cracks(const fdem::Engine& engine, const mesh::Mesh& m);
+
+/// The bond's crack elements between two active triangles and how many
+/// broke; none when no bond acts (a ring never installed, or removed).
+std::optional<std::pair<long, long>> lining_bond(const fdem::Engine& e, const mesh::Mesh& m);
 
 }  // namespace rockfdem::workflows

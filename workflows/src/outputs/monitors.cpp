@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 #include <optional>
+#include <stdexcept>
 
 #include "rockfdem/error.hpp"
 #include "rockfdem/mesh/opening.hpp"
@@ -91,6 +92,96 @@ std::array<double, 2> node_displacement(const fdem::Engine& e, int node,
     u[1] += implicit_uy[v];
   }
   return u;
+}
+
+namespace {
+
+double mm(double metres) { return 1000 * metres; }
+
+}  // namespace
+
+KeyPoints::KeyPoints(std::vector<Monitor> monitors, const mesh::Mesh& m,
+                     std::vector<double> implicit_ux, std::vector<double> implicit_uy)
+    : monitors_(std::move(monitors)),
+      implicit_ux_(std::move(implicit_ux)),
+      implicit_uy_(std::move(implicit_uy)) {
+  for (const mesh::TaggedEdge& edge : m.edges)
+    if (edge.tag >= mesh::kBottom && edge.tag <= mesh::kLeft) {
+      boundary_vertices_.push_back(edge.a);
+      boundary_vertices_.push_back(edge.b);
+    }
+  std::sort(boundary_vertices_.begin(), boundary_vertices_.end());
+  boundary_vertices_.erase(std::unique(boundary_vertices_.begin(), boundary_vertices_.end()),
+                           boundary_vertices_.end());
+}
+
+const Monitor& KeyPoints::find(const std::string& name) const {
+  for (const Monitor& m : monitors_)
+    if (m.name == name) return m;
+  throw std::logic_error("no monitor " + name);
+}
+
+RigidFit KeyPoints::boundary_fit(const fdem::Engine& e) const {
+  if (boundary_vertices_.empty()) return {};
+  // Every monitor of a step needs the same fit: compute it once per step.
+  if (fit_step_ == e.step_count()) return fit_;
+  std::vector<double> x, y, ux, uy;
+  const std::vector<int>& vertex = e.node_vertex();
+  const std::vector<double>& pos = e.positions();
+  for (std::size_t node = 0; node < e.n_nodes(); ++node) {
+    if (!std::binary_search(boundary_vertices_.begin(), boundary_vertices_.end(), vertex[node]))
+      continue;
+    const auto d = e.displacement(node);
+    x.push_back(pos[2 * node] - d[0]);
+    y.push_back(pos[2 * node + 1] - d[1]);
+    ux.push_back(d[0]);
+    uy.push_back(d[1]);
+  }
+  fit_ = rigid_fit(x, y, ux, uy);
+  fit_step_ = e.step_count();
+  return fit_;
+}
+
+NodeDisplacement KeyPoints::node_displacements(const fdem::Engine& e) const {
+  // Remove the engine's mean translation of the outer boundary (the
+  // implicit part already has its rigid motion removed).
+  const RigidFit fit = boundary_fit(e);
+  return [&e, this, fit](int node) {
+    std::array<double, 2> u = node_displacement(e, node, implicit_ux_, implicit_uy_);
+    return std::array<double, 2>{u[0] - fit.tx, u[1] - fit.ty};
+  };
+}
+
+std::array<double, 2> KeyPoints::displacement(const fdem::Engine& e, const Monitor& mon) const {
+  return node_displacements(e)(mon.node);
+}
+
+std::array<double, 4> KeyPoints::figures(const fdem::Engine& e, const Monitor& mon) const {
+  const std::array<double, 2> u = displacement(e, mon);
+  return {mm(u[0]), mm(u[1]), mm(std::hypot(u[0], u[1])), mm(radial_convergence(mon, u))};
+}
+
+double KeyPoints::convergence(const fdem::Engine& e, const std::string& a,
+                              const std::string& b) const {
+  const Monitor &ma = find(a), &mb = find(b);
+  const auto ua = displacement(e, ma), ub = displacement(e, mb);
+  const double dx = mb.x - ma.x, dy = mb.y - ma.y, len = std::hypot(dx, dy);
+  return ((ua[0] - ub[0]) * dx + (ua[1] - ub[1]) * dy) / len;
+}
+
+std::array<double, 3> KeyPoints::chords_mm(const fdem::Engine& e) const {
+  return {-mm(displacement(e, find("vault"))[1]), mm(convergence(e, "left_wall", "right_wall")),
+          mm(convergence(e, "left_shoulder", "right_shoulder"))};
+}
+
+std::pair<std::string, double> KeyPoints::largest(const fdem::Engine& e,
+                                                  const std::vector<Monitor>& monitors) const {
+  std::pair<std::string, double> most{"", 0.0};
+  for (const Monitor& mon : monitors) {
+    const auto u = displacement(e, mon);
+    if (std::hypot(u[0], u[1]) > most.second) most = {mon.name, std::hypot(u[0], u[1])};
+  }
+  return most;
 }
 
 }  // namespace rockfdem::workflows

@@ -12,6 +12,8 @@
 #include <string>
 #include <vector>
 
+#include "outputs/material_point.hpp"
+#include "outputs/outer_boundary.hpp"
 #include "rockfdem/fdem/engine.hpp"
 #include "rockfdem/mesh/mesh.hpp"
 #include "rockfdem/mesh/mesh_spec.hpp"
@@ -49,5 +51,45 @@ std::array<double, 2> node_displacement(const fdem::Engine& e, int node,
 std::array<double, 2> monitor_displacement(const fdem::Engine& e, const Monitor& mon,
                                            const std::vector<double>& implicit_ux,
                                            const std::vector<double>& implicit_uy);
+
+/// A tunnel run's key points as its outputs read them: displacements from
+/// the in-situ state (the implicit stage's part plus the engine's) with the
+/// outer boundary's mean translation removed, and the closure of chords
+/// between points.
+class KeyPoints {
+ public:
+  KeyPoints() = default;
+  /// `m`'s outer boundary defines the rigid translation removed;
+  /// `implicit_ux`, `implicit_uy` are the hand-off field's per mesh vertex
+  /// (empty: none).
+  KeyPoints(std::vector<Monitor> monitors, const mesh::Mesh& m, std::vector<double> implicit_ux,
+            std::vector<double> implicit_uy);
+  const std::vector<Monitor>& monitors() const { return monitors_; }
+  /// The key point called `name` (vault, left_wall, ...).
+  const Monitor& find(const std::string& name) const;
+  /// Rigid motion of the outer boundary in the engine (fit to its nodes).
+  RigidFit boundary_fit(const fdem::Engine& e) const;
+  /// Any engine node's displacement, as the instruments read it.
+  NodeDisplacement node_displacements(const fdem::Engine& e) const;
+  /// A key point's displacement [m].
+  std::array<double, 2> displacement(const fdem::Engine& e, const Monitor& mon) const;
+  /// One key point's figures [mm]: ux, uy, |u| and the component towards
+  /// the opening (convergence positive).
+  std::array<double, 4> figures(const fdem::Engine& e, const Monitor& mon) const;
+  /// The vault's settlement, the walls' and the shoulders' chord
+  /// convergence (closure along the chord, positive inwards) [mm].
+  std::array<double, 3> chords_mm(const fdem::Engine& e) const;
+  /// The key point of `monitors` displaced most and |u| [m].
+  std::pair<std::string, double> largest(const fdem::Engine& e,
+                                         const std::vector<Monitor>& monitors) const;
+
+ private:
+  double convergence(const fdem::Engine& e, const std::string& a, const std::string& b) const;
+  std::vector<Monitor> monitors_;
+  std::vector<double> implicit_ux_, implicit_uy_;
+  std::vector<int> boundary_vertices_;  ///< outer boundary, for the rigid translation
+  mutable long fit_step_ = -1;          ///< step the cached fit belongs to
+  mutable RigidFit fit_;
+};
 
 }  // namespace rockfdem::workflows

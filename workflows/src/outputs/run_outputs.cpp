@@ -7,8 +7,8 @@
 #include <iostream>
 
 #include "outputs/broken_zone.hpp"
+#include "outputs/continuum_comparison.hpp"
 #include "outputs/engine_report.hpp"
-#include "outputs/run_pictures.hpp"
 #include "outputs/run_report.hpp"
 #include "rockfdem/coupling/atomic_file.hpp"
 #include "rockfdem/coupling/fdem_model.hpp"
@@ -16,7 +16,6 @@
 #include "rockfdem/fdem/bolt_output.hpp"
 #include "run/checkpoint.hpp"
 #include "run/output_dir.hpp"
-#include "stages/stage_inputs.hpp"
 
 namespace rockfdem::workflows {
 namespace {
@@ -30,82 +29,17 @@ std::string detail_number(double v) {
   return text;
 }
 
-// Monitors' mesh vertices: the implicit fields are per vertex.
-int vertex_of(const fdem::Engine& e, const Monitor& mon) { return e.node_vertex()[mon.node]; }
-
-const Monitor& find(const std::vector<Monitor>& ms, const std::string& name) {
-  for (const Monitor& m : ms)
-    if (m.name == name) return m;
-  throw std::logic_error("no monitor " + name);
-}
-
 }  // namespace
 
-RigidFit RunOutputs::boundary_fit(const fdem::Engine& e) const {
-  if (boundary_vertices_.empty()) return {};
-  // Every monitor of a step needs the same fit: compute it once per step.
-  if (fit_step_ == e.step_count()) return fit_;
-  std::vector<double> x, y, ux, uy;
-  const std::vector<int>& vertex = e.node_vertex();
-  const std::vector<double>& pos = e.positions();
-  for (std::size_t node = 0; node < e.n_nodes(); ++node) {
-    if (!std::binary_search(boundary_vertices_.begin(), boundary_vertices_.end(), vertex[node]))
-      continue;
-    const auto d = e.displacement(node);
-    x.push_back(pos[2 * node] - d[0]);
-    y.push_back(pos[2 * node + 1] - d[1]);
-    ux.push_back(d[0]);
-    uy.push_back(d[1]);
-  }
-  fit_ = rigid_fit(x, y, ux, uy);
-  fit_step_ = e.step_count();
-  return fit_;
-}
-
 void RunOutputs::check_rigid_motion(const fdem::Engine& e, long step) {
-  const RigidFit fit = boundary_fit(e);
+  const RigidFit fit = key_points_.boundary_fit(e);
   max_rotation_deg_ = std::max(max_rotation_deg_, std::abs(fit.rotation) * 180 / M_PI);
   check_rigid_rotation(fit, scene_.insitu.rollers, step);
 }
 
-std::array<double, 2> RunOutputs::displacement(const fdem::Engine& e, const Monitor& mon) const {
-  return node_displacements(e)(mon.node);
-}
-
-NodeDisplacement RunOutputs::node_displacements(const fdem::Engine& e) const {
-  static const std::vector<double> none;
-  const std::vector<double>& ux = fields_.empty() ? none : fields_.back().ux;
-  const std::vector<double>& uy = fields_.empty() ? none : fields_.back().uy;
-  // Remove the engine's mean translation of the outer boundary (the
-  // implicit part already has its rigid motion removed).
-  const RigidFit fit = boundary_fit(e);
-  return [&e, &ux, &uy, fit](int node) {
-    std::array<double, 2> u = node_displacement(e, node, ux, uy);
-    return std::array<double, 2>{u[0] - fit.tx, u[1] - fit.ty};
-  };
-}
-
-std::array<double, 4> RunOutputs::key_point(const fdem::Engine& e, const Monitor& mon) const {
-  const std::array<double, 2> u = displacement(e, mon);
-  return {mm(u[0]), mm(u[1]), mm(std::hypot(u[0], u[1])), mm(radial_convergence(mon, u))};
-}
-
-double RunOutputs::convergence(const fdem::Engine& e, const std::vector<Monitor>& ms,
-                               const std::string& a, const std::string& b) const {
-  const Monitor &ma = find(ms, a), &mb = find(ms, b);
-  const auto ua = displacement(e, ma), ub = displacement(e, mb);
-  const double dx = mb.x - ma.x, dy = mb.y - ma.y, len = std::hypot(dx, dy);
-  return ((ua[0] - ub[0]) * dx + (ua[1] - ub[1]) * dy) / len;
-}
-
 std::pair<std::string, double> RunOutputs::largest_key_point(
     const fdem::Engine& e, const std::vector<Monitor>& monitors) const {
-  std::pair<std::string, double> most{"", 0.0};
-  for (const Monitor& mon : monitors) {
-    const auto u = displacement(e, mon);
-    if (std::hypot(u[0], u[1]) > most.second) most = {mon.name, std::hypot(u[0], u[1])};
-  }
-  return most;
+  return key_points_.largest(e, monitors);
 }
 
 RunOutputs::RunOutputs(const Scene& scene, const RunContext& ctx, RunRecord& summary)
@@ -148,17 +82,9 @@ std::vector<std::string> RunOutputs::history_columns(const std::vector<Monitor>&
 }
 
 void RunOutputs::begin_history(const std::vector<Monitor>& monitors, const mesh::Mesh& m) {
-  energy_floor_ = energy_floor(scene_, m);
-  for (const mesh::TaggedEdge& edge : m.edges)
-    if (edge.tag >= mesh::kBottom && edge.tag <= mesh::kLeft) {
-      boundary_vertices_.push_back(edge.a);
-      boundary_vertices_.push_back(edge.b);
-    }
-  std::sort(boundary_vertices_.begin(), boundary_vertices_.end());
-  boundary_vertices_.erase(std::unique(boundary_vertices_.begin(), boundary_vertices_.end()),
-                           boundary_vertices_.end());
-  monitors_ = monitors;
-  if (has_lining_ring(scene_)) {
+  key_points_ = fields_.empty() ? KeyPoints(monitors, m, {}, {})
+                                : KeyPoints(monitors, m, fields_.back().ux, fields_.back().uy);
+  if (scene_.lining_ring) {
     lining_ = std::make_unique<LiningOutput>(scene_, m, ctx_.output_dir);
     if (!lining_->has_ring()) lining_.reset();
     if (lining_) lining_->set_installed(lining_installed_);
@@ -193,15 +119,13 @@ void RunOutputs::record_rows(const fdem::Engine& e, const mesh::Mesh& m, const s
                           double(b.mode_I),
                           double(b.mode_II),
                           double(b.mixed)};
-  for (const Monitor& mon : monitors_)
-    for (double v : key_point(e, mon)) row.push_back(v);
-  row.push_back(-mm(displacement(e, find(monitors_, "vault"))[1]));
-  row.push_back(mm(convergence(e, monitors_, "left_wall", "right_wall")));
-  row.push_back(mm(convergence(e, monitors_, "left_shoulder", "right_shoulder")));
-  row.push_back(boundary_fit(e).rotation * 180 / M_PI);
+  for (const Monitor& mon : key_points_.monitors())
+    for (double v : key_points_.figures(e, mon)) row.push_back(v);
+  for (double v : key_points_.chords_mm(e)) row.push_back(v);
+  row.push_back(key_points_.boundary_fit(e).rotation * 180 / M_PI);
   row.push_back(support_ratio);
   for (double v : energy_row(e.energy_balance())) row.push_back(v);
-  const NodeDisplacement u = node_displacements(e);
+  const NodeDisplacement u = key_points_.node_displacements(e);
   const OutputStep step{e, m, stage, int(stage_names_.size() - 1), u};
   for (OutputStepObserver* o : observers()) o->at_output_step(step, row);
   history_->add(row);
@@ -213,28 +137,26 @@ void RunOutputs::record_frame(const fdem::Engine& e, const mesh::Mesh& m, const 
   // The hand-off step's dt, once it passed (a failed one is no good state).
   if (stage == "handoff" && stage_names_.size() == 1) handoff_dt_ = e.dt();
   if (scene_.output.vtk) {
-    const NodeDisplacement u = node_displacements(e);
+    const NodeDisplacement u = key_points_.node_displacements(e);
     std::vector<double> no_columns;
     frames_->at_output_step({e, m, stage, int(stage_names_.size() - 1), u}, no_columns);
   }
-  last_good_.take(e, e.energy_balance(), monitor_figures(e, monitors_));
+  last_good_.take(e, e.energy_balance(), monitor_figures(e));
   timer.stamp("output");
 }
 
-MonitorRecord RunOutputs::monitor_figures(const fdem::Engine& e,
-                                          const std::vector<Monitor>& monitors) const {
+MonitorRecord RunOutputs::monitor_figures(const fdem::Engine& e) const {
   MonitorRecord r;
-  for (const Monitor& mon : monitors) {
-    const auto k = key_point(e, mon);
+  for (const Monitor& mon : key_points_.monitors()) {
+    const auto k = key_points_.figures(e, mon);
     r.key_points[mon.name] = {k[0],       k[1],         k[2],         k[3],        mon.node_x,
                               mon.node_y, mon.inward_x, mon.inward_y, std::nullopt};
   }
   // Per point (as field convergence points are read) and, apart, the
   // change of length of two chords between points.
-  r.chords = ChordFigures{-mm(displacement(e, find(monitors, "vault"))[1]),
-                          mm(convergence(e, monitors, "left_wall", "right_wall")),
-                          mm(convergence(e, monitors, "left_shoulder", "right_shoulder"))};
-  if (instruments_) instruments_->add_monitors(r, node_displacements(e));
+  const std::array<double, 3> chords = key_points_.chords_mm(e);
+  r.chords = ChordFigures{chords[0], chords[1], chords[2]};
+  if (instruments_) instruments_->add_monitors(r, key_points_.node_displacements(e));
   return r;
 }
 
@@ -304,53 +226,45 @@ void RunOutputs::restore(const nlohmann::json& s, const std::string& from_dir) {
     }
 }
 
-void RunOutputs::lining_outputs(const fdem::Engine& e, const mesh::Mesh& m) {
-  // A bond acts only between two active triangles: a ring that was never
-  // installed (or was removed) has none.
-  long n_bond = 0, broken = 0;
-  for (std::size_t c : lining_interface_cracks(e, m)) {
-    const auto t = e.crack_triangles(c);
-    if (!e.active(t[0]) || !e.active(t[1])) continue;
-    ++n_bond;
-    broken += e.crack_state(c) == fdem::CrackState::kBroken;
-  }
+bool RunOutputs::lining_outputs(const fdem::Engine& e, const mesh::Mesh& m) {
   LiningRecord& r = summary_.lining;
   r = LiningRecord{};
-  if (n_bond > 0) r.interface = std::make_pair(n_bond, broken);
-  if (lining_ && lining_installed_ && lining_->installed(e))
-    r.forces = lining_->finish(e, ctx_.output_dir);
-  if (r.empty() && has_lining_ring(scene_))
+  r.interface = lining_bond(e, m);
+  const bool forces = lining_ && lining_installed_ && lining_->installed(e);
+  if (!r.interface && !forces && scene_.lining_ring)
     summary_.skipped.push_back("lining: the ring is not installed at the end of the run");
+  return forces;
 }
 
-void RunOutputs::bolt_outputs(const fdem::Engine& e, const fdem::BoltPlan& bolts) {
-  summary_.counts.bolts = long(bolts.specs.size());
-  if (bolt_results_)
-    bolt_results_->finish(e, summary_);
-  else
-    summary_.skipped.push_back("bolts: none in the scene");
-}
-
-void RunOutputs::finish(const fdem::Engine& e, const mesh::Mesh& m,
-                        const std::vector<Monitor>& monitors, PhaseTimer& timer,
+void RunOutputs::finish(const fdem::Engine& e, const mesh::Mesh& m, PhaseTimer& timer,
                         const fdem::BoltPlan& bolts) {
   report_engine(e, timer, summary_);
   warn_if_unbalanced(e, energy_floor_, ctx_.quiet, summary_);
   report_dt();
-  bolt_outputs(e, bolts);
-  summary_.monitors = monitor_figures(e, monitors);
+  summary_.counts.bolts = long(bolts.specs.size());
+  if (!bolt_results_) summary_.skipped.push_back("bolts: none in the scene");
+  summary_.monitors = monitor_figures(e);
   add_since_support(summary_.monitors);
-  summary_.outer_boundary = OuterBoundaryFigures{boundary_fit(e).rotation * 180 / M_PI,
+  const RigidFit fit = key_points_.boundary_fit(e);
+  summary_.outer_boundary = OuterBoundaryFigures{fit.rotation * 180 / M_PI,
                                                  max_rotation_deg_,
                                                  kRigidRotationLimitDeg,
-                                                 {mm(boundary_fit(e).tx), mm(boundary_fit(e).ty)},
+                                                 {mm(fit.tx), mm(fit.ty)},
                                                  scene_.insitu.rollers ? "rollers" : "tractions"};
-  record_ground_reaction(e, monitors);
-  lining_outputs(e, m);
+  record_ground_reaction(e);
+  const bool lining_forces = lining_outputs(e, m);
   damage_outputs(e, m);
-  if (instruments_) instruments_->finish(summary_, e, m, node_displacements(e));
+  if (instruments_) instruments_->finish(summary_, e, m, key_points_.node_displacements(e));
   summary_.history_stages = stage_names_;  // history.csv's "stage" column indexes this list
-  if (scene_.output.plots) plots(e, m);
+  // The run's curves, then the support's outputs (each with its plots),
+  // then the pictures of the final state.
+  const std::unique_ptr<PlotWriter> plots = curves(e);
+  if (lining_forces) summary_.lining.forces = lining_->finish(e, ctx_.output_dir, plots.get());
+  if (bolt_results_) bolt_results_->finish(e, summary_, plots.get());
+  if (plots) {
+    tunnel_pictures(*plots, {e, m, scene_, bolts_}, key_points_.node_displacements(e));
+    pictures_ = plots->rendered();
+  }
   timer.stamp("output");
   summary_.set_timings(timer);
   summary_.write(output_path(ctx_.output_dir, "summary.json"));
@@ -366,9 +280,8 @@ void RunOutputs::finish(const fdem::Engine& e, const mesh::Mesh& m,
 
 // Ground reaction curve, implicit part: the core's share of the in-situ
 // stress (alpha) against the vault settlement it allows.
-void RunOutputs::record_ground_reaction(const fdem::Engine& e,
-                                        const std::vector<Monitor>& monitors) {
-  const int vault_vertex = vertex_of(e, find(monitors, "vault"));
+void RunOutputs::record_ground_reaction(const fdem::Engine& e) {
+  const int vault_vertex = e.node_vertex()[key_points_.find("vault").node];
   std::vector<GroundReactionPoint>& grc = summary_.ground_reaction_curve;
   grc.clear();
   for (const insitu::InsituField& f : fields_)
@@ -437,7 +350,7 @@ std::map<std::string, double> RunOutputs::since_support() const {
   const auto add = [&](const std::string& name, const std::string& column, double v) {
     out[name] = v - history_->column(column)[*row];
   };
-  for (const Monitor& m : monitors_) {
+  for (const Monitor& m : key_points_.monitors()) {
     const auto k = mon.key_points.find(m.name);
     if (k != mon.key_points.end() && !mon.points.count(m.name))
       add(m.name, m.name + "_radial_mm", k->second.radial_mm);
@@ -467,77 +380,16 @@ void RunOutputs::write_report() const {
   workflows::write_report(ctx_.output_dir, scene_, summary_, extras);
 }
 
-void RunOutputs::plots(const fdem::Engine& e, const mesh::Mesh& m) {
-  PlotWriter plots(ctx_.output_dir, summary_, ctx_.quiet);
-  if (!plots.available()) return;
-  const std::vector<plots::PlotMarker> markers = stage_markers(timeline());
-  time_plots(plots, e, markers);
-  ground_reaction_plot(plots);
-  if (lining_) lining_->plots(plots);
-  if (bolt_results_) {
-    const std::vector<plots::PlotSeries> bolts = bolt_results_->force_curves(e);
-    const std::string title = "Bolt axial force (section force) at step " +
-                              std::to_string(e.step_count()) + ", end of run";
-    if (!bolts.empty())
-      plots.xy("bolt_forces.png", title, "distance from the collar [m]",
-               "axial force [kN per bar], tension +", bolts);
-  }
-  const PictureContext c{e, m, scene_, bolts_};
-  const coupling::VtkGrid grid = picture_grid(e);
-  plots.picture("displacement.png", grid, displacement_picture(c, node_displacements(e)));
-  plots.picture("sigma_max_compressive.png", grid, principal_picture(c, true));
-  plots.picture("sigma_min_compressive.png", grid, principal_picture(c, false));
-  plots.final_mesh(e, false);
-  pictures_ = plots.rendered();
-}
-
-void RunOutputs::time_plots(PlotWriter& plots, const fdem::Engine& e,
-                            const std::vector<plots::PlotMarker>& markers) {
-  const History& h = *history_;
-  const std::vector<double> t = h.column("time");
-  // From the support's installation where asked (and installed): the
-  // rows from then on, less their value then.
-  const std::optional<std::size_t> support = support_row();
-  const bool since = scene_.output.convergence_from_support && support;
-  const std::size_t from = since ? *support : 0;
-  const auto curve = [&](const std::string& column) {
-    return since ? since_row(h.column(column), from) : h.column(column);
-  };
-  const std::vector<double> tt(t.begin() + long(from), t.end());
-  const std::string origin = since ? "since the support's installation" : "from the in-situ state";
-  std::vector<plots::PlotSeries> points;
-  for (const Monitor& mon : monitors_)
-    points.push_back({mon.name, tt, curve(mon.name + "_radial_mm")});
-  plots.xy("convergence.png", "Key points: radial displacement towards the opening",
-           time_axis_label(e), "radial displacement " + origin + " [mm]", points, markers);
-  plots.xy("chord_convergence.png", "Chord convergence (closure between key points)",
-           time_axis_label(e), "closure " + origin + " [mm]",
-           {{"walls (chord)", tt, curve("wall_chord_convergence_mm")},
-            {"shoulders (chord)", tt, curve("shoulder_chord_convergence_mm")}},
-           markers);
-  plots.broken_cracks(e, h, markers);
-}
-
-void RunOutputs::ground_reaction_plot(PlotWriter& plots) {
-  // The implicit stage's points (alpha, the vault's displacement it
-  // allows), and apart the run's final state, which is no point of the
-  // unsupported curve: the support carries the load there.
-  std::vector<double> ratio, settlement;
-  const std::vector<GroundReactionPoint>& grc = summary_.ground_reaction_curve;
-  for (std::size_t i = 0; i + 1 < grc.size(); ++i) {
-    ratio.push_back(grc[i].support_pressure_ratio);
-    settlement.push_back(grc[i].vault_settlement_mm);
-  }
-  std::vector<plots::PlotSeries> series{
-      {"implicit stage: core stiffness factor alpha", settlement, ratio}};
-  if (!grc.empty())
-    series.push_back({grc.back().point,
-                      {grc.back().vault_settlement_mm},
-                      {grc.back().support_pressure_ratio},
-                      true});
-  plots.xy("ground_reaction.png", "Ground reaction curve at the vault",
-           "vault radial displacement (settlement) from the in-situ state [mm]",
-           "support pressure ratio p/p0 = core stiffness factor alpha [-]", series);
+std::unique_ptr<PlotWriter> RunOutputs::curves(const fdem::Engine& e) {
+  if (!scene_.output.plots) return nullptr;
+  auto plots = std::make_unique<PlotWriter>(ctx_.output_dir, summary_, ctx_.quiet);
+  if (!plots->available()) return nullptr;
+  // From the support's installation where asked (and installed).
+  const std::optional<std::size_t> from =
+      scene_.output.convergence_from_support ? support_row() : std::nullopt;
+  tunnel_curves(*plots, e, *history_, key_points_.monitors(), timeline(), from);
+  ground_reaction_plot(*plots, summary_.ground_reaction_curve);
+  return plots;
 }
 
 }  // namespace rockfdem::workflows

@@ -51,8 +51,11 @@ class RunOutputs : public StepOutputs {
   }
   /// A `lining` or `bolts` stage installed its support (Instruments).
   void support_installed(const fdem::Engine& e) override {
-    if (instruments_) instruments_->support_installed(node_displacements(e));
+    if (instruments_) instruments_->support_installed(key_points_.node_displacements(e));
   }
+  /// The floor of the energy check (energy_floor), computed once by the
+  /// stage loop: below it an unbalanced energy is no warning at the end.
+  void set_energy_floor(double floor) { energy_floor_ = floor; }
   /// Whether the lining ring is installed as lining (before, its triangles
   /// are ground still to be excavated): its forces are written from then.
   void set_lining_installed(bool installed) override;
@@ -77,8 +80,8 @@ class RunOutputs : public StepOutputs {
   /// the restart writes to another directory.
   void restore(const nlohmann::json& state, const std::string& from_dir);
   /// Counts, monitors, broken cracks, hash, plots, timings; writes summary.json.
-  void finish(const fdem::Engine& e, const mesh::Mesh& m, const std::vector<Monitor>& monitors,
-              PhaseTimer& timer, const fdem::BoltPlan& bolts);
+  void finish(const fdem::Engine& e, const mesh::Mesh& m, PhaseTimer& timer,
+              const fdem::BoltPlan& bolts);
   /// The hand-off state, before the first explicit step: what a failure in
   /// that step reports as the last good state (nothing is written yet).
   void keep_start(const fdem::Engine& e) { last_good_.take(e, e.energy_balance()); }
@@ -89,20 +92,16 @@ class RunOutputs : public StepOutputs {
  private:
   /// The record's monitors: each key point's ux, uy [mm] and position, vault
   /// settlement, wall and shoulder convergence [mm], the scene's monitors.
-  MonitorRecord monitor_figures(const fdem::Engine& e, const std::vector<Monitor>& monitors) const;
+  MonitorRecord monitor_figures(const fdem::Engine& e) const;
   /// The hand-off step and dt_min, dt_max over it, the stages' dt and the
   /// last step's (the record holds the stage reports by then).
   void report_dt();
   /// The record's ground reaction curve: the implicit stage's points and
   /// the end of the run (after the monitors).
-  void record_ground_reaction(const fdem::Engine& e, const std::vector<Monitor>& monitors);
-  void plots(const fdem::Engine& e, const mesh::Mesh& m);
-  /// convergence.png, chord_convergence.png (from the support's
-  /// installation where the scene asks) and broken.png, with `markers`.
-  void time_plots(PlotWriter& plots, const fdem::Engine& e,
-                  const std::vector<plots::PlotMarker>& markers);
-  /// ground_reaction.png from the record's ground reaction curve.
-  void ground_reaction_plot(PlotWriter& plots);
+  void record_ground_reaction(const fdem::Engine& e);
+  /// With plots asked for and a display: the writer, after the run's
+  /// curves against time (run_plots.hpp) and ground_reaction.png; else null.
+  std::unique_ptr<PlotWriter> curves(const fdem::Engine& e);
   /// The explicit stages on the history's time axis (run_timeline.hpp).
   std::vector<StageSpan> timeline() const;
   /// The history row of the support's installation (the first lining or
@@ -115,28 +114,14 @@ class RunOutputs : public StepOutputs {
   void add_since_support(MonitorRecord& monitors) const;
   /// report.md from the record as it stands.
   void write_report() const;
-  /// bolt_NN.csv (axial stress and force along each bolt) and summary "bolts".
-  void bolt_outputs(const fdem::Engine& e, const fdem::BoltPlan& bolts);
   /// summary "resolution" (h / l_ch) and "broken_zone" (depth, clearance to
   /// the fracture zone's edge), with warnings when either limits the answer.
   void damage_outputs(const fdem::Engine& e, const mesh::Mesh& m);
-  /// summary "lining": the lining-rock crack elements and how many broke,
-  /// and the ring's section forces (lining.csv).
-  void lining_outputs(const fdem::Engine& e, const mesh::Mesh& m);
-  /// Rigid motion of the outer boundary in the engine (fit to its nodes).
-  RigidFit boundary_fit(const fdem::Engine& e) const;
+  /// summary "lining": the lining-rock crack elements and how many broke;
+  /// returns whether the ring is installed, to report its section forces.
+  bool lining_outputs(const fdem::Engine& e, const mesh::Mesh& m);
   /// Stops the run (NumericalError) when the boundary turns as a rigid body.
   void check_rigid_motion(const fdem::Engine& e, long step);
-  /// One key point's figures [mm]: ux, uy, |u| and the component towards
-  /// the opening (convergence positive).
-  std::array<double, 4> key_point(const fdem::Engine& e, const Monitor& mon) const;
-  /// Monitor displacement from the in-situ state (implicit part + engine increment).
-  std::array<double, 2> displacement(const fdem::Engine& e, const Monitor& mon) const;
-  /// The same for any engine node, as the instruments read it.
-  NodeDisplacement node_displacements(const fdem::Engine& e) const;
-  /// Closure between two monitors along the line joining them, positive inwards [m].
-  double convergence(const fdem::Engine& e, const std::vector<Monitor>& ms, const std::string& a,
-                     const std::string& b) const;
   const Scene& scene_;
   const RunContext& ctx_;
   RunRecord& summary_;
@@ -148,15 +133,12 @@ class RunOutputs : public StepOutputs {
   std::unique_ptr<BoltResults> bolt_results_;  ///< with bolts in the scene
   std::unique_ptr<LiningOutput> lining_;       ///< null: no lining ring
   bool lining_installed_ = false;
-  std::vector<int> boundary_vertices_;  ///< outer boundary, for the rigid translation
-  mutable long fit_step_ = -1;          ///< step the cached fit belongs to
-  mutable RigidFit fit_;
-  double max_rotation_deg_ = 0;    ///< largest |rotation| of the outer boundary so far
-  std::vector<Monitor> monitors_;  ///< the key points (history columns, pictures' window)
+  KeyPoints key_points_;         ///< from begin_history
+  double max_rotation_deg_ = 0;  ///< largest |rotation| of the outer boundary so far
   std::vector<std::string> stage_names_;
   std::vector<std::string> pictures_;  ///< PNG files rendered, for report.md
   double handoff_dt_ = 0;    ///< dt of the hand-off step (0: not taken by this run's record)
-  double energy_floor_ = 0;  ///< energy_floor of the model (set by begin_history)
+  double energy_floor_ = 0;  ///< energy_floor of the model (set_energy_floor)
   LastGoodState last_good_;
   double fdem_seconds_at_start_ = 0;
 };

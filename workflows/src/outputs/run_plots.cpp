@@ -3,7 +3,6 @@
 #include <cmath>
 #include <iostream>
 
-#include "outputs/run_pictures.hpp"
 #include "run/output_dir.hpp"
 
 namespace rockfdem::workflows {
@@ -73,6 +72,59 @@ void PlotWriter::final_mesh(const fdem::Engine& e, bool most_tensile) {
 std::string time_axis_label(const fdem::Engine& e) {
   // Scaled masses make the simulated time a pseudo-time: say so on the axis.
   return e.mass_scaling_report().enabled ? "pseudo-time [s] (mass-scaled)" : "time [s]";
+}
+
+void tunnel_curves(PlotWriter& plots, const fdem::Engine& e, const History& h,
+                   const std::vector<Monitor>& monitors, const std::vector<StageSpan>& spans,
+                   std::optional<std::size_t> from) {
+  const std::vector<plots::PlotMarker> markers = stage_markers(spans);
+  const std::vector<double> t = h.column("time");
+  const std::size_t first = from.value_or(0);
+  const auto curve = [&](const std::string& column) {
+    return from ? since_row(h.column(column), first) : h.column(column);
+  };
+  const std::vector<double> tt(t.begin() + long(first), t.end());
+  const std::string origin = from ? "since the support's installation" : "from the in-situ state";
+  std::vector<plots::PlotSeries> points;
+  for (const Monitor& mon : monitors)
+    points.push_back({mon.name, tt, curve(mon.name + "_radial_mm")});
+  plots.xy("convergence.png", "Key points: radial displacement towards the opening",
+           time_axis_label(e), "radial displacement " + origin + " [mm]", points, markers);
+  plots.xy("chord_convergence.png", "Chord convergence (closure between key points)",
+           time_axis_label(e), "closure " + origin + " [mm]",
+           {{"walls (chord)", tt, curve("wall_chord_convergence_mm")},
+            {"shoulders (chord)", tt, curve("shoulder_chord_convergence_mm")}},
+           markers);
+  plots.broken_cracks(e, h, markers);
+}
+
+void ground_reaction_plot(PlotWriter& plots, const std::vector<GroundReactionPoint>& grc) {
+  // The implicit stage's points (alpha, the vault's displacement it
+  // allows), and apart the run's final state, which is no point of the
+  // unsupported curve: the support carries the load there.
+  std::vector<double> ratio, settlement;
+  for (std::size_t i = 0; i + 1 < grc.size(); ++i) {
+    ratio.push_back(grc[i].support_pressure_ratio);
+    settlement.push_back(grc[i].vault_settlement_mm);
+  }
+  std::vector<plots::PlotSeries> series{
+      {"implicit stage: core stiffness factor alpha", settlement, ratio}};
+  if (!grc.empty())
+    series.push_back({grc.back().point,
+                      {grc.back().vault_settlement_mm},
+                      {grc.back().support_pressure_ratio},
+                      true});
+  plots.xy("ground_reaction.png", "Ground reaction curve at the vault",
+           "vault radial displacement (settlement) from the in-situ state [mm]",
+           "support pressure ratio p/p0 = core stiffness factor alpha [-]", series);
+}
+
+void tunnel_pictures(PlotWriter& plots, const PictureContext& c, const NodeDisplacement& u) {
+  const coupling::VtkGrid grid = picture_grid(c.e);
+  plots.picture("displacement.png", grid, displacement_picture(c, u));
+  plots.picture("sigma_max_compressive.png", grid, principal_picture(c, true));
+  plots.picture("sigma_min_compressive.png", grid, principal_picture(c, false));
+  plots.final_mesh(c.e, false);
 }
 
 void specimen_plots(const fdem::Engine& e, const History& h, bool disc, const std::string& dir,

@@ -4,10 +4,14 @@
 // display went away) is named there too.
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "outputs/history.hpp"
+#include "outputs/monitors.hpp"
+#include "outputs/run_pictures.hpp"
+#include "outputs/run_timeline.hpp"
 #include "rockfdem/fdem/engine.hpp"
 #include "rockfdem/mesh/mesh.hpp"
 #include "rockfdem/plots/plot.hpp"
@@ -51,6 +55,24 @@ class PlotWriter {
 
 /// The time axis' label: pseudo-time when the masses are scaled.
 std::string time_axis_label(const fdem::Engine& e);
+
+/// A tunnel run's curves against (pseudo-)time, with the stages' markers
+/// (`spans`): convergence.png (the key points' radial displacement),
+/// chord_convergence.png (the chords' closure), from the in-situ state or,
+/// given history row `from` (the support's installation), from that row
+/// on less their value there; and broken.png.
+void tunnel_curves(PlotWriter& plots, const fdem::Engine& e, const History& h,
+                   const std::vector<Monitor>& monitors, const std::vector<StageSpan>& spans,
+                   std::optional<std::size_t> from);
+
+/// ground_reaction.png from the record's ground reaction curve: the
+/// implicit stage's points, and apart the run's end.
+void ground_reaction_plot(PlotWriter& plots, const std::vector<GroundReactionPoint>& grc);
+
+/// A tunnel's final state: displacement.png (`u`: the key points'
+/// displacement), sigma_max_compressive.png, sigma_min_compressive.png and
+/// final_mesh.png.
+void tunnel_pictures(PlotWriter& plots, const PictureContext& c, const NodeDisplacement& u);
 
 /// A specimen's pictures: stress_strain.png (axial stress of a UCS test,
 /// or the Brazilian tensile stress 2P / (pi D) of a disc, against the

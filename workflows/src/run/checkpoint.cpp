@@ -568,12 +568,6 @@ std::string run_dir_of(const std::string& checkpoint) {
   return p.parent_path().parent_path().string();
 }
 
-bool claim_output_dir(const Scene& scene, const RunContext& ctx) {
-  const bool continues_here =
-      !ctx.restart.empty() && same_directory(ctx.output_dir, run_dir_of(ctx.restart));
-  return prepare_output_dir(ctx.output_dir, scene, ctx.force, continues_here);
-}
-
 nlohmann::json frames_state(const coupling::PvdCollection& pvd) {
   nlohmann::json frames = nlohmann::json::array();
   for (const coupling::PvdEntry& f : pvd.entries()) frames.push_back({f.time, f.file});

@@ -66,12 +66,6 @@ void validate_run_state(const std::string& path, const nlohmann::json& run, cons
 /// The run directory a checkpoint belongs to: OUTDIR/checkpoints/FILE -> OUTDIR.
 std::string run_dir_of(const std::string& checkpoint);
 
-/// Makes (or claims) OUTDIR once the scene is accepted. --force clears an
-/// earlier run's outputs first, except where a restart continues that run.
-/// Returns whether an earlier run had claimed the folder (whose checkpoints
-/// a fresh run then removes: remove_checkpoints).
-bool claim_output_dir(const Scene& scene, const RunContext& ctx);
-
 /// A run state's frame list: [time, file name] per ParaView frame.
 nlohmann::json frames_state(const coupling::PvdCollection& pvd);
 

@@ -17,6 +17,8 @@
 #include "rockfdem/error.hpp"
 #include "rockfdem/workflows/scene.hpp"
 #include "rockfdem/workflows/version.hpp"
+#include "run/checkpoint.hpp"
+#include "run/run_context.hpp"
 #include "scene/scene_reader.hpp"
 
 namespace fs = std::filesystem;
@@ -288,6 +290,13 @@ bool prepare_output_dir(const std::string& dir, const Scene& scene, bool force,
   coupling::atomic_write_text(owner, owner_record(scene));
   write_scene_as_run(dir, scene);
   return claimed;
+}
+
+void claim_output_dir(const Scene& scene, const RunContext& ctx, bool first_outputs) {
+  const bool restart = !ctx.restart.empty();
+  const bool continues_here = restart && same_directory(ctx.output_dir, run_dir_of(ctx.restart));
+  const bool claimed = prepare_output_dir(ctx.output_dir, scene, ctx.force, continues_here);
+  if (first_outputs && !restart && claimed) remove_checkpoints(ctx.output_dir);
 }
 
 }  // namespace rockfdem::workflows

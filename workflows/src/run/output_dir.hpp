@@ -7,6 +7,7 @@
 namespace rockfdem::workflows {
 
 struct Scene;
+struct RunContext;
 
 /// Creates `dir` (and parents) or checks that an existing one holds nothing
 /// of another scene; records which scene owns it. With `force` it may hold
@@ -18,6 +19,14 @@ struct Scene;
 /// Returns whether it was such a directory. Throws InputError.
 bool prepare_output_dir(const std::string& dir, const Scene& scene, bool force,
                         bool keep_previous = false);
+
+/// Makes (or claims) OUTDIR once the scene is accepted (prepare_output_dir):
+/// --force clears an earlier run's outputs first, except where a restart
+/// continues that run. With `first_outputs`, a fresh run (no restart) also
+/// removes the checkpoints of the earlier run that had claimed the folder,
+/// so that they do not mix with its own (a folder no run claimed keeps
+/// whatever it holds). Throws InputError.
+void claim_output_dir(const Scene& scene, const RunContext& ctx, bool first_outputs);
 
 /// Creates a study's folder (sweep, calibrate) and locks it, as
 /// prepare_output_dir locks a run's, until the process ends: a second study

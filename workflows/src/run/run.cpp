@@ -15,7 +15,6 @@
 #include <iostream>
 #include <sstream>
 
-#include "commands/commands.hpp"
 #include "outputs/continuum_comparison.hpp"
 #include "outputs/continuum_counterpart.hpp"
 #include "rockfdem/error.hpp"
@@ -88,21 +87,6 @@ double restore_before_writing(const Checkpoint& resume, const std::string& file,
   restore_bolts(resume.run.at("bolts"), bolts, file);
   check_key_point_fields(resume.run, monitors, out, file);
   return resume.run.at("start_ratio").get<double>();
-}
-
-/// The bolts marked on the mesh and their steel models. The engine's
-/// refusals (a strip too stiff or too soft for the rock around it, a bolt
-/// crossing no triangle edge) arise from the design and the mesh together;
-/// they get the scene and its keys here, before anything is written.
-fdem::BoltPlan planned_bolts(const Scene& scene, fdem::ModelInput& in) {
-  try {
-    return fdem::plan_bolts(in, bolt_specs(scene));
-  } catch (const InputError& e) {
-    throw InputError(scene.source + ": the bolt design cannot be modelled on this mesh (" +
-                     e.what() +
-                     "); adjust [bolts] / [cables] (young, diameter, row_spacing, "
-                     "strengths), materials.rock.young or mesh.size_near");
-  }
 }
 
 // The record's "fdem" of a run the stages left early: their reports alone.
@@ -189,11 +173,10 @@ int Run::write_implicit_results_only() {
 }
 
 void Run::build_engine() {
-  fdem::ModelInput in = engine_input(scene_, mesh_, handoff(), ctx_.threads);
-  add_support_materials(in);
-  if (!scene_.bolts.segments.empty()) bolts_ = planned_bolts(scene_, in);
-  engine_.emplace(make_engine(in, scene_, ctx_.force_dt));
-  refuse_dt_with_stage_damping(in.damping);
+  EngineSetup setup = setup_engine(scene_, mesh_, handoff(), ctx_.threads, ctx_.force_dt);
+  support_ = setup.support;
+  bolts_ = std::move(setup.bolts);
+  engine_.emplace(std::move(setup.engine));
 }
 
 // Key points and instruments before anything is written: a point in no
@@ -211,10 +194,7 @@ void Run::place_instruments() {
 // The scene is accepted: make (or claim) OUTDIR and write what the mesh and
 // the implicit stage give.
 void Run::write_first_outputs() {
-  const bool claimed = claim_output_dir(scene_, ctx_);
-  // A fresh run's checkpoints must not mix with an earlier run's (and a
-  // folder no run claimed keeps whatever it holds).
-  if (!restart_ && claimed) remove_checkpoints(ctx_.output_dir);
+  claim_output_dir(scene_, ctx_, true);
   mesh::write_msh(mesh_, output_path(ctx_.output_dir, "mesh.msh"));
   out_.record_insitu(mesh_, fields_);
   timer_.stamp("output");
@@ -238,6 +218,7 @@ void Run::begin_stages() {
   out_.begin_history(monitors_, mesh_);
   stages_ = std::make_unique<StageRunner>(engine(), mesh_, handoff(), scene_, ctx_, out_, monitors_,
                                           bolts_, support_);
+  out_.set_energy_floor(stages_->energy_check_floor());
   if (restart_) {
     try {
       out_.restore(resume_.run.at("outputs"), run_dir_of(ctx_.restart));
@@ -260,7 +241,7 @@ void Run::run_stages() {
   } catch (const Interrupted&) {
     summary_.status = "interrupted";
     summary_.fdem = stages_only(*stages_);
-    out_.finish(engine(), mesh_, monitors_, timer_, bolts_);
+    out_.finish(engine(), mesh_, timer_, bolts_);
     throw;
   } catch (const NumericalError& e) {
     // The frames and history rows written so far are the last good output.
@@ -283,7 +264,7 @@ void Run::compare_with_references() {
   insitu::InsituSpec open = insitu_spec(scene_);
   open.alphas = {0.0};
   open.lining.active = false;
-  if (!has_lining_ring(scene_)) {
+  if (!scene_.lining_ring) {
     const insitu::InsituField reference =
         keeping_threads(ctx_, [&] { return insitu::solve_insitu(mesh_, open).back(); });
     summary_.add_figures("comparison", compare_with_continuum(
@@ -310,7 +291,7 @@ void Run::finish() {
   summary_.fdem->unbalanced_ratio_at_start = start_ratio_;
   summary_.fdem->unbalanced_ratio_at_end = engine().unbalanced_force_ratio();
   summary_.fdem->handoff_alpha = handoff().alpha;
-  out_.finish(engine(), mesh_, monitors_, timer_, bolts_);
+  out_.finish(engine(), mesh_, timer_, bolts_);
   if (!ctx_.quiet)
     std::cout << "status: " << verdict.status
               << (verdict.message.empty() ? " (every stage met its criteria)"
@@ -323,34 +304,13 @@ void Run::finish() {
 void Run::stop_if_interrupted(const char* after) {
   const int sig = interrupt_requested();
   if (!sig) return;
-  claim_output_dir(scene_, ctx_);
+  claim_output_dir(scene_, ctx_, false);
   summary_.status = "interrupted";
   summary_.set_timings(timer_);
   summary_.write(output_path(ctx_.output_dir, "summary.json"));
   throw Interrupted(sig, std::string("interrupted by signal ") + std::to_string(sig) + " after " +
                              after +
                              "; summary.json is written (no explicit step yet, so no checkpoint)");
-}
-
-// The grout and the lining-rock bond: engine materials the support stages
-// give crack elements.
-void Run::add_support_materials(fdem::ModelInput& in) {
-  support_.grout = int(in.materials.size());
-  in.materials.push_back(grout_material(scene_));
-  if (scene_.materials.count(mesh::kLining)) {
-    support_.lining_interface = int(in.materials.size());
-    in.materials.push_back(lining_interface_material(scene_));
-  }
-}
-
-// The stages' local damping lowers the limit by sqrt(1 + alpha): an
-// explicit dt must hold then too, and is refused before anything is written.
-void Run::refuse_dt_with_stage_damping(const fdem::DampingSettings& handoff_damping) {
-  if (scene_.engine.dt <= 0 || ctx_.force_dt) return;
-  engine().set_damping(stage_damping(scene_));
-  refuse_dt_above(scene_, scene_.engine.dt, engine().critical_dt(),
-                  "this mesh and its penalties with the stages' damping");
-  engine().set_damping(handoff_damping);
 }
 
 void Run::save_checkpoint() {

@@ -53,8 +53,6 @@ class Run {
   const insitu::InsituField& handoff() const { return fields_.back(); }
   fdem::Engine& engine() { return *engine_; }
   void stop_if_interrupted(const char* after);
-  void add_support_materials(fdem::ModelInput& in);
-  void refuse_dt_with_stage_damping(const fdem::DampingSettings& handoff_damping);
   void save_checkpoint();
   /// The message of an InputError from a stage, with engine.dt named when
   /// a later stage's stability limit is below it.
@@ -81,5 +79,8 @@ class Run {
   double start_ratio_ = 0;  ///< the hand-off step's unbalanced-force ratio
   std::unique_ptr<StageRunner> stages_;
 };
+
+/// `rockfdem run` of a tunnel: Run(scene, ctx).run().
+int run_tunnel(const Scene& scene, const RunContext& ctx);
 
 }  // namespace rockfdem::workflows

@@ -86,7 +86,7 @@ class SpecimenRun {
 
   // Only now, with engine.dt and the checkpoint accepted, is anything written.
   void write_first_outputs() {
-    if (claim_output_dir(scene_, ctx_) && !restart_) remove_checkpoints(ctx_.output_dir);
+    claim_output_dir(scene_, ctx_, true);
     mesh::write_msh(mesh_, output_path(ctx_.output_dir, "mesh.msh"));
     timer_.stamp("output");
   }

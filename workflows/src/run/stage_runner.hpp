@@ -49,6 +49,7 @@ class StageRunner {
   /// Called to write a checkpoint: every `every` steps (at the next output
   /// step; 0: never) and when a signal interrupts the run.
   void set_checkpoint(long every, std::function<void()> save);
+  double energy_check_floor() const { return energy_floor_; }  ///< energy_floor [J]
   /// Runs the stages from the cursor to the end. Throws Interrupted (after
   /// a checkpoint and a last history row) when SIGINT or SIGTERM arrives.
   void run_all(PhaseTimer& timer);

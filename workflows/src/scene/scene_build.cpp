@@ -636,7 +636,7 @@ void default_stages(const Reader& r, Scene& s) {
   if (s.mesh.kind == mesh::ModelKind::kUcs || s.mesh.kind == mesh::ModelKind::kBrazilian)
     return s.stages.push_back(stage("load_platens"));
   // A ring that carried load in the implicit stage is installed already.
-  if (has_lining_ring(s) && !s.insitu.lining_active) s.stages.push_back(stage("lining"));
+  if (s.lining_ring && !s.insitu.lining_active) s.stages.push_back(stage("lining"));
   if (!s.bolts.segments.empty()) s.stages.push_back(stage("bolts"));
   s.stages.push_back(stage("remove_core"));
   s.stages.push_back(stage("equilibrium"));
@@ -669,7 +669,7 @@ void check_stage(const Reader& r, const Scene& s, const std::string& p, const St
     at.alpha = st.alpha;
   }
   if (kind == "lining") {
-    if (!has_lining_ring(s))
+    if (!s.lining_ring)
       r.fail(p + ".kind",
              "the model has no lining ring (tunnel.lining_thickness, or a "
              "msh.zones group mapped to \"lining\")");
@@ -757,6 +757,7 @@ Scene build_scene(const RawScene& raw, const std::string& base_dir) {
   if (s.mesh.kind == mesh::ModelKind::kMshFile) read_msh(r, base_dir, s.mesh);
   read_mesh_sizes(r, s.mesh);
   read_materials(r, s);
+  s.lining_ring = has_lining_ring(s);
   read_insitu(r, s);
   s.engine.steps = long(r.number("engine.steps"));
   s.engine.dt = r.number("engine.dt");

@@ -106,15 +106,6 @@ std::map<mesh::Zone, fdem::Material> engine_materials(const Scene& s) {
   return out;
 }
 
-std::vector<std::size_t> lining_interface_cracks(const fdem::Engine& e, const mesh::Mesh& m) {
-  std::vector<std::size_t> out;
-  for (std::size_t c = 0; c < e.n_cracks(); ++c) {
-    const auto t = e.crack_triangles(c);
-    if ((m.zone[t[0]] == mesh::kLining) != (m.zone[t[1]] == mesh::kLining)) out.push_back(c);
-  }
-  return out;
-}
-
 fdem::Material grout_material(const Scene& s) {
   return bond_material(s.grout, s.materials.at(mesh::kRock).density, s);
 }
@@ -199,17 +190,6 @@ fdem::DampingSettings stage_damping(const Scene& s) {
   return d;
 }
 
-bool kirsch_case(const Scene& s, insitu::KirschCase* k) {
-  const mesh::MeshSpec& m = s.mesh;
-  if (m.kind != mesh::ModelKind::kTunnel || m.tunnel.shape != mesh::TunnelShape::kCircular ||
-      m.tunnel.lining_thickness > 0 || s.insitu.unit_weight > 0)
-    return false;
-  const MaterialSpec& rock = s.materials.at(mesh::kRock);
-  *k = {m.tunnel.radius,    s.insitu.sigma_h, s.insitu.sigma_v,
-        s.insitu.angle_deg, rock.young,       rock.poisson};
-  return true;
-}
-
 fdem::ModelInput engine_input(const Scene& scene, const mesh::Mesh& m,
                               const insitu::InsituField& handoff, int threads) {
   std::map<mesh::Zone, fdem::Material> materials = engine_materials(scene);
@@ -226,6 +206,60 @@ fdem::ModelInput engine_input(const Scene& scene, const mesh::Mesh& m,
   in.mass_scaling = {scene.engine.mass_scaling, scene.engine.mass_scaling_dt};
   in.contact = contact_settings(scene);
   return in;
+}
+
+namespace {
+
+/// The bolts marked on the mesh and their steel models. The engine's
+/// refusals (a strip too stiff or too soft for the rock around it, a bolt
+/// crossing no triangle edge) arise from the design and the mesh together;
+/// they get the scene and its keys here, before anything is written.
+fdem::BoltPlan planned_bolts(const Scene& scene, fdem::ModelInput& in) {
+  try {
+    return fdem::plan_bolts(in, bolt_specs(scene));
+  } catch (const InputError& e) {
+    throw InputError(scene.source + ": the bolt design cannot be modelled on this mesh (" +
+                     e.what() +
+                     "); adjust [bolts] / [cables] (young, diameter, row_spacing, "
+                     "strengths), materials.rock.young or mesh.size_near");
+  }
+}
+
+// The grout and the lining-rock bond: engine materials the support stages
+// give crack elements.
+SupportMaterials add_support_materials(const Scene& scene, fdem::ModelInput& in) {
+  SupportMaterials support;
+  support.grout = int(in.materials.size());
+  in.materials.push_back(grout_material(scene));
+  if (scene.materials.count(mesh::kLining)) {
+    support.lining_interface = int(in.materials.size());
+    in.materials.push_back(lining_interface_material(scene));
+  }
+  return support;
+}
+
+// The stages' local damping lowers the limit by sqrt(1 + alpha): an
+// explicit dt must hold then too, and is refused before anything is written.
+void refuse_dt_with_stage_damping(const Scene& scene, fdem::Engine& engine,
+                                  const fdem::DampingSettings& handoff_damping, bool force_dt) {
+  if (scene.engine.dt <= 0 || force_dt) return;
+  engine.set_damping(stage_damping(scene));
+  refuse_dt_above(scene, scene.engine.dt, engine.critical_dt(),
+                  "this mesh and its penalties with the stages' damping");
+  engine.set_damping(handoff_damping);
+}
+
+}  // namespace
+
+EngineSetup setup_engine(const Scene& scene, const mesh::Mesh& m,
+                         const insitu::InsituField& handoff, int threads, bool force_dt) {
+  fdem::ModelInput in = engine_input(scene, m, handoff, threads);
+  const SupportMaterials support = add_support_materials(scene, in);
+  fdem::BoltPlan bolts;
+  if (!scene.bolts.segments.empty()) bolts = planned_bolts(scene, in);
+  EngineSetup setup{support, std::move(bolts), make_engine(in, scene, force_dt)};
+  refuse_dt_with_stage_damping(scene, setup.engine, in.damping, force_dt);
+  return setup;
 }
 
 }  // namespace rockfdem::workflows

@@ -8,6 +8,7 @@
 #include "rockfdem/fdem/model_input.hpp"
 #include "rockfdem/insitu/insitu.hpp"
 #include "rockfdem/workflows/scene.hpp"
+#include "stages/stage.hpp"
 
 namespace rockfdem::workflows {
 
@@ -21,10 +22,6 @@ fdem::Material grout_material(const Scene& scene);
 
 /// The shotcrete-rock bond as an engine material ([lining_interface]).
 fdem::Material lining_interface_material(const Scene& scene);
-
-/// Crack elements joining a lining triangle to a triangle of another zone
-/// (the shotcrete-rock bond), in crack order.
-std::vector<std::size_t> lining_interface_cracks(const fdem::Engine& engine, const mesh::Mesh& m);
 
 /// The scene's bolts as the engine's bolt records.
 std::vector<fdem::BoltSpec> bolt_specs(const Scene& scene);
@@ -44,6 +41,22 @@ fdem::ModelInput engine_input(const Scene& scene, const mesh::Mesh& m,
 /// and stops with a diagnostic if it diverges.
 fdem::Engine make_engine(fdem::ModelInput in, const Scene& scene, bool force_dt);
 
+/// What a tunnel run's engine setup gives the run: the engine materials the
+/// support stages give crack elements, the bolt plan (empty without bolts)
+/// and the engine.
+struct EngineSetup {
+  SupportMaterials support;
+  fdem::BoltPlan bolts;  ///< marks bolt triangles and allows fracture there
+  fdem::Engine engine;
+};
+
+/// The engine of a tunnel at the hand-off (engine_input) with the support
+/// materials and bolts, and engine.dt checked against the stability limit
+/// with the hand-off's damping and with the stages' (InputError naming the
+/// scene's keys, before anything is written; nothing when `force_dt`).
+EngineSetup setup_engine(const Scene& scene, const mesh::Mesh& m,
+                         const insitu::InsituField& handoff, int threads, bool force_dt);
+
 /// Throws the scene's InputError for an explicit engine.dt above `limit`
 /// (the stability limit of `model`, in words); nothing when dt <= limit.
 void refuse_dt_above(const Scene& scene, double dt, double limit, const char* model);
@@ -51,9 +64,5 @@ void refuse_dt_above(const Scene& scene, double dt, double limit, const char* mo
 /// The damping of the explicit stages after the hand-off step: the scene's
 /// local damping (0.8 unless set) and mass-proportional damping.
 fdem::DampingSettings stage_damping(const Scene& s);
-
-/// Whether the scene's geometry has the Kirsch closed form (circular opening,
-/// uniform stress, no lining) and its parameters.
-bool kirsch_case(const Scene& scene, insitu::KirschCase* k);
 
 }  // namespace rockfdem::workflows

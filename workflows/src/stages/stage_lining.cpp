@@ -1,7 +1,7 @@
 // lining: the lining ring installed stress-free in the deformed shape,
 // bonded to the rock by the lining interface where the two faces are.
+#include "outputs/lining_output.hpp"
 #include "stages/stage.hpp"
-#include "stages/stage_inputs.hpp"
 
 namespace rockfdem::workflows {
 namespace {

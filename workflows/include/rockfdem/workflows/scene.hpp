@@ -180,6 +180,7 @@ struct Scene {
   std::vector<ExtensometerSpec> extensometers;  ///< scene [[extensometer]]
   OutputSettings output;
   ReferenceSettings references;
+  bool lining_ring{};  ///< has_lining_ring(), as build_scene found it
   std::string
       canonical;  ///< the validated scene as TOML (overrides applied), for hashing and records
   /// canonical without output.checkpoint_every: what a checkpoint must match
