@@ -741,6 +741,14 @@ std::string scene_as_run(toml::table root, const mesh::MeshSpec& m) {
   return out.str();
 }
 
+void read_output(const Reader& r, OutputSettings& o) {
+  o.every_steps = r.integer("output.every_steps");
+  o.vtk = r.boolean("output.vtk");
+  o.plots = r.boolean("output.plots");
+  o.checkpoint_every = static_cast<long>(r.number("output.checkpoint_every"));
+  o.convergence_from_support = r.text("output.convergence_from") == "support";
+}
+
 Scene build_scene(const RawScene& raw, const std::string& base_dir) {
   const Reader r(raw);
   Scene s;
@@ -779,11 +787,7 @@ Scene build_scene(const RawScene& raw, const std::string& base_dir) {
   s.engine.contact_penalty_factor = r.number("contact.penalty_factor");
   s.engine.contact_damping = r.number("contact.damping_ratio");
   s.engine.contact_friction = r.boolean("contact.friction");
-  s.output.every_steps = r.integer("output.every_steps");
-  s.output.vtk = r.boolean("output.vtk");
-  s.output.plots = r.boolean("output.plots");
-  s.output.checkpoint_every = static_cast<long>(r.number("output.checkpoint_every"));
-  s.output.convergence_from_support = r.text("output.convergence_from") == "support";
+  read_output(r, s.output);
   read_references(r, s.references);
   read_bolts(r, s);
   read_stages(r, s);
