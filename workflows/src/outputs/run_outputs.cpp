@@ -108,7 +108,7 @@ void RunOutputs::set_lining_installed(bool installed) {
 }
 
 void RunOutputs::record_rows(const fdem::Engine& e, const mesh::Mesh& m, const std::string& stage,
-                             double support_ratio) {
+                             double support_ratio, const fdem::EnergyBalance& energy) {
   if (stage_names_.empty() || stage_names_.back() != stage) stage_names_.push_back(stage);
   const fdem::BrokenCounts b = e.broken_counts();
   std::vector<double> row{double(stage_names_.size() - 1),
@@ -124,7 +124,7 @@ void RunOutputs::record_rows(const fdem::Engine& e, const mesh::Mesh& m, const s
   for (double v : key_points_.chords_mm(e)) row.push_back(v);
   row.push_back(key_points_.boundary_fit(e).rotation * 180 / M_PI);
   row.push_back(support_ratio);
-  for (double v : energy_row(e.energy_balance())) row.push_back(v);
+  for (double v : energy_row(energy)) row.push_back(v);
   const NodeDisplacement u = key_points_.node_displacements(e);
   const OutputStep step{e, m, stage, int(stage_names_.size() - 1), u};
   for (OutputStepObserver* o : observers()) o->at_output_step(step, row);
@@ -132,7 +132,7 @@ void RunOutputs::record_rows(const fdem::Engine& e, const mesh::Mesh& m, const s
 }
 
 void RunOutputs::record_frame(const fdem::Engine& e, const mesh::Mesh& m, const std::string& stage,
-                              PhaseTimer& timer) {
+                              const fdem::EnergyBalance& energy, PhaseTimer& timer) {
   check_rigid_motion(e, e.step_count());
   // The hand-off step's dt, once it passed (a failed one is no good state).
   if (stage == "handoff" && stage_names_.size() == 1) handoff_dt_ = e.dt();
@@ -141,7 +141,7 @@ void RunOutputs::record_frame(const fdem::Engine& e, const mesh::Mesh& m, const 
     std::vector<double> no_columns;
     frames_->at_output_step({e, m, stage, int(stage_names_.size() - 1), u}, no_columns);
   }
-  last_good_.take(e, e.energy_balance(), monitor_figures(e));
+  last_good_.take(e, energy, monitor_figures(e));
   timer.stamp("output");
 }
 

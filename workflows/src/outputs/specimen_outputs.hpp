@@ -28,9 +28,9 @@ class SpecimenOutputs : public StepOutputs {
   /// `m`'s area sets the energy check's floor.
   void begin(const mesh::Mesh& m);
   void record_rows(const fdem::Engine& e, const mesh::Mesh& m, const std::string& stage,
-                   double support_ratio) override;
+                   double support_ratio, const fdem::EnergyBalance& energy) override;
   void record_frame(const fdem::Engine& e, const mesh::Mesh& m, const std::string& stage,
-                    PhaseTimer& timer) override;
+                    const fdem::EnergyBalance& energy, PhaseTimer& timer) override;
   /// What a restart needs: history rows, frames, the peak and stop.
   nlohmann::json state() const;
   /// Refuses (InputError) a state() whose rows do not fit history.csv,

@@ -22,11 +22,11 @@ class StepOutputs {
   /// the step (so that a failing step has its row); `support_ratio`: the
   /// core's stiffness factor then (0 once removed).
   virtual void record_rows(const fdem::Engine& e, const mesh::Mesh& m, const std::string& stage,
-                           double support_ratio) = 0;
+                           double support_ratio, const fdem::EnergyBalance& energy) = 0;
   /// The output step once the run's checks passed: the ParaView frame (if
   /// enabled) and the last good state.
   virtual void record_frame(const fdem::Engine& e, const mesh::Mesh& m, const std::string& stage,
-                            PhaseTimer& timer) = 0;
+                            const fdem::EnergyBalance& energy, PhaseTimer& timer) = 0;
   /// Whether the lining ring is installed as lining (tunnels).
   virtual void set_lining_installed(bool) {}
   /// A `lining` or `bolts` stage installed its support (tunnels).

@@ -177,10 +177,13 @@ void StageRunner::interrupted(const StageSpec& stage) {
 }
 
 void StageRunner::record_output(const std::string& stage, PhaseTimer& timer) {
-  out_.record_rows(engine_, model_.mesh, stage, model_.support_ratio());
+  // One ledger per output step (a sweep over every element) for the row,
+  // the check and the last good state.
+  const fdem::EnergyBalance energy = engine_.energy_balance();
+  out_.record_rows(engine_, model_.mesh, stage, model_.support_ratio(), energy);
   // Before the frame: the last frame stays the last good state.
-  check_energy(engine_.energy_balance(), engine_.step_count(), energy_floor_);
-  out_.record_frame(engine_, model_.mesh, stage, timer);
+  check_energy(energy, engine_.step_count(), energy_floor_);
+  out_.record_frame(engine_, model_.mesh, stage, energy, timer);
 }
 
 bool StageRunner::criterion_met(const StageSpec& stage, bool tested, bool reached) {

@@ -11,9 +11,15 @@ const char* const kChords[] = {"vault_settlement_mm", "wall_chord_convergence_mm
                                "shoulder_chord_convergence_mm"};
 
 // Means of a symmetric pair of key points: what a symmetric model is
-// compared with when the two field readings differ (column, left, right).
-const char* const kPairs[][3] = {{"shoulders_radial_mm", "left_shoulder", "right_shoulder"},
-                                 {"walls_radial_mm", "left_wall", "right_wall"}};
+// compared with when the two field readings differ.
+struct Pair {
+  const char* target;  ///< the --target name
+  const char* column;  ///< sweep.csv's column
+  const char* left;
+  const char* right;
+};
+const Pair kPairs[] = {{"shoulders", "shoulders_radial_mm", "left_shoulder", "right_shoulder"},
+                       {"walls", "walls_radial_mm", "left_wall", "right_wall"}};
 
 // Copies summary[section][key] (a number) into figures[column] when present.
 void take(const nlohmann::json& summary, const char* section, const std::string& key,
@@ -38,7 +44,7 @@ std::vector<std::string> figure_columns(const Scene& scene) {
     c.push_back("peak_stress_MPa");
   } else {
     for (const std::string& p : key_point_names()) c.push_back(p + "_radial_mm");
-    for (const auto& pair : kPairs) c.push_back(pair[0]);
+    for (const Pair& pair : kPairs) c.push_back(pair.column);
     c.insert(c.end(), std::begin(kChords), std::end(kChords));
     for (const std::string& p : key_point_names()) c.push_back(p + "_since_support_mm");
   }
@@ -54,7 +60,7 @@ nlohmann::json key_figures(const nlohmann::json& summary) {
         take(*m, p.c_str(), "radial_mm", p + "_radial_mm", 1, f);
         take(*m, p.c_str(), "radial_since_support_mm", p + "_since_support_mm", 1, f);
       }
-    for (const auto& [column, left, right] : kPairs) {
+    for (const auto& [target, column, left, right] : kPairs) {
       const std::string l = std::string(left) + "_radial_mm", r = std::string(right) + "_radial_mm";
       if (f.contains(l) && f.contains(r)) f[column] = (f[l].get<double>() + f[r].get<double>()) / 2;
     }
@@ -76,10 +82,7 @@ std::vector<TargetName> target_names(const Scene& scene) {
             {"tensile_strength", "peak_stress_MPa", "MPa"}};
   if (scene.mesh.kind == mesh::ModelKind::kUcs) return {{"peak_stress", "peak_stress_MPa", "MPa"}};
   for (const std::string& p : key_point_names()) names.push_back({p, p + "_radial_mm", "mm"});
-  for (const auto& pair : kPairs) {
-    const std::string column = pair[0];
-    names.push_back({column.substr(0, column.find('_')), column, "mm"});
-  }
+  for (const Pair& pair : kPairs) names.push_back({pair.target, pair.column, "mm"});
   for (const char* c : kChords) {
     const std::string column = c;
     names.push_back({column.substr(0, column.size() - 3), column, "mm"});
