@@ -10,6 +10,7 @@
 #include <nlohmann/json.hpp>
 
 #include "commands/commands.hpp"
+#include "rockfdem/error.hpp"
 #include "rockfdem/workflows/scene_schema.hpp"
 #include "run/run.hpp"
 #include "stages/registry.hpp"
@@ -22,9 +23,13 @@ int applied = 0;  // calls of Mark::apply
 int stepped = 0;  // calls of Mark::step
 
 // Records what the model looked like when it started; stops at once.
+// Only after the core's removal, which it checks itself.
 class Mark : public Stage {
  public:
   const char* description() const override { return "test only"; }
+  void check(StageCheck& c) const override {
+    if (c.order.alpha > 0) c.refuse(".kind", "marks the open excavation: remove the core first");
+  }
   StageChanges apply(StageModel& m, const StageSpec&) const override {
     ++applied;
     StageChanges done;
@@ -100,6 +105,22 @@ TEST(StageRegistry, a_registered_kind_runs_between_built_in_stages) {
   EXPECT_EQ(stages[1]["steps"], 0);
   EXPECT_GT(stages[2]["steps"].get<long>(), 0);
   std::filesystem::remove_all(ctx.output_dir);
+}
+
+TEST(StageRegistry, a_registered_kind_checks_its_own_entry) {
+  ASSERT_TRUE(registered);
+  std::string early = kScene;
+  const std::string removal = "[[stages]]\nkind = \"remove_core\"\nmax_steps = 0\n";
+  early.erase(early.find(removal), removal.size());
+  early += removal;
+  try {
+    parse_scene(early, "mark.toml", ".");
+    FAIL() << "a mark stage before the core's removal was accepted";
+  } catch (const InputError& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("stages[0].kind"), std::string::npos) << what;
+    EXPECT_NE(what.find("remove the core first"), std::string::npos) << what;
+  }
 }
 
 }  // namespace

@@ -11,7 +11,6 @@ int command_check(const Scene& scene, const RunContext& ctx);
 int command_mesh(const Scene& scene, const RunContext& ctx);
 int command_insitu(const Scene& scene, const RunContext& ctx);
 int command_run(const Scene& scene, const RunContext& ctx);
-int run_specimen(const Scene& scene, const RunContext& ctx);
 
 /// Throws InputError (naming mesh.size_near) when the scene's estimated peak
 /// memory exceeds this machine's physical memory; runs before meshing.

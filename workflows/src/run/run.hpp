@@ -82,5 +82,8 @@ class Run {
 
 /// `rockfdem run` of a tunnel: Run(scene, ctx).run().
 int run_tunnel(const Scene& scene, const RunContext& ctx);
+/// `rockfdem run` of a UCS or Brazilian specimen (run_specimen.cpp): the
+/// same stage loop, its one stage load_platens.
+int run_specimen(const Scene& scene, const RunContext& ctx);
 
 }  // namespace rockfdem::workflows

@@ -14,7 +14,6 @@
 #include <optional>
 #include <sstream>
 
-#include "commands/commands.hpp"
 #include "outputs/specimen_outputs.hpp"
 #include "rockfdem/error.hpp"
 #include "rockfdem/fdem/engine.hpp"
@@ -24,6 +23,7 @@
 #include "run/interrupt.hpp"
 #include "run/output_dir.hpp"
 #include "run/phase_timer.hpp"
+#include "run/run.hpp"
 #include "run/stage_runner.hpp"
 #include "run/summary.hpp"
 #include "stages/platen_load.hpp"

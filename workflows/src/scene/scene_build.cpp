@@ -19,6 +19,8 @@
 #include "rockfdem/workflows/scene_schema.hpp"
 #include "scene/scene_checks.hpp"
 #include "scene/scene_reader.hpp"
+#include "stages/registry.hpp"
+#include "stages/stage.hpp"
 
 namespace rockfdem::workflows {
 namespace {
@@ -550,7 +552,7 @@ void read_monitors(const Reader& r, Scene& s, std::set<std::string>& names) {
     const std::string where = misplaced(s, p + " \"" + m.name + "\"", m.x, m.y);
     if (!where.empty()) r.fail(p + ".x", where);
     if (m.relative_to_support && std::none_of(s.stages.begin(), s.stages.end(), [](auto& st) {
-          return st.kind == "lining" || st.kind == "bolts";
+          return stage_of(st.kind).installs_support();
         }))
       r.fail(p + ".relative_to_support",
              "the stages install no support; allowed: true only with a `lining` or `bolts` stage");
@@ -642,45 +644,24 @@ void default_stages(const Reader& r, Scene& s) {
   s.stages.push_back(stage("equilibrium"));
 }
 
-// What the stages so far allow: the core's stiffness factor (0: removed),
-// whether the lining and the bolts are in.
-struct StageOrder {
-  double alpha = 0;
-  bool lined = false, bolted = false;
-};
+// One entry of [[stages]] checked by its kind's Stage, which refuses
+// through the reader: the message names the entry's key.
+class EntryCheck : public StageCheck {
+ public:
+  EntryCheck(const Reader& r, std::string prefix, const Scene& s, const StageSpec& st,
+             StageOrder& at)
+      : StageCheck(s, st, at), r_(r), p_(std::move(prefix)) {}
+  [[noreturn]] void refuse(const std::string& key, const std::string& why) const override {
+    r_.fail(p_ + key, why);
+  }
+  void require(const std::string& key, const std::string& why) const override {
+    r_.require(p_ + key, why);
+  }
 
-// An "insitu" entry may only open the list; a lining only exists with a
-// lining ring; softening only goes down, and only while the core is there.
-void check_stage(const Reader& r, const Scene& s, const std::string& p, const StageSpec& st,
-                 StageOrder& at) {
-  const std::string& kind = st.kind;
-  if (kind == "load_platens")
-    r.fail(p + ".kind", "loads a UCS or Brazilian specimen (model.kind), not a tunnel");
-  if (kind == "bolts") {
-    if (s.bolts.segments.empty()) r.fail(p + ".kind", "the scene has no [[bolt]] or [[bolt_fan]]");
-    if (at.bolted) r.fail(p + ".kind", "the bolts are installed once");
-    at.bolted = true;
-  }
-  if (kind == "soften") {
-    r.require(p + ".alpha", "a soften stage needs its target alpha");
-    if (!(at.alpha > 0)) r.fail(p + ".kind", "the core is already removed (or alpha = 0)");
-    if (!(st.alpha < at.alpha))
-      r.fail(p + ".alpha", "softening must go down from " + num(at.alpha));
-    at.alpha = st.alpha;
-  }
-  if (kind == "lining") {
-    if (!s.lining_ring)
-      r.fail(p + ".kind",
-             "the model has no lining ring (tunnel.lining_thickness, or a "
-             "msh.zones group mapped to \"lining\")");
-    if (at.lined || s.insitu.lining_active) r.fail(p + ".kind", "the lining is installed once");
-    at.lined = true;
-  }
-  if (kind == "remove_core") {
-    if (!(at.alpha > 0)) r.fail(p + ".kind", "the core is already removed");
-    at.alpha = 0;
-  }
-}
+ private:
+  const Reader& r_;
+  std::string p_;
+};
 
 // The explicit stages after the implicit hand-off.
 void read_stages(const Reader& r, Scene& s) {
@@ -699,7 +680,8 @@ void read_stages(const Reader& r, Scene& s) {
       continue;
     }
     const StageSpec st = read_stage(r, p, kind);
-    check_stage(r, s, p, st, at);
+    EntryCheck check(r, p, s, st, at);
+    stage_of(kind).check(check);
     s.stages.push_back(st);
   }
   if (!s.bolts.segments.empty() && !at.bolted)

@@ -50,6 +50,30 @@ struct StageModel {
   double support_ratio() const { return core_present ? alpha : 0.0; }
 };
 
+/// What the stages before an entry of [[stages]] allow, as the scene
+/// reader walks the list in order.
+struct StageOrder {
+  double alpha = 0;     ///< the core's stiffness factor (0: removed)
+  bool lined = false;   ///< a lining stage came before
+  bool bolted = false;  ///< a bolts stage came before
+};
+
+/// One [[stages]] entry being read: the scene read so far, the entry and
+/// the order before it. Keys are the entry's own (".alpha", ".kind").
+class StageCheck {
+ public:
+  StageCheck(const Scene& s, const StageSpec& e, StageOrder& o) : scene(s), spec(e), order(o) {}
+  virtual ~StageCheck() = default;
+  /// Throws the scene's InputError naming the entry's `key` and `why`.
+  [[noreturn]] virtual void refuse(const std::string& key, const std::string& why) const = 0;
+  /// Refuses the entry when the file does not give `key`.
+  virtual void require(const std::string& key, const std::string& why) const = 0;
+
+  const Scene& scene;
+  const StageSpec& spec;
+  StageOrder& order;
+};
+
 class Stage {
  public:
   virtual ~Stage() = default;
@@ -59,6 +83,9 @@ class Stage {
   /// The scene keys the stage reads beyond stages[] (scene_schema() lists
   /// them where the reference has them); none by default.
   virtual std::vector<KeySpec> keys() const { return {}; }
+  /// Refuses an entry the stages before it (or the scene) do not allow,
+  /// and notes in check.order what it changes; allows any by default.
+  virtual void check(StageCheck&) const {}
   /// The stage's change to the model at its start; returns what changed
   /// (the summary's "changes" of the stage): nothing by default.
   virtual StageChanges apply(StageModel& model, const StageSpec& spec) const;

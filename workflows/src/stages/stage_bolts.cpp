@@ -9,6 +9,13 @@ class Bolts : public Stage {
  public:
   const char* description() const override { return "install every bolt stress-free"; }
 
+  void check(StageCheck& c) const override {
+    if (c.scene.bolts.segments.empty())
+      c.refuse(".kind", "the scene has no [[bolt]] or [[bolt_fan]]");
+    if (c.order.bolted) c.refuse(".kind", "the bolts are installed once");
+    c.order.bolted = true;
+  }
+
   StageChanges apply(StageModel& m, const StageSpec&) const override {
     const fdem::BoltInstallReport r = fdem::install_bolts(m.engine, m.bolts);
     StageChanges done;

@@ -21,6 +21,16 @@ class Lining : public Stage {
  public:
   const char* description() const override { return "install the lining ring stress-free"; }
 
+  void check(StageCheck& c) const override {
+    if (!c.scene.lining_ring)
+      c.refuse(".kind",
+               "the model has no lining ring (tunnel.lining_thickness, or a "
+               "msh.zones group mapped to \"lining\")");
+    if (c.order.lined || c.scene.insitu.lining_active)
+      c.refuse(".kind", "the lining is installed once");
+    c.order.lined = true;
+  }
+
   StageChanges apply(StageModel& m, const StageSpec&) const override {
     // Stress-free in the deformed shape: the lining takes only later load.
     m.set_zone(mesh::kLining, true, fdem::ActivationReference::kCurrent);

@@ -20,6 +20,10 @@ class LoadPlatens : public Stage {
     return "specimens: platens load the specimen to engine.steps or the post-peak stop";
   }
 
+  void check(StageCheck& c) const override {
+    c.refuse(".kind", "loads a UCS or Brazilian specimen (model.kind), not a tunnel");
+  }
+
   std::vector<KeySpec> keys() const override {
     using namespace schema;
     return {positive("loading.platen_velocity", "m/s", "0.5",

@@ -7,6 +7,11 @@ namespace {
 
 class RemoveCore : public Stage {
  public:
+  void check(StageCheck& c) const override {
+    if (!(c.order.alpha > 0)) c.refuse(".kind", "the core is already removed");
+    c.order.alpha = 0;
+  }
+
   StageChanges apply(StageModel& m, const StageSpec&) const override {
     m.set_zone(mesh::kCore, false, fdem::ActivationReference::kKeep);
     // A ring never installed is ground still to be excavated.

@@ -1,6 +1,7 @@
 // soften: the core (and a ring not yet installed, still ground) down to the
 // stage's stiffness factor alpha, the explicit continuation of the
 // implicit stage's core softening.
+#include "scene/scene_reader.hpp"
 #include "stages/stage.hpp"
 
 namespace rockfdem::workflows {
@@ -9,6 +10,15 @@ namespace {
 class Soften : public Stage {
  public:
   const char* description() const override { return "core to alpha, explicit"; }
+
+  // Softening only goes down, and only while the core is there.
+  void check(StageCheck& c) const override {
+    c.require(".alpha", "a soften stage needs its target alpha");
+    if (!(c.order.alpha > 0)) c.refuse(".kind", "the core is already removed (or alpha = 0)");
+    if (!(c.spec.alpha < c.order.alpha))
+      c.refuse(".alpha", "softening must go down from " + detail::number_text(c.order.alpha));
+    c.order.alpha = c.spec.alpha;
+  }
 
   StageChanges apply(StageModel& m, const StageSpec& spec) const override {
     // The engine's core already has alpha_h E and stress: scale relative to it.
