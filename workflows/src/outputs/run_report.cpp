@@ -8,6 +8,8 @@
 #include "rockfdem/mesh/msh_io.hpp"
 #include "rockfdem/workflows/version.hpp"
 #include "run/output_dir.hpp"
+#include "stages/registry.hpp"
+#include "stages/stage.hpp"
 
 namespace rockfdem::workflows {
 namespace {
@@ -107,9 +109,9 @@ std::string stage_status(const StageRecord& st) {
     return "grouted " + value_text(changes.rejoined) + " cracks";
   }
   if (!st.converged)
-    return st.kind == "lining" || st.kind == "bolts" ? "installed"
-           : st.kind == "remove_core"                ? "core removed"
-                                                     : "applied (no steps)";
+    return stage_of(st.kind).installs_support() ? "installed"
+           : st.kind == "remove_core"           ? "core removed"
+                                                : "applied (no steps)";
   return *st.converged ? "converged" : "stopped before its criteria";
 }
 

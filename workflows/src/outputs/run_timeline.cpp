@@ -3,6 +3,9 @@
 #include <algorithm>
 #include <cmath>
 
+#include "stages/registry.hpp"
+#include "stages/stage.hpp"
+
 namespace rockfdem::workflows {
 
 std::vector<StageSpan> stage_spans(const std::vector<StageRecord>& stages, double t_handoff) {
@@ -38,7 +41,7 @@ std::vector<plots::PlotMarker> stage_markers(const std::vector<StageSpan>& spans
 
 const StageSpan* support_stage(const std::vector<StageSpan>& spans) {
   for (const StageSpan& s : spans)
-    if (s.kind == "lining" || s.kind == "bolts") return &s;
+    if (stage_of(s.kind).installs_support()) return &s;
   return nullptr;
 }
 
