@@ -19,9 +19,10 @@ bool kirsch_case(const Scene& s, insitu::KirschCase* k) {
   return true;
 }
 
-nlohmann::json compare_with_continuum(const Scene& scene, const mesh::Mesh& m,
-                                      const fdem::Engine& e, const insitu::InsituField& open_hole,
-                                      const std::string& csv_path) {
+ContinuumComparison compare_with_continuum(const Scene& scene, const mesh::Mesh& m,
+                                           const fdem::Engine& e,
+                                           const insitu::InsituField& open_hole,
+                                           const std::string& csv_path) {
   const mesh::HalfExtent h = mesh::opening_half_extent(scene.mesh.tunnel);
   const double reach = 5 * std::max(h.hx, h.hy);
   insitu::KirschCase k;
@@ -53,11 +54,9 @@ nlohmann::json compare_with_continuum(const Scene& scene, const mesh::Mesh& m,
     ++n;
   }
   coupling::atomic_write_text(csv_path, csv.str());
-  nlohmann::json j = {{"triangles", n},
-                      {"region", "rock within 5 half-spans of the opening's centre"},
-                      {"fdem_vs_insitu_rel_l2", vs_fem.value()}};
-  j["fdem_vs_kirsch_rel_l2"] = kirsch ? nlohmann::json(vs_kirsch.value()) : nlohmann::json();
-  return j;
+  ContinuumComparison c{n, vs_fem.value(), std::nullopt};
+  if (kirsch) c.fdem_vs_kirsch_rel_l2 = vs_kirsch.value();
+  return c;
 }
 
 }  // namespace rockfdem::workflows

@@ -200,22 +200,21 @@ void write_continuum_grid(const mesh::Mesh& m, const ContinuumStates& c, const s
   coupling::write_vtu(g, path);
 }
 
-nlohmann::json key_points_json(const fdem::Engine& e, const insitu::InsituField& fdem_handoff,
-                               const ContinuumStates& c, const std::vector<Monitor>& monitors) {
-  static const std::vector<double> none;
-  nlohmann::json j = nlohmann::json::object();
-  const auto mm = [](double ux, double uy) { return std::vector<double>{1e3 * ux, 1e3 * uy}; };
+std::map<std::string, CounterpartKeyPoint> key_points(const fdem::Engine& e,
+                                                      const insitu::InsituField& fdem_handoff,
+                                                      const ContinuumStates& c,
+                                                      const std::vector<Monitor>& monitors) {
+  std::map<std::string, CounterpartKeyPoint> out;
+  const auto mm = [](double ux, double uy) { return std::array<double, 2>{1e3 * ux, 1e3 * uy}; };
   for (const Monitor& mon : monitors) {
     const int v = e.node_vertex()[mon.node];
     const auto fdem_end = monitor_displacement(e, mon, fdem_handoff.ux, fdem_handoff.uy);
-    nlohmann::json k = {{"fdem_end_mm", mm(fdem_end[0], fdem_end[1])},
-                        {"continuum_end_mm", mm(c.end.ux[v], c.end.uy[v])},
-                        {"fdem_handoff_mm", mm(fdem_handoff.ux[v], fdem_handoff.uy[v])}};
-    k["continuum_handoff_mm"] =
-        c.handoff.alpha >= 0 ? nlohmann::json(mm(c.handoff.ux[v], c.handoff.uy[v])) : nullptr;
-    j[mon.name] = k;
+    CounterpartKeyPoint& k = out[mon.name];
+    k = {mm(fdem_end[0], fdem_end[1]), mm(c.end.ux[v], c.end.uy[v]),
+         mm(fdem_handoff.ux[v], fdem_handoff.uy[v]), std::nullopt};
+    if (c.handoff.alpha >= 0) k.continuum_handoff_mm = mm(c.handoff.ux[v], c.handoff.uy[v]);
   }
-  return j;
+  return out;
 }
 
 }  // namespace
@@ -233,12 +232,10 @@ ContinuumStates solve_continuum_counterpart(const Scene& scene, const mesh::Mesh
   return c;
 }
 
-nlohmann::json compare_with_counterpart(const Scene& scene, const mesh::Mesh& m,
-                                        const fdem::Engine& e,
-                                        const insitu::InsituField& fdem_handoff,
-                                        const ContinuumStates& c,
-                                        const std::vector<Monitor>& monitors,
-                                        const std::string& dir, RunRecord& summary, bool quiet) {
+CounterpartComparison compare_with_counterpart(
+    const Scene& scene, const mesh::Mesh& m, const fdem::Engine& e,
+    const insitu::InsituField& fdem_handoff, const ContinuumStates& c,
+    const std::vector<Monitor>& monitors, const std::string& dir, RunRecord& summary, bool quiet) {
   const mesh::HalfExtent h = mesh::opening_half_extent(scene.mesh.tunnel);
   const double span = std::max(h.hx, h.hy), reach = 5 * span;
   std::vector<std::uint8_t> engine_active(m.n_triangles());
@@ -247,27 +244,25 @@ nlohmann::json compare_with_counterpart(const Scene& scene, const mesh::Mesh& m,
   const auto fdem_start = [&fdem_handoff](std::size_t t) {
     return as_array(fdem_handoff.stress[t]);
   };
-  nlohmann::json j = {{"model", c.model},
-                      {"sequence_alpha", c.alphas},
-                      {"solve_seconds", c.seconds},
-                      {"region", "rock within 5 half-spans of the opening's centre"}};
-  j["lining_alpha"] = c.lining_alpha >= 0 ? nlohmann::json(c.lining_alpha) : nullptr;
-  j["stress_rel_l2_end"] = stress_rel_l2(m, fdem_end, c.end, engine_active, reach);
-  j["stress_rel_l2_handoff"] =
-      c.handoff.alpha >= 0
-          ? nlohmann::json(stress_rel_l2(m, fdem_start, c.handoff, fdem_handoff.active, reach))
-          : nullptr;
-  j["key_points"] = key_points_json(e, fdem_handoff, c, monitors);
+  CounterpartComparison out;
+  out.model = c.model;
+  out.sequence_alpha = c.alphas;
+  out.solve_seconds = c.seconds;
+  if (c.lining_alpha >= 0) out.lining_alpha = c.lining_alpha;
+  out.stress_rel_l2_end = stress_rel_l2(m, fdem_end, c.end, engine_active, reach);
+  if (c.handoff.alpha >= 0)
+    out.stress_rel_l2_handoff = stress_rel_l2(m, fdem_start, c.handoff, fdem_handoff.active, reach);
+  out.key_points = key_points(e, fdem_handoff, c, monitors);
   std::vector<Profile> profiles;
   for (const Monitor& mon : monitors) profiles.push_back(ray_profile(m, e, c, mon, 2 * span));
   write_profiles(profiles, output_path(dir, "continuum_profiles.csv"));
   if (scene.output.vtk) write_continuum_grid(m, c, output_path(dir, "continuum.vtu"));
   if (scene.output.plots) plot_profiles(profiles, c.model, dir, summary, quiet);
   if (c.model == "mohr_coulomb") {
-    j["yielded_triangles"] = c.n_yielded;
-    for (const Profile& p : profiles) j["yielded_depth_m"][p.ray] = p.yielded_depth;
+    out.yield = CounterpartYield{c.n_yielded, {}};
+    for (const Profile& p : profiles) out.yield->depth_m[p.ray] = p.yielded_depth;
   }
-  return j;
+  return out;
 }
 
 void compare_with_continuum_counterpart(const Scene& scene, const RunContext& ctx,
@@ -282,9 +277,8 @@ void compare_with_continuum_counterpart(const Scene& scene, const RunContext& ct
   try {
     const ContinuumStates c =
         keeping_threads(ctx, [&] { return solve_continuum_counterpart(scene, m); });
-    summary.add_figures("continuum_comparison",
-                        compare_with_counterpart(scene, m, e, fdem_handoff, c, monitors,
-                                                 ctx.output_dir, summary, ctx.quiet));
+    summary.continuum_comparison = compare_with_counterpart(scene, m, e, fdem_handoff, c, monitors,
+                                                            ctx.output_dir, summary, ctx.quiet);
   } catch (const InputError& err) {
     skip(err);
   } catch (const NumericalError& err) {

@@ -11,7 +11,6 @@
 // counterpart.
 #pragma once
 
-#include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
 
@@ -20,6 +19,7 @@
 #include "rockfdem/insitu/insitu.hpp"
 #include "rockfdem/mesh/mesh.hpp"
 #include "rockfdem/workflows/scene.hpp"
+#include "run/continuum_figures.hpp"
 #include "run/run_context.hpp"
 #include "run/summary.hpp"
 
@@ -44,13 +44,11 @@ ContinuumStates solve_continuum_counterpart(const Scene& scene, const mesh::Mesh
 /// and at the end, the key points' displacements, and radial and tangential
 /// stress along rays from the opening through the key points
 /// (continuum_profiles.csv, and continuum_profiles.png when `plots`).
-/// Returns summary "continuum_comparison".
-nlohmann::json compare_with_counterpart(const Scene& scene, const mesh::Mesh& m,
-                                        const fdem::Engine& e,
-                                        const insitu::InsituField& fdem_handoff,
-                                        const ContinuumStates& c,
-                                        const std::vector<Monitor>& monitors,
-                                        const std::string& dir, RunRecord& summary, bool quiet);
+/// Returns the figures of summary "continuum_comparison".
+CounterpartComparison compare_with_counterpart(
+    const Scene& scene, const mesh::Mesh& m, const fdem::Engine& e,
+    const insitu::InsituField& fdem_handoff, const ContinuumStates& c,
+    const std::vector<Monitor>& monitors, const std::string& dir, RunRecord& summary, bool quiet);
 
 /// Both of the above for a finished tunnel run, into summary
 /// "continuum_comparison"; a counterpart that cannot be solved (e.g. the

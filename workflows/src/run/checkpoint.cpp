@@ -282,15 +282,19 @@ class RunStateCheck {
         {"installed_stress", "an array of arrays of [xx, yy, xy] stresses"},
         {"kind", "a string"},
         {"steps", "an integer"},
+        {"simulated_time", "a number"},
         {"max_steps", "an integer"},
         {"unbalanced_ratio", "a number"},
         {"criteria", "an object"},
         {"ratio", "a number"},
+        {"hold", "an integer"},
+        {"unstable_fraction", "a number"},
         {"settle", "a number or null"},
         {"converged", "true, false or null"},
         {"moving_most", "an object or null"},
         {"key_point", "a string"},
         {"mm_per_1000_steps", "a number"},
+        {"support_pressure_ratio", "a number"},
         {"start_ratio", "a number"},
         {"load", "an object"},
         {"peak_stress", "a number"},
@@ -361,12 +365,24 @@ class RunStateCheck {
     }
   }
 
-  // The fields StageRunner::verdict() reads from each finished stage.
+  void criteria(const json& c, const std::string& at) const {
+    object(c, at);
+    number(member(c, at, "ratio"), at + ".ratio");
+    number(member(c, at, "settle"), at + ".settle");
+    integer(member(c, at, "hold"), at + ".hold");
+    number(member(c, at, "unstable_fraction"), at + ".unstable_fraction");
+  }
+
+  // The fields stage_records_from_json reads from each finished stage.
   void stage_report(const json& r, const std::string& at) {
     object(r, at);
     string(member(r, at, "kind"), at + ".kind");
     changes(member(r, at, "changes"), at + ".changes");
     integer(member(r, at, "steps"), at + ".steps");
+    number(member(r, at, "simulated_time"), at + ".simulated_time");
+    // Optional: a stage that took no step may leave it out.
+    if (r.contains("dt") && !r["dt"].is_number() && !r["dt"].is_null())
+      bad(at + ".dt", &r["dt"], "a number or null");
     integer(member(r, at, "max_steps"), at + ".max_steps");
     number(member(r, at, "unbalanced_ratio"), at + ".unbalanced_ratio");
     const json& converged = member(r, at, "converged");
@@ -374,10 +390,8 @@ class RunStateCheck {
       bad(at + ".converged", &converged, "true, false or null");
     const json& settle = member(r, at, "settle");
     if (!settle.is_number() && !settle.is_null()) bad(at + ".settle", &settle, "a number or null");
-    const json& criteria = member(r, at, "criteria");
-    object(criteria, at + ".criteria");
-    number(member(criteria, at + ".criteria", "ratio"), at + ".criteria.ratio");
-    number(member(criteria, at + ".criteria", "settle"), at + ".criteria.settle");
+    number(member(r, at, "support_pressure_ratio"), at + ".support_pressure_ratio");
+    criteria(member(r, at, "criteria"), at + ".criteria");
     const json& moving = member(r, at, "moving_most");
     if (moving.is_null()) return;
     if (!moving.is_object()) bad(at + ".moving_most", &moving, "an object or null");

@@ -267,9 +267,8 @@ void Run::compare_with_references() {
   if (!scene_.lining_ring) {
     const insitu::InsituField reference =
         keeping_threads(ctx_, [&] { return insitu::solve_insitu(mesh_, open).back(); });
-    summary_.add_figures("comparison", compare_with_continuum(
-                                           scene_, mesh_, engine(), reference,
-                                           output_path(ctx_.output_dir, "fdem_vs_continuum.csv")));
+    summary_.comparison = compare_with_continuum(
+        scene_, mesh_, engine(), reference, output_path(ctx_.output_dir, "fdem_vs_continuum.csv"));
   }
   compare_with_continuum_counterpart(scene_, ctx_, mesh_, engine(), handoff(), monitors_, summary_);
   timer_.stamp("insitu");

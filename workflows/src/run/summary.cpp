@@ -349,6 +349,34 @@ nlohmann::json extensometer_json(const ExtensometerFigures& x) {
           {"points", points}};
 }
 
+nlohmann::json comparison_json(const ContinuumComparison& c) {
+  return {{"triangles", c.triangles},
+          {"region", kComparisonRegion},
+          {"fdem_vs_insitu_rel_l2", c.fdem_vs_insitu_rel_l2},
+          {"fdem_vs_kirsch_rel_l2", or_null(c.fdem_vs_kirsch_rel_l2)}};
+}
+
+nlohmann::json counterpart_json(const CounterpartComparison& c) {
+  nlohmann::json key_points = nlohmann::json::object();
+  for (const auto& [name, k] : c.key_points)
+    key_points[name] = {{"fdem_end_mm", k.fdem_end_mm},
+                        {"continuum_end_mm", k.continuum_end_mm},
+                        {"fdem_handoff_mm", k.fdem_handoff_mm},
+                        {"continuum_handoff_mm", or_null(k.continuum_handoff_mm)}};
+  nlohmann::json j = {{"model", c.model},
+                      {"sequence_alpha", c.sequence_alpha},
+                      {"solve_seconds", c.solve_seconds},
+                      {"region", kComparisonRegion},
+                      {"lining_alpha", or_null(c.lining_alpha)},
+                      {"stress_rel_l2_end", c.stress_rel_l2_end},
+                      {"stress_rel_l2_handoff", or_null(c.stress_rel_l2_handoff)},
+                      {"key_points", key_points}};
+  if (!c.yield) return j;
+  j["yielded_triangles"] = c.yield->triangles;
+  for (const auto& [ray, depth] : c.yield->depth_m) j["yielded_depth_m"][ray] = depth;
+  return j;
+}
+
 // The support and damage figures at the end of a tunnel run.
 void add_support(nlohmann::json& j, const RunRecord& r) {
   if (r.bolts) j["bolts"] = bolts_json(*r.bolts);
@@ -425,16 +453,10 @@ RunRecord::RunRecord(const Scene& scene, int threads)
     : warnings(scene.warnings),
       threads(threads),
       counts{0, 0, 0, long(scene.bolts.segments.size())},
-      timings_{{"mesh", 0.0}, {"insitu", 0.0}, {"fdem", 0.0}, {"output", 0.0}, {"total", 0.0}} {
-  using nlohmann::json;
-  figures_ = {
-      {"format_version", kSummaryFormatVersion},
-      {"rockfdem_version", version_string()},
-      {"scene", scene.source},
-      {"overrides", scene.overrides},
-      {"title", scene.title},
-  };
-}
+      scene_source_(scene.source),
+      overrides_(scene.overrides),
+      title_(scene.title),
+      timings_{{"mesh", 0.0}, {"insitu", 0.0}, {"fdem", 0.0}, {"output", 0.0}, {"total", 0.0}} {}
 
 void RunRecord::note_turned_off(const OutputSettings& output, const std::string& paraview_files,
                                 bool renders_plots) {
@@ -465,8 +487,12 @@ void RunRecord::set_timings(const PhaseTimer& timer) {
 }
 
 nlohmann::json RunRecord::to_json() const {
-  nlohmann::json j = figures_;
-  j["threads"] = threads;
+  nlohmann::json j = {{"format_version", kSummaryFormatVersion},
+                      {"rockfdem_version", version_string()},
+                      {"scene", scene_source_},
+                      {"overrides", overrides_},
+                      {"title", title_},
+                      {"threads", threads}};
   j["counts"] = {{"triangles", counts.triangles},
                  {"nodes", counts.nodes},
                  {"crack_elements", counts.crack_elements},
@@ -492,6 +518,8 @@ nlohmann::json RunRecord::to_json() const {
     j["ground_reaction_curve"] = ground_reaction_json(ground_reaction_curve);
   if (history_stages) j["history_stages"] = *history_stages;
   add_support(j, *this);
+  if (comparison) j["comparison"] = comparison_json(*comparison);
+  if (continuum_comparison) j["continuum_comparison"] = counterpart_json(*continuum_comparison);
   if (!status.empty()) j["status"] = status;
   if (status_reason) j["status_reason"] = *status_reason;
   if (failure) j["failure"] = *failure;

@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "run/continuum_figures.hpp"
 #include "run/phase_timer.hpp"
 #include "run/run_figures.hpp"
 #include "run/support_figures.hpp"
@@ -42,8 +43,9 @@ struct CheckpointMark {
 
 class RunRecord {
  public:
-  /// The fixed keys, with counts.bolts the scene's bolts and cables and
-  /// the scene's warnings.
+  /// The fixed keys (format_version, rockfdem_version, scene, overrides,
+  /// title), with counts.bolts the scene's bolts and cables and the
+  /// scene's warnings.
   RunRecord(const Scene& scene, int threads);
 
   /// How the run ended: completed, not_at_equilibrium, failed, interrupted
@@ -75,13 +77,10 @@ class RunRecord {
   std::map<std::string, ExtensometerFigures> extensometers;  ///< empty: no key
   std::optional<BrokenZoneRecord> broken_zone;
   std::optional<SpecimenRecord> specimen;  ///< a specimen's peak and post-peak stop
-
-  /// Figures another module gives as JSON (the continuum comparisons),
-  /// kept as they are under summary.json's `key`; the record writes them
-  /// and nothing reads them back.
-  void add_figures(const std::string& key, nlohmann::json figures) {
-    figures_[key] = std::move(figures);
-  }
+  // Once the core is removed: the open excavation (no lining ring) and the
+  // construction sequence's continuum counterpart (none: not solved).
+  std::optional<ContinuumComparison> comparison;
+  std::optional<CounterpartComparison> continuum_comparison;
 
   /// Notes in `skipped` the outputs the scene turned off: `paraview_files`
   /// (what output.vtk = false leaves out) and, where the command renders
@@ -103,8 +102,10 @@ class RunRecord {
   void write(const std::string& path) const;
 
  private:
+  std::string scene_source_;  ///< "scene": the scene file's path, or "default"
+  std::vector<std::string> overrides_;
+  std::string title_;
   std::map<std::string, double> timings_;  ///< per phase (snake_case) and "total" [s]
-  nlohmann::json figures_;
 };
 
 /// summary.json's "fdem"."stages" (also the checkpoints' copy of them).

@@ -1,0 +1,54 @@
+// The typed figures of a tunnel run's continuum comparisons, once the core
+// is removed: FDEM against the open excavation's field ("comparison") and
+// against the continuum counterpart of the construction sequence
+// ("continuum_comparison"). summary.cpp writes them (docs/workflow.md).
+#pragma once
+
+#include <array>
+#include <cstddef>
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace rockfdem::workflows {
+
+/// The region both comparisons cover ("region").
+constexpr const char* kComparisonRegion = "rock within 5 half-spans of the opening's centre";
+
+/// "comparison": the engine's final stresses against the implicit field of
+/// the open excavation (alpha = 0) and, for a circular opening without
+/// lining in uniform stress, Kirsch.
+struct ContinuumComparison {
+  std::size_t triangles = 0;  ///< the rock triangles compared
+  double fdem_vs_insitu_rel_l2 = 0;
+  std::optional<double> fdem_vs_kirsch_rel_l2;  ///< none: no closed form (null)
+};
+
+/// A key point's displacement in both [mm] (x, y)
+/// ("continuum_comparison"."key_points".NAME).
+struct CounterpartKeyPoint {
+  std::array<double, 2> fdem_end_mm{}, continuum_end_mm{}, fdem_handoff_mm{};
+  std::optional<std::array<double, 2>> continuum_handoff_mm;  ///< none: no hand-off (null)
+};
+
+/// A Mohr-Coulomb counterpart's yielded ground.
+struct CounterpartYield {
+  std::size_t triangles = 0;              ///< "yielded_triangles": ever flowed
+  std::map<std::string, double> depth_m;  ///< "yielded_depth_m" per ray; empty: no key
+};
+
+/// "continuum_comparison": the FDEM state against the continuum solution
+/// of the scene's construction sequence.
+struct CounterpartComparison {
+  std::string model;  ///< "elastic" or "mohr_coulomb"
+  std::vector<double> sequence_alpha;
+  double solve_seconds = 0;
+  std::optional<double> lining_alpha;  ///< none: no lining (null)
+  double stress_rel_l2_end = 0;
+  std::optional<double> stress_rel_l2_handoff;  ///< none: no hand-off state (null)
+  std::map<std::string, CounterpartKeyPoint> key_points;
+  std::optional<CounterpartYield> yield;  ///< Mohr-Coulomb only
+};
+
+}  // namespace rockfdem::workflows
