@@ -38,7 +38,7 @@ const Monitor& key_point(const std::vector<Monitor>& key_points, const std::stri
 
 Instruments::Instruments(const Scene& scene, const mesh::Mesh& m, const fdem::Engine& e,
                          const std::vector<Monitor>& key_points, const fdem::BoltPlan& bolts)
-    : scene_(scene),
+    : specs_(scene.monitors),
       half_width_(fracture_resolution(scene, &m).h / 2),
       bolted_(bolt_triangles(&bolts, m.n_triangles())) {
   for (std::size_t i = 0; i < scene.monitors.size(); ++i) {
@@ -69,7 +69,7 @@ Instruments::Instruments(const Scene& scene, const mesh::Mesh& m, const fdem::En
 
 std::vector<std::string> Instruments::history_columns() const {
   std::vector<std::string> cols;
-  for (const MonitorSpec& s : scene_.monitors)
+  for (const MonitorSpec& s : specs_)
     for (const char* c : {"_ux_mm", "_uy_mm", "_u_mm"}) cols.push_back(s.name + c);
   for (const Extensometer& x : extensometers_) {
     const int n = x.spec->anchors;
@@ -83,7 +83,7 @@ std::vector<std::string> Instruments::history_columns() const {
 
 std::array<double, 2> Instruments::monitor_u(std::size_t i, const NodeDisplacement& u) const {
   const std::array<double, 2> d = interpolate(monitors_[i], u);
-  if (!scene_.monitors[i].relative_to_support) return d;
+  if (!specs_[i].relative_to_support) return d;
   if (!installed_) return {0, 0};
   return {d[0] - support_u_[2 * i], d[1] - support_u_[2 * i + 1]};
 }
@@ -123,7 +123,7 @@ std::vector<double> Instruments::row(const fdem::Engine& e, const mesh::Mesh& m,
 
 void Instruments::add_monitors(MonitorRecord& monitors, const NodeDisplacement& u) const {
   for (std::size_t i = 0; i < monitors_.size(); ++i) {
-    const MonitorSpec& s = scene_.monitors[i];
+    const MonitorSpec& s = specs_[i];
     const std::array<double, 2> d = monitor_u(i, u);
     monitors.points[s.name] = {mm(d[0]),
                                mm(d[1]),

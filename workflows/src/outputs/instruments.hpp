@@ -68,7 +68,7 @@ class Instruments : public OutputStepObserver {
   std::array<double, 2> monitor_u(std::size_t i, const NodeDisplacement& u) const;
   /// Per point of x: absolute reading [m] (towards the opening along the axis).
   std::vector<double> axial(const Extensometer& x, const NodeDisplacement& u) const;
-  const Scene& scene_;
+  std::vector<MonitorSpec> specs_;       ///< the scene's monitors, as it gave them
   std::vector<MaterialPoint> monitors_;  ///< per scene monitor
   std::vector<Extensometer> extensometers_;
   std::vector<std::string> ray_names_;  ///< key points

@@ -28,16 +28,18 @@ double median_thickness(const LiningGeometry& g) {
 
 }  // namespace
 
-LiningOutput::LiningOutput(const Scene& scene, const mesh::Mesh& m, std::string dir)
-    : dir_(std::move(dir)) {
+std::optional<ShotcreteStrength> shotcrete_strength(const Scene& scene) {
+  const auto it = scene.materials.find(mesh::kLining);
+  if (it == scene.materials.end() || !(it->second.compressive_strength > 0)) return std::nullopt;
+  return ShotcreteStrength{it->second.compressive_strength, it->second.tensile_strength};
+}
+
+LiningOutput::LiningOutput(const mesh::Mesh& m, std::optional<ShotcreteStrength> strength,
+                           std::string dir)
+    : strength_(strength), dir_(std::move(dir)) {
   if (auto g = lining_geometry(m)) geometry_ = std::move(*g);
   for (std::size_t t = 0; t < m.n_triangles(); ++t)
     if (m.zone[t] == mesh::kLining) triangles_.push_back(int(t));
-  const auto it = scene.materials.find(mesh::kLining);
-  if (it != scene.materials.end() && it->second.compressive_strength > 0) {
-    has_strength_ = true;
-    strength_ = {it->second.compressive_strength, it->second.tensile_strength};
-  }
 }
 
 bool LiningOutput::installed(const fdem::Engine& e) const {
@@ -60,7 +62,7 @@ void LiningOutput::at_output_step(const OutputStep& step, std::vector<double>&) 
   std::snprintf(name, sizeof name, "lining_%06ld.csv", e.step_count());
   coupling::atomic_write_text(
       output_path(dir_, name),
-      lining_csv(e.step_count(), geometry_, forces(e), has_strength_ ? &strength_ : nullptr));
+      lining_csv(e.step_count(), geometry_, forces(e), strength_ ? &*strength_ : nullptr));
 }
 
 LiningForceFigures LiningOutput::finish(const fdem::Engine& e, const std::string& dir,
@@ -74,7 +76,7 @@ LiningForceFigures LiningOutput::figures(const fdem::Engine& e, const std::strin
   last_ = forces(e);
   coupling::atomic_write_text(
       output_path(dir, "lining.csv"),
-      lining_csv(e.step_count(), geometry_, last_, has_strength_ ? &strength_ : nullptr));
+      lining_csv(e.step_count(), geometry_, last_, strength_ ? &*strength_ : nullptr));
   const auto angle = [&](std::size_t i) { return geometry_.segments[i].angle_deg; };
   const std::size_t n_max = arg_max(last_, [](const SectionForces& f) { return f.thrust; });
   const std::size_t n_min = arg_max(last_, [](const SectionForces& f) { return -f.thrust; });
@@ -101,20 +103,20 @@ LiningForceFigures LiningOutput::figures(const fdem::Engine& e, const std::strin
 }
 
 void LiningOutput::check_capacity(LiningForceFigures& f) const {
-  if (!has_strength_) {
+  if (!strength_) {
     f.capacity = "not checked: materials.lining.compressive_strength not given";
     return;
   }
   std::vector<double> fs;
   for (std::size_t i = 0; i < last_.size(); ++i)
-    fs.push_back(safety_factor(last_[i], geometry_.segments[i].thickness, strength_));
+    fs.push_back(safety_factor(last_[i], geometry_.segments[i].thickness, *strength_));
   const std::size_t i = std::size_t(std::min_element(fs.begin(), fs.end()) - fs.begin());
   const LiningSegment& s = geometry_.segments[i];
   f.capacity =
       "plain shotcrete section, elastic: N/t +- 6M/t^2 within [-tensile, compressive] strength";
   LiningCapacityFigures c;
-  c.compressive_strength_Pa = strength_.compressive;
-  c.tensile_strength_Pa = strength_.tensile;
+  c.compressive_strength_Pa = strength_->compressive;
+  c.tensile_strength_Pa = strength_->tensile;
   // An unloaded ring has no finite factor: JSON null.
   if (std::isfinite(fs[i])) c.min_safety_factor = fs[i];
   c.min_safety_factor_angle_deg = s.angle_deg;
@@ -142,13 +144,13 @@ void LiningOutput::plots(PlotWriter& plots) const {
                 {"moment M [kNm/m]", {{"M", angle, m}}, {}},
                 {"shear V [kN/m]", {{"V", angle, v}}, {}}},
                1000);
-  if (!has_strength_) return;
+  if (!strength_) return;
   std::vector<plots::PlotSeries> envelopes;
   const double t = median_thickness(geometry_);
   for (double fs : {1.0, 1.5}) {
     plots::PlotSeries c{
         "capacity, safety factor " + std::string(fs == 1.0 ? "1.0" : "1.5"), {}, {}};
-    for (const auto& p : capacity_envelope(t, strength_, fs)) {
+    for (const auto& p : capacity_envelope(t, *strength_, fs)) {
       c.x.push_back(p[0] / 1e3);
       c.y.push_back(p[1] / 1e3);
     }
@@ -157,7 +159,7 @@ void LiningOutput::plots(PlotWriter& plots) const {
   char title[160];
   std::snprintf(title, sizeof title,
                 "Lining capacity (plain shotcrete, t = %.3g m, fc = %.3g MPa, ft = %.3g MPa)", t,
-                strength_.compressive / 1e6, strength_.tensile / 1e6);
+                strength_->compressive / 1e6, strength_->tensile / 1e6);
   plots.panels("lining_capacity.png", title, "bending moment M [kNm/m]",
                {{"thrust N [kN/m]", envelopes, {{"segments, end of run", m, n}}}}, 800);
 }

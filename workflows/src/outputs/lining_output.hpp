@@ -21,9 +21,9 @@ namespace rockfdem::workflows {
 
 class LiningOutput : public OutputStepObserver {
  public:
-  /// The ring's segments of `m`; `scene` gives the shotcrete's strengths;
-  /// files go to `dir`.
-  LiningOutput(const Scene& scene, const mesh::Mesh& m, std::string dir);
+  /// The ring's segments of `m`, checked against `strength` (none: forces
+  /// only); files go to `dir`.
+  LiningOutput(const mesh::Mesh& m, std::optional<ShotcreteStrength> strength, std::string dir);
   /// Whether the mesh has a ring to cut into segments.
   bool has_ring() const { return !geometry_.segments.empty(); }
   /// Whether every lining triangle carries load in `e`.
@@ -48,12 +48,15 @@ class LiningOutput : public OutputStepObserver {
   void check_capacity(LiningForceFigures& f) const;
   LiningGeometry geometry_;
   std::vector<int> triangles_;  ///< every lining triangle
-  bool has_strength_ = false;
-  ShotcreteStrength strength_;
+  std::optional<ShotcreteStrength> strength_;
   std::vector<SectionForces> last_;  ///< forces of finish()
   std::string dir_;
   bool installed_ = false;
 };
+
+/// The shotcrete's strengths the scene gives (materials.lining); none
+/// without a compressive strength.
+std::optional<ShotcreteStrength> shotcrete_strength(const Scene& scene);
 
 /// Crack elements joining a lining triangle to a triangle of another zone
 /// (the shotcrete-rock bond), in crack order.

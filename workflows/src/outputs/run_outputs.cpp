@@ -34,7 +34,7 @@ std::string detail_number(double v) {
 void RunOutputs::check_rigid_motion(const fdem::Engine& e, long step) {
   const RigidFit fit = key_points_.boundary_fit(e);
   max_rotation_deg_ = std::max(max_rotation_deg_, std::abs(fit.rotation) * 180 / M_PI);
-  check_rigid_rotation(fit, scene_.insitu.rollers, step);
+  check_rigid_rotation(fit, rollers_, step);
 }
 
 std::pair<std::string, double> RunOutputs::largest_key_point(
@@ -43,7 +43,16 @@ std::pair<std::string, double> RunOutputs::largest_key_point(
 }
 
 RunOutputs::RunOutputs(const Scene& scene, const RunContext& ctx, RunRecord& summary)
-    : scene_(scene), ctx_(ctx), summary_(summary) {
+    : scene_(scene),
+      ctx_(ctx),
+      summary_(summary),
+      vtk_(scene.output.vtk),
+      rollers_(scene.insitu.rollers),
+      lining_ring_(scene.lining_ring),
+      is_cable_(scene.bolts.is_cable),
+      shotcrete_(shotcrete_strength(scene)) {
+  insitu::KirschCase k;
+  if (kirsch_case(scene, &k)) kirsch_ = k;
   summary_.note_turned_off(scene.output, "fdem.pvd, fdem_NNNN.vtu, insitu.vtu, continuum.vtu",
                            true);
 }
@@ -52,18 +61,18 @@ void RunOutputs::record_insitu(const mesh::Mesh& m,
                                const std::vector<insitu::InsituField>& fields) {
   fields_ = fields;
   summary_.record_insitu(fields);
-  if (scene_.output.vtk)
+  if (vtk_)
     coupling::write_vtu(coupling::insitu_grid(m, fields.back()),
                         output_path(ctx_.output_dir, "insitu.vtu"));
-  insitu::KirschCase k;
-  if (kirsch_case(scene_, &k) && fields.back().alpha == 0.0)
-    summary_.insitu.kirsch_rel_l2 = insitu::compare_kirsch(m, fields.back(), k).stress_rel_l2;
+  if (kirsch_ && fields.back().alpha == 0.0)
+    summary_.insitu.kirsch_rel_l2 =
+        insitu::compare_kirsch(m, fields.back(), *kirsch_).stress_rel_l2;
 }
 
 void RunOutputs::set_bolts(const fdem::BoltPlan* bolts) {
   bolts_ = bolts;
   if (bolts && !bolts->specs.empty())
-    bolt_results_ = std::make_unique<BoltResults>(*bolts, scene_.bolts.is_cable, ctx_.output_dir);
+    bolt_results_ = std::make_unique<BoltResults>(*bolts, is_cable_, ctx_.output_dir);
 }
 
 std::vector<std::string> RunOutputs::history_columns(const std::vector<Monitor>& monitors) const {
@@ -84,8 +93,8 @@ std::vector<std::string> RunOutputs::history_columns(const std::vector<Monitor>&
 void RunOutputs::begin_history(const std::vector<Monitor>& monitors, const mesh::Mesh& m) {
   key_points_ = fields_.empty() ? KeyPoints(monitors, m, {}, {})
                                 : KeyPoints(monitors, m, fields_.back().ux, fields_.back().uy);
-  if (scene_.lining_ring) {
-    lining_ = std::make_unique<LiningOutput>(scene_, m, ctx_.output_dir);
+  if (lining_ring_) {
+    lining_ = std::make_unique<LiningOutput>(m, shotcrete_, ctx_.output_dir);
     if (!lining_->has_ring()) lining_.reset();
     if (lining_) lining_->set_installed(lining_installed_);
   }
@@ -136,7 +145,7 @@ void RunOutputs::record_frame(const fdem::Engine& e, const mesh::Mesh& m, const 
   check_rigid_motion(e, e.step_count());
   // The hand-off step's dt, once it passed (a failed one is no good state).
   if (stage == "handoff" && stage_names_.size() == 1) handoff_dt_ = e.dt();
-  if (scene_.output.vtk) {
+  if (vtk_) {
     const NodeDisplacement u = key_points_.node_displacements(e);
     std::vector<double> no_columns;
     frames_->at_output_step({e, m, stage, int(stage_names_.size() - 1), u}, no_columns);

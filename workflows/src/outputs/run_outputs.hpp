@@ -2,6 +2,7 @@
 // ParaView frames, the ground reaction curve, PNG plots and summary.json.
 #pragma once
 
+#include <cstdint>
 #include <map>
 #include <memory>
 #include <optional>
@@ -122,9 +123,16 @@ class RunOutputs : public StepOutputs {
   bool lining_outputs(const fdem::Engine& e, const mesh::Mesh& m);
   /// Stops the run (NumericalError) when the boundary turns as a rigid body.
   void check_rigid_motion(const fdem::Engine& e, long step);
-  const Scene& scene_;
+  const Scene& scene_;  ///< read by the constructor and finish() alone
   const RunContext& ctx_;
   RunRecord& summary_;
+  // What the outputs before finish() take from the scene.
+  bool vtk_ = false;                            ///< output.vtk
+  bool rollers_ = false;                        ///< insitu.rollers
+  bool lining_ring_ = false;                    ///< the model has a lining ring
+  std::optional<insitu::KirschCase> kirsch_;    ///< the Kirsch case the scene is, if any
+  std::vector<std::uint8_t> is_cable_;          ///< per bolt segment
+  std::optional<ShotcreteStrength> shotcrete_;  ///< materials.lining's strengths
   std::vector<insitu::InsituField> fields_;
   std::unique_ptr<History> history_;
   std::unique_ptr<Instruments> instruments_;

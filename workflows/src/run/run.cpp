@@ -175,6 +175,7 @@ int Run::write_implicit_results_only() {
 void Run::build_engine() {
   EngineSetup setup = setup_engine(scene_, mesh_, handoff(), ctx_.threads, ctx_.force_dt);
   support_ = setup.support;
+  stage_damping_ = setup.stage_damping;
   bolts_ = std::move(setup.bolts);
   engine_.emplace(std::move(setup.engine));
 }
@@ -209,7 +210,7 @@ void Run::take_handoff_step() {
     out_.keep_start(engine());
     reporting_failure([&] { engine().step(); });
     start_ratio_ = engine().unbalanced_force_ratio();
-    engine().set_damping(stage_damping(scene_));
+    engine().set_damping(stage_damping_);
   }
   timer_.stamp("fdem setup");
 }
@@ -283,9 +284,8 @@ void Run::finish() {
     summary_.warnings.push_back(verdict.status + ": " + verdict.message);
     std::cerr << "warning: " << verdict.status << ": " << verdict.message << '\n';
   }
-  summary_.damping =
-      DampingFigures{stage_damping(scene_).local, scene_.engine.mass_damping,
-                     scene_.engine.kinetic_damping, scene_.engine.local_damping >= 0};
+  summary_.damping = DampingFigures{stage_damping_.local, stage_damping_.mass_proportional,
+                                    stage_damping_.kinetic, scene_.engine.local_damping >= 0};
   summary_.fdem = stages_only(*stages_);
   summary_.fdem->unbalanced_ratio_at_start = start_ratio_;
   summary_.fdem->unbalanced_ratio_at_end = engine().unbalanced_force_ratio();

@@ -73,7 +73,8 @@ class Run {
   mesh::Mesh mesh_;
   std::vector<insitu::InsituField> fields_;
   SupportMaterials support_;
-  fdem::BoltPlan bolts_;  ///< marks bolt triangles and allows fracture there
+  fdem::DampingSettings stage_damping_;  ///< the stages' (after the hand-off step)
+  fdem::BoltPlan bolts_;                 ///< marks bolt triangles and allows fracture there
   std::optional<fdem::Engine> engine_;
   std::vector<Monitor> monitors_;
   double start_ratio_ = 0;  ///< the hand-off step's unbalanced-force ratio

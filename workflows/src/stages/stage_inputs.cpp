@@ -257,7 +257,8 @@ EngineSetup setup_engine(const Scene& scene, const mesh::Mesh& m,
   const SupportMaterials support = add_support_materials(scene, in);
   fdem::BoltPlan bolts;
   if (!scene.bolts.segments.empty()) bolts = planned_bolts(scene, in);
-  EngineSetup setup{support, std::move(bolts), make_engine(in, scene, force_dt)};
+  EngineSetup setup{support, std::move(bolts), make_engine(in, scene, force_dt),
+                    stage_damping(scene)};
   refuse_dt_with_stage_damping(scene, setup.engine, in.damping, force_dt);
   return setup;
 }

@@ -42,12 +42,13 @@ fdem::ModelInput engine_input(const Scene& scene, const mesh::Mesh& m,
 fdem::Engine make_engine(fdem::ModelInput in, const Scene& scene, bool force_dt);
 
 /// What a tunnel run's engine setup gives the run: the engine materials the
-/// support stages give crack elements, the bolt plan (empty without bolts)
-/// and the engine.
+/// support stages give crack elements, the bolt plan (empty without bolts),
+/// the engine (with the hand-off step's damping) and the stages' damping.
 struct EngineSetup {
   SupportMaterials support;
   fdem::BoltPlan bolts;  ///< marks bolt triangles and allows fracture there
   fdem::Engine engine;
+  fdem::DampingSettings stage_damping;  ///< after the hand-off step (stage_damping)
 };
 
 /// The engine of a tunnel at the hand-off (engine_input) with the support
