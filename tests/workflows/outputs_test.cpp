@@ -183,7 +183,7 @@ TEST_F(Outputs, lining_never_installed_is_reported_as_skipped) {
 // A platen at a lab rate (1e-5 m/s) moves so little energy in 2000 steps
 // that the ledger's first half steps are 3% of it: a relative imbalance
 // that used to stop the run as diverged (exit 3 at step 500, 24%). Below
-// the energy floor (energy_floor) the check stands aside; the divergence
+// the energy floor (EnergyCheck::floor) the check stands aside; the divergence
 // tests above still fail.
 TEST_F(Outputs, lab_rate_platen_is_not_a_numerical_failure) {
   const nlohmann::json j = summary_of("run " + kTestDir +

@@ -246,9 +246,9 @@ bool RunOutputs::lining_outputs(const fdem::Engine& e, const mesh::Mesh& m) {
 }
 
 void RunOutputs::finish(const fdem::Engine& e, const mesh::Mesh& m, PhaseTimer& timer,
-                        const fdem::BoltPlan& bolts) {
+                        const fdem::BoltPlan& bolts, const EnergyCheck& energy) {
   report_engine(e, timer, summary_);
-  warn_if_unbalanced(e, energy_floor_, ctx_.quiet, summary_);
+  energy.warn_if_unbalanced(e, ctx_.quiet, summary_);
   report_dt();
   summary_.counts.bolts = long(bolts.specs.size());
   if (!bolt_results_) summary_.skipped.push_back("bolts: none in the scene");

@@ -23,6 +23,7 @@
 #include "rockfdem/fdem/bolt_install.hpp"
 #include "rockfdem/insitu/insitu.hpp"
 #include "rockfdem/workflows/scene.hpp"
+#include "run/energy_check.hpp"
 #include "run/last_good.hpp"
 #include "run/phase_timer.hpp"
 #include "run/run_context.hpp"
@@ -54,9 +55,6 @@ class RunOutputs : public StepOutputs {
   void support_installed(const fdem::Engine& e) override {
     if (instruments_) instruments_->support_installed(key_points_.node_displacements(e));
   }
-  /// The floor of the energy check (energy_floor), computed once by the
-  /// stage loop: below it an unbalanced energy is no warning at the end.
-  void set_energy_floor(double floor) { energy_floor_ = floor; }
   /// Whether the lining ring is installed as lining (before, its triangles
   /// are ground still to be excavated): its forces are written from then.
   void set_lining_installed(bool installed) override;
@@ -81,8 +79,9 @@ class RunOutputs : public StepOutputs {
   /// the restart writes to another directory.
   void restore(const nlohmann::json& state, const std::string& from_dir);
   /// Counts, monitors, broken cracks, hash, plots, timings; writes summary.json.
+  /// `energy`: the stage loop's check, whose end warning the summary carries.
   void finish(const fdem::Engine& e, const mesh::Mesh& m, PhaseTimer& timer,
-              const fdem::BoltPlan& bolts);
+              const fdem::BoltPlan& bolts, const EnergyCheck& energy);
   /// The hand-off state, before the first explicit step: what a failure in
   /// that step reports as the last good state (nothing is written yet).
   void keep_start(const fdem::Engine& e) { last_good_.take(e, e.energy_balance()); }
@@ -145,8 +144,7 @@ class RunOutputs : public StepOutputs {
   double max_rotation_deg_ = 0;  ///< largest |rotation| of the outer boundary so far
   std::vector<std::string> stage_names_;
   std::vector<std::string> pictures_;  ///< PNG files rendered, for report.md
-  double handoff_dt_ = 0;    ///< dt of the hand-off step (0: not taken by this run's record)
-  double energy_floor_ = 0;  ///< energy_floor of the model (set_energy_floor)
+  double handoff_dt_ = 0;  ///< dt of the hand-off step (0: not taken by this run's record)
   LastGoodState last_good_;
   double fdem_seconds_at_start_ = 0;
 };

@@ -35,8 +35,6 @@ SpecimenOutputs::SpecimenOutputs(const Scene& scene, const RunContext& ctx, RunR
   summary_.note_turned_off(scene.output, "fdem.pvd, fdem_NNNN.vtu", true);
 }
 
-void SpecimenOutputs::begin(const mesh::Mesh& m) { floor_ = energy_floor(scene_, m); }
-
 void SpecimenOutputs::record_rows(const fdem::Engine& e, const mesh::Mesh&, const std::string&,
                                   double, const fdem::EnergyBalance& energy) {
   const PlatenReading r = load_.read(e);
@@ -85,13 +83,13 @@ void SpecimenOutputs::restore(const nlohmann::json& s, const std::string& from_d
   load_.restore(s.at("load"));
 }
 
-void SpecimenOutputs::finish(const fdem::Engine& e, PhaseTimer& timer) {
+void SpecimenOutputs::finish(const fdem::Engine& e, PhaseTimer& timer, const EnergyCheck& energy) {
   if (scene_.output.plots)
     specimen_plots(e, history_, disc_, ctx_.output_dir, summary_, ctx_.quiet);
   timer.stamp("output");
   summary_.status = "completed";
   report_engine(e, timer, summary_);
-  warn_if_unbalanced(e, floor_, ctx_.quiet, summary_);
+  energy.warn_if_unbalanced(e, ctx_.quiet, summary_);
   summary_.specimen = load_.record();
   const SpecimenRecord& peak = *summary_.specimen;
   summary_.skipped.push_back("insitu: a specimen starts stress-free");

@@ -12,6 +12,7 @@
 #include "outputs/step_outputs.hpp"
 #include "rockfdem/coupling/vtk_writer.hpp"
 #include "rockfdem/workflows/scene.hpp"
+#include "run/energy_check.hpp"
 #include "run/last_good.hpp"
 #include "run/run_context.hpp"
 #include "run/summary.hpp"
@@ -24,9 +25,6 @@ class SpecimenOutputs : public StepOutputs {
   SpecimenOutputs(const Scene& scene, const RunContext& ctx, RunRecord& summary);
   /// The platens' load: the stage's peak and post-peak stop, the rows' stress.
   PlatenLoad& load() { return load_; }
-  /// Starts history.csv (nothing is written before the first row);
-  /// `m`'s area sets the energy check's floor.
-  void begin(const mesh::Mesh& m);
   void record_rows(const fdem::Engine& e, const mesh::Mesh& m, const std::string& stage,
                    double support_ratio, const fdem::EnergyBalance& energy) override;
   void record_frame(const fdem::Engine& e, const mesh::Mesh& m, const std::string& stage,
@@ -39,8 +37,9 @@ class SpecimenOutputs : public StepOutputs {
   /// Puts state() back; frames are copied from `from_dir` when the restart
   /// writes to another directory.
   void restore(const nlohmann::json& state, const std::string& from_dir);
-  /// Plots, the engine's figures and the peak; writes summary.json.
-  void finish(const fdem::Engine& e, PhaseTimer& timer);
+  /// Plots, the engine's figures (with `energy`'s end warning) and the
+  /// peak; writes summary.json.
+  void finish(const fdem::Engine& e, PhaseTimer& timer, const EnergyCheck& energy);
   /// summary.json of a run a NumericalError stopped: the last good state.
   void report_failure(const fdem::Engine& e, PhaseTimer& timer, const std::string& why);
   /// summary.json of a run a signal stopped (after its checkpoint).
@@ -57,7 +56,6 @@ class SpecimenOutputs : public StepOutputs {
   PlatenLoad load_;
   History history_;
   coupling::PvdCollection pvd_;
-  double floor_ = 0;  ///< energy_floor of the specimen
   int frame_ = 0;
   LastGoodState last_good_;
 };

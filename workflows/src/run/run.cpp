@@ -219,7 +219,6 @@ void Run::begin_stages() {
   out_.begin_history(monitors_, mesh_);
   stages_ = std::make_unique<StageRunner>(engine(), mesh_, handoff(), scene_, ctx_, out_, monitors_,
                                           bolts_, support_);
-  out_.set_energy_floor(stages_->energy_check_floor());
   if (restart_) {
     try {
       out_.restore(resume_.run.at("outputs"), run_dir_of(ctx_.restart));
@@ -242,7 +241,7 @@ void Run::run_stages() {
   } catch (const Interrupted&) {
     summary_.status = "interrupted";
     summary_.fdem = stages_only(*stages_);
-    out_.finish(engine(), mesh_, timer_, bolts_);
+    out_.finish(engine(), mesh_, timer_, bolts_, stages_->energy_check());
     throw;
   } catch (const NumericalError& e) {
     // The frames and history rows written so far are the last good output.
@@ -290,7 +289,7 @@ void Run::finish() {
   summary_.fdem->unbalanced_ratio_at_start = start_ratio_;
   summary_.fdem->unbalanced_ratio_at_end = engine().unbalanced_force_ratio();
   summary_.fdem->handoff_alpha = handoff().alpha;
-  out_.finish(engine(), mesh_, timer_, bolts_);
+  out_.finish(engine(), mesh_, timer_, bolts_, stages_->energy_check());
   if (!ctx_.quiet)
     std::cout << "status: " << verdict.status
               << (verdict.message.empty() ? " (every stage met its criteria)"

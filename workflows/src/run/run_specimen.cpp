@@ -49,7 +49,7 @@ class SpecimenRun {
     write_first_outputs();
     begin_stages();
     run_stages();
-    out_.finish(*engine_, timer_);
+    out_.finish(*engine_, timer_, stages_->energy_check());
     return 0;
   }
 
@@ -71,7 +71,6 @@ class SpecimenRun {
   void build_engine() {
     engine_.emplace(
         make_engine(specimen_model_input(scene_, mesh_, ctx_.threads), scene_, ctx_.force_dt));
-    out_.begin(mesh_);
     if (restart_) {
       try {
         std::istringstream state(resume_.engine_state);

@@ -4,7 +4,6 @@
 #include <cmath>
 #include <limits>
 
-#include "outputs/engine_report.hpp"
 #include "rockfdem/error.hpp"
 #include "run/interrupt.hpp"
 #include "run/output_dir.hpp"
@@ -32,7 +31,7 @@ StageRunner::StageRunner(fdem::Engine& engine, const mesh::Mesh& m,
       out_(out),
       scene_(scene),
       monitors_(monitors),
-      energy_floor_(energy_floor(scene, m)) {
+      energy_(scene, m) {
   out_.set_lining_installed(model_.lining_installed);
 }
 
@@ -182,7 +181,7 @@ void StageRunner::record_output(const std::string& stage, PhaseTimer& timer) {
   const fdem::EnergyBalance energy = engine_.energy_balance();
   out_.record_rows(engine_, model_.mesh, stage, model_.support_ratio(), energy);
   // Before the frame: the last frame stays the last good state.
-  check_energy(energy, engine_.step_count(), energy_floor_);
+  energy_.at_output_step(energy, engine_.step_count());
   out_.record_frame(engine_, model_.mesh, stage, energy, timer);
 }
 

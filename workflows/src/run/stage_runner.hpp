@@ -23,6 +23,7 @@
 #include "rockfdem/fdem/engine.hpp"
 #include "rockfdem/insitu/insitu.hpp"
 #include "rockfdem/workflows/scene.hpp"
+#include "run/energy_check.hpp"
 #include "run/phase_timer.hpp"
 #include "run/run_context.hpp"
 #include "run/run_figures.hpp"
@@ -49,7 +50,8 @@ class StageRunner {
   /// Called to write a checkpoint: every `every` steps (at the next output
   /// step; 0: never) and when a signal interrupts the run.
   void set_checkpoint(long every, std::function<void()> save);
-  double energy_check_floor() const { return energy_floor_; }  ///< energy_floor [J]
+  /// The energy balance's check at every output step (and its end warning).
+  const EnergyCheck& energy_check() const { return energy_; }
   /// Runs the stages from the cursor to the end. Throws Interrupted (after
   /// a checkpoint and a last history row) when SIGINT or SIGTERM arrives.
   void run_all(PhaseTimer& timer);
@@ -132,7 +134,7 @@ class StageRunner {
   long last_checkpoint_ = 0;  ///< step of the last checkpoint (or of the start)
   std::function<void()> save_checkpoint_;
   std::vector<StageRecord> report_;
-  double energy_floor_ = 0;  ///< energy_floor of the model
+  EnergyCheck energy_;
 };
 
 }  // namespace rockfdem::workflows
