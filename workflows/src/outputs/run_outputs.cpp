@@ -69,12 +69,6 @@ void RunOutputs::record_insitu(const mesh::Mesh& m,
         insitu::compare_kirsch(m, fields.back(), *kirsch_).stress_rel_l2;
 }
 
-void RunOutputs::set_bolts(const fdem::BoltPlan* bolts) {
-  bolts_ = bolts;
-  if (bolts && !bolts->specs.empty())
-    bolt_results_ = std::make_unique<BoltResults>(*bolts, is_cable_, ctx_.output_dir);
-}
-
 std::vector<std::string> RunOutputs::history_columns(const std::vector<Monitor>& monitors) const {
   std::vector<std::string> cols{
       "stage",    "step",      "time",        "kinetic_energy", "unbalanced_ratio",
@@ -90,9 +84,14 @@ std::vector<std::string> RunOutputs::history_columns(const std::vector<Monitor>&
   return cols;
 }
 
-void RunOutputs::begin_history(const std::vector<Monitor>& monitors, const mesh::Mesh& m) {
-  key_points_ = fields_.empty() ? KeyPoints(monitors, m, {}, {})
-                                : KeyPoints(monitors, m, fields_.back().ux, fields_.back().uy);
+void RunOutputs::begin(const mesh::Mesh& m, const insitu::InsituField& handoff,
+                       const std::vector<Monitor>& monitors, const fdem::BoltPlan& bolts,
+                       std::unique_ptr<Instruments> instruments) {
+  bolts_ = &bolts;
+  if (!bolts.specs.empty())
+    bolt_results_ = std::make_unique<BoltResults>(bolts, is_cable_, ctx_.output_dir);
+  instruments_ = std::move(instruments);
+  key_points_ = KeyPoints(monitors, m, handoff.ux, handoff.uy);
   if (lining_ring_) {
     lining_ = std::make_unique<LiningOutput>(m, shotcrete_, ctx_.output_dir);
     if (!lining_->has_ring()) lining_.reset();

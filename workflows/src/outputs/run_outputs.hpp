@@ -36,21 +36,20 @@ class RunOutputs : public StepOutputs {
   RunOutputs(const Scene& scene, const RunContext& ctx, RunRecord& summary);
   /// summary.json's insitu keys and the implicit part of the ground reaction curve.
   void record_insitu(const mesh::Mesh& m, const std::vector<insitu::InsituField>& fields);
-  /// Starts history.csv; `m`'s outer boundary defines the rigid translation
-  /// removed from reported displacements.
-  void begin_history(const std::vector<Monitor>& monitors, const mesh::Mesh& m);
-  /// Bolts whose axial stress the ParaView frames carry (once installed)
-  /// and whose section forces the outputs report (BoltResults); before
-  /// begin_history, which adds their columns.
-  void set_bolts(const fdem::BoltPlan* bolts);
+  /// The outputs that observe the output steps, made before anything is
+  /// written (a restart's run state is checked against history_columns()
+  /// next): the key points, displaced from `handoff` and with `m`'s outer
+  /// boundary defining the rigid translation removed from reported
+  /// displacements; the bolts' results (axial stress in the frames, section
+  /// forces) when `bolts` has any; the `instruments` (the scene's monitors,
+  /// extensometers and broken depth along rays); the lining ring's forces;
+  /// the ParaView frames; history.csv's columns.
+  void begin(const mesh::Mesh& m, const insitu::InsituField& handoff,
+             const std::vector<Monitor>& monitors, const fdem::BoltPlan& bolts,
+             std::unique_ptr<Instruments> instruments);
   /// history.csv's columns for these key points: the run's figures, then
-  /// the bolts' (set_bolts) and the instruments' (set_instruments).
+  /// the bolts' and the instruments' (begin).
   std::vector<std::string> history_columns(const std::vector<Monitor>& monitors) const;
-  /// The scene's monitors, extensometers and broken depth along rays:
-  /// history columns after the energy terms, summary entries.
-  void set_instruments(std::unique_ptr<Instruments> instruments) {
-    instruments_ = std::move(instruments);
-  }
   /// A `lining` or `bolts` stage installed its support (Instruments).
   void support_installed(const fdem::Engine& e) override {
     if (instruments_) instruments_->support_installed(key_points_.node_displacements(e));
@@ -135,12 +134,12 @@ class RunOutputs : public StepOutputs {
   std::vector<insitu::InsituField> fields_;
   std::unique_ptr<History> history_;
   std::unique_ptr<Instruments> instruments_;
-  std::unique_ptr<FrameOutput> frames_;  ///< from begin_history
+  std::unique_ptr<FrameOutput> frames_;  ///< from begin
   const fdem::BoltPlan* bolts_ = nullptr;
   std::unique_ptr<BoltResults> bolt_results_;  ///< with bolts in the scene
   std::unique_ptr<LiningOutput> lining_;       ///< null: no lining ring
   bool lining_installed_ = false;
-  KeyPoints key_points_;         ///< from begin_history
+  KeyPoints key_points_;         ///< from begin
   double max_rotation_deg_ = 0;  ///< largest |rotation| of the outer boundary so far
   std::vector<std::string> stage_names_;
   std::vector<std::string> pictures_;  ///< PNG files rendered, for report.md

@@ -180,13 +180,13 @@ void Run::build_engine() {
   engine_.emplace(std::move(setup.engine));
 }
 
-// Key points and instruments before anything is written: a point in no
-// triangle or in the core is refused first, as is a restart's run state
-// that does not fit them.
+// Key points, instruments and the outputs observing them before anything
+// is written: a point in no triangle or in the core is refused first, as
+// is a restart's run state that does not fit them.
 void Run::place_instruments() {
   monitors_ = tunnel_monitors(scene_.mesh, mesh_, engine());
-  out_.set_instruments(std::make_unique<Instruments>(scene_, mesh_, engine(), monitors_, bolts_));
-  out_.set_bolts(&bolts_);
+  out_.begin(mesh_, handoff(), monitors_, bolts_,
+             std::make_unique<Instruments>(scene_, mesh_, engine(), monitors_, bolts_));
   if (restart_)
     start_ratio_ = restore_before_writing(resume_, ctx_.restart, monitors_, out_, engine(), bolts_);
   timer_.stamp("fdem setup");
@@ -216,7 +216,6 @@ void Run::take_handoff_step() {
 }
 
 void Run::begin_stages() {
-  out_.begin_history(monitors_, mesh_);
   stages_ = std::make_unique<StageRunner>(engine(), mesh_, handoff(), scene_, ctx_, out_, monitors_,
                                           bolts_, support_);
   if (restart_) {
