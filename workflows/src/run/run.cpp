@@ -18,7 +18,6 @@
 #include "outputs/continuum_comparison.hpp"
 #include "outputs/continuum_counterpart.hpp"
 #include "rockfdem/error.hpp"
-#include "rockfdem/mesh/build.hpp"
 #include "rockfdem/mesh/msh_io.hpp"
 #include "run/implicit_check.hpp"
 #include "run/interrupt.hpp"
@@ -98,28 +97,13 @@ FdemRecord stages_only(const StageRunner& stages) {
 
 }  // namespace
 
-Run::Run(const Scene& scene, const RunContext& ctx)
-    : scene_(scene),
-      ctx_(ctx),
-      restart_(!ctx.restart.empty()),
-      summary_(scene, ctx.threads),
-      out_(scene, ctx, summary_) {}
-
-template <class F>
-void Run::reporting_failure(F&& f) {
-  try {
-    f();
-  } catch (const NumericalError& err) {
-    const std::string why = with_likely_cause(scene_, err.what());
-    out_.report_failure(engine(), timer_, why);
-    throw NumericalError(why);
-  }
-}
+Run::Run(const Scene& scene, const RunContext& ctx) : StagedRun(scene, ctx) {}
 
 int Run::run() {
   refuse_unsupported();
   read_restart();
   make_mesh();
+  stop_if_interrupted("meshing");
   solve_insitu();
   if (scene_.stages.empty()) return write_implicit_results_only();
   build_engine();
@@ -139,19 +123,6 @@ void Run::refuse_unsupported() const {
                      detail::number_text(scene_.insitu.unit_weight) +
                      ": `rockfdem run` of a tunnel needs a uniform in-situ stress (0); the "
                      "gradient is supported by `rockfdem insitu`");
-}
-
-// A bad checkpoint is refused before anything is written.
-void Run::read_restart() {
-  if (restart_) resume_ = read_checkpoint(ctx_.restart, scene_);
-}
-
-void Run::make_mesh() {
-  mesh::MeshReport report;
-  mesh_ = keeping_threads(ctx_, [&] { return mesh::build_mesh(scene_.mesh, &report); });
-  summary_.record_mesh(mesh_, report);
-  timer_.stamp("mesh");
-  stop_if_interrupted("meshing");
 }
 
 void Run::solve_insitu() {
@@ -216,22 +187,8 @@ void Run::take_handoff_step() {
 }
 
 void Run::begin_stages() {
-  stages_ = std::make_unique<StageRunner>(engine(), mesh_, handoff(), scene_, ctx_, out_, monitors_,
-                                          bolts_, support_);
-  if (restart_) {
-    try {
-      out_.restore(resume_.run.at("outputs"), run_dir_of(ctx_.restart));
-      stages_->restore(resume_.run.at("stages"));
-    } catch (const InputError& e) {
-      throw InputError(ctx_.restart + ": " + e.what());
-    }
-    summary_.restarted_from = CheckpointMark{ctx_.restart, engine().step_count()};
-  } else {
-    reporting_failure([&] { stages_->record_output("handoff", timer_); });
-  }
-  stages_->set_checkpoint(
-      ctx_.checkpoint_every >= 0 ? ctx_.checkpoint_every : scene_.output.checkpoint_every,
-      [this] { save_checkpoint(); });
+  stages_.emplace(engine(), mesh_, handoff(), scene_, ctx_, out_, monitors_, bolts_, support_);
+  resume_or_record("handoff");
 }
 
 void Run::run_stages() {
@@ -245,9 +202,7 @@ void Run::run_stages() {
   } catch (const NumericalError& e) {
     // The frames and history rows written so far are the last good output.
     summary_.fdem = stages_only(*stages_);
-    const std::string why = with_likely_cause(scene_, e.what());
-    out_.report_failure(engine(), timer_, why);
-    throw NumericalError(why);
+    fail(e.what());
   } catch (const InputError& e) {
     const std::string why = stage_input_error(e);
     summary_.fdem = stages_only(*stages_);
@@ -310,17 +265,13 @@ void Run::stop_if_interrupted(const char* after) {
                              "; summary.json is written (no explicit step yet, so no checkpoint)");
 }
 
-void Run::save_checkpoint() {
-  Checkpoint c;
-  c.run = {{"stages", stages_->state()},
-           {"outputs", out_.state()},
-           {"bolts", bolt_state(bolts_)},
-           {"start_ratio", start_ratio_}};
-  std::ostringstream bytes;
-  engine().save_state(bytes);
-  c.engine_state = bytes.str();
-  const std::string path = write_checkpoint(ctx_.output_dir, engine().step_count(), scene_, c);
-  summary_.checkpoint = CheckpointMark{path, engine().step_count()};
+void Run::add_run_state(nlohmann::json& run) const {
+  run["bolts"] = bolt_state(bolts_);
+  run["start_ratio"] = start_ratio_;
+}
+
+std::string Run::failure_message(const std::string& what) const {
+  return with_likely_cause(scene_, what);
 }
 
 // An explicit dt above the limit a later stage brings (lining, bolts, grout

@@ -3,8 +3,6 @@
 // phases in order (run.cpp says what each does and why in that order).
 #pragma once
 
-#include <memory>
-#include <optional>
 #include <string>
 #include <vector>
 
@@ -15,19 +13,14 @@
 #include "rockfdem/insitu/insitu.hpp"
 #include "rockfdem/mesh/mesh.hpp"
 #include "rockfdem/workflows/scene.hpp"
-#include "run/checkpoint.hpp"
-#include "run/phase_timer.hpp"
 #include "run/run_context.hpp"
-#include "run/stage_runner.hpp"
-#include "run/summary.hpp"
+#include "run/staged_run.hpp"
 
 namespace rockfdem::workflows {
 
-class Run {
+class Run : StagedRun<RunOutputs> {
  public:
   Run(const Scene& scene, const RunContext& ctx);
-  Run(const Run&) = delete;
-  Run& operator=(const Run&) = delete;
   /// Runs the phases; returns the exit code. Throws InputError (nothing
   /// written when the scene or checkpoint is refused before the engine
   /// accepts it), NumericalError or Interrupted (both after the summary).
@@ -36,8 +29,6 @@ class Run {
  private:
   // The phases, in the order run() calls them.
   void refuse_unsupported() const;
-  void read_restart();
-  void make_mesh();
   void solve_insitu();
   int write_implicit_results_only();
   void build_engine();
@@ -51,34 +42,22 @@ class Run {
 
   // What the phases share.
   const insitu::InsituField& handoff() const { return fields_.back(); }
-  fdem::Engine& engine() { return *engine_; }
   void stop_if_interrupted(const char* after);
-  void save_checkpoint();
+  /// The bolts and the hand-off's ratio, beyond the stages' and outputs'.
+  void add_run_state(nlohmann::json& run) const override;
+  /// With the likely cause when the in-situ stress is large against the
+  /// rock's modulus.
+  std::string failure_message(const std::string& what) const override;
   /// The message of an InputError from a stage, with engine.dt named when
   /// a later stage's stability limit is below it.
   std::string stage_input_error(const InputError& e);
-  /// Runs `f`; a NumericalError in it (the hand-off step or a stage) writes
-  /// the failure summary first, with the likely cause when the in-situ
-  /// stress is large against the rock's modulus.
-  template <class F>
-  void reporting_failure(F&& f);
 
-  const Scene& scene_;
-  const RunContext& ctx_;
-  PhaseTimer timer_;
-  const bool restart_;
-  Checkpoint resume_;
-  RunRecord summary_;
-  RunOutputs out_;
-  mesh::Mesh mesh_;
   std::vector<insitu::InsituField> fields_;
   SupportMaterials support_;
   fdem::DampingSettings stage_damping_;  ///< the stages' (after the hand-off step)
   fdem::BoltPlan bolts_;                 ///< marks bolt triangles and allows fracture there
-  std::optional<fdem::Engine> engine_;
   std::vector<Monitor> monitors_;
   double start_ratio_ = 0;  ///< the hand-off step's unbalanced-force ratio
-  std::unique_ptr<StageRunner> stages_;
 };
 
 /// `rockfdem run` of a tunnel: Run(scene, ctx).run().

@@ -1,0 +1,83 @@
+#include "run/staged_run.hpp"
+
+#include <sstream>
+
+#include "outputs/run_outputs.hpp"
+#include "outputs/specimen_outputs.hpp"
+#include "rockfdem/error.hpp"
+#include "rockfdem/mesh/build.hpp"
+#include "run/output_dir.hpp"
+
+namespace rockfdem::workflows {
+
+template <class Outputs>
+StagedRun<Outputs>::StagedRun(const Scene& scene, const RunContext& ctx)
+    : scene_(scene),
+      ctx_(ctx),
+      restart_(!ctx.restart.empty()),
+      summary_(scene, ctx.threads),
+      out_(scene, ctx, summary_) {}
+
+template <class Outputs>
+void StagedRun<Outputs>::read_restart() {
+  if (restart_) resume_ = read_checkpoint(ctx_.restart, scene_);
+}
+
+template <class Outputs>
+void StagedRun<Outputs>::make_mesh() {
+  mesh::MeshReport report;
+  mesh_ = keeping_threads(ctx_, [&] { return mesh::build_mesh(scene_.mesh, &report); });
+  summary_.record_mesh(mesh_, report);
+  timer_.stamp("mesh");
+}
+
+template <class Outputs>
+void StagedRun<Outputs>::resume_or_record(const std::string& first) {
+  if (restart_) {
+    try {
+      out_.restore(resume_.run.at("outputs"), run_dir_of(ctx_.restart));
+      stages_->restore(resume_.run.at("stages"));
+    } catch (const InputError& e) {
+      throw InputError(ctx_.restart + ": " + e.what());
+    }
+    summary_.restarted_from = CheckpointMark{ctx_.restart, engine().step_count()};
+  } else {
+    reporting_failure([&] { stages_->record_output(first, timer_); });
+  }
+  stages_->set_checkpoint(
+      ctx_.checkpoint_every >= 0 ? ctx_.checkpoint_every : scene_.output.checkpoint_every,
+      [this] { save_checkpoint(); });
+}
+
+template <class Outputs>
+void StagedRun<Outputs>::reporting_failure(const std::function<void()>& f) {
+  try {
+    f();
+  } catch (const NumericalError& err) {
+    fail(err.what());
+  }
+}
+
+template <class Outputs>
+void StagedRun<Outputs>::fail(const std::string& what) {
+  const std::string why = failure_message(what);
+  out_.report_failure(engine(), timer_, why);
+  throw NumericalError(why);
+}
+
+template <class Outputs>
+void StagedRun<Outputs>::save_checkpoint() {
+  Checkpoint c;
+  c.run = {{"stages", stages_->state()}, {"outputs", out_.state()}};
+  add_run_state(c.run);
+  std::ostringstream bytes;
+  engine().save_state(bytes);
+  c.engine_state = bytes.str();
+  const std::string path = write_checkpoint(ctx_.output_dir, engine().step_count(), scene_, c);
+  summary_.checkpoint = CheckpointMark{path, engine().step_count()};
+}
+
+template class StagedRun<RunOutputs>;
+template class StagedRun<SpecimenOutputs>;
+
+}  // namespace rockfdem::workflows

@@ -1,0 +1,68 @@
+// What a tunnel run (Run) and a specimen run share: the scene, a restart's
+// checkpoint, the record, the outputs, the mesh, the engine and the stage
+// loop, and the phases that treat them alike. `Outputs` is RunOutputs or
+// SpecimenOutputs (both instantiated in staged_run.cpp).
+#pragma once
+
+#include <functional>
+#include <nlohmann/json.hpp>
+#include <optional>
+#include <string>
+
+#include "rockfdem/fdem/engine.hpp"
+#include "rockfdem/mesh/mesh.hpp"
+#include "rockfdem/workflows/scene.hpp"
+#include "run/checkpoint.hpp"
+#include "run/phase_timer.hpp"
+#include "run/run_context.hpp"
+#include "run/stage_runner.hpp"
+#include "run/summary.hpp"
+
+namespace rockfdem::workflows {
+
+template <class Outputs>
+class StagedRun {
+ public:
+  StagedRun(const StagedRun&) = delete;
+  StagedRun& operator=(const StagedRun&) = delete;
+  virtual ~StagedRun() = default;
+
+ protected:
+  StagedRun(const Scene& scene, const RunContext& ctx);
+
+  /// A bad checkpoint is refused before anything is written.
+  void read_restart();
+  void make_mesh();
+  /// With stages_ made: a restart takes its checkpoint's outputs and stage
+  /// cursor, a fresh run records its first output step (stage `first`);
+  /// then the checkpoints are armed.
+  void resume_or_record(const std::string& first);
+  /// Runs `f`; a NumericalError in it is reported (fail).
+  void reporting_failure(const std::function<void()>& f);
+  /// summary.json of a run a NumericalError stopped, then the error again
+  /// with failure_message(what): the history and frames so far are the
+  /// last good output.
+  [[noreturn]] void fail(const std::string& what);
+  fdem::Engine& engine() { return *engine_; }
+
+  /// The run state a restart needs beyond the stages' and outputs'.
+  virtual void add_run_state(nlohmann::json& /*run*/) const {}
+  /// The message of a NumericalError as the run reports it.
+  virtual std::string failure_message(const std::string& what) const { return what; }
+
+  const Scene& scene_;
+  const RunContext& ctx_;
+  PhaseTimer timer_;
+  const bool restart_;
+  Checkpoint resume_;
+  RunRecord summary_;
+  Outputs out_;
+  mesh::Mesh mesh_;
+  std::optional<fdem::Engine> engine_;
+  std::optional<StageRunner> stages_;
+
+ private:
+  void save_checkpoint();
+};
+
+}  // namespace rockfdem::workflows
