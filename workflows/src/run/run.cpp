@@ -95,13 +95,20 @@ FdemRecord stages_only(const StageRunner& stages) {
   return f;
 }
 
+// What a tunnel run does not support, refused before the checkpoint is read.
+void refuse_unsupported(const Scene& scene) {
+  if (scene.insitu.unit_weight > 0)
+    throw InputError(scene.source + ": key 'insitu.unit_weight' = " +
+                     detail::number_text(scene.insitu.unit_weight) +
+                     ": `rockfdem run` of a tunnel needs a uniform in-situ stress (0); the "
+                     "gradient is supported by `rockfdem insitu`");
+}
+
 }  // namespace
 
 Run::Run(const Scene& scene, const RunContext& ctx) : StagedRun(scene, ctx) {}
 
 int Run::run() {
-  refuse_unsupported();
-  read_restart();
   make_mesh();
   stop_if_interrupted("meshing");
   solve_insitu();
@@ -115,14 +122,6 @@ int Run::run() {
   compare_with_references();
   finish();
   return 0;
-}
-
-void Run::refuse_unsupported() const {
-  if (scene_.insitu.unit_weight > 0)
-    throw InputError(scene_.source + ": key 'insitu.unit_weight' = " +
-                     detail::number_text(scene_.insitu.unit_weight) +
-                     ": `rockfdem run` of a tunnel needs a uniform in-situ stress (0); the "
-                     "gradient is supported by `rockfdem insitu`");
 }
 
 void Run::solve_insitu() {
@@ -283,6 +282,9 @@ std::string Run::stage_input_error(const InputError& e) {
          " s: " + e.what() + " (engine.dt = 0 follows the limit through every stage)";
 }
 
-int run_tunnel(const Scene& scene, const RunContext& ctx) { return Run(scene, ctx).run(); }
+int run_tunnel(const Scene& scene, const RunContext& ctx) {
+  refuse_unsupported(scene);
+  return Run(scene, ctx).run();
+}
 
 }  // namespace rockfdem::workflows

@@ -28,7 +28,6 @@ class Run : StagedRun<RunOutputs> {
 
  private:
   // The phases, in the order run() calls them.
-  void refuse_unsupported() const;
   void solve_insitu();
   int write_implicit_results_only();
   void build_engine();

@@ -33,7 +33,6 @@ class SpecimenRun : StagedRun<SpecimenOutputs> {
   SpecimenRun(const Scene& scene, const RunContext& ctx) : StagedRun(scene, ctx) {}
 
   int run() {
-    read_restart();
     make_mesh();
     build_engine();
     write_first_outputs();

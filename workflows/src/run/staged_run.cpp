@@ -15,13 +15,11 @@ StagedRun<Outputs>::StagedRun(const Scene& scene, const RunContext& ctx)
     : scene_(scene),
       ctx_(ctx),
       restart_(!ctx.restart.empty()),
+      resume_(restart_ ? read_checkpoint(ctx.restart, scene) : Checkpoint{}),
+      checkpoint_every_(ctx.checkpoint_every >= 0 ? ctx.checkpoint_every
+                                                  : scene.output.checkpoint_every),
       summary_(scene, ctx.threads),
       out_(scene, ctx, summary_) {}
-
-template <class Outputs>
-void StagedRun<Outputs>::read_restart() {
-  if (restart_) resume_ = read_checkpoint(ctx_.restart, scene_);
-}
 
 template <class Outputs>
 void StagedRun<Outputs>::make_mesh() {
@@ -44,9 +42,7 @@ void StagedRun<Outputs>::resume_or_record(const std::string& first) {
   } else {
     reporting_failure([&] { stages_->record_output(first, timer_); });
   }
-  stages_->set_checkpoint(
-      ctx_.checkpoint_every >= 0 ? ctx_.checkpoint_every : scene_.output.checkpoint_every,
-      [this] { save_checkpoint(); });
+  stages_->set_checkpoint(checkpoint_every_, [this] { save_checkpoint(); });
 }
 
 template <class Outputs>

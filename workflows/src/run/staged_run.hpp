@@ -28,10 +28,10 @@ class StagedRun {
   virtual ~StagedRun() = default;
 
  protected:
+  /// Reads a restart's checkpoint: a bad one is refused before anything
+  /// is written.
   StagedRun(const Scene& scene, const RunContext& ctx);
 
-  /// A bad checkpoint is refused before anything is written.
-  void read_restart();
   void make_mesh();
   /// With stages_ made: a restart takes its checkpoint's outputs and stage
   /// cursor, a fresh run records its first output step (stage `first`);
@@ -54,7 +54,8 @@ class StagedRun {
   const RunContext& ctx_;
   PhaseTimer timer_;
   const bool restart_;
-  Checkpoint resume_;
+  const Checkpoint resume_;      ///< a restart's checkpoint
+  const long checkpoint_every_;  ///< steps between checkpoints (0: none)
   RunRecord summary_;
   Outputs out_;
   mesh::Mesh mesh_;
