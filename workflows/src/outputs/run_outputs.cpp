@@ -37,11 +37,6 @@ void RunOutputs::check_rigid_motion(const fdem::Engine& e, long step) {
   check_rigid_rotation(fit, rollers_, step);
 }
 
-std::pair<std::string, double> RunOutputs::largest_key_point(
-    const fdem::Engine& e, const std::vector<Monitor>& monitors) const {
-  return key_points_.largest(e, monitors);
-}
-
 RunOutputs::RunOutputs(const Scene& scene, const RunContext& ctx, RunRecord& summary)
     : scene_(scene),
       ctx_(ctx),
@@ -84,14 +79,13 @@ std::vector<std::string> RunOutputs::history_columns(const std::vector<Monitor>&
   return cols;
 }
 
-void RunOutputs::begin(const mesh::Mesh& m, const insitu::InsituField& handoff,
-                       const std::vector<Monitor>& monitors, const fdem::BoltPlan& bolts,
-                       std::unique_ptr<Instruments> instruments) {
+void RunOutputs::begin(const mesh::Mesh& m, const KeyPoints& key_points,
+                       const fdem::BoltPlan& bolts, std::unique_ptr<Instruments> instruments) {
   bolts_ = &bolts;
   if (!bolts.specs.empty())
     bolt_results_ = std::make_unique<BoltResults>(bolts, is_cable_, ctx_.output_dir);
   instruments_ = std::move(instruments);
-  key_points_ = KeyPoints(monitors, m, handoff.ux, handoff.uy);
+  key_points_ = key_points;
   if (lining_ring_) {
     lining_ = std::make_unique<LiningOutput>(m, shotcrete_, ctx_.output_dir);
     if (!lining_->has_ring()) lining_.reset();
@@ -99,7 +93,7 @@ void RunOutputs::begin(const mesh::Mesh& m, const insitu::InsituField& handoff,
   }
   frames_ = std::make_unique<FrameOutput>(ctx_.output_dir, fields_, bolts_, bolt_results_.get());
   history_ = std::make_unique<History>(output_path(ctx_.output_dir, "history.csv"),
-                                       history_columns(monitors));
+                                       history_columns(key_points.monitors()));
 }
 
 std::vector<OutputStepObserver*> RunOutputs::observers() const {

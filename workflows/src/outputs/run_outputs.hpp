@@ -44,8 +44,7 @@ class RunOutputs : public StepOutputs {
   /// forces) when `bolts` has any; the `instruments` (the scene's monitors,
   /// extensometers and broken depth along rays); the lining ring's forces;
   /// the ParaView frames; history.csv's columns.
-  void begin(const mesh::Mesh& m, const insitu::InsituField& handoff,
-             const std::vector<Monitor>& monitors, const fdem::BoltPlan& bolts,
+  void begin(const mesh::Mesh& m, const KeyPoints& key_points, const fdem::BoltPlan& bolts,
              std::unique_ptr<Instruments> instruments);
   /// history.csv's columns for these key points: the run's figures, then
   /// the bolts' and the instruments' (begin).
@@ -68,9 +67,6 @@ class RunOutputs : public StepOutputs {
                     const fdem::EnergyBalance& energy, PhaseTimer& timer) override;
   /// The outputs that observe output steps, in history.csv's column order.
   std::vector<OutputStepObserver*> observers() const;
-  /// The key point displaced most from the in-situ state and |u| [m].
-  std::pair<std::string, double> largest_key_point(
-      const fdem::Engine& e, const std::vector<Monitor>& monitors) const override;
   /// What a restart needs to continue the outputs: history rows, stage
   /// names, frames written.
   nlohmann::json state() const;

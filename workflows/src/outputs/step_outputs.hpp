@@ -5,7 +5,6 @@
 #pragma once
 
 #include <string>
-#include <utility>
 #include <vector>
 
 #include "outputs/monitors.hpp"
@@ -31,12 +30,6 @@ class StepOutputs {
   virtual void set_lining_installed(bool) {}
   /// A `lining` or `bolts` stage installed its support (tunnels).
   virtual void support_installed(const fdem::Engine&) {}
-  /// The key point displaced most from the in-situ state and |u| [m]; none
-  /// (an empty name, 0) without key points.
-  virtual std::pair<std::string, double> largest_key_point(const fdem::Engine&,
-                                                           const std::vector<Monitor>&) const {
-    return {"", 0.0};
-  }
 };
 
 }  // namespace rockfdem::workflows

@@ -154,11 +154,13 @@ void Run::build_engine() {
 // is written: a point in no triangle or in the core is refused first, as
 // is a restart's run state that does not fit them.
 void Run::place_instruments() {
-  monitors_ = tunnel_monitors(scene_.mesh, mesh_, engine());
-  out_.begin(mesh_, handoff(), monitors_, bolts_,
-             std::make_unique<Instruments>(scene_, mesh_, engine(), monitors_, bolts_));
+  key_points_ =
+      KeyPoints(tunnel_monitors(scene_.mesh, mesh_, engine()), mesh_, handoff().ux, handoff().uy);
+  const std::vector<Monitor>& monitors = key_points_.monitors();
+  out_.begin(mesh_, key_points_, bolts_,
+             std::make_unique<Instruments>(scene_, mesh_, engine(), monitors, bolts_));
   if (restart_)
-    start_ratio_ = restore_before_writing(resume_, ctx_.restart, monitors_, out_, engine(), bolts_);
+    start_ratio_ = restore_before_writing(resume_, ctx_.restart, monitors, out_, engine(), bolts_);
   timer_.stamp("fdem setup");
 }
 
@@ -186,7 +188,7 @@ void Run::take_handoff_step() {
 }
 
 void Run::begin_stages() {
-  stages_.emplace(engine(), mesh_, handoff(), scene_, ctx_, out_, monitors_, bolts_, support_);
+  stages_.emplace(engine(), mesh_, handoff(), scene_, ctx_, out_, key_points_, bolts_, support_);
   resume_or_record("handoff");
 }
 
@@ -223,7 +225,8 @@ void Run::compare_with_references() {
     summary_.comparison = compare_with_continuum(
         scene_, mesh_, engine(), reference, output_path(ctx_.output_dir, "fdem_vs_continuum.csv"));
   }
-  compare_with_continuum_counterpart(scene_, ctx_, mesh_, engine(), handoff(), monitors_, summary_);
+  compare_with_continuum_counterpart(scene_, ctx_, mesh_, engine(), handoff(),
+                                     key_points_.monitors(), summary_);
   timer_.stamp("insitu");
 }
 

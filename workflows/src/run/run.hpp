@@ -55,8 +55,8 @@ class Run : StagedRun<RunOutputs> {
   SupportMaterials support_;
   fdem::DampingSettings stage_damping_;  ///< the stages' (after the hand-off step)
   fdem::BoltPlan bolts_;                 ///< marks bolt triangles and allows fracture there
-  std::vector<Monitor> monitors_;
-  double start_ratio_ = 0;  ///< the hand-off step's unbalanced-force ratio
+  KeyPoints key_points_;                 ///< the tunnel's key points and the scene's monitors
+  double start_ratio_ = 0;               ///< the hand-off step's unbalanced-force ratio
 };
 
 /// `rockfdem run` of a tunnel: Run(scene, ctx).run().

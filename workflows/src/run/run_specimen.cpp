@@ -92,7 +92,7 @@ class SpecimenRun : StagedRun<SpecimenOutputs> {
     f.alpha = 0;
     return f;
   }();
-  std::vector<Monitor> no_key_points_;
+  KeyPoints no_key_points_;
   fdem::BoltPlan no_bolts_;
 };
 

@@ -15,9 +15,8 @@ namespace rockfdem::workflows {
 
 StageRunner::StageRunner(fdem::Engine& engine, const mesh::Mesh& m,
                          const insitu::InsituField& handoff, const Scene& scene,
-                         const RunContext& ctx, StepOutputs& out,
-                         const std::vector<Monitor>& monitors, fdem::BoltPlan& bolts,
-                         SupportMaterials materials)
+                         const RunContext& ctx, StepOutputs& out, const KeyPoints& key_points,
+                         fdem::BoltPlan& bolts, SupportMaterials materials)
     : model_{engine,
              m,
              ctx,
@@ -30,7 +29,8 @@ StageRunner::StageRunner(fdem::Engine& engine, const mesh::Mesh& m,
       engine_(engine),
       out_(out),
       scene_(scene),
-      monitors_(monitors),
+      key_points_(key_points),
+      monitors_(key_points.monitors()),
       energy_(scene, m) {
   out_.set_lining_installed(model_.lining_installed);
 }
@@ -125,7 +125,7 @@ double remaining_move(const std::vector<double>& rates, double r, long every_ste
 bool StageRunner::unstable(const StageSpec& stage, bool criteria) {
   cursor_.rates.push_back(last_rate_);
   if (cursor_.rates.size() > 2 * kWindow) cursor_.rates.erase(cursor_.rates.begin());
-  const auto [name, u] = out_.largest_key_point(engine_, monitors_);
+  const auto [name, u] = key_points_.largest(engine_, monitors_);
   const double span = key_point_span(monitors_);
   const double limit = stage.unstable_fraction * span;
   const bool beyond = span > 0 && u > limit;

@@ -45,8 +45,7 @@ class StageRunner {
  public:
   StageRunner(fdem::Engine& engine, const mesh::Mesh& m, const insitu::InsituField& handoff,
               const Scene& scene, const RunContext& ctx, StepOutputs& out,
-              const std::vector<Monitor>& monitors, fdem::BoltPlan& bolts,
-              SupportMaterials materials);
+              const KeyPoints& key_points, fdem::BoltPlan& bolts, SupportMaterials materials);
   /// Called to write a checkpoint: every `every` steps (at the next output
   /// step; 0: never) and when a signal interrupts the run.
   void set_checkpoint(long every, std::function<void()> save);
@@ -121,8 +120,9 @@ class StageRunner {
   fdem::Engine& engine_;  ///< model_.engine
   StepOutputs& out_;
   const Scene& scene_;
-  const std::vector<Monitor>& monitors_;
-  PhaseTimer* timer_ = nullptr;  ///< run_all()'s
+  const KeyPoints& key_points_;           ///< displacements from the in-situ state
+  const std::vector<Monitor>& monitors_;  ///< key_points_'s
+  PhaseTimer* timer_ = nullptr;           ///< run_all()'s
   Cursor cursor_;
   long checkpoint_every_ = 0;
   double last_settle_ = -1;   ///< settle_measure() of the stage's last interval; -1: none
