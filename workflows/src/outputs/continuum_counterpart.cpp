@@ -4,6 +4,7 @@
 #include <chrono>
 #include <cmath>
 #include <sstream>
+#include <stdexcept>
 
 #include "commands/commands.hpp"
 #include "outputs/continuum_comparison.hpp"
@@ -15,23 +16,39 @@
 #include "rockfdem/insitu/plastic.hpp"
 #include "rockfdem/mesh/outline.hpp"
 #include "run/output_dir.hpp"
+#include "stages/registry.hpp"
+#include "stages/stage.hpp"
 #include "stages/stage_inputs.hpp"
 
 namespace rockfdem::workflows {
 namespace {
 
+// The stages' own checks walked again over a validated scene, for what
+// each stage does to the core's factor and the lining: none refuses.
+class Replay : public StageCheck {
+ public:
+  using StageCheck::StageCheck;
+  [[noreturn]] void refuse(const std::string& key, const std::string& why) const override {
+    throw std::logic_error("a validated scene's stage refused: " + key + ": " + why);
+  }
+  void require(const std::string&, const std::string&) const override {}
+};
+
 /// The alphas of the scene's construction sequence, ending at 0, and the
 /// alpha at which its lining stage installs the lining (-1: none).
 std::vector<double> construction_alphas(const Scene& s, double* lining_alpha) {
   std::vector<double> alphas = s.insitu.alpha;
-  double alpha = alphas.back();
+  StageOrder order;
+  order.alpha = alphas.back();
   *lining_alpha = s.insitu.lining_active ? insitu::LiningStage{}.install_alpha : -1;
   for (const StageSpec& st : s.stages) {
-    if (st.kind == "soften" && st.alpha < alpha) alphas.push_back(alpha = st.alpha);
-    if (st.kind == "lining" && *lining_alpha < 0) *lining_alpha = alpha;
-    if (st.kind == "remove_core" && alpha > 0) alphas.push_back(alpha = 0);
+    const StageOrder before = order;
+    Replay replay(s, st, order);
+    stage_of(st.kind).check(replay);
+    if (order.alpha < before.alpha) alphas.push_back(order.alpha);
+    if (order.lined && !before.lined && *lining_alpha < 0) *lining_alpha = before.alpha;
   }
-  if (alpha > 0) alphas.push_back(0);
+  if (order.alpha > 0) alphas.push_back(0);
   return alphas;
 }
 
