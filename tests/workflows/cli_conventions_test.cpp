@@ -30,7 +30,7 @@ using rockfdem::test::scratch;
 
 namespace {
 
-const std::string kSeed = std::string(ROCKFDEM_SOURCE_DIR) + "/scenes/tunnel-seed.toml";
+const std::string& kSeed = rockfdem::test::kSeedScene;
 
 // OMP_NUM_THREADS set to `value` (unset for nullopt) for the test's scope.
 class ThreadsVariable {

@@ -73,6 +73,8 @@ inline std::string read_text(const std::filesystem::path& p) {
 }
 
 const std::string kTestDir = ROCKFDEM_TEST_DIR;
+/// The seed tunnel, the shipped scene most tests vary with --set.
+const std::string kSeedScene = std::string(ROCKFDEM_SOURCE_DIR) + "/scenes/tunnel-seed.toml";
 
 /// A user's .msh scene: `dir`/mesh/mesh.msh meshed from restart_support.toml
 /// (a circular tunnel with a lining ring and a fracture zone, 1.7k

@@ -79,7 +79,7 @@ TEST(Cli, unknown_instruction_set_request_exits_two_and_leaves_nothing) {
 // neither. Steel whose hardening range is empty is refused by the scene.
 TEST(Cli, bolt_design_the_engine_refuses_names_the_scene_and_keys) {
   const fs::path out = scratch("bolts");
-  const std::string seed = std::string(ROCKFDEM_SOURCE_DIR) + "/scenes/tunnel-seed.toml";
+  const std::string seed = rockfdem::test::kSeedScene;
   // A low in-situ stress keeps the soft rock's implicit field sound (E = 1e6
   // under 18 MPa would invert triangles, refused first).
   Result r = run("run " + seed +
@@ -512,7 +512,7 @@ TEST(Cli, lining_interface_debonds_when_weak_and_holds_when_strong) {
 // and the rest as other keys, which were dropped without a word (exit 0).
 // Now exit 2 naming the --set, with the break shown as an escape.
 TEST(Cli, set_value_with_a_line_break_is_refused) {
-  const std::string seed = std::string(ROCKFDEM_SOURCE_DIR) + "/scenes/tunnel-seed.toml";
+  const std::string seed = rockfdem::test::kSeedScene;
   const std::pair<const char*, const char*> breaks[] = {{"\n", "\\n"}, {"\r", "\\r"}};
   for (const auto& [brk, shown] : breaks) {
     const Result r =
@@ -529,7 +529,7 @@ TEST(Cli, set_value_with_a_line_break_is_refused) {
 // has: anything else is bad input (exit 2, one line naming the path and the
 // indices allowed), not an internal error.
 TEST(Cli, set_with_a_bad_array_index_exits_two_naming_it) {
-  const std::string seed = std::string(ROCKFDEM_SOURCE_DIR) + "/scenes/tunnel-seed.toml";
+  const std::string seed = rockfdem::test::kSeedScene;
   const std::pair<const char*, const char*> cases[] = {
       {"stages[x].max_steps=1", "allowed: stages[0] to stages[5]"},
       {"stages[].max_steps=1", "allowed: stages[0] to stages[5]"},

@@ -28,7 +28,7 @@ using rockfdem::test::scratch;
 
 namespace {
 
-const std::string kSeed = std::string(ROCKFDEM_SOURCE_DIR) + "/scenes/tunnel-seed.toml";
+const std::string& kSeed = rockfdem::test::kSeedScene;
 
 // A radial bolt at 30 deg with its collar `r` from the centre of a circular
 // opening (radius 3 m), 2 m long, in `scene` (good_circular or the lined one,

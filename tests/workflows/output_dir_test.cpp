@@ -70,7 +70,7 @@ TEST(OutputDir, run_refusing_dt_leaves_no_directory) {
 // after the lining and bolts stiffen it.
 TEST(OutputDir, dt_above_the_damped_limit_is_refused_before_writing) {
   const fs::path out = scratch("damped-dt");
-  const std::string seed = std::string(ROCKFDEM_SOURCE_DIR) + "/scenes/tunnel-seed.toml" +
+  const std::string seed = rockfdem::test::kSeedScene +
                            " --set engine.local_damping=0.8 --set engine.kinetic_damping=false";
   Result r = run("run " + seed + " -j 1 -q --set engine.dt=0.0005 -o " + out.string());
   EXPECT_EQ(r.code, 2) << r.output;

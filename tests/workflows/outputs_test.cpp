@@ -18,7 +18,7 @@ using namespace rockfdem::test;
 
 namespace {
 
-const std::string kSeed = std::string(ROCKFDEM_SOURCE_DIR) + "/scenes/tunnel-seed.toml";
+const std::string& kSeed = rockfdem::test::kSeedScene;
 
 // history.csv's last row, by column name.
 // The history row at `step`, or the last one when `step` < 0.

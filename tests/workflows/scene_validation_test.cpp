@@ -141,7 +141,7 @@ TEST(Scene, every_schema_key_has_unit_and_description) {
 // --set reaches into arrays of tables ("stages[2].max_steps"), and an index
 // the scene does not have is an error, not a silently ignored key.
 TEST(Scene, override_reaches_array_of_tables) {
-  const std::string seed = std::string(ROCKFDEM_SOURCE_DIR) + "/scenes/tunnel-seed.toml";
+  const std::string seed = rockfdem::test::kSeedScene;
   const Scene s = load_scene(seed, {"stages[5].max_steps=123"});
   EXPECT_EQ(s.stages.back().kind, "equilibrium");
   EXPECT_EQ(s.stages.back().max_steps, 123);
@@ -164,7 +164,7 @@ TEST(Scene, override_inside_a_table_is_cited_as_set_with_its_choices) {
 // 8.8000000000000007), and a check between two keys names the one the user
 // changed with --set: the seed tunnel widened to 200 m blames the span.
 TEST(Scene, cross_key_errors_name_the_changed_key_with_short_numbers) {
-  const std::string seed = std::string(ROCKFDEM_SOURCE_DIR) + "/scenes/tunnel-seed.toml";
+  const std::string seed = rockfdem::test::kSeedScene;
   expect_contains(error_of([&] { load_scene(seed, {"tunnel.span=200"}); }),
                   {"--set tunnel.span=200: ", "tunnel.height = 8.8 m", "allowed: at most 17.6 m"});
   expect_contains(error_of([&] { load_scene(seed, {"tunnel.height=5"}); }),
@@ -199,7 +199,7 @@ TEST(Scene, cross_key_errors_name_the_changed_key_with_short_numbers) {
 // remove_core, equilibrium; a ring active in the implicit stage is not
 // installed again. A specimen's one stage is load_platens, for engine.steps.
 TEST(Scene, default_stage_list_is_the_documented_one) {
-  std::string text = read_file(std::string(ROCKFDEM_SOURCE_DIR) + "/scenes/tunnel-seed.toml");
+  std::string text = read_file(rockfdem::test::kSeedScene);
   text = text.substr(0, text.find("[[stages]]"));
   const auto kinds = [](const Scene& s) {
     std::string out;
