@@ -4,7 +4,6 @@
 #include <chrono>
 #include <cmath>
 #include <sstream>
-#include <stdexcept>
 
 #include "commands/commands.hpp"
 #include "outputs/continuum_comparison.hpp"
@@ -23,13 +22,16 @@
 namespace rockfdem::workflows {
 namespace {
 
-// The stages' own checks walked again over a validated scene, for what
-// each stage does to the core's factor and the lining: none refuses.
+// The stages' own checks walked again over the scene, for what each stage
+// does to the core's factor and the lining. A stage the order does not
+// allow changes nothing: the default sequence removes a core that an
+// implicit alpha of 0 already took out.
 class Replay : public StageCheck {
  public:
+  struct Refused {};
   using StageCheck::StageCheck;
-  [[noreturn]] void refuse(const std::string& key, const std::string& why) const override {
-    throw std::logic_error("a validated scene's stage refused: " + key + ": " + why);
+  [[noreturn]] void refuse(const std::string&, const std::string&) const override {
+    throw Refused{};
   }
   void require(const std::string&, const std::string&) const override {}
 };
@@ -43,8 +45,12 @@ std::vector<double> construction_alphas(const Scene& s, double* lining_alpha) {
   *lining_alpha = s.insitu.lining_active ? insitu::LiningStage{}.install_alpha : -1;
   for (const StageSpec& st : s.stages) {
     const StageOrder before = order;
-    Replay replay(s, st, order);
-    stage_of(st.kind).check(replay);
+    try {
+      Replay replay(s, st, order);
+      stage_of(st.kind).check(replay);
+    } catch (const Replay::Refused&) {
+      order = before;
+    }
     if (order.alpha < before.alpha) alphas.push_back(order.alpha);
     if (order.lined && !before.lined && *lining_alpha < 0) *lining_alpha = before.alpha;
   }

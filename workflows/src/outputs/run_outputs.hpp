@@ -43,7 +43,8 @@ class RunOutputs : public StepOutputs {
   /// displacements; the bolts' results (axial stress in the frames, section
   /// forces) when `bolts` has any; the `instruments` (the scene's monitors,
   /// extensometers and broken depth along rays); the lining ring's forces;
-  /// the ParaView frames; history.csv's columns.
+  /// the ParaView frames (their first once record_insitu has given the
+  /// implicit fields); history.csv's columns.
   void begin(const mesh::Mesh& m, const KeyPoints& key_points, const fdem::BoltPlan& bolts,
              std::unique_ptr<Instruments> instruments);
   /// history.csv's columns for these key points: the run's figures, then
@@ -117,7 +118,7 @@ class RunOutputs : public StepOutputs {
   bool lining_outputs(const fdem::Engine& e, const mesh::Mesh& m);
   /// Stops the run (NumericalError) when the boundary turns as a rigid body.
   void check_rigid_motion(const fdem::Engine& e, long step);
-  const Scene& scene_;  ///< read by the constructor and finish() alone
+  const Scene& scene_;  ///< read by the constructor, finish() and report_failure() alone
   const RunContext& ctx_;
   RunRecord& summary_;
   // What the outputs before finish() take from the scene.

@@ -21,6 +21,9 @@ namespace rockfdem::workflows {
 class Run : StagedRun<RunOutputs> {
  public:
   Run(const Scene& scene, const RunContext& ctx);
+  /// The stage loop refers to this run's key points, hand-off and bolts:
+  /// it goes before them.
+  ~Run() override { stages_.reset(); }
   /// Runs the phases; returns the exit code. Throws InputError (nothing
   /// written when the scene or checkpoint is refused before the engine
   /// accepts it), NumericalError or Interrupted (both after the summary).

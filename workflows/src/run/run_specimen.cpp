@@ -31,6 +31,8 @@ namespace {
 class SpecimenRun : StagedRun<SpecimenOutputs> {
  public:
   SpecimenRun(const Scene& scene, const RunContext& ctx) : StagedRun(scene, ctx) {}
+  // The stage loop refers to the members below: it goes before them.
+  ~SpecimenRun() override { stages_.reset(); }
 
   int run() {
     make_mesh();
