@@ -101,20 +101,6 @@ void inputs(std::ostream& md, const Scene& s, const RunRecord& r) {
        << " m; grout E " << sig(s.grout.young / 1e9) << " GPa |\n";
 }
 
-// One stage's status: what it reached, in words.
-std::string stage_status(const StageRecord& st) {
-  const StageChanges& changes = st.changes;
-  if (st.kind == "grout") {
-    if (!changes.triggered.value_or(false)) return "not triggered";
-    return "grouted " + value_text(changes.rejoined) + " cracks";
-  }
-  if (!st.converged)
-    return stage_of(st.kind).installs_support() ? "installed"
-           : st.kind == "remove_core"           ? "core removed"
-                                                : "applied (no steps)";
-  return *st.converged ? "converged" : "stopped before its criteria";
-}
-
 void stages(std::ostream& md, const RunRecord& r) {
   md << "\n## Stages\n\n| # | stage | steps | simulated time [s] | unbalanced ratio at end | "
         "status |\n|---|---|---|---|---|---|\n";
@@ -126,7 +112,7 @@ void stages(std::ostream& md, const RunRecord& r) {
   for (const StageRecord& st : r.fdem->stages.value_or(std::vector<StageRecord>{}))
     md << "| " << i++ << " | " << st.kind << " | " << value_text(st.steps) << " | "
        << value_text(st.simulated_time) << " | " << value_text(st.unbalanced_ratio) << " | "
-       << stage_status(st) << " |\n";
+       << stage_of(st.kind).outcome(st) << " |\n";
 }
 
 void status(std::ostream& md, const RunRecord& r) {

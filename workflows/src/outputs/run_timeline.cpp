@@ -32,7 +32,7 @@ std::vector<plots::PlotMarker> stage_markers(const std::vector<StageSpan>& spans
     add(s.start, s.kind);
     const StageChanges none;
     const StageChanges& changes = s.report ? s.report->changes : none;
-    if (s.kind == "grout" && changes.triggered.value_or(false))
+    if (changes.triggered.value_or(false))  // only a grout stage triggers
       add(s.end,
           "grouting: " + std::to_string(changes.rejoined.value_or(0)) + " broken cracks re-joined");
   }

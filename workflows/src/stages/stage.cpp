@@ -15,4 +15,9 @@ bool Stage::step(StageRunner& runner, const StageSpec& spec, StageChanges&) cons
   return runner.step_until(spec);
 }
 
+std::string Stage::outcome(const StageRecord& record) const {
+  if (!record.converged) return installs_support() ? "installed" : "applied (no steps)";
+  return *record.converged ? "converged" : "stopped before its criteria";
+}
+
 }  // namespace rockfdem::workflows

@@ -101,6 +101,10 @@ class Stage {
   /// Whether the stage installs support: the instruments' and plots'
   /// origin of what the support measures.
   virtual bool installs_support() const { return false; }
+  /// What the stage reached, in words (report.md's stage table):
+  /// converged, stopped before its criteria, or for a stage that took no
+  /// step what it did (installed, core removed; by default applied).
+  virtual std::string outcome(const StageRecord& record) const;
 };
 
 }  // namespace rockfdem::workflows

@@ -50,6 +50,12 @@ class Grout : public Stage {
     return false;
   }
 
+  std::string outcome(const StageRecord& record) const override {
+    const StageChanges& c = record.changes;
+    if (!c.triggered.value_or(false)) return "not triggered";
+    return "grouted " + (c.rejoined ? std::to_string(*c.rejoined) : std::string("-")) + " cracks";
+  }
+
   std::string not_at_equilibrium() const override {
     return "stops on its trigger, not on equilibrium: add an equilibrium stage after it";
   }

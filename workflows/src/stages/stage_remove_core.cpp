@@ -19,6 +19,10 @@ class RemoveCore : public Stage {
     m.core_present = false;
     return {};
   }
+
+  std::string outcome(const StageRecord& record) const override {
+    return record.converged ? Stage::outcome(record) : "core removed";
+  }
 };
 
 }  // namespace
