@@ -32,7 +32,7 @@ std::string detail_number(double v) {
 }  // namespace
 
 void RunOutputs::check_rigid_motion(const fdem::Engine& e, long step) {
-  const RigidFit fit = key_points_.boundary_fit(e);
+  const RigidFit fit = key_points_->boundary_fit(e);
   max_rotation_deg_ = std::max(max_rotation_deg_, std::abs(fit.rotation) * 180 / M_PI);
   check_rigid_rotation(fit, rollers_, step);
 }
@@ -85,7 +85,7 @@ void RunOutputs::begin(const mesh::Mesh& m, const KeyPoints& key_points,
   if (!bolts.specs.empty())
     bolt_results_ = std::make_unique<BoltResults>(bolts, is_cable_, ctx_.output_dir);
   instruments_ = std::move(instruments);
-  key_points_ = key_points;
+  key_points_ = &key_points;
   if (lining_ring_) {
     lining_ = std::make_unique<LiningOutput>(m, shotcrete_, ctx_.output_dir);
     if (!lining_->has_ring()) lining_.reset();
@@ -121,13 +121,13 @@ void RunOutputs::record_rows(const fdem::Engine& e, const mesh::Mesh& m, const s
                           double(b.mode_I),
                           double(b.mode_II),
                           double(b.mixed)};
-  for (const Monitor& mon : key_points_.monitors())
-    for (double v : key_points_.figures(e, mon)) row.push_back(v);
-  for (double v : key_points_.chords_mm(e)) row.push_back(v);
-  row.push_back(key_points_.boundary_fit(e).rotation * 180 / M_PI);
+  for (const Monitor& mon : key_points_->monitors())
+    for (double v : key_points_->figures(e, mon)) row.push_back(v);
+  for (double v : key_points_->chords_mm(e)) row.push_back(v);
+  row.push_back(key_points_->boundary_fit(e).rotation * 180 / M_PI);
   row.push_back(support_ratio);
   for (double v : energy_row(energy)) row.push_back(v);
-  const NodeDisplacement u = key_points_.node_displacements(e);
+  const NodeDisplacement u = key_points_->node_displacements(e);
   const OutputStep step{e, m, stage, int(stage_names_.size() - 1), u};
   for (OutputStepObserver* o : observers()) o->at_output_step(step, row);
   history_->add(row);
@@ -139,7 +139,7 @@ void RunOutputs::record_frame(const fdem::Engine& e, const mesh::Mesh& m, const 
   // The hand-off step's dt, once it passed (a failed one is no good state).
   if (stage == "handoff" && stage_names_.size() == 1) handoff_dt_ = e.dt();
   if (vtk_) {
-    const NodeDisplacement u = key_points_.node_displacements(e);
+    const NodeDisplacement u = key_points_->node_displacements(e);
     std::vector<double> no_columns;
     frames_->at_output_step({e, m, stage, int(stage_names_.size() - 1), u}, no_columns);
   }
@@ -149,16 +149,16 @@ void RunOutputs::record_frame(const fdem::Engine& e, const mesh::Mesh& m, const 
 
 MonitorRecord RunOutputs::monitor_figures(const fdem::Engine& e) const {
   MonitorRecord r;
-  for (const Monitor& mon : key_points_.monitors()) {
-    const auto k = key_points_.figures(e, mon);
+  for (const Monitor& mon : key_points_->monitors()) {
+    const auto k = key_points_->figures(e, mon);
     r.key_points[mon.name] = {k[0],       k[1],         k[2],         k[3],        mon.node_x,
                               mon.node_y, mon.inward_x, mon.inward_y, std::nullopt};
   }
   // Per point (as field convergence points are read) and, apart, the
   // change of length of two chords between points.
-  const std::array<double, 3> chords = key_points_.chords_mm(e);
+  const std::array<double, 3> chords = key_points_->chords_mm(e);
   r.chords = ChordFigures{chords[0], chords[1], chords[2]};
-  if (instruments_) instruments_->add_monitors(r, key_points_.node_displacements(e));
+  if (instruments_) instruments_->add_monitors(r, key_points_->node_displacements(e));
   return r;
 }
 
@@ -247,7 +247,7 @@ void RunOutputs::finish(const fdem::Engine& e, const mesh::Mesh& m, PhaseTimer& 
   if (!bolt_results_) summary_.skipped.push_back("bolts: none in the scene");
   summary_.monitors = monitor_figures(e);
   add_since_support(summary_.monitors);
-  const RigidFit fit = key_points_.boundary_fit(e);
+  const RigidFit fit = key_points_->boundary_fit(e);
   summary_.outer_boundary = OuterBoundaryFigures{fit.rotation * 180 / M_PI,
                                                  max_rotation_deg_,
                                                  kRigidRotationLimitDeg,
@@ -256,7 +256,7 @@ void RunOutputs::finish(const fdem::Engine& e, const mesh::Mesh& m, PhaseTimer& 
   record_ground_reaction(e);
   const bool lining_forces = lining_outputs(e, m);
   damage_outputs(e, m);
-  if (instruments_) instruments_->finish(summary_, e, m, key_points_.node_displacements(e));
+  if (instruments_) instruments_->finish(summary_, e, m, key_points_->node_displacements(e));
   summary_.history_stages = stage_names_;  // history.csv's "stage" column indexes this list
   // The run's curves, then the support's outputs (each with its plots),
   // then the pictures of the final state.
@@ -264,7 +264,7 @@ void RunOutputs::finish(const fdem::Engine& e, const mesh::Mesh& m, PhaseTimer& 
   if (lining_forces) summary_.lining.forces = lining_->finish(e, ctx_.output_dir, plots.get());
   if (bolt_results_) bolt_results_->finish(e, summary_, plots.get());
   if (plots) {
-    tunnel_pictures(*plots, {e, m, scene_, bolts_}, key_points_.node_displacements(e));
+    tunnel_pictures(*plots, {e, m, scene_, bolts_}, key_points_->node_displacements(e));
     pictures_ = plots->rendered();
   }
   timer.stamp("output");
@@ -283,7 +283,7 @@ void RunOutputs::finish(const fdem::Engine& e, const mesh::Mesh& m, PhaseTimer& 
 // Ground reaction curve, implicit part: the core's share of the in-situ
 // stress (alpha) against the vault settlement it allows.
 void RunOutputs::record_ground_reaction(const fdem::Engine& e) {
-  const int vault_vertex = e.node_vertex()[key_points_.find("vault").node];
+  const int vault_vertex = e.node_vertex()[key_points_->find("vault").node];
   std::vector<GroundReactionPoint>& grc = summary_.ground_reaction_curve;
   grc.clear();
   for (const insitu::InsituField& f : fields_)
@@ -352,7 +352,7 @@ std::map<std::string, double> RunOutputs::since_support() const {
   const auto add = [&](const std::string& name, const std::string& column, double v) {
     out[name] = v - history_->column(column)[*row];
   };
-  for (const Monitor& m : key_points_.monitors()) {
+  for (const Monitor& m : key_points_->monitors()) {
     const auto k = mon.key_points.find(m.name);
     if (k != mon.key_points.end() && !mon.points.count(m.name))
       add(m.name, m.name + "_radial_mm", k->second.radial_mm);
@@ -389,7 +389,7 @@ std::unique_ptr<PlotWriter> RunOutputs::curves(const fdem::Engine& e) {
   // From the support's installation where asked (and installed).
   const std::optional<std::size_t> from =
       scene_.output.convergence_from_support ? support_row() : std::nullopt;
-  tunnel_curves(*plots, e, *history_, key_points_.monitors(), timeline(), from);
+  tunnel_curves(*plots, e, *history_, key_points_->monitors(), timeline(), from);
   ground_reaction_plot(*plots, summary_.ground_reaction_curve);
   return plots;
 }

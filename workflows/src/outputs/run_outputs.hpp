@@ -52,7 +52,7 @@ class RunOutputs : public StepOutputs {
   std::vector<std::string> history_columns(const std::vector<Monitor>& monitors) const;
   /// A `lining` or `bolts` stage installed its support (Instruments).
   void support_installed(const fdem::Engine& e) override {
-    if (instruments_) instruments_->support_installed(key_points_.node_displacements(e));
+    if (instruments_) instruments_->support_installed(key_points_->node_displacements(e));
   }
   /// Whether the lining ring is installed as lining (before, its triangles
   /// are ground still to be excavated): its forces are written from then.
@@ -136,8 +136,8 @@ class RunOutputs : public StepOutputs {
   std::unique_ptr<BoltResults> bolt_results_;  ///< with bolts in the scene
   std::unique_ptr<LiningOutput> lining_;       ///< null: no lining ring
   bool lining_installed_ = false;
-  KeyPoints key_points_;         ///< from begin
-  double max_rotation_deg_ = 0;  ///< largest |rotation| of the outer boundary so far
+  const KeyPoints* key_points_ = nullptr;  ///< the run's, from begin
+  double max_rotation_deg_ = 0;            ///< largest |rotation| of the outer boundary so far
   std::vector<std::string> stage_names_;
   std::vector<std::string> pictures_;  ///< PNG files rendered, for report.md
   double handoff_dt_ = 0;  ///< dt of the hand-off step (0: not taken by this run's record)

@@ -30,14 +30,13 @@ StageRunner::StageRunner(fdem::Engine& engine, const mesh::Mesh& m,
       out_(out),
       scene_(scene),
       key_points_(key_points),
-      monitors_(key_points.monitors()),
       energy_(scene, m) {
   out_.set_lining_installed(model_.lining_installed);
 }
 
 std::vector<double> StageRunner::monitor_displacements() const {
   std::vector<double> u;
-  for (const Monitor& m : monitors_) {
+  for (const Monitor& m : monitors()) {
     const std::array<double, 2> d = engine_.displacement(std::size_t(m.node));
     u.push_back(d[0]);
     u.push_back(d[1]);
@@ -54,7 +53,7 @@ double StageRunner::settle_measure(long steps) {
     const double moved = std::hypot(now[i] - prev[0], now[i + 1] - prev[1]);
     if (moved > change) {
       change = moved;
-      moving_most_ = monitors_[i / 2].name;
+      moving_most_ = monitors()[i / 2].name;
     }
     size = std::max(size, std::hypot(now[i], now[i + 1]));
   }
@@ -125,8 +124,8 @@ double remaining_move(const std::vector<double>& rates, double r, long every_ste
 bool StageRunner::unstable(const StageSpec& stage, bool criteria) {
   cursor_.rates.push_back(last_rate_);
   if (cursor_.rates.size() > 2 * kWindow) cursor_.rates.erase(cursor_.rates.begin());
-  const auto [name, u] = key_points_.largest(engine_, monitors_);
-  const double span = key_point_span(monitors_);
+  const auto [name, u] = key_points_.largest(engine_, monitors());
+  const double span = key_point_span(monitors());
   const double limit = stage.unstable_fraction * span;
   const bool beyond = span > 0 && u > limit;
   // Both trends count only once the stage is 2 kWindow outputs old (past
@@ -347,11 +346,11 @@ void StageRunner::restore(const nlohmann::json& s) {
   cursor_.changes = stage_changes_from_json(s.at("stage_changes"));
   cursor_.monitor_u = s.at("stage_monitor_u").get<std::vector<double>>();
   // settle_measure() reads a pair per monitor.
-  if (cursor_.monitor_u.size() != 2 * monitors_.size())
+  if (cursor_.monitor_u.size() != 2 * monitors().size())
     throw InputError("corrupt run state: field 'stages.stage_monitor_u' holds " +
                      std::to_string(cursor_.monitor_u.size()) + " values; the model's " +
-                     std::to_string(monitors_.size()) + " key points need " +
-                     std::to_string(2 * monitors_.size()));
+                     std::to_string(monitors().size()) + " key points need " +
+                     std::to_string(2 * monitors().size()));
   cursor_.held = s.value("stage_held", 0);
   cursor_.rates = s.value("stage_rates", std::vector<double>{});
   const std::string unstable = s.value("unstable", std::string());

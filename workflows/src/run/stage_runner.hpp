@@ -103,6 +103,7 @@ class StageRunner {
   bool criterion_met(const StageSpec& stage, bool tested, bool reached);
   /// A checkpoint when checkpoint_every steps have passed since the last.
   void checkpoint_if_due();
+  const std::vector<Monitor>& monitors() const { return key_points_.monitors(); }
   /// Monitors' displacements (ux, uy per monitor) [m].
   std::vector<double> monitor_displacements() const;
   /// The settle measure of the last output interval of `steps` steps: the
@@ -120,9 +121,8 @@ class StageRunner {
   fdem::Engine& engine_;  ///< model_.engine
   StepOutputs& out_;
   const Scene& scene_;
-  const KeyPoints& key_points_;           ///< displacements from the in-situ state
-  const std::vector<Monitor>& monitors_;  ///< key_points_'s
-  PhaseTimer* timer_ = nullptr;           ///< run_all()'s
+  const KeyPoints& key_points_;  ///< displacements from the in-situ state
+  PhaseTimer* timer_ = nullptr;  ///< run_all()'s
   Cursor cursor_;
   long checkpoint_every_ = 0;
   double last_settle_ = -1;   ///< settle_measure() of the stage's last interval; -1: none

@@ -241,9 +241,10 @@ SupportMaterials add_support_materials(const Scene& scene, fdem::ModelInput& in)
 // The stages' local damping lowers the limit by sqrt(1 + alpha): an
 // explicit dt must hold then too, and is refused before anything is written.
 void refuse_dt_with_stage_damping(const Scene& scene, fdem::Engine& engine,
-                                  const fdem::DampingSettings& handoff_damping, bool force_dt) {
+                                  const fdem::DampingSettings& handoff_damping,
+                                  const fdem::DampingSettings& stages, bool force_dt) {
   if (scene.engine.dt <= 0 || force_dt) return;
-  engine.set_damping(stage_damping(scene));
+  engine.set_damping(stages);
   refuse_dt_above(scene, scene.engine.dt, engine.critical_dt(),
                   "this mesh and its penalties with the stages' damping");
   engine.set_damping(handoff_damping);
@@ -259,7 +260,7 @@ EngineSetup setup_engine(const Scene& scene, const mesh::Mesh& m,
   if (!scene.bolts.segments.empty()) bolts = planned_bolts(scene, in);
   EngineSetup setup{support, std::move(bolts), make_engine(in, scene, force_dt),
                     stage_damping(scene)};
-  refuse_dt_with_stage_damping(scene, setup.engine, in.damping, force_dt);
+  refuse_dt_with_stage_damping(scene, setup.engine, in.damping, setup.stage_damping, force_dt);
   return setup;
 }
 
