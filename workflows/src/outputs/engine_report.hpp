@@ -7,8 +7,6 @@
 #include <vector>
 
 #include "rockfdem/fdem/engine.hpp"
-#include "rockfdem/mesh/mesh.hpp"
-#include "rockfdem/workflows/scene.hpp"
 #include "run/phase_timer.hpp"
 #include "run/summary.hpp"
 
