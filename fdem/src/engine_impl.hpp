@@ -23,7 +23,10 @@ struct Engine::Impl {
   /// recomputed, and with mass scaling the density factors follow.
   void stiffness_changed() {
     critical_dt = -1;
-    if (d.mass_scaling.enabled) d.masses_dirty = true;
+    // Scaled masses follow the stiffness, and so does the weight of a
+    // softened triangle (node_update.cpp, weight_mass).
+    const bool gravity = d.gravity[0] != 0.0 || d.gravity[1] != 0.0;
+    if (d.mass_scaling.enabled || gravity) d.masses_dirty = true;
   }
 };
 

@@ -21,9 +21,9 @@ constexpr int kNodeSums = 5;
 
 inline double sign(double v) { return v > 0.0 ? 1.0 : (v < 0.0 ? -1.0 : 0.0); }
 
-/// Mass of node i from its active triangles with density factors `scale`
-/// (one per triangle; empty: the true masses).
-double corner_mass(const EngineData& d, long i, const std::vector<double>& scale) {
+/// Sum over node i's active triangles of rho f(t) A0 / 3.
+template <class Factor>
+double corner_sum(const EngineData& d, long i, Factor f) {
   const long tri_slots = static_cast<long>(d.crack_slot0());
   const Nodes& n = d.nodes;
   const Triangles& tr = d.tris;
@@ -32,10 +32,25 @@ double corner_mass(const EngineData& d, long i, const std::vector<double>& scale
     const int s = n.slot_index[k];
     if (s >= tri_slots) break;  // slots are sorted: triangles come first
     const int t = s / 3;
-    if (tr.active[t])
-      m += d.solids[tr.material[t]].rho * (scale.empty() ? 1.0 : scale[t]) * tr.area0[t] / 3.0;
+    if (tr.active[t]) m += d.solids[tr.material[t]].rho * f(t) * tr.area0[t] / 3.0;
   }
   return m;
+}
+
+/// Mass of node i from its active triangles with density factors `scale`
+/// (one per triangle; empty: the true masses).
+double corner_mass(const EngineData& d, long i, const std::vector<double>& scale) {
+  return corner_sum(d, i, [&](int t) { return scale.empty() ? 1.0 : scale[t]; });
+}
+
+/// The mass gravity pulls on at node i: a softened triangle (stiffness
+/// factor alpha < 1, the excavation's core) carries alpha of its weight, as
+/// it carries alpha of its in-situ stress, so that a softened core stays in
+/// equilibrium with its own weight (the implicit stage gives it alpha of its
+/// body force too). A stiffened one (a bolt strip, alpha > 1) keeps its
+/// true weight. Mass scaling never changes it.
+double weight_mass(const EngineData& d, long i) {
+  return corner_sum(d, i, [&](int t) { return std::min(d.tris.alpha[t], 1.0); });
 }
 
 /// A change of density factors keeps each node's momentum, m_old v_old =
@@ -52,13 +67,13 @@ void keep_momentum(EngineData& d, const std::vector<double>& old_scale) {
   }
 }
 
-/// Gravity acts on the true masses, whatever the scaling of the inertia.
+/// Gravity acts on the true masses, whatever the scaling of the inertia,
+/// times the softening of each triangle (weight_mass).
 void refresh_external_forces(EngineData& d) {
   Nodes& n = d.nodes;
-  const bool scaled = !d.tris.mass_scale.empty();
   const bool gravity = d.gravity[0] != 0.0 || d.gravity[1] != 0.0;
   for (std::size_t i = 0; i < n.size(); ++i) {
-    const double m = gravity && scaled ? corner_mass(d, long(i), {}) : n.mass[i];
+    const double m = gravity ? weight_mass(d, long(i)) : 0.0;
     n.fext[2 * i] = m * d.gravity[0];
     n.fext[2 * i + 1] = m * d.gravity[1];
   }

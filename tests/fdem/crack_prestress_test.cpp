@@ -78,12 +78,13 @@ TEST(CrackPrestress, unstressed_start_with_tractions_is_out_of_balance) {
 /// The gravity-gradient field on a 2 x 4 m fracture block, per triangle at
 /// its centroid, syy = -p0 - rho g (H - y), sxx = k syy, sxy = 0; top
 /// traction (0, -p0), sides on rollers, base on rollers.
-ModelInput gravity_gradient_block(double k) {
+ModelInput gravity_gradient_block(double k, bool fracture = true) {
   RectangleSpec spec;
   spec.width = 2.0;
   spec.height = 4.0;
   spec.nx = 6;
   spec.ny = 12;
+  spec.fracture = fracture;
   const Material m = test::rock();
   ModelInput in = structured_rectangle(spec, m);
   const double g = 9.81, p0 = 5e6, H = spec.height;
@@ -124,6 +125,28 @@ TEST(CrackPrestress, gravity_gradient_field_starts_in_equilibrium) {
   const double ke = peak_kinetic(e, 100);
   EXPECT_LT(ke, 1e-12 * release_energy({0, -p0, 0}, 8.0)) << "kinetic " << ke;
   EXPECT_EQ(e.broken_counts().total(), 0);
+}
+
+// A softened body carries alpha of its in-situ stress, and of its weight:
+// the same gravity field with every triangle at stiffness factor alpha and
+// the top traction alpha p0 is alpha times a field in equilibrium, so it
+// stays still (the excavation's core between two softening stages). Were
+// the weight not scaled, (1 - alpha) rho g per unit area would be
+// unbalanced: ratio 1.3e-3 after one step (measured without the scaling).
+// Elastic (no crack elements: their pre-stress is the unsoftened field's).
+TEST(CrackPrestress, softened_gravity_field_carries_alpha_of_its_weight) {
+  const double p0 = 5e6, alpha = 0.3;
+  ModelInput in = gravity_gradient_block(0.6, false);
+  for (auto& bc : in.boundary_conditions)
+    if (bc.tag == kTagTop) bc.ty = -alpha * p0;
+  Engine e(in);
+  for (std::size_t t = 0; t < e.n_triangles(); ++t) e.set_stiffness_factor(t, alpha);
+  e.step();
+  const double ratio = e.unbalanced_force_ratio();
+  std::printf("softened gravity field: ratio after one step %.3g\n", ratio);
+  EXPECT_LT(ratio, 1e-6);
+  const double ke = peak_kinetic(e, 100);
+  EXPECT_LT(ke, 1e-12 * release_energy({0, -p0, 0}, 8.0)) << "kinetic " << ke;
 }
 
 // The tunnel run constructs the engine and then deactivates the excavated

@@ -164,17 +164,18 @@ TEST(InputChecks, mesh_writes_a_preview_or_says_why_not) {
   fs::remove_all(out);
 }
 
-// A gravity gradient is for `rockfdem insitu` alone: a tunnel run refuses
-// it first, before a restart's checkpoint is read (here one that does not
-// exist), with exit 2 and nothing written.
-TEST(InputChecks, a_tunnel_run_refuses_a_gravity_gradient_before_its_checkpoint) {
+// A gravity gradient without the weight it holds would set the box moving:
+// a tunnel run refuses it first, before a restart's checkpoint is read (here
+// one that does not exist), with exit 2 and nothing written.
+TEST(InputChecks, a_tunnel_run_refuses_a_gradient_without_gravity_before_its_checkpoint) {
   const fs::path out = scratch("gravity");
   const Result r = run("run " + kSeed + " --set insitu.unit_weight=27000 --restart " +
                        (out / "none" / "checkpoint_000100.bin").string() + " -o " + out.string());
   EXPECT_EQ(r.code, 2) << r.output;
   EXPECT_TRUE(has(r.output,
-                  "key 'insitu.unit_weight' = 27000: `rockfdem run` of a tunnel needs "
-                  "a uniform in-situ stress (0)"))
+                  "key 'insitu.unit_weight' = 27000: the explicit stages need the weight this "
+                  "gradient holds; allowed: 0, or set engine.gravity (unit_weight / "
+                  "materials.rock.density = 10.8 m/s^2)"))
       << r.output;
   EXPECT_FALSE(has(r.output, "checkpoint")) << r.output;
   EXPECT_FALSE(fs::exists(out));

@@ -83,11 +83,12 @@ void add_material(std::map<std::string, Number>& f, mesh::Zone name) {
   f[p + "young"] = [=](const Scene& s) { return mat(s, name).young; };
   f[p + "poisson"] = [=](const Scene& s) { return mat(s, name).poisson; };
   f[p + "tensile_strength"] = [=](const Scene& s) { return mat(s, name).tensile_strength; };
-  f[p + "cohesion"] = [=](const Scene& s) { return mat(s, name).cohesion; };
   f[p + "friction_angle"] = [=](const Scene& s) { return mat(s, name).friction_angle; };
   f[p + "residual_friction_angle"] = [=](const Scene& s) {
     return mat(s, name).residual_friction_angle;
   };
+  if (name == mesh::kLining) return;  // an elastic liner: no crack keys
+  f[p + "cohesion"] = [=](const Scene& s) { return mat(s, name).cohesion; };
   f[p + "fracture_energy_I"] = [=](const Scene& s) { return mat(s, name).fracture_energy_I; };
   f[p + "fracture_energy_II"] = [=](const Scene& s) { return mat(s, name).fracture_energy_II; };
   f[p + "penalty_factor"] = [=](const Scene& s) { return mat(s, name).penalty_factor; };
@@ -208,6 +209,9 @@ std::map<std::string, Text> text_fields() {
     return s.insitu.kirsch_boundary ? "kirsch" : "far_field";
   };
   f["insitu.rollers"] = [](const Scene& s) { return yes(s.insitu.rollers); };
+  f["insitu.handoff"] = [](const Scene& s) {
+    return s.insitu.handoff_first_crack ? "first_crack" : "last";
+  };
   f["insitu.lining_active"] = [](const Scene& s) { return yes(s.insitu.lining_active); };
   f["insitu.solver"] = [](const Scene& s) { return s.insitu.solver; };
   f["insitu.continuum"] = [](const Scene& s) { return s.insitu.continuum; };

@@ -194,6 +194,31 @@ TEST(Scene, cross_key_errors_name_the_changed_key_with_short_numbers) {
       {"tunnel.invert_rise", "horseshoe and arched openings only"});
 }
 
+// Gravity and the in-situ gradient are one choice (scene_build.cpp,
+// relate_gravity): the gradient left out is rho g, one given must be rho g,
+// and the sides need their rollers.
+TEST(Scene, gravity_takes_the_in_situ_gradient_from_the_rock_density) {
+  const std::string seed = rockfdem::test::kSeedScene;
+  const Scene s = load_scene(seed, {"engine.gravity=9.81"});
+  EXPECT_DOUBLE_EQ(s.insitu.unit_weight, 2500.0 * 9.81);
+  EXPECT_EQ(load_scene(seed, {}).insitu.unit_weight, 0.0);
+  EXPECT_DOUBLE_EQ(
+      load_scene(seed, {"engine.gravity=9.81", "insitu.unit_weight=24525"}).insitu.unit_weight,
+      24525.0);
+  expect_contains(error_of([&] {
+                    load_scene(seed, {"engine.gravity=9.81", "insitu.unit_weight=27000"});
+                  }),
+                  {"--set insitu.unit_weight=27000: ", "= 24525 N/m^3"});
+  expect_contains(error_of([&] {
+                    load_scene(seed, {"engine.gravity=9.81", "insitu.rollers=false"});
+                  }),
+                  {"--set insitu.rollers=false: ", "gravity needs the rollers"});
+  expect_contains(error_of([&] {
+                    load_scene(seed, {"engine.gravity=9.81", "insitu.angle=10"});
+                  }),
+                  {"--set insitu.angle=10: ", "angle 0"});
+}
+
 // The reference's default stage list is the one the reader builds: a
 // tunnel with a ring and bolts and no [[stages]] gets lining, bolts,
 // remove_core, equilibrium; a ring active in the implicit stage is not

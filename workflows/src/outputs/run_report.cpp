@@ -55,8 +55,14 @@ const char* shape_name(mesh::TunnelShape s) {
 
 void material_rows(std::ostream& md, const std::string& name, const MaterialSpec& m) {
   md << "| " << name << " | E " << sig(m.young / 1e9) << " GPa, nu " << sig(m.poisson)
-     << ", density " << sig(m.density) << " kg/m^3 |\n"
-     << "| " << name << " cracks | ft " << mpa(m.tensile_strength) << ", c " << mpa(m.cohesion)
+     << ", density " << sig(m.density) << " kg/m^3 |\n";
+  // The lining is an elastic liner: no crack elements, strengths for its check only.
+  if (name == "lining") {
+    md << "| lining strength (capacity check) | tension " << mpa(m.tensile_strength)
+       << ", compression " << mpa(m.compressive_strength) << " |\n";
+    return;
+  }
+  md << "| " << name << " cracks | ft " << mpa(m.tensile_strength) << ", c " << mpa(m.cohesion)
      << ", phi " << sig(m.friction_angle) << " deg (residual " << sig(m.residual_friction_angle)
      << " deg), GfI " << sig(m.fracture_energy_I) << " J/m^2, GfII " << sig(m.fracture_energy_II)
      << " J/m^2 |\n";
@@ -105,9 +111,17 @@ void stages(std::ostream& md, const RunRecord& r) {
   md << "\n## Stages\n\n| # | stage | steps | simulated time [s] | unbalanced ratio at end | "
         "status |\n|---|---|---|---|---|---|\n";
   if (!r.fdem) return;
-  if (r.fdem->handoff_dt)
-    md << "| 0 | handoff (implicit to explicit) | 1 | " << sig(*r.fdem->handoff_dt)
-       << " | - | - |\n";
+  if (r.fdem->handoff_dt) {
+    md << "| 0 | handoff (implicit to explicit";
+    if (r.fdem->handoff_alpha) md << ", alpha " << sig(*r.fdem->handoff_alpha);
+    md << ") | 1 | " << sig(*r.fdem->handoff_dt) << " | - | ";
+    if (r.fdem->handoff)
+      md << value_text(r.fdem->handoff->crack_points_over_strength)
+         << " crack points handed over beyond their strength";
+    else
+      md << "-";
+    md << " |\n";
+  }
   int i = 1;
   for (const StageRecord& st : r.fdem->stages.value_or(std::vector<StageRecord>{}))
     md << "| " << i++ << " | " << st.kind << " | " << value_text(st.steps) << " | "

@@ -19,6 +19,7 @@
 #include "outputs/continuum_counterpart.hpp"
 #include "rockfdem/error.hpp"
 #include "rockfdem/mesh/msh_io.hpp"
+#include "run/handoff_choice.hpp"
 #include "run/implicit_check.hpp"
 #include "run/interrupt.hpp"
 #include "run/output_dir.hpp"
@@ -95,13 +96,17 @@ FdemRecord stages_only(const StageRunner& stages) {
   return f;
 }
 
-// What a tunnel run does not support, refused before the checkpoint is read.
+// What a tunnel run does not support, refused before the checkpoint is read:
+// a stress gradient with no weight to hold it would set the box moving.
 void refuse_unsupported(const Scene& scene) {
-  if (scene.insitu.unit_weight > 0)
-    throw InputError(scene.source + ": key 'insitu.unit_weight' = " +
-                     detail::number_text(scene.insitu.unit_weight) +
-                     ": `rockfdem run` of a tunnel needs a uniform in-situ stress (0); the "
-                     "gradient is supported by `rockfdem insitu`");
+  if (scene.insitu.unit_weight > 0 && !(scene.engine.gravity > 0))
+    throw InputError(
+        scene.source +
+        ": key 'insitu.unit_weight' = " + detail::number_text(scene.insitu.unit_weight) +
+        ": the explicit stages need the weight this gradient holds; allowed: 0, or "
+        "set engine.gravity (unit_weight / materials.rock.density = " +
+        detail::number_text(scene.insitu.unit_weight / scene.materials.at(mesh::kRock).density) +
+        " m/s^2), which then takes the gradient from the density");
 }
 
 }  // namespace
@@ -127,8 +132,19 @@ int Run::run() {
 void Run::solve_insitu() {
   fields_ = keeping_threads(ctx_, [&] { return insitu::solve_insitu(mesh_, insitu_spec(scene_)); });
   check_implicit_field(scene_, mesh_, fields_);
+  choose_handoff_field();
   timer_.stamp("insitu");
   stop_if_interrupted("the implicit stage");
+}
+
+// The field handed over (insitu.handoff): the fields after it were solved to
+// find it and are not part of the run.
+void Run::choose_handoff_field() {
+  const HandoffChoice c = choose_handoff(scene_, mesh_, fields_);
+  handoff_figures_.rule = scene_.insitu.handoff_first_crack ? "first_crack" : "last";
+  for (const insitu::InsituField& f : fields_) handoff_figures_.alphas.push_back(f.alpha);
+  handoff_figures_.strength_ratio = c.strength_ratio;
+  fields_.erase(fields_.begin() + long(c.index) + 1, fields_.end());
 }
 
 // [[stages]] holds only "insitu": the scene asks for the elastic implicit
@@ -245,6 +261,8 @@ void Run::finish() {
   summary_.fdem->unbalanced_ratio_at_start = start_ratio_;
   summary_.fdem->unbalanced_ratio_at_end = engine().unbalanced_force_ratio();
   summary_.fdem->handoff_alpha = handoff().alpha;
+  handoff_figures_.crack_points_over_strength = engine().crack_prestress_clipped();
+  summary_.fdem->handoff = handoff_figures_;
   out_.finish(engine(), mesh_, timer_, bolts_, stages_->energy_check());
   if (!ctx_.quiet)
     std::cout << "status: " << verdict.status

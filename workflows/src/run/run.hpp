@@ -32,6 +32,7 @@ class Run : StagedRun<RunOutputs> {
  private:
   // The phases, in the order run() calls them.
   void solve_insitu();
+  void choose_handoff_field();
   int write_implicit_results_only();
   void build_engine();
   void place_instruments();
@@ -54,7 +55,8 @@ class Run : StagedRun<RunOutputs> {
   /// a later stage's stability limit is below it.
   std::string stage_input_error(const InputError& e);
 
-  std::vector<insitu::InsituField> fields_;
+  std::vector<insitu::InsituField> fields_;  ///< up to the one handed over
+  HandoffFigures handoff_figures_;           ///< the hand-off rule over all solved fields
   SupportMaterials support_;
   fdem::DampingSettings stage_damping_;  ///< the stages' (after the hand-off step)
   fdem::BoltPlan bolts_;                 ///< marks bolt triangles and allows fracture there

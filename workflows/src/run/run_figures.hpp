@@ -38,6 +38,8 @@ struct StageChanges {
   std::optional<long> rejoined;               ///< of them, re-joined with grout (triggered only)
   std::optional<long> broken_after;           ///< broken crack elements after the re-joining
   std::optional<std::string> positions_file;  ///< the re-joined ones' list (grouted_cracks.csv)
+  // soften
+  std::optional<bool> skipped;  ///< the hand-off was already at or below its alpha
   /// A stage kind none of these describe (one registered outside the
   /// library) reports by name; the names differ from the members above.
   using Figure = std::variant<bool, long, double, std::string>;
@@ -96,12 +98,24 @@ struct InsituRecord {
   std::optional<std::vector<InsituSolveFigures>> stages;
 };
 
+/// Where the implicit stage handed over ("fdem"."handoff"): the rule, and
+/// for every solved alpha how far its field loads the crack elements.
+struct HandoffFigures {
+  std::string rule;                    ///< insitu.handoff: "last" or "first_crack"
+  std::vector<double> alphas;          ///< every alpha solved
+  std::vector<double> strength_ratio;  ///< largest crack traction / strength, per alpha
+  /// Crack element points whose traction the engine clipped to their
+  /// strength at the hand-off (over-stress handed over at once).
+  long crack_points_over_strength = 0;
+};
+
 /// The explicit part of a run ("fdem"): present once the stages report.
 struct FdemRecord {
   std::optional<double> unbalanced_ratio_at_start;  ///< after the hand-off step
   std::optional<double> unbalanced_ratio_at_end;
   std::optional<double> handoff_alpha;
   std::optional<double> handoff_dt;  ///< "handoff_step": one step of this dt [s]
+  std::optional<HandoffFigures> handoff;
   std::optional<std::vector<StageRecord>> stages;
 };
 

@@ -123,6 +123,15 @@ nlohmann::json fdem_json(const FdemRecord& f) {
   if (f.unbalanced_ratio_at_start) j["unbalanced_ratio_at_start"] = *f.unbalanced_ratio_at_start;
   if (f.unbalanced_ratio_at_end) j["unbalanced_ratio_at_end"] = *f.unbalanced_ratio_at_end;
   if (f.handoff_alpha) j["handoff_alpha"] = *f.handoff_alpha;
+  if (f.handoff) {
+    nlohmann::json solved = nlohmann::json::array();
+    for (std::size_t i = 0; i < f.handoff->alphas.size(); ++i)
+      solved.push_back(
+          {{"alpha", f.handoff->alphas[i]}, {"strength_ratio", f.handoff->strength_ratio[i]}});
+    j["handoff"] = {{"rule", f.handoff->rule},
+                    {"solved", solved},
+                    {"crack_points_over_strength", f.handoff->crack_points_over_strength}};
+  }
   if (f.stages) j["stages"] = stage_records_json(*f.stages);
   if (f.handoff_dt)
     j["handoff_step"] = {{"steps", 1}, {"dt", *f.handoff_dt}, {"simulated_time", *f.handoff_dt}};
@@ -422,6 +431,7 @@ nlohmann::json stage_changes_json(const StageChanges& c) {
   for (const ChangeCount& k : kChangeCounts)
     if (c.*k.member) j[k.key] = *(c.*k.member);
   if (c.triggered) j["triggered"] = *c.triggered;
+  if (c.skipped) j["skipped"] = *c.skipped;
   if (c.positions_file) j["positions_file"] = *c.positions_file;
   return j;
 }
@@ -434,6 +444,8 @@ StageChanges stage_changes_from_json(const nlohmann::json& j) {
       c.*k->member = v.get<long>();
     else if (it.key() == "triggered")
       c.triggered = v.get<bool>();
+    else if (it.key() == "skipped")
+      c.skipped = v.get<bool>();
     else if (it.key() == "positions_file")
       c.positions_file = v.get<std::string>();
     else
@@ -444,7 +456,7 @@ StageChanges stage_changes_from_json(const nlohmann::json& j) {
 
 std::string stage_change_mismatch(const std::string& key, const nlohmann::json& v) {
   if (change_count(key)) return v.is_number_integer() ? "" : "an integer";
-  if (key == "triggered") return v.is_boolean() ? "" : "true or false";
+  if (key == "triggered" || key == "skipped") return v.is_boolean() ? "" : "true or false";
   if (key == "positions_file") return v.is_string() ? "" : "a string";
   return v.is_primitive() && !v.is_null() ? "" : "true, false, a number or a string";
 }

@@ -322,15 +322,20 @@ MaterialSpec read_material(const Reader& r, mesh::Zone zone) {
   m.young = r.number(p + "young");
   m.poisson = r.number(p + "poisson");
   m.tensile_strength = r.number_or(p + "tensile_strength", 0);
-  m.cohesion = r.number_or(p + "cohesion", 0);
   m.friction_angle = r.number(p + "friction_angle");
   m.residual_friction_angle = r.number(p + "residual_friction_angle");
+  // The lining is an elastic liner (no crack elements): its strengths are
+  // for the capacity check alone, its friction for its contacts.
+  if (zone == mesh::kLining) {
+    m.compressive_strength = r.number_or(p + "compressive_strength", 0);
+    return m;
+  }
+  m.cohesion = r.number_or(p + "cohesion", 0);
   m.fracture_energy_I = r.number_or(p + "fracture_energy_I", 0);
   m.fracture_energy_II = r.number_or(p + "fracture_energy_II", 0);
   m.penalty_factor = r.number(p + "penalty_factor");
   m.heterogeneity = r.number(p + "heterogeneity");
   m.heterogeneity_seed = std::uint64_t(r.number(p + "heterogeneity_seed"));
-  if (zone == mesh::kLining) m.compressive_strength = r.number_or(p + "compressive_strength", 0);
   return m;
 }
 
@@ -383,6 +388,11 @@ void read_insitu(const Reader& r, Scene& s) {
   in.continuum = r.text("insitu.continuum");
   in.dilation_angle = r.number("insitu.dilation_angle");
   in.alpha = r.numbers("insitu.alpha");
+  in.handoff_first_crack = r.text("insitu.handoff") == "first_crack";
+  if (in.handoff_first_crack && !needs_fracture(s.mesh))
+    r.fail("insitu.handoff",
+           "first_crack needs crack elements: a tunnel with "
+           "tunnel.fracture_zone > 0; allowed here: last");
   // Each alpha is a whole implicit solve and output (about 12 us per
   // triangle, 107 s for 1000 on the default tunnel): a list past this is a
   // mistake, not a study.
@@ -408,6 +418,34 @@ void read_insitu(const Reader& r, Scene& s) {
     r.fail("insitu.continuum",
            "the Mohr-Coulomb continuum needs materials.rock.cohesion > 0 (without it the "
            "unsupported opening collapses)");
+}
+
+// Gravity in a loaded model: the body force rho g of the explicit stages
+// and the in-situ gradient that holds it are one choice. The in-situ field
+// grows with depth by the rock's unit weight rho g (below the tunnel's
+// centre, where sigma_h and sigma_v hold), so that it is in equilibrium with
+// the weight from the first step; a unit weight left out is taken as rho g,
+// one given must be it. The sides carry a stress that grows with depth: the
+// rollers hold it (uniform side tractions cannot).
+void relate_gravity(const Reader& r, Scene& s) {
+  const double g = s.engine.gravity, rho = s.materials.at(mesh::kRock).density;
+  InsituSettings& in = s.insitu;
+  if (!(g > 0)) return;
+  const double gamma = rho * g;
+  if (!r.has("insitu.unit_weight")) in.unit_weight = gamma;
+  if (std::fabs(in.unit_weight - gamma) > 1e-6 * gamma)
+    r.fail("insitu.unit_weight",
+           "the in-situ gradient must hold the weight the explicit stages apply: "
+           "insitu.unit_weight = materials.rock.density x engine.gravity = " +
+               num(gamma) + " N/m^3 (or leave insitu.unit_weight out)");
+  if (!in.rollers)
+    r.fail("insitu.rollers",
+           "gravity needs the rollers: the sides carry the in-situ stress, "
+           "which grows with depth (set engine.gravity = 0 to drop them)");
+  if (in.angle_deg != 0)
+    r.fail("insitu.angle", "gravity needs vertical principal stresses (angle 0)");
+  if (in.kirsch_boundary)
+    r.fail("insitu.boundary", "exact Kirsch tractions need a uniform field: no gravity");
 }
 
 std::array<double, 2> point(const Reader& r, const std::string& path) {
@@ -670,7 +708,8 @@ void read_stages(const Reader& r, Scene& s) {
   if (s.mesh.kind != mesh::ModelKind::kTunnel && s.mesh.kind != mesh::ModelKind::kMshFile)
     r.fail("stages", "construction stages need a tunnel model");
   StageOrder at;
-  at.alpha = s.insitu.alpha.back();
+  // With the hand-off found at run time, soften stages may start from the top.
+  at.alpha = s.insitu.handoff_first_crack ? s.insitu.alpha.front() : s.insitu.alpha.back();
   for (std::size_t i = 0; i < list->as_array()->size(); ++i) {
     const std::string p = "stages[" + std::to_string(i) + "]";
     r.require(p + ".kind", "every stage has a kind");
@@ -757,6 +796,8 @@ Scene build_scene(const RawScene& raw, const std::string& base_dir) {
   s.engine.mass_damping = r.number("engine.mass_damping");
   s.engine.kinetic_damping = r.boolean("engine.kinetic_damping");
   s.engine.gravity = r.number("engine.gravity");
+  if (s.mesh.kind == mesh::ModelKind::kTunnel || s.mesh.kind == mesh::ModelKind::kMshFile)
+    relate_gravity(r, s);
   const std::string scaling = r.text("engine.mass_scaling");
   const bool specimen =
       s.mesh.kind == mesh::ModelKind::kUcs || s.mesh.kind == mesh::ModelKind::kBrazilian;

@@ -91,10 +91,12 @@ using namespace schema;
 
 // A material's keys. `inherit` ("materials.rock.") makes each default the
 // value of that material's key (the core takes the rock's); empty: the
-// listed values.
+// listed values. The lining is an elastic liner: its triangles share nodes,
+// so it has no crack keys, only the friction of its contacts.
 void add_material(std::vector<KeySpec>& s, const std::string& name, const std::string& role,
                   const std::string& inherit = "") {
   const std::string p = "materials." + name + ".";
+  const bool cracks = name != "lining";
   const auto def = [&](const char* key, const char* value) {
     return inherit.empty() ? std::string(value) : inherit + key;
   };
@@ -108,15 +110,21 @@ void add_material(std::vector<KeySpec>& s, const std::string& name, const std::s
                          "(constant-strain) triangles of both stages lock as it nears 0.5 (the "
                          "Kirsch case's stress error: 0.85% at 0.25, 3.8% at 0.45, 16% at 0.49, "
                          "366% at 0.4999)."));
-  s.push_back(positive(p + "tensile_strength", "Pa", def("tensile_strength", ""),
-                       "Tensile strength ft of the " + role + "'s crack elements."));
-  s.push_back(positive(p + "cohesion", "Pa", def("cohesion", ""),
-                       "Cohesion c of the " + role + "'s crack elements (Mohr-Coulomb)."));
+  if (cracks) {
+    s.push_back(positive(p + "tensile_strength", "Pa", def("tensile_strength", ""),
+                         "Tensile strength ft of the " + role + "'s crack elements."));
+    s.push_back(positive(p + "cohesion", "Pa", def("cohesion", ""),
+                         "Cohesion c of the " + role + "'s crack elements (Mohr-Coulomb)."));
+  }
   s.push_back(number(p + "friction_angle", "deg", def("friction_angle", "30"), 0, false, 90, true,
-                     "Internal friction angle of the " + role + "'s crack elements."));
+                     cracks ? "Internal friction angle of the " + role + "'s crack elements."
+                            : std::string("Friction angle of the lining's contacts with the "
+                                          "rock once their bond ([lining_interface]) has "
+                                          "broken (the lining has no crack elements).")));
   // The residual angle follows the material's own friction angle.
   s.push_back(number(p + "residual_friction_angle", "deg", "friction_angle", 0, false, 90, true,
                      "Friction angle of broken cracks and contacts in the " + role + "."));
+  if (!cracks) return;
   s.push_back(positive(p + "fracture_energy_I", "J/m^2", def("fracture_energy_I", ""),
                        "Mode I fracture energy GfI of the " + role + "."));
   s.push_back(positive(p + "fracture_energy_II", "J/m^2", def("fracture_energy_II", ""),
@@ -310,7 +318,10 @@ void add_insitu(std::vector<KeySpec>& s) {
   s.push_back(non_negative("insitu.unit_weight", "N/m^3", "0",
                            "Stress gradient with depth: both principal stresses grow by "
                            "unit_weight (times sigma_h/sigma_v for the horizontal one) per metre "
-                           "below the centre; 0: uniform."));
+                           "below the centre; 0: uniform. With engine.gravity > 0 it is the "
+                           "rock's density x gravity (left out: taken as that; given: must be "
+                           "that), so the in-situ field holds the weight; `run` refuses a "
+                           "gradient without gravity."));
   s.push_back(choice("insitu.boundary", "far_field", {"far_field", "kirsch"},
                      "Loading on the box: the far-field tractions, or exact Kirsch tractions "
                      "(circular tunnel only, for verification)."));
@@ -328,6 +339,15 @@ void add_insitu(std::vector<KeySpec>& s) {
                  std::to_string(kMaxAlphas) + " values: each is a full implicit solve and output.");
   alpha.type = KeyType::kNumberArray;
   s.push_back(alpha);
+  s.push_back(choice(
+      "insitu.handoff", "last", {"last", "first_crack"},
+      "Where the implicit stage hands the core over to the explicit stages. last: at the last "
+      "alpha of insitu.alpha. first_crack: walking the list down, at the last alpha before the "
+      "first one that loads a crack element beyond its strength (its face's traction from the "
+      "implicit stresses against ft and c - sigma_n tan phi), so that no over-stress arrives in "
+      "one step; the explicit soften stages continue from there (those at or above it are "
+      "skipped). Needs crack elements (tunnel.fracture_zone > 0). summary.json "
+      "fdem.handoff gives the strength ratio of every alpha."));
   s.push_back(boolean("insitu.lining_active", "false",
                       "Whether the lining ring carries load during the implicit stage."));
   s.push_back(choice("insitu.solver", "auto", {"auto", "amg", "direct"},
@@ -387,7 +407,11 @@ void add_engine(std::vector<KeySpec>& s) {
                            "it by sqrt(1 + local_damping)) and dt_safety; 0: the least "
                            "constrained node's stability limit."));
   s.push_back(non_negative("engine.gravity", "m/s^2", "0",
-                           "Gravitational acceleration acting in -y; 0: none."));
+                           "Gravitational acceleration acting in -y; 0: none. In a tunnel or "
+                           ".msh model the explicit stages apply the weight rho g (a softened "
+                           "core alpha of it) and the in-situ field grows with depth by the "
+                           "rock's rho g below the centre, where sigma_h and sigma_v hold; it "
+                           "needs insitu.rollers and angle 0."));
   // The stages' own keys ([loading]: stage_load_platens.cpp).
   for (const std::string& kind : stage_kinds())
     for (KeySpec& k : stage_of(kind).keys()) s.push_back(std::move(k));
@@ -565,6 +589,11 @@ std::vector<KeySpec> build_schema() {
   add_material(s, "rock", "host rock (or the specimen)");
   add_material(s, "core", "excavation core (defaults to the rock's values)", "materials.rock.");
   add_material(s, "lining", "shotcrete lining");
+  s.push_back(positive("materials.lining.tensile_strength", "Pa", "",
+                       "Tensile strength of the shotcrete for the lining's capacity check "
+                       "(the lining is an elastic liner: its triangles share nodes, it has no "
+                       "crack elements; what breaks is the lining-rock bond, "
+                       "[lining_interface])."));
   KeySpec fc = positive("materials.lining.compressive_strength", "Pa", "",
                         "Uniaxial compressive strength of the shotcrete for the lining's "
                         "capacity check (docs/support.md): each segment's thrust and moment "

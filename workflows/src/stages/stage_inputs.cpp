@@ -103,6 +103,13 @@ fdem::BoltSteel steel_of(const SteelSettings& b) {
 std::map<mesh::Zone, fdem::Material> engine_materials(const Scene& s) {
   std::map<mesh::Zone, fdem::Material> out;
   for (const auto& [zone, m] : s.materials) out[zone] = engine_material(m, s.engine);
+  // The lining has no crack elements of its own, and its tensile strength is
+  // the capacity check's: a crack element between it and the rock (the
+  // bond, before the lining stage gives it [lining_interface]) is the rock's.
+  if (out.count(mesh::kLining)) {
+    fdem::Material& l = out[mesh::kLining];
+    l.tensile_strength = l.cohesion = 10 * l.young;
+  }
   return out;
 }
 
@@ -200,6 +207,8 @@ fdem::ModelInput engine_input(const Scene& scene, const mesh::Mesh& m,
       m, materials, scene.plane_stress ? fdem::Plane::kStress : fdem::Plane::kStrain);
   coupling::apply_insitu(handoff, in);
   in.boundary_conditions = box_conditions(scene.insitu);
+  // The weight the in-situ gradient holds (scene_build.cpp, relate_gravity).
+  in.gravity_y = -scene.engine.gravity;
   in.dt = scene.engine.dt;  // checked by make_engine
   in.dt_safety = scene.engine.dt_safety;
   in.threads = threads;

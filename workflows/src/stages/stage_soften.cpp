@@ -21,12 +21,28 @@ class Soften : public Stage {
   }
 
   StageChanges apply(StageModel& m, const StageSpec& spec) const override {
+    // A hand-off found at run time (insitu.handoff = "first_crack") may
+    // already be at or below this alpha: nothing to soften.
+    if (!(spec.alpha < m.alpha)) {
+      StageChanges skipped;
+      skipped.skipped = true;
+      return skipped;
+    }
     // The engine's core already has alpha_h E and stress: scale relative to it.
     for (std::size_t t = 0; t < m.mesh.n_triangles(); ++t)
       if (m.mesh.zone[t] == mesh::kCore || (!m.lining_installed && m.mesh.zone[t] == mesh::kLining))
         m.engine.set_stiffness_factor(t, spec.alpha / m.handoff_alpha);
     m.alpha = spec.alpha;
     return {};
+  }
+
+  bool step(StageRunner& runner, const StageSpec& spec, StageChanges& changes) const override {
+    return changes.skipped ? true : Stage::step(runner, spec, changes);
+  }
+
+  std::string outcome(const StageRecord& record) const override {
+    if (record.changes.skipped) return "skipped (the hand-off was at or below its alpha)";
+    return Stage::outcome(record);
   }
 };
 

@@ -45,6 +45,9 @@ struct InsituSettings {
   double unit_weight{};  ///< N/m^3
   bool kirsch_boundary{};
   std::vector<double> alpha;  ///< at most kMaxAlphas values
+  /// The hand-off at the last alpha before a crack element is over-stressed
+  /// (insitu.handoff = "first_crack") rather than at the list's last.
+  bool handoff_first_crack{};
   bool lining_active{};
   std::string solver;
   double tolerance{};

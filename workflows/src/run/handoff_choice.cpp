@@ -1,0 +1,85 @@
+#include "run/handoff_choice.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <map>
+#include <utility>
+
+#include "stages/stage_inputs.hpp"
+
+namespace rockfdem::workflows {
+namespace {
+
+struct Face {
+  int t1, t2;     ///< the two triangles
+  double nx, ny;  ///< unit normal
+  double tx, ty;  ///< unit tangent
+};
+
+// Interior edges with a fracture triangle on either side, in a fixed order
+// (by their vertex pair): the engine's crack elements (fdem topology).
+std::vector<Face> crack_faces(const mesh::Mesh& m) {
+  std::map<std::pair<int, int>, int> first;
+  std::vector<Face> faces;
+  for (std::size_t t = 0; t < m.n_triangles(); ++t)
+    for (int k = 0; k < 3; ++k) {
+      const int a = m.triangles[t][k], b = m.triangles[t][(k + 1) % 3];
+      const auto key = std::minmax(a, b);
+      const auto [it, fresh] = first.emplace(key, int(t));
+      if (fresh) continue;
+      const int u = it->second;
+      if (!m.fracture[t] && !m.fracture[u]) continue;
+      const double dx = m.x[b] - m.x[a], dy = m.y[b] - m.y[a], len = std::hypot(dx, dy);
+      faces.push_back({u, int(t), dy / len, -dx / len, dx / len, dy / len});
+    }
+  return faces;
+}
+
+}  // namespace
+
+namespace {
+
+double worst_ratio(const std::vector<Face>& faces,
+                   const std::map<mesh::Zone, fdem::Material>& materials, const mesh::Mesh& m,
+                   const insitu::InsituField& field) {
+  double worst = 0;
+  for (const Face& f : faces) {
+    if (!field.active[f.t1] || !field.active[f.t2]) continue;
+    const fdem::Material& m1 = materials.at(mesh::Zone(m.zone[f.t1]));
+    const fdem::Material& m2 = materials.at(mesh::Zone(m.zone[f.t2]));
+    const fdem::Material& mat = m2.tensile_strength < m1.tensile_strength ? m2 : m1;
+    const insitu::Stress& a = field.stress[f.t1];
+    const insitu::Stress& b = field.stress[f.t2];
+    const double sxx = (a.sxx + b.sxx) / 2, syy = (a.syy + b.syy) / 2, sxy = (a.sxy + b.sxy) / 2;
+    const double tr_x = sxx * f.nx + sxy * f.ny, tr_y = sxy * f.nx + syy * f.ny;
+    const double sn = tr_x * f.nx + tr_y * f.ny, tau = tr_x * f.tx + tr_y * f.ty;  // tension +
+    const double fs =
+        sn < 0 ? mat.cohesion - sn * std::tan(mat.friction_deg * M_PI / 180) : mat.cohesion;
+    worst = std::max({worst, sn / mat.tensile_strength, std::fabs(tau) / fs});
+  }
+  return worst;
+}
+
+}  // namespace
+
+double crack_strength_ratio(const Scene& scene, const mesh::Mesh& m,
+                            const insitu::InsituField& field) {
+  return worst_ratio(crack_faces(m), engine_materials(scene), m, field);
+}
+
+HandoffChoice choose_handoff(const Scene& scene, const mesh::Mesh& m,
+                             const std::vector<insitu::InsituField>& fields) {
+  const std::vector<Face> faces = crack_faces(m);
+  const std::map<mesh::Zone, fdem::Material> materials = engine_materials(scene);
+  HandoffChoice c;
+  for (const insitu::InsituField& f : fields)
+    c.strength_ratio.push_back(worst_ratio(faces, materials, m, f));
+  c.index = fields.size() - 1;
+  if (!scene.insitu.handoff_first_crack) return c;
+  c.index = 0;
+  while (c.index + 1 < fields.size() && c.strength_ratio[c.index + 1] <= 1.0) ++c.index;
+  return c;
+}
+
+}  // namespace rockfdem::workflows

@@ -1,0 +1,40 @@
+// Where the implicit stage hands the core over (insitu.handoff): at the
+// last alpha of the list, or at the last alpha before the first one whose
+// field loads a crack element beyond its strength, so that the explicit
+// stages start with every crack element intact and fracture grows as the
+// core softens further (the paper's procedure) instead of arriving in one
+// step.
+#pragma once
+
+#include <cstddef>
+#include <vector>
+
+#include "rockfdem/insitu/insitu.hpp"
+#include "rockfdem/mesh/mesh.hpp"
+#include "rockfdem/workflows/scene.hpp"
+
+namespace rockfdem::workflows {
+
+struct HandoffChoice {
+  /// Per solved alpha: the largest ratio of a crack element's face traction
+  /// to its strength (normal against ft, shear against c - sigma_n tan phi).
+  std::vector<double> strength_ratio;
+  std::size_t index = 0;  ///< the field handed over
+};
+
+/// The largest traction-to-strength ratio over the crack elements the
+/// engine will make on `m` (interior edges with a fracture triangle on
+/// either side, both triangles in the field), the face loaded by the mean
+/// of its two triangles' stresses, with the strengths the engine gives
+/// that pair (the weaker material's; a zone given none is never reached).
+/// Strength heterogeneity's scatter is not in it: the materials' own values.
+double crack_strength_ratio(const Scene& scene, const mesh::Mesh& m,
+                            const insitu::InsituField& field);
+
+/// The scene's rule over the solved fields (alphas decreasing): "last"
+/// takes the last; "first_crack" the last of those before the first with a
+/// ratio above 1 (the first field if it is itself above 1).
+HandoffChoice choose_handoff(const Scene& scene, const mesh::Mesh& m,
+                             const std::vector<insitu::InsituField>& fields);
+
+}  // namespace rockfdem::workflows
