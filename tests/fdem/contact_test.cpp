@@ -109,56 +109,6 @@ TEST(Contact, elastic_block_bounces_with_energy_conserved) {
   EXPECT_NEAR(e1, e0, 0.02 * e0);
 }
 
-/// Mass-weighted mean x displacement of the upper block's nodes.
-double upper_shift(const Engine& e, const std::vector<char>& upper) {
-  double s = 0, m = 0;
-  for (std::size_t n = 0; n < e.n_nodes(); ++n)
-    if (upper[n]) {
-      s += e.node_mass()[n] * e.displacement(n)[0];
-      m += e.node_mass()[n];
-    }
-  return s / m;
-}
-
-/// Block on a horizontal base under gravity tilted by theta (the incline);
-/// returns the block's mean displacement along the slope after time T.
-double slide(double theta_deg, double friction_deg, double T, double& expected) {
-  Material m = test::rock();
-  m.residual_friction_deg = friction_deg;
-  ModelInput in = test::two_blocks(0.0, m);
-  const double th = theta_deg * kPi / 180, g = 9.81;
-  in.gravity_x = g * std::sin(th);
-  in.gravity_y = -g * std::cos(th);
-  in.contact = contact_on();
-  in.threads = 1;  // 48 triangles: thread start-up would dominate
-  Engine e(in);
-  std::vector<char> upper(e.n_nodes(), 0);
-  for (std::size_t t = 2 * (e.n_triangles() / 3); t < e.n_triangles(); ++t)
-    for (int n : e.triangle_nodes(t)) upper[n] = 1;
-  const long steps = std::lround(T / e.dt());
-  e.run(steps);
-  const double t = steps * e.dt();
-  const double mu = std::tan(friction_deg * kPi / 180);
-  expected = 0.5 * g * (std::sin(th) - mu * std::cos(th)) * t * t;
-  return upper_shift(e, upper);
-}
-
-// tan(theta) > mu: the block slides with acceleration g (sin - mu cos)
-// (1%; measured +0.4%, the landing from zero gap included); tan(theta) <= mu:
-// it sticks (moves less than 1% of what a frictionless block would; measured
-// 0.3%, the tangential springs' elastic give). No contact damping: with a
-// ratio of 0.5 the landing's chatter made the block slide 4-6% short.
-TEST(Contact, block_on_incline_slides_or_sticks_by_coulomb) {
-  double expected;
-  const double s = slide(30, 20, 0.02, expected);
-  std::printf("incline 30 deg, friction 20 deg: slid %.6g m, closed form %.6g m\n", s, expected);
-  EXPECT_NEAR(s, expected, 0.01 * expected);
-  const double stuck = slide(15, 20, 0.02, expected);
-  const double free_slide = 0.5 * 9.81 * std::sin(15 * kPi / 180) * 0.02 * 0.02;
-  std::printf("incline 15 deg, friction 20 deg: moved %.3g m (free %.3g m)\n", stuck, free_slide);
-  EXPECT_LT(std::fabs(stuck), 0.01 * free_slide);
-}
-
 /// Places triangle 1 of the two-triangle model at offset (ux, uy) from its
 /// mesh position with velocity (vx, 0); triangle 0 stays put.
 void place_top(Engine& e, const ModelInput& in, double ux, double uy, double vx) {

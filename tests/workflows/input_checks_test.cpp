@@ -140,6 +140,38 @@ TEST(InputChecks, stresses_and_moduli_given_in_pa_for_mpa_warn) {
   fs::remove_all(out);
 }
 
+// Tunnel stages run to equilibrium; with no damping of any kind their
+// vibration never decays and friction ratchets on it (docs/engine.md,
+// "Sticking and undamped ratcheting"): a warning naming the key. Any one
+// kind of damping silences it; a specimen's platen loading is no
+// quasi-static stage.
+TEST(InputChecks, quasi_static_stages_without_any_damping_warn) {
+  const std::string good = kTestDir + "/good_circular.toml";
+  const auto warnings = [&](const std::string& scene, std::vector<std::string> sets) {
+    sets.insert(sets.begin(), {"engine.damping_ratio=0"});
+    return workflows::load_scene(scene, sets).warnings;
+  };
+  EXPECT_TRUE(warnings(good, {}).empty());  // local damping 0.8 when not given
+  std::vector<std::string> w = warnings(good, {"engine.local_damping=0"});
+  ASSERT_EQ(w.size(), 1u);
+  EXPECT_EQ(w[0],
+            "--set engine.local_damping=0: with no kinetic, mass, element (engine.damping_ratio) "
+            "or contact damping the quasi-static stages (remove_core, equilibrium) run "
+            "undamped: their vibration never decays, blocks held by friction ratchet down on it "
+            "and equilibrium may not come; give engine.local_damping > 0 (0.8 when not given) "
+            "or engine.kinetic_damping = true");
+  // Damping the contact while contact is off damps nothing.
+  EXPECT_EQ(warnings(good, {"engine.local_damping=0", "contact.enabled=false",
+                            "contact.damping_ratio=0.1"})
+                .size(),
+            1u);
+  EXPECT_TRUE(warnings(good, {"engine.local_damping=0.05"}).empty());
+  for (const std::string damped : {"engine.kinetic_damping=true", "engine.mass_damping=1",
+                                   "engine.damping_ratio=0.01", "contact.damping_ratio=0.1"})
+    EXPECT_TRUE(warnings(good, {"engine.local_damping=0", damped}).empty()) << damped;
+  EXPECT_TRUE(warnings(kTestDir + "/ucs_small.toml", {"engine.local_damping=0"}).empty());
+}
+
 // preview.png under Xvfb; without a display, or with output.plots off,
 // the summary says why there is none.
 TEST(InputChecks, mesh_writes_a_preview_or_says_why_not) {

@@ -826,6 +826,7 @@ Scene build_scene(const RawScene& raw, const std::string& base_dir) {
   s.restart_key = key.str();
   s.as_run = scene_as_run(raw.root, s.mesh);
   s.warnings = detail::unit_warnings(raw);
+  for (std::string& w : detail::damping_warnings(raw, s)) s.warnings.push_back(std::move(w));
   return s;
 }
 

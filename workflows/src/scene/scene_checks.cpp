@@ -5,6 +5,7 @@
 
 #include "rockfdem/mesh/outline.hpp"
 #include "rockfdem/workflows/scene_schema.hpp"
+#include "stages/stage_inputs.hpp"
 
 namespace rockfdem::workflows::detail {
 namespace {
@@ -125,6 +126,26 @@ std::vector<std::string> unit_warnings(const RawScene& raw) {
     out.push_back(key_message(raw, k.path, n, problem));
   }
   return out;
+}
+
+std::vector<std::string> damping_warnings(const RawScene& raw, const Scene& s) {
+  std::string stages;
+  for (const StageSpec& st : s.stages)
+    if (st.kind != "load_platens") stages += (stages.empty() ? "" : ", ") + st.kind;
+  const fdem::DampingSettings d = stage_damping(s);
+  const bool contact_damped = s.engine.contact && s.engine.contact_damping > 0;
+  if (stages.empty() || d.local > 0 || d.kinetic || d.mass_proportional > 0 ||
+      s.engine.damping_ratio > 0 || contact_damped)
+    return {};
+  const std::string key = "engine.local_damping";
+  return {key_message(raw, key, raw.root.at_path(key).node(),
+                      "with no kinetic, mass, element (engine.damping_ratio) or contact damping "
+                      "the quasi-static stages (" +
+                          stages +
+                          ") run undamped: their vibration never decays, blocks held by "
+                          "friction ratchet down on it and equilibrium may not come; give "
+                          "engine.local_damping > 0 (0.8 when not given) or "
+                          "engine.kinetic_damping = true")};
 }
 
 }  // namespace rockfdem::workflows::detail

@@ -1,6 +1,7 @@
 // Private: the checks an engineer makes of a scene's inputs before a run:
-// bolts placed from the opening into the rock, and stresses or moduli whose
-// size says they were given in the wrong unit.
+// bolts placed from the opening into the rock, stresses or moduli whose
+// size says they were given in the wrong unit, and quasi-static stages
+// left without any damping.
 #pragma once
 
 #include <array>
@@ -8,6 +9,7 @@
 #include <vector>
 
 #include "rockfdem/mesh/mesh_spec.hpp"
+#include "rockfdem/workflows/scene.hpp"
 #include "scene/scene_reader.hpp"
 
 namespace rockfdem::workflows::detail {
@@ -33,5 +35,12 @@ double collar_tolerance(const mesh::MeshSpec& m);
 /// Warnings for in-situ stresses below 10 kPa and moduli (Young's, tangent)
 /// below 1 MPa given in the scene: probably MPa written as Pa.
 std::vector<std::string> unit_warnings(const RawScene& raw);
+
+/// A warning when the tunnel stages, quasi-static runs to equilibrium, get
+/// no damping at all: engine.local_damping = 0, no kinetic or mass
+/// damping, engine.damping_ratio = 0 and no contact damping. Their
+/// vibration then never decays, and blocks held by friction ratchet on it
+/// (docs/engine.md, "Sticking and undamped ratcheting").
+std::vector<std::string> damping_warnings(const RawScene& raw, const Scene& s);
 
 }  // namespace rockfdem::workflows::detail
