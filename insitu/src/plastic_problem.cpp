@@ -17,8 +17,10 @@
 // F0 = int_rock sigma0 : eps(v): at lambda = 0 the rock then sits exactly at
 // sigma0, whatever the quadrature. With gravity the base of the box takes
 // the weight the released wall no longer carries (below). In the rock sigma(u)
-// is the Mohr-Coulomb stress update (mohr_coulomb.hpp) from the last
-// converged state; in an installed lining it is C_lining (eps - eps_install).
+// is the Mohr-Coulomb stress update (mohr_coulomb.hpp; with a residual
+// strength the softening one, mohr_coulomb_softening.hpp, whose gamma_p is
+// state like the stress) from the last converged state; in an installed lining it is C_lining (eps
+// - eps_install).
 //
 // Newton: K du = -R(u) with K the algorithmic tangent, not symmetric when
 // psi != phi, so every step is solved by UMFPACK. lambda grows in steps of
@@ -455,10 +457,10 @@ double PlasticProblem::assemble(const double lambda) {
   return system_rhs_.l2_norm() / force_scale_;
 }
 
-// With softening a wild iterate (cells far beyond the front, some at the
-// apex where the tangent is 0) can make the stiffness singular: that step
-// failed, and is halved like one that does not converge. (Without softening
-// the error stands, as it always did.)
+// With softening the tangent of an iterate far from the answer can be
+// singular (seen with gamma_res = 1e-2 at the 5th iterate of a 0.05 step):
+// that step failed, and is halved like one that does not converge. Without
+// softening the error stands, as it always did.
 bool PlasticProblem::newton(const double lambda, int& iterations) {
   Vector<double> du(dof_handler_.n_dofs());
   for (int it = 0; it <= plastic_.max_newton; ++it) {

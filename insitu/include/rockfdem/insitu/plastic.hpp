@@ -1,8 +1,9 @@
 // The Mohr-Coulomb elasto-plastic continuum: the same mesh and in-situ state
 // as the elastic stage (rockfdem/insitu/insitu.hpp), the rock perfectly
-// plastic with non-associated flow, the excavation made by releasing the
-// in-situ traction on the opening in increments (the convergence-confinement
-// method's fictitious support pressure (1 - lambda) sigma0 . n).
+// plastic (or strain-softening to a residual strength) with non-associated
+// flow, the excavation made by releasing the in-situ traction on the
+// opening in increments (the convergence-confinement method's fictitious
+// support pressure (1 - lambda) sigma0 . n).
 //
 // Conventions as in insitu.hpp: input strengths positive, output stresses
 // TENSION POSITIVE [Pa], displacements caused by the excavation [m], the
