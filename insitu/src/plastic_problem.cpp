@@ -19,8 +19,8 @@
 // the weight the released wall no longer carries (below). In the rock sigma(u)
 // is the Mohr-Coulomb stress update (mohr_coulomb.hpp; with a residual
 // strength the softening one, mohr_coulomb_softening.hpp, whose gamma_p is
-// state like the stress) from the last converged state; in an installed lining it is C_lining (eps
-// - eps_install).
+// state like the stress) from the last converged state; in an installed
+// lining it is C_lining (eps - eps_install).
 //
 // Newton: K du = -R(u) with K the algorithmic tangent, not symmetric when
 // psi != phi, so every step is solved by UMFPACK. lambda grows in steps of
