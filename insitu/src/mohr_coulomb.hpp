@@ -142,8 +142,10 @@ inline bool edge_return(const Law& law, const Vec3& trial, bool upper, double to
 
 }  // namespace detail
 
-/// The return in ordered principal stresses: s and P = ds/ds* (3x3).
-inline Return principal_return(const Law& law, const Vec3& trial, Vec3& s, Mat3& P) {
+/// The return in ordered principal stresses: s and P = ds/ds* (3x3);
+/// *upper_edge (when given) tells which edge an kEdge return went to.
+inline Return principal_return(const Law& law, const Vec3& trial, Vec3& s, Mat3& P,
+                               bool* upper_edge = nullptr) {
   using namespace detail;
   const double tol =
       1e-12 * (std::abs(trial[0]) + std::abs(trial[1]) + std::abs(trial[2]) + law.sigma_c);
@@ -163,8 +165,11 @@ inline Return principal_return(const Law& law, const Vec3& trial, Vec3& s, Mat3&
     return Return::kPlane;
   }
   const bool upper_first = s[0] < s[1];  // s1 = s2 broken first, else s2 = s3
-  if (edge_return(law, trial, upper_first, tol, s, P)) return Return::kEdge;
-  if (edge_return(law, trial, !upper_first, tol, s, P)) return Return::kEdge;
+  for (const bool upper : {upper_first, !upper_first})
+    if (edge_return(law, trial, upper, tol, s, P)) {
+      if (upper_edge) *upper_edge = upper;
+      return Return::kEdge;
+    }
   s = Vec3{law.apex, law.apex, law.apex};
   P = Mat3{};
   return Return::kApex;
@@ -204,11 +209,14 @@ inline Mat3 elastic_tangent(const Law& law) {
           Vec3{law.lambda, law.lambda + 2 * law.mu, 0}, Vec3{0, 0, 2 * law.mu}};
 }
 
-/// The stress update: from the converged stress `previous` and the strain
-/// increment d_eps = {xx, yy, xy} (tensor), the elastic trial
-/// previous + C d_eps returned onto the surface, with its tangent.
-inline Result update(const Law& law, const Stress4& previous, const Vec3& d_eps) {
-  using namespace detail;
+namespace detail {
+
+/// The stress update around a principal return `ret(trial, s, P)` (ordered
+/// principal stresses; law gives the elasticity): trial, principal frame,
+/// return, and back with the tangent.
+template <class PrincipalReturn>
+Result update_with(const Law& law, const Stress4& previous, const Vec3& d_eps,
+                   PrincipalReturn&& ret) {
   const double tr = d_eps[0] + d_eps[1];
   const Stress4 trial{previous[0] + law.lambda * tr + 2 * law.mu * d_eps[0],
                       previous[1] + law.lambda * tr + 2 * law.mu * d_eps[1],
@@ -220,7 +228,7 @@ inline Result update(const Law& law, const Stress4& previous, const Vec3& d_eps)
   Vec3 s;
   Mat3 P;
   Result out;
-  out.kind = principal_return(law, sorted, s, P);
+  out.kind = ret(sorted, s, P);
   if (out.kind == Return::kElastic) {
     out.stress = trial;
     out.tangent = elastic_tangent(law);
@@ -262,6 +270,17 @@ inline Result update(const Law& law, const Stress4& previous, const Vec3& d_eps)
     out.tangent[2][j] = (r[0] - r[1]) * c * sn + r_ab * (c * c - sn * sn);
   }
   return out;
+}
+
+}  // namespace detail
+
+/// The stress update: from the converged stress `previous` and the strain
+/// increment d_eps = {xx, yy, xy} (tensor), the elastic trial
+/// previous + C d_eps returned onto the surface, with its tangent.
+inline Result update(const Law& law, const Stress4& previous, const Vec3& d_eps) {
+  return detail::update_with(law, previous, d_eps, [&](const Vec3& t, Vec3& s, Mat3& P) {
+    return principal_return(law, t, s, P);
+  });
 }
 
 /// f of a plane-strain stress [Pa]: > 0 outside the surface.

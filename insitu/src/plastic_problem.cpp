@@ -17,8 +17,10 @@
 // F0 = int_rock sigma0 : eps(v): at lambda = 0 the rock then sits exactly at
 // sigma0, whatever the quadrature. With gravity the base of the box takes
 // the weight the released wall no longer carries (below). In the rock sigma(u)
-// is the Mohr-Coulomb stress update (mohr_coulomb.hpp) from the last
-// converged state; in an installed lining it is C_lining (eps - eps_install).
+// is the Mohr-Coulomb stress update (mohr_coulomb.hpp; with a residual
+// strength the softening one, mohr_coulomb_softening.hpp, whose gamma_p is
+// state like the stress) from the last converged state; in an installed
+// lining it is C_lining (eps - eps_install).
 //
 // Newton: K du = -R(u) with K the algorithmic tangent, not symmetric when
 // psi != phi, so every step is solved by UMFPACK. lambda grows in steps of
@@ -55,7 +57,7 @@
 #include <vector>
 
 #include "dealii_grid.hpp"
-#include "mohr_coulomb.hpp"
+#include "mohr_coulomb_softening.hpp"
 #include "rockfdem/error.hpp"
 #include "rockfdem/insitu/plastic.hpp"
 
@@ -107,7 +109,7 @@ class PlasticProblem {
   const mesh::Mesh& mesh_;
   const InsituSpec& spec_;
   const PlasticSpec& plastic_;
-  const mc::Law rock_;
+  const mc::SofteningLaw rock_;
   const mc::Law lining_;
   const bool has_lining_;
   bool lining_installed_ = false;
@@ -139,16 +141,28 @@ class PlasticProblem {
   // Per mesh triangle: the converged state and the present iterate.
   std::vector<mc::Stress4> sigma_n_, sigma_;
   std::vector<SymmetricTensor<2, 2>> eps_n_, eps_install_;
+  std::vector<double> gamma_n_, gamma_;  ///< gamma_p, converged and iterate
   std::vector<std::uint8_t> yielded_, flowing_;
 };
+
+mc::SofteningLaw rock_law(const ElasticMaterial& rock, const PlasticSpec& p) {
+  mc::Softening s;
+  s.peak = mc::Material{rock.E, rock.nu, p.rock.cohesion, p.rock.friction_deg, p.rock.dilation_deg};
+  s.residual = s.peak;
+  if (p.residual) {
+    s.residual.cohesion = p.residual->cohesion;
+    s.residual.friction_deg = p.residual->friction_deg;
+    s.gamma_res = p.residual->softening_strain;
+  }
+  return mc::SofteningLaw(s);
+}
 
 PlasticProblem::PlasticProblem(const mesh::Mesh& mesh, const InsituSpec& spec,
                                const PlasticSpec& plastic)
     : mesh_(mesh),
       spec_(spec),
       plastic_(plastic),
-      rock_(mc::Material{spec.materials.rock->E, spec.materials.rock->nu, plastic.rock.cohesion,
-                         plastic.rock.friction_deg, plastic.rock.dilation_deg}),
+      rock_(rock_law(*spec.materials.rock, plastic)),
       lining_(mc::Material{spec.materials.lining ? spec.materials.lining->E : 1.0,
                            spec.materials.lining ? spec.materials.lining->nu : 0.0, 0, 30, 0}),
       has_lining_(spec.lining.active && spec.materials.lining &&
@@ -162,6 +176,8 @@ PlasticProblem::PlasticProblem(const mesh::Mesh& mesh, const InsituSpec& spec,
       sigma_(mesh.n_triangles()),
       eps_n_(mesh.n_triangles()),
       eps_install_(mesh.n_triangles()),
+      gamma_n_(mesh.n_triangles(), 0.0),
+      gamma_(mesh.n_triangles(), 0.0),
       yielded_(mesh.n_triangles(), 0),
       flowing_(mesh.n_triangles(), 0) {
   // The in-situ stress at each centroid: the state every rock cell starts from.
@@ -412,7 +428,8 @@ double PlasticProblem::assemble(const double lambda) {
     const int t = map_.cell_to_triangle[cell->active_cell_index()];
     SymmetricTensor<4, 2> D;
     if (mesh_.zone[t] == mesh::kRock) {
-      const mc::Result r = mc::update(rock_, sigma_n_[t], components(eps_q[0] - eps_n_[t]));
+      const mc::Result r =
+          mc::update(rock_, sigma_n_[t], gamma_n_[t], components(eps_q[0] - eps_n_[t]), gamma_[t]);
       sigma_[t] = r.stress;
       flowing_[t] = r.kind != mc::Return::kElastic;
       D = as_tensor(r.tangent);
@@ -440,6 +457,10 @@ double PlasticProblem::assemble(const double lambda) {
   return system_rhs_.l2_norm() / force_scale_;
 }
 
+// With softening the tangent of an iterate far from the answer can be
+// singular (seen with gamma_res = 1e-2 at the 5th iterate of a 0.05 step):
+// that step failed, and is halved like one that does not converge. Without
+// softening the error stands, as it always did.
 bool PlasticProblem::newton(const double lambda, int& iterations) {
   Vector<double> du(dof_handler_.n_dofs());
   for (int it = 0; it <= plastic_.max_newton; ++it) {
@@ -447,7 +468,12 @@ bool PlasticProblem::newton(const double lambda, int& iterations) {
     if (!std::isfinite(r)) return false;
     if (r <= plastic_.tolerance) return true;
     if (it == plastic_.max_newton) break;
-    grid::solve_direct(system_matrix_, du, system_rhs_);
+    try {
+      grid::solve_direct(system_matrix_, du, system_rhs_);
+    } catch (const InputError&) {  // solve_direct's "singular"
+      if (!rock_.softens()) throw;
+      return false;
+    }
     constraints_.distribute(du);
     solution_ += du;
     ++iterations;
@@ -492,6 +518,7 @@ void PlasticProblem::commit() {
     (*fe_values_)[displacement].get_function_symmetric_gradients(solution_, eps_q);
     eps_n_[t] = eps_q[0];
     sigma_n_[t] = sigma_[t];
+    gamma_n_[t] = gamma_[t];
     yielded_[t] = yielded_[t] || flowing_[t];
   }
 }
@@ -502,6 +529,12 @@ void PlasticProblem::output(const double lambda, PlasticField& field) {
   field.stress.assign(mesh_.n_triangles(), Stress{});
   field.active.assign(mesh_.n_triangles(), 0);
   field.yielded = yielded_;
+  field.plastic_shear = gamma_n_;
+  if (rock_.softens())
+    field.n_residual =
+        static_cast<std::size_t>(std::count_if(gamma_n_.begin(), gamma_n_.end(), [&](double g) {
+          return g > 0 && g >= rock_.gamma_res();
+        }));
   field.ux.assign(mesh_.n_vertices(), 0.0);
   field.uy.assign(mesh_.n_vertices(), 0.0);
   for (const auto& cell : dof_handler_.active_cell_iterators()) {

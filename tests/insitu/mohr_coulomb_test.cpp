@@ -8,7 +8,10 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <random>
+
+#include "mohr_coulomb_softening.hpp"
 
 namespace rockfdem::insitu::mc {
 namespace {
@@ -128,6 +131,29 @@ TEST(MohrCoulombReturn, result_rotates_with_the_frame) {
   EXPECT_NEAR(rb.stress[2], x[2], 1e-6);
 }
 
+/// Central differences of a stress update `at(d_eps)` around d: the 3x3
+/// d(s_xx, s_yy, s_xy)/d(e_xx, e_yy, e_xy); `same` is false when a sample
+/// left the region `kind` (or `admissible(result)` failed): a kink between.
+template <class Update, class Admissible>
+Mat3 central_differences(Update&& at, const Vec3& d, Return kind, Admissible&& admissible,
+                         bool& same) {
+  const double h = 1e-9;
+  const int idx[3] = {0, 1, 3};
+  Mat3 fd{};
+  same = true;
+  for (int j = 0; j < 3; ++j) {
+    Vec3 dp = d, dm = d;
+    dp[j] += h;
+    dm[j] -= h;
+    const Result rp = at(dp);
+    const bool ok = admissible();
+    const Result rm = at(dm);
+    same = same && ok && admissible() && rp.kind == kind && rm.kind == kind;
+    for (int i = 0; i < 3; ++i) fd[i][j] = (rp.stress[idx[i]] - rm.stress[idx[i]]) / (2 * h);
+  }
+  return fd;
+}
+
 TEST(MohrCoulombReturn, tangent_matches_central_differences_in_every_region) {
   for (const double psi : {0.0, 20.0}) {
     const Law law(rock(psi));
@@ -138,18 +164,9 @@ TEST(MohrCoulombReturn, tangent_matches_central_differences_in_every_region) {
       const Stress4 prev{u(rng), u(rng), u(rng), 0.3 * u(rng)};
       const Vec3 d{1e-4 * (u(rng) / kMPa) / 60, 1e-4 * (u(rng) / kMPa) / 60, 2e-5};
       const Result r = update(law, prev, d);
-      const double h = 1e-9;
       bool same_region = true;
-      Mat3 fd{};
-      for (int j = 0; j < 3; ++j) {
-        Vec3 dp = d, dm = d;
-        dp[j] += h;
-        dm[j] -= h;
-        const Result rp = update(law, prev, dp), rm = update(law, prev, dm);
-        same_region = same_region && rp.kind == r.kind && rm.kind == r.kind;
-        const int idx[3] = {0, 1, 3};
-        for (int i = 0; i < 3; ++i) fd[i][j] = (rp.stress[idx[i]] - rm.stress[idx[i]]) / (2 * h);
-      }
+      const Mat3 fd = central_differences([&](const Vec3& e) { return update(law, prev, e); }, d,
+                                          r.kind, [] { return true; }, same_region);
       if (!same_region) continue;  // a kink of the map between the samples
       ++checked[static_cast<int>(r.kind)];
       for (int i = 0; i < 3; ++i)
@@ -158,6 +175,129 @@ TEST(MohrCoulombReturn, tangent_matches_central_differences_in_every_region) {
               << "psi " << psi << " kind " << int(r.kind) << " (" << i << "," << j << ")";
     }
     for (int k = 0; k < 3; ++k) EXPECT_GT(checked[k], 20) << "region " << k;
+  }
+}
+
+// ---------------------------------------------------------------------------
+// The strain-softening law (mohr_coulomb_softening.hpp).
+// ---------------------------------------------------------------------------
+
+Softening softening(double psi, double gamma_res) {
+  Softening s;
+  s.peak = rock(psi);
+  s.residual = s.peak;
+  s.residual.cohesion = 0.5 * kMPa;
+  s.residual.friction_deg = 22;
+  s.gamma_res = gamma_res;
+  return s;
+}
+
+TEST(SofteningReturn, residual_equal_to_the_peak_is_the_perfectly_plastic_update_bit_for_bit) {
+  Softening s = softening(10, 0.01);
+  s.residual = s.peak;
+  const SofteningLaw sl(s);
+  const Law law(rock(10));
+  EXPECT_FALSE(sl.softens());
+  std::mt19937 rng(3);
+  std::uniform_real_distribution<double> u(-60 * kMPa, 20 * kMPa);
+  for (int n = 0; n < 5000; ++n) {
+    const Stress4 prev{u(rng), u(rng), u(rng), 0.3 * u(rng)};
+    const Vec3 d{1e-4 * u(rng) / kMPa / 60, 1e-4 * u(rng) / kMPa / 60, 2e-5};
+    double gamma = 0;
+    const Result a = update(sl, prev, 0.003, d, gamma), b = update(law, prev, d);
+    ASSERT_EQ(a.kind, b.kind);
+    for (int i = 0; i < 4; ++i) ASSERT_EQ(a.stress[i], b.stress[i]);
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j) ASSERT_EQ(a.tangent[i][j], b.tangent[i][j]);
+    EXPECT_GE(gamma, 0.003);
+    if (a.kind == Return::kElastic) {
+      EXPECT_EQ(gamma, 0.003);
+    }
+  }
+}
+
+/// The returned stress lies on the surface of the law at the new gamma_p,
+/// gamma_p grew by the plastic shear strain of the return, and the plastic
+/// strain follows the flow rule (Kuhn-Tucker) of that law.
+TEST(SofteningReturn, stress_on_the_surface_of_the_law_at_the_updated_gamma) {
+  for (const double gamma_res : {0.0, 1e-4, 0.02}) {
+    const SofteningLaw sl(softening(15, gamma_res));
+    std::mt19937 rng(5);
+    std::uniform_real_distribution<double> u(-60 * kMPa, 20 * kMPa), g(0, 0.03);
+    int softening_interval = 0, residual = 0;
+    for (int n = 0; n < 20000; ++n) {
+      const Stress4 trial{u(rng), u(rng), u(rng), 0.3 * u(rng)};
+      const double gamma_n = n % 3 == 0 ? 0.0 : g(rng);
+      double gamma = -1;
+      const Result r = update(sl, trial, gamma_n, {0, 0, 0}, gamma);
+      const Law at_n = sl.at(gamma_n), at = sl.at(gamma);
+      const Vec3 ts = principal(trial), s = principal(r.stress);
+      const double scale = std::abs(ts[0]) + std::abs(ts[1]) + std::abs(ts[2]) + at_n.sigma_c;
+      if (r.kind == Return::kElastic) {
+        EXPECT_LE(at_n.yield(ts), 0);
+        EXPECT_EQ(gamma, gamma_n);
+        continue;
+      }
+      EXPECT_GT(at_n.yield(ts), 0);
+      EXPECT_NEAR(at.yield(s) / scale, 0, 1e-10) << "gamma_res " << gamma_res;
+      const Vec3 e = at.D_inv(Vec3{ts[0] - s[0], ts[1] - s[1], ts[2] - s[2]});
+      EXPECT_NEAR(gamma - gamma_n, e[0] - e[2], 1e-12 + 1e-9 * (gamma - gamma_n));
+      expect_flow_rule(at, ts, s, r.kind);
+      if (gamma_res > 0 && gamma > 0 && gamma < gamma_res) ++softening_interval;
+      if (gamma >= gamma_res) ++residual;
+    }
+    // Both branches are exercised (the interval only where gamma_res exceeds
+    // most returns' plastic strain).
+    if (gamma_res >= 0.02) {
+      EXPECT_GT(softening_interval, 100);
+    }
+    EXPECT_GT(residual, 100) << gamma_res;
+  }
+}
+
+TEST(SofteningReturn, brittle_law_drops_to_the_residual_at_first_yield) {
+  const SofteningLaw sl(softening(0, 0.0));
+  // Just beyond the peak in uniaxial-like compression: the residual surface.
+  const Law& peak = sl.peak();
+  const double s3 = -(peak.sigma_c + 0.01 * kMPa);
+  double gamma = 0;
+  const Result r = update(sl, {0, -5 * kMPa, s3, 0}, 0.0, {0, 0, 0}, gamma);
+  ASSERT_EQ(r.kind, Return::kPlane);
+  EXPECT_GT(gamma, 0);
+  EXPECT_NEAR(sl.residual().yield(principal(r.stress)) / kMPa, 0, 1e-9);
+  EXPECT_GT(peak.yield(principal({0, -5 * kMPa, s3, 0})), 0);
+}
+
+TEST(SofteningReturn, tangent_matches_central_differences_while_softening) {
+  for (const double psi : {0.0, 15.0}) {
+    const SofteningLaw sl(softening(psi, 0.01));
+    std::mt19937 rng(13);
+    std::uniform_real_distribution<double> u(-60 * kMPa, 20 * kMPa), g(0, 0.01);
+    int checked[4] = {0, 0, 0, 0};
+    for (int n = 0; n < 6000; ++n) {
+      const Stress4 prev{u(rng), u(rng), u(rng), 0.3 * u(rng)};
+      const double gamma_n = n % 2 ? 0.0 : g(rng);
+      const Vec3 d{1e-4 * (u(rng) / kMPa) / 60, 1e-4 * (u(rng) / kMPa) / 60, 2e-5};
+      double gamma = 0;
+      const Result r = update(sl, prev, gamma_n, d, gamma);
+      if (!(gamma > 0 && gamma < 0.01)) continue;  // the interval where it softens
+      bool same = true;
+      double g_sample = 0;  // each sample must stay in the softening interval
+      const Mat3 fd =
+          central_differences([&](const Vec3& e) { return update(sl, prev, gamma_n, e, g_sample); },
+                              d, r.kind, [&] { return g_sample < 0.01; }, same);
+      if (!same) continue;
+      ++checked[static_cast<int>(r.kind)];
+      const double E = sl.peak().lambda + 2 * sl.peak().mu;
+      for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j)
+          EXPECT_NEAR(r.tangent[i][j], fd[i][j], 2e-5 * E)
+              << "psi " << psi << " kind " << int(r.kind) << " (" << i << "," << j << ")";
+    }
+    std::printf("  psi %.0f: tangent checked at %d plane, %d edge, %d apex points\n", psi,
+                checked[1], checked[2], checked[3]);
+    EXPECT_GT(checked[1], 20);
+    EXPECT_GT(checked[2], 20);
   }
 }
 

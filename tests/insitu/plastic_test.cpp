@@ -17,37 +17,12 @@
 #include <cstdio>
 
 #include "fixtures.hpp"
+#include "plastic_measures.hpp"
 #include "rockfdem/insitu/constants.hpp"
 #include "rockfdem/mesh/build.hpp"
 
 namespace rockfdem::insitu::test {
 namespace {
-
-/// Mean over rays of the yielded-to-elastic transition radius [m].
-double plastic_radius_along_rays(const mesh::Mesh& m, const PlasticField& f, int n_rays) {
-  const double window = kPi / n_rays;
-  double sum = 0;
-  for (int j = 0; j < n_rays; ++j) {
-    const double theta = 2 * kPi * j / n_rays;
-    double r_yield = 0;
-    std::vector<std::pair<double, bool>> cells;  // centroid radius, yielded
-    for (std::size_t t = 0; t < m.n_triangles(); ++t) {
-      if (!f.active[t]) continue;
-      const auto& tri = m.triangles[t];
-      const double x = (m.x[tri[0]] + m.x[tri[1]] + m.x[tri[2]]) / 3;
-      const double y = (m.y[tri[0]] + m.y[tri[1]] + m.y[tri[2]]) / 3;
-      const double d = std::remainder(std::atan2(y, x) - theta, 2 * kPi);
-      if (std::abs(d) > window) continue;
-      cells.emplace_back(std::hypot(x, y), f.yielded[t] != 0);
-      if (f.yielded[t]) r_yield = std::max(r_yield, std::hypot(x, y));
-    }
-    double r_next = 1e300;
-    for (const auto& [r, yielded] : cells)
-      if (!yielded && r > r_yield) r_next = std::min(r_next, r);
-    sum += 0.5 * (r_yield + r_next);
-  }
-  return sum / n_rays;
-}
 
 struct RingCase {
   double dilation_deg;
@@ -78,7 +53,7 @@ TEST_P(PlasticRing, plastic_radius_and_wall_displacement_within_3pct_of_closed_f
   const auto fields = solve_mohr_coulomb(m, spec, plastic);
   ASSERT_EQ(fields.size(), 2u);
 
-  PlasticRingCase c{a, p0, 0, 3e9, 0.25, plastic.rock};
+  PlasticRingCase c{a, p0, 0, 3e9, 0.25, plastic.rock, std::nullopt};
   for (const PlasticField& f : fields) {
     c.pi = (1 - f.lambda) * p0;
     const PlasticRingSolution exact = plastic_ring(c);
@@ -167,7 +142,8 @@ INSTANTIATE_TEST_SUITE_P(Loading, ElasticLimit, ::testing::Bool(),
                          [](const auto& info) { return info.param ? "gravity" : "uniform"; });
 
 TEST(PlasticRingClosedForm, reduces_to_lame_at_the_critical_pressure) {
-  PlasticRingCase c{2.0, 10 * kMPa, 0, 3e9, 0.25, MohrCoulombStrength{1 * kMPa, 30, 10}};
+  PlasticRingCase c{2.0,         10 * kMPa, 0, 3e9, 0.25, MohrCoulombStrength{1 * kMPa, 30, 10},
+                    std::nullopt};
   c.pi = plastic_ring(c).critical_pressure;
   const double G = c.E / (2 * (1 + c.nu));
   const double lame = (c.p0 - c.pi) * c.a / (2 * G);

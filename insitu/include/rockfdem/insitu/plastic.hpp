@@ -1,8 +1,9 @@
 // The Mohr-Coulomb elasto-plastic continuum: the same mesh and in-situ state
 // as the elastic stage (rockfdem/insitu/insitu.hpp), the rock perfectly
-// plastic with non-associated flow, the excavation made by releasing the
-// in-situ traction on the opening in increments (the convergence-confinement
-// method's fictitious support pressure (1 - lambda) sigma0 . n).
+// plastic (or strain-softening to a residual strength) with non-associated
+// flow, the excavation made by releasing the in-situ traction on the
+// opening in increments (the convergence-confinement method's fictitious
+// support pressure (1 - lambda) sigma0 . n).
 //
 // Conventions as in insitu.hpp: input strengths positive, output stresses
 // TENSION POSITIVE [Pa], displacements caused by the excavation [m], the
@@ -10,6 +11,7 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -24,8 +26,19 @@ struct MohrCoulombStrength {
   double dilation_deg = 0;   ///< psi [deg], in [0, phi]: 0 = no volume change in flow
 };
 
+/// Strain softening of the rock: c and phi fall linearly from the peak
+/// (MohrCoulombStrength) to these values as the equivalent plastic shear
+/// strain gamma_p = eps_p1 - eps_p3 grows from 0 to softening_strain; psi is
+/// kept. Residual equal to the peak is perfect plasticity, bit for bit.
+struct ResidualStrength {
+  double cohesion = 0;          ///< c_r [Pa], in [0, peak cohesion]
+  double friction_deg = 30;     ///< phi_r [deg], in [dilation, peak friction], > 0
+  double softening_strain = 0;  ///< gamma_p at the residual [-], >= 0 (0: elastic-brittle)
+};
+
 struct PlasticSpec {
   MohrCoulombStrength rock;
+  std::optional<ResidualStrength> residual;  ///< none: perfectly plastic
   /// Release fractions lambda at which a field is reported, strictly
   /// increasing in (0, 1]; 1 = the open, unsupported opening. The lining
   /// (InsituSpec::lining, when active) goes in, stress-free, at
@@ -44,8 +57,10 @@ struct PlasticField {
   std::vector<Stress> stress;         ///< per mesh triangle (0 where not in the system)
   std::vector<std::uint8_t> active;   ///< per mesh triangle: 1 if in the system
   std::vector<std::uint8_t> yielded;  ///< per mesh triangle: 1 if it ever flowed plastically
+  std::vector<double> plastic_shear;  ///< per mesh triangle: gamma_p [-] (0 outside the rock)
   std::vector<double> ux, uy;         ///< per mesh vertex [m]
   std::size_t n_yielded = 0;          ///< triangles with yielded = 1
+  std::size_t n_residual = 0;         ///< triangles at the residual strength (softening only)
   int steps = 0;                      ///< lambda steps since the previous field
   int newton_iterations = 0;          ///< summed over those steps
   double unbalanced_ratio = 0;        ///< ||residual|| / ||in-situ nodal forces|| at the end
@@ -71,19 +86,26 @@ void validate(const PlasticSpec& plastic);
 struct PlasticRingCase {
   double a = 0, p0 = 0, pi = 0;  ///< [m], [Pa], [Pa]
   double E = 0, nu = 0;          ///< rock [Pa], [-]
-  MohrCoulombStrength strength;
+  MohrCoulombStrength strength;  ///< peak (and psi throughout)
+  /// Elastic-brittle-plastic (Brown et al. 1983): the plastic zone at this
+  /// c, phi (softening_strain is not used: the drop is immediate).
+  std::optional<ResidualStrength> residual;
 };
 
 struct PlasticRingSolution {
   double k = 0;                  ///< (1 + sin phi) / (1 - sin phi)
   double sigma_cm = 0;           ///< 2 c cos phi / (1 - sin phi) [Pa]
+  double k_r = 0, sigma_cr = 0;  ///< the same of the plastic zone (residual or peak)
   double critical_pressure = 0;  ///< pi below which the wall yields [Pa]
   double plastic_radius = 0;     ///< R_pl [m] (= a when pi >= critical_pressure)
   double wall_displacement = 0;  ///< inward radial displacement of the wall [m]
 };
 
-/// Salencon (1969) for R_pl and the stresses; the wall displacement from the
-/// flow rule, see docs/insitu.md.
+/// Salencon (1969), with a residual Brown et al. (1983), for R_pl and the
+/// stresses; the wall displacement from the flow rule, see docs/insitu.md.
 PlasticRingSolution plastic_ring(const PlasticRingCase& c);
+
+/// The radial stress at radius r >= a (compression positive) [Pa].
+double plastic_ring_radial_stress(const PlasticRingCase& c, double r);
 
 }  // namespace rockfdem::insitu
