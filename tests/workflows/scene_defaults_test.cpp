@@ -209,6 +209,9 @@ std::map<std::string, Text> text_fields() {
     return s.insitu.kirsch_boundary ? "kirsch" : "far_field";
   };
   f["insitu.rollers"] = [](const Scene& s) { return yes(s.insitu.rollers); };
+  f["insitu.continuum_post_peak"] = [](const Scene& s) {
+    return yes(s.insitu.continuum_post_peak);
+  };
   f["insitu.handoff"] = [](const Scene& s) {
     return s.insitu.handoff_first_crack ? "first_crack" : "last";
   };

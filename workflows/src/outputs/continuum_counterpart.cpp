@@ -355,6 +355,13 @@ void compare_with_continuum_counterpart(const Scene& scene, const RunContext& ct
         keeping_threads(ctx, [&] { return solve_continuum_counterpart(scene, m); });
     summary.continuum_comparison = compare_with_counterpart(scene, m, e, fdem_handoff, c, monitors,
                                                             ctx.output_dir, summary, ctx.quiet);
+    if (scene.insitu.continuum_post_peak) {
+      const auto start = std::chrono::steady_clock::now();
+      summary.continuum_post_peak =
+          keeping_threads(ctx, [&] { return solve_post_peak_counterpart(scene, m); });
+      summary.continuum_post_peak->seconds =
+          std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    }
   } catch (const InputError& err) {
     skip(err);
   } catch (const NumericalError& err) {

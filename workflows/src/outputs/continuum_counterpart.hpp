@@ -39,22 +39,6 @@ struct ContinuumStates {
 /// Solves the scene's sequence as a continuum (see above).
 ContinuumStates solve_continuum_counterpart(const Scene& scene, const mesh::Mesh& m);
 
-/// The Mohr-Coulomb counterpart with the FDEM's post-peak strength: the
-/// rock's c and phi until it yields, then c = 0 and phi =
-/// residual_friction_angle at once (elastic-brittle-plastic: a broken FDEM
-/// contact keeps friction only). Without cohesion an unsupported opening
-/// has no equilibrium in the closed form (Brown et al. 1983: R_pl grows as
-/// pi^(-1/(k_r - 1)) as the support pressure pi -> 0); here "none" is a
-/// release step that does not converge or a plastic zone that reaches the
-/// model's outer boundary.
-struct PostPeakCounterpart {
-  bool equilibrium = false;
-  double alpha = 1;           ///< the end of the sequence (converged) [-]
-  std::size_t n_yielded = 0;  ///< triangles that flowed (converged)
-  double residual_friction_deg = 0;
-  std::string reason;  ///< why there is no equilibrium
-};
-
 /// Solves the scene's sequence with the post-peak strength (see above).
 /// Throws InputError when the scene's strengths cannot be posed that way
 /// (residual friction above the peak's or below the dilation angle). Not

@@ -276,6 +276,19 @@ void broken_zone(std::ostream& md, const fdem::BrokenCounts& b,
     md << "| " << name << " | " << value_text(r.depth_m) << " |\n";
 }
 
+// The post-peak continuum's verdict (insitu.continuum_post_peak).
+void post_peak(std::ostream& md, const std::optional<PostPeakCounterpart>& p) {
+  if (!p) return;
+  md << "\n## Does the ground stand on its own post-peak strength?\n\nThe Mohr-Coulomb "
+        "continuum, dropping to c = 0 and phi = "
+     << sig(p->residual_friction_deg)
+     << " deg where it yields (a broken crack element keeps friction only), "
+     << (p->equilibrium
+             ? "finds an equilibrium: " + value_text(long(p->n_yielded)) + " triangles yielded"
+             : "finds no equilibrium: " + p->reason)
+     << " (solved in " << sig(p->seconds) << " s).\n";
+}
+
 void pictures(std::ostream& md, const ReportExtras& x) {
   if (x.pictures.empty()) {
     md << "\n## Pictures\n\nNone rendered (see `skipped` in summary.json).\n";
@@ -301,6 +314,7 @@ std::string report_markdown(const Scene& scene, const RunRecord& record,
   bolts(md, record.bolts);
   lining(md, record.lining);
   broken_zone(md, record.state.broken, record.broken_zone);
+  post_peak(md, record.continuum_post_peak);
   pictures(md, extras);
   return md.str();
 }

@@ -51,4 +51,22 @@ struct CounterpartComparison {
   std::optional<CounterpartYield> yield;  ///< Mohr-Coulomb only
 };
 
+/// The Mohr-Coulomb counterpart with the FDEM's post-peak strength: the
+/// rock's c and phi until it yields, then c = 0 and phi =
+/// residual_friction_angle at once (elastic-brittle-plastic: a broken FDEM
+/// contact keeps friction only). Without cohesion an unsupported opening
+/// has no equilibrium in the closed form (Brown et al. 1983: R_pl grows as
+/// pi^(-1/(k_r - 1)) as the support pressure pi -> 0); here "none" is a
+/// release step that does not converge or a plastic zone that reaches the
+/// model's outer boundary.
+/// ("continuum_post_peak", insitu.continuum_post_peak = true.)
+struct PostPeakCounterpart {
+  bool equilibrium = false;
+  double alpha = 1;           ///< the end of the sequence (converged) [-]
+  std::size_t n_yielded = 0;  ///< triangles that flowed (converged)
+  double residual_friction_deg = 0;
+  std::string reason;  ///< why there is no equilibrium
+  double seconds = 0;  ///< wall time of the solve
+};
+
 }  // namespace rockfdem::workflows

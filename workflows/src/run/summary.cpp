@@ -532,6 +532,15 @@ nlohmann::json RunRecord::to_json() const {
   add_support(j, *this);
   if (comparison) j["comparison"] = comparison_json(*comparison);
   if (continuum_comparison) j["continuum_comparison"] = counterpart_json(*continuum_comparison);
+  if (continuum_post_peak) {
+    const PostPeakCounterpart& p = *continuum_post_peak;
+    j["continuum_post_peak"] = {{"equilibrium", p.equilibrium},
+                                {"alpha_reached", p.alpha},
+                                {"yielded_triangles", p.n_yielded},
+                                {"residual_friction_deg", p.residual_friction_deg},
+                                {"reason", p.reason},
+                                {"solve_seconds", p.seconds}};
+  }
   if (!status.empty()) j["status"] = status;
   if (status_reason) j["status_reason"] = *status_reason;
   if (failure) j["failure"] = *failure;

@@ -81,6 +81,7 @@ class RunRecord {
   // construction sequence's continuum counterpart (none: not solved).
   std::optional<ContinuumComparison> comparison;
   std::optional<CounterpartComparison> continuum_comparison;
+  std::optional<PostPeakCounterpart> continuum_post_peak;
 
   /// Notes in `skipped` the outputs the scene turned off: `paraview_files`
   /// (what output.vtk = false leaves out) and, where the command renders

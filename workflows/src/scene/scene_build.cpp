@@ -387,6 +387,10 @@ void read_insitu(const Reader& r, Scene& s) {
   in.tolerance = r.number("insitu.tolerance");
   in.continuum = r.text("insitu.continuum");
   in.dilation_angle = r.number("insitu.dilation_angle");
+  in.continuum_post_peak = r.boolean("insitu.continuum_post_peak");
+  if (in.continuum_post_peak && !(s.materials.at(mesh::kRock).cohesion > 0))
+    r.fail("insitu.continuum_post_peak",
+           "the post-peak continuum needs materials.rock.cohesion > 0 (its peak strength)");
   in.alpha = r.numbers("insitu.alpha");
   in.handoff_first_crack = r.text("insitu.handoff") == "first_crack";
   if (in.handoff_first_crack && !needs_fracture(s.mesh))

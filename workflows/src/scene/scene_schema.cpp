@@ -359,6 +359,14 @@ void add_insitu(std::vector<KeySpec>& s) {
                      "removed (summary continuum_comparison): the elastic stage's sequence, or "
                      "the Mohr-Coulomb elasto-plastic rock (materials.rock cohesion and "
                      "friction_angle) with the in-situ wall traction released in steps."));
+  s.push_back(boolean(
+      "insitu.continuum_post_peak", "false",
+      "Also solve the Mohr-Coulomb continuum with the FDEM's post-peak strength once the core "
+      "is removed: the rock's c and phi until it yields, then c = 0 and phi = "
+      "residual_friction_angle (elastic-brittle-plastic, as a broken crack element keeps "
+      "friction only). Its verdict, summary.json continuum_post_peak (equilibrium or not, and "
+      "why), judges whether the ground itself can stand on the run's support. Costly where it "
+      "cannot: failing Newton steps (about 40 s on a 3 m tunnel at h = 0.3 m)."));
   s.push_back(number("insitu.dilation_angle", "deg", "0", 0, false, 90, true,
                      "Mohr-Coulomb continuum: the rock's dilation angle psi (0: no volume "
                      "change in plastic flow; at most materials.rock.friction_angle)."));

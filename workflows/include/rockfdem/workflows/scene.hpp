@@ -57,6 +57,9 @@ struct InsituSettings {
   /// The continuum counterpart of a tunnel run: "elastic" or "mohr_coulomb".
   std::string continuum;
   double dilation_angle{};  ///< deg, Mohr-Coulomb continuum
+  /// Also solve the Mohr-Coulomb continuum with the FDEM's post-peak
+  /// strength (c 0, residual friction): does the ground itself stand?
+  bool continuum_post_peak{};
 };
 
 struct EngineSettings {
