@@ -32,6 +32,9 @@ struct StageChanges {
   std::optional<long> bolt_triangles;  ///< their steel triangles made active
   std::optional<long> steel_cracks;    ///< their steel crack elements
   std::optional<long> grout_cracks;    ///< their grout-bond crack elements
+  /// bolts.install_stress = "current": crack points whose traction reached
+  /// the steel's or grout's strength and start at it
+  std::optional<long> clipped_points;
   // grout
   std::optional<bool> triggered;              ///< trigger_broken (or the stage's time) was reached
   std::optional<long> broken_before;          ///< broken crack elements when the stepping ended

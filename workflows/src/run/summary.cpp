@@ -49,6 +49,7 @@ constexpr ChangeCount kChangeCounts[] = {{"interface_cracks", &StageChanges::int
                                          {"bolt_triangles", &StageChanges::bolt_triangles},
                                          {"steel_cracks", &StageChanges::steel_cracks},
                                          {"grout_cracks", &StageChanges::grout_cracks},
+                                         {"clipped_points", &StageChanges::clipped_points},
                                          {"broken_before", &StageChanges::broken_before},
                                          {"rejoined", &StageChanges::rejoined},
                                          {"broken_after", &StageChanges::broken_after}};

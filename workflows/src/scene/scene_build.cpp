@@ -453,6 +453,7 @@ void read_bolts(const Reader& r, Scene& s) {
   BoltSettings& b = s.bolts;
   b.bolt = read_steel(r, "bolts");
   b.cable = read_steel(r, "cables");
+  b.keep_current_stress = r.text("bolts.install_stress") == "current";
   s.grout = read_bond(r, "grout");
   s.lining_interface = read_bond(r, "lining_interface");
   std::vector<BoltPlacement> found;

@@ -420,6 +420,15 @@ void add_support(std::vector<KeySpec>& s) {
                          "Steel shear strength (brittle in shear)."));
     s.push_back(
         positive(p + "shear_fracture_energy", "J/m^2", "1e4", "Steel shear fracture energy GfII."));
+    if (p == "bolts.")
+      s.push_back(choice(
+          "bolts.install_stress", "free", {"free", "current"},
+          "Stress of the bolt and cable strips when the `bolts` stage installs them: `free`, "
+          "stress-free in their installed shape (the rock they replace unloads into its "
+          "surroundings); `current`, the stress the rock there carries (strain counted from "
+          "the installed shape), their steel and grout crack elements carrying the tractions "
+          "its cracks carried: the installation changes no stress and no force. Bolt "
+          "outputs count from the installation either way."));
   }
   // [grout] (the bolt-rock bond and what re-joins broken cracks) and
   // [lining_interface] (the shotcrete-rock bond: adhesion 0.1-1.3 MPa measured

@@ -116,6 +116,9 @@ struct BoltSettings {
   SteelSettings bolt, cable;
   std::vector<std::array<double, 4>> segments;  ///< (x0, y0, x1, y1) per bolt, fans expanded
   std::vector<std::uint8_t> is_cable;           ///< per segment
+  /// bolts.install_stress = "current": the strips keep the rock's stress
+  /// and their cracks its tractions at installation (else stress-free).
+  bool keep_current_stress{};
 };
 
 /// A bond modelled by crack elements: the grout (bolt-rock bond, and what
