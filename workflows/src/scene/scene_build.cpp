@@ -620,6 +620,12 @@ StageSpec read_stage(const Reader& r, const std::string& p, const std::string& k
     st.*field = r.number(p + key);
   st.max_steps = long(r.number(p + ".max_steps"));
   st.trigger_broken = long(r.number(p + ".trigger_broken"));
+  for (const char* key :
+       {"trigger_broken", "trigger_broken_since_support", "trigger_broken_growth", "trigger_steps"})
+    if (r.has(p + "." + key)) {
+      if (st.triggers.empty()) st.trigger_value = r.number(p + "." + key);
+      st.triggers.push_back(key);
+    }
   st.every_steps = r.integer(p + ".every_steps");
   st.hold = r.integer(p + ".hold");
   st.stop_when_unstable = r.boolean(p + ".stop_when_unstable");
