@@ -93,10 +93,18 @@ BoltInstallReport install_bolt(Engine& engine, BoltPlan& plan, int b, BoltStart 
     }
     ++report.triangles;
   }
-  // Re-joined after the triangles so that their new zero is the installed state.
+  // Re-joined after the triangles so that their new zero is the installed
+  // state; keeping the stress, each also keeps the traction it carries, so
+  // that no node feels the installation.
   const BoltCracks cracks = bolt_cracks(engine, plan, b);
-  for (int c : cracks.steel) engine.rejoin_crack(c, plan.steel_material[b]);
-  for (int c : cracks.grout) engine.rejoin_crack(c, plan.grout_material[b]);
+  const auto rejoin = [&](int c, int material) {
+    if (start == BoltStart::kKeepCurrentStress)
+      report.clipped_points += engine.rejoin_crack_keeping_traction(c, material);
+    else
+      engine.rejoin_crack(c, material);
+  };
+  for (int c : cracks.steel) rejoin(c, plan.steel_material[b]);
+  for (int c : cracks.grout) rejoin(c, plan.grout_material[b]);
   report.steel_cracks = long(cracks.steel.size());
   report.grout_cracks = long(cracks.grout.size());
   plan.installed[b] = 1;
@@ -111,6 +119,7 @@ BoltInstallReport install_bolts(Engine& engine, BoltPlan& plan, BoltStart start)
     total.triangles += r.triangles;
     total.steel_cracks += r.steel_cracks;
     total.grout_cracks += r.grout_cracks;
+    total.clipped_points += r.clipped_points;
   }
   return total;
 }

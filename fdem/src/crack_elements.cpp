@@ -195,6 +195,29 @@ double crack_element_energy(const EngineData& d, std::size_t c) {
   return crack_element_energy(d, c, Placement{d.nodes.pos.data(), d.nodes.vel.data(), 0.0});
 }
 
+void crack_point_stresses(const EngineData& d, std::size_t c, double out[6]) {
+  for (int i = 0; i < 6; ++i) out[i] = 0.0;
+  if (!d.cracks.active[c] || d.cracks.state[c] == std::uint8_t(CrackState::kBroken)) return;
+  double os[6];
+  const double h = crack_point_openings(d, c, os);
+  if (!d.cracks.offset.empty())
+    for (int i = 0; i < 6; ++i) os[i] -= d.cracks.offset[6 * c + i];
+  const CrackConstants& k = d.crack_laws[d.cracks.material[c]];
+  const StrengthTerms<double> st = d.cracks.strength.empty()
+                                       ? material_terms(k)
+                                       : scaled_strength_terms(k, d.cracks.strength[c]);
+  double damage[3] = {d.cracks.damage[3 * c], d.cracks.damage[3 * c + 1],
+                      d.cracks.damage[3 * c + 2]};
+  with_crack_law(k.law, [&](auto law) {
+    for (int i = 0; i < 3; ++i) {
+      const CrackPoint p =
+          decltype(law)::point(k, st, os[2 * i], os[2 * i + 1], h, 1.0 / h, damage[i]);
+      out[2 * i] = p.sigma;
+      out[2 * i + 1] = p.tau;
+    }
+  });
+}
+
 FailureMode classify_failure(double sum_a2, double sum_b2) {
   const double total = sum_a2 + sum_b2;
   if (!(total > 0.0)) return FailureMode::kMixed;

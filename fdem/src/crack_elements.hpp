@@ -28,6 +28,11 @@ double crack_end_openings(const EngineData& d, std::size_t c, const Placement& a
 double crack_point_openings(const EngineData& d, std::size_t c, double out[6]);
 double crack_point_openings(const EngineData& d, std::size_t c, const Placement& at, double out[6]);
 
+/// Normal and shear stress (sigma, tau) at end 0, the midpoint and end 1
+/// of element c that its law gives at the current positions and damage
+/// (the damage history is not raised); zeros for a broken or inactive element.
+void crack_point_stresses(const EngineData& d, std::size_t c, double out[6]);
+
 /// Failure mode from the summed squared excursions at breakage: mode I when
 /// opening carries at least 90% of a^2 + b^2, mode II when slip does, else
 /// mixed.

@@ -100,23 +100,34 @@ void balance_vertex(const EngineData& d, int v, const int* ends, int n_ends,
     for (int x = 0; x < 2; ++x) T[2 * ends[j] + x] = t(j, x);
 }
 
+/// Offsets of element c (length h) such that its three points carry the
+/// normal and shear stresses st (3 x (sigma, tau)) at the openings and
+/// slips `cur`. Returns the clipped point count.
+long offsets_carrying(EngineData& d, std::size_t c, double h, const double st[6],
+                      const double cur[6]) {
+  const CrackConstants k = crack_constants(d, c);
+  long clipped = 0;
+  for (int i = 0; i < 3; ++i) {
+    double o, s;
+    clipped += pre_peak_displacement(k, st[2 * i], st[2 * i + 1], h, o, s);
+    d.cracks.offset[6 * c + 2 * i] = cur[2 * i] - o;
+    d.cracks.offset[6 * c + 2 * i + 1] = cur[2 * i + 1] - s;
+  }
+  return clipped;
+}
+
 /// Offsets of element c such that its three points carry tractions tp
 /// (3 x (tx, ty)) at the openings and slips `cur`. Returns the clipped
 /// point count.
 long set_point_offsets(EngineData& d, std::size_t c, const double tp[6], const double cur[6]) {
   double e[2], n[2];
   const double h = crack_frame(d, c, e, n);
-  const CrackConstants k = crack_constants(d, c);
-  long clipped = 0;
+  double st[6];
   for (int i = 0; i < 3; ++i) {
-    const double sigma = tp[2 * i] * n[0] + tp[2 * i + 1] * n[1];
-    const double tau = tp[2 * i] * e[0] + tp[2 * i + 1] * e[1];
-    double o, s;
-    clipped += pre_peak_displacement(k, sigma, tau, h, o, s);
-    d.cracks.offset[6 * c + 2 * i] = cur[2 * i] - o;
-    d.cracks.offset[6 * c + 2 * i + 1] = cur[2 * i + 1] - s;
+    st[2 * i] = tp[2 * i] * n[0] + tp[2 * i + 1] * n[1];
+    st[2 * i + 1] = tp[2 * i] * e[0] + tp[2 * i + 1] * e[1];
   }
-  return clipped;
+  return offsets_carrying(d, c, h, st, cur);
 }
 
 }  // namespace
@@ -166,6 +177,13 @@ long prestress_cracks(EngineData& d) {
     clipped += set_point_offsets(d, c, tp, cur);
   }
   return clipped;
+}
+
+int carry_point_stresses(EngineData& d, std::size_t c, const double st[6]) {
+  if (d.cracks.offset.empty()) d.cracks.offset.assign(6 * d.cracks.size(), 0.0);
+  double cur[6];
+  const double h = crack_point_openings(d, c, cur);
+  return static_cast<int>(offsets_carrying(d, c, h, st, cur));
 }
 
 }  // namespace rockfdem::fdem::detail

@@ -23,4 +23,11 @@ namespace rockfdem::fdem::detail {
 /// Returns the number of clipped integration points.
 long prestress_cracks(EngineData& d);
 
+/// Offsets of element c such that its undamaged law (its material and
+/// strength factor now) carries the normal and shear stresses `st`
+/// ((sigma, tau) at end 0, midpoint, end 1) at the current positions;
+/// demands at or above its strength are clipped to it. Returns the number
+/// of clipped points.
+int carry_point_stresses(EngineData& d, std::size_t c, const double st[6]);
+
 }  // namespace rockfdem::fdem::detail

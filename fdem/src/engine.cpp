@@ -458,6 +458,17 @@ void Engine::rejoin_crack(std::size_t c, int material) {
   d.contact.topology_dirty = d.contact.dirty = true;
 }
 
+int Engine::rejoin_crack_keeping_traction(std::size_t c, int material) {
+  check_index(c, n_cracks(), "crack element");
+  auto& d = impl_->d;
+  double stresses[6];
+  detail::crack_point_stresses(d, c, stresses);  // under the present law, before the switch
+  rejoin_crack(c, material);
+  int clipped = 0;
+  book_crack_change(d, c, [&] { clipped = detail::carry_point_stresses(d, c, stresses); });
+  return clipped;
+}
+
 void Engine::set_initial_stress(std::size_t t, const std::array<double, 3>& stress) {
   check_index(t, n_triangles(), "triangle");
   auto& d = impl_->d;

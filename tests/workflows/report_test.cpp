@@ -209,6 +209,11 @@ TEST(StageRecords, checkpoint_copy_reads_back_every_field) {
   // Named changes of each kind, and a stage kind's own by name.
   StageChanges changes = grouting(true, 70);
   changes.positions_file = "grouted_cracks.csv";
+  changes.trigger = "trigger_broken_growth";  // the trigger and its moment
+  changes.trigger_value = 1.5;
+  changes.trigger_step = 1234;
+  changes.trigger_time = 0.0625;
+  changes.broken_at_support = 45;
   changes.other = {{"released", 0.5}, {"stepped", true}, {"count", 3L}, {"note", "x"}};
   StageRecord full = stage_record("equilibrium", 0.736, changes);
   full.steps = 2000;
@@ -231,8 +236,9 @@ TEST(StageRecords, checkpoint_copy_reads_back_every_field) {
   EXPECT_EQ(j[1]["moving_most"]["key_point"], "invert");
   EXPECT_EQ(j[0]["changes"], nlohmann::json::object());
   EXPECT_EQ(j[1]["changes"].dump(),
-            R"({"count":3,"note":"x","positions_file":"grouted_cracks.csv","rejoined":70,)"
-            R"("released":0.5,"stepped":true,"triggered":true})");
+            R"({"broken_at_support":45,"count":3,"note":"x","positions_file":"grouted_cracks.csv",)"
+            R"("rejoined":70,"released":0.5,"stepped":true,"trigger":"trigger_broken_growth",)"
+            R"("trigger_step":1234,"trigger_time":0.0625,"trigger_value":1.5,"triggered":true})");
   const std::vector<StageRecord> back = stage_records_from_json(nlohmann::json::parse(j.dump()));
   ASSERT_EQ(back.size(), 2u);
   EXPECT_FALSE(back[0].dt || back[0].settle || back[0].converged || back[0].moving_most);
@@ -241,6 +247,11 @@ TEST(StageRecords, checkpoint_copy_reads_back_every_field) {
   EXPECT_EQ(b.changes.triggered, std::optional<bool>(true));
   EXPECT_EQ(b.changes.rejoined, std::optional<long>(70));
   EXPECT_EQ(b.changes.positions_file, full.changes.positions_file);
+  EXPECT_EQ(b.changes.trigger, full.changes.trigger);
+  EXPECT_EQ(b.changes.trigger_value, full.changes.trigger_value);
+  EXPECT_EQ(b.changes.trigger_step, full.changes.trigger_step);
+  EXPECT_EQ(b.changes.trigger_time, full.changes.trigger_time);
+  EXPECT_EQ(b.changes.broken_at_support, full.changes.broken_at_support);
   EXPECT_FALSE(b.changes.broken_before || b.changes.bolts || b.changes.interface_cracks);
   EXPECT_EQ(b.changes.other, full.changes.other);
   EXPECT_EQ(b.steps, 2000);

@@ -224,6 +224,9 @@ std::map<std::string, Text> text_fields() {
   f["loading.platen_friction"] = [](const Scene& s) {
     return s.engine.rough_platens ? "rough" : "frictionless";
   };
+  f["bolts.install_stress"] = [](const Scene& s) {
+    return s.bolts.keep_current_stress ? "current" : "free";
+  };
   f["bolt[0].kind"] = [](const Scene& s) { return s.bolts.is_cable[0] ? "cable" : "bolt"; };
   f["bolt_fan[0].kind"] = [](const Scene& s) { return s.bolts.is_cable[1] ? "cable" : "bolt"; };
   f["monitor[0].relative_to_support"] = [](const Scene& s) {

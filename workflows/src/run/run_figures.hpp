@@ -32,8 +32,21 @@ struct StageChanges {
   std::optional<long> bolt_triangles;  ///< their steel triangles made active
   std::optional<long> steel_cracks;    ///< their steel crack elements
   std::optional<long> grout_cracks;    ///< their grout-bond crack elements
+  /// bolts.install_stress = "current": crack points whose traction reached
+  /// the steel's or grout's strength and start at it
+  std::optional<long> clipped_points;
+  // lining, bolts
+  std::optional<long> broken_at_install;  ///< broken crack elements right after installation
   // grout
-  std::optional<bool> triggered;              ///< trigger_broken (or the stage's time) was reached
+  std::optional<bool> triggered;  ///< its trigger (or the stage's time) was reached
+  /// The trigger that fired ("time": the stage's time passed first), or the
+  /// one given when none fired; its value, and the step and simulated time
+  /// [s] at which it fired.
+  std::optional<std::string> trigger;
+  std::optional<double> trigger_value;
+  std::optional<long> trigger_step;
+  std::optional<double> trigger_time;
+  std::optional<long> broken_at_support;      ///< N0 of the since-support triggers
   std::optional<long> broken_before;          ///< broken crack elements when the stepping ended
   std::optional<long> rejoined;               ///< of them, re-joined with grout (triggered only)
   std::optional<long> broken_after;           ///< broken crack elements after the re-joining

@@ -20,6 +20,7 @@ StageRunner::StageRunner(fdem::Engine& engine, const mesh::Mesh& m,
     : model_{engine,
              m,
              ctx,
+             scene,
              bolts,
              materials,
              handoff.alpha,
@@ -245,7 +246,10 @@ void StageRunner::run(const StageSpec& stage) {
     cursor_.t0 = engine_.time();
     cursor_.changes = kind.apply(model_, stage);
     out_.set_lining_installed(model_.lining_installed);
-    if (kind.installs_support()) out_.support_installed(engine_);
+    if (kind.installs_support()) {
+      out_.support_installed(engine_);
+      cursor_.changes.broken_at_install = engine_.broken_counts().total();
+    }
     cursor_.monitor_u = monitor_displacements();
     cursor_.started = true;
   }

@@ -77,6 +77,8 @@ class StageRunner {
   void record_output(const std::string& stage, PhaseTimer& timer);
   /// Simulated time since the stage began [s].
   double stage_time() const { return model_.engine.time() - cursor_.t0; }
+  /// Explicit steps since the stage began.
+  long stage_steps() const { return model_.engine.step_count() - cursor_.first; }
 
  private:
   struct Cursor {

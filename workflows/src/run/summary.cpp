@@ -49,9 +49,34 @@ constexpr ChangeCount kChangeCounts[] = {{"interface_cracks", &StageChanges::int
                                          {"bolt_triangles", &StageChanges::bolt_triangles},
                                          {"steel_cracks", &StageChanges::steel_cracks},
                                          {"grout_cracks", &StageChanges::grout_cracks},
+                                         {"clipped_points", &StageChanges::clipped_points},
                                          {"broken_before", &StageChanges::broken_before},
                                          {"rejoined", &StageChanges::rejoined},
-                                         {"broken_after", &StageChanges::broken_after}};
+                                         {"broken_after", &StageChanges::broken_after},
+                                         {"broken_at_install", &StageChanges::broken_at_install},
+                                         {"trigger_step", &StageChanges::trigger_step},
+                                         {"broken_at_support", &StageChanges::broken_at_support}};
+
+// The numbers and texts among them.
+struct ChangeNumber {
+  const char* key;
+  std::optional<double> StageChanges::*member;
+};
+constexpr ChangeNumber kChangeNumbers[] = {{"trigger_value", &StageChanges::trigger_value},
+                                           {"trigger_time", &StageChanges::trigger_time}};
+struct ChangeText {
+  const char* key;
+  std::optional<std::string> StageChanges::*member;
+};
+constexpr ChangeText kChangeTexts[] = {{"positions_file", &StageChanges::positions_file},
+                                       {"trigger", &StageChanges::trigger}};
+
+template <class T, std::size_t N>
+const T* change_entry(const T (&table)[N], const std::string& key) {
+  for (const T& c : table)
+    if (key == c.key) return &c;
+  return nullptr;
+}
 
 const ChangeCount* change_count(const std::string& key) {
   for (const ChangeCount& c : kChangeCounts)
@@ -430,9 +455,12 @@ nlohmann::json stage_changes_json(const StageChanges& c) {
     j[name] = std::visit([](const auto& v) { return nlohmann::json(v); }, figure);
   for (const ChangeCount& k : kChangeCounts)
     if (c.*k.member) j[k.key] = *(c.*k.member);
+  for (const ChangeNumber& k : kChangeNumbers)
+    if (c.*k.member) j[k.key] = *(c.*k.member);
+  for (const ChangeText& k : kChangeTexts)
+    if (c.*k.member) j[k.key] = *(c.*k.member);
   if (c.triggered) j["triggered"] = *c.triggered;
   if (c.skipped) j["skipped"] = *c.skipped;
-  if (c.positions_file) j["positions_file"] = *c.positions_file;
   return j;
 }
 
@@ -442,12 +470,14 @@ StageChanges stage_changes_from_json(const nlohmann::json& j) {
     const nlohmann::json& v = it.value();
     if (const ChangeCount* k = change_count(it.key()))
       c.*k->member = v.get<long>();
+    else if (const ChangeNumber* n = change_entry(kChangeNumbers, it.key()))
+      c.*n->member = v.get<double>();
+    else if (const ChangeText* t = change_entry(kChangeTexts, it.key()))
+      c.*t->member = v.get<std::string>();
     else if (it.key() == "triggered")
       c.triggered = v.get<bool>();
     else if (it.key() == "skipped")
       c.skipped = v.get<bool>();
-    else if (it.key() == "positions_file")
-      c.positions_file = v.get<std::string>();
     else
       c.other[it.key()] = other_figure(v);
   }
@@ -456,8 +486,9 @@ StageChanges stage_changes_from_json(const nlohmann::json& j) {
 
 std::string stage_change_mismatch(const std::string& key, const nlohmann::json& v) {
   if (change_count(key)) return v.is_number_integer() ? "" : "an integer";
+  if (change_entry(kChangeNumbers, key)) return v.is_number() ? "" : "a number";
+  if (change_entry(kChangeTexts, key)) return v.is_string() ? "" : "a string";
   if (key == "triggered" || key == "skipped") return v.is_boolean() ? "" : "true or false";
-  if (key == "positions_file") return v.is_string() ? "" : "a string";
   return v.is_primitive() && !v.is_null() ? "" : "true, false, a number or a string";
 }
 

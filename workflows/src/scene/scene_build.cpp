@@ -495,6 +495,7 @@ void read_bolts(const Reader& r, Scene& s) {
   BoltSettings& b = s.bolts;
   b.bolt = read_steel(r, "bolts");
   b.cable = read_steel(r, "cables");
+  b.keep_current_stress = r.text("bolts.install_stress") == "current";
   s.grout = read_bond(r, "grout");
   s.lining_interface = read_bond(r, "lining_interface");
   std::vector<BoltPlacement> found;
@@ -661,6 +662,12 @@ StageSpec read_stage(const Reader& r, const std::string& p, const std::string& k
     st.*field = r.number(p + key);
   st.max_steps = long(r.number(p + ".max_steps"));
   st.trigger_broken = long(r.number(p + ".trigger_broken"));
+  for (const char* key :
+       {"trigger_broken", "trigger_broken_since_support", "trigger_broken_growth", "trigger_steps"})
+    if (r.has(p + "." + key)) {
+      if (st.triggers.empty()) st.trigger_value = r.number(p + "." + key);
+      st.triggers.push_back(key);
+    }
   st.every_steps = r.integer(p + ".every_steps");
   st.hold = r.integer(p + ".hold");
   st.stop_when_unstable = r.boolean(p + ".stop_when_unstable");

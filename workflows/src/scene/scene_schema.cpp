@@ -452,6 +452,15 @@ void add_support(std::vector<KeySpec>& s) {
                          "Steel shear strength (brittle in shear)."));
     s.push_back(
         positive(p + "shear_fracture_energy", "J/m^2", "1e4", "Steel shear fracture energy GfII."));
+    if (p == "bolts.")
+      s.push_back(choice(
+          "bolts.install_stress", "free", {"free", "current"},
+          "Stress of the bolt and cable strips when the `bolts` stage installs them: `free`, "
+          "stress-free in their installed shape (the rock they replace unloads into its "
+          "surroundings); `current`, the stress the rock there carries (strain counted from "
+          "the installed shape), their steel and grout crack elements carrying the tractions "
+          "its cracks carried: the installation changes no stress and no force. Bolt "
+          "outputs count from the installation either way."));
   }
   // [grout] (the bolt-rock bond and what re-joins broken cracks) and
   // [lining_interface] (the shotcrete-rock bond: adhesion 0.1-1.3 MPa measured
@@ -565,9 +574,30 @@ void add_stages(std::vector<KeySpec>& s) {
                            "Stop after this much simulated time in the stage (pseudo-time when "
                            "engine.mass_scaling is on, as it is for tunnels by default: prefer "
                            "max_steps then); 0: no limit."));
+  // grout's triggers, one per stage (grout_triggers() lists them).
   s.push_back(integer("stages[].trigger_broken", "0", 0, 1e12,
-                      "grout: step until this many crack elements are broken (or the stage's "
-                      "time has passed), then grout; 0: at once."));
+                      "grout: step until this many crack elements are broken in all (or the "
+                      "stage's time has passed), then grout; 0: at once. One trigger per grout "
+                      "stage: this, trigger_broken_since_support, trigger_broken_growth or "
+                      "trigger_steps."));
+  KeySpec since = integer("stages[].trigger_broken_since_support", "", 1, 1e12,
+                          "grout: step until this many more crack elements are broken than "
+                          "right after the support went in (the first `lining` or `bolts` "
+                          "stage, which must come before), then grout.");
+  since.default_doc = "none";
+  s.push_back(since);
+  KeySpec growth = number("stages[].trigger_broken_growth", "-", "", 0, true, 1e3, false,
+                          "grout: step until the broken count has grown by this fraction of "
+                          "its value right after the support went in, and by at least one "
+                          "crack element (N - N0 >= g N0 and N > N0), then grout: 0.5 fires "
+                          "at half as many again; needs a `lining` or `bolts` stage before.");
+  growth.default_doc = "none";
+  s.push_back(growth);
+  KeySpec steps = integer("stages[].trigger_steps", "", 1, 1e12,
+                          "grout: step this many explicit steps from the stage's start, then "
+                          "grout (at most the stage's max_steps).");
+  steps.default_doc = "none";
+  s.push_back(steps);
   s.push_back(integer("stages[].every_steps", "output.every_steps", 1, 1e9,
                       "Steps between outputs in this stage."));
 }

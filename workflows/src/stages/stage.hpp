@@ -35,6 +35,7 @@ struct StageModel {
   fdem::Engine& engine;
   const mesh::Mesh& mesh;
   const RunContext& ctx;
+  const Scene& scene;
   fdem::BoltPlan& bolts;
   SupportMaterials materials;
   double handoff_alpha;   ///< the core's stiffness factor in the engine at the hand-off

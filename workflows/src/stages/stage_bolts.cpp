@@ -1,5 +1,6 @@
-// bolts: every bolt of the scene installed stress-free (the steel strips
-// and their grout bond made active in the rock as it is now).
+// bolts: every bolt of the scene installed (the steel strips and their
+// grout bond made active in the rock as it is now), stress-free or keeping
+// the rock's stress (bolts.install_stress).
 #include "stages/stage.hpp"
 
 namespace rockfdem::workflows {
@@ -7,7 +8,9 @@ namespace {
 
 class Bolts : public Stage {
  public:
-  const char* description() const override { return "install every bolt stress-free"; }
+  const char* description() const override {
+    return "install every bolt, stress-free or keeping the rock's stress: bolts.install_stress";
+  }
 
   void check(StageCheck& c) const override {
     if (c.scene.bolts.segments.empty())
@@ -17,12 +20,16 @@ class Bolts : public Stage {
   }
 
   StageChanges apply(StageModel& m, const StageSpec&) const override {
-    const fdem::BoltInstallReport r = fdem::install_bolts(m.engine, m.bolts);
+    const fdem::BoltStart start = m.scene.bolts.keep_current_stress
+                                      ? fdem::BoltStart::kKeepCurrentStress
+                                      : fdem::BoltStart::kStressFree;
+    const fdem::BoltInstallReport r = fdem::install_bolts(m.engine, m.bolts, start);
     StageChanges done;
     done.bolts = long(m.bolts.specs.size());
     done.bolt_triangles = r.triangles;
     done.steel_cracks = r.steel_cracks;
     done.grout_cracks = r.grout_cracks;
+    if (start == fdem::BoltStart::kKeepCurrentStress) done.clipped_points = r.clipped_points;
     return done;
   }
 

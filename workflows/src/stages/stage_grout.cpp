@@ -1,11 +1,24 @@
-// grout: steps until trigger_broken crack elements are broken (or the
-// stage's time has passed), then re-joins the broken ones with grout and
-// lists where (grouted_cracks.csv). It stops on its trigger, so a run
-// ending on it is not at equilibrium.
+// grout: steps until its trigger fires (or the stage's time has passed),
+// then re-joins the broken crack elements with grout and lists where
+// (grouted_cracks.csv). One trigger per stage, N the broken count:
+//   trigger_broken = n                N >= n (0, the default: at once)
+//   trigger_broken_since_support = n  N - N0 >= n
+//   trigger_broken_growth = g         N - N0 >= g N0 and N > N0
+//   trigger_steps = k                 k steps after the stage's start
+// N0 is the broken count right after the support went in: the first stage
+// that installs one (lining or bolts) keeps it in its record
+// (broken_at_install), which a checkpoint restores with the record. The
+// trigger is tested after every step; the stage reports which fired, when
+// (step, simulated time) and the count then. It stops on its trigger, so a
+// run ending on it is not at equilibrium.
+#include <cstdio>
+
 #include "rockfdem/coupling/atomic_file.hpp"
+#include "rockfdem/error.hpp"
 #include "rockfdem/fdem/bolt_grouting.hpp"
 #include "run/output_dir.hpp"
 #include "run/stage_runner.hpp"
+#include "stages/registry.hpp"
 #include "stages/stage.hpp"
 
 namespace rockfdem::workflows {
@@ -28,32 +41,129 @@ void grout_broken(StageModel& m, StageChanges& done) {
   done.positions_file = "grouted_cracks.csv";
 }
 
+enum class TriggerKind { kBroken, kSinceSupport, kGrowth, kSteps };
+
+struct Trigger {
+  TriggerKind kind = TriggerKind::kBroken;
+  std::string key = "trigger_broken";
+  double value = 0;
+  long n0 = 0;  ///< broken count right after the support went in (since-support kinds)
+
+  bool from_support() const {
+    return kind == TriggerKind::kSinceSupport || kind == TriggerKind::kGrowth;
+  }
+  /// Whether it holds now (after a step, or at the stage's start).
+  bool reached(const StageRunner& runner, const fdem::Engine& engine) const {
+    if (kind == TriggerKind::kSteps) return double(runner.stage_steps()) >= value;
+    const long n = engine.broken_counts().total();
+    if (kind == TriggerKind::kSinceSupport) return double(n - n0) >= value;
+    if (kind == TriggerKind::kGrowth) return n > n0 && double(n - n0) >= value * double(n0);
+    return double(n) >= value;
+  }
+};
+
+/// The entry's trigger without N0: the one key given, else trigger_broken.
+Trigger given_trigger(const StageSpec& spec) {
+  Trigger t;
+  if (spec.triggers.empty()) {
+    t.value = double(spec.trigger_broken);
+    return t;
+  }
+  t.key = spec.triggers.front();
+  t.value = spec.trigger_value;
+  if (t.key == "trigger_broken_since_support") t.kind = TriggerKind::kSinceSupport;
+  if (t.key == "trigger_broken_growth") t.kind = TriggerKind::kGrowth;
+  if (t.key == "trigger_steps") t.kind = TriggerKind::kSteps;
+  return t;
+}
+
+/// N0: the broken count in the record of the first stage that installed support.
+long broken_at_support(const StageRunner& runner) {
+  for (const StageRecord& r : runner.report()) {
+    if (!stage_of(r.kind).installs_support()) continue;
+    if (r.changes.broken_at_install) return *r.changes.broken_at_install;
+    break;
+  }
+  throw InputError(
+      "grout: no broken count at the support's installation in the run's record (a checkpoint "
+      "written before rockfdem kept it); rerun the scene from the start");
+}
+
+std::string number(double v) {
+  char s[32];
+  std::snprintf(s, sizeof s, "%.6g", v);
+  return s;
+}
+
 class Grout : public Stage {
  public:
   const char* description() const override {
-    return "re-join broken cracks with grout, once trigger_broken is reached";
+    return "re-join broken cracks with grout once its trigger fires: trigger_broken, "
+           "trigger_broken_since_support, trigger_broken_growth or trigger_steps";
+  }
+
+  void check(StageCheck& c) const override {
+    const std::vector<std::string>& given = c.spec.triggers;
+    if (given.size() > 1)
+      c.refuse("." + given[1], "one trigger per grout stage; " + given[0] + " and " + given[1] +
+                                   " are both given: keep one");
+    const Trigger t = given_trigger(c.spec);
+    if (t.from_support() && !c.order.lined && !c.order.bolted)
+      c.refuse("." + t.key,
+               "counts from the support's installation: needs a `lining` or `bolts` stage "
+               "before this one");
+    if (t.kind == TriggerKind::kSteps && t.value > double(c.spec.max_steps))
+      c.refuse("." + t.key, "the stage stops at its max_steps = " +
+                                std::to_string(c.spec.max_steps) + " before; raise max_steps");
   }
 
   bool step(StageRunner& runner, const StageSpec& spec, StageChanges& changes) const override {
     StageModel& m = runner.model();
-    bool triggered =
-        spec.trigger_broken == 0 || m.engine.broken_counts().total() >= spec.trigger_broken;
-    // Triggered by the broken count, or by the stage's time when one is given.
-    if (!triggered)
-      triggered = runner.step_until(spec, [&] {
-        return m.engine.broken_counts().total() >= spec.trigger_broken;
-      }) || (!runner.stopped() && spec.time > 0 && runner.stage_time() >= spec.time);
+    Trigger t = given_trigger(spec);
+    if (t.from_support()) t.n0 = broken_at_support(runner);
+    const auto reached = [&] { return t.reached(runner, m.engine); };
+    std::string fired = t.key;
+    double value = t.value;
+    bool triggered = reached();
+    // Triggered by its trigger, or by the stage's time when one is given.
+    if (!triggered) {
+      triggered = runner.step_until(spec, reached);
+      if (!triggered && !runner.stopped() && spec.time > 0 && runner.stage_time() >= spec.time) {
+        triggered = true;
+        fired = "time";
+        value = spec.time;
+      }
+    }
     changes = {};
     changes.triggered = triggered;
+    changes.trigger = fired;
+    changes.trigger_value = value;
+    if (t.from_support()) changes.broken_at_support = t.n0;
     changes.broken_before = m.engine.broken_counts().total();
-    if (triggered) grout_broken(m, changes);
+    if (!triggered) return false;
+    changes.trigger_step = m.engine.step_count();
+    changes.trigger_time = m.engine.time();
+    grout_broken(m, changes);
     return false;
   }
 
   std::string outcome(const StageRecord& record) const override {
     const StageChanges& c = record.changes;
-    if (!c.triggered.value_or(false)) return "not triggered";
-    return "grouted " + (c.rejoined ? std::to_string(*c.rejoined) : std::string("-")) + " cracks";
+    const std::string trigger =
+        c.trigger ? *c.trigger + " = " + number(c.trigger_value.value_or(0)) : "";
+    if (!c.triggered.value_or(false))
+      return trigger.empty() ? "not triggered" : "not triggered (" + trigger + ")";
+    std::string s =
+        "grouted " + (c.rejoined ? std::to_string(*c.rejoined) : std::string("-")) + " cracks";
+    if (!c.trigger_step) return s;  // a record from before the trigger's moment was kept
+    s += ", " +
+         (*c.trigger == "time" ? "the stage's time " + number(*c.trigger_value) + " s" : trigger) +
+         " at step " + std::to_string(*c.trigger_step) +
+         " (t = " + number(c.trigger_time.value_or(0)) + " s), " +
+         std::to_string(c.broken_before.value_or(0)) + " broken";
+    if (c.broken_at_support)
+      s += " (" + std::to_string(*c.broken_at_support) + " when the support went in)";
+    return s;
   }
 
   std::string not_at_equilibrium() const override {

@@ -20,11 +20,14 @@
 //     so its uniaxial modulus is the calibrated steel's (bolt_steel.hpp),
 //   - makes it stress-free in its current shape (set_active(t, true,
 //     kCurrent), set_initial_stress(t, 0)), or with kKeepCurrentStress keeps
-//     the stress it carries (initial stress = current / alpha) so the strip
-//     takes over the rock's load without a jump,
+//     the stress it carries (initial stress = current / alpha, strain from
+//     the installed shape) so the strip takes over the rock's load without
+//     a jump,
 //   - re-joins every crack element inside the strip with the bolt-steel
 //     material and every one between the strip and the rock with the grout
-//     material (rejoin_crack: intact, current opening and slip as zero).
+//     material: intact, current opening and slip as zero (rejoin_crack),
+//     or with kKeepCurrentStress carrying the traction it carries now
+//     (rejoin_crack_keeping_traction), so that no node's force changes.
 // What this cannot give (the engine hook wanted, set_triangle_material(t,
 // m)): the strip keeps the rock's Poisson ratio and density after
 // installation (a steel strip would have its own nu; mass matters only
@@ -79,6 +82,9 @@ enum class BoltStart {
 
 struct BoltInstallReport {
   long triangles = 0, steel_cracks = 0, grout_cracks = 0;
+  /// kKeepCurrentStress: crack integration points whose traction reached
+  /// the steel's or grout's strength and start at it (the rest is lost).
+  long clipped_points = 0;
 };
 
 /// Installs bolt b (see the design above). Raises the engine's stiffness,

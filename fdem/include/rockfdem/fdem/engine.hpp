@@ -217,6 +217,14 @@ class Engine {
   /// state, mode and breakage step are reset, and its current opening and
   /// slip become its new zero, so it starts intact where it is.
   void rejoin_crack(std::size_t c, int material);
+  /// Re-joins crack element c with material m (a support installed in
+  /// loaded rock) so that it goes on carrying the traction it carries now:
+  /// each integration point's normal and shear stress under its present law
+  /// and damage (none when broken or inactive) becomes the state of m's
+  /// undamaged pre-peak law (damage, state, mode and breakage step reset as
+  /// in rejoin_crack). A demand at or above m's strength starts just below
+  /// the peak, carrying the strength. Returns the points so clipped (0-3).
+  int rejoin_crack_keeping_traction(std::size_t c, int material);
   /// Replaces triangle t's initial stress (sxx, syy, sxy) [Pa] (e.g. a
   /// lining installed stress-free where the in-situ field covered it). The
   /// crack elements keep their state: such a change goes with a new

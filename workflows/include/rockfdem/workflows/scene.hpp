@@ -94,6 +94,11 @@ struct StageSpec {
   double time{};     ///< stop after this simulated time [s]; 0: no limit
   int every_steps{};
   long trigger_broken{};  ///< grout: broken crack elements that trigger grouting
+  /// grout: the trigger keys the entry gives ("trigger_steps", ...), in the
+  /// schema's order; the grout stage allows one (none: trigger_broken's
+  /// default, at once).
+  std::vector<std::string> triggers;
+  double trigger_value{};  ///< grout: the first given trigger's value
   /// With the ratio, equilibrium needs the monitors settled: the largest
   /// monitor displacement change over one output interval, per 1000 steps,
   /// at most this fraction of the largest monitor displacement; 0: the
@@ -122,6 +127,9 @@ struct BoltSettings {
   SteelSettings bolt, cable;
   std::vector<std::array<double, 4>> segments;  ///< (x0, y0, x1, y1) per bolt, fans expanded
   std::vector<std::uint8_t> is_cable;           ///< per segment
+  /// bolts.install_stress = "current": the strips keep the rock's stress
+  /// and their cracks its tractions at installation (else stress-free).
+  bool keep_current_stress{};
 };
 
 /// A bond modelled by crack elements: the grout (bolt-rock bond, and what
