@@ -41,10 +41,10 @@ ContinuumStates solve_continuum_counterpart(const Scene& scene, const mesh::Mesh
 
 /// Solves the scene's sequence with the post-peak strength (see above).
 /// Throws InputError when the scene's strengths cannot be posed that way
-/// (residual friction above the peak's or below the dilation angle). Not
-/// called by the run yet: where there is no equilibrium it costs many
-/// failing Newton steps (39 s on a 0.3 m mesh of a 3 m tunnel, over 10 min
-/// at 0.15 m), too much to add to every Mohr-Coulomb run unasked.
+/// (residual friction above the peak's or below the dilation angle). The
+/// run calls it only when insitu.continuum_post_peak asks: where there is
+/// no equilibrium it costs many failing Newton steps (39 s on a 0.3 m mesh
+/// of a 3 m tunnel, over 10 min at 0.15 m).
 PostPeakCounterpart solve_post_peak_counterpart(const Scene& scene, const mesh::Mesh& m);
 
 /// FDEM (the hand-off field and the engine's final state) against the

@@ -1,7 +1,6 @@
 #include "run/handoff_choice.hpp"
 
 #include <algorithm>
-#include <array>
 #include <cmath>
 #include <map>
 #include <utility>
@@ -36,10 +35,7 @@ std::vector<Face> crack_faces(const mesh::Mesh& m) {
   return faces;
 }
 
-}  // namespace
-
-namespace {
-
+// The largest traction-to-strength ratio over the faces (handoff_choice.hpp).
 double worst_ratio(const std::vector<Face>& faces,
                    const std::map<mesh::Zone, fdem::Material>& materials, const mesh::Mesh& m,
                    const insitu::InsituField& field) {
@@ -62,11 +58,6 @@ double worst_ratio(const std::vector<Face>& faces,
 }
 
 }  // namespace
-
-double crack_strength_ratio(const Scene& scene, const mesh::Mesh& m,
-                            const insitu::InsituField& field) {
-  return worst_ratio(crack_faces(m), engine_materials(scene), m, field);
-}
 
 HandoffChoice choose_handoff(const Scene& scene, const mesh::Mesh& m,
                              const std::vector<insitu::InsituField>& fields) {

@@ -17,19 +17,15 @@ namespace rockfdem::workflows {
 
 struct HandoffChoice {
   /// Per solved alpha: the largest ratio of a crack element's face traction
-  /// to its strength (normal against ft, shear against c - sigma_n tan phi).
+  /// to its strength (normal against ft, shear against c - sigma_n tan phi)
+  /// over the crack elements the engine will make (interior edges with a
+  /// fracture triangle on either side, both triangles in the field), each
+  /// face loaded by the mean of its two triangles' stresses, with the
+  /// strengths the engine gives that pair (the weaker material's).
+  /// Strength heterogeneity's scatter is not in it.
   std::vector<double> strength_ratio;
   std::size_t index = 0;  ///< the field handed over
 };
-
-/// The largest traction-to-strength ratio over the crack elements the
-/// engine will make on `m` (interior edges with a fracture triangle on
-/// either side, both triangles in the field), the face loaded by the mean
-/// of its two triangles' stresses, with the strengths the engine gives
-/// that pair (the weaker material's; a zone given none is never reached).
-/// Strength heterogeneity's scatter is not in it: the materials' own values.
-double crack_strength_ratio(const Scene& scene, const mesh::Mesh& m,
-                            const insitu::InsituField& field);
 
 /// The scene's rule over the solved fields (alphas decreasing): "last"
 /// takes the last; "first_crack" the last of those before the first with a
