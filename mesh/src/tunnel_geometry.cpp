@@ -136,7 +136,7 @@ GmshModelMap add_tunnel_model(const MeshSpec& spec) {
   const DomainSpec& d = spec.domain;
   const bool has_lining = t.lining_thickness > 0;
   const Outline opening = tunnel_outline(t);
-  const Outline inset = has_lining ? tunnel_outline(t, t.lining_thickness) : Outline{};
+  const Outline inset = has_lining ? lining_inner_outline(t) : Outline{};
 
   const int rect = gmsh::model::occ::addRectangle(d.center_x - d.width / 2,
                                                   d.center_y - d.height / 2, 0, d.width, d.height);

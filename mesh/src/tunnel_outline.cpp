@@ -119,9 +119,9 @@ bool inside_arc_segment(const OutlinePiece& p, double x, double y) {
 
 // Horseshoe and arched openings: the arch's crown at +height/2, the floor's
 // lowest point at -height/2; with an invert the walls' feet are invert_rise
-// above it. The inset outline offsets every piece inwards: the same centres,
-// radii less the inset.
-Outline arched_outline(const TunnelSpec& t, double inset) {
+// above it. The inset outline offsets the walls and arch inwards by `inset`
+// and the floor by `floor_inset`: the same centres, radii less the insets.
+Outline arched_outline(const TunnelSpec& t, double inset, double floor_inset) {
   const bool horseshoe = t.shape == TunnelShape::kHorseshoe;
   const double rise = horseshoe ? t.span / 2 : t.rise;
   require(t.span > 0 && t.height > 0, "span and height must be > 0");
@@ -136,18 +136,24 @@ Outline arched_outline(const TunnelSpec& t, double inset) {
   const double r = horseshoe ? t.span / 2 : arc_radius_for_rise(t.span, rise);
   const double yc = t.height / 2 - r;  // crown at +height/2
   const double w = t.span / 2 - inset;
-  if (t.invert_rise <= 0) return arched_box(w, -t.height / 2 + inset, yc, r - inset);
+  // The walls must keep a length above the floor part.
+  const double wall_top = yc + (r - inset) * std::sin(std::acos(std::min(1.0, w / (r - inset))));
+  if (t.invert_rise <= 0) {
+    const double y_floor = -t.height / 2 + floor_inset;
+    require(y_floor < wall_top, "invert thickness leaves no wall below the arch");
+    return arched_box(w, y_floor, yc, r - inset);
+  }
   const double ri = arc_radius_for_rise(t.span, t.invert_rise);
   const double yi = -t.height / 2 + ri;  // lowest point at -height/2
-  require(inset < t.invert_rise, "lining thickness must be below the invert rise");
-  const double y_foot = yi - std::sqrt((ri - inset) * (ri - inset) - w * w);
-  return arched_box(w, y_foot, yc, r - inset, yi, ri - inset);
+  require(floor_inset < t.invert_rise && inset < t.invert_rise,
+          "lining and invert thickness must be below the invert rise");
+  const double y_foot = yi - std::sqrt((ri - floor_inset) * (ri - floor_inset) - w * w);
+  require(y_foot < wall_top, "invert thickness leaves no wall below the arch");
+  return arched_box(w, y_foot, yc, r - inset, yi, ri - floor_inset);
 }
 
-}  // namespace
-
-Outline tunnel_outline(const TunnelSpec& t, double inset) {
-  require(inset >= 0, "inset " + std::to_string(inset) + " must be >= 0");
+Outline inset_outline(const TunnelSpec& t, double inset, double floor_inset) {
+  require(inset >= 0 && floor_inset >= 0, "inset " + std::to_string(inset) + " must be >= 0");
   switch (t.shape) {
     case TunnelShape::kCircular:
       require(t.radius > 0, "radius = " + std::to_string(t.radius) + " must be > 0");
@@ -160,9 +166,31 @@ Outline tunnel_outline(const TunnelSpec& t, double inset) {
       return box(t.span / 2 - inset, t.height / 2 - inset);
     case TunnelShape::kHorseshoe:
     case TunnelShape::kArched:
-      return arched_outline(t, inset);
+      return arched_outline(t, inset, floor_inset);
   }
   throw InputError("tunnel geometry: unknown shape");
+}
+
+bool has_floor_part(const TunnelSpec& t) {
+  return t.shape == TunnelShape::kHorseshoe || t.shape == TunnelShape::kArched;
+}
+
+double floor_thickness(const TunnelSpec& t) {
+  return has_floor_part(t) && t.invert_thickness > 0 ? t.invert_thickness : t.lining_thickness;
+}
+
+}  // namespace
+
+Outline tunnel_outline(const TunnelSpec& t, double inset) { return inset_outline(t, inset, inset); }
+
+Outline lining_inner_outline(const TunnelSpec& t) {
+  return inset_outline(t, t.lining_thickness, floor_thickness(t));
+}
+
+double invert_part_top(const TunnelSpec& t) {
+  if (!has_floor_part(t) || t.lining_thickness <= 0)
+    return -std::numeric_limits<double>::infinity();
+  return lining_inner_outline(t).pieces.front().y0;  // the floor piece starts at the left foot
 }
 
 double outline_area(const Outline& o) {

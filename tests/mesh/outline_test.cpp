@@ -84,6 +84,36 @@ TEST(TunnelOutline, invert_inset_lies_at_the_inset_distance) {
   }
 }
 
+// A floor part of its own thickness: the inner outline's floor (the invert
+// arc) lies at the invert thickness from the opening, its walls and arch at
+// the lining's; the part's top is the inner walls' feet, on the inset arc.
+TEST(TunnelOutline, lining_inner_outline_offsets_the_floor_by_the_invert_thickness) {
+  const double s = 11.3, h = 8.8, d = 0.2, f = 0.8;
+  TunnelSpec t = shaped(TunnelShape::kHorseshoe, s, h);
+  t.invert_rise = 1.2;
+  t.lining_thickness = d;
+  t.invert_thickness = f;
+  const Outline o = tunnel_outline(t), in = lining_inner_outline(t);
+  ASSERT_EQ(in.pieces.size(), 4u);
+  for (std::size_t i = 0; i < in.pieces.size(); ++i) {
+    const OutlinePiece& p = in.pieces[i];
+    const double a = (p.a0 + p.a1) / 2;
+    const double mx = p.is_arc ? p.cx + p.radius * std::cos(a) : (p.x0 + p.x1) / 2;
+    const double my = p.is_arc ? p.cy + p.radius * std::sin(a) : (p.y0 + p.y1) / 2;
+    EXPECT_NEAR(distance_to_outline(o, mx, my), i == 0 ? f : d, 1e-12) << i;
+  }
+  const double ri = (s * s / 4 + 1.2 * 1.2) / 2.4, yi = -h / 2 + ri, w = s / 2 - d;
+  EXPECT_NEAR(invert_part_top(t), yi - std::sqrt((ri - f) * (ri - f) - w * w), 1e-12);
+  t.invert_thickness = 0;  // the lining's
+  EXPECT_NEAR(invert_part_top(t), tunnel_outline(t, d).pieces.front().y0, 1e-12);
+  t.invert_rise = 0;  // flat floor
+  t.invert_thickness = f;
+  EXPECT_NEAR(invert_part_top(t), -h / 2 + f, 1e-12);
+  t.invert_rise = 1.2;
+  t.invert_thickness = 1.3;  // deeper than the invert
+  EXPECT_THROW(lining_inner_outline(t), InputError);
+}
+
 TEST(TunnelOutline, rectangular_area_is_span_times_height) {
   EXPECT_NEAR(opening_area(shaped(TunnelShape::kRectangular, 7, 5)), 35, 1e-12);
 }

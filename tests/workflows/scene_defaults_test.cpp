@@ -258,8 +258,13 @@ std::map<std::string, Text> text_fields() {
 
 // Keys whose default another scene shows (a horseshoe tunnel, a .msh model).
 const std::set<std::string> kElsewhere = {
-    "tunnel.shape",       "tunnel.span", "tunnel.height", "tunnel.lining_thickness",
-    "tunnel.invert_rise", "msh.zones",   "msh.edges",     "msh.fracture_group"};
+    "tunnel.shape", "tunnel.span", "tunnel.height", "tunnel.lining_thickness", "tunnel.invert_rise",
+    "msh.zones", "msh.edges", "msh.fracture_group",
+    // A ring's floor part of its own: a_floor_part_takes_the_rings_values.
+    "tunnel.invert_thickness", "materials.invert.density", "materials.invert.young",
+    "materials.invert.poisson", "materials.invert.friction_angle",
+    "materials.invert.residual_friction_angle", "materials.invert.tensile_strength",
+    "materials.invert.compressive_strength"};
 
 std::string normalised(const std::string& path) {
   return std::regex_replace(path, std::regex(R"(\[[0-9]+\])"), "[]");
@@ -364,4 +369,33 @@ TEST(SceneDefaults, a_horseshoe_and_a_msh_model_hold_their_defaults) {
   EXPECT_TRUE(m.mesh.msh.edge_groups.empty());
   EXPECT_EQ(spec_of("msh.edges").default_text, "{}");
   EXPECT_EQ("\"" + m.mesh.msh.fracture_group + "\"", spec_of("msh.fracture_group").default_text);
+}
+
+// A ring's floor part given no values of its own is the ring's: its
+// thickness the lining's, every key of [materials.invert] the lining's.
+TEST(SceneDefaults, a_floor_part_takes_the_rings_values) {
+  const Scene h = parse_scene(
+      "[tunnel]\nlining_thickness = 0.3\n"
+      "[materials.rock]\nyoung = 5e9\npoisson = 0.25\n"
+      "[materials.lining]\ndensity = 2300\nyoung = 20e9\npoisson = 0.2\nfriction_angle = 38\n"
+      "residual_friction_angle = 33\ntensile_strength = 2e6\ncompressive_strength = 25e6\n"
+      "[materials.invert]\n"
+      "[insitu]\nsigma_h = 1e6\nsigma_v = 1e6\n",
+      "invert.toml", ".");
+  EXPECT_EQ(spec_of("tunnel.invert_thickness").default_text, "tunnel.lining_thickness");
+  EXPECT_EQ(h.mesh.tunnel.invert_thickness, 0.3);
+  ASSERT_TRUE(h.invert);
+  const MaterialSpec& l = h.materials.at(mesh::kLining);
+  const MaterialSpec& i = *h.invert;
+  EXPECT_EQ(i.density, 2300);
+  EXPECT_EQ(i.young, l.young);
+  EXPECT_EQ(i.poisson, l.poisson);
+  EXPECT_EQ(i.friction_angle, 38);
+  EXPECT_EQ(i.residual_friction_angle, 38);  // its own friction angle, as every material's
+  EXPECT_EQ(i.tensile_strength, 2e6);
+  EXPECT_EQ(i.compressive_strength, 25e6);
+  for (const char* key : {"density", "young", "poisson", "friction_angle", "tensile_strength",
+                          "compressive_strength"})
+    EXPECT_EQ(spec_of(std::string("materials.invert.") + key).default_text,
+              std::string("materials.lining.") + key);
 }

@@ -192,6 +192,27 @@ TEST(Scene, cross_key_errors_name_the_changed_key_with_short_numbers) {
         load_scene(seed, {"tunnel.shape=circular", "tunnel.radius=5", "tunnel.invert_rise=1"});
       }),
       {"tunnel.invert_rise", "horseshoe and arched openings only"});
+  // The ring's floor part: where there is a floor and a ring, thinner than
+  // a curved invert's rise, with a material only where it can act.
+  expect_contains(
+      error_of([&] {
+        load_scene(seed, {"tunnel.shape=circular", "tunnel.radius=5", "tunnel.invert_thickness=1"});
+      }),
+      {"--set tunnel.invert_thickness=1: ", "horseshoe or arched", "allowed here: "});
+  expect_contains(error_of([&] {
+                    load_scene(seed, {"tunnel.invert_rise=1", "tunnel.invert_thickness=1"});
+                  }),
+                  {"tunnel.invert_thickness", "below tunnel.invert_rise (1 m)"});
+  expect_contains(error_of([&] { load_scene(seed, {"tunnel.invert_thickness=4"}); }),
+                  {"tunnel.invert_thickness", "leaves no wall"});
+  expect_contains(error_of([&] {
+                    load_scene(seed, {"materials.invert.young=3e10", "insitu.lining_active=true"});
+                  }),
+                  {"insitu.lining_active", "materials.lining alone"});
+  expect_contains(error_of([&] {
+                    load_scene(seed, {"materials.invert.young=3e10", "tunnel.lining_thickness=0"});
+                  }),
+                  {"materials.invert", "tunnel.lining_thickness > 0"});
 }
 
 // Gravity and the in-situ gradient are one choice (scene_build.cpp,

@@ -85,8 +85,9 @@ std::vector<std::array<double, 2>> capacity_envelope(double thickness, const Sho
                                                      double fs);
 
 /// lining.csv's text: a header and one row per segment, forces in kN/m and
-/// kNm/m; `strength` null: no utilisation or safety factor (empty cells).
+/// kNm/m; `strengths` (one per segment) null: no utilisation or safety
+/// factor (empty cells).
 std::string lining_csv(long step, const LiningGeometry& g, const std::vector<SectionForces>& f,
-                       const ShotcreteStrength* strength);
+                       const std::vector<ShotcreteStrength>* strengths);
 
 }  // namespace rockfdem::workflows

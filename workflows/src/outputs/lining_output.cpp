@@ -19,27 +19,40 @@ std::size_t arg_max(const std::vector<SectionForces>& f, F value) {
   return best;
 }
 
-double median_thickness(const LiningGeometry& g) {
+// Of the segments in the floor part (`invert`) or out of it; 0 where none.
+double median_thickness(const LiningGeometry& g, const std::vector<char>& in_invert, bool invert) {
   std::vector<double> t;
-  for (const LiningSegment& s : g.segments) t.push_back(s.thickness);
+  for (std::size_t i = 0; i < g.segments.size(); ++i)
+    if (bool(in_invert[i]) == invert) t.push_back(g.segments[i].thickness);
+  if (t.empty()) return 0;
   std::nth_element(t.begin(), t.begin() + long(t.size() / 2), t.end());
   return t[t.size() / 2];
 }
 
 }  // namespace
 
-std::optional<ShotcreteStrength> shotcrete_strength(const Scene& scene) {
+std::optional<RingStrength> ring_strength(const Scene& scene) {
   const auto it = scene.materials.find(mesh::kLining);
   if (it == scene.materials.end() || !(it->second.compressive_strength > 0)) return std::nullopt;
-  return ShotcreteStrength{it->second.compressive_strength, it->second.tensile_strength};
+  RingStrength r;
+  r.lining = {it->second.compressive_strength, it->second.tensile_strength};
+  if (scene.invert)
+    r.invert =
+        ShotcreteStrength{scene.invert->compressive_strength, scene.invert->tensile_strength};
+  return r;
 }
 
-LiningOutput::LiningOutput(const mesh::Mesh& m, std::optional<ShotcreteStrength> strength,
-                           std::string dir)
+LiningOutput::LiningOutput(const mesh::Mesh& m, double invert_top,
+                           std::optional<RingStrength> strength, std::string dir)
     : strength_(strength), dir_(std::move(dir)) {
   if (auto g = lining_geometry(m)) geometry_ = std::move(*g);
   for (std::size_t t = 0; t < m.n_triangles(); ++t)
     if (m.zone[t] == mesh::kLining) triangles_.push_back(int(t));
+  for (const LiningSegment& s : geometry_.segments) {
+    const bool invert = s.y < invert_top;
+    segment_invert_.push_back(invert);
+    if (strength_) segment_strength_.push_back(invert ? *strength_->invert : strength_->lining);
+  }
 }
 
 bool LiningOutput::installed(const fdem::Engine& e) const {
@@ -62,7 +75,7 @@ void LiningOutput::at_output_step(const OutputStep& step, std::vector<double>&) 
   std::snprintf(name, sizeof name, "lining_%06ld.csv", e.step_count());
   coupling::atomic_write_text(
       output_path(dir_, name),
-      lining_csv(e.step_count(), geometry_, forces(e), strength_ ? &*strength_ : nullptr));
+      lining_csv(e.step_count(), geometry_, forces(e), strength_ ? &segment_strength_ : nullptr));
 }
 
 LiningForceFigures LiningOutput::finish(const fdem::Engine& e, const std::string& dir,
@@ -76,7 +89,7 @@ LiningForceFigures LiningOutput::figures(const fdem::Engine& e, const std::strin
   last_ = forces(e);
   coupling::atomic_write_text(
       output_path(dir, "lining.csv"),
-      lining_csv(e.step_count(), geometry_, last_, strength_ ? &*strength_ : nullptr));
+      lining_csv(e.step_count(), geometry_, last_, strength_ ? &segment_strength_ : nullptr));
   const auto angle = [&](std::size_t i) { return geometry_.segments[i].angle_deg; };
   const std::size_t n_max = arg_max(last_, [](const SectionForces& f) { return f.thrust; });
   const std::size_t n_min = arg_max(last_, [](const SectionForces& f) { return -f.thrust; });
@@ -87,7 +100,9 @@ LiningForceFigures LiningOutput::figures(const fdem::Engine& e, const std::strin
   LiningForceFigures f;
   f.step = e.step_count();
   f.segments = long(geometry_.segments.size());
-  f.thickness_m = median_thickness(geometry_);
+  f.thickness_m = median_thickness(geometry_, segment_invert_, false);
+  if (std::count(segment_invert_.begin(), segment_invert_.end(), 1))
+    f.invert_thickness_m = median_thickness(geometry_, segment_invert_, true);
   f.corner_segments = std::count_if(geometry_.segments.begin(), geometry_.segments.end(),
                                     [](const LiningSegment& s) { return s.corner; });
   f.max_thrust_kN_per_m = last_[n_max].thrust / 1e3;
@@ -109,14 +124,19 @@ void LiningOutput::check_capacity(LiningForceFigures& f) const {
   }
   std::vector<double> fs;
   for (std::size_t i = 0; i < last_.size(); ++i)
-    fs.push_back(safety_factor(last_[i], geometry_.segments[i].thickness, *strength_));
+    fs.push_back(safety_factor(last_[i], geometry_.segments[i].thickness, segment_strength_[i]));
   const std::size_t i = std::size_t(std::min_element(fs.begin(), fs.end()) - fs.begin());
   const LiningSegment& s = geometry_.segments[i];
   f.capacity =
       "plain shotcrete section, elastic: N/t +- 6M/t^2 within [-tensile, compressive] strength";
   LiningCapacityFigures c;
-  c.compressive_strength_Pa = strength_->compressive;
-  c.tensile_strength_Pa = strength_->tensile;
+  c.compressive_strength_Pa = strength_->lining.compressive;
+  c.tensile_strength_Pa = strength_->lining.tensile;
+  if (strength_->invert) {
+    c.invert_compressive_strength_Pa = strength_->invert->compressive;
+    c.invert_tensile_strength_Pa = strength_->invert->tensile;
+  }
+  c.min_safety_factor_in_invert = segment_invert_[i];
   // An unloaded ring has no finite factor: JSON null.
   if (std::isfinite(fs[i])) c.min_safety_factor = fs[i];
   c.min_safety_factor_angle_deg = s.angle_deg;
@@ -145,23 +165,37 @@ void LiningOutput::plots(PlotWriter& plots) const {
                 {"shear V [kN/m]", {{"V", angle, v}}, {}}},
                1000);
   if (!strength_) return;
-  std::vector<plots::PlotSeries> envelopes;
-  const double t = median_thickness(geometry_);
-  for (double fs : {1.0, 1.5}) {
-    plots::PlotSeries c{
-        "capacity, safety factor " + std::string(fs == 1.0 ? "1.0" : "1.5"), {}, {}};
-    for (const auto& p : capacity_envelope(t, *strength_, fs)) {
-      c.x.push_back(p[0] / 1e3);
-      c.y.push_back(p[1] / 1e3);
+  std::vector<plots::PlotSeries> envelopes, points;
+  std::string title = "Lining capacity (plain sections, elastic)";
+  for (const bool invert : {false, true}) {
+    if (invert && !strength_->invert) break;
+    const ShotcreteStrength& st = invert ? *strength_->invert : strength_->lining;
+    const std::string part = strength_->invert ? (invert ? "invert" : "arch and walls") : "ring";
+    const double t = median_thickness(geometry_, segment_invert_, invert);
+    for (double fs : {1.0, 1.5}) {
+      char name[120];
+      std::snprintf(name, sizeof name, "%s, safety factor %.1f", part.c_str(), fs);
+      plots::PlotSeries c{name, {}, {}};
+      for (const auto& p : capacity_envelope(t, st, fs)) {
+        c.x.push_back(p[0] / 1e3);
+        c.y.push_back(p[1] / 1e3);
+      }
+      envelopes.push_back(std::move(c));
     }
-    envelopes.push_back(std::move(c));
+    plots::PlotSeries pts{part + " segments, end of run", {}, {}};
+    for (std::size_t i = 0; i < last_.size(); ++i)
+      if (bool(segment_invert_[i]) == invert) {
+        pts.x.push_back(m[i]);
+        pts.y.push_back(n[i]);
+      }
+    points.push_back(std::move(pts));
+    char line[160];
+    std::snprintf(line, sizeof line, "; %s t = %.3g m, fc = %.3g MPa, ft = %.3g MPa", part.c_str(),
+                  t, st.compressive / 1e6, st.tensile / 1e6);
+    title += line;
   }
-  char title[160];
-  std::snprintf(title, sizeof title,
-                "Lining capacity (plain shotcrete, t = %.3g m, fc = %.3g MPa, ft = %.3g MPa)", t,
-                strength_->compressive / 1e6, strength_->tensile / 1e6);
   plots.panels("lining_capacity.png", title, "bending moment M [kNm/m]",
-               {{"thrust N [kN/m]", envelopes, {{"segments, end of run", m, n}}}}, 800);
+               {{"thrust N [kN/m]", envelopes, points}}, 800);
 }
 
 std::vector<std::size_t> lining_interface_cracks(const fdem::Engine& e, const mesh::Mesh& m) {

@@ -19,11 +19,20 @@
 
 namespace rockfdem::workflows {
 
+/// The ring's sections: the lining's, and the floor part's where the scene
+/// gives [materials.invert].
+struct RingStrength {
+  ShotcreteStrength lining;
+  std::optional<ShotcreteStrength> invert;
+};
+
 class LiningOutput : public OutputStepObserver {
  public:
-  /// The ring's segments of `m`, checked against `strength` (none: forces
-  /// only); files go to `dir`.
-  LiningOutput(const mesh::Mesh& m, std::optional<ShotcreteStrength> strength, std::string dir);
+  /// The ring's segments of `m`, those with a mid-line point below
+  /// `invert_top` [m] in its floor part (-infinity: none), checked against
+  /// `strength` (none: forces only); files go to `dir`.
+  LiningOutput(const mesh::Mesh& m, double invert_top, std::optional<RingStrength> strength,
+               std::string dir);
   /// Whether the mesh has a ring to cut into segments.
   bool has_ring() const { return !geometry_.segments.empty(); }
   /// Whether every lining triangle carries load in `e`.
@@ -48,15 +57,17 @@ class LiningOutput : public OutputStepObserver {
   void check_capacity(LiningForceFigures& f) const;
   LiningGeometry geometry_;
   std::vector<int> triangles_;  ///< every lining triangle
-  std::optional<ShotcreteStrength> strength_;
-  std::vector<SectionForces> last_;  ///< forces of finish()
+  std::optional<RingStrength> strength_;
+  std::vector<ShotcreteStrength> segment_strength_;  ///< per segment, with strength_
+  std::vector<char> segment_invert_;                 ///< per segment: in the floor part
+  std::vector<SectionForces> last_;                  ///< forces of finish()
   std::string dir_;
   bool installed_ = false;
 };
 
-/// The shotcrete's strengths the scene gives (materials.lining); none
-/// without a compressive strength.
-std::optional<ShotcreteStrength> shotcrete_strength(const Scene& scene);
+/// The strengths the scene gives (materials.lining, materials.invert);
+/// none without the lining's compressive strength.
+std::optional<RingStrength> ring_strength(const Scene& scene);
 
 /// Crack elements joining a lining triangle to a triangle of another zone
 /// (the shotcrete-rock bond), in crack order.

@@ -16,6 +16,7 @@
 #include "rockfdem/fdem/bolt_output.hpp"
 #include "run/checkpoint.hpp"
 #include "run/output_dir.hpp"
+#include "scene/lining_parts.hpp"
 
 namespace rockfdem::workflows {
 namespace {
@@ -45,7 +46,8 @@ RunOutputs::RunOutputs(const Scene& scene, const RunContext& ctx, RunRecord& sum
       rollers_(scene.insitu.rollers),
       lining_ring_(scene.lining_ring),
       is_cable_(scene.bolts.is_cable),
-      shotcrete_(shotcrete_strength(scene)) {
+      shotcrete_(ring_strength(scene)),
+      invert_top_(invert_top(scene)) {
   insitu::KirschCase k;
   if (kirsch_case(scene, &k)) kirsch_ = k;
   summary_.note_turned_off(scene.output, "fdem.pvd, fdem_NNNN.vtu, insitu.vtu, continuum.vtu",
@@ -87,7 +89,7 @@ void RunOutputs::begin(const mesh::Mesh& m, const KeyPoints& key_points,
   instruments_ = std::move(instruments);
   key_points_ = &key_points;
   if (lining_ring_) {
-    lining_ = std::make_unique<LiningOutput>(m, shotcrete_, ctx_.output_dir);
+    lining_ = std::make_unique<LiningOutput>(m, invert_top_, shotcrete_, ctx_.output_dir);
     if (!lining_->has_ring()) lining_.reset();
     if (lining_) lining_->set_installed(lining_installed_);
   }

@@ -122,12 +122,13 @@ class RunOutputs : public StepOutputs {
   const RunContext& ctx_;
   RunRecord& summary_;
   // What the outputs before finish() take from the scene.
-  bool vtk_ = false;                            ///< output.vtk
-  bool rollers_ = false;                        ///< insitu.rollers
-  bool lining_ring_ = false;                    ///< the model has a lining ring
-  std::optional<insitu::KirschCase> kirsch_;    ///< the Kirsch case the scene is, if any
-  std::vector<std::uint8_t> is_cable_;          ///< per bolt segment
-  std::optional<ShotcreteStrength> shotcrete_;  ///< materials.lining's strengths
+  bool vtk_ = false;                          ///< output.vtk
+  bool rollers_ = false;                      ///< insitu.rollers
+  bool lining_ring_ = false;                  ///< the model has a lining ring
+  std::optional<insitu::KirschCase> kirsch_;  ///< the Kirsch case the scene is, if any
+  std::vector<std::uint8_t> is_cable_;        ///< per bolt segment
+  std::optional<RingStrength> shotcrete_;     ///< materials.lining's (and .invert's) strengths
+  double invert_top_;  ///< the ring's floor part lies below [m]; -infinity: no part of its own
   std::vector<insitu::InsituField> fields_;
   std::unique_ptr<History> history_;
   std::unique_ptr<Instruments> instruments_;

@@ -57,8 +57,8 @@ void material_rows(std::ostream& md, const std::string& name, const MaterialSpec
   md << "| " << name << " | E " << sig(m.young / 1e9) << " GPa, nu " << sig(m.poisson)
      << ", density " << sig(m.density) << " kg/m^3 |\n";
   // The lining is an elastic liner: no crack elements, strengths for its check only.
-  if (name == "lining") {
-    md << "| lining strength (capacity check) | tension " << mpa(m.tensile_strength)
+  if (name == "lining" || name == "invert") {
+    md << "| " << name << " strength (capacity check) | tension " << mpa(m.tensile_strength)
        << ", compression " << mpa(m.compressive_strength) << " |\n";
     return;
   }
@@ -75,9 +75,12 @@ void opening_row(std::ostream& md, const Scene& s) {
     md << "radius " << sig(t.radius) << " m";
   else
     md << "span " << sig(t.span) << " m, height " << sig(t.height) << " m";
-  md << ", lining " << sig(1000 * t.lining_thickness) << " mm, fracture zone "
-     << sig(t.fracture_zone) << " m; domain " << sig(s.mesh.domain.width) << " x "
-     << sig(s.mesh.domain.height) << " m |\n";
+  if (t.invert_rise > 0) md << ", curved invert rise " << sig(t.invert_rise) << " m";
+  md << ", lining " << sig(1000 * t.lining_thickness) << " mm";
+  if (t.invert_thickness != t.lining_thickness)
+    md << " (" << sig(1000 * t.invert_thickness) << " mm in the floor part)";
+  md << ", fracture zone " << sig(t.fracture_zone) << " m; domain " << sig(s.mesh.domain.width)
+     << " x " << sig(s.mesh.domain.height) << " m |\n";
 }
 
 void inputs(std::ostream& md, const Scene& s, const RunRecord& r) {
@@ -91,6 +94,7 @@ void inputs(std::ostream& md, const Scene& s, const RunRecord& r) {
      << " triangles, " << count(&mesh::MeshReport::n_vertices) << " vertices |\n";
   for (mesh::Zone z : {mesh::kLining, mesh::kRock})  // the core is excavated
     if (s.materials.count(z)) material_rows(md, mesh::zone_name(z), s.materials.at(z));
+  if (s.invert) material_rows(md, "invert", *s.invert);
   md << "| in-situ stress (compression +) | sigma_h " << mpa(s.insitu.sigma_h) << ", sigma_v "
      << mpa(s.insitu.sigma_v) << ", sigma_h at " << sig(s.insitu.angle_deg)
      << " deg from x |\n| core stiffness factors alpha (implicit) |";
@@ -220,6 +224,11 @@ void scalar_table(std::ostream& md, const Rows& rows) {
 void capacity_rows(Rows& t, const LiningCapacityFigures& c) {
   t["compressive_strength_Pa"] = value_text(c.compressive_strength_Pa);
   t["tensile_strength_Pa"] = value_text(c.tensile_strength_Pa);
+  if (c.invert_compressive_strength_Pa) {
+    t["invert_compressive_strength_Pa"] = value_text(*c.invert_compressive_strength_Pa);
+    t["invert_tensile_strength_Pa"] = value_text(*c.invert_tensile_strength_Pa);
+    t["min_safety_factor_in_invert"] = value_text(c.min_safety_factor_in_invert);
+  }
   t["min_safety_factor"] = value_text(c.min_safety_factor);
   t["min_safety_factor_angle_deg"] = value_text(c.min_safety_factor_angle_deg);
   t["min_safety_factor_x_m"] = value_text(c.min_safety_factor_x_m);
@@ -233,6 +242,7 @@ void force_rows(Rows& t, const LiningForceFigures& f) {
   t["step"] = value_text(f.step);
   t["segments"] = value_text(f.segments);
   t["thickness_m"] = value_text(f.thickness_m);
+  if (f.invert_thickness_m) t["invert_thickness_m"] = value_text(*f.invert_thickness_m);
   t["corner_segments"] = value_text(f.corner_segments);
   t["max_thrust_kN_per_m"] = value_text(f.max_thrust_kN_per_m);
   t["max_thrust_angle_deg"] = value_text(f.max_thrust_angle_deg);

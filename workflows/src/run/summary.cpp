@@ -270,6 +270,11 @@ nlohmann::json bolts_json(const BoltRecord& r) {
 void add_capacity(nlohmann::json& j, const LiningCapacityFigures& c) {
   j["compressive_strength_Pa"] = c.compressive_strength_Pa;
   j["tensile_strength_Pa"] = c.tensile_strength_Pa;
+  if (c.invert_compressive_strength_Pa) {
+    j["invert_compressive_strength_Pa"] = *c.invert_compressive_strength_Pa;
+    j["invert_tensile_strength_Pa"] = *c.invert_tensile_strength_Pa;
+    j["min_safety_factor_in_invert"] = c.min_safety_factor_in_invert;
+  }
   j["min_safety_factor"] = or_null(c.min_safety_factor);
   j["min_safety_factor_angle_deg"] = c.min_safety_factor_angle_deg;
   j["min_safety_factor_x_m"] = c.min_safety_factor_x_m;
@@ -283,6 +288,7 @@ void add_lining_forces(nlohmann::json& j, const LiningForceFigures& f) {
   j["step"] = f.step;
   j["segments"] = f.segments;
   j["thickness_m"] = f.thickness_m;
+  if (f.invert_thickness_m) j["invert_thickness_m"] = *f.invert_thickness_m;
   j["corner_segments"] = f.corner_segments;
   j["max_thrust_kN_per_m"] = f.max_thrust_kN_per_m;
   j["max_thrust_angle_deg"] = f.max_thrust_angle_deg;

@@ -41,8 +41,11 @@ struct BoltRecord {
 
 /// The plain shotcrete section's check (where a compressive strength is given).
 struct LiningCapacityFigures {
-  double compressive_strength_Pa = 0, tensile_strength_Pa = 0;
+  double compressive_strength_Pa = 0, tensile_strength_Pa = 0;  ///< the lining's
+  /// The floor part's, with [materials.invert].
+  std::optional<double> invert_compressive_strength_Pa, invert_tensile_strength_Pa;
   std::optional<double> min_safety_factor;  ///< none: an unloaded ring
+  bool min_safety_factor_in_invert = false;
   double min_safety_factor_angle_deg = 0, min_safety_factor_x_m = 0, min_safety_factor_y_m = 0;
   bool min_safety_factor_at_corner = false;
   long segments_below_1 = 0;
@@ -52,7 +55,8 @@ struct LiningCapacityFigures {
 struct LiningForceFigures {
   long step = 0;
   long segments = 0, corner_segments = 0;
-  double thickness_m = 0;  ///< the median segment's
+  double thickness_m = 0;  ///< the median segment's (out of the floor part, with one)
+  std::optional<double> invert_thickness_m;  ///< the floor part's median, with [materials.invert]
   double max_thrust_kN_per_m = 0, max_thrust_angle_deg = 0;
   double min_thrust_kN_per_m = 0, min_thrust_angle_deg = 0;
   double max_abs_moment_kNm_per_m = 0, max_abs_moment_angle_deg = 0;

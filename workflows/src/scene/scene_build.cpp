@@ -178,6 +178,32 @@ void read_invert(const Reader& r, mesh::TunnelSpec& t) {
            "must exceed the lining thickness " + num(t.lining_thickness) + " m");
 }
 
+bool has_floor(const mesh::TunnelSpec& t) {
+  return t.shape == mesh::TunnelShape::kHorseshoe || t.shape == mesh::TunnelShape::kArched;
+}
+
+// The ring's floor part: as thick as the rest unless the scene says, and
+// only where there is a floor and a ring.
+void read_invert_thickness(const Reader& r, mesh::TunnelSpec& t) {
+  t.invert_thickness = r.number("tunnel.invert_thickness");
+  if (t.invert_thickness == t.lining_thickness) return;
+  if (!has_floor(t) || !(t.lining_thickness > 0))
+    r.fail("tunnel.invert_thickness",
+           "applies to the lining ring's floor part of a horseshoe or arched opening with "
+           "tunnel.lining_thickness > 0; allowed here: tunnel.lining_thickness (" +
+               num(t.lining_thickness) + " m)");
+  if (!(t.invert_thickness > 0))
+    r.fail("tunnel.invert_thickness", "allowed: > 0 where there is a ring");
+  if (t.invert_rise > 0 && t.invert_thickness >= t.invert_rise)
+    r.fail("tunnel.invert_thickness",
+           "must be below tunnel.invert_rise (" + num(t.invert_rise) + " m)");
+  try {
+    mesh::lining_inner_outline(t);
+  } catch (const InputError& e) {
+    r.fail("tunnel.invert_thickness", std::string(e.what()) + "; allowed: a thinner invert");
+  }
+}
+
 void read_tunnel(const Reader& r, mesh::MeshSpec& m) {
   mesh::TunnelSpec& t = m.tunnel;
   t.shape = tunnel_shape(r.text("tunnel.shape"));
@@ -202,6 +228,7 @@ void read_tunnel(const Reader& r, mesh::MeshSpec& m) {
     if (t.shape == mesh::TunnelShape::kArched) read_arch_rise(r, t);
   }
   read_invert(r, t);
+  read_invert_thickness(r, t);
   m.domain.width = r.number("domain.width");
   m.domain.height = r.number("domain.height");
   m.domain.center_x = r.number("domain.center_x");
@@ -310,10 +337,13 @@ void read_msh(const Reader& r, const std::string& base_dir, mesh::MeshSpec& m) {
   m.msh.fracture_group = r.text("msh.fracture_group");
 }
 
-MaterialSpec read_material(const Reader& r, mesh::Zone zone) {
-  const std::string p = "materials." + mesh::zone_name(zone) + ".";
-  // The core's keys default to the rock's (the schema's defaults say so).
-  if (zone != mesh::kCore) {
+// `name` is a zone's or "invert" (the ring's floor part, an elastic liner
+// too, its keys defaulting to the lining's).
+MaterialSpec read_material(const Reader& r, const std::string& name) {
+  const std::string p = "materials." + name + ".";
+  const bool liner = name == mesh::zone_name(mesh::kLining) || name == "invert";
+  // The core's keys default to the rock's, the invert's to the lining's.
+  if (name != mesh::zone_name(mesh::kCore) && name != "invert") {
     r.require(p + "young", "every zone of the model needs its material");
     r.require(p + "poisson", "every zone of the model needs its material");
   }
@@ -326,7 +356,7 @@ MaterialSpec read_material(const Reader& r, mesh::Zone zone) {
   m.residual_friction_angle = r.number(p + "residual_friction_angle");
   // The lining is an elastic liner (no crack elements): its strengths are
   // for the capacity check alone, its friction for its contacts.
-  if (zone == mesh::kLining) {
+  if (liner) {
     m.compressive_strength = r.number_or(p + "compressive_strength", 0);
     return m;
   }
@@ -348,13 +378,31 @@ bool has_ring(const mesh::MeshSpec& m) {
   return false;
 }
 
+// [materials.invert]: the ring's floor part, of a generated horseshoe or
+// arched opening with a lining ring.
+void read_invert_material(const Reader& r, Scene& s) {
+  if (!r.has("materials.invert")) return;
+  const mesh::TunnelSpec& t = s.mesh.tunnel;
+  if (s.mesh.kind != mesh::ModelKind::kTunnel || !has_floor(t) || !(t.lining_thickness > 0))
+    r.fail("materials.invert",
+           "is the lining ring's floor part: it needs a horseshoe or arched tunnel with "
+           "tunnel.lining_thickness > 0; allowed here: no [materials.invert]");
+  if (!r.has("materials.lining"))
+    r.fail("materials.invert", "needs [materials.lining] (the rest of the ring)");
+  s.invert = read_material(r, "invert");
+  if (s.invert->compressive_strength > 0 &&
+      !(s.materials.at(mesh::kLining).compressive_strength > 0))
+    r.fail("materials.invert.compressive_strength",
+           "the ring's capacity check needs materials.lining.compressive_strength too");
+}
+
 bool needs_fracture(const mesh::MeshSpec& m) {
   return m.kind == mesh::ModelKind::kUcs || m.kind == mesh::ModelKind::kBrazilian ||
          (m.kind == mesh::ModelKind::kTunnel && m.tunnel.fracture_zone > 0);
 }
 
 void read_materials(const Reader& r, Scene& s) {
-  s.materials[mesh::kRock] = read_material(r, mesh::kRock);
+  s.materials[mesh::kRock] = read_material(r, mesh::zone_name(mesh::kRock));
   if (needs_fracture(s.mesh)) {
     for (const char* key :
          {"tensile_strength", "cohesion", "fracture_energy_I", "fracture_energy_II"})
@@ -362,9 +410,10 @@ void read_materials(const Reader& r, Scene& s) {
   }
   const bool tunnel_like =
       s.mesh.kind == mesh::ModelKind::kTunnel || s.mesh.kind == mesh::ModelKind::kMshFile;
-  if (tunnel_like) s.materials[mesh::kCore] = read_material(r, mesh::kCore);
+  if (tunnel_like) s.materials[mesh::kCore] = read_material(r, mesh::zone_name(mesh::kCore));
   if (has_ring(s.mesh) || r.has("materials.lining"))
-    s.materials[mesh::kLining] = read_material(r, mesh::kLining);
+    s.materials[mesh::kLining] = read_material(r, mesh::zone_name(mesh::kLining));
+  read_invert_material(r, s);
 }
 
 void read_insitu(const Reader& r, Scene& s) {
@@ -415,6 +464,10 @@ void read_insitu(const Reader& r, Scene& s) {
   }
   if (in.lining_active && !s.materials.count(mesh::kLining))
     r.fail("insitu.lining_active", "the model has no lining ring (tunnel.lining_thickness = 0)");
+  if (in.lining_active && s.invert)
+    r.fail("insitu.lining_active",
+           "the implicit stage solves the ring with materials.lining alone; allowed: false "
+           "with [materials.invert]");
   if (in.continuum == "mohr_coulomb" &&
       in.dilation_angle > s.materials.at(mesh::kRock).friction_angle)
     r.fail("insitu.dilation_angle", "must not exceed materials.rock.friction_angle");
@@ -575,7 +628,7 @@ std::string misplaced(const Scene& s, const std::string& what, double x, double 
            ", " + num(d.center_y + d.height / 2) + ")";
   const mesh::TunnelSpec& t = s.mesh.tunnel;
   if (s.mesh.kind == mesh::ModelKind::kTunnel &&
-      mesh::inside_outline(mesh::tunnel_outline(t, t.lining_thickness), x, y))
+      mesh::inside_outline(mesh::lining_inner_outline(t), x, y))
     return at + "lies inside the opening, in the excavated core; allowed: a point in the rock " +
            "or the lining";
   return "";

@@ -96,7 +96,7 @@ using namespace schema;
 void add_material(std::vector<KeySpec>& s, const std::string& name, const std::string& role,
                   const std::string& inherit = "") {
   const std::string p = "materials." + name + ".";
-  const bool cracks = name != "lining";
+  const bool cracks = name != "lining" && name != "invert";
   const auto def = [&](const char* key, const char* value) {
     return inherit.empty() ? std::string(value) : inherit + key;
   };
@@ -246,6 +246,11 @@ void add_model(std::vector<KeySpec>& s) {
                            "then crown to the invert's lowest point."));
   s.push_back(non_negative("tunnel.lining_thickness", "m", "0",
                            "Thickness of the lining ring inside the tunnel boundary; 0: none."));
+  s.push_back(non_negative("tunnel.invert_thickness", "m", "tunnel.lining_thickness",
+                           "Horseshoe and arched only: thickness of the lining ring's floor part "
+                           "(the flat floor or the curved invert, below the walls' feet), e.g. "
+                           "a cast invert arch thicker than the shotcrete; its material is "
+                           "[materials.invert]."));
   s.push_back(non_negative("tunnel.fracture_zone", "m", "0",
                            "Crack elements are allowed within this distance outside the opening; "
                            "0: elastic rock everywhere."));
@@ -639,6 +644,20 @@ std::vector<KeySpec> build_schema() {
                         "the tensile limit (0 when not given: no tension); not given: no check.");
   fc.default_doc = "none: no capacity check";
   s.push_back(fc);
+  add_material(s, "invert",
+               "lining ring's floor part (an invert arch, e.g. cast concrete under a shotcrete "
+               "arch; horseshoe and arched openings; the whole section defaults to "
+               "[materials.lining])",
+               "materials.lining.");
+  s.push_back(positive("materials.invert.tensile_strength", "Pa",
+                       "materials.lining.tensile_strength",
+                       "Tensile strength of the invert's section for the ring's capacity check."));
+  KeySpec fci = positive("materials.invert.compressive_strength", "Pa",
+                         "materials.lining.compressive_strength",
+                         "Uniaxial compressive strength of the invert's section for the ring's "
+                         "capacity check (segments of the floor part; needs "
+                         "materials.lining.compressive_strength).");
+  s.push_back(fci);
   add_insitu(s);
   add_engine(s);
   add_support(s);

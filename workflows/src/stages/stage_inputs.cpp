@@ -5,6 +5,7 @@
 
 #include "rockfdem/coupling/fdem_model.hpp"
 #include "rockfdem/error.hpp"
+#include "scene/lining_parts.hpp"
 
 namespace rockfdem::workflows {
 namespace {
@@ -98,6 +99,23 @@ fdem::BoltSteel steel_of(const SteelSettings& b) {
   return steel;
 }
 
+// The lining has no crack elements of its own, and its tensile strength is
+// the capacity check's: a crack element between it and the rock (the bond,
+// before the lining stage gives it [lining_interface]) is the rock's.
+void as_liner(fdem::Material& m) { m.tensile_strength = m.cohesion = 10 * m.young; }
+
+// The ring's floor part takes [materials.invert]: one more material.
+void add_invert_material(const Scene& s, const mesh::Mesh& m, fdem::ModelInput& in) {
+  if (!s.invert) return;
+  fdem::Material invert = engine_material(*s.invert, s.engine);
+  as_liner(invert);
+  const int index = int(in.materials.size());
+  in.materials.push_back(invert);
+  const std::vector<char> part = invert_triangles(s, m);
+  for (std::size_t t = 0; t < part.size(); ++t)
+    if (part[t]) in.material[t] = index;
+}
+
 }  // namespace
 
 std::map<mesh::Zone, fdem::Material> engine_materials(const Scene& s) {
@@ -106,10 +124,7 @@ std::map<mesh::Zone, fdem::Material> engine_materials(const Scene& s) {
   // The lining has no crack elements of its own, and its tensile strength is
   // the capacity check's: a crack element between it and the rock (the
   // bond, before the lining stage gives it [lining_interface]) is the rock's.
-  if (out.count(mesh::kLining)) {
-    fdem::Material& l = out[mesh::kLining];
-    l.tensile_strength = l.cohesion = 10 * l.young;
-  }
+  if (out.count(mesh::kLining)) as_liner(out[mesh::kLining]);
   return out;
 }
 
@@ -205,6 +220,7 @@ fdem::ModelInput engine_input(const Scene& scene, const mesh::Mesh& m,
     materials[mesh::kCore].young *= handoff.alpha;
   fdem::ModelInput in = coupling::model_input(
       m, materials, scene.plane_stress ? fdem::Plane::kStress : fdem::Plane::kStrain);
+  add_invert_material(scene, m, in);
   coupling::apply_insitu(handoff, in);
   in.boundary_conditions = box_conditions(scene.insitu);
   // The weight the in-situ gradient holds (scene_build.cpp, relate_gravity).

@@ -20,6 +20,9 @@ struct TunnelSpec {
   double invert_rise =
       0;  ///< horseshoe, arched: depth of a curved invert below the walls' feet; 0: flat floor
   double lining_thickness = 0;  ///< 0: no lining ring
+  /// Thickness of the ring's floor part (flat floor or invert arch), for
+  /// horseshoe and arched openings; 0: lining_thickness.
+  double invert_thickness = 0;
   double fracture_zone =
       0;  ///< crack elements allowed within this distance outside the opening; 0: none
 };

@@ -32,6 +32,15 @@ struct Outline {
 /// in by `inset`. Throws rockfdem::InputError when the inset leaves nothing.
 Outline tunnel_outline(const TunnelSpec& t, double inset = 0);
 
+/// The lining ring's inner boundary: the opening moved in by the lining
+/// thickness, its floor (flat or the invert arc) by the invert thickness.
+Outline lining_inner_outline(const TunnelSpec& t);
+
+/// The ring's floor part (the invert) lies below this height [m]: the feet
+/// of the inner boundary's walls. -infinity for openings without a floor
+/// part (circular) or without a lining.
+double invert_part_top(const TunnelSpec& t);
+
 /// Exact area enclosed by a closed outline [m^2].
 double outline_area(const Outline& o);
 

@@ -13,6 +13,7 @@
 #include <array>
 #include <cstdint>
 #include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -184,6 +185,9 @@ struct Scene {
   bool plane_stress{};
   mesh::MeshSpec mesh;
   std::map<mesh::Zone, MaterialSpec> materials;  ///< rock, core, lining as present
+  /// [materials.invert]: the lining ring's floor part (an invert arch of
+  /// its own material); none: the lining's material all round.
+  std::optional<MaterialSpec> invert;
   InsituSettings insitu;
   EngineSettings engine;
   std::vector<StageSpec> stages;  ///< explicit stages after the implicit one (tunnels)
