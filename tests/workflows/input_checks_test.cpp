@@ -61,7 +61,7 @@ TEST(InputChecks, misplaced_bolts_exit_two_naming_the_bolt_and_where_it_is) {
         "starts at (x, y) = (5.46, 21.5) m, 17.7 m outside the excavation boundary"}},
       {"bolt_fan[0].radius=2.0",
        {"--set bolt_fan[0].radius=2.0: makes the scene invalid: ",
-        "bolt 1 of 9 of bolt_fan[0] (15 deg) starts at (x, y) = (1.93, -0.732) m, 3.65 m inside "
+        "bolt 1 of 9 of bolt_fan[0] (15 deg) starts at (x, y) = (1.93, -0.732) m, 3.49 m inside "
         "the excavation boundary; allowed: a collar (start) on the boundary or in the lining (0.2 "
         "m thick), within 0.175 m (mesh.size_near / 2, at least 5 cm)\n"}},
       {"bolt_fan[1].length=40",

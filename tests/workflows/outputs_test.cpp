@@ -103,16 +103,16 @@ class Outputs : public ::testing::Test {
 // A forced dt of 2 ms diverges in the grout stage after the hand-off
 // frame (step 1); it is found at step 4, where the broken count reaches
 // the grout trigger (checked after every step) and a row is written. The summary keeps what is
-// known: the model's counts (the seed tunnel: 16892 triangles, 13 bolts and cables) and the last
-// good state, the one the last frame shows: its steps, dt, time, monitors and state hash; status
-// and diagnostic say why it stopped.
+// known: the model's counts (the seed tunnel with its invert arch: 16284 triangles, 13 bolts and
+// cables) and the last good state, the one the last frame shows: its steps, dt, time, monitors and
+// state hash; status and diagnostic say why it stopped.
 TEST_F(Outputs, failed_tunnel_run_reports_counts_and_the_last_good_state) {
   const nlohmann::json j = failed_summary(kSeed +
                                               " --set engine.dt=0.002 --set "
                                               "'stages[5].max_steps=3000'",
                                           out, "step 4");
-  EXPECT_EQ(j["counts"]["triangles"].get<long>(), 16892);
-  EXPECT_GT(j["counts"]["nodes"].get<long>(), 16892);  // duplicated where cracks may open
+  EXPECT_EQ(j["counts"]["triangles"].get<long>(), 16284);
+  EXPECT_GT(j["counts"]["nodes"].get<long>(), 16284);  // duplicated where cracks may open
   EXPECT_GT(j["counts"]["crack_elements"].get<long>(), 1000);
   EXPECT_EQ(j["counts"]["bolts"].get<long>(), 13);
   // history.csv holds 10 significant digits; it also keeps the row of the
@@ -156,7 +156,7 @@ TEST_F(Outputs, failed_specimen_run_reports_the_last_frame_state) {
 // hand-off state before any explicit step as the last good one.
 TEST_F(Outputs, failure_in_the_handoff_step_reports_the_start_state) {
   const nlohmann::json j = failed_summary(kSeed + " --set engine.dt=1", out, "step 1");
-  EXPECT_EQ(j["counts"]["triangles"].get<long>(), 16892);
+  EXPECT_EQ(j["counts"]["triangles"].get<long>(), 16284);
   EXPECT_EQ(j["steps"].get<long>(), 0);
   // The failed step is no good state: no hand-off step, no null stage list.
   EXPECT_FALSE(j.contains("fdem")) << j["fdem"];
