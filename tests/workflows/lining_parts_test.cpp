@@ -126,6 +126,12 @@ TEST(LiningParts, each_part_is_checked_with_its_own_section) {
   EXPECT_EQ(l["invert_compressive_strength_Pa"].get<double>(), 40e6);
   EXPECT_EQ(l["compressive_strength_Pa"].get<double>(), 20e6);
   EXPECT_NEAR(l["min_safety_factor"].get<double>(), fs_min, 1e-4 * fs_min);
+  // Below 1 in the invert: the run says its support is overstressed, there.
+  ASSERT_LT(fs_min, 1);
+  EXPECT_EQ(j["support"]["verdict"], "overstressed");
+  const std::string line = j["support"]["line"];
+  EXPECT_EQ(line.rfind("support overstressed: lining invert SF ", 0), 0u) << line;
+  EXPECT_NE(rt::read_text(out / "report.md").find("**Support overstressed**"), std::string::npos);
   fs::remove_all(out);
 }
 

@@ -265,6 +265,11 @@ void RunOutputs::finish(const fdem::Engine& e, const mesh::Mesh& m, PhaseTimer& 
   const std::unique_ptr<PlotWriter> plots = curves(e);
   if (lining_forces) summary_.lining.forces = lining_->finish(e, ctx_.output_dir, plots.get());
   if (bolt_results_) bolt_results_->finish(e, summary_, plots.get());
+  summary_.support = support_verdict(summary_.lining, summary_.bolts);
+  if (summary_.support && summary_.support->verdict == "overstressed") {
+    summary_.warnings.push_back(summary_.support->line());
+    if (!ctx_.quiet) std::cerr << "warning: " << summary_.support->line() << '\n';
+  }
   if (plots) {
     tunnel_pictures(*plots, {e, m, scene_, bolts_}, key_points_->node_displacements(e));
     pictures_ = plots->rendered();

@@ -138,6 +138,14 @@ void status(std::ostream& md, const RunRecord& r) {
   if (r.status_reason) md << ": " << *r.status_reason;
   if (r.failure) md << ": " << *r.failure;
   md << "\n\n";
+  if (r.support) {
+    md << "**Support " << r.support->verdict << "**";
+    for (std::size_t i = 0; i < r.support->findings.size(); ++i)
+      md << (i ? "; " : ": ") << r.support->findings[i];
+    md << "\n\n";
+    for (const std::string& n : r.support->notes) md << "- " << n << '\n';
+    if (!r.support->notes.empty()) md << '\n';
+  }
   const std::optional<double> none;
   md << "- steps " << value_text(r.state.steps) << ", simulated time "
      << value_text(r.state.simulated_time) << " s (pseudo-time where masses are "

@@ -268,7 +268,7 @@ void Run::finish() {
     std::cout << "status: " << verdict.status
               << (verdict.message.empty() ? " (every stage met its criteria)"
                                           : " (" + verdict.message + ")")
-              << '\n';
+              << (summary_.support ? "; " + summary_.support->line() : "") << '\n';
 }
 
 // A signal between the implicit phases: nothing to checkpoint yet. The

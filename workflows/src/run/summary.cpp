@@ -421,6 +421,11 @@ nlohmann::json counterpart_json(const CounterpartComparison& c) {
 void add_support(nlohmann::json& j, const RunRecord& r) {
   if (r.bolts) j["bolts"] = bolts_json(*r.bolts);
   if (!r.lining.empty()) j["lining"] = lining_json(r.lining);
+  if (const auto& v = r.support)
+    j["support"] = {{"verdict", v->verdict},
+                    {"findings", v->findings},
+                    {"notes", v->notes},
+                    {"line", v->line()}};
   if (r.resolution)
     j["resolution"] = {{"h_m", r.resolution->h_m},
                        {"l_ch_m", r.resolution->l_ch_m},

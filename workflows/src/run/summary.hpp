@@ -17,6 +17,7 @@
 #include "run/phase_timer.hpp"
 #include "run/run_figures.hpp"
 #include "run/support_figures.hpp"
+#include "run/support_verdict.hpp"
 
 namespace rockfdem::mesh {
 struct Mesh;
@@ -70,7 +71,8 @@ class RunRecord {
   std::vector<GroundReactionPoint> ground_reaction_curve;  ///< empty: not drawn (no key)
   std::optional<std::vector<std::string>> history_stages;  ///< history.csv's stage names
   std::optional<BoltRecord> bolts;
-  LiningRecord lining;  ///< empty: no key
+  LiningRecord lining;                    ///< empty: no key
+  std::optional<SupportVerdict> support;  ///< whether lining and bolts hold; none: no support
   std::optional<ResolutionFigures> resolution;
   std::optional<OuterBoundaryFigures> outer_boundary;
   std::optional<DampingFigures> damping;
