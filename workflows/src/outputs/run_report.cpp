@@ -152,7 +152,8 @@ void status(std::ostream& md, const RunRecord& r) {
      << "scaled)\n- unbalanced-force ratio: "
      << value_text(r.fdem ? r.fdem->unbalanced_ratio_at_start : none)
      << " after the hand-off step, " << value_text(r.fdem ? r.fdem->unbalanced_ratio_at_end : none)
-     << " at the end (equilibrium: below the stage's `ratio`, the key points settled)\n";
+     << " at the end (a stage's equilibrium criterion: below its `ratio`, with the key points "
+        "settled; whether it was met is the status above)\n";
   for (const std::string& w : r.warnings) md << "- warning: " << w << '\n';
 }
 
@@ -323,7 +324,8 @@ std::string report_markdown(const Scene& scene, const RunRecord& record,
   std::ostringstream md;
   md << "# Run report: " << (scene.title.empty() ? scene.source : scene.title) << "\n\n"
      << "Scene `" << scene.source << "`, rockfdem " << version_string() << ", " << record.threads
-     << " threads, state hash `" << record.state.state_hash << "`. Figures in full: summary.json, "
+     << (record.threads == 1 ? " thread" : " threads") << ", state hash `"
+     << record.state.state_hash << "`. Figures in full: summary.json, "
      << "history.csv.\n\n";
   inputs(md, scene, record);
   stages(md, record);
