@@ -19,7 +19,13 @@ int main(int argc, char** argv) {
   workflows::install_early_handlers();  // again: MPI may have set its own
   try {
     const workflows::CommandLine cli = workflows::parse_command_line(argc, argv);
-    return workflows::run_command(cli);
+    const int code = workflows::run_command(cli);
+    // A signal after the command's last check (a study's or run's end,
+    // MPI's finalisation) still ends the process with 128 + signal.
+    workflows::install_closing_handlers();
+    workflows::signal_point("command-end");
+    workflows::throw_if_interrupted("as the command ended; its outputs are written");
+    return code;
   } catch (const workflows::Interrupted& e) {
     std::cerr << "rockfdem: " << e.what() << '\n';  // it says what was written
     return e.exit_code();
