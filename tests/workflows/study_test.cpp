@@ -438,3 +438,42 @@ TEST(Study, a_signal_at_any_moment_of_a_calibration_stops_it) {
   }
   fs::remove_all(out);
 }
+
+// Resume takes every finished status from the variant's folder: completed,
+// not_at_equilibrium (an unreachable ratio), unstable (a span fraction of
+// 1e-6, passed at the first output), refused (engine.dt = 1 s, above the
+// limit) and, with --force-dt, failed. The second invocation runs nothing
+// and rewrites no variant's summary.json.
+TEST(Study, resume_reruns_no_finished_status) {
+  const fs::path out = scratch("resume-statuses"), forced = scratch("resume-failed");
+  const std::string mixed = "sweep " + kScene +
+                            " --vary stages[1].ratio=1e-5,1e-14"
+                            " --vary stages[1].unstable_fraction=0.05,1e-6"
+                            " --vary engine.dt=0,1 -j 1 -q -o " +
+                            out.string();
+  const std::string failing =
+      "sweep " + kScene + " --force-dt --vary engine.dt=1 -j 1 -q -o " + forced.string();
+  for (const auto& [args, dir, n] : {std::tuple{mixed, out, 8}, std::tuple{failing, forced, 1}}) {
+    const Result first = run(args);
+    ASSERT_EQ(first.code, 0) << first.output;
+    std::map<fs::path, fs::file_time_type> written;
+    for (const auto& e : fs::recursive_directory_iterator(dir / "variants"))
+      if (e.path().filename() == "variant.json") written[e.path()] = fs::last_write_time(e.path());
+    EXPECT_EQ(written.size(), std::size_t(n)) << first.output;
+    const Result again = run(args);
+    ASSERT_EQ(again.code, 0) << again.output;
+    EXPECT_TRUE(has(again.output, "0 run now, " + std::to_string(n) + " taken from earlier runs"))
+        << again.output;
+    for (const auto& [path, time] : written) EXPECT_EQ(fs::last_write_time(path), time) << path;
+  }
+  std::set<std::string> statuses;
+  for (const fs::path& dir : {out, forced}) {
+    const auto rows = csv(dir / "sweep.csv");
+    const std::size_t status = column(rows[0], "status");
+    for (std::size_t r = 1; r < rows.size(); ++r) statuses.insert(rows[r][status]);
+  }
+  EXPECT_EQ(statuses, (std::set<std::string>{"completed", "not_at_equilibrium", "unstable",
+                                             "refused", "failed"}));
+  fs::remove_all(out);
+  fs::remove_all(forced);
+}

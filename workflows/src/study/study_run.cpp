@@ -27,8 +27,8 @@ nlohmann::json read_json(const std::string& path) {
 }
 
 bool finished(const std::string& status) {
-  return status == "completed" || status == "not_at_equilibrium" || status == "failed" ||
-         status == "refused";
+  return status == "completed" || status == "not_at_equilibrium" || status == "unstable" ||
+         status == "failed" || status == "refused";
 }
 
 // The earlier result in `dir`, when it is a finished run of the same identity.

@@ -47,7 +47,9 @@ void stop_study_if_interrupted(const CommandLine& study, const std::string& when
 
 /// Runs the variant (-j threads of `study`, quietly, its folder claimed
 /// with --force) unless its folder's variant.json records a finished run of
-/// the same scene and settings. Checks for a signal first. A numerical failure or a refusal of the
+/// the same scene and settings (a finished status: completed,
+/// not_at_equilibrium, unstable, failed or refused). Checks for a signal
+/// first. A numerical failure or a refusal of the
 /// variant's scene (an engine.dt this material cannot hold) is a result;
 /// an interrupt and other errors propagate.
 VariantResult run_variant(const CommandLine& study, const Variant& v);
