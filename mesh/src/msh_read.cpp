@@ -5,6 +5,7 @@
 #include <gmsh.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <fstream>
@@ -12,6 +13,7 @@
 #include <numeric>
 #include <set>
 #include <string>
+#include <tuple>
 
 #include "gmsh_model.hpp"
 #include "gmsh_session.hpp"
@@ -187,6 +189,36 @@ std::vector<std::size_t> sort_triangles_by_tag(const std::vector<std::size_t>& t
   return sorted;
 }
 
+// gmsh 2.x writes an element once per physical group it is in (MSH 2.2 has
+// one physical tag per element line), each copy under the next element
+// number: a surface in a zone group and in the fracture group holds every
+// triangle twice. Copies (the same three nodes in the same surface, from
+// index `first` on) are one triangle; the lowest element number stands.
+// The same nodes in two surfaces are two triangles, and check_folds
+// refuses them.
+void drop_copies(std::size_t first, std::vector<std::size_t>& tags, Mesh& m) {
+  using Key = std::tuple<std::array<int, 3>, std::size_t, std::size_t>;  // nodes, tag, index
+  std::vector<Key> keys;
+  for (std::size_t i = first; i < m.triangles.size(); ++i) {
+    std::array<int, 3> nodes = m.triangles[i];
+    std::sort(nodes.begin(), nodes.end());
+    keys.emplace_back(nodes, tags[i - first], i);
+  }
+  std::sort(keys.begin(), keys.end());
+  std::vector<char> copy(m.triangles.size() - first, 0);
+  for (std::size_t k = 1; k < keys.size(); ++k)
+    if (std::get<0>(keys[k]) == std::get<0>(keys[k - 1])) copy[std::get<2>(keys[k]) - first] = 1;
+  std::size_t kept = first;
+  for (std::size_t i = first; i < m.triangles.size(); ++i) {
+    if (copy[i - first]) continue;
+    m.triangles[kept] = m.triangles[i], m.zone[kept] = m.zone[i];
+    m.fracture[kept] = m.fracture[i], tags[kept - first] = tags[i - first];
+    ++kept;
+  }
+  m.triangles.resize(kept), m.zone.resize(kept), m.fracture.resize(kept);
+  tags.resize(kept - first);
+}
+
 // Returns the triangles' element tags, in the record's order.
 std::vector<std::size_t> read_triangles(const Reader& r, const TagIndex& index, Mesh& m) {
   const auto present = r.groups(2);
@@ -210,7 +242,9 @@ std::vector<std::size_t> read_triangles(const Reader& r, const TagIndex& index, 
         r.fail("surface " + std::to_string(s) + " is in zone groups '" + zone_of_surface[s] +
                "' and '" + name + "'; each surface may be in one zone group only");
       const bool flag = fracture_group.empty() ? zone == kRock : fractured.count(s) > 0;
-      const auto tags = detail::append_triangles(s, zone, flag ? 1 : 0, index, m);
+      const std::size_t first = m.n_triangles();
+      auto tags = detail::append_triangles(s, zone, flag ? 1 : 0, index, m);
+      drop_copies(first, tags, m);
       element_tags.insert(element_tags.end(), tags.begin(), tags.end());
     }
   }
@@ -227,10 +261,18 @@ std::vector<std::size_t> read_triangles(const Reader& r, const TagIndex& index, 
   return sort_triangles_by_tag(element_tags, m);
 }
 
+// A line in two edge groups is an edge of each; its copies within one
+// group (gmsh 2.x writes a line once per physical group, as triangles
+// above) are one edge.
 void read_edges(const Reader& r, const TagIndex& index, Mesh& m) {
   const auto present = r.groups(1);
   for (const auto& [name, tag] : edge_groups_to_read(r.spec, present))
     for (int c : r.entities(1, name, present, "edge")) detail::append_edges(c, tag, index, m);
+  std::set<std::tuple<int, int, int>> seen;
+  std::vector<TaggedEdge> kept;
+  for (const TaggedEdge& e : m.edges)
+    if (seen.emplace(std::min(e.a, e.b), std::max(e.a, e.b), e.tag).second) kept.push_back(e);
+  m.edges.swap(kept);
 }
 
 // Zero-area triangles cannot carry stress; clockwise ones are only
