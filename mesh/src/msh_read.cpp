@@ -21,6 +21,7 @@
 #include "msh_names.hpp"
 #include "rockfdem/error.hpp"
 #include "rockfdem/mesh/msh_io.hpp"
+#include "rockfdem/printable.hpp"
 
 namespace rockfdem::mesh {
 namespace {
@@ -30,8 +31,9 @@ using detail::TagIndex;
 struct Reader {
   const MshFileSpec& spec;
 
+  // Group names and gmsh's messages come from the file: shown as escapes.
   [[noreturn]] void fail(const std::string& what) const {
-    throw InputError(spec.path + ": " + what);
+    throw InputError(printable(spec.path + ": " + what));
   }
 
   void open() const {

@@ -259,6 +259,21 @@ TEST(MshUserFile, quadrangle_is_refused) {
   expect_refused("rockfdem_quad.msh", square_msh(kNodes, "1\n1 3 2 7 1 1 2 3 4\n"), "gmsh type 3");
 }
 
+// A group's name comes from the file: its control bytes (an ESC sequence
+// that would clear the screen) are shown as escapes in the message.
+TEST(MshUserFile, control_bytes_of_a_group_name_are_escaped_in_the_message) {
+  std::string text = square_msh(kNodes, kElements);
+  text.replace(text.find("granite"), 7, "gran\x1b[2J\x7fite");
+  expect_refused("rockfdem_esc.msh", text, "'gran\\x1b[2J\\x7fite'");
+  MshFileSpec spec = kGroups;
+  spec.path = temp_path("rockfdem_esc.msh");
+  try {
+    read_msh(spec);
+  } catch (const InputError& e) {
+    EXPECT_EQ(std::string(e.what()).find('\x1b'), std::string::npos) << e.what();
+  }
+}
+
 TEST(MshUserFile, missing_physical_group_is_refused) {
   MshFileSpec spec = kGroups;
   spec.zone_groups = {{"basalt", kRock}};

@@ -558,6 +558,18 @@ TEST(CheckpointRead, forged_run_states_name_the_checkpoint_and_the_field) {
        "field 'bolts.installed_stress' = [[]] is not an array of 2 entries, one per bolt"},
       {"/start_ratio", "0.2", "field 'start_ratio' = \"0.2\" is not a number"},
       {"/stages/stage_changes/deep", deep, "nested more than 32 levels deep"},
+      // Strings that reach the terminal, report.md or a CSV file raw.
+      {"/stages/unstable", "closing\x1b[2J",
+       "field 'stages.unstable' = \"closing\\u001b[2J\" is not a string without control "
+       "characters"},
+      {"/outputs/bolts",
+       {{"csv", "step,time_s\n1,\x1b]0;pwned\x07\n"}, {"frames", nlohmann::json::array()}},
+       "field 'outputs.bolts.csv' = \"step,time_s\\n1,\\u001b]0;pwned\\u0007\\n\" is not text "
+       "without control characters but line breaks"},
+      {"/outputs/bolts",
+       {{"csv", "step\n"},
+        {"frames", nlohmann::json::array({nlohmann::json::array({0.0, "../x"})})}},
+       "field 'outputs.bolts.frames[0][1]' = \"../x\" is not a plain file name"},
   };
   for (const Case& c : cases) {
     nlohmann::json run = valid_run_state();
