@@ -8,6 +8,7 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <cstdio>
 #include <fstream>
 #include <new>
 #include <numeric>
@@ -87,9 +88,12 @@ struct Reader {
       fail("no 3-node triangles; the mesh must be 2D and made of 3-node triangles");
   }
 
-  // Nodes sorted by tag, all finite, no tag twice, no two at one position.
+  // Nodes sorted by tag, all finite, in one plane parallel to x-y, no tag
+  // twice, no two at one position.
   std::vector<std::size_t> read_nodes(Mesh& m) const {
-    std::vector<std::size_t> tags = detail::read_gmsh_nodes(m);
+    std::vector<double> z;
+    std::vector<std::size_t> tags = detail::read_gmsh_nodes(m, &z);
+    check_planar(m, z, tags);
     std::vector<std::size_t> order(tags.size());
     std::iota(order.begin(), order.end(), 0);
     std::sort(order.begin(), order.end(), [&](auto a, auto b) { return tags[a] < tags[b]; });
@@ -105,6 +109,39 @@ struct Reader {
     m.x.swap(sorted.x), m.y.swap(sorted.y);
     check_coincident(m, sorted_tags);
     return sorted_tags;
+  }
+
+  // The model is the x-y plane: x and y are read, z dropped. That is exact
+  // only when every node has the same z (gmsh's 2D meshes: 0); a node off
+  // that plane (a 3D or tilted mesh) would be moved onto it without a word,
+  // changing lengths and areas, so it is refused. Round-off is allowed:
+  // 1e-9 of the mesh's extent in x and y.
+  void check_planar(const Mesh& m, const std::vector<double>& z,
+                    const std::vector<std::size_t>& tags) const {
+    if (z.empty()) return;
+    double extent = 0;
+    for (std::size_t i = 0; i < z.size(); ++i)
+      extent = std::max({extent, std::abs(m.x[i] - m.x[0]), std::abs(m.y[i] - m.y[0])});
+    std::size_t first = 0, off = z.size();  // off: the lowest tag off the plane
+    for (std::size_t i = 0; i < z.size(); ++i) {
+      if (!std::isfinite(z[i]))
+        fail("node " + std::to_string(tags[i]) +
+             " has a z coordinate that is not a finite number; every coordinate must be finite");
+      if (tags[i] < tags[first]) first = i;
+    }
+    for (std::size_t i = 0; i < z.size(); ++i)
+      if (std::abs(z[i] - z[first]) > 1e-9 * extent && (off == z.size() || tags[i] < tags[off]))
+        off = i;
+    if (off == z.size()) return;
+    const auto text = [](double v) {
+      char buf[32];
+      std::snprintf(buf, sizeof buf, "%.6g", v);
+      return std::string(buf);
+    };
+    fail("node " + std::to_string(tags[off]) + " has z = " + text(z[off]) + " and node " +
+         std::to_string(tags[first]) + " z = " + text(z[first]) +
+         ": the mesh is not flat; allowed: every node at one z (a 2D mesh in the x-y plane, "
+         "usually z = 0), since z is dropped");
   }
 
   void check_coincident(const Mesh& m, const std::vector<std::size_t>& tags) const {

@@ -215,6 +215,19 @@ TEST(MshUserFile, nan_coordinate_is_refused) {
                  square_msh("4\n1 0 0 0\n2 1 0 0\n3 nan 1 0\n4 0 1 0\n", kElements), "node 3");
 }
 
+// z is dropped: a node off the mesh's plane (here z = 5 among z = 0) would
+// be moved onto it without a word. Refused naming the node and both z; a
+// mesh whose every node has one z (a plane parallel to x-y) reads exactly.
+TEST(MshUserFile, node_off_the_plane_is_refused) {
+  expect_refused("rockfdem_z.msh", square_msh("4\n1 0 0 0\n2 1 0 0\n3 1 1 5\n4 0 1 0\n", kElements),
+                 "node 3 has z = 5 and node 1 z = 0: the mesh is not flat; allowed: every node "
+                 "at one z");
+  const Mesh m = read_text("rockfdem_z5.msh",
+                           square_msh("4\n1 0 0 5\n2 1 0 5\n3 1 1 5\n4 0 1 5\n", kElements));
+  EXPECT_EQ(m.n_triangles(), 2u);
+  EXPECT_EQ(m.x, (std::vector<double>{0, 1, 1, 0}));
+}
+
 TEST(MshUserFile, duplicate_node_is_refused) {
   expect_refused("rockfdem_dup.msh",
                  square_msh("5\n1 0 0 0\n2 1 0 0\n3 1 1 0\n4 0 1 0\n5 1 1 0\n",
