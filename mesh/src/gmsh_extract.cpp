@@ -35,15 +35,17 @@ int TagIndex::operator()(std::size_t tag) const {
   return it == sparse_.end() ? -1 : it->second;
 }
 
-std::vector<std::size_t> read_gmsh_nodes(Mesh& m) {
+std::vector<std::size_t> read_gmsh_nodes(Mesh& m, std::vector<double>* z) {
   std::vector<std::size_t> tags;
   std::vector<double> xyz, param;
   gmsh::model::mesh::getNodes(tags, xyz, param, -1, -1, false, false);
   m.x.resize(tags.size());
   m.y.resize(tags.size());
+  if (z) z->resize(tags.size());
   for (std::size_t i = 0; i < tags.size(); ++i) {
     m.x[i] = xyz[3 * i];
     m.y[i] = xyz[3 * i + 1];
+    if (z) (*z)[i] = xyz[3 * i + 2];
   }
   return tags;
 }

@@ -66,8 +66,9 @@ class TagIndex {
   std::size_t n_duplicates_ = 0, first_duplicate_ = 0;
 };
 
-/// All nodes of the current gmsh model into m.x, m.y; returns their tags.
-std::vector<std::size_t> read_gmsh_nodes(Mesh& m);
+/// All nodes of the current gmsh model into m.x, m.y (and their z into
+/// `z` where given); returns their tags.
+std::vector<std::size_t> read_gmsh_nodes(Mesh& m, std::vector<double>* z = nullptr);
 /// Appends the 3-node triangles of surface `s` (indices into m.x) with zone
 /// and fracture flag; returns their gmsh element tags. Throws
 /// std::runtime_error naming the type when `s` holds other 2D elements.

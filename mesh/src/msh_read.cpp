@@ -5,13 +5,16 @@
 #include <gmsh.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdint>
+#include <cstdio>
 #include <fstream>
 #include <new>
 #include <numeric>
 #include <set>
 #include <string>
+#include <tuple>
 
 #include "gmsh_model.hpp"
 #include "gmsh_session.hpp"
@@ -19,6 +22,7 @@
 #include "msh_names.hpp"
 #include "rockfdem/error.hpp"
 #include "rockfdem/mesh/msh_io.hpp"
+#include "rockfdem/printable.hpp"
 
 namespace rockfdem::mesh {
 namespace {
@@ -28,8 +32,9 @@ using detail::TagIndex;
 struct Reader {
   const MshFileSpec& spec;
 
+  // Group names and gmsh's messages come from the file: shown as escapes.
   [[noreturn]] void fail(const std::string& what) const {
-    throw InputError(spec.path + ": " + what);
+    throw InputError(printable(spec.path + ": " + what));
   }
 
   void open() const {
@@ -83,9 +88,12 @@ struct Reader {
       fail("no 3-node triangles; the mesh must be 2D and made of 3-node triangles");
   }
 
-  // Nodes sorted by tag, all finite, no tag twice, no two at one position.
+  // Nodes sorted by tag, all finite, in one plane parallel to x-y, no tag
+  // twice, no two at one position.
   std::vector<std::size_t> read_nodes(Mesh& m) const {
-    std::vector<std::size_t> tags = detail::read_gmsh_nodes(m);
+    std::vector<double> z;
+    std::vector<std::size_t> tags = detail::read_gmsh_nodes(m, &z);
+    check_planar(m, z, tags);
     std::vector<std::size_t> order(tags.size());
     std::iota(order.begin(), order.end(), 0);
     std::sort(order.begin(), order.end(), [&](auto a, auto b) { return tags[a] < tags[b]; });
@@ -101,6 +109,39 @@ struct Reader {
     m.x.swap(sorted.x), m.y.swap(sorted.y);
     check_coincident(m, sorted_tags);
     return sorted_tags;
+  }
+
+  // The model is the x-y plane: x and y are read, z dropped. That is exact
+  // only when every node has the same z (gmsh's 2D meshes: 0); a node off
+  // that plane (a 3D or tilted mesh) would be moved onto it without a word,
+  // changing lengths and areas, so it is refused. Round-off is allowed:
+  // 1e-9 of the mesh's extent in x and y.
+  void check_planar(const Mesh& m, const std::vector<double>& z,
+                    const std::vector<std::size_t>& tags) const {
+    if (z.empty()) return;
+    double extent = 0;
+    for (std::size_t i = 0; i < z.size(); ++i)
+      extent = std::max({extent, std::abs(m.x[i] - m.x[0]), std::abs(m.y[i] - m.y[0])});
+    std::size_t first = 0, off = z.size();  // off: the lowest tag off the plane
+    for (std::size_t i = 0; i < z.size(); ++i) {
+      if (!std::isfinite(z[i]))
+        fail("node " + std::to_string(tags[i]) +
+             " has a z coordinate that is not a finite number; every coordinate must be finite");
+      if (tags[i] < tags[first]) first = i;
+    }
+    for (std::size_t i = 0; i < z.size(); ++i)
+      if (std::abs(z[i] - z[first]) > 1e-9 * extent && (off == z.size() || tags[i] < tags[off]))
+        off = i;
+    if (off == z.size()) return;
+    const auto text = [](double v) {
+      char buf[32];
+      std::snprintf(buf, sizeof buf, "%.6g", v);
+      return std::string(buf);
+    };
+    fail("node " + std::to_string(tags[off]) + " has z = " + text(z[off]) + " and node " +
+         std::to_string(tags[first]) + " z = " + text(z[first]) +
+         ": the mesh is not flat; allowed: every node at one z (a 2D mesh in the x-y plane, "
+         "usually z = 0), since z is dropped");
   }
 
   void check_coincident(const Mesh& m, const std::vector<std::size_t>& tags) const {
@@ -187,6 +228,36 @@ std::vector<std::size_t> sort_triangles_by_tag(const std::vector<std::size_t>& t
   return sorted;
 }
 
+// gmsh 2.x writes an element once per physical group it is in (MSH 2.2 has
+// one physical tag per element line), each copy under the next element
+// number: a surface in a zone group and in the fracture group holds every
+// triangle twice. Copies (the same three nodes in the same surface, from
+// index `first` on) are one triangle; the lowest element number stands.
+// The same nodes in two surfaces are two triangles, and check_folds
+// refuses them.
+void drop_copies(std::size_t first, std::vector<std::size_t>& tags, Mesh& m) {
+  using Key = std::tuple<std::array<int, 3>, std::size_t, std::size_t>;  // nodes, tag, index
+  std::vector<Key> keys;
+  for (std::size_t i = first; i < m.triangles.size(); ++i) {
+    std::array<int, 3> nodes = m.triangles[i];
+    std::sort(nodes.begin(), nodes.end());
+    keys.emplace_back(nodes, tags[i - first], i);
+  }
+  std::sort(keys.begin(), keys.end());
+  std::vector<char> copy(m.triangles.size() - first, 0);
+  for (std::size_t k = 1; k < keys.size(); ++k)
+    if (std::get<0>(keys[k]) == std::get<0>(keys[k - 1])) copy[std::get<2>(keys[k]) - first] = 1;
+  std::size_t kept = first;
+  for (std::size_t i = first; i < m.triangles.size(); ++i) {
+    if (copy[i - first]) continue;
+    m.triangles[kept] = m.triangles[i], m.zone[kept] = m.zone[i];
+    m.fracture[kept] = m.fracture[i], tags[kept - first] = tags[i - first];
+    ++kept;
+  }
+  m.triangles.resize(kept), m.zone.resize(kept), m.fracture.resize(kept);
+  tags.resize(kept - first);
+}
+
 // Returns the triangles' element tags, in the record's order.
 std::vector<std::size_t> read_triangles(const Reader& r, const TagIndex& index, Mesh& m) {
   const auto present = r.groups(2);
@@ -210,7 +281,9 @@ std::vector<std::size_t> read_triangles(const Reader& r, const TagIndex& index, 
         r.fail("surface " + std::to_string(s) + " is in zone groups '" + zone_of_surface[s] +
                "' and '" + name + "'; each surface may be in one zone group only");
       const bool flag = fracture_group.empty() ? zone == kRock : fractured.count(s) > 0;
-      const auto tags = detail::append_triangles(s, zone, flag ? 1 : 0, index, m);
+      const std::size_t first = m.n_triangles();
+      auto tags = detail::append_triangles(s, zone, flag ? 1 : 0, index, m);
+      drop_copies(first, tags, m);
       element_tags.insert(element_tags.end(), tags.begin(), tags.end());
     }
   }
@@ -227,10 +300,18 @@ std::vector<std::size_t> read_triangles(const Reader& r, const TagIndex& index, 
   return sort_triangles_by_tag(element_tags, m);
 }
 
+// A line in two edge groups is an edge of each; its copies within one
+// group (gmsh 2.x writes a line once per physical group, as triangles
+// above) are one edge.
 void read_edges(const Reader& r, const TagIndex& index, Mesh& m) {
   const auto present = r.groups(1);
   for (const auto& [name, tag] : edge_groups_to_read(r.spec, present))
     for (int c : r.entities(1, name, present, "edge")) detail::append_edges(c, tag, index, m);
+  std::set<std::tuple<int, int, int>> seen;
+  std::vector<TaggedEdge> kept;
+  for (const TaggedEdge& e : m.edges)
+    if (seen.emplace(std::min(e.a, e.b), std::max(e.a, e.b), e.tag).second) kept.push_back(e);
+  m.edges.swap(kept);
 }
 
 // Zero-area triangles cannot carry stress; clockwise ones are only

@@ -3,8 +3,11 @@
 // InputError that names the file.
 #include "rockfdem/mesh/msh_io.hpp"
 
+#include <gmsh.h>
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <array>
 #include <cstdio>
 #include <fstream>
 #include <iostream>
@@ -48,6 +51,53 @@ TEST(MshRoundTrip, written_tunnel_reads_back_identical) {
   for (const TaggedEdge& e : m.edges) a.insert({e.a, e.b, e.tag});
   for (const TaggedEdge& e : r.edges) b.insert({e.a, e.b, e.tag});
   EXPECT_EQ(a, b);
+}
+
+// The same tunnel written by gmsh as MSH 2.2 (Mesh.SaveAll = 0, as gmsh 2.x
+// wrote every file): each triangle of the fracture zone comes twice, once
+// under 'rock' and once under 'fracture', each curve's lines once per edge
+// group. It reads as the MSH 4.1 file does: the same triangles, zones,
+// fracture flags and edges (it was refused as "triangles ... overlap").
+TEST(MshRoundTrip, gmsh_msh22_with_a_triangle_per_physical_group_reads_as_msh41) {
+  MeshSpec s;
+  s.tunnel.shape = TunnelShape::kCircular;
+  s.tunnel.radius = 3, s.tunnel.lining_thickness = 0.3;
+  s.tunnel.fracture_zone = 1;
+  s.domain = {24, 24, 0, 0};
+  s.size.size_near = 0.6, s.size.size_far = 3;
+  const std::string v41 = temp_path("rockfdem_v41.msh"), v22 = temp_path("rockfdem_v22.msh");
+  write_msh(build_mesh(s), v41);
+  gmsh::initialize();
+  gmsh::option::setNumber("General.Terminal", 0);
+  gmsh::open(v41);
+  gmsh::option::setNumber("Mesh.MshFileVersion", 2.2);
+  gmsh::option::setNumber("Mesh.SaveAll", 0);
+  gmsh::write(v22);
+  gmsh::finalize();
+  std::ifstream in(v22);
+  std::string line;
+  std::getline(in, line), std::getline(in, line);
+  ASSERT_EQ(line, "2.2 0 8");
+  const Mesh a = read_msh({v41, {}, {}, ""}), b = read_msh({v22, {}, {}, ""});
+  ASSERT_GT(std::count(a.fracture.begin(), a.fracture.end(), 1), 0);
+  EXPECT_EQ(b.x, a.x);
+  EXPECT_EQ(b.y, a.y);
+  // gmsh numbers the copies anew, so the triangles come in another order.
+  const auto triangles = [](const Mesh& m) {
+    std::multiset<std::tuple<std::array<int, 3>, int, int>> out;
+    for (std::size_t t = 0; t < m.n_triangles(); ++t) {
+      std::array<int, 3> v = m.triangles[t];
+      std::rotate(v.begin(), std::min_element(v.begin(), v.end()), v.end());  // same turn
+      out.insert({v, m.zone[t], m.fracture[t]});
+    }
+    return out;
+  };
+  EXPECT_EQ(b.n_triangles(), a.n_triangles());
+  EXPECT_TRUE(triangles(b) == triangles(a));
+  std::multiset<std::tuple<int, int, int>> ea, eb;
+  for (const TaggedEdge& e : a.edges) ea.insert({std::min(e.a, e.b), std::max(e.a, e.b), e.tag});
+  for (const TaggedEdge& e : b.edges) eb.insert({std::min(e.a, e.b), std::max(e.a, e.b), e.tag});
+  EXPECT_EQ(eb, ea);
 }
 
 TEST(MshRoundTrip, unwritable_path_is_an_error_and_leaves_nothing) {
@@ -108,6 +158,37 @@ TEST(MshUserFile, clockwise_triangle_is_turned) {
   for (std::size_t t = 0; t < m.n_triangles(); ++t) EXPECT_NEAR(signed_area(m, t), 0.5, 1e-15);
 }
 
+// gmsh 2.x writes an element once per physical group it is in (MSH 2.2 has
+// one physical tag per element line): a surface in the zone group
+// 'granite' and the group 'fracture' gives every triangle twice, same
+// nodes, same surface, the second copy under the next element number (and
+// a curve in two edge groups each line twice). That is one mesh of two
+// triangles, every one in the fracture zone, not a mesh folded over
+// itself (which it was refused as).
+TEST(MshUserFile, triangle_written_once_per_physical_group_reads_once) {
+  const std::string text =
+      "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n"
+      "$PhysicalNames\n4\n1 1 \"base\"\n1 2 \"ground\"\n2 7 \"granite\"\n"
+      "2 9 \"fracture\"\n$EndPhysicalNames\n$Nodes\n" +
+      kNodes +
+      "$EndNodes\n$Elements\n6\n1 1 2 1 1 1 2\n2 1 2 2 1 1 2\n3 2 2 7 1 1 2 3\n"
+      "4 2 2 9 1 1 2 3\n5 2 2 7 1 1 3 4\n6 2 2 9 1 1 3 4\n$EndElements\n";
+  MshFileSpec spec{temp_path("rockfdem_per_group.msh"),
+                   {{"granite", kRock}},
+                   {{"base", kBottom}, {"ground", kTop}},
+                   "fracture"};
+  write_text(spec.path, text);
+  const Mesh m = read_msh(spec);
+  EXPECT_EQ(m.n_triangles(), 2u);
+  EXPECT_EQ(m.n_vertices(), 4u);
+  EXPECT_EQ(m.fracture, (std::vector<std::uint8_t>{1, 1}));
+  EXPECT_EQ(m.zone, (std::vector<int>{kRock, kRock}));
+  ASSERT_EQ(m.edges.size(), 2u);  // the line once per edge group it is in
+  std::set<int> tags{m.edges[0].tag, m.edges[1].tag};
+  EXPECT_EQ(tags, (std::set<int>{kBottom, kTop}));
+  for (std::size_t t = 0; t < m.n_triangles(); ++t) EXPECT_NEAR(signed_area(m, t), 0.5, 1e-15);
+}
+
 // The error must be an InputError naming the file and containing `detail`.
 void expect_refused(const std::string& name, const std::string& text, const std::string& detail,
                     MshFileSpec spec = kGroups) {
@@ -132,6 +213,19 @@ TEST(MshUserFile, truncated_file_is_refused) {
 TEST(MshUserFile, nan_coordinate_is_refused) {
   expect_refused("rockfdem_nan.msh",
                  square_msh("4\n1 0 0 0\n2 1 0 0\n3 nan 1 0\n4 0 1 0\n", kElements), "node 3");
+}
+
+// z is dropped: a node off the mesh's plane (here z = 5 among z = 0) would
+// be moved onto it without a word. Refused naming the node and both z; a
+// mesh whose every node has one z (a plane parallel to x-y) reads exactly.
+TEST(MshUserFile, node_off_the_plane_is_refused) {
+  expect_refused("rockfdem_z.msh", square_msh("4\n1 0 0 0\n2 1 0 0\n3 1 1 5\n4 0 1 0\n", kElements),
+                 "node 3 has z = 5 and node 1 z = 0: the mesh is not flat; allowed: every node "
+                 "at one z");
+  const Mesh m = read_text("rockfdem_z5.msh",
+                           square_msh("4\n1 0 0 5\n2 1 0 5\n3 1 1 5\n4 0 1 5\n", kElements));
+  EXPECT_EQ(m.n_triangles(), 2u);
+  EXPECT_EQ(m.x, (std::vector<double>{0, 1, 1, 0}));
 }
 
 TEST(MshUserFile, duplicate_node_is_refused) {
@@ -164,8 +258,33 @@ TEST(MshUserFile, folded_mesh_is_refused) {
                  "overlap at their edge (nodes 1, 3)");
 }
 
+// Two triangles with the same nodes in different surfaces are two
+// triangles over one another, not copies: still refused.
+TEST(MshUserFile, same_triangle_in_two_surfaces_is_refused) {
+  expect_refused("rockfdem_two_surfaces.msh",
+                 square_msh(kNodes,
+                            "4\n1 1 2 1 1 1 2\n2 2 2 7 1 1 2 3\n3 2 2 7 1 1 3 4\n"
+                            "4 2 2 7 2 1 2 3\n"),
+                 "overlap");
+}
+
 TEST(MshUserFile, quadrangle_is_refused) {
   expect_refused("rockfdem_quad.msh", square_msh(kNodes, "1\n1 3 2 7 1 1 2 3 4\n"), "gmsh type 3");
+}
+
+// A group's name comes from the file: its control bytes (an ESC sequence
+// that would clear the screen) are shown as escapes in the message.
+TEST(MshUserFile, control_bytes_of_a_group_name_are_escaped_in_the_message) {
+  std::string text = square_msh(kNodes, kElements);
+  text.replace(text.find("granite"), 7, "gran\x1b[2J\x7fite");
+  expect_refused("rockfdem_esc.msh", text, "'gran\\x1b[2J\\x7fite'");
+  MshFileSpec spec = kGroups;
+  spec.path = temp_path("rockfdem_esc.msh");
+  try {
+    read_msh(spec);
+  } catch (const InputError& e) {
+    EXPECT_EQ(std::string(e.what()).find('\x1b'), std::string::npos) << e.what();
+  }
 }
 
 TEST(MshUserFile, missing_physical_group_is_refused) {

@@ -212,3 +212,32 @@ TEST(InputChecks, a_tunnel_run_refuses_a_gradient_without_gravity_before_its_che
   EXPECT_FALSE(has(r.output, "checkpoint")) << r.output;
   EXPECT_FALSE(fs::exists(out));
 }
+
+// Values outside any physical range are bad input, not a run that fails at
+// its first step (the reproducers: the shipped Brazilian disc, where both
+// inverted triangle 69 at step 1, exit 3). Each is exit 2 naming the key
+// and the range, before anything is written, for check and run alike.
+TEST(InputChecks, absurd_density_and_platen_speed_are_refused_naming_the_range) {
+  const fs::path out = scratch("absurd");
+  const std::string disc = std::string(ROCKFDEM_SOURCE_DIR) + "/scenes/brazilian-disc.toml";
+  const std::pair<std::string, std::string> cases[] = {
+      {"loading.platen_velocity=1e300",
+       "--set loading.platen_velocity=1e300: the platens would strike the specimen, not load it; "
+       "allowed: 0 < loading.platen_velocity <= 346.6 m/s (0.1 x the rock's P-wave speed 3467 "
+       "m/s"},
+      {"materials.rock.density=1e300",
+       "--set materials.rock.density=1e300: out of range; allowed: in (0, 100000] (kg/m^3)"}};
+  for (const auto& [set, expect] : cases)
+    for (const char* cmd : {"check", "run"}) {
+      const Result r =
+          run(std::string(cmd) + " " + disc + " -q --set " + set + " -o " + out.string());
+      EXPECT_EQ(r.code, 2) << cmd << " " << set << ": " << r.output;
+      EXPECT_TRUE(has(r.output, expect)) << cmd << " " << set << ": " << r.output;
+      EXPECT_FALSE(fs::exists(out)) << cmd << " " << set;
+    }
+  // The bound is the rock's: the shipped disc's own 0.5 m/s and a fast
+  // dynamic test's 300 m/s pass.
+  for (const char* v : {"0.5", "300"})
+    EXPECT_EQ(run("check " + disc + " -q --set loading.platen_velocity=" + std::string(v)).code, 0)
+        << v;
+}

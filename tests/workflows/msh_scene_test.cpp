@@ -75,6 +75,24 @@ TEST(MshScene, check_reads_the_mesh_file_and_refuses_a_bad_one) {
   fs::remove_all(dir);
 }
 
+// A physical group's name is the file's text: an ESC sequence in it (here
+// one that would retitle the terminal and clear the screen) is shown as
+// escapes in the one-line refusal, never sent raw.
+TEST(MshScene, control_bytes_of_a_group_name_never_reach_the_terminal) {
+  const fs::path dir = scratch("msh-esc");
+  const fs::path scene = msh_scene(dir);
+  std::ofstream(dir / "esc.msh") << "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$PhysicalNames\n1\n"
+                                    "2 7 \"gran\x1b]0;pwned\x07\x1b[2Jite\"\n$EndPhysicalNames\n"
+                                    "$Nodes\n3\n1 0 0 0\n2 1 0 0\n3 0 1 0\n$EndNodes\n"
+                                    "$Elements\n1\n1 2 2 7 1 1 2 3\n$EndElements\n";
+  const Result r = run("check " + scene.string() + " --set msh.file=esc.msh");
+  EXPECT_EQ(r.code, 2) << r.output;
+  EXPECT_NE(r.output.find("'gran\\x1b]0;pwned\\x07\\x1b[2Jite'"), std::string::npos) << r.output;
+  EXPECT_EQ(r.output.find('\x1b'), std::string::npos) << r.output;
+  EXPECT_EQ(r.output.find('\x07'), std::string::npos) << r.output;
+  fs::remove_all(dir);
+}
+
 // A user's mesh larger than the generated tunnels' default box (here 240 m)
 // takes a monitor 70 m from the axis, which lies in its rock; a point
 // outside every triangle of it is refused by name once the mesh is read.

@@ -156,6 +156,29 @@ TEST(Report, failed_run_reports_its_last_good_state) {
   fs::remove_all(out);
 }
 
+// A scene's title is free text; ESC sequences, a BEL, a NUL and a C1 CSI
+// in it reach report.md as escapes (summary.json escapes them as JSON
+// does). report.md holds no control byte but line breaks.
+TEST(Report, control_bytes_of_a_title_are_escaped_in_the_report) {
+  const fs::path out = scratch("report-title");
+  const Result r = run("run " + kTestDir +
+                       "/study_elastic.toml -j 1 -q --set 'model.title=\"Tunnel "
+                       "\\u001b[2J\\u001b]0;pwned\\u0007 A\\u0000B\\u009b1m\"' -o " +
+                       out.string());
+  ASSERT_EQ(r.code, 0) << r.output;
+  const std::string md = read_text(out / "report.md");
+  EXPECT_NE(md.find("# Run report: Tunnel \\x1b[2J\\x1b]0;pwned\\x07 A\\x00B\\u009b1m\n"),
+            std::string::npos)
+      << md.substr(0, 200);
+  for (std::size_t i = 0; i < md.size(); ++i) {
+    const auto c = static_cast<unsigned char>(md[i]);
+    const bool c1 =
+        c == 0xC2 && i + 1 < md.size() && (static_cast<unsigned char>(md[i + 1]) & 0xE0) == 0x80;
+    ASSERT_FALSE((c < 0x20 && c != '\n') || c == 0x7F || c1) << "byte " << int(c) << " at " << i;
+  }
+  fs::remove_all(out);
+}
+
 // The seed's sequence as the summary reports it: three stages of no steps
 // at the hand-off (t = 0.5 ms), a grout stage of 4.8 ms that grouted 324
 // cracks, then equilibrium. One marker holds the three with the grout

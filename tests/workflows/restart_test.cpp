@@ -345,7 +345,10 @@ TEST_F(Restart, sigterm_writes_outputs_and_a_checkpoint_then_exit_143_and_restar
 // SIGKILL cannot be caught: whatever moment it lands (here while a
 // checkpoint is written at every output step), the checkpoints left are
 // whole files (the atomic rename) and the newest restarts to the
-// uninterrupted result.
+// uninterrupted result. The half-written temporary files a kill leaves
+// (planted here as well, since the kill may land between writes) are
+// removed by the restart into the same folder; a user's files with
+// similar names stay.
 TEST_F(Restart, sigkill_leaves_a_restartable_checkpoint) {
   const fs::path out = scratch("restart-sigkill");
   const pid_t pid = spawn("run " + kScene + " -q -j 2 --checkpoint-every 1 -o " + out.string(),
@@ -357,12 +360,26 @@ TEST_F(Restart, sigkill_leaves_a_restartable_checkpoint) {
   const auto kept = checkpoints(out);
   ASSERT_GE(kept.size(), 1u);
   ASSERT_LE(kept.size(), 3u) << "a third only while the newest is being pruned";
+  const std::string half(115 * 1024, 'x');
+  for (const fs::path& stale : {out / ".fdem_0009.tmp-4242-69.vtu", out / ".history.tmp-4242-3.csv",
+                                out / ".mesh.msh.tmp4242.msh",
+                                out / "checkpoints" / ".checkpoint_000000000400.tmp-4242-7.rfck"})
+    std::ofstream(stale) << half;
+  const std::vector<fs::path> users{out / ".notes.tmp-1-1.txt", out / "notes.txt"};
+  for (const fs::path& mine : users) std::ofstream(mine) << "the user's\n";
   // Continue in the same directory, as after a crash.
   const Result r =
       run("run " + kScene + " -q -j 1 --restart " + kept.back().string() + " -o " + out.string());
   ASSERT_EQ(r.code, 0) << r.output;
   EXPECT_EQ(read_json(out / "summary.json")["state_hash"].get<std::string>(), reference_hash());
   EXPECT_EQ(history_rows(out), history_rows(*reference_dir_));
+  for (const fs::path& dir : {out, out / "checkpoints"})
+    for (const auto& e : fs::directory_iterator(dir)) {
+      const std::string name = e.path().filename().string();
+      EXPECT_TRUE(name.find(".tmp") == std::string::npos || name == ".notes.tmp-1-1.txt")
+          << "left after the restart: " << e.path();
+    }
+  for (const fs::path& mine : users) EXPECT_TRUE(fs::exists(mine)) << mine;
   fs::remove_all(out);
   fs::remove(out.string() + ".log");
 }
@@ -541,6 +558,18 @@ TEST(CheckpointRead, forged_run_states_name_the_checkpoint_and_the_field) {
        "field 'bolts.installed_stress' = [[]] is not an array of 2 entries, one per bolt"},
       {"/start_ratio", "0.2", "field 'start_ratio' = \"0.2\" is not a number"},
       {"/stages/stage_changes/deep", deep, "nested more than 32 levels deep"},
+      // Strings that reach the terminal, report.md or a CSV file raw.
+      {"/stages/unstable", "closing\x1b[2J",
+       "field 'stages.unstable' = \"closing\\u001b[2J\" is not a string without control "
+       "characters"},
+      {"/outputs/bolts",
+       {{"csv", "step,time_s\n1,\x1b]0;pwned\x07\n"}, {"frames", nlohmann::json::array()}},
+       "field 'outputs.bolts.csv' = \"step,time_s\\n1,\\u001b]0;pwned\\u0007\\n\" is not text "
+       "without control characters but line breaks"},
+      {"/outputs/bolts",
+       {{"csv", "step\n"},
+        {"frames", nlohmann::json::array({nlohmann::json::array({0.0, "../x"})})}},
+       "field 'outputs.bolts.frames[0][1]' = \"../x\" is not a plain file name"},
   };
   for (const Case& c : cases) {
     nlohmann::json run = valid_run_state();

@@ -16,8 +16,10 @@
 #include <filesystem>
 #include <functional>
 #include <map>
+#include <set>
 #include <sstream>
 #include <thread>
+#include <tuple>
 #include <vector>
 
 #include "cli_runner.hpp"
@@ -373,4 +375,105 @@ TEST(Study, study_folder_is_locked_against_a_second_study) {
                                << read_text(log);
   fs::remove_all(out);
   fs::remove(log);
+}
+
+// A SIGTERM or SIGINT at any moment of a study stops it with 128 + signal
+// (143, 130). The signal is raised by the program itself at a named moment
+// (ROCKFDEM_TEST_SIGNAL_AT, interrupt.hpp), so each case lands where it is
+// meant to: while the variants' scenes are checked, before a variant, as its
+// run installs its handlers (which used to clear the request), in the gap
+// between a variant's last check and its record (where the next variant's
+// handlers used to drop it and the sweep ran on to exit 0), once
+// the last variant is recorded, after the table is written, and as the
+// process closes. Variants recorded before the signal are kept: the same
+// command then runs only the rest.
+TEST(Study, a_signal_at_any_moment_of_a_sweep_stops_it) {
+  const fs::path out = scratch("signal-sweep");
+  const std::string args = "sweep " + kScene + kGrid + " -o " + out.string();
+  struct Case {
+    std::string moment;
+    int code;
+    std::size_t recorded;  // variants with a variant.json afterwards
+  };
+  const std::vector<Case> cases{
+      {"study-start", 143, 0},        {"variant-start", 143, 0}, {"variant-start#3", 130, 2},
+      {"variant-run#2", 143, 1},      {"variant-end", 143, 1},   {"variant-end#2", 130, 2},
+      {"variant-recorded#4", 143, 4}, {"study-end", 143, 4},     {"command-end", 143, 4}};
+  for (const Case& c : cases) {
+    fs::remove_all(out);
+    const std::string at = c.moment + (c.code == 130 ? ":INT" : "");
+    const Result r = run(args, "env ROCKFDEM_TEST_SIGNAL_AT=" + at);
+    EXPECT_EQ(r.code, c.code) << at << ": " << r.output;
+    EXPECT_TRUE(has(r.output, c.code == 130 ? "signal 2 (SIGINT)" : "signal 15 (SIGTERM)"))
+        << at << ": " << r.output;
+    std::size_t recorded = 0;
+    std::error_code ec;
+    for (const auto& e : fs::directory_iterator(out / "variants", ec))
+      recorded += fs::exists(e.path() / "variant.json");
+    EXPECT_EQ(recorded, c.recorded) << at << ": " << r.output;
+  }
+  // The last case left every variant recorded: nothing runs again.
+  const Result resumed = run(args);
+  ASSERT_EQ(resumed.code, 0) << resumed.output;
+  EXPECT_TRUE(has(resumed.output, "0 run now, 4 taken from earlier runs")) << resumed.output;
+  fs::remove_all(out);
+}
+
+// The same for a calibration: between its evaluations (inside NLopt's
+// objective), in the gap after a run, and as it ends.
+TEST(Study, a_signal_at_any_moment_of_a_calibration_stops_it) {
+  const fs::path out = scratch("signal-calibrate");
+  const std::string args = "calibrate " + kScene +
+                           " --target vault=20 --free materials.rock.young=2e9:2e10 "
+                           "--max-evals 3 -j 1 -q -o " +
+                           out.string();
+  for (const std::string at :
+       {"study-start", "variant-start#2", "variant-end:INT", "study-end", "command-end"}) {
+    fs::remove_all(out);
+    const Result r = run(args, "env ROCKFDEM_TEST_SIGNAL_AT=" + at);
+    const bool sigint = has(at, ":INT");
+    EXPECT_EQ(r.code, sigint ? 130 : 143) << at << ": " << r.output;
+    EXPECT_TRUE(has(r.output, sigint ? "signal 2 (SIGINT)" : "signal 15 (SIGTERM)"))
+        << at << ": " << r.output;
+  }
+  fs::remove_all(out);
+}
+
+// Resume takes every finished status from the variant's folder: completed,
+// not_at_equilibrium (an unreachable ratio), unstable (a span fraction of
+// 1e-6, passed at the first output), refused (engine.dt = 1 s, above the
+// limit) and, with --force-dt, failed. The second invocation runs nothing
+// and rewrites no variant's summary.json.
+TEST(Study, resume_reruns_no_finished_status) {
+  const fs::path out = scratch("resume-statuses"), forced = scratch("resume-failed");
+  const std::string mixed = "sweep " + kScene +
+                            " --vary stages[1].ratio=1e-5,1e-14"
+                            " --vary stages[1].unstable_fraction=0.05,1e-6"
+                            " --vary engine.dt=0,1 -j 1 -q -o " +
+                            out.string();
+  const std::string failing =
+      "sweep " + kScene + " --force-dt --vary engine.dt=1 -j 1 -q -o " + forced.string();
+  for (const auto& [args, dir, n] : {std::tuple{mixed, out, 8}, std::tuple{failing, forced, 1}}) {
+    const Result first = run(args);
+    ASSERT_EQ(first.code, 0) << first.output;
+    std::map<fs::path, fs::file_time_type> written;
+    for (const auto& e : fs::recursive_directory_iterator(dir / "variants"))
+      if (e.path().filename() == "variant.json") written[e.path()] = fs::last_write_time(e.path());
+    EXPECT_EQ(written.size(), std::size_t(n)) << first.output;
+    const Result again = run(args);
+    ASSERT_EQ(again.code, 0) << again.output;
+    EXPECT_TRUE(has(again.output, "0 run now, " + std::to_string(n) + " taken from earlier runs"))
+        << again.output;
+    for (const auto& [path, time] : written) EXPECT_EQ(fs::last_write_time(path), time) << path;
+  }
+  std::set<std::string> statuses;
+  for (const fs::path& dir : {out, forced}) {
+    const auto rows = csv(dir / "sweep.csv");
+    const std::size_t status = column(rows[0], "status");
+    for (std::size_t r = 1; r < rows.size(); ++r) statuses.insert(rows[r][status]);
+  }
+  EXPECT_EQ(statuses, (std::set<std::string>{"completed", "not_at_equilibrium", "unstable",
+                                             "refused", "failed"}));
+  fs::remove_all(out);
+  fs::remove_all(forced);
 }

@@ -6,6 +6,7 @@
 
 #include "rockfdem/coupling/atomic_file.hpp"
 #include "rockfdem/mesh/msh_io.hpp"
+#include "rockfdem/printable.hpp"
 #include "rockfdem/workflows/version.hpp"
 #include "run/output_dir.hpp"
 #include "stages/registry.hpp"
@@ -322,9 +323,10 @@ void pictures(std::ostream& md, const ReportExtras& x) {
 std::string report_markdown(const Scene& scene, const RunRecord& record,
                             const ReportExtras& extras) {
   std::ostringstream md;
-  md << "# Run report: " << (scene.title.empty() ? scene.source : scene.title) << "\n\n"
-     << "Scene `" << scene.source << "`, rockfdem " << version_string() << ", " << record.threads
-     << (record.threads == 1 ? " thread" : " threads") << ", state hash `"
+  // The title is free text: its control characters are shown as escapes.
+  md << "# Run report: " << printable(scene.title.empty() ? scene.source : scene.title) << "\n\n"
+     << "Scene `" << printable(scene.source) << "`, rockfdem " << version_string() << ", "
+     << record.threads << (record.threads == 1 ? " thread" : " threads") << ", state hash `"
      << record.state.state_hash << "`. Figures in full: summary.json, "
      << "history.csv.\n\n";
   inputs(md, scene, record);
@@ -336,7 +338,7 @@ std::string report_markdown(const Scene& scene, const RunRecord& record,
   broken_zone(md, record.state.broken, record.broken_zone);
   post_peak(md, record.continuum_post_peak);
   pictures(md, extras);
-  return md.str();
+  return printable(md.str(), true);  // any scene text above (group names, paths) too
 }
 
 void write_report(const std::string& dir, const Scene& scene, const RunRecord& record,

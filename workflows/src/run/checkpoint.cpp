@@ -17,6 +17,7 @@
 #include "rockfdem/coupling/vtk_writer.hpp"
 #include "rockfdem/error.hpp"
 #include "rockfdem/fdem/bits_hash.hpp"
+#include "rockfdem/printable.hpp"
 #include "rockfdem/workflows/scene.hpp"
 #include "run/output_dir.hpp"
 #include "run/summary.hpp"
@@ -278,6 +279,7 @@ class RunStateCheck {
         {"last_checkpoint", "an integer"},
         {"history", "an array of rows of numbers"},
         {"frames", "an array of [time, file name] pairs"},
+        {"csv", "text (the bolts.csv table)"},
         {"installed", "an array of 0 and 1"},
         {"installed_stress", "an array of arrays of [xx, yy, xy] stresses"},
         {"kind", "a string"},
@@ -320,8 +322,21 @@ class RunStateCheck {
   void number(const json& v, const std::string& f) const {
     if (!v.is_number()) bad(f, &v, "a number");
   }
+  // Strings of a run state reach the terminal, summary.json, report.md
+  // and CSV files: no control characters (a forged ESC would reach them
+  // raw), and in a CSV text (`text`) none but line breaks.
+  static bool has_control(const std::string& s, bool line_breaks) {
+    return printable(s, line_breaks) != s;
+  }
   void string(const json& v, const std::string& f) const {
     if (!v.is_string()) bad(f, &v, "a string");
+    if (has_control(v.get_ref<const std::string&>(), false))
+      bad(f, &v, "a string without control characters");
+  }
+  void text(const json& v, const std::string& f) const {
+    if (!v.is_string()) bad(f, &v, "a string");
+    if (has_control(v.get_ref<const std::string&>(), true))
+      bad(f, &v, "text without control characters but line breaks");
   }
   void numbers(const json& v, const std::string& f) const {
     array(v, f, "an array of numbers");
@@ -411,6 +426,13 @@ class RunStateCheck {
     if (o.contains("handoff_dt")) number(o["handoff_dt"], at + ".handoff_dt");
     if (o.contains("max_rotation_deg")) number(o["max_rotation_deg"], at + ".max_rotation_deg");
     frame_list(member(o, at, "frames"), at + ".frames");
+    // BoltResults::restore writes the table as bolts.csv and copies the frames.
+    if (o.contains("bolts") && !o["bolts"].is_null()) {
+      const json& b = o["bolts"];
+      object(b, at + ".bolts");
+      text(member(b, at + ".bolts", "csv"), at + ".bolts.csv");
+      frame_list(member(b, at + ".bolts", "frames"), at + ".bolts.frames");
+    }
   }
 
   void frame_list(const json& frames, const std::string& at) const {

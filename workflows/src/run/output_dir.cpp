@@ -249,6 +249,18 @@ void remove_checkpoints(const std::string& dir) {
   if (fs::is_empty(folder, ec)) fs::remove(folder, ec);
 }
 
+void remove_stale_temporaries(const std::string& dir) {
+  std::error_code ec;
+  for (const auto& entry : fs::directory_iterator(dir, ec))
+    if (entry.is_regular_file(ec) && is_temporary_output(entry.path().filename().string()))
+      fs::remove(entry.path(), ec);
+  for (const auto& entry : fs::directory_iterator(fs::path(dir) / "checkpoints", ec)) {
+    const std::string name = entry.path().filename().string();
+    if (entry.is_regular_file(ec) && name.rfind(".checkpoint_", 0) == 0)
+      fs::remove(entry.path(), ec);
+  }
+}
+
 void remove_previous_outputs(const std::string& dir) {
   std::error_code ec;
   for (const auto& entry : fs::directory_iterator(dir, ec))
@@ -285,6 +297,9 @@ bool prepare_output_dir(const std::string& dir, const Scene& scene, bool force,
   }
   create_dir(dir);
   lock_output_dir(dir);
+  // Held by this process now: a temporary file of an output is what a
+  // killed run's write left (a restart into this folder keeps the outputs).
+  if (claimed) remove_stale_temporaries(dir);
   // Frames or plots of a longer earlier run must not sit beside the new ones.
   if (force && claimed && !keep_previous) remove_previous_outputs(dir);
   coupling::atomic_write_text(owner, owner_record(scene));

@@ -14,6 +14,10 @@ struct RunContext;
 /// another scene's results, and the outputs an earlier run wrote there
 /// (known by name, remove_previous_outputs) are removed first, unless
 /// `keep_previous` (a restart continuing the run in its own directory).
+/// In a directory an earlier run claimed, the temporary files of its
+/// outputs' writes (".fdem_0009.tmp-<pid>-<n>.vtu", a checkpoint's
+/// "checkpoints/.checkpoint_...") are removed once the folder is locked,
+/// always: whichever run wrote them was killed mid-write.
 /// Only a directory an earlier run claimed (its owner record present) is
 /// ever cleaned: a user's folder keeps every file, whatever its name.
 /// Returns whether it was such a directory. Throws InputError.
@@ -46,6 +50,11 @@ void remove_previous_outputs(const std::string& dir);
 /// Removes `dir`/checkpoints/checkpoint_*.rfck (and interrupted writes of
 /// them), then the folder if nothing else is in it.
 void remove_checkpoints(const std::string& dir);
+
+/// Removes the temporary files of interrupted writes of rockfdem outputs in
+/// `dir` (is_rockfdem_output's temporary names) and of checkpoints in
+/// `dir`/checkpoints. Only for a folder this process has locked.
+void remove_stale_temporaries(const std::string& dir);
 
 /// Whether two paths name the same existing directory.
 bool same_directory(const std::string& a, const std::string& b);

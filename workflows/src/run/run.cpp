@@ -280,8 +280,7 @@ void Run::stop_if_interrupted(const char* after) {
   summary_.status = "interrupted";
   summary_.set_timings(timer_);
   summary_.write(output_path(ctx_.output_dir, "summary.json"));
-  throw Interrupted(sig, std::string("interrupted by signal ") + std::to_string(sig) + " after " +
-                             after +
+  throw Interrupted(sig, "interrupted by " + signal_text(sig) + " after " + after +
                              "; summary.json is written (no explicit step yet, so no checkpoint)");
 }
 

@@ -170,7 +170,7 @@ void StageRunner::interrupted(const StageSpec& stage) {
   if (save_checkpoint_) save_checkpoint_();
   record_step(stage);
   const int sig = interrupt_requested();
-  throw Interrupted(sig, "interrupted by signal " + std::to_string(sig) + " at step " +
+  throw Interrupted(sig, "interrupted by " + signal_text(sig) + " at step " +
                              std::to_string(engine_.step_count()) + " in stage '" + stage.kind +
                              "'; outputs and a checkpoint are written");
 }

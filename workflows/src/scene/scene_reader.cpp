@@ -22,39 +22,6 @@ std::string join(const std::vector<std::string>& items) {
 
 }  // namespace
 
-std::string printable(const std::string& text) {
-  // C0 controls, DEL and the C1 controls (U+0080 to U+009F, two bytes in
-  // UTF-8: 0xC2 0x80-0x9F; U+009B is a CSI on some terminals) are shown as
-  // escapes, so that text from a scene (a key, a value, a file name) cannot
-  // move the cursor, clear the screen or cut a message short (NUL).
-  static const char* const kHex = "0123456789abcdef";
-  std::string out;
-  out.reserve(text.size());
-  for (std::size_t i = 0; i < text.size(); ++i) {
-    const auto c = static_cast<unsigned char>(text[i]);
-    if (c == 0xC2 && i + 1 < text.size() &&
-        (static_cast<unsigned char>(text[i + 1]) & 0xE0) == 0x80) {
-      const auto d = static_cast<unsigned char>(text[++i]);
-      out += "\\u00";
-      out += kHex[d >> 4];
-      out += kHex[d & 15];
-    } else if (c == '\n') {
-      out += "\\n";
-    } else if (c == '\t') {
-      out += "\\t";
-    } else if (c == '\r') {
-      out += "\\r";
-    } else if (c < 0x20 || c == 0x7F) {
-      out += "\\x";
-      out += kHex[c >> 4];
-      out += kHex[c & 15];
-    } else {
-      out += char(c);
-    }
-  }
-  return out;
-}
-
 namespace {
 
 // Scene text past these bounds is refused before toml++ sees it: its

@@ -9,6 +9,8 @@
 #include <string>
 #include <vector>
 
+#include "rockfdem/printable.hpp"
+
 namespace rockfdem::workflows::detail {
 
 struct RawScene {
@@ -25,8 +27,8 @@ void check_scene_bounds(const std::string& text, const std::string& source);
 
 /// `text` with its control characters (C0, DEL, C1) shown as escapes
 /// (\n, \x1b, \u009b): every message that echoes a scene's text goes
-/// through it.
-std::string printable(const std::string& text);
+/// through it (rockfdem/printable.hpp).
+using ::rockfdem::printable;
 
 /// check_scene_bounds(), then toml++.
 RawScene read_raw_scene(const std::string& text, const std::string& source,

@@ -16,6 +16,7 @@
 namespace rockfdem::workflows {
 namespace {
 constexpr double kInf = 1e300;
+constexpr double kMostDensity = 1e5;  // kg/m^3
 }  // namespace
 
 namespace schema {
@@ -100,8 +101,11 @@ void add_material(std::vector<KeySpec>& s, const std::string& name, const std::s
   const auto def = [&](const char* key, const char* value) {
     return inherit.empty() ? std::string(value) : inherit + key;
   };
-  s.push_back(
-      positive(p + "density", "kg/m^3", def("density", "2700"), "Density of the " + role + "."));
+  s.push_back(number(p + "density", "kg/m^3", def("density", "2700"), 0, true, kMostDensity, false,
+                     "Density of the " + role +
+                         ". At most 1e5 kg/m^3, above any material (osmium, the densest "
+                         "element, has 22,590): a larger value is a unit slip. Mass scaling "
+                         "(engine.mass_scaling) is the engine's, not the density's."));
   s.push_back(
       positive(p + "young", "Pa", def("young", ""), "Young's modulus of the " + role + "."));
   s.push_back(number(p + "poisson", "-", def("poisson", ""), 0, true, 0.45, false,

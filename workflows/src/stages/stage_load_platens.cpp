@@ -27,7 +27,10 @@ class LoadPlatens : public Stage {
   std::vector<KeySpec> keys() const override {
     using namespace schema;
     return {positive("loading.platen_velocity", "m/s", "0.5",
-                     "UCS and Brazilian tests: speed of each platen towards the other."),
+                     "UCS and Brazilian tests: speed of each platen towards the other. At "
+                     "most a tenth of the rock's P-wave speed (from its young, poisson and "
+                     "density; `rockfdem check` prints it): faster, the platens strike the "
+                     "specimen instead of loading it."),
             choice("loading.platen_friction", "rough", {"rough", "frictionless"},
                    "UCS and Brazilian tests: rough platens hold the loaded ends laterally "
                    "(both velocity components prescribed); frictionless ones prescribe only "

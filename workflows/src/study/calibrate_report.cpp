@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include "rockfdem/coupling/atomic_file.hpp"
+#include "rockfdem/printable.hpp"
 #include "run/output_dir.hpp"
 #include "study/study_inputs.hpp"
 #include "study/study_ranks.hpp"
@@ -34,7 +35,7 @@ std::string best_scene_text(const CommandLine& cli, const Evaluation& best) {
       *file = (base / file->get()).lexically_normal().string();
   }
   std::ostringstream out;
-  out << "# " << (scene.title.empty() ? cli.scene : scene.title)
+  out << "# " << printable(scene.title.empty() ? cli.scene : scene.title)
       << ": fitted by `rockfdem calibrate " << cli.scene << "`\n# set:";
   for (const std::string& o : best.variant.overrides()) out << ' ' << o;
   out << "\n\n" << root << '\n';

@@ -12,6 +12,7 @@
 
 #include "rockfdem/error.hpp"
 #include "rockfdem/workflows/scene_schema.hpp"
+#include "run/interrupt.hpp"
 #include "run/output_dir.hpp"
 #include "scene/scene_reader.hpp"
 #include "study/calibrate_problem.hpp"
@@ -104,6 +105,8 @@ Sensitivity sensitivity(CalibrationProblem& problem, const Evaluation& best) {
 
 int command_calibrate(const Scene& scene, const CommandLine& cli) {
   const auto start = std::chrono::steady_clock::now();
+  install_interrupt_handlers();  // for the whole study: see stop_study_if_interrupted
+  signal_point("study-start");
   algorithm(cli.study.method);
   if (cli.study.max_evals < 1 || cli.study.max_evals > 100000)
     throw InputError("command line: --max-evals " + std::to_string(cli.study.max_evals) +
@@ -114,6 +117,7 @@ int command_calibrate(const Scene& scene, const CommandLine& cli) {
     scene_with(cli, {f.key + "=" + exact_text(f.hi)}, "--free", f.key + "=" + exact_text(f.hi));
   }
   CalibrationProblem problem(cli, free, read_targets(cli.study, scene));
+  stop_study_if_interrupted(cli, "while checking the free keys' scenes (nothing run)");
   if (rank() == 0) or_abort_all([&] { lock_study_dir(cli.output_dir); });
   if (rank() != 0) {
     problem.serve();
@@ -129,6 +133,8 @@ int command_calibrate(const Scene& scene, const CommandLine& cli) {
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     write_calibration_outputs(problem, best, s, stop, cli, wall);
   });
+  signal_point("study-end");
+  stop_study_if_interrupted(cli, "as the calibration ended (its outputs are written)");
   return 0;
 }
 

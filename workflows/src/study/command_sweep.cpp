@@ -12,6 +12,7 @@
 #include <optional>
 
 #include "rockfdem/error.hpp"
+#include "run/interrupt.hpp"
 #include "run/output_dir.hpp"
 #include "study/study_commands.hpp"
 #include "study/study_figures.hpp"
@@ -47,8 +48,10 @@ std::vector<Variant> checked_variants(const CommandLine& cli, const std::vector<
   }
   std::vector<Variant> variants =
       cli.study.samples > 0 ? latin_hypercube(keys, cli.study.samples) : product_variants(keys);
-  for (const Variant& v : variants)
+  for (const Variant& v : variants) {
+    stop_study_if_interrupted(cli, "while checking the variants' scenes (nothing run)");
     ids->push_back(variant_identity(scene_with(cli, v.overrides(), "--vary", v.name), v));
+  }
   return variants;
 }
 
@@ -194,6 +197,8 @@ void report(const std::vector<VariantResult>& results, const std::string& dir) {
 }  // namespace
 
 int command_sweep(const Scene& scene, const CommandLine& cli) {
+  install_interrupt_handlers();  // for the whole study: see stop_study_if_interrupted
+  signal_point("study-start");
   const std::vector<VariedKey> keys = read_vary(cli.study);
   std::vector<nlohmann::json> ids;
   const std::vector<Variant> variants = checked_variants(cli, keys, &ids);
@@ -204,6 +209,8 @@ int command_sweep(const Scene& scene, const CommandLine& cli) {
   if (scene.output.plots)
     plot_sweep(output_path(cli.output_dir, "sweep.png"), scene, keys, variants, results);
   report(results, cli.output_dir);
+  signal_point("study-end");
+  stop_study_if_interrupted(cli, "as the sweep ended (its variants and table are written)");
   return 0;
 }
 

@@ -9,6 +9,7 @@
 #include "commands/commands.hpp"
 #include "rockfdem/coupling/atomic_file.hpp"
 #include "rockfdem/error.hpp"
+#include "run/interrupt.hpp"
 #include "run/output_dir.hpp"
 #include "study/study_figures.hpp"
 
@@ -26,8 +27,8 @@ nlohmann::json read_json(const std::string& path) {
 }
 
 bool finished(const std::string& status) {
-  return status == "completed" || status == "not_at_equilibrium" || status == "failed" ||
-         status == "refused";
+  return status == "completed" || status == "not_at_equilibrium" || status == "unstable" ||
+         status == "failed" || status == "refused";
 }
 
 // The earlier result in `dir`, when it is a finished run of the same identity.
@@ -40,6 +41,12 @@ bool reuse(const std::string& dir, const nlohmann::json& id, VariantResult* r) {
 }
 
 }  // namespace
+
+void stop_study_if_interrupted(const CommandLine& study, const std::string& when) {
+  throw_if_interrupted(when + "; the finished variants are kept in " +
+                       output_path(study.output_dir, "variants") +
+                       " and the same command resumes the study");
+}
 
 nlohmann::json VariantResult::to_json() const {
   return {{"name", name},          {"status", status}, {"message", message},
@@ -85,6 +92,8 @@ VariantResult run_variant(const CommandLine& study, const Variant& v) {
   ctx.output_dir = variant_dir(study, v);
   ctx.quiet = ctx.force = true;
   const nlohmann::json id = variant_identity(scene, v);
+  signal_point("variant-start");
+  stop_study_if_interrupted(study, "before variant " + v.name);
   VariantResult r;
   if (reuse(ctx.output_dir, id, &r)) return r;
   r = VariantResult{};
@@ -93,6 +102,7 @@ VariantResult run_variant(const CommandLine& study, const Variant& v) {
   const auto start = std::chrono::steady_clock::now();
   try {
     refuse_if_too_large(scene);
+    signal_point("variant-run");  // after the check above: the run's own checks see it
     command_run(scene, ctx);
     const nlohmann::json summary = read_json(output_path(ctx.output_dir, "summary.json"));
     if (!summary.is_object()) throw std::runtime_error(ctx.output_dir + ": no summary.json");
@@ -107,10 +117,12 @@ VariantResult run_variant(const CommandLine& study, const Variant& v) {
     r.status = "refused";
     r.message = e.what();
   }
+  signal_point("variant-end");
   r.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   fs::create_directories(ctx.output_dir);
   coupling::atomic_write_text(output_path(ctx.output_dir, kRecord),
                               nlohmann::json{{"identity", id}, {"result", r.to_json()}}.dump(1));
+  signal_point("variant-recorded");  // the next variant, or the study's end, stops
   return r;
 }
 

@@ -37,9 +37,19 @@ nlohmann::json variant_identity(const Scene& scene, const Variant& v);
 std::optional<VariantResult> recorded_result(const CommandLine& study, const Variant& v,
                                              const nlohmann::json& id);
 
+/// A study installs the interrupt handlers at its start and calls this
+/// between its steps: a SIGINT or SIGTERM at any moment of a study ends it
+/// (Interrupted: exit 130/143) at the next of these checks or inside the
+/// variant's run, never later. A signal between two variants, or one that
+/// came after a run's last check, would otherwise be lost. `when` says
+/// where (e.g. "before variant NAME").
+void stop_study_if_interrupted(const CommandLine& study, const std::string& when);
+
 /// Runs the variant (-j threads of `study`, quietly, its folder claimed
 /// with --force) unless its folder's variant.json records a finished run of
-/// the same scene and settings. A numerical failure or a refusal of the
+/// the same scene and settings (a finished status: completed,
+/// not_at_equilibrium, unstable, failed or refused). Checks for a signal
+/// first. A numerical failure or a refusal of the
 /// variant's scene (an engine.dt this material cannot hold) is a result;
 /// an interrupt and other errors propagate.
 VariantResult run_variant(const CommandLine& study, const Variant& v);

@@ -3,6 +3,7 @@
 #include <stdexcept>
 
 #include "rockfdem/coupling/atomic_file.hpp"
+#include "rockfdem/printable.hpp"
 #include "study/study_variants.hpp"
 
 namespace rockfdem::workflows::study {
@@ -20,7 +21,9 @@ std::string cell(const nlohmann::json& v) {
   if (v.is_number_integer()) return std::to_string(v.get<long long>());
   if (v.is_number()) return exact_text(v.get<double>());
   if (v.is_boolean()) return v.get<bool>() ? "true" : "false";
-  return quoted(v.is_string() ? v.get<std::string>() : v.dump());
+  // Messages may quote a scene's text: control characters as escapes, one
+  // line per row.
+  return quoted(printable(v.is_string() ? v.get<std::string>() : v.dump()));
 }
 
 std::string line(const std::vector<nlohmann::json>& cells) {
