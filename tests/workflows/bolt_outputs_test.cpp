@@ -95,6 +95,20 @@ TEST(BoltOutputs, history_profiles_summary_and_frames_agree) {
     for (const auto& s : final_profile) worst = std::max(worst, int(s.at("state")));
     EXPECT_EQ(e["yielded"].get<bool>(), worst >= 1);
     EXPECT_EQ(e["broken"].get<bool>(), worst == 2);
+    // Tension and compression apart, from the same profile; the tension's
+    // stress over the default steel (fy 400, fu 500 MPa, restart_support.toml).
+    double tension = 0, compression = 0, stress = 0;
+    for (const auto& s : final_profile) {
+      if (s.at("axial_force_kN") > tension)
+        tension = s.at("axial_force_kN"), stress = s.at("steel_stress_MPa");
+      compression = std::max(compression, -s.at("axial_force_kN"));
+    }
+    EXPECT_TRUE(near(e["max_tension_kN_per_bar"].get<double>(), tension, 1e-5)) << e;
+    EXPECT_TRUE(near(e["max_compression_kN_per_bar"].get<double>(), compression, 1e-5)) << e;
+    EXPECT_TRUE(near(kn, kn > 0 ? tension : -compression, 1e-5)) << e;
+    EXPECT_TRUE(near(e["tension_over_yield"].get<double>(), stress / 400, 1e-5)) << e;
+    EXPECT_TRUE(near(e["tension_over_ultimate"].get<double>(), stress / 500, 1e-5)) << e;
+    EXPECT_EQ(e["first_broken_station_m"].is_null(), worst < 2) << e;
     any_tension |= kn > 1;
     any_compression |= kn < -1;
   }

@@ -23,6 +23,26 @@ const fdem::BoltStation* peak(const std::vector<fdem::BoltStation>& st) {
   return best;
 }
 
+// Tension and compression apart: a bar's signed peak alone hides one of them.
+void add_tension_and_compression(const std::vector<fdem::BoltStation>& st,
+                                 const fdem::BoltSteel& steel, BoltPeak& p) {
+  double max_stress = 0;
+  for (const fdem::BoltStation& s : st) {
+    if (s.bar_force / 1e3 > p.max_tension_kN_per_bar) {
+      p.max_tension_kN_per_bar = s.bar_force / 1e3;
+      p.tension_station_m = s.station;
+      max_stress = s.steel_stress;
+    }
+    if (-s.bar_force / 1e3 > p.max_compression_kN_per_bar) {
+      p.max_compression_kN_per_bar = -s.bar_force / 1e3;
+      p.compression_station_m = s.station;
+    }
+    if (s.state == 2 && !p.first_broken_station_m) p.first_broken_station_m = s.station;
+  }
+  p.tension_over_yield = max_stress / steel.yield_strength;
+  p.tension_over_ultimate = max_stress / steel.ultimate_strength;
+}
+
 int worst_state(const std::vector<fdem::BoltStation>& st) {
   int worst = 0;
   for (const fdem::BoltStation& s : st) worst = std::max(worst, s.state);
@@ -170,6 +190,7 @@ BoltFigures BoltResults::summary_entry(const fdem::Engine& e, std::size_t b,
       "station_m,x_m,y_m,axial_force_kN,steel_stress_MPa,state\n" + station_rows("", st));
   f.peak = BoltPeak{file,       p->bar_force / 1e3,   p->steel_stress / 1e6,
                     p->station, worst_state(st) >= 1, worst_state(st) == 2};
+  add_tension_and_compression(st, plan_.specs[b].steel, *f.peak);
   return f;
 }
 

@@ -206,17 +206,22 @@ std::string value_text(bool v) { return v ? "yes" : "no"; }
 
 void bolts(std::ostream& md, const std::optional<BoltRecord>& r) {
   if (!r) return;
-  md << "\n## Bolts and cables (end of run)\n\n| bolt | kind | max axial force [kN per bar] | "
-        "at [m from the collar] | max steel stress [MPa] | yielded | broken |\n"
-        "|---|---|---|---|---|---|---|\n";
+  md << "\n## Bolts and cables (end of run)\n\nForces per bar; a station is broken where a "
+        "crack element of its steel failed, in tension or in shear.\n\n| bolt | kind | max "
+        "tension [kN] | at [m from the collar] | tension / yield | tension / ultimate | max "
+        "compression [kN] | at [m] | yielded | broken at [m from the collar] |\n"
+        "|---|---|---|---|---|---|---|---|---|---|\n";
   for (const BoltFigures& b : r->each) {
     md << "| " << b.name << " | " << b.kind << " | ";
-    if (b.peak)
-      md << value_text(b.peak->max_axial_force_kN_per_bar) << " | " << value_text(b.peak->station_m)
-         << " | " << value_text(b.peak->max_steel_stress_MPa) << " | "
-         << value_text(b.peak->yielded) << " | " << value_text(b.peak->broken) << " |\n";
+    if (const auto& p = b.peak)
+      md << fixed(p->max_tension_kN_per_bar, 1) << " | " << fixed(p->tension_station_m, 2) << " | "
+         << fixed(p->tension_over_yield, 2) << " | " << fixed(p->tension_over_ultimate, 2) << " | "
+         << fixed(p->max_compression_kN_per_bar, 1) << " | " << fixed(p->compression_station_m, 2)
+         << " | " << value_text(p->yielded) << " | "
+         << (p->first_broken_station_m ? fixed(*p->first_broken_station_m, 2) : std::string("no"))
+         << " |\n";
     else
-      md << "- | - | - | - | - |\n";
+      md << "- | - | - | - | - | - | - | - |\n";
   }
   md << "\nSteel crack elements yielding " << value_text(r->steel_cracks_yielding) << ", broken "
      << value_text(r->steel_cracks_broken) << "; grout crack elements broken "

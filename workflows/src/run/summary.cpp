@@ -251,6 +251,13 @@ nlohmann::json bolt_json(const BoltFigures& b) {
   j["file"] = b.peak->file;
   j["max_axial_force_kN_per_bar"] = b.peak->max_axial_force_kN_per_bar;
   j["max_steel_stress_MPa"] = b.peak->max_steel_stress_MPa;
+  j["max_tension_kN_per_bar"] = b.peak->max_tension_kN_per_bar;
+  j["tension_station_m"] = b.peak->tension_station_m;
+  j["tension_over_yield"] = b.peak->tension_over_yield;
+  j["tension_over_ultimate"] = b.peak->tension_over_ultimate;
+  j["max_compression_kN_per_bar"] = b.peak->max_compression_kN_per_bar;
+  j["compression_station_m"] = b.peak->compression_station_m;
+  j["first_broken_station_m"] = or_null(b.peak->first_broken_station_m);
   j["station_m"] = b.peak->station_m;
   j["yielded"] = b.peak->yielded;
   j["broken"] = b.peak->broken;

@@ -20,6 +20,13 @@ struct BoltPeak {
   double station_m = 0;  ///< of the peak, from the collar
   bool yielded = false;
   bool broken = false;
+  /// The largest tension and the largest compression along the bar [kN per
+  /// bar, both >= 0] with their stations, and the tension's steel stress
+  /// over the yield and the ultimate strength.
+  double max_tension_kN_per_bar = 0, tension_station_m = 0;
+  double max_compression_kN_per_bar = 0, compression_station_m = 0;
+  double tension_over_yield = 0, tension_over_ultimate = 0;
+  std::optional<double> first_broken_station_m;  ///< nearest the collar; none: intact
 };
 
 /// One bolt or cable ("bolts"."each"[i]).
