@@ -17,6 +17,7 @@
 #include "rockfdem/error.hpp"
 #include "rockfdem/fdem/engine.hpp"
 #include "rockfdem/mesh/msh_io.hpp"
+#include "run/checkpoint.hpp"
 #include "run/interrupt.hpp"
 #include "run/output_dir.hpp"
 #include "run/run.hpp"
@@ -58,6 +59,8 @@ class SpecimenRun : StagedRun<SpecimenOutputs> {
       } catch (const InputError& e) {
         throw InputError("checkpoint " + ctx_.restart + ": " + e.what());
       }
+      check_run_state_against_engine(ctx_.restart, resume_.run, scene_, engine().step_count(),
+                                     engine().time());
     }
     timer_.stamp("fdem setup");
   }
