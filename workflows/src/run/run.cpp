@@ -118,15 +118,19 @@ int Run::run() {
   make_mesh();
   stop_if_interrupted("meshing");
   solve_insitu();
-  if (scene_.stages.empty()) return write_implicit_results_only();
-  build_engine();
-  place_instruments();
-  write_first_outputs();
-  take_handoff_step();
-  begin_stages();
-  run_stages();
-  compare_with_references();
-  finish();
+  try {
+    if (scene_.stages.empty()) return write_implicit_results_only();
+    build_engine();
+    place_instruments();
+    write_first_outputs();
+    take_handoff_step();
+    begin_stages();
+    run_stages();
+    compare_with_references();
+    finish();
+  } catch (const OutputError& e) {
+    output_failed(e);
+  }
   return 0;
 }
 

@@ -38,10 +38,14 @@ class SpecimenRun : StagedRun<SpecimenOutputs> {
   int run() {
     make_mesh();
     build_engine();
-    write_first_outputs();
-    begin_stages();
-    run_stages();
-    out_.finish(engine(), timer_, stages_->energy_check());
+    try {
+      write_first_outputs();
+      begin_stages();
+      run_stages();
+      out_.finish(engine(), timer_, stages_->energy_check());
+    } catch (const OutputError& e) {
+      output_failed(e);
+    }
     return 0;
   }
 
