@@ -534,6 +534,26 @@ TEST_F(MshBounded, a_fifo_or_a_directory_is_refused_unread) {
   ::rmdir(dir.c_str());
 }
 
+// Two inputs tests/fuzz/fuzz_msh found corrupting gmsh 4.8's heap (an
+// MSH 4.1 $Nodes block cut off and followed by MSH 2 text; an invalid and
+// a double free in gmsh::finalize, after the read): each ends with text
+// after its last section's end line, and is refused before gmsh reads it.
+TEST(MshUserFile, fuzzer_heap_corruptions_are_refused_before_gmsh) {
+  for (const char* name :
+       {"gmsh48_msh4_nodes_heap_corruption.msh", "gmsh48_msh4_double_free.msh"}) {
+    MshFileSpec spec = kGroups;
+    spec.path = std::string(ROCKFDEM_FUZZ_REFUSED_DIR) + "/" + name;
+    try {
+      read_msh(spec);
+      ADD_FAILURE() << name << " was read";
+    } catch (const InputError& e) {
+      const std::string what = e.what();
+      EXPECT_NE(what.find(spec.path + ": holds "), std::string::npos) << what;
+      EXPECT_NE(what.find("bytes after its last section's end line"), std::string::npos) << what;
+    }
+  }
+}
+
 TEST(MshUserFile, missing_file_is_refused) {
   MshFileSpec spec = kGroups;
   spec.path = temp_path("rockfdem_no_such_file.msh");
