@@ -11,12 +11,20 @@
 #include <stdexcept>
 #include <utility>
 
+#include "rockfdem/error.hpp"
+
 namespace rockfdem::coupling {
 namespace {
 
-std::runtime_error write_error(const std::string& path, const std::string& what, int err) {
-  return std::runtime_error("cannot write '" + path + "': " + what + ": " + std::strerror(err) +
-                            "; check that the directory exists and is writable");
+// What to do about the system's error `err`.
+std::string remedy(int err) {
+  if (err == ENOSPC || err == EDQUOT) return "free disk space there or choose another folder";
+  return "check that the directory exists and is writable";
+}
+
+OutputError write_error(const std::string& path, const std::string& what, int err) {
+  return OutputError("cannot write '" + path + "': " + what + ": " + std::strerror(err) + "; " +
+                     remedy(err));
 }
 
 std::string directory_of(const std::string& path) {

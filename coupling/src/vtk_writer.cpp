@@ -5,6 +5,7 @@
 #include <vtkCellArray.h>
 #include <vtkCellData.h>
 #include <vtkDoubleArray.h>
+#include <vtkErrorCode.h>
 #include <vtkFieldData.h>
 #include <vtkIntArray.h>
 #include <vtkNew.h>
@@ -19,11 +20,13 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <limits>
 #include <stdexcept>
 #include <type_traits>
 
 #include "rockfdem/coupling/atomic_file.hpp"
+#include "rockfdem/error.hpp"
 
 namespace rockfdem::coupling {
 namespace {
@@ -144,6 +147,19 @@ vtkSmartPointer<vtkUnstructuredGrid> to_vtk_grid(const VtkGrid& grid) {
   return ug;
 }
 
+/// A writer's error code in words: VTK's own codes (vtkErrorCode, from
+/// 20001) name the kind, a system error (errno, as the XML writers set it
+/// when a stream fails: 28 for a full disk) is its strerror text.
+std::string vtk_error_text(unsigned long code) {
+  const bool vtk_kind =
+      code >= vtkErrorCode::FileNotFoundError && code <= vtkErrorCode::UnknownError;
+  const std::string text = code == vtkErrorCode::OutOfDiskSpaceError   ? "out of disk space"
+                           : code == vtkErrorCode::CannotOpenFileError ? "cannot open the file"
+                           : vtk_kind                                  ? "a VTK error"
+                                                                       : std::strerror(int(code));
+  return "VTK writer failed: " + text + " (error code " + std::to_string(code) + ")";
+}
+
 /// Appended raw binary, zlib, UInt64 headers; temp file then rename.
 template <typename Writer>
 void write_xml(Writer* writer, const std::string& path) {
@@ -153,11 +169,9 @@ void write_xml(Writer* writer, const std::string& path) {
   writer->EncodeAppendedDataOff();  // raw bytes, not base64: a third smaller
   writer->SetCompressorTypeToZLib();
   writer->SetHeaderTypeToUInt64();  // block sizes beyond 4 GiB
-  if (writer->Write() != 1 || writer->GetErrorCode() != 0) {
-    throw std::runtime_error("cannot write '" + path + "': VTK writer failed (error code " +
-                             std::to_string(writer->GetErrorCode()) +
-                             "); check free disk space and permissions");
-  }
+  if (writer->Write() != 1 || writer->GetErrorCode() != 0)
+    throw OutputError("cannot write '" + path + "': " + vtk_error_text(writer->GetErrorCode()) +
+                      "; check free disk space and permissions");
   file.commit();
 }
 

@@ -15,6 +15,23 @@
 #include <string>
 
 namespace rockfdem::mesh::detail {
+namespace {
+
+// One line of at most kLineBytes (the rest of a longer one is skipped
+// unread into memory); false at the end of the file.
+bool bounded_line(std::istream& in, std::string& line) {
+  line.clear();
+  int ch = 0;
+  bool any = false;
+  while ((ch = in.get()) != std::char_traits<char>::eof()) {
+    any = true;
+    if (ch == '\n') return true;
+    if (line.size() < kLineBytes) line.push_back(char(ch));
+  }
+  return any;
+}
+
+}  // namespace
 
 std::optional<std::size_t> declared_node_count(const std::string& path) {
   std::ifstream in(path);
@@ -39,11 +56,66 @@ std::optional<std::size_t> declared_node_count(const std::string& path) {
   return std::nullopt;
 }
 
+// The first bytes only: a file with no line break in its first gigabytes
+// (a sparse 3 GB file of zeros) was read whole as its "first line".
 bool starts_as_msh(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
+  char head[kHeadBytes];
+  in.read(head, sizeof head);
+  const std::string start(head, std::size_t(in.gcount()));
+  return start.rfind("$MeshFormat", 0) == 0 || start.rfind("$NOD", 0) == 0;
+}
+
+std::optional<std::string> text_after_last_section(const std::string& path, std::uint64_t size) {
+  std::ifstream in(path, std::ios::binary);
+  const std::uint64_t n = std::min<std::uint64_t>(size, kTailBytes);
+  std::string tail(n, '\0');
+  in.seekg(std::streamoff(size - n));
+  in.read(tail.data(), std::streamsize(n));
+  tail.resize(std::size_t(in.gcount()));
+  // The last line that starts with "$End" ("$ENDELM" in MSH 1).
+  for (std::size_t at = tail.size(); at > 0;) {
+    const std::size_t found = tail.rfind('$', at - 1);
+    if (found == std::string::npos) break;
+    at = found;
+    const bool line_start = found > 0 ? tail[found - 1] == '\n' : n == size;
+    if (!line_start || (tail.compare(found, 4, "$End") != 0 && tail.compare(found, 4, "$END") != 0))
+      continue;
+    const std::size_t line_end = std::min(tail.find('\n', found), tail.size());
+    if (tail.find_first_not_of(" \t\r\n", line_end) == std::string::npos) return std::nullopt;
+    return "holds " + std::to_string(tail.size() - line_end) +
+           " bytes after its last section's end line (" +
+           tail.substr(found, std::min<std::size_t>(40, line_end - found)) + ")";
+  }
+  return "does not end with a section's end line ($End...): its last " + std::to_string(n) +
+         " bytes hold none";
+}
+
+std::optional<std::uint64_t> declared_items(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
   std::string line;
-  if (!std::getline(in, line)) return false;
-  return line.rfind("$MeshFormat", 0) == 0 || line.rfind("$NOD", 0) == 0;
+  double version = 0;
+  std::uint64_t items = 0;
+  int found = 0;
+  while (found < 2 && bounded_line(in, line)) {
+    const bool nodes = line.rfind("$Nodes", 0) == 0 || line.rfind("$NOD", 0) == 0;
+    const bool elements = line.rfind("$Elements", 0) == 0 || line.rfind("$ELM", 0) == 0;
+    if (line.rfind("$MeshFormat", 0) == 0) {
+      int file_type = -1;
+      if (!bounded_line(in, line)) return std::nullopt;
+      std::istringstream(line) >> version >> file_type;
+      if (file_type != 0) return std::nullopt;  // binary: counts are not text
+    } else if (nodes || elements) {
+      if (!bounded_line(in, line)) return std::nullopt;
+      std::istringstream header(line);
+      std::uint64_t first = 0, second = 0;
+      if (!(header >> first)) return std::nullopt;
+      if (version >= 4 && !(header >> second)) return std::nullopt;
+      items += version >= 4 ? second : first;  // MSH 4: blocks, items, min, max tag
+      ++found;
+    }
+  }
+  return found == 2 ? std::optional<std::uint64_t>(items) : std::nullopt;
 }
 
 std::optional<std::string> tag_out_of_int_range(const std::string& path) {

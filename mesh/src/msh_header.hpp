@@ -12,11 +12,34 @@ namespace rockfdem::mesh::detail {
 /// binary files or when the file has no readable $Nodes header.
 std::optional<std::size_t> declared_node_count(const std::string& path);
 
+/// Bytes read to tell a mesh file's start, and its end.
+inline constexpr std::size_t kHeadBytes = 64;
+inline constexpr std::size_t kTailBytes = 4096;
+/// Bytes of a line kept by the header scans (the rest is skipped).
+inline constexpr std::size_t kLineBytes = 4096;
+/// An ASCII .msh holds at most kFixedBytes + kBytesPerItem x (the nodes and
+/// elements its headers declare): a node line takes 30-80 bytes as gmsh
+/// writes it, an element 20-60; sections beyond those (physical names,
+/// entities, node data of a few components) fit the margin.
+inline constexpr std::uint64_t kFixedBytes = 1 << 20;
+inline constexpr std::uint64_t kBytesPerItem = 1024;
+
 /// Whether the file starts as a gmsh mesh file does ("$MeshFormat", or
 /// "$NOD" for MSH 1). gmsh::open reads any other text as a .geo script,
 /// which can run shell commands (SystemCall): such files must never reach
 /// it (found by tests/fuzz/fuzz_msh).
 bool starts_as_msh(const std::string& path);
+
+/// What follows the file's last section, from its last kTailBytes bytes:
+/// nullopt when the last line but white space starts with "$End" (every
+/// section of a .msh, text or binary, ends with such a line), else what
+/// follows (text after a mesh: gmsh skips it, however long).
+std::optional<std::string> text_after_last_section(const std::string& path, std::uint64_t size);
+
+/// The nodes and elements the $Nodes and $Elements headers of an ASCII .msh
+/// declare, together; nullopt for binary files or without both headers.
+/// Reads lines up to the $Elements header, each kept to kLineBytes.
+std::optional<std::uint64_t> declared_items(const std::string& path);
 
 /// In an ASCII .msh, the first number in an $Elements or $Periodic section
 /// that is negative or above 2147483647, as "line N: 'TEXT'"; nullopt when

@@ -3,6 +3,7 @@
 // much later and far from its cause. Each check names the file and the node,
 // element or physical group at fault, and says what is allowed.
 #include <gmsh.h>
+#include <sys/stat.h>
 
 #include <algorithm>
 #include <array>
@@ -37,13 +38,40 @@ struct Reader {
     throw InputError(printable(spec.path + ": " + what));
   }
 
-  void open() const {
+  // Before gmsh reads a byte: a regular file (a FIFO would block, a device
+  // such as /dev/zero never end), its first 64 bytes a mesh's start, its
+  // last 4 KiB a section's end, and (ASCII) its size within what its
+  // declared counts can take. Each is read in bounded time and memory.
+  std::uint64_t check_file() const {
+    struct stat st {};
+    if (::stat(spec.path.c_str(), &st) != 0)
+      fail("cannot open the file; give the path of a readable gmsh .msh file");
+    if (!S_ISREG(st.st_mode))
+      fail("is not a regular file (a directory, FIFO or device); give a gmsh .msh file");
     if (!std::ifstream(spec.path).good())
       fail("cannot open the file; give the path of a readable gmsh .msh file");
     if (!detail::starts_as_msh(spec.path))
       fail(
           "does not start with $MeshFormat (or $NOD); give a gmsh .msh mesh file (gmsh "
           "reads other text as a .geo script, which is never run here)");
+    const std::uint64_t size = std::uint64_t(st.st_size);
+    if (const auto after = detail::text_after_last_section(spec.path, size))
+      fail(*after +
+           "; a gmsh .msh file ends with its last section's $End line (refused before "
+           "gmsh reads it)");
+    return size;
+  }
+
+  void open() const {
+    const std::uint64_t size = check_file();
+    if (const auto items = detail::declared_items(spec.path)) {
+      const std::uint64_t bound = detail::kFixedBytes + detail::kBytesPerItem * *items;
+      if (size > bound)
+        fail("holds " + std::to_string(size) + " bytes, more than the " + std::to_string(bound) +
+             " its " + std::to_string(*items) +
+             " declared nodes and elements can take (1 MiB + 1 KiB each); give the mesh "
+             "without data appended (refused before gmsh reads it)");
+    }
     if (const auto bad = detail::count_beyond_file(spec.path))
       fail(*bad + " (refused before gmsh reads it)");
     if (const auto bad = detail::tag_out_of_int_range(spec.path))

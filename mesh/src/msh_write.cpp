@@ -15,6 +15,7 @@
 
 #include "gmsh_session.hpp"
 #include "msh_names.hpp"
+#include "rockfdem/error.hpp"
 #include "rockfdem/mesh/msh_io.hpp"
 
 namespace rockfdem::mesh {
@@ -107,9 +108,9 @@ void write_msh(const Mesh& m, const std::string& path) {
   // must exist before it replaces anything.
   if (!std::ifstream(tmp).good() || std::rename(tmp.c_str(), path.c_str()) != 0) {
     std::remove(tmp.c_str());
-    throw std::runtime_error("writing " + path +
-                             ": cannot write the file; check that its "
-                             "folder exists and is writable");
+    throw OutputError("writing " + path +
+                      ": cannot write the file; check that its "
+                      "folder exists and is writable");
   }
 }
 

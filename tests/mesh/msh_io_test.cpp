@@ -5,9 +5,12 @@
 
 #include <gmsh.h>
 #include <gtest/gtest.h>
+#include <sys/stat.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <array>
+#include <chrono>
 #include <cstdio>
 #include <fstream>
 #include <iostream>
@@ -450,6 +453,105 @@ TEST(MshUserFile, geo_script_is_refused_and_never_run) {
   expect_refused("rockfdem_script.msh", "SystemCall \"touch " + marker + "\";\n",
                  "does not start with $MeshFormat");
   EXPECT_FALSE(std::ifstream(marker).good()) << "the script's command ran";
+}
+
+// Bounded reads (issue 32, item 5). A 3 GB sparse file was read for 43 s
+// and 7.5 GB before "does not start with $MeshFormat" (its "first line"
+// had no end), and a valid mesh with 2 GB appended was read for 22.7 s and
+// 4.6 GB, then accepted. The start is now told from 64 bytes, the end from
+// the last 4 KiB, and an ASCII file's size is bounded by its declared
+// counts, each before gmsh reads the file. The sparse files here take no
+// disk space; each refusal must come within a second.
+class MshBounded : public ::testing::Test {
+ protected:
+  // `text`, then `extra` bytes of zeros (a hole), then `end`.
+  static std::string sparse(const std::string& name, const std::string& text, std::uint64_t extra,
+                            const std::string& end = "") {
+    const std::string path = temp_path(name);
+    {
+      std::ofstream out(path, std::ios::binary);
+      out << text;
+    }
+    if (::truncate(path.c_str(), off_t(text.size() + extra)) != 0) ADD_FAILURE() << "truncate";
+    std::ofstream(path, std::ios::binary | std::ios::app) << end;
+    return path;
+  }
+  static std::string refusal(const std::string& path) {
+    MshFileSpec spec = kGroups;
+    spec.path = path;
+    const auto t0 = std::chrono::steady_clock::now();
+    std::string what;
+    try {
+      read_msh(spec);
+    } catch (const InputError& e) {
+      what = e.what();
+    }
+    const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    EXPECT_LT(s, 1.0) << path << ": refused after " << s << " s";
+    std::remove(path.c_str());
+    return what;
+  }
+};
+
+TEST_F(MshBounded, a_huge_file_that_is_not_a_mesh_is_refused_from_its_first_bytes) {
+  const std::string what = refusal(sparse("rockfdem_sparse.msh", "", std::uint64_t(3) << 30));
+  EXPECT_NE(what.find("does not start with $MeshFormat"), std::string::npos) << what;
+}
+
+TEST_F(MshBounded, data_after_the_last_section_is_refused) {
+  const std::string mesh = square_msh(kNodes, kElements);
+  const std::string what = refusal(sparse("rockfdem_trailing.msh", mesh, std::uint64_t(2) << 30));
+  EXPECT_NE(what.find("does not end with a section's end line ($End...): its last 4096 bytes "
+                      "hold none"),
+            std::string::npos)
+      << what;
+  const std::string text = refusal(sparse("rockfdem_trailing_text.msh", mesh, 0, "junk\n"));
+  EXPECT_NE(text.find("holds 6 bytes after its last section's end line ($EndElements)"),
+            std::string::npos)
+      << text;
+}
+
+TEST_F(MshBounded, a_file_beyond_its_declared_counts_is_refused) {
+  // 2 GB hidden in a comment section before the mesh's end: the end is a
+  // section's, but 4 nodes and 3 elements take at most 1 MiB + 7 KiB.
+  const std::string mesh = square_msh(kNodes, kElements);
+  const std::string what = refusal(sparse("rockfdem_oversized.msh", mesh + "$Comments\n",
+                                          std::uint64_t(2) << 30, "\n$EndComments\n"));
+  EXPECT_NE(what.find(" bytes, more than the 1055744 its 7 declared nodes and elements can "
+                      "take (1 MiB + 1 KiB each)"),
+            std::string::npos)
+      << what;
+}
+
+TEST_F(MshBounded, a_fifo_or_a_directory_is_refused_unread) {
+  const std::string fifo = temp_path("rockfdem_fifo.msh");
+  std::remove(fifo.c_str());
+  ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+  EXPECT_NE(refusal(fifo).find("is not a regular file"), std::string::npos);
+  const std::string dir = temp_path("rockfdem_dir.msh");
+  ::mkdir(dir.c_str(), 0700);
+  EXPECT_NE(refusal(dir).find("is not a regular file"), std::string::npos);
+  ::rmdir(dir.c_str());
+}
+
+// Two inputs tests/fuzz/fuzz_msh found corrupting gmsh 4.8's heap (an
+// MSH 4.1 $Nodes block cut off and followed by MSH 2 text; an invalid and
+// a double free in gmsh::finalize, after the read): each ends with text
+// after its last section's end line, and is refused before gmsh reads it.
+TEST(MshUserFile, fuzzer_heap_corruptions_are_refused_before_gmsh) {
+  for (const char* name :
+       {"gmsh48_msh4_nodes_heap_corruption.msh", "gmsh48_msh4_double_free.msh"}) {
+    MshFileSpec spec = kGroups;
+    spec.path = std::string(ROCKFDEM_FUZZ_REFUSED_DIR) + "/" + name;
+    try {
+      read_msh(spec);
+      ADD_FAILURE() << name << " was read";
+    } catch (const InputError& e) {
+      const std::string what = e.what();
+      EXPECT_NE(what.find(spec.path + ": holds "), std::string::npos) << what;
+      EXPECT_NE(what.find("bytes after its last section's end line"), std::string::npos) << what;
+    }
+  }
 }
 
 TEST(MshUserFile, missing_file_is_refused) {

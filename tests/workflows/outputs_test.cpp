@@ -336,3 +336,60 @@ TEST_F(Outputs, specimen_runs_render_their_plots_under_xvfb) {
     fs::remove_all(out);
   }
 }
+
+// A full disk (issue 32, item 10): the run stops with exit 1 and one line
+// naming the file and the system's reason, without VTK's dozen lines of
+// pipeline state and colour codes on stderr, and summary.json records the
+// failure where it still fits (the half-written frame is removed first);
+// where it does not (no inode left for it), the line says so and why.
+// Each disk is a tmpfs of its own, mounted in a user and mount namespace.
+TEST(DiskFull, is_one_line_and_a_summary_of_the_failure_or_why_not) {
+  if (std::system("unshare -rm true > /dev/null 2>&1") != 0)
+    GTEST_SKIP() << "unshare -rm (user and mount namespaces) is not allowed here";
+  struct Case {
+    std::string name, options;
+    bool summary;  // summary.json can be written after the failure
+  };
+  // 1 MiB: room for the first three frames (213 KB each), not the fourth;
+  // 8 inodes: the first frame's temporary file is the ninth.
+  const std::vector<Case> cases = {{"space", "size=1m", true},
+                                   {"inodes", "size=10m,nr_inodes=8", false}};
+  for (const Case& c : cases) {
+    const fs::path disk = scratch("disk-full-" + c.name);
+    fs::create_directories(disk);
+    const fs::path out = disk / "out";
+    const fs::path log = scratch("disk-full-log-" + c.name);
+    // The run inside the namespace; its exit code and the files it left
+    // (a list and summary.json) are copied out before the tmpfs goes.
+    const std::string inner =
+        "mount -t tmpfs -o " + c.options + " tmpfs " + disk.string() + " && " + ROCKFDEM_BINARY +
+        " run " + kTestDir + "/restart_support.toml -q -j 2 -o " + out.string() + " 2> " +
+        log.string() + "; echo $? > " + log.string() + ".code; cp " + out.string() +
+        "/summary.json " + log.string() + ".summary 2> /dev/null; true";
+    ASSERT_EQ(std::system(("unshare -rm sh -c '" + inner + "'").c_str()), 0) << c.name;
+    const std::string err = read_text(log);
+    EXPECT_EQ(read_text(log.string() + ".code"), "1\n") << c.name << ": " << err;
+    EXPECT_EQ(std::count(err.begin(), err.end(), '\n'), 1) << c.name << ": " << err;
+    EXPECT_EQ(err.find('\x1b'), std::string::npos) << c.name << ": " << err;
+    EXPECT_EQ(err.find("vtkExecutive"), std::string::npos) << c.name << ": " << err;
+    EXPECT_TRUE(has(err, "rockfdem: cannot write '" + out.string() + "/fdem_"))
+        << c.name << ": " << err;
+    EXPECT_TRUE(has(err, "No space left on device")) << c.name << ": " << err;
+    const fs::path summary = log.string() + ".summary";
+    if (c.summary) {
+      EXPECT_TRUE(has(err, out.string() + "/summary.json records the failure")) << err;
+      ASSERT_TRUE(fs::exists(summary)) << err;
+      const nlohmann::json s = read_json(summary);
+      EXPECT_EQ(s["status"], "failed");
+      EXPECT_TRUE(has(s["failure"].get<std::string>(), "No space left on device")) << s["failure"];
+    } else {
+      EXPECT_TRUE(has(err, out.string() +
+                               "/summary.json could not be written either (cannot write '" +
+                               out.string() + "/summary.json': "))
+          << err;
+      EXPECT_FALSE(fs::exists(summary));
+    }
+    for (const char* suffix : {"", ".code", ".summary"}) fs::remove(log.string() + suffix);
+    fs::remove_all(disk);
+  }
+}

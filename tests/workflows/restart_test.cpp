@@ -15,6 +15,7 @@
 #include <chrono>
 #include <cstring>
 #include <filesystem>
+#include <fstream>
 #include <functional>
 #include <future>
 #include <thread>
@@ -22,6 +23,7 @@
 
 #include "cli_runner.hpp"
 #include "rockfdem/error.hpp"
+#include "rockfdem/fdem/bits_hash.hpp"
 #include "rockfdem/workflows/scene.hpp"
 #include "run/checkpoint.hpp"
 
@@ -78,26 +80,27 @@ std::string refusal(const std::string& path) {
   return "";
 }
 
-// A run state as run.cpp writes one: one finished stage, one frame, one bolt.
+// A run state as run.cpp writes one for restart_support.toml: its first
+// stage (lining, no step) finished, one frame, one bolt.
 nlohmann::json valid_run_state() {
   const nlohmann::json report = {
-      {"kind", "equilibrium"},
+      {"kind", "lining"},
       {"changes", nlohmann::json::object()},
-      {"steps", 400},
-      {"simulated_time", 0.01},
+      {"steps", 0},
+      {"simulated_time", 0.0},
       {"dt", 2.5e-5},
       {"unbalanced_ratio", 1e-4},
       {"settle", nullptr},
       {"converged", true},
-      {"max_steps", 5000},
+      {"max_steps", 0},
       {"criteria", {{"ratio", 1e-3}, {"settle", 1e-3}, {"hold", 3}, {"unstable_fraction", 0.1}}},
       {"moving_most", {{"key_point", "crown"}, {"mm_per_1000_steps", 0.5}}},
       {"support_pressure_ratio", 0.0}};
   return {{"stages",
            {{"stage_index", 1},
             {"stage_started", true},
-            {"stage_first_step", 401},
-            {"stage_t0", 0.01},
+            {"stage_first_step", 1},
+            {"stage_t0", 2.5e-5},
             {"stage_changes", nlohmann::json::object()},
             {"stage_monitor_u", {0.0, 1e-4}},
             {"stage_held", 0},
@@ -256,6 +259,7 @@ TEST_F(Restart, forgeries_that_do_not_fit_the_run_leave_no_output_folder) {
   struct Case {
     std::string name;
     std::function<void(Checkpoint&)> forge;
+    std::string field = "";  // named in the message ("": not checked)
   };
   const std::vector<Case> cases = {
       {"engine-garbage", [](Checkpoint& c) { c.engine_state = "ENGINE"; }},
@@ -274,6 +278,26 @@ TEST_F(Restart, forgeries_that_do_not_fit_the_run_leave_no_output_folder) {
        [](Checkpoint& c) {
          c.run["stages"]["stage_monitor_u"] = {0.0, 0.0};
        }},
+      // Consistent among themselves, but not with the engine state's step
+      // (issue 32, item 8): the first stage again, from the hand-off step.
+      {"stage-zero",
+       [](Checkpoint& c) {
+         nlohmann::json& s = c.run["stages"];
+         s["stage_index"] = 0;
+         s["report"] = nlohmann::json::array();
+         s["stage_first_step"] = 1;
+         s["stage_t0"] = c.run["outputs"]["handoff_dt"];
+       },
+       "field 'stages.stage_first_step' = 1 is not a step at most 0 (stage 1's max_steps) before "
+       "the engine state's step"},
+      {"last-checkpoint", [](Checkpoint& c) { c.run["stages"]["last_checkpoint"] = 5; },
+       "field 'stages.last_checkpoint' = 5 is not the engine state's step"},
+      {"history-beyond",
+       [](Checkpoint& c) {
+         nlohmann::json& h = c.run["outputs"]["history"];
+         h.back()[1] = 1e6;
+       },
+       "is not a step from the row before's"},
   };
   for (const Case& c : cases) {
     Checkpoint forged = good;
@@ -284,6 +308,9 @@ TEST_F(Restart, forgeries_that_do_not_fit_the_run_leave_no_output_folder) {
     const Result r = run("run " + kScene + " -q --restart " + path + " -o " + out.string());
     EXPECT_EQ(r.code, 2) << c.name << ": " << r.output;
     EXPECT_NE(r.output.find(path), std::string::npos) << c.name << ": " << r.output;
+    if (!c.field.empty()) {
+      EXPECT_NE(r.output.find(c.field), std::string::npos) << c.name << ": " << r.output;
+    }
     EXPECT_FALSE(fs::exists(out)) << c.name << ": the output folder was created";
   }
   fs::remove_all(dir);
@@ -570,6 +597,35 @@ TEST(CheckpointRead, forged_run_states_name_the_checkpoint_and_the_field) {
        {{"csv", "step\n"},
         {"frames", nlohmann::json::array({nlohmann::json::array({0.0, "../x"})})}},
        "field 'outputs.bolts.frames[0][1]' = \"../x\" is not a plain file name"},
+      // Values of the right type that the restart would run on with
+      // (issue 32, item 8): each against the scene and the other fields.
+      {"/stages/stage_first_step", std::int64_t(9000000000000000000),
+       "field 'stages.stage_first_step' = 9000000000000000000 is not 1, the hand-off step and "
+       "the finished stages' steps"},
+      {"/stages/stage_t0", 1e308,
+       "field 'stages.stage_t0' = 1e+308 is not the simulated time at the stage's start, 2.5e-05 "
+       "s"},
+      {"/stages/stage_t0", -1.0, "field 'stages.stage_t0' = -1.0 is not the simulated time"},
+      {"/stages/stage_index", 0,
+       "field 'stages.report' = "
+       "[{\"changes\":{},\"converged\":true,\"criteria\":{\"hold\":3,\"rat... "
+       "(1 reports) is not an array of 0 stage reports, one per finished stage"},
+      {"/stages/report", nlohmann::json::array(),
+       "field 'stages.report' = [] (0 reports) is not an array of 1 stage reports"},
+      {"/stages/report/0/kind", "equilibrium",
+       "field 'stages.report[0].kind' = \"equilibrium\" is not \"lining\", the scene's stage 1"},
+      {"/stages/report/0/steps", 400,
+       "field 'stages.report[0].steps' = 400 is not a step count from 0 to the stage's max_steps "
+       "0"},
+      {"/outputs/history", nlohmann::json::array(),
+       "field 'outputs.history' = [] is not an array of at least one row"},
+      {"/outputs/handoff_dt", 0.0,
+       "field 'outputs.handoff_dt' = 0.0 is not a positive time step in seconds"},
+      {"/outputs/handoff_dt", -1e308,
+       "field 'outputs.handoff_dt' = -1e+308 is not a positive time step in seconds"},
+      {"/stages/unstable", std::string(5 << 20, 'u'),
+       "field 'stages.unstable' = \"" + std::string(56, 'u') +
+           "... (5242880 characters) is not a string of at most 4096 characters"},
   };
   for (const Case& c : cases) {
     nlohmann::json run = valid_run_state();
@@ -584,8 +640,81 @@ TEST(CheckpointRead, forged_run_states_name_the_checkpoint_and_the_field) {
     const std::string msg = refusal(path);
     EXPECT_NE(msg.find("checkpoint " + path + ": corrupt run state: " + c.expect),
               std::string::npos)
-        << c.pointer << ": " << msg;
-    EXPECT_EQ(msg.find('\x1b'), std::string::npos) << msg;
+        << c.pointer << ": " << msg.substr(0, 2000);
+    EXPECT_EQ(msg.find('\x1b'), std::string::npos) << msg.substr(0, 2000);
+    EXPECT_LT(msg.size(), 1000u) << c.pointer << ": a message of " << msg.size() << " bytes";
+  }
+  // The valid state itself passes: each case above fails on its own field.
+  const std::string path =
+      write_checkpoint(dir.string(), 1, restart_scene(), {valid_run_state(), "ENGINE"});
+  EXPECT_EQ(refusal(path), "");
+  fs::remove_all(dir);
+}
+
+// A checkpoint whose run state is the text `run` (not necessarily JSON),
+// with a correct header and checksum: a forgery the checksum cannot catch.
+std::string forge_raw(const fs::path& dir, const std::string& run) {
+  fs::create_directories(dir);
+  std::string bytes = "RFDMCKPT";
+  const auto put = [&bytes](auto v) { bytes.append(reinterpret_cast<const char*>(&v), sizeof v); };
+  put(rockfdem::workflows::kCheckpointVersion);
+  put(rockfdem::workflows::scene_key(restart_scene()));
+  put(std::uint64_t(run.size()));
+  bytes += run;
+  put(std::uint64_t(6));
+  bytes += "ENGINE";
+  put(rockfdem::fdem::fnv1a(bytes.data(), bytes.size()));
+  const fs::path path = dir / "checkpoint_000000000001.rfck";
+  std::ofstream(path, std::ios::binary) << bytes;
+  return path.string();
+}
+
+// Run state text that is not the JSON a run writes (issue 32, item 8):
+// 100,000 nested '[' crashed the reader (SIGSEGV, the nesting was checked
+// after the parse and a message dumped the value recursively); NaN, an
+// infinity and trailing text were refused with the JSON library's raw
+// message. Each is now refused while parsing, naming the checkpoint, the
+// byte and the field being read.
+TEST(CheckpointRead, run_state_text_that_is_not_json_names_the_field) {
+  const fs::path dir = scratch("ckpt-raw");
+  const std::string good = valid_run_state().dump();
+  const auto with = [&good](const std::string& from, const std::string& to) {
+    const std::size_t at = good.find(from);
+    EXPECT_NE(at, std::string::npos) << from;
+    return good.substr(0, at) + to + good.substr(at + from.size());
+  };
+  struct Case {
+    std::string name, text, expect;
+  };
+  const std::vector<Case> cases = {
+      {"deep-open", std::string(100000, '['),
+       "nested more than 32 levels deep at field '[0][0][0]"},
+      {"deep-closed", std::string(100000, '[') + std::string(100000, ']'),
+       "nested more than 32 levels deep"},
+      {"deep-in-field",
+       with("\"stage_changes\":{}", "\"stage_changes\":" + std::string(50000, '[')),
+       "nested more than 32 levels deep at field 'stages.stage_changes[0][0]"},
+      {"nan", with("\"stage_t0\":2.5e-05", "\"stage_t0\":NaN"),
+       "NaN or an infinity, which a checkpoint never holds (JSON has no such number) at byte"},
+      {"nan-field", with("\"stage_t0\":2.5e-05", "\"stage_t0\":NaN"), ", field 'stages.stage_t0'"},
+      {"infinity", with("\"stage_rates\":[0.1,0.2]", "\"stage_rates\":[0.1,-Infinity]"),
+       "NaN or an infinity, which a checkpoint never holds (JSON has no such number) at byte"},
+      {"infinity-field", with("\"stage_rates\":[0.1,0.2]", "\"stage_rates\":[0.1,-Infinity]"),
+       ", field 'stages.stage_rates[1]'"},
+      {"huge", with("\"stage_t0\":2.5e-05", "\"stage_t0\":1e400"),
+       "a number beyond the range of a double (1.8e308) at field 'stages.stage_t0'"},
+      {"trailing", good + " trailing\x1b[2J", "text after the end of the JSON value at byte "},
+      {"cut", good.substr(0, good.size() / 2), "field '"},
+  };
+  for (const Case& c : cases) {
+    const std::string path = forge_raw(dir / c.name, c.text);
+    const std::string msg = refusal(path);
+    EXPECT_NE(msg.find("checkpoint " + path + ": corrupt run state: "), std::string::npos)
+        << c.name << ": " << msg.substr(0, 2000);
+    EXPECT_NE(msg.find(c.expect), std::string::npos) << c.name << ": " << msg.substr(0, 2000);
+    EXPECT_EQ(msg.find("json.exception"), std::string::npos) << c.name << ": " << msg;
+    EXPECT_EQ(msg.find('\x1b'), std::string::npos) << c.name << ": " << msg;
+    EXPECT_LT(msg.size(), 600u) << c.name << ": " << msg.substr(0, 2000);
   }
   fs::remove_all(dir);
 }

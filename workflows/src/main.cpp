@@ -6,6 +6,7 @@
 // shown as escapes, never sent to the terminal.
 #include <iostream>
 
+#include "rockfdem/coupling/vtk_messages.hpp"
 #include "rockfdem/error.hpp"
 #include "rockfdem/insitu/insitu.hpp"
 #include "rockfdem/printable.hpp"
@@ -16,6 +17,8 @@
 int main(int argc, char** argv) {
   using namespace rockfdem;
   workflows::install_early_handlers();
+  // A failing VTK writer is reported by its caller in one line.
+  coupling::quiet_vtk_messages();
   // MPI (for Trilinos' AMG in the implicit stage) lives as long as main().
   insitu::ScopedParallelInit parallel(argc, argv);
   workflows::study::register_study_commands();

@@ -9,6 +9,7 @@
 #include <stdexcept>
 
 #include "rockfdem/coupling/atomic_file.hpp"
+#include "rockfdem/error.hpp"
 
 namespace rockfdem::plots {
 
@@ -25,9 +26,9 @@ void save_window_png(vtkRenderWindow* window, const std::string& path) {
   png->SetFileName(file.temp_path().c_str());
   png->Write();
   if (png->GetErrorCode() != 0) {
-    throw std::runtime_error("cannot write '" + path + "': PNG writer failed (error code " +
-                             std::to_string(png->GetErrorCode()) +
-                             "); check free disk space and permissions");
+    throw OutputError("cannot write '" + path + "': PNG writer failed (error code " +
+                      std::to_string(png->GetErrorCode()) +
+                      "); check free disk space and permissions");
   }
   file.commit();
 }

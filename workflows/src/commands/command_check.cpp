@@ -160,11 +160,32 @@ double explicit_steps(const Scene& s) {
 constexpr double kAlphaSecondsPerTriangle = 12e-6;
 constexpr double kTimeMargin = 2.5;
 
+// What each stage costs beyond its steps: its change (damping, supports,
+// the core), the energy ledger, the history row and the files rewritten
+// at its end. Measured on the shared 2-core machine, 200 one-step
+// equilibrium stages of the elastic circular tunnel: 25 ms per stage at
+// 2,048 triangles, 20 ms at 4,688; 20,000 such stages of a scene were
+// bounded at 70 s by steps alone and took 14 ms each (issue 32). The bound
+// takes 10 ms + 8 us per triangle per stage.
+constexpr double kStageSeconds = 0.010;
+constexpr double kStageSecondsPerTriangle = 8e-6;
+
+double stage_changes(const Scene& s) {
+  return s.mesh.kind == mesh::ModelKind::kTunnel || s.mesh.kind == mesh::ModelKind::kMshFile
+             ? double(s.stages.size())
+             : 0.0;
+}
+
+double stage_seconds(const Scene& s, double triangles) {
+  return stage_changes(s) * (kStageSeconds + kStageSecondsPerTriangle * triangles);
+}
+
 double run_seconds(const Scene& s, const Estimate& e, int threads) {
   const double serial = e.fracture_triangles > 0 && s.engine.contact ? 8e6 : 11e6;
   const double rate = serial * std::max(1, threads) * (threads > 1 ? 0.9 : 1.0);
   const double implicit = kAlphaSecondsPerTriangle * double(s.insitu.alpha.size()) * e.triangles;
-  return 90e-6 * e.triangles + implicit + explicit_steps(s) * e.triangles / rate;
+  return 90e-6 * e.triangles + implicit + explicit_steps(s) * e.triangles / rate +
+         stage_seconds(s, e.triangles);
 }
 
 // Plane-strain P-wave speed of the rock.
@@ -211,9 +232,12 @@ namespace {
 constexpr double kFractureCost = 4.0;
 // Fixed and output costs the probe does not see: the process's start (MPI
 // and library initialisation, scene reading: 0.9 s measured), and writing
-// each output step's frame and history row (2 us per triangle allowed).
 constexpr double kStartSeconds = 2.0;
+// each output step's frame and history row (2 us per triangle allowed,
+// and 5 ms for the files it rewrites: an output within a stage took 4-8 ms
+// at 2,048 triangles).
 constexpr double kOutputSecondsPerTriangle = 2e-6;
+constexpr double kOutputSeconds = 0.005;
 constexpr double kProbeTimeMargin = 1.5;
 constexpr double kProbeMemoryMargin = 1.25;
 // What a tunnel run holds above the probe: the implicit solves (the sparse
@@ -244,8 +268,8 @@ double probe_seconds(const Scene& s, const Probe& p) {
       staged(s) ? 90e-6 * tri + kAlphaSecondsPerTriangle * tri * double(s.insitu.alpha.size())
                 : 0.0;
   const double fracture = fracture_factor(p);
-  const double outputs = output_steps(s) * kOutputSecondsPerTriangle * tri;
-  return kStartSeconds + p.mesh_seconds + implicit + outputs +
+  const double outputs = output_steps(s) * (kOutputSeconds + kOutputSecondsPerTriangle * tri);
+  return kStartSeconds + p.mesh_seconds + implicit + outputs + stage_seconds(s, tri) +
          explicit_steps(s) * p.seconds_per_step * fracture;
 }
 
@@ -275,9 +299,12 @@ void print_probe(const Scene& scene, const Probe& p) {
   std::printf(
       "  run time (bound):           %.0f s at most on %d thread%s (bound: %.3g ms per step "
       "measured here over %ld steps, x %.2f for fracture, x the steps, + meshing %.2f s + the "
-      "implicit stage + start-up and outputs, x %.1f margin)\n",
+      "implicit stage + start-up and outputs + %.0f stage changes at %.3g s each, x %.1f "
+      "margin)\n",
       kProbeTimeMargin * probe_seconds(scene, p), p.threads, p.threads == 1 ? "" : "s",
-      1e3 * p.seconds_per_step, p.steps, fracture_factor(p), p.mesh_seconds, kProbeTimeMargin);
+      1e3 * p.seconds_per_step, p.steps, fracture_factor(p), p.mesh_seconds, stage_changes(scene),
+      stage_seconds(scene, double(p.triangles)) / std::max(1.0, stage_changes(scene)),
+      kProbeTimeMargin);
   std::printf("  stable time step:           %.4g s on true masses (this mesh, its penalties)\n",
               scene.engine.dt_safety * p.critical_true);
   std::printf("  time step at the start:     %.8g s%s\n", p.dt_start,
@@ -317,7 +344,7 @@ void print_constants(const Scene& scene, const Estimate& e, double cp, int threa
   std::printf(
       "  run time (bound):           %.0f s at most on %d idle thread%s (measured throughput "
       "of the 2-core development machine: 8-11 M triangle-steps/s per thread, 12 us per "
-      "triangle per alpha; x %.1f margin)\n",
+      "triangle per alpha, 10 ms + 8 us per triangle per stage; x %.1f margin)\n",
       kTimeMargin * run_seconds(scene, e, threads), threads, threads == 1 ? "" : "s", kTimeMargin);
   std::printf("  stable time step (approx):  %.3g s on true masses (from the smallest altitude)\n",
               dt);

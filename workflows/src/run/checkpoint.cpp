@@ -7,9 +7,11 @@
 #include <algorithm>
 #include <cctype>
 #include <cerrno>
+#include <cmath>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
+#include <functional>
 #include <map>
 #include <vector>
 
@@ -30,6 +32,8 @@ namespace {
 constexpr char kMagic[8] = {'R', 'F', 'D', 'M', 'C', 'K', 'P', 'T'};
 constexpr const char* kPrefix = "checkpoint_";
 constexpr const char* kSuffix = ".rfck";
+constexpr std::size_t kMaxNesting = 32;    ///< a written run state nests 5
+constexpr std::size_t kMaxMessage = 4096;  ///< a written message: under 1000 characters
 
 template <class T>
 void put(std::string& out, T value) {
@@ -192,6 +196,10 @@ int open_regular(const std::string& path, std::uint64_t& size) {
 
 using nlohmann::json;
 
+bool specimen(const Scene& scene) {
+  return scene.mesh.kind == mesh::ModelKind::kUcs || scene.mesh.kind == mesh::ModelKind::kBrazilian;
+}
+
 class RunStateCheck {
  public:
   RunStateCheck(const std::string& path, const Scene& scene) : path_(path), scene_(scene) {}
@@ -205,28 +213,127 @@ class RunStateCheck {
       refuse(path_, "corrupt run state: nested more than " + std::to_string(kMaxNesting) +
                         " levels deep (a written run state nests 5); use the previous checkpoint");
     stages(member(run, "", "stages"));
-    if (scene_.mesh.kind == mesh::ModelKind::kUcs ||
-        scene_.mesh.kind == mesh::ModelKind::kBrazilian)
-      return specimen_outputs(member(run, "", "outputs"));
-    outputs(member(run, "", "outputs"));
-    bolts(member(run, "", "bolts"));
-    number(member(run, "", "start_ratio"), "start_ratio");
+    if (specimen(scene_))
+      specimen_outputs(member(run, "", "outputs"));
+    else {
+      outputs(member(run, "", "outputs"));
+      bolts(member(run, "", "bolts"));
+      number(member(run, "", "start_ratio"), "start_ratio");
+    }
+    consistent(run);
+  }
+
+  // The fields that count steps or time, against the engine state saved
+  // with them (its step count and simulated time).
+  void against_engine(const json& run, long step, double time) const {
+    const json& s = run["stages"];
+    const std::string now = "the engine state's step " + std::to_string(step);
+    if (s["last_checkpoint"] != step) bad("stages.last_checkpoint", &s["last_checkpoint"], now);
+    const std::size_t index = s["stage_index"].get<std::size_t>();
+    if (s["stage_started"].get<bool>() && index < scene_.stages.size()) {
+      const std::int64_t first = s["stage_first_step"].get<std::int64_t>();
+      const long cap = scene_.stages[index].max_steps;
+      if (first > step || step - first > cap)
+        bad("stages.stage_first_step", &s["stage_first_step"],
+            "a step at most " + std::to_string(cap) + " (stage " + std::to_string(index + 1) +
+                "'s max_steps) before " + now);
+      if (s["stage_t0"].get<double>() > time * (1 + 1e-9))
+        bad("stages.stage_t0", &s["stage_t0"],
+            "a time at most the engine state's simulated time " + detail_number(time) + " s");
+    }
+    // The step column: history.csv's "step" (a tunnel's second, a specimen's first).
+    const std::size_t k = specimen(scene_) ? 0 : 1;
+    const json& history = run["outputs"]["history"];
+    double last = 0;
+    for (std::size_t i = 0; i < history.size(); ++i) {
+      const std::string at =
+          "outputs.history[" + std::to_string(i) + "][" + std::to_string(k) + "]";
+      if (history[i].size() <= k) bad(at, nullptr, "a step");
+      const double row = history[i][k].get<double>();
+      if (row < last || row > double(step))
+        bad(at, &history[i][k],
+            "a step from the row before's (" + detail_number(last) + ") to " + now);
+      last = row;
+    }
+    if (specimen(scene_)) {
+      const json& peak = run["outputs"]["load"]["peak_step"];
+      if (peak.get<std::int64_t>() < 0 || peak.get<std::int64_t>() > step)
+        bad("outputs.load.peak_step", &peak, "a step from 0 to " + now);
+    }
   }
 
  private:
-  [[noreturn]] void bad(const std::string& field, const json* value,
-                        const std::string& expected) const {
+  // The fields that follow from one another, as the run writes them: one
+  // report per finished stage, of the scene's stage at its place; the
+  // current stage's first step after the hand-off step (tunnels) and the
+  // finished stages' steps; its start time their simulated time (each
+  // stage's time is the difference of two engine times, so the sum holds
+  // within rounding). A forgery that changes one of them alone (a stage
+  // index of 0 with a later engine state, report = [], a first step of
+  // 9e18, a start time of 1e308) would run on with a silently wrong
+  // record, or stop a stage early.
+  void consistent(const json& run) const {
+    const json& s = run["stages"];
+    const json& report = s["report"];
+    const std::size_t index = s["stage_index"].get<std::size_t>();
+    if (report.size() != index)
+      bad("stages.report", &report,
+          "an array of " + std::to_string(index) +
+              " stage reports, one per finished stage (stages.stage_index = " +
+              std::to_string(index) + ")",
+          " (" + std::to_string(report.size()) + " reports)");
+    const bool tunnel = !specimen(scene_);
+    std::int64_t steps = tunnel ? 1 : 0;  // the hand-off step
+    const json& handoff_dt =
+        run["outputs"].contains("handoff_dt") ? run["outputs"]["handoff_dt"] : json();
+    double time = handoff_dt.is_number() ? handoff_dt.get<double>() : 0.0;
+    for (std::size_t i = 0; i < index; ++i) {
+      const std::string at = "stages.report[" + std::to_string(i) + "]";
+      const StageSpec& spec = scene_.stages[i];
+      if (report[i]["kind"] != spec.kind)
+        bad(at + ".kind", &report[i]["kind"],
+            "\"" + spec.kind + "\", the scene's stage " + std::to_string(i + 1));
+      if (report[i]["max_steps"] != spec.max_steps)
+        bad(at + ".max_steps", &report[i]["max_steps"],
+            std::to_string(spec.max_steps) + ", the scene's stage " + std::to_string(i + 1));
+      const std::int64_t n = report[i]["steps"].get<std::int64_t>();
+      if (n < 0 || n > spec.max_steps)
+        bad(at + ".steps", &report[i]["steps"],
+            "a step count from 0 to the stage's max_steps " + std::to_string(spec.max_steps));
+      non_negative(report[i]["simulated_time"], at + ".simulated_time");
+      steps += n;
+      time += report[i]["simulated_time"].get<double>();
+    }
+    if (!s["stage_started"].get<bool>() || index >= scene_.stages.size()) return;
+    if (s["stage_first_step"].get<std::int64_t>() != steps)
+      bad("stages.stage_first_step", &s["stage_first_step"],
+          std::to_string(steps) + (tunnel ? ", the hand-off step and" : ",") +
+              " the finished stages' steps");
+    const double t0 = s["stage_t0"].get<double>();
+    // Checkpoints from before handoff_dt was kept: only the stages' times.
+    const bool known = !tunnel || handoff_dt.is_number();
+    if (t0 < 0 || (known && std::abs(t0 - time) > 1e-6 * std::max(std::abs(t0), time)) ||
+        (!known && t0 < time * (1 - 1e-6)))
+      bad("stages.stage_t0", &s["stage_t0"],
+          "the simulated time at the stage's start, " + detail_number(time) + " s (" +
+              (tunnel ? "the hand-off step's dt and " : "") + "the finished stages' times)");
+  }
+
+  static std::string detail_number(double v) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%.10g", v);
+    return buf;
+  }
+
+  [[noreturn]] void bad(const std::string& field, const json* value, const std::string& expected,
+                        const std::string& note = "") const {
     std::string msg = "corrupt run state: field '" + field + "'";
     if (value)
-      msg += " = " + shown(*value) + " is not " + expected;
+      msg += " = " + shown(*value) + note + " is not " + expected;
     else
       msg += " is missing (expected " + expected + ")";
     refuse(path_, msg + "; use the previous checkpoint");
   }
-
-  // A value for a message: JSON with every control character and non-ASCII
-  // byte escaped, cut to 60 characters.
-  static constexpr std::size_t kMaxNesting = 32;
 
   // The deepest nesting of arrays and objects in `v`, without recursion.
   static std::size_t nesting(const json& v) {
@@ -243,8 +350,17 @@ class RunStateCheck {
     return deepest;
   }
 
+  // A value for a message: JSON with every control character and non-ASCII
+  // byte escaped, cut to 60 characters (a long string is cut before it is
+  // dumped); a non-finite number as "inf" or "nan" (JSON would say null).
   static std::string shown(const json& v) {
-    std::string text = v.dump(-1, ' ', true, json::error_handler_t::replace);
+    if (v.is_number_float() && !std::isfinite(v.get<double>()))
+      return std::isnan(v.get<double>()) ? "nan" : v.get<double>() > 0 ? "inf" : "-inf";
+    const json small = v.is_string() && v.get_ref<const std::string&>().size() > 60
+                           ? json(v.get_ref<const std::string&>().substr(0, 60))
+                           : json();
+    std::string text =
+        (small.is_null() ? v : small).dump(-1, ' ', true, json::error_handler_t::replace);
     if (text.size() > 60) text = text.substr(0, 57) + "...";
     return text;
   }
@@ -319,8 +435,16 @@ class RunStateCheck {
   void integer(const json& v, const std::string& f) const {
     if (!v.is_number_integer()) bad(f, &v, "an integer");
   }
+  // Every number a run writes is finite (nlohmann writes NaN and the
+  // infinities as null); a parsed 1e400 is an infinity.
   void number(const json& v, const std::string& f) const {
     if (!v.is_number()) bad(f, &v, "a number");
+    if (!std::isfinite(v.get<double>())) bad(f, &v, "a finite number");
+  }
+  // A count or a time that cannot be negative.
+  void non_negative(const json& v, const std::string& f) const {
+    if (v.is_number_integer() ? v.get<std::int64_t>() < 0 : v.get<double>() < 0)
+      bad(f, &v, "zero or more");
   }
   // Strings of a run state reach the terminal, summary.json, report.md
   // and CSV files: no control characters (a forged ESC would reach them
@@ -328,10 +452,15 @@ class RunStateCheck {
   static bool has_control(const std::string& s, bool line_breaks) {
     return printable(s, line_breaks) != s;
   }
+  // A name or a message: what the run writes is under 1000 characters, and
+  // it is echoed to the terminal and summary.json.
   void string(const json& v, const std::string& f) const {
     if (!v.is_string()) bad(f, &v, "a string");
-    if (has_control(v.get_ref<const std::string&>(), false))
-      bad(f, &v, "a string without control characters");
+    const std::string& s = v.get_ref<const std::string&>();
+    if (s.size() > kMaxMessage)
+      bad(f, &v, "a string of at most " + std::to_string(kMaxMessage) + " characters",
+          " (" + std::to_string(s.size()) + " characters)");
+    if (has_control(s, false)) bad(f, &v, "a string without control characters");
   }
   void text(const json& v, const std::string& f) const {
     if (!v.is_string()) bad(f, &v, "a string");
@@ -423,7 +552,13 @@ class RunStateCheck {
     array(names, at + ".stages", "an array of stage names");
     for (std::size_t i = 0; i < names.size(); ++i)
       string(names[i], at + ".stages[" + std::to_string(i) + "]");
-    if (o.contains("handoff_dt")) number(o["handoff_dt"], at + ".handoff_dt");
+    // The hand-off step's dt: positive (it is in the summary and the
+    // report as the first step's dt, and in the start time of each stage).
+    if (o.contains("handoff_dt")) {
+      number(o["handoff_dt"], at + ".handoff_dt");
+      if (!(o["handoff_dt"].get<double>() > 0))
+        bad(at + ".handoff_dt", &o["handoff_dt"], "a positive time step in seconds");
+    }
     if (o.contains("max_rotation_deg")) number(o["max_rotation_deg"], at + ".max_rotation_deg");
     frame_list(member(o, at, "frames"), at + ".frames");
     // BoltResults::restore writes the table as bolts.csv and copies the frames.
@@ -457,8 +592,11 @@ class RunStateCheck {
     }
   }
 
+  // A run records a row at its start (step 0, or the hand-off step) before
+  // any checkpoint: an empty history would drop the rows written before.
   void history_rows(const json& history, const std::string& at) const {
     array(history, at, "an array of rows of numbers");
+    if (history.empty()) bad(at, &history, "an array of at least one row (the run's first)");
     for (std::size_t i = 0; i < history.size(); ++i) {
       const std::string row = at + "[" + std::to_string(i) + "]";
       numbers(history[i], row);
@@ -519,6 +657,11 @@ void validate_run_state(const std::string& path, const nlohmann::json& run, cons
   RunStateCheck(path, scene).all(run);
 }
 
+void check_run_state_against_engine(const std::string& path, const nlohmann::json& run,
+                                    const Scene& scene, long step, double time) {
+  RunStateCheck(path, scene).against_engine(run, step, time);
+}
+
 namespace {
 
 [[noreturn]] void truncated(const std::string& path, std::uint64_t size, const std::string& what) {
@@ -562,6 +705,115 @@ void check_header(int fd, const std::string& path, std::uint64_t size) {
                   " bytes left for it)");
 }
 
+// ---- Parsing the run state --------------------------------------------------
+// nlohmann's parser is iterative, but a value nested deeper than the stack
+// allows is dumped recursively (a message, the summary): 100,000 nested
+// '[' ended in SIGSEGV. The parser's callback sees every level as it opens,
+// so the depth is bounded while parsing, before such a value exists; and it
+// keeps the path of the field being read, so that a syntax error (NaN, an
+// infinity, text after the end) is named by its field instead of by the
+// JSON library's raw message (which quotes the file's bytes).
+
+// Text from a file for a message: escaped and cut to `n` characters.
+std::string cut(const std::string& text, std::size_t n) {
+  const std::string shown = printable(text);
+  return shown.size() > n ? shown.substr(0, n - 3) + "..." : shown;
+}
+
+class RunStatePath {
+ public:
+  // The parser's callback: follows the levels and keys, and stops the
+  // parse (Deep) at a level beyond kMaxNesting.
+  bool operator()(int /*depth*/, nlohmann::json::parse_event_t event, const nlohmann::json& v) {
+    using E = nlohmann::json::parse_event_t;
+    switch (event) {
+      case E::object_start:
+      case E::array_start:
+        if (levels_.size() >= kMaxNesting) throw Deep{where()};
+        levels_.push_back({event == E::array_start, "", 0});
+        break;
+      case E::key:
+        levels_.back().key = v.get<std::string>();
+        break;
+      case E::object_end:
+      case E::array_end:
+        levels_.pop_back();
+        value_done();
+        break;
+      case E::value:
+        value_done();
+        break;
+    }
+    return true;
+  }
+  struct Deep {
+    std::string field;
+  };
+  // The field being read: "stages.stage_rates[1]".
+  std::string where() const {
+    std::string at;
+    for (const Level& l : levels_)
+      at += l.array ? "[" + std::to_string(l.index) + "]" : (at.empty() ? "" : ".") + l.key;
+    return at;
+  }
+  // The whole top-level value is read (what follows is extra text).
+  bool complete() const { return complete_; }
+
+ private:
+  void value_done() {
+    if (levels_.empty())
+      complete_ = true;
+    else if (levels_.back().array)
+      ++levels_.back().index;
+  }
+  struct Level {
+    bool array;
+    std::string key;
+    std::size_t index;
+  };
+  std::vector<Level> levels_;
+  bool complete_ = false;
+};
+
+// What a syntax error at byte `at` of `text` is, in words.
+std::string syntax_error(const std::string& text, std::size_t at, bool complete) {
+  if (complete) return "text after the end of the JSON value";
+  std::string near = text.substr(at > 3 ? at - 3 : 0, 12);
+  std::transform(near.begin(), near.end(), near.begin(),
+                 [](unsigned char ch) { return char(std::tolower(ch)); });
+  if (near.find("nan") != std::string::npos || near.find("inf") != std::string::npos)
+    return "NaN or an infinity, which a checkpoint never holds (JSON has no such number)";
+  if (at >= text.size()) return "the JSON ends before its value is complete";
+  return "not valid JSON";
+}
+
+nlohmann::json parse_run_state(const std::string& path, const std::string& text) {
+  RunStatePath reading;
+  try {
+    return nlohmann::json::parse(text, std::ref(reading));
+  } catch (const RunStatePath::Deep& d) {
+    refuse(path, "corrupt run state: nested more than " + std::to_string(kMaxNesting) +
+                     " levels deep at field '" + cut(d.field, 80) +
+                     "' (a written run state nests 5); use the previous checkpoint");
+  } catch (const nlohmann::json::parse_error& e) {
+    const std::size_t at = e.byte > 0 ? e.byte - 1 : 0;
+    const std::string field = reading.where();
+    refuse(path, "corrupt run state: " + syntax_error(text, at, reading.complete()) + " at byte " +
+                     std::to_string(at) + " of " + std::to_string(text.size()) +
+                     (field.empty() ? "" : ", field '" + cut(field, 80) + "'") + " (near \"" +
+                     cut(text.substr(at > 8 ? at - 8 : 0, 24), 40) +
+                     "\"); use the previous checkpoint");
+  } catch (const nlohmann::json::exception& e) {
+    // out_of_range.406: a number beyond a double's range (1e400).
+    const std::string field = reading.where();
+    refuse(path, std::string("corrupt run state: ") +
+                     (e.id == 406 ? "a number beyond the range of a double (1.8e308)"
+                                  : "not valid JSON") +
+                     (field.empty() ? "" : " at field '" + cut(field, 80) + "'") + " (" +
+                     std::to_string(text.size()) + " bytes); use the previous checkpoint");
+  }
+}
+
 }  // namespace
 
 Checkpoint read_checkpoint(const std::string& path, const Scene& scene) {
@@ -589,11 +841,7 @@ Checkpoint read_checkpoint(const std::string& path, const Scene& scene) {
            "written for another scene (or other --set values); restart with the scene "
            "and overrides of the original run");
   Checkpoint c;
-  try {
-    c.run = nlohmann::json::parse(r.block());
-  } catch (const nlohmann::json::exception& e) {
-    refuse(path, std::string("corrupt run state: ") + e.what());
-  }
+  c.run = parse_run_state(path, r.block());
   validate_run_state(path, c.run, scene);
   c.engine_state = r.block();
   return c;

@@ -63,6 +63,15 @@ Checkpoint read_checkpoint(const std::string& path, const Scene& scene);
 /// `path` and the field.
 void validate_run_state(const std::string& path, const nlohmann::json& run, const Scene& scene);
 
+/// Checks the run state's steps and times against the engine state saved
+/// with it (its step count `step` and simulated time `time`, after
+/// Engine::load_state): the checkpoint's step, the current stage's first
+/// step and start time, history rows in step order up to `step`, a
+/// specimen's peak step. Throws InputError naming the checkpoint `path`
+/// and the field.
+void check_run_state_against_engine(const std::string& path, const nlohmann::json& run,
+                                    const Scene& scene, long step, double time);
+
 /// The run directory a checkpoint belongs to: OUTDIR/checkpoints/FILE -> OUTDIR.
 std::string run_dir_of(const std::string& checkpoint);
 

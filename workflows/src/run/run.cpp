@@ -75,7 +75,7 @@ void check_key_point_fields(const nlohmann::json& run, const std::vector<Monitor
 /// against the scene and mesh, before the output folder is claimed: a
 /// checkpoint that does not fit leaves OUTDIR as it found it. Returns the
 /// hand-off's unbalanced-force ratio.
-double restore_before_writing(const Checkpoint& resume, const std::string& file,
+double restore_before_writing(const Checkpoint& resume, const std::string& file, const Scene& scene,
                               const std::vector<Monitor>& monitors, const RunOutputs& out,
                               fdem::Engine& engine, fdem::BoltPlan& bolts) {
   try {
@@ -84,6 +84,7 @@ double restore_before_writing(const Checkpoint& resume, const std::string& file,
   } catch (const InputError& e) {
     throw InputError("checkpoint " + file + ": its engine state: " + e.what());
   }
+  check_run_state_against_engine(file, resume.run, scene, engine.step_count(), engine.time());
   restore_bolts(resume.run.at("bolts"), bolts, file);
   check_key_point_fields(resume.run, monitors, out, file);
   return resume.run.at("start_ratio").get<double>();
@@ -117,15 +118,19 @@ int Run::run() {
   make_mesh();
   stop_if_interrupted("meshing");
   solve_insitu();
-  if (scene_.stages.empty()) return write_implicit_results_only();
-  build_engine();
-  place_instruments();
-  write_first_outputs();
-  take_handoff_step();
-  begin_stages();
-  run_stages();
-  compare_with_references();
-  finish();
+  try {
+    if (scene_.stages.empty()) return write_implicit_results_only();
+    build_engine();
+    place_instruments();
+    write_first_outputs();
+    take_handoff_step();
+    begin_stages();
+    run_stages();
+    compare_with_references();
+    finish();
+  } catch (const OutputError& e) {
+    output_failed(e);
+  }
   return 0;
 }
 
@@ -176,7 +181,8 @@ void Run::place_instruments() {
   out_.begin(mesh_, key_points_, bolts_,
              std::make_unique<Instruments>(scene_, mesh_, engine(), monitors, bolts_));
   if (restart_)
-    start_ratio_ = restore_before_writing(resume_, ctx_.restart, monitors, out_, engine(), bolts_);
+    start_ratio_ =
+        restore_before_writing(resume_, ctx_.restart, scene_, monitors, out_, engine(), bolts_);
   timer_.stamp("fdem setup");
 }
 

@@ -17,6 +17,7 @@
 #include "rockfdem/error.hpp"
 #include "rockfdem/fdem/engine.hpp"
 #include "rockfdem/mesh/msh_io.hpp"
+#include "run/checkpoint.hpp"
 #include "run/interrupt.hpp"
 #include "run/output_dir.hpp"
 #include "run/run.hpp"
@@ -37,10 +38,14 @@ class SpecimenRun : StagedRun<SpecimenOutputs> {
   int run() {
     make_mesh();
     build_engine();
-    write_first_outputs();
-    begin_stages();
-    run_stages();
-    out_.finish(engine(), timer_, stages_->energy_check());
+    try {
+      write_first_outputs();
+      begin_stages();
+      run_stages();
+      out_.finish(engine(), timer_, stages_->energy_check());
+    } catch (const OutputError& e) {
+      output_failed(e);
+    }
     return 0;
   }
 
@@ -58,6 +63,8 @@ class SpecimenRun : StagedRun<SpecimenOutputs> {
       } catch (const InputError& e) {
         throw InputError("checkpoint " + ctx_.restart + ": " + e.what());
       }
+      check_run_state_against_engine(ctx_.restart, resume_.run, scene_, engine().step_count(),
+                                     engine().time());
     }
     timer_.stamp("fdem setup");
   }

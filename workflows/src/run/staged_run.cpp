@@ -62,6 +62,27 @@ void StagedRun<Outputs>::fail(const std::string& what) {
 }
 
 template <class Outputs>
+void StagedRun<Outputs>::output_failed(const OutputError& e) {
+  const std::string summary = output_path(ctx_.output_dir, "summary.json");
+  std::string note = "; " + summary + " records the failure";
+  try {
+    if (!engine_) throw OutputError("no engine yet");
+    out_.report_failure(engine(), timer_, e.what());  // the summary, then report.md
+  } catch (const std::exception& first) {
+    // The summary alone, small, where the full report did not fit.
+    try {
+      summary_.status = "failed";
+      summary_.failure = e.what();
+      summary_.set_timings(timer_);
+      summary_.write(summary);
+    } catch (const std::exception& again) {
+      note = "; " + summary + " could not be written either (" + again.what() + ")";
+    }
+  }
+  throw OutputError(e.what() + note);
+}
+
+template <class Outputs>
 void StagedRun<Outputs>::save_checkpoint() {
   Checkpoint c;
   c.run = {{"stages", stages_->state()}, {"outputs", out_.state()}};

@@ -9,6 +9,7 @@
 #include <optional>
 #include <string>
 
+#include "rockfdem/error.hpp"
 #include "rockfdem/fdem/engine.hpp"
 #include "rockfdem/mesh/mesh.hpp"
 #include "rockfdem/workflows/scene.hpp"
@@ -43,6 +44,11 @@ class StagedRun {
   /// with failure_message(what): the history and frames so far are the
   /// last good output.
   [[noreturn]] void fail(const std::string& what);
+  /// An output that could not be written (disk full): summary.json of
+  /// the failed run where it can still be written, then the error again,
+  /// its message saying that summary.json records the failure or why it
+  /// could not be written either.
+  [[noreturn]] void output_failed(const OutputError& e);
   fdem::Engine& engine() { return *engine_; }
 
   /// The run state a restart needs beyond the stages' and outputs'.

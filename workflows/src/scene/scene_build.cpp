@@ -797,6 +797,12 @@ void read_stages(const Reader& r, Scene& s) {
   if (!list) return default_stages(r, s);
   if (s.mesh.kind != mesh::ModelKind::kTunnel && s.mesh.kind != mesh::ModelKind::kMshFile)
     r.fail("stages", "construction stages need a tunnel model");
+  // Each stage costs a stage change and an output beyond its steps: a
+  // list past this is a generated mistake, not a construction sequence.
+  if (list->as_array() && list->as_array()->size() > kMaxStages)
+    r.fail("stages", "holds " + std::to_string(list->as_array()->size()) +
+                         " entries; allowed: at most " + std::to_string(kMaxStages) +
+                         " (each costs a stage change and an output beyond its steps)");
   StageOrder at;
   // With the hand-off found at run time, soften stages may start from the top.
   at.alpha = s.insitu.handoff_first_crack ? s.insitu.alpha.front() : s.insitu.alpha.back();

@@ -554,7 +554,9 @@ void add_stages(std::vector<KeySpec>& s) {
                          ". Without [[stages]]: insitu, "
                          "lining (if the model has a ring not already active in the implicit "
                          "stage), bolts (if the scene has any), remove_core, equilibrium; UCS and "
-                         "Brazilian specimens (which take no [[stages]]): load_platens."));
+                         "Brazilian specimens (which take no [[stages]]): load_platens. At "
+                         "most " +
+                         std::to_string(kMaxStages) + " entries."));
   s.push_back(number("stages[].alpha", "-", "", 0, true, 1, false,
                      "soften: target core stiffness factor, below the implicit hand-off's."));
   s.push_back(integer("stages[].max_steps", "engine.steps", 0, 1e12,

@@ -38,6 +38,11 @@ const std::vector<KeySpec>& scene_schema();
 /// Most values insitu.alpha may hold: each is a full implicit solve.
 inline constexpr std::size_t kMaxAlphas = 100;
 
+/// Most [[stages]] entries a scene may hold: each costs a stage change and
+/// an output at its end (10-25 ms on a small tunnel) beyond its steps; a
+/// construction sequence has tens.
+inline constexpr std::size_t kMaxStages = 1000;
+
 /// Local damping of tunnel stages when engine.local_damping is not given
 /// (specimen runs: none).
 inline constexpr double kTunnelLocalDamping = 0.8;
