@@ -34,7 +34,10 @@ BoltFigures bar(const std::string& name, const std::string& kind, bool broken) {
   b.name = name;
   b.kind = kind;
   b.installed = true;
-  b.peak = BoltPeak{name + ".csv", 100, 200, 1.0, broken, broken};
+  BoltPeak p;
+  p.file = name + ".csv";
+  p.yielded = p.broken = broken;
+  b.peak = p;
   return b;
 }
 

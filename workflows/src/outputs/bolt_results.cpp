@@ -188,9 +188,15 @@ BoltFigures BoltResults::summary_entry(const fdem::Engine& e, std::size_t b,
   coupling::atomic_write_text(
       output_path(dir_, file),
       "station_m,x_m,y_m,axial_force_kN,steel_stress_MPa,state\n" + station_rows("", st));
-  f.peak = BoltPeak{file,       p->bar_force / 1e3,   p->steel_stress / 1e6,
-                    p->station, worst_state(st) >= 1, worst_state(st) == 2};
-  add_tension_and_compression(st, plan_.specs[b].steel, *f.peak);
+  BoltPeak peak_figures;
+  peak_figures.file = file;
+  peak_figures.max_axial_force_kN_per_bar = p->bar_force / 1e3;
+  peak_figures.max_steel_stress_MPa = p->steel_stress / 1e6;
+  peak_figures.station_m = p->station;
+  peak_figures.yielded = worst_state(st) >= 1;
+  peak_figures.broken = worst_state(st) == 2;
+  add_tension_and_compression(st, plan_.specs[b].steel, peak_figures);
+  f.peak = peak_figures;
   return f;
 }
 

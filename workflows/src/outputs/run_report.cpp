@@ -8,19 +8,13 @@
 #include "rockfdem/mesh/msh_io.hpp"
 #include "rockfdem/printable.hpp"
 #include "rockfdem/workflows/version.hpp"
+#include "run/number_text.hpp"
 #include "run/output_dir.hpp"
 #include "stages/registry.hpp"
 #include "stages/stage.hpp"
 
 namespace rockfdem::workflows {
 namespace {
-
-// `v` with `decimals` digits after the point.
-std::string fixed(double v, int decimals) {
-  char text[64];
-  std::snprintf(text, sizeof text, "%.*f", decimals, v);
-  return text;
-}
 
 // Three significant digits (stresses, moduli, ratios).
 std::string sig(double v) {
@@ -140,10 +134,7 @@ void status(std::ostream& md, const RunRecord& r) {
   if (r.failure) md << ": " << *r.failure;
   md << "\n\n";
   if (r.support) {
-    md << "**Support " << r.support->verdict << "**";
-    for (std::size_t i = 0; i < r.support->findings.size(); ++i)
-      md << (i ? "; " : ": ") << r.support->findings[i];
-    md << "\n\n";
+    md << "**Support " << r.support->verdict << "**" << r.support->findings_text() << "\n\n";
     for (const std::string& n : r.support->notes) md << "- " << n << '\n';
     if (!r.support->notes.empty()) md << '\n';
   }

@@ -1,15 +1,9 @@
 #include "run/support_verdict.hpp"
 
-#include <cstdio>
+#include "run/number_text.hpp"
 
 namespace rockfdem::workflows {
 namespace {
-
-std::string fixed(double v, int digits) {
-  char s[40];
-  std::snprintf(s, sizeof s, "%.*f", digits, v);
-  return s;
-}
 
 // The lining's smallest safety factor, named with its part and place.
 void check_lining(const LiningForceFigures& f, SupportVerdict& v) {
@@ -49,11 +43,13 @@ void check_bolts(const BoltRecord& b, SupportVerdict& v) {
 
 }  // namespace
 
-std::string SupportVerdict::line() const {
-  std::string out = "support " + verdict;
+std::string SupportVerdict::findings_text() const {
+  std::string out;
   for (std::size_t i = 0; i < findings.size(); ++i) out += (i ? "; " : ": ") + findings[i];
   return out;
 }
+
+std::string SupportVerdict::line() const { return "support " + verdict + findings_text(); }
 
 std::optional<SupportVerdict> support_verdict(const LiningRecord& lining,
                                               const std::optional<BoltRecord>& bolts) {

@@ -22,6 +22,8 @@ struct SupportVerdict {
   /// What was not checked, and what gave way without being a design
   /// failure (a debonded lining).
   std::vector<std::string> notes;
+  /// ": a; b" (the findings), or empty.
+  std::string findings_text() const;
   /// "support overstressed: a; b", "support holds", "support not checked".
   std::string line() const;
 };
