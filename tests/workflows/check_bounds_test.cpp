@@ -162,3 +162,28 @@ TEST(CheckBounds, more_stages_than_the_limit_are_refused) {
   }
   fs::remove_all(scene.parent_path());
 }
+
+// A rock set no real rock has (E lowered tenfold: UCS/E 0.035 against
+// intact rock's 0.001-0.01) is warned of by check before the run and by
+// the run in summary.json's warnings and rock_plausibility; E as shipped
+// (UCS/E 0.0035) draws no such warning.
+TEST(CheckBounds, an_implausible_rock_set_is_warned_of_by_check_and_run) {
+  const std::string scene = kTestDir + "/support_pair_supported.toml -q ";
+  const std::string soft = "--set materials.rock.young=0.3e9 ";
+  const std::string said = "the rock's ucs_over_young = 0.0346 is outside [0.001, 0.01]";
+  EXPECT_TRUE(has(run("check " + scene + soft).output, "warning: " + said));
+  EXPECT_FALSE(has(run("check " + scene).output, "ucs_over_young = "));
+  const fs::path out = scratch("implausible-rock");
+  const Result r = run("run " + scene + soft + "-j 1 --set 'stages[4].max_steps=20' " +
+                       "--set output.plots=false --set output.vtk=false -o " + out.string());
+  ASSERT_EQ(r.code, 0) << r.output;
+  const nlohmann::json j = read_json(out / "summary.json");
+  bool warned = false;
+  for (const auto& w : j["warnings"]) warned = warned || has(w.get<std::string>(), said);
+  EXPECT_TRUE(warned) << j["warnings"];
+  // l_ch = E GfI / ft^2 falls with E too: 0.009 m against elements of 0.3 m.
+  EXPECT_EQ(j["rock_plausibility"]["outside"],
+            nlohmann::json::array({"ucs_over_young", "h_over_l_ch"}));
+  EXPECT_TRUE(has(read_text(out / "report.md"), "| ucs_over_young | 0.0346 | 0.001 - 0.01"));
+  fs::remove_all(out);
+}

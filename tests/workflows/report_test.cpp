@@ -104,22 +104,40 @@ TEST(Report, tunnel_run_writes_a_report_with_the_summary_figures) {
   for (const char* p :
        {"vault", "left_shoulder", "right_shoulder", "left_wall", "right_wall", "invert"}) {
     const auto cells = row_of(md, p);
-    ASSERT_GE(cells.size(), 5u) << p << " in\n" << md;
+    ASSERT_GE(cells.size(), 6u) << p << " in\n" << md;
     EXPECT_EQ(cells[1], two_decimals(j["monitors"][p]["radial_mm"].get<double>())) << p;
   }
   // The lining is installed right after the hand-off step, whose history
-  // row is the origin of "since support": the summary's figure less that row's.
+  // row is the origin of "since support": the summary's figure less that
+  // row's; the row itself is the implicit stage's share ("at hand-off").
   const auto handoff = first_history_row(out / "history.csv");
+  for (const char* p : {"vault", "left_wall", "invert"}) {
+    const double at = handoff.at(std::string(p) + "_radial_mm");
+    EXPECT_EQ(row_of(md, p)[2], two_decimals(at)) << p;
+    // history.csv holds 10 significant digits
+    EXPECT_NEAR(j["monitors"][p]["radial_at_handoff_mm"].get<double>(), at, 1e-9 * std::abs(at))
+        << p;
+    const double total = j["monitors"][p]["radial_mm"].get<double>();
+    EXPECT_NEAR(j["monitors"][p]["explicit_share"].get<double>(), (total - at) / total, 1e-8);
+  }
   for (const char* p : {"vault", "left_wall", "invert"})
     EXPECT_NEAR(
-        std::stod(row_of(md, p)[2]),
+        std::stod(row_of(md, p)[3]),
         j["monitors"][p]["radial_mm"].get<double>() - handoff.at(std::string(p) + "_radial_mm"),
         0.0051 + 1e-9 * std::abs(handoff.at(std::string(p) + "_radial_mm")))
         << p;
   const auto vault = row_of(md, "vault");
-  EXPECT_EQ(vault[3], "5.00");
+  EXPECT_EQ(vault[4], "5.00");
   const double computed = j["monitors"]["vault"]["radial_mm"].get<double>();
-  EXPECT_EQ(vault[4].substr(0, vault[4].find(' ')), two_decimals(computed - 5.0)) << vault[4];
+  EXPECT_EQ(vault[5].substr(0, vault[5].find(' ')), two_decimals(computed - 5.0)) << vault[5];
+  // The rock set's figures, as summary.json has them: c 3 MPa, phi 30 deg
+  // give UCS = 6 sqrt(3) MPa; E 3 GPa, ft 1 MPa.
+  const nlohmann::json& rock = j["rock_plausibility"];
+  EXPECT_NEAR(rock["ucs_Pa"].get<double>(), 6e6 * std::sqrt(3.0), 1.0);
+  EXPECT_NEAR(rock["figures"]["ucs_over_young"]["value"].get<double>(), 6e6 * std::sqrt(3.0) / 3e9,
+              1e-12);
+  EXPECT_EQ(row_of(md, "ucs_over_young")[1], "0.00346") << md;
+  EXPECT_EQ(row_of(md, "ft_over_ucs")[3], "yes");
   EXPECT_EQ(row_of(md, "wall_chord")[1],
             two_decimals(j["monitors"]["wall_chord_convergence_mm"].get<double>()));
   EXPECT_NE(md.find("a test"), std::string::npos);

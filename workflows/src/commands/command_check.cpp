@@ -14,6 +14,7 @@
 #include "commands/check_probe.hpp"
 #include "commands/commands.hpp"
 #include "outputs/broken_zone.hpp"
+#include "outputs/rock_plausibility.hpp"
 #include "rockfdem/error.hpp"
 #include "rockfdem/mesh/build.hpp"
 #include "rockfdem/mesh/msh_io.hpp"
@@ -350,6 +351,19 @@ void print_constants(const Scene& scene, const Estimate& e, double cp, int threa
               dt);
 }
 
+// The rock set against real rock's ranges (h / l_ch is warned of above).
+void print_plausibility(const RockPlausibilityFigures& p) {
+  if (!p.ucs_Pa) return;
+  std::printf("  rock set:                   UCS %.3g MPa (Mohr-Coulomb of c, phi)",
+              *p.ucs_Pa / 1e6);
+  for (const PlausibilityFigure& f : p.figures)
+    if (f.name != "h_over_l_ch") std::printf(", %s %.3g", f.name.c_str(), f.value);
+  std::printf("\n");
+  for (const std::string& line : plausibility_warnings(p))
+    if (line.find("h_over_l_ch") == std::string::npos)
+      std::fprintf(stderr, "warning: %s\n", line.c_str());
+}
+
 }  // namespace
 
 int command_check(const Scene& scene, const RunContext& ctx) {
@@ -371,6 +385,7 @@ int command_check(const Scene& scene, const RunContext& ctx) {
                    "(limit %g): crack pattern and displacements depend on the mesh; refine "
                    "mesh.size_near\n",
                    r.ratio, kResolutionLimit);
+    print_plausibility(rock_plausibility(scene.materials.at(mesh::kRock), r.ratio));
   }
   if (e.triangles <= kProbeTriangleLimit)
     print_probe(scene, probe_scene(scene, ctx));

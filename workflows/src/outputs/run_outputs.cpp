@@ -9,6 +9,7 @@
 #include "outputs/broken_zone.hpp"
 #include "outputs/continuum_comparison.hpp"
 #include "outputs/engine_report.hpp"
+#include "outputs/rock_plausibility.hpp"
 #include "outputs/run_report.hpp"
 #include "rockfdem/coupling/atomic_file.hpp"
 #include "rockfdem/coupling/fdem_model.hpp"
@@ -153,8 +154,8 @@ MonitorRecord RunOutputs::monitor_figures(const fdem::Engine& e) const {
   MonitorRecord r;
   for (const Monitor& mon : key_points_->monitors()) {
     const auto k = key_points_->figures(e, mon);
-    r.key_points[mon.name] = {k[0],       k[1],         k[2],         k[3],        mon.node_x,
-                              mon.node_y, mon.inward_x, mon.inward_y, std::nullopt};
+    r.key_points[mon.name] = {k[0],       k[1],         k[2],         k[3],         mon.node_x,
+                              mon.node_y, mon.inward_x, mon.inward_y, std::nullopt, std::nullopt};
   }
   // Per point (as field convergence points are read) and, apart, the
   // change of length of two chords between points.
@@ -249,6 +250,7 @@ void RunOutputs::finish(const fdem::Engine& e, const mesh::Mesh& m, PhaseTimer& 
   if (!bolt_results_) summary_.skipped.push_back("bolts: none in the scene");
   summary_.monitors = monitor_figures(e);
   add_since_support(summary_.monitors);
+  add_at_handoff(summary_.monitors);
   const RigidFit fit = key_points_->boundary_fit(e);
   summary_.outer_boundary = OuterBoundaryFigures{fit.rotation * 180 / M_PI,
                                                  max_rotation_deg_,
@@ -311,6 +313,9 @@ void RunOutputs::damage_outputs(const fdem::Engine& e, const mesh::Mesh& m) {
     summary_.warnings.push_back(msg);
     if (!ctx_.quiet) std::cerr << "warning: " << msg << '\n';
   };
+  summary_.rock_plausibility = rock_plausibility(scene_.materials.at(mesh::kRock), r.ratio);
+  for (const std::string& line : plausibility_warnings(*summary_.rock_plausibility))
+    if (line.find("h_over_l_ch") == std::string::npos) warn(line);  // said below, with h
   char msg[500];
   if (r.ratio > kResolutionLimit) {
     std::snprintf(msg, sizeof msg,
@@ -379,6 +384,16 @@ void RunOutputs::add_since_support(MonitorRecord& monitors) const {
     const auto k = monitors.key_points.find(name);
     if (k != monitors.key_points.end() && !monitors.points.count(name))
       k->second.radial_since_support_mm = mm;
+  }
+}
+
+// History's first row is the hand-off step: the implicit stage's displacement.
+void RunOutputs::add_at_handoff(MonitorRecord& monitors) const {
+  if (!history_ || history_->rows().empty()) return;
+  for (const Monitor& m : key_points_->monitors()) {
+    const auto k = monitors.key_points.find(m.name);
+    if (k != monitors.key_points.end() && !monitors.points.count(m.name))
+      k->second.radial_at_handoff_mm = history_->column(m.name + "_radial_mm").front();
   }
 }
 

@@ -108,6 +108,8 @@ class RunOutputs : public StepOutputs {
   std::map<std::string, double> since_support() const;
   /// Adds each key point's `radial_since_support_mm` to the record's monitors.
   void add_since_support(MonitorRecord& monitors) const;
+  /// Adds each key point's `radial_at_handoff_mm` (history's first row).
+  void add_at_handoff(MonitorRecord& monitors) const;
   /// report.md from the record as it stands.
   void write_report() const;
   /// summary "resolution" (h / l_ch) and "broken_zone" (depth, clearance to

@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <optional>
 #include <sstream>
 
 #include "rockfdem/coupling/atomic_file.hpp"
@@ -151,8 +152,9 @@ void status(std::ostream& md, const RunRecord& r) {
 
 // A row of the key-point table: the figure, since support, the reference.
 void point_row(std::ostream& md, const std::string& name, double total, const ReportExtras& x,
-               const ReferenceSettings& ref) {
-  md << "| " << name << " | " << fixed(total, 2) << " | ";
+               const ReferenceSettings& ref, const std::optional<double>& at_handoff = {}) {
+  md << "| " << name << " | " << fixed(total, 2) << " | "
+     << (at_handoff ? fixed(*at_handoff, 2) : std::string("-")) << " | ";
   const auto since = x.since_support_mm.find(name);
   md << (since == x.since_support_mm.end() ? "-" : fixed(since->second, 2)) << " | ";
   const auto r = ref.mm.find(name);
@@ -171,21 +173,22 @@ void point_row(std::ostream& md, const std::string& name, double total, const Re
 void key_points(std::ostream& md, const Scene& s, const MonitorRecord& mon, const ReportExtras& x) {
   const ReferenceSettings& ref = s.references;
   md << "\n## Key points and chords (end of run)\n\nRadial displacement: towards the opening "
-        "positive, from the in-situ state (the implicit deconfinement included) and since the "
-        "support's installation. Chords: closure between two key points.";
+        "positive, from the in-situ state (the implicit deconfinement included), at the "
+        "hand-off (what the implicit elastic stage gave) and since the support's installation. "
+        "Chords: closure between two key points.";
   if (!ref.mm.empty())
     md << " References" << (ref.source.empty() ? "" : " (" + ref.source + ")")
        << " are measured from "
        << (ref.from_support ? "the support's installation" : "the in-situ state")
        << "; difference = computed - reference.";
-  md << "\n\n| point | radial [mm] | since support [mm] | reference [mm] | difference [mm] |\n"
-        "|---|---|---|---|---|\n";
+  md << "\n\n| point | radial [mm] | at hand-off [mm] | since support [mm] | reference [mm] | "
+        "difference [mm] |\n|---|---|---|---|---|---|\n";
   for (const char* p :
        {"vault", "left_shoulder", "right_shoulder", "left_wall", "right_wall", "invert"}) {
     const auto k = mon.key_points.find(p);
     // A scene monitor of the same name stands in the summary instead.
     if (k != mon.key_points.end() && !mon.points.count(p))
-      point_row(md, p, k->second.radial_mm, x, ref);
+      point_row(md, p, k->second.radial_mm, x, ref, k->second.radial_at_handoff_mm);
   }
   if (!mon.chords) return;
   point_row(md, "wall_chord", mon.chords->wall_chord_convergence_mm, x, ref);
@@ -194,6 +197,53 @@ void key_points(std::ostream& md, const Scene& s, const MonitorRecord& mon, cons
 }
 
 std::string value_text(bool v) { return v ? "yes" : "no"; }
+
+std::string percent(double share) { return fixed(100 * share, 0) + "%"; }
+
+// How much of the vault's displacement is the implicit elastic stage's.
+void vault_origin(std::ostream& md, const MonitorRecord& mon, const ReportExtras& x) {
+  const auto v = mon.key_points.find("vault");
+  if (v == mon.key_points.end() || mon.points.count("vault") || !v->second.radial_at_handoff_mm ||
+      v->second.radial_mm == 0)
+    return;
+  const double total = v->second.radial_mm, implicit = *v->second.radial_at_handoff_mm;
+  md << "Of the vault's " << fixed(total, 1) << " mm, " << fixed(implicit, 1) << " mm ("
+     << percent(implicit / total) << ") came from the implicit elastic stage and "
+     << fixed(total - implicit, 1) << " mm (" << percent((total - implicit) / total)
+     << ") from the explicit stages";
+  const auto since = x.since_support_mm.find("vault");
+  if (since != x.since_support_mm.end())
+    md << "; " << fixed(since->second, 1) << " mm since the support's installation";
+  md << ".";
+}
+
+// The fit's truth: displacement by stage, fracture, the rock set's figures.
+void answer_origin(std::ostream& md, const RunRecord& r, const ReportExtras& x) {
+  const std::optional<RockPlausibilityFigures>& p = r.rock_plausibility;
+  if (!p) return;
+  md << "\n## Where the answer comes from\n\n";
+  vault_origin(md, r.monitors, x);
+  if (r.counts.crack_elements == 0) {
+    md << " The model has no crack elements: the rock cannot fracture (no tensile strength or "
+          "cohesion given, or no fracture zone).\n";
+    return;
+  }
+  md << " Broken crack elements: " << value_text(r.state.broken.total())
+     << (r.broken_zone ? " (" + value_text(r.broken_zone->broken_rock_cracks) + " in the rock)"
+                       : std::string())
+     << ".\n\nThe rock set against real rock";
+  if (p->ucs_Pa)
+    md << " (UCS " << sig(*p->ucs_Pa / 1e6)
+       << " MPa: Mohr-Coulomb, 2 c cos(phi) / (1 - sin(phi)), of its crack elements)";
+  if (p->figures.empty()) {
+    md << ": none to show (no cohesion and no fracture energy given).\n";
+    return;
+  }
+  md << ":\n\n| figure | value | range | within |\n|---|---|---|---|\n";
+  for (const PlausibilityFigure& f : p->figures)
+    md << "| " << f.name << " | " << sig(f.value) << " | " << sig(f.low) << " - " << sig(f.high)
+       << " (" << f.meaning << ") | " << value_text(f.in_range) << " |\n";
+}
 
 void bolts(std::ostream& md, const std::optional<BoltRecord>& r) {
   if (!r) return;
@@ -329,6 +379,7 @@ std::string report_markdown(const Scene& scene, const RunRecord& record,
   stages(md, record);
   status(md, record);
   key_points(md, scene, record.monitors, extras);
+  answer_origin(md, record, extras);
   bolts(md, record.bolts);
   lining(md, record.lining);
   broken_zone(md, record.state.broken, record.broken_zone);

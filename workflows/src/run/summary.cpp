@@ -211,6 +211,12 @@ nlohmann::json key_point_json(const KeyPointFigures& k) {
                       {"y", k.y},
                       {"inward", {k.inward_x, k.inward_y}}};
   if (k.radial_since_support_mm) j["radial_since_support_mm"] = *k.radial_since_support_mm;
+  if (k.radial_at_handoff_mm) {
+    j["radial_at_handoff_mm"] = *k.radial_at_handoff_mm;
+    // The share the explicit (fracturing) stages add; none for a point that did not move.
+    if (k.radial_mm != 0)
+      j["explicit_share"] = (k.radial_mm - *k.radial_at_handoff_mm) / k.radial_mm;
+  }
   return j;
 }
 
@@ -424,6 +430,23 @@ nlohmann::json counterpart_json(const CounterpartComparison& c) {
   return j;
 }
 
+nlohmann::json plausibility_json(const RockPlausibilityFigures& p) {
+  nlohmann::json j = {{"ucs_Pa", p.ucs_Pa ? nlohmann::json(*p.ucs_Pa) : nlohmann::json()},
+                      {"ucs_from",
+                       "Mohr-Coulomb, 2 c cos(phi) / (1 - sin(phi)), of the rock's "
+                       "crack elements"},
+                      {"figures", nlohmann::json::object()},
+                      {"outside", nlohmann::json::array()}};
+  for (const PlausibilityFigure& f : p.figures) {
+    j["figures"][f.name] = {{"value", f.value},
+                            {"range", {f.low, f.high}},
+                            {"in_range", f.in_range},
+                            {"range_from", f.meaning}};
+    if (!f.in_range) j["outside"].push_back(f.name);
+  }
+  return j;
+}
+
 // The support and damage figures at the end of a tunnel run.
 void add_support(nlohmann::json& j, const RunRecord& r) {
   if (r.bolts) j["bolts"] = bolts_json(*r.bolts);
@@ -438,6 +461,7 @@ void add_support(nlohmann::json& j, const RunRecord& r) {
                        {"l_ch_m", r.resolution->l_ch_m},
                        {"h_over_l_ch", r.resolution->h_over_l_ch},
                        {"limit", r.resolution->limit}};
+  if (r.rock_plausibility) j["rock_plausibility"] = plausibility_json(*r.rock_plausibility);
   if (r.broken_zone) j["broken_zone"] = broken_zone_json(*r.broken_zone);
   for (const auto& [name, x] : r.extensometers) j["extensometers"][name] = extensometer_json(x);
   if (const auto& b = r.outer_boundary)

@@ -74,6 +74,7 @@ class RunRecord {
   LiningRecord lining;                    ///< empty: no key
   std::optional<SupportVerdict> support;  ///< whether lining and bolts hold; none: no support
   std::optional<ResolutionFigures> resolution;
+  std::optional<RockPlausibilityFigures> rock_plausibility;
   std::optional<OuterBoundaryFigures> outer_boundary;
   std::optional<DampingFigures> damping;
   std::map<std::string, ExtensometerFigures> extensometers;  ///< empty: no key

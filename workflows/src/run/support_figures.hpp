@@ -115,6 +115,22 @@ struct ResolutionFigures {
   double h_m = 0, l_ch_m = 0, h_over_l_ch = 0, limit = 0;
 };
 
+/// One of the rock set's plausibility figures against its range
+/// (outputs/rock_plausibility.hpp).
+struct PlausibilityFigure {
+  std::string name;
+  double value = 0, low = 0, high = 0;
+  bool in_range = true;
+  std::string meaning;  ///< where the range comes from, in words
+};
+
+/// "rock_plausibility": the host rock's crack elements' Mohr-Coulomb UCS and
+/// the figures an engineer checks a rock set by (UCS / E, ft / UCS, h / l_ch).
+struct RockPlausibilityFigures {
+  std::optional<double> ucs_Pa;  ///< none: no cohesion given
+  std::vector<PlausibilityFigure> figures;
+};
+
 /// The broken depth along one ray from the opening.
 struct RayFigures {
   double depth_m = 0;

@@ -1,0 +1,55 @@
+#include "outputs/rock_plausibility.hpp"
+
+#include <cmath>
+#include <cstdio>
+
+#include "outputs/broken_zone.hpp"
+
+namespace rockfdem::workflows {
+namespace {
+
+constexpr double kDegree = M_PI / 180;
+
+PlausibilityFigure figure(const char* name, double value, double lo, double hi,
+                          const char* meaning) {
+  return {name, value, lo, hi, value >= lo && value <= hi, meaning};
+}
+
+}  // namespace
+
+double mohr_coulomb_ucs(double c, double phi_deg) {
+  const double phi = phi_deg * kDegree;
+  return 2 * c * std::cos(phi) / (1 - std::sin(phi));
+}
+
+RockPlausibilityFigures rock_plausibility(const MaterialSpec& rock, double h_over_l_ch) {
+  RockPlausibilityFigures p;
+  if (rock.cohesion > 0) {
+    p.ucs_Pa = mohr_coulomb_ucs(rock.cohesion, rock.friction_angle);
+    p.figures.push_back(figure("ucs_over_young", *p.ucs_Pa / rock.young, 0.001, 0.01,
+                               "intact rock's E / UCS lies between 100 and 1000"));
+    if (rock.tensile_strength > 0)
+      p.figures.push_back(figure("ft_over_ucs", rock.tensile_strength / *p.ucs_Pa, 0.03, 0.25,
+                                 "Hoek-Brown ft ~ UCS / mi, mi from 4 to 33"));
+  }
+  if (h_over_l_ch > 0)
+    p.figures.push_back(figure("h_over_l_ch", h_over_l_ch, 0, kResolutionLimit,
+                               "larger: the crack pattern depends on the mesh"));
+  return p;
+}
+
+std::vector<std::string> plausibility_warnings(const RockPlausibilityFigures& p) {
+  std::vector<std::string> lines;
+  for (const PlausibilityFigure& f : p.figures) {
+    if (f.in_range) continue;
+    char text[300];
+    std::snprintf(text, sizeof text,
+                  "the rock's %s = %.3g is outside [%g, %g] (%s): the rock set is not one "
+                  "real rock has",
+                  f.name.c_str(), f.value, f.low, f.high, f.meaning.c_str());
+    lines.emplace_back(text);
+  }
+  return lines;
+}
+
+}  // namespace rockfdem::workflows
