@@ -264,7 +264,9 @@ const std::set<std::string> kElsewhere = {
     "tunnel.invert_thickness", "materials.invert.density", "materials.invert.young",
     "materials.invert.poisson", "materials.invert.friction_angle",
     "materials.invert.residual_friction_angle", "materials.invert.tensile_strength",
-    "materials.invert.compressive_strength"};
+    "materials.invert.compressive_strength",
+    // With gsi alone: RockMass.a_scene_with_gsi_runs_on_the_rock_mass.
+    "materials.rock.disturbance"};
 
 std::string normalised(const std::string& path) {
   return std::regex_replace(path, std::regex(R"(\[[0-9]+\])"), "[]");

@@ -385,7 +385,7 @@ int command_check(const Scene& scene, const RunContext& ctx) {
                    "(limit %g): crack pattern and displacements depend on the mesh; refine "
                    "mesh.size_near\n",
                    r.ratio, kResolutionLimit);
-    print_plausibility(rock_plausibility(scene.materials.at(mesh::kRock), r.ratio));
+    print_plausibility(rock_plausibility(scene, r.ratio));
   }
   if (e.triangles <= kProbeTriangleLimit)
     print_probe(scene, probe_scene(scene, ctx));

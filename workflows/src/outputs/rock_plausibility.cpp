@@ -8,19 +8,12 @@
 namespace rockfdem::workflows {
 namespace {
 
-constexpr double kDegree = M_PI / 180;
-
 PlausibilityFigure figure(const char* name, double value, double lo, double hi,
                           const char* meaning) {
   return {name, value, lo, hi, value >= lo && value <= hi, meaning};
 }
 
 }  // namespace
-
-double mohr_coulomb_ucs(double c, double phi_deg) {
-  const double phi = phi_deg * kDegree;
-  return 2 * c * std::cos(phi) / (1 - std::sin(phi));
-}
 
 RockPlausibilityFigures rock_plausibility(const MaterialSpec& rock, double h_over_l_ch) {
   RockPlausibilityFigures p;
@@ -35,6 +28,16 @@ RockPlausibilityFigures rock_plausibility(const MaterialSpec& rock, double h_ove
   if (h_over_l_ch > 0)
     p.figures.push_back(figure("h_over_l_ch", h_over_l_ch, 0, kResolutionLimit,
                                "larger: the crack pattern depends on the mesh"));
+  return p;
+}
+
+RockPlausibilityFigures rock_plausibility(const Scene& scene, double h_over_l_ch) {
+  if (!scene.rock_mass) return rock_plausibility(scene.materials.at(mesh::kRock), h_over_l_ch);
+  RockPlausibilityFigures p = rock_plausibility(scene.rock_mass->lab, h_over_l_ch);
+  p.of =
+      "the laboratory set (materials.rock as given; the model's rock is the rock mass of "
+      "GSI " +
+      std::to_string(int(std::lround(scene.rock_mass->gsi))) + " derived from it)";
   return p;
 }
 

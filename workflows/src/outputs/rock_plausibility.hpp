@@ -14,19 +14,21 @@
 //   the crack pattern depends on the mesh.
 #pragma once
 
+#include "rockfdem/workflows/rock_mass.hpp"
 #include "rockfdem/workflows/scene.hpp"
 #include "run/support_figures.hpp"
 
 namespace rockfdem::workflows {
 
-/// Mohr-Coulomb uniaxial compressive strength [Pa] of cohesion `c` [Pa]
-/// and friction angle `phi_deg`.
-double mohr_coulomb_ucs(double c, double phi_deg);
-
 /// The rock's plausibility figures; `h_over_l_ch` from fracture_resolution.
 /// A figure whose inputs are not given (no cohesion, no tensile strength)
 /// is left out.
 RockPlausibilityFigures rock_plausibility(const MaterialSpec& rock, double h_over_l_ch);
+
+/// The scene's rock judged: with materials.rock.gsi the laboratory set the
+/// rock mass is derived from (a rock mass's ft / UCS is far below any
+/// intact rock's by design), else the model's rock.
+RockPlausibilityFigures rock_plausibility(const Scene& scene, double h_over_l_ch);
 
 /// One line per figure outside its range, naming the figure, its value,
 /// the range and what it means; empty when all are within.

@@ -313,7 +313,7 @@ void RunOutputs::damage_outputs(const fdem::Engine& e, const mesh::Mesh& m) {
     summary_.warnings.push_back(msg);
     if (!ctx_.quiet) std::cerr << "warning: " << msg << '\n';
   };
-  summary_.rock_plausibility = rock_plausibility(scene_.materials.at(mesh::kRock), r.ratio);
+  summary_.rock_plausibility = rock_plausibility(scene_, r.ratio);
   for (const std::string& line : plausibility_warnings(*summary_.rock_plausibility))
     if (line.find("h_over_l_ch") == std::string::npos) warn(line);  // said below, with h
   char msg[500];

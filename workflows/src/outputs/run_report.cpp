@@ -91,6 +91,12 @@ void inputs(std::ostream& md, const Scene& s, const RunRecord& r) {
   for (mesh::Zone z : {mesh::kLining, mesh::kRock})  // the core is excavated
     if (s.materials.count(z)) material_rows(md, mesh::zone_name(z), s.materials.at(z));
   if (s.invert) material_rows(md, "invert", *s.invert);
+  if (const auto& m = s.rock_mass)
+    md << "| rock: the rock mass of | GSI " << sig(m->gsi) << ", D " << sig(m->disturbance)
+       << ", mi " << sig(m->mi) << " from the laboratory set E " << sig(m->lab.young / 1e9)
+       << " GPa, UCS " << mpa(m->intact.ucs) << ", ft " << mpa(m->lab.tensile_strength)
+       << " (E: Hoek and Diederichs 2006; c, phi: Hoek-Brown fit up to sigma3 "
+       << mpa(m->mass.sigma_3max) << "; ft = s sigma_ci / mb) |\n";
   md << "| in-situ stress (compression +) | sigma_h " << mpa(s.insitu.sigma_h) << ", sigma_v "
      << mpa(s.insitu.sigma_v) << ", sigma_h at " << sig(s.insitu.angle_deg)
      << " deg from x |\n| core stiffness factors alpha (implicit) |";
@@ -231,10 +237,10 @@ void answer_origin(std::ostream& md, const RunRecord& r, const ReportExtras& x) 
   md << " Broken crack elements: " << value_text(r.state.broken.total())
      << (r.broken_zone ? " (" + value_text(r.broken_zone->broken_rock_cracks) + " in the rock)"
                        : std::string())
-     << ".\n\nThe rock set against real rock";
+     << ".\n\nThe rock set against real rock, judged on " << p->of;
   if (p->ucs_Pa)
-    md << " (UCS " << sig(*p->ucs_Pa / 1e6)
-       << " MPa: Mohr-Coulomb, 2 c cos(phi) / (1 - sin(phi)), of its crack elements)";
+    md << ", UCS " << sig(*p->ucs_Pa / 1e6)
+       << " MPa (Mohr-Coulomb, 2 c cos(phi) / (1 - sin(phi)), of its c and phi)";
   if (p->figures.empty()) {
     md << ": none to show (no cohesion and no fracture energy given).\n";
     return;

@@ -431,7 +431,8 @@ nlohmann::json counterpart_json(const CounterpartComparison& c) {
 }
 
 nlohmann::json plausibility_json(const RockPlausibilityFigures& p) {
-  nlohmann::json j = {{"ucs_Pa", p.ucs_Pa ? nlohmann::json(*p.ucs_Pa) : nlohmann::json()},
+  nlohmann::json j = {{"of", p.of},
+                      {"ucs_Pa", p.ucs_Pa ? nlohmann::json(*p.ucs_Pa) : nlohmann::json()},
                       {"ucs_from",
                        "Mohr-Coulomb, 2 c cos(phi) / (1 - sin(phi)), of the rock's "
                        "crack elements"},
@@ -445,6 +446,34 @@ nlohmann::json plausibility_json(const RockPlausibilityFigures& p) {
     if (!f.in_range) j["outside"].push_back(f.name);
   }
   return j;
+}
+
+nlohmann::json strength_json(double young, double c, double phi, double ft) {
+  return {{"young_Pa", young},
+          {"cohesion_Pa", c},
+          {"friction_angle_deg", phi},
+          {"tensile_strength_Pa", ft},
+          {"ucs_Pa", mohr_coulomb_ucs(c, phi)}};
+}
+
+// The lab set, the rock mass the model uses, and the constants between them.
+nlohmann::json rock_mass_json(const RockMassSpec& m) {
+  const MaterialSpec& l = m.lab;
+  const RockMassFigures& f = m.mass;
+  return {{"gsi", m.gsi},
+          {"disturbance", m.disturbance},
+          {"hoek_brown_mi", m.mi},
+          {"hoek_brown", {{"mb", f.mb}, {"s", f.s}, {"a", f.a}}},
+          {"sigma_ci_Pa", m.intact.ucs},
+          {"sigma_cm_Pa", f.sigma_cm},
+          {"sigma_3max_Pa", f.sigma_3max},
+          {"overburden_stress_Pa", m.gamma_h},
+          {"laboratory", strength_json(l.young, l.cohesion, l.friction_angle, l.tensile_strength)},
+          {"rock_mass", strength_json(f.young, f.cohesion, f.friction_angle, f.tensile_strength)},
+          {"sources",
+           "E: Hoek and Diederichs (2006); c, phi: Mohr-Coulomb fit of the generalised "
+           "Hoek-Brown criterion for tunnels, ft = s sigma_ci / mb (Hoek, Carranza-Torres and "
+           "Corkum 2002)"}};
 }
 
 // The support and damage figures at the end of a tunnel run.
@@ -462,6 +491,7 @@ void add_support(nlohmann::json& j, const RunRecord& r) {
                        {"h_over_l_ch", r.resolution->h_over_l_ch},
                        {"limit", r.resolution->limit}};
   if (r.rock_plausibility) j["rock_plausibility"] = plausibility_json(*r.rock_plausibility);
+  if (r.rock_mass) j["rock_mass"] = rock_mass_json(*r.rock_mass);
   if (r.broken_zone) j["broken_zone"] = broken_zone_json(*r.broken_zone);
   for (const auto& [name, x] : r.extensometers) j["extensometers"][name] = extensometer_json(x);
   if (const auto& b = r.outer_boundary)
@@ -538,6 +568,7 @@ RunRecord::RunRecord(const Scene& scene, int threads)
     : warnings(scene.warnings),
       threads(threads),
       counts{0, 0, 0, long(scene.bolts.segments.size())},
+      rock_mass(scene.rock_mass),
       scene_source_(scene.source),
       overrides_(scene.overrides),
       title_(scene.title),

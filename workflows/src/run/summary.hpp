@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "rockfdem/workflows/scene.hpp"
 #include "run/continuum_figures.hpp"
 #include "run/phase_timer.hpp"
 #include "run/run_figures.hpp"
@@ -75,6 +76,7 @@ class RunRecord {
   std::optional<SupportVerdict> support;  ///< whether lining and bolts hold; none: no support
   std::optional<ResolutionFigures> resolution;
   std::optional<RockPlausibilityFigures> rock_plausibility;
+  std::optional<RockMassSpec> rock_mass;  ///< the scene's lab-to-rock-mass reduction
   std::optional<OuterBoundaryFigures> outer_boundary;
   std::optional<DampingFigures> damping;
   std::map<std::string, ExtensometerFigures> extensometers;  ///< empty: no key

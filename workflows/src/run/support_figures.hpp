@@ -127,7 +127,8 @@ struct PlausibilityFigure {
 /// "rock_plausibility": the host rock's crack elements' Mohr-Coulomb UCS and
 /// the figures an engineer checks a rock set by (UCS / E, ft / UCS, h / l_ch).
 struct RockPlausibilityFigures {
-  std::optional<double> ucs_Pa;  ///< none: no cohesion given
+  std::string of = "the model's rock";  ///< which set the figures judge
+  std::optional<double> ucs_Pa;         ///< none: no cohesion given
   std::vector<PlausibilityFigure> figures;
 };
 

@@ -417,6 +417,46 @@ void read_materials(const Reader& r, Scene& s) {
   read_invert_material(r, s);
 }
 
+// materials.rock.gsi: the section's figures are the lab's; the model's
+// rock (and the core, key by key where it gives none) is the rock mass.
+void read_rock_mass(const Reader& r, Scene& s) {
+  const char* const mi_key = "materials.rock.hoek_brown_mi";
+  if (!r.has("materials.rock.gsi")) {
+    for (const char* key : {mi_key, "materials.rock.disturbance"})
+      if (r.has(key)) r.fail(key, "applies with materials.rock.gsi (the rock mass's GSI)");
+    return;
+  }
+  if (s.mesh.kind != mesh::ModelKind::kTunnel && s.mesh.kind != mesh::ModelKind::kMshFile)
+    r.fail("materials.rock.gsi",
+           "is a rock mass's: a laboratory specimen is intact rock; allowed: no gsi");
+  r.require(mi_key, "the rock mass's Hoek-Brown strength needs the intact rock's mi");
+  MaterialSpec& rock = s.materials.at(mesh::kRock);
+  if (!(rock.cohesion > 0)) r.require("materials.rock.cohesion", "its UCS is the lab's sigma_ci");
+  RockMassSpec m;
+  m.gsi = r.number("materials.rock.gsi");
+  m.disturbance = r.number("materials.rock.disturbance");
+  m.mi = r.number(mi_key);
+  m.gamma_h = s.insitu.sigma_v;
+  m.lab = rock;
+  m.intact = {rock.young, mohr_coulomb_ucs(rock.cohesion, rock.friction_angle), m.mi};
+  m.mass = rock_mass(m.intact, m.gsi, m.disturbance, m.gamma_h);
+  const auto reduce = [&](MaterialSpec& x, const std::string& p) {
+    if (!r.has(p + "young")) x.young = m.mass.young;
+    if (!r.has(p + "cohesion")) x.cohesion = m.mass.cohesion;
+    if (!r.has(p + "friction_angle")) x.friction_angle = m.mass.friction_angle;
+    if (!r.has(p + "tensile_strength")) x.tensile_strength = m.mass.tensile_strength;
+    x.residual_friction_angle = std::min(x.residual_friction_angle, x.friction_angle);
+  };
+  rock.young = m.mass.young;
+  rock.cohesion = m.mass.cohesion;
+  rock.friction_angle = m.mass.friction_angle;
+  rock.tensile_strength = m.mass.tensile_strength;
+  rock.residual_friction_angle = std::min(rock.residual_friction_angle, rock.friction_angle);
+  const auto core = s.materials.find(mesh::kCore);
+  if (core != s.materials.end()) reduce(core->second, "materials.core.");
+  s.rock_mass = m;
+}
+
 void read_insitu(const Reader& r, Scene& s) {
   InsituSettings& in = s.insitu;
   // The implicit stage needs compression in both directions; specimens start stress-free.
@@ -884,6 +924,7 @@ Scene build_scene(const RawScene& raw, const std::string& base_dir) {
   read_materials(r, s);
   s.lining_ring = has_lining_ring(s);
   read_insitu(r, s);
+  read_rock_mass(r, s);
   s.engine.steps = long(r.number("engine.steps"));
   s.engine.dt = r.number("engine.dt");
   s.engine.dt_safety = r.number("engine.dt_safety");

@@ -630,12 +630,38 @@ void add_output(std::vector<KeySpec>& s) {
                      "included). The axis label names it."));
 }
 
+// [materials.rock] gsi, disturbance, hoek_brown_mi: from lab to rock mass.
+void add_rock_mass(std::vector<KeySpec>& s) {
+  KeySpec gsi =
+      number("materials.rock.gsi", "-", "", 10, false, 100, false,
+             "Geological Strength Index of the rock mass (tunnels). Given, the section's young, "
+             "cohesion, friction_angle and tensile_strength are the intact rock's laboratory "
+             "figures, and the model's rock (and the core, for each key it does not give) is the "
+             "rock mass derived from them (docs/workflow.md, \"From the laboratory to the rock "
+             "mass\"): E by Hoek and Diederichs (2006); c, phi by the generalised Hoek-Brown "
+             "criterion's Mohr-Coulomb fit for tunnels (Hoek, Carranza-Torres and Corkum 2002), "
+             "with sigma_ci the lab set's Mohr-Coulomb UCS and insitu.sigma_v as the overburden "
+             "stress; ft = s sigma_ci / mb; the residual friction angle at most the mass's phi; "
+             "the fracture energies as given. 100: intact rock.");
+  gsi.default_doc = "none: the section is the model's rock";
+  s.push_back(gsi);
+  s.push_back(number("materials.rock.disturbance", "-", "0", 0, false, 1, false,
+                     "Disturbance factor D of the rock mass (with gsi): 0 for careful "
+                     "excavation (a TBM, smooth blasting), up to 1 for heavy blast damage "
+                     "(Hoek, Carranza-Torres and Corkum 2002)."));
+  s.push_back(number("materials.rock.hoek_brown_mi", "-", "", 1, false, 50, false,
+                     "Hoek-Brown constant mi of the intact rock (with gsi, required): about 4 "
+                     "for claystone, 7 for shale, 10 for marl and siltstone, 17 for sandstone, "
+                     "32 for granite (Hoek's table)."));
+}
+
 std::vector<KeySpec> build_schema() {
   std::vector<KeySpec> s;
   add_model(s);
   add_mesh(s);
   // [materials.*]
   add_material(s, "rock", "host rock (or the specimen)");
+  add_rock_mass(s);
   add_material(s, "core", "excavation core (defaults to the rock's values)", "materials.rock.");
   add_material(s, "lining", "shotcrete lining");
   s.push_back(positive("materials.lining.tensile_strength", "Pa", "",

@@ -19,6 +19,7 @@
 
 #include "rockfdem/mesh/mesh.hpp"
 #include "rockfdem/mesh/mesh_spec.hpp"
+#include "rockfdem/workflows/rock_mass.hpp"
 #include "rockfdem/workflows/scene_schema.hpp"
 
 namespace rockfdem::workflows {
@@ -179,6 +180,16 @@ struct ReferenceSettings {
   std::string source;   ///< where they come from
 };
 
+/// [materials.rock] gsi: the model's rock is the rock mass derived from
+/// the laboratory figures the section gives (rock_mass.hpp).
+struct RockMassSpec {
+  double gsi = 0, disturbance = 0, mi = 0;
+  double gamma_h = 0;  ///< the in-situ stress the fit is for [Pa]: insitu.sigma_v
+  MaterialSpec lab;    ///< [materials.rock] as given: the intact rock
+  IntactRock intact;   ///< E_i and sigma_ci (the lab set's Mohr-Coulomb UCS)
+  RockMassFigures mass;
+};
+
 struct Scene {
   std::string source;  ///< the scene file's path, or "default"
   std::string title;
@@ -188,6 +199,7 @@ struct Scene {
   /// [materials.invert]: the lining ring's floor part (an invert arch of
   /// its own material); none: the lining's material all round.
   std::optional<MaterialSpec> invert;
+  std::optional<RockMassSpec> rock_mass;  ///< with materials.rock.gsi
   InsituSettings insitu;
   EngineSettings engine;
   std::vector<StageSpec> stages;  ///< explicit stages after the implicit one (tunnels)
