@@ -217,7 +217,14 @@ TEST(Study, bad_study_flags_exit_two_naming_the_flag) {
        "--weight wall=2"},
       {"calibrate --target vault=4 --free materials.rock.young=1e9:5e9 --method simplex",
        "--method simplex: allowed: bobyqa, cobyla"},
-      {"run --vary materials.rock.young=1e9,2e9", "--vary belongs to `rockfdem sweep`"}};
+      {"run --vary materials.rock.young=1e9,2e9", "--vary belongs to `rockfdem sweep`"},
+      {"sweep --realisations 1", "--realisations 1: allowed: a whole number of runs from 2"},
+      {"sweep --realisations 0 --vary materials.rock.young=1e9,2e9", "--realisations 0: allowed"},
+      {"sweep --realisations 3", "--realisations 3: materials.rock.heterogeneity is 0"},
+      {"sweep --set materials.rock.heterogeneity=5 --realisations 2 --vary "
+       "materials.rock.heterogeneity_seed=1,2",
+       "--realisations 2: 'materials.rock.heterogeneity_seed' is given twice"},
+      {"run --realisations 3", "--realisations belongs to `rockfdem sweep`"}};
   for (const auto& [args, expect] : cases) {
     const fs::path out = scratch("badstudy");
     const std::string command = args.substr(0, args.find(' '));
@@ -227,6 +234,55 @@ TEST(Study, bad_study_flags_exit_two_naming_the_flag) {
     EXPECT_NE(r.output.find(expect), std::string::npos) << args << ": " << r.output;
     EXPECT_FALSE(fs::exists(out)) << args;
   }
+}
+
+// Three realisations (heterogeneity seeds) of a heterogeneous disc (Weibull
+// modulus 5) at each of two tensile strengths: ensemble.csv has one row per
+// strength and figure, and its n, mean, standard deviation and 95% interval
+// are those of sweep.csv's rows of that strength (t_{0.975,2} = 4.3026527).
+// The seeds give different peaks, or the spread would say nothing.
+TEST(Study, sweep_realisations_give_each_group_its_ensemble_statistics) {
+  const fs::path out = scratch("ensemble");
+  const std::string disc = kTestDir + "/study_brazilian.toml";
+  const Result r =
+      run("sweep " + disc + " --set materials.rock.heterogeneity=5 --realisations 3" +
+          " --vary materials.rock.tensile_strength=4e6,5e6 -j 1 -q -o " + out.string());
+  ASSERT_EQ(r.code, 0) << r.output;
+  EXPECT_TRUE(has(r.output, (out / "ensemble.csv").string())) << r.output;
+  const auto rows = csv(out / "sweep.csv");
+  ASSERT_EQ(rows.size(), 7u);
+  const std::size_t ft = column(rows[0], "materials.rock.tensile_strength"),
+                    peak = column(rows[0], "peak_stress_MPa");
+  std::map<std::string, std::vector<double>> peaks;
+  for (std::size_t i = 1; i < rows.size(); ++i) {
+    ASSERT_EQ(rows[i][column(rows[0], "status")], "completed") << rows[i][0];
+    peaks[rows[i][ft]].push_back(std::stod(rows[i][peak]));
+  }
+  const auto ensemble = csv(out / "ensemble.csv");
+  const std::vector<std::string>& head = ensemble[0];
+  std::size_t checked = 0;
+  for (std::size_t i = 1; i < ensemble.size(); ++i) {
+    const std::vector<std::string>& e = ensemble[i];
+    if (e[column(head, "figure")] != "peak_stress_MPa") continue;
+    const std::vector<double>& p = peaks.at(e[column(head, "materials.rock.tensile_strength")]);
+    ASSERT_EQ(p.size(), 3u);
+    const double mean = (p[0] + p[1] + p[2]) / 3;
+    double squares = 0;
+    for (double v : p) squares += (v - mean) * (v - mean);
+    const double sd = std::sqrt(squares / 2), half = 4.302652729749464 * sd / std::sqrt(3.0);
+    EXPECT_GT(sd, 1e-3 * mean) << "the seeds gave the same disc";
+    EXPECT_EQ(e[column(head, "n")], "3");
+    EXPECT_EQ(e[column(head, "excluded")], "0");
+    EXPECT_NEAR(std::stod(e[column(head, "mean")]), mean, 1e-12 * mean);
+    EXPECT_NEAR(std::stod(e[column(head, "std")]), sd, 1e-9 * sd);
+    EXPECT_NEAR(std::stod(e[column(head, "ci95_low")]), mean - half, 1e-9 * mean);
+    EXPECT_NEAR(std::stod(e[column(head, "ci95_high")]), mean + half, 1e-9 * mean);
+    EXPECT_EQ(std::stod(e[column(head, "min")]), *std::min_element(p.begin(), p.end()));
+    EXPECT_EQ(std::stod(e[column(head, "max")]), *std::max_element(p.begin(), p.end()));
+    ++checked;
+  }
+  EXPECT_EQ(checked, 2u);
+  fs::remove_all(out);
 }
 
 // A fracturing specimen: the disc's tensile strength 2P/(pi D t) at
