@@ -1,6 +1,7 @@
 // The statistics of ensemble.csv (study/ensemble_stats.hpp) on samples
-// with known answers, and the grouping of a sweep's variants into
-// realisations of one rock (study/ensemble_table.hpp).
+// with known answers, the grouping of a sweep's variants into realisations
+// of one rock (study/ensemble_table.hpp) and the merging of a calibration
+// point's realisations (study/realisations.hpp).
 #include "study/ensemble_stats.hpp"
 
 #include <gtest/gtest.h>
@@ -8,13 +9,14 @@
 #include <cmath>
 
 #include "study/ensemble_table.hpp"
+#include "study/realisations.hpp"
 
 namespace study = rockfdem::workflows::study;
 
 namespace {
 
-study::VariantResult result(const std::string& status, double peak) {
-  return {"", status, "", 1.0, false, {{"peak_stress_MPa", peak}, {"broken_I", 3}}};
+study::VariantResult result(const std::string& status, double peak, const std::string& name = "") {
+  return {name, status, "why", 1.0, false, {{"peak_stress_MPa", peak}, {"broken_I", 3}}};
 }
 
 }  // namespace
@@ -106,4 +108,35 @@ TEST(Ensemble, variants_group_by_the_keys_that_are_not_seeds) {
   EXPECT_EQ(second.stats.max, 14.0);
   EXPECT_EQ(study::ensemble_figures({"peak_stress_MPa", "steps", "state_hash"}),
             (std::vector<std::string>{"peak_stress_MPa", "steps"}));
+}
+
+// A point's realisations: the figures are the mean over the completed ones
+// (a run stopped short is left out, and makes the point's status its own);
+// where none completed, over the ones stopped short, as a single run's
+// figures would be taken; a failed run never counts. One run is itself.
+TEST(Ensemble, realisations_merge_into_the_mean_of_the_completed_ones) {
+  const study::Realisations three = study::merge_realisations(
+      "p", {result("completed", 10, "s1"), result("not_at_equilibrium", 100, "s2"),
+            result("completed", 14, "s3")});
+  EXPECT_EQ(three.n, 2u);
+  EXPECT_EQ(three.result.name, "p");
+  EXPECT_EQ(three.result.status, "not_at_equilibrium");
+  EXPECT_EQ(three.result.message, "realisation s2: why");
+  EXPECT_DOUBLE_EQ(three.result.figures["peak_stress_MPa"].get<double>(), 12.0);
+  EXPECT_DOUBLE_EQ(three.stats.at("peak_stress_MPa").std, std::sqrt(8.0));
+  EXPECT_DOUBLE_EQ(three.result.wall_s, 3.0);
+  const study::Realisations whole =
+      study::merge_realisations("p", {result("completed", 1), result("completed", 2)});
+  EXPECT_EQ(whole.result.status, "completed");
+  EXPECT_EQ(whole.n, 2u);
+  const study::Realisations short_ =
+      study::merge_realisations("p", {result("failed", 7), result("unstable", 5)});
+  EXPECT_EQ(short_.n, 1u);
+  EXPECT_EQ(short_.result.status, "failed");
+  EXPECT_DOUBLE_EQ(short_.result.figures["peak_stress_MPa"].get<double>(), 5.0);
+  EXPECT_EQ(study::merge_realisations("p", {result("failed", 7), result("refused", 1)}).n, 0u);
+  const study::Realisations one = study::merge_realisations("p", {result("failed", 7, "only")});
+  EXPECT_EQ(one.n, 0u);
+  EXPECT_EQ(one.result.name, "only");
+  EXPECT_EQ(one.result.figures["peak_stress_MPa"], 7);
 }

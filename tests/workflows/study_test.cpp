@@ -73,6 +73,14 @@ pid_t start(const std::string& args, const fs::path& log) {
   return pid;
 }
 
+// The last write time of every file named `name` under `dir`.
+std::map<fs::path, fs::file_time_type> write_times(const fs::path& dir, const std::string& name) {
+  std::map<fs::path, fs::file_time_type> times;
+  for (const auto& e : fs::recursive_directory_iterator(dir))
+    if (e.path().filename() == name) times[e.path()] = fs::last_write_time(e.path());
+  return times;
+}
+
 // Polls `ready` until it holds or the process has ended (then false; the
 // caller reaps it). The cap only ends a hung test.
 bool wait_for(pid_t pid, const std::function<bool()>& ready) {
@@ -115,9 +123,7 @@ TEST(Study, sweep_runs_each_variant_once_and_resumes) {
   const double stiff = u.at("materials.rock.young=6e9_insitu.sigma_h=12e6");
   EXPECT_NEAR(soft / stiff, 2.0, 1e-9);
 
-  std::map<fs::path, fs::file_time_type> written;
-  for (const auto& e : fs::recursive_directory_iterator(out / "variants"))
-    if (e.path().filename() == "summary.json") written[e.path()] = fs::last_write_time(e.path());
+  const auto written = write_times(out / "variants", "summary.json");
   const std::string table = read_text(out / "sweep.csv");
   const Result again = run("sweep " + kScene + kGrid + " -o " + out.string());
   ASSERT_EQ(again.code, 0) << again.output;
@@ -224,7 +230,12 @@ TEST(Study, bad_study_flags_exit_two_naming_the_flag) {
       {"sweep --set materials.rock.heterogeneity=5 --realisations 2 --vary "
        "materials.rock.heterogeneity_seed=1,2",
        "--realisations 2: 'materials.rock.heterogeneity_seed' is given twice"},
-      {"run --realisations 3", "--realisations belongs to `rockfdem sweep`"}};
+      {"calibrate --target vault=4 --free materials.rock.young=1e9:5e9 --realisations 1",
+       "--realisations 1: allowed: a whole number of runs from 2"},
+      {"calibrate --target vault=4 --free materials.rock.young=1e9:5e9 --realisations 4",
+       "--realisations 4: materials.rock.heterogeneity is 0"},
+      {"run --realisations 3",
+       "--realisations belongs to `rockfdem sweep` or `rockfdem calibrate`"}};
   for (const auto& [args, expect] : cases) {
     const fs::path out = scratch("badstudy");
     const std::string command = args.substr(0, args.find(' '));
@@ -282,6 +293,55 @@ TEST(Study, sweep_realisations_give_each_group_its_ensemble_statistics) {
     ++checked;
   }
   EXPECT_EQ(checked, 2u);
+  fs::remove_all(out);
+}
+
+// calibrate --realisations 2 on the heterogeneous disc, one search point
+// and its two sensitivity points: each point's figure in calibration.csv is
+// the mean of its two seeds' peaks (read from their own summaries), its std
+// their sample standard deviation |a - b| / sqrt(2), n = 2, and the
+// objective the relative misfit of the mean. The same command again runs
+// nothing and writes the same table.
+TEST(Study, calibrate_realisations_fit_the_mean_of_the_seeds) {
+  const fs::path out = scratch("calibrate-ensemble");
+  const std::string fit =
+      " --target tensile_strength=9 --free materials.rock.tensile_strength=3e6:8e6";
+  const std::string ensemble = " --set materials.rock.heterogeneity=5 --realisations 2";
+  const std::string args = "calibrate " + kTestDir + "/study_brazilian.toml" + fit + ensemble +
+                           " --max-evals 1 -j 1 -q -o " + out.string();
+  const Result r = run(args);
+  ASSERT_EQ(r.code, 0) << r.output;
+  const auto summary = read_json(out / "calibration_summary.json");
+  EXPECT_EQ(summary["realisations"], 2);
+  EXPECT_TRUE(summary["targets"][0]["fitted_std"].is_number()) << summary.dump();
+  const auto rows = csv(out / "calibration.csv");
+  ASSERT_EQ(rows.size(), 4u);
+  const std::vector<std::string>& head = rows[0];
+  for (std::size_t i = 1; i < rows.size(); ++i) {
+    const std::vector<std::string>& row = rows[i];
+    double peak[2];
+    for (int s = 0; s < 2; ++s)
+      peak[s] = read_json(out / "variants" /
+                          (row[column(head, "variant")] +
+                           "_materials.rock.heterogeneity_seed=" + std::to_string(s + 1)) /
+                          "summary.json")["specimen"]["peak_stress"]
+                    .get<double>() /
+                1e6;
+    const double mean = (peak[0] + peak[1]) / 2, sd = std::abs(peak[0] - peak[1]) / std::sqrt(2.0);
+    EXPECT_GT(sd, 1e-3 * mean) << "the seeds gave the same disc";
+    EXPECT_EQ(row[column(head, "n")], "2");
+    EXPECT_EQ(row[column(head, "status")], "completed");
+    EXPECT_NEAR(std::stod(row[column(head, "tensile_strength_MPa")]), mean, 1e-12 * mean);
+    EXPECT_NEAR(std::stod(row[column(head, "tensile_strength_std_MPa")]), sd, 1e-9 * sd);
+    EXPECT_NEAR(std::stod(row[column(head, "objective")]), std::pow((mean - 9) / 9, 2), 1e-12);
+  }
+  const std::string table = read_text(out / "calibration.csv");
+  const auto written = write_times(out / "variants", "summary.json");
+  EXPECT_EQ(written.size(), 6u);
+  const Result again = run(args);
+  ASSERT_EQ(again.code, 0) << again.output;
+  for (const auto& [path, time] : written) EXPECT_EQ(fs::last_write_time(path), time) << path;
+  EXPECT_EQ(read_text(out / "calibration.csv"), table);
   fs::remove_all(out);
 }
 
@@ -512,9 +572,7 @@ TEST(Study, resume_reruns_no_finished_status) {
   for (const auto& [args, dir, n] : {std::tuple{mixed, out, 8}, std::tuple{failing, forced, 1}}) {
     const Result first = run(args);
     ASSERT_EQ(first.code, 0) << first.output;
-    std::map<fs::path, fs::file_time_type> written;
-    for (const auto& e : fs::recursive_directory_iterator(dir / "variants"))
-      if (e.path().filename() == "variant.json") written[e.path()] = fs::last_write_time(e.path());
+    const auto written = write_times(dir / "variants", "variant.json");
     EXPECT_EQ(written.size(), std::size_t(n)) << first.output;
     const Result again = run(args);
     ASSERT_EQ(again.code, 0) << again.output;

@@ -57,8 +57,11 @@ const CommandHelp kCommands[] = {
      "[options]",
      "Fits the --free keys to the targets (key-point mm, or a specimen's MPa) with NLopt's\n"
      "BOBYQA or COBYLA: calibration.csv, best_scene.toml, calibration.png and\n"
-     "calibration_summary.json (fitted values, sensitivities) in OUTDIR.",
-     {"output", "threads", "set", "target", "weight", "free", "max-evals", "method"},
+     "calibration_summary.json (fitted values, sensitivities) in OUTDIR.\n"
+     "--realisations N runs each point with heterogeneity seeds 1..N and fits the\n"
+     "targets' means over the completed realisations.",
+     {"output", "threads", "set", "target", "weight", "free", "max-evals", "method",
+      "realisations"},
      "rockfdem calibrate scenes/tunnel-seed.toml --target vault=223.02 "
      "--free materials.rock.young=1e9:2e10"},
 };

@@ -13,7 +13,7 @@ using Strings = std::vector<std::string>;
 const std::pair<const char*, const char*> kOwners[] = {
     {"vary", "sweep"},          {"samples", "sweep"},    {"realisations", "sweep"},
     {"target", "calibrate"},    {"weight", "calibrate"}, {"free", "calibrate"},
-    {"max-evals", "calibrate"}, {"method", "calibrate"}};
+    {"max-evals", "calibrate"}, {"method", "calibrate"}, {"realisations", "calibrate"}};
 
 // "`rockfdem sweep`" or "`rockfdem sweep` or `rockfdem calibrate`"; empty
 // where `command` is one of them.
@@ -44,8 +44,9 @@ po::options_description study_options() {
       "max-evals", po::value<long>(), "calibrate: at most N runs for the optimiser (60)")(
       "method", po::value<std::string>(), "calibrate: bobyqa (default) or cobyla")(
       "realisations", po::value<long>(),
-      "sweep: N >= 2 runs per variant, seeds materials.rock.heterogeneity_seed=1..N of a "
-      "heterogeneous rock; ensemble.csv: each figure's mean, std, 95% interval");
+      "sweep, calibrate: N >= 2 runs per variant (per point), seeds "
+      "materials.rock.heterogeneity_seed=1..N of a heterogeneous rock; sweep: ensemble.csv "
+      "(each figure's mean, std, 95% interval); calibrate: fits the mean");
   return o;
 }
 

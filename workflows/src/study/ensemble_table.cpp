@@ -1,6 +1,5 @@
 #include "study/ensemble_table.hpp"
 
-#include <cmath>
 #include <map>
 
 #include "study/study_table.hpp"
@@ -33,10 +32,6 @@ EnsembleRow row_of(const std::vector<std::string>& group, const std::string& fig
   }
   row.stats = describe_sample(values);
   return row;
-}
-
-nlohmann::json number_or_empty(double v) {
-  return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json();
 }
 
 }  // namespace
