@@ -97,7 +97,9 @@ TEST(CliConventions, each_command_prints_its_own_help) {
       {"mesh",
        {"Usage: rockfdem mesh", "preview.png", "--output", "--force", "--set"},
        {"--restart", "--checkpoint-every"}},
-      {"insitu", {"Usage: rockfdem insitu", "--output", "--set"}, {"--restart", "--force-dt"}}};
+      {"insitu", {"Usage: rockfdem insitu", "--output", "--set"}, {"--restart", "--force-dt"}},
+      {"sweep", {"rockfdem sweep", "--vary", "--realisations", "ensemble.csv"}, {"--target"}},
+      {"calibrate", {"rockfdem calibrate", "--free", "--realisations"}, {"--vary", "--samples"}}};
   for (const Case& c : cases) {
     const Result r = run(std::string(c.command) + " --help");
     EXPECT_EQ(r.code, 0) << r.output;

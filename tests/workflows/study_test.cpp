@@ -73,6 +73,14 @@ pid_t start(const std::string& args, const fs::path& log) {
   return pid;
 }
 
+// The last write time of every file named `name` under `dir`.
+std::map<fs::path, fs::file_time_type> write_times(const fs::path& dir, const std::string& name) {
+  std::map<fs::path, fs::file_time_type> times;
+  for (const auto& e : fs::recursive_directory_iterator(dir))
+    if (e.path().filename() == name) times[e.path()] = fs::last_write_time(e.path());
+  return times;
+}
+
 // Polls `ready` until it holds or the process has ended (then false; the
 // caller reaps it). The cap only ends a hung test.
 bool wait_for(pid_t pid, const std::function<bool()>& ready) {
@@ -115,9 +123,7 @@ TEST(Study, sweep_runs_each_variant_once_and_resumes) {
   const double stiff = u.at("materials.rock.young=6e9_insitu.sigma_h=12e6");
   EXPECT_NEAR(soft / stiff, 2.0, 1e-9);
 
-  std::map<fs::path, fs::file_time_type> written;
-  for (const auto& e : fs::recursive_directory_iterator(out / "variants"))
-    if (e.path().filename() == "summary.json") written[e.path()] = fs::last_write_time(e.path());
+  const auto written = write_times(out / "variants", "summary.json");
   const std::string table = read_text(out / "sweep.csv");
   const Result again = run("sweep " + kScene + kGrid + " -o " + out.string());
   ASSERT_EQ(again.code, 0) << again.output;
@@ -217,7 +223,19 @@ TEST(Study, bad_study_flags_exit_two_naming_the_flag) {
        "--weight wall=2"},
       {"calibrate --target vault=4 --free materials.rock.young=1e9:5e9 --method simplex",
        "--method simplex: allowed: bobyqa, cobyla"},
-      {"run --vary materials.rock.young=1e9,2e9", "--vary belongs to `rockfdem sweep`"}};
+      {"run --vary materials.rock.young=1e9,2e9", "--vary belongs to `rockfdem sweep`"},
+      {"sweep --realisations 1", "--realisations 1: allowed: a whole number of runs from 2"},
+      {"sweep --realisations 0 --vary materials.rock.young=1e9,2e9", "--realisations 0: allowed"},
+      {"sweep --realisations 3", "--realisations 3: materials.rock.heterogeneity is 0"},
+      {"sweep --set materials.rock.heterogeneity=5 --realisations 2 --vary "
+       "materials.rock.heterogeneity_seed=1,2",
+       "--realisations 2: 'materials.rock.heterogeneity_seed' is given twice"},
+      {"calibrate --target vault=4 --free materials.rock.young=1e9:5e9 --realisations 1",
+       "--realisations 1: allowed: a whole number of runs from 2"},
+      {"calibrate --target vault=4 --free materials.rock.young=1e9:5e9 --realisations 4",
+       "--realisations 4: materials.rock.heterogeneity is 0"},
+      {"run --realisations 3",
+       "--realisations belongs to `rockfdem sweep` or `rockfdem calibrate`"}};
   for (const auto& [args, expect] : cases) {
     const fs::path out = scratch("badstudy");
     const std::string command = args.substr(0, args.find(' '));
@@ -227,6 +245,104 @@ TEST(Study, bad_study_flags_exit_two_naming_the_flag) {
     EXPECT_NE(r.output.find(expect), std::string::npos) << args << ": " << r.output;
     EXPECT_FALSE(fs::exists(out)) << args;
   }
+}
+
+// Three realisations (heterogeneity seeds) of a heterogeneous disc (Weibull
+// modulus 5) at each of two tensile strengths: ensemble.csv has one row per
+// strength and figure, and its n, mean, standard deviation and 95% interval
+// are those of sweep.csv's rows of that strength (t_{0.975,2} = 4.3026527).
+// The seeds give different peaks, or the spread would say nothing.
+TEST(Study, sweep_realisations_give_each_group_its_ensemble_statistics) {
+  const fs::path out = scratch("ensemble");
+  const std::string disc = kTestDir + "/study_brazilian.toml";
+  const Result r =
+      run("sweep " + disc + " --set materials.rock.heterogeneity=5 --realisations 3" +
+          " --vary materials.rock.tensile_strength=4e6,5e6 -j 1 -q -o " + out.string());
+  ASSERT_EQ(r.code, 0) << r.output;
+  EXPECT_TRUE(has(r.output, (out / "ensemble.csv").string())) << r.output;
+  const auto rows = csv(out / "sweep.csv");
+  ASSERT_EQ(rows.size(), 7u);
+  const std::size_t ft = column(rows[0], "materials.rock.tensile_strength"),
+                    peak = column(rows[0], "peak_stress_MPa");
+  std::map<std::string, std::vector<double>> peaks;
+  for (std::size_t i = 1; i < rows.size(); ++i) {
+    ASSERT_EQ(rows[i][column(rows[0], "status")], "completed") << rows[i][0];
+    peaks[rows[i][ft]].push_back(std::stod(rows[i][peak]));
+  }
+  const auto ensemble = csv(out / "ensemble.csv");
+  const std::vector<std::string>& head = ensemble[0];
+  std::size_t checked = 0;
+  for (std::size_t i = 1; i < ensemble.size(); ++i) {
+    const std::vector<std::string>& e = ensemble[i];
+    if (e[column(head, "figure")] != "peak_stress_MPa") continue;
+    const std::vector<double>& p = peaks.at(e[column(head, "materials.rock.tensile_strength")]);
+    ASSERT_EQ(p.size(), 3u);
+    const double mean = (p[0] + p[1] + p[2]) / 3;
+    double squares = 0;
+    for (double v : p) squares += (v - mean) * (v - mean);
+    const double sd = std::sqrt(squares / 2), half = 4.302652729749464 * sd / std::sqrt(3.0);
+    EXPECT_GT(sd, 1e-3 * mean) << "the seeds gave the same disc";
+    EXPECT_EQ(e[column(head, "n")], "3");
+    EXPECT_EQ(e[column(head, "excluded")], "0");
+    EXPECT_NEAR(std::stod(e[column(head, "mean")]), mean, 1e-12 * mean);
+    EXPECT_NEAR(std::stod(e[column(head, "std")]), sd, 1e-9 * sd);
+    EXPECT_NEAR(std::stod(e[column(head, "ci95_low")]), mean - half, 1e-9 * mean);
+    EXPECT_NEAR(std::stod(e[column(head, "ci95_high")]), mean + half, 1e-9 * mean);
+    EXPECT_EQ(std::stod(e[column(head, "min")]), *std::min_element(p.begin(), p.end()));
+    EXPECT_EQ(std::stod(e[column(head, "max")]), *std::max_element(p.begin(), p.end()));
+    ++checked;
+  }
+  EXPECT_EQ(checked, 2u);
+  fs::remove_all(out);
+}
+
+// calibrate --realisations 2 on the heterogeneous disc, one search point
+// and its two sensitivity points: each point's figure in calibration.csv is
+// the mean of its two seeds' peaks (read from their own summaries), its std
+// their sample standard deviation |a - b| / sqrt(2), n = 2, and the
+// objective the relative misfit of the mean. The same command again runs
+// nothing and writes the same table.
+TEST(Study, calibrate_realisations_fit_the_mean_of_the_seeds) {
+  const fs::path out = scratch("calibrate-ensemble");
+  const std::string fit =
+      " --target tensile_strength=9 --free materials.rock.tensile_strength=3e6:8e6";
+  const std::string ensemble = " --set materials.rock.heterogeneity=5 --realisations 2";
+  const std::string args = "calibrate " + kTestDir + "/study_brazilian.toml" + fit + ensemble +
+                           " --max-evals 1 -j 1 -q -o " + out.string();
+  const Result r = run(args);
+  ASSERT_EQ(r.code, 0) << r.output;
+  const auto summary = read_json(out / "calibration_summary.json");
+  EXPECT_EQ(summary["realisations"], 2);
+  EXPECT_TRUE(summary["targets"][0]["fitted_std"].is_number()) << summary.dump();
+  const auto rows = csv(out / "calibration.csv");
+  ASSERT_EQ(rows.size(), 4u);
+  const std::vector<std::string>& head = rows[0];
+  for (std::size_t i = 1; i < rows.size(); ++i) {
+    const std::vector<std::string>& row = rows[i];
+    double peak[2];
+    for (int s = 0; s < 2; ++s)
+      peak[s] = read_json(out / "variants" /
+                          (row[column(head, "variant")] +
+                           "_materials.rock.heterogeneity_seed=" + std::to_string(s + 1)) /
+                          "summary.json")["specimen"]["peak_stress"]
+                    .get<double>() /
+                1e6;
+    const double mean = (peak[0] + peak[1]) / 2, sd = std::abs(peak[0] - peak[1]) / std::sqrt(2.0);
+    EXPECT_GT(sd, 1e-3 * mean) << "the seeds gave the same disc";
+    EXPECT_EQ(row[column(head, "n")], "2");
+    EXPECT_EQ(row[column(head, "status")], "completed");
+    EXPECT_NEAR(std::stod(row[column(head, "tensile_strength_MPa")]), mean, 1e-12 * mean);
+    EXPECT_NEAR(std::stod(row[column(head, "tensile_strength_std_MPa")]), sd, 1e-9 * sd);
+    EXPECT_NEAR(std::stod(row[column(head, "objective")]), std::pow((mean - 9) / 9, 2), 1e-12);
+  }
+  const std::string table = read_text(out / "calibration.csv");
+  const auto written = write_times(out / "variants", "summary.json");
+  EXPECT_EQ(written.size(), 6u);
+  const Result again = run(args);
+  ASSERT_EQ(again.code, 0) << again.output;
+  for (const auto& [path, time] : written) EXPECT_EQ(fs::last_write_time(path), time) << path;
+  EXPECT_EQ(read_text(out / "calibration.csv"), table);
+  fs::remove_all(out);
 }
 
 // A fracturing specimen: the disc's tensile strength 2P/(pi D t) at
@@ -456,9 +572,7 @@ TEST(Study, resume_reruns_no_finished_status) {
   for (const auto& [args, dir, n] : {std::tuple{mixed, out, 8}, std::tuple{failing, forced, 1}}) {
     const Result first = run(args);
     ASSERT_EQ(first.code, 0) << first.output;
-    std::map<fs::path, fs::file_time_type> written;
-    for (const auto& e : fs::recursive_directory_iterator(dir / "variants"))
-      if (e.path().filename() == "variant.json") written[e.path()] = fs::last_write_time(e.path());
+    const auto written = write_times(dir / "variants", "variant.json");
     EXPECT_EQ(written.size(), std::size_t(n)) << first.output;
     const Result again = run(args);
     ASSERT_EQ(again.code, 0) << again.output;

@@ -46,16 +46,22 @@ const CommandHelp kCommands[] = {
      "[mpirun -np N] rockfdem sweep SCENE.toml --vary KEY=V1,V2,... [--vary ...] [options]",
      "Runs one variant per combination of the values (or --samples N Latin-hypercube\n"
      "points over --vary KEY=LO:HI ranges) in OUTDIR/variants/NAME, resuming finished\n"
-     "ones; sweep.csv and sweep.png hold each variant's inputs and key figures.",
-     {"output", "threads", "set", "vary", "samples"},
+     "ones; sweep.csv and sweep.png hold each variant's inputs and key figures.\n"
+     "--realisations N runs each variant with heterogeneity seeds 1..N; ensemble.csv then\n"
+     "holds each figure's n, mean, std, 95% interval of the mean (Student t), min and max\n"
+     "over each group's completed realisations.",
+     {"output", "threads", "set", "vary", "samples", "realisations"},
      "rockfdem sweep scenes/tunnel-seed.toml --vary materials.rock.young=5e9,1e10 -o out/sweep"},
     {"calibrate",
      "[mpirun -np N] rockfdem calibrate SCENE.toml --target NAME=VALUE --free KEY=LO:HI "
      "[options]",
      "Fits the --free keys to the targets (key-point mm, or a specimen's MPa) with NLopt's\n"
      "BOBYQA or COBYLA: calibration.csv, best_scene.toml, calibration.png and\n"
-     "calibration_summary.json (fitted values, sensitivities) in OUTDIR.",
-     {"output", "threads", "set", "target", "weight", "free", "max-evals", "method"},
+     "calibration_summary.json (fitted values, sensitivities) in OUTDIR.\n"
+     "--realisations N runs each point with heterogeneity seeds 1..N and fits the\n"
+     "targets' means over the completed realisations.",
+     {"output", "threads", "set", "target", "weight", "free", "max-evals", "method",
+      "realisations"},
      "rockfdem calibrate scenes/tunnel-seed.toml --target vault=223.02 "
      "--free materials.rock.young=1e9:2e10"},
 };

@@ -9,11 +9,23 @@ namespace {
 
 using Strings = std::vector<std::string>;
 
-// Which command each study option belongs to.
+// Which commands each study option belongs to.
 const std::pair<const char*, const char*> kOwners[] = {
-    {"vary", "sweep"},       {"samples", "sweep"},  {"target", "calibrate"},
-    {"weight", "calibrate"}, {"free", "calibrate"}, {"max-evals", "calibrate"},
-    {"method", "calibrate"}};
+    {"vary", "sweep"},          {"samples", "sweep"},    {"realisations", "sweep"},
+    {"target", "calibrate"},    {"weight", "calibrate"}, {"free", "calibrate"},
+    {"max-evals", "calibrate"}, {"method", "calibrate"}, {"realisations", "calibrate"}};
+
+// "`rockfdem sweep`" or "`rockfdem sweep` or `rockfdem calibrate`"; empty
+// where `command` is one of them.
+std::string owners_unless(const std::string& option, const std::string& command) {
+  std::string owners;
+  for (const auto& [o, owner] : kOwners) {
+    if (option != o) continue;
+    if (command == owner) return "";
+    owners += (owners.empty() ? "`rockfdem " : " or `rockfdem ") + std::string(owner) + "`";
+  }
+  return owners;
+}
 
 }  // namespace
 
@@ -30,15 +42,19 @@ po::options_description study_options() {
       "free", po::value<Strings>()->composing(),
       "calibrate: KEY=LO:HI, a scene number to fit within its bounds (repeatable)")(
       "max-evals", po::value<long>(), "calibrate: at most N runs for the optimiser (60)")(
-      "method", po::value<std::string>(), "calibrate: bobyqa (default) or cobyla");
+      "method", po::value<std::string>(), "calibrate: bobyqa (default) or cobyla")(
+      "realisations", po::value<long>(),
+      "sweep, calibrate: N >= 2 runs per variant (per point), seeds "
+      "materials.rock.heterogeneity_seed=1..N of a heterogeneous rock; sweep: ensemble.csv "
+      "(each figure's mean, std, 95% interval); calibrate: fits the mean");
   return o;
 }
 
 void read_study_options(const po::variables_map& vm, CommandLine& cli) {
   for (const auto& [option, owner] : kOwners)
-    if (vm.count(option) && cli.command != owner)
-      throw InputError(std::string("command line: --") + option + " belongs to `rockfdem " + owner +
-                       "`");
+    if (const std::string owners = owners_unless(option, cli.command);
+        vm.count(option) && !owners.empty())
+      throw InputError(std::string("command line: --") + option + " belongs to " + owners);
   StudyOptions& s = cli.study;
   if (vm.count("vary")) s.vary = vm["vary"].as<Strings>();
   if (vm.count("samples")) s.samples = vm["samples"].as<long>();
@@ -47,6 +63,7 @@ void read_study_options(const po::variables_map& vm, CommandLine& cli) {
   if (vm.count("free")) s.free = vm["free"].as<Strings>();
   if (vm.count("max-evals")) s.max_evals = vm["max-evals"].as<long>();
   if (vm.count("method")) s.method = vm["method"].as<std::string>();
+  if (vm.count("realisations")) s.realisations = vm["realisations"].as<long>();
 }
 
 }  // namespace rockfdem::workflows

@@ -13,7 +13,10 @@ namespace rockfdem::workflows::study {
 
 CalibrationProblem::CalibrationProblem(const CommandLine& cli, std::vector<FreeKey> free,
                                        std::vector<Target> targets)
-    : cli_(cli), free_(std::move(free)), targets_(std::move(targets)) {}
+    : cli_(cli),
+      free_(std::move(free)),
+      targets_(std::move(targets)),
+      seeds_(read_realisations(cli.study)) {}
 
 std::vector<double> CalibrationProblem::values(const std::vector<double>& x) const {
   std::vector<double> v;
@@ -50,30 +53,51 @@ bool CalibrationProblem::met_its_criteria(const VariantResult& r) {
   return r.status == "completed";
 }
 
-double CalibrationProblem::objective(const VariantResult& r) const {
-  if (r.status == "failed" || r.status == "refused") return kFailedObjective;
+double CalibrationProblem::objective(const Realisations& m) const {
+  if (m.n == 0) return kFailedObjective;  // every run failed or was refused
   double f = 0;
   for (const Target& t : targets_) {
-    const double s = figure(r, t);
+    const double s = figure(m.result, t);
     if (!std::isfinite(s)) return kFailedObjective;
     f += t.weight * std::pow((s - t.value) / t.value, 2);
   }
-  return met_its_criteria(r) ? f : kNotAtEquilibriumObjective + f;
+  return met_its_criteria(m.result) ? f : kNotAtEquilibriumObjective + f;
+}
+
+std::vector<Variant> CalibrationProblem::runs_of(const Variant& v) const {
+  return seeds_.values.empty() ? std::vector<Variant>{v} : crossed({v}, seeds_);
+}
+
+Evaluation CalibrationProblem::evaluation(const std::vector<double>& x,
+                                          const std::vector<VariantResult>& runs) const {
+  const Variant v = variant(x);
+  const Realisations m = merge_realisations(v.name, runs);
+  Evaluation e{x, v, m.result, objective(m), m.n, {}};
+  for (const Target& t : targets_) {
+    const auto s = m.stats.find(t.column);
+    e.spread.push_back(s != m.stats.end() ? s->second.std
+                                          : std::numeric_limits<double>::quiet_NaN());
+  }
+  return e;
 }
 
 std::vector<Evaluation> CalibrationProblem::run_batch(
     const std::vector<std::vector<double>>& points) {
-  std::vector<Variant> variants;
-  for (const auto& x : points) variants.push_back(variant(x));
+  std::vector<Variant> variants;  // each point's runs, one after another
+  for (const auto& x : points) {
+    const std::vector<Variant> runs = runs_of(variant(x));
+    variants.insert(variants.end(), runs.begin(), runs.end());
+  }
   const std::vector<std::string> texts = farm(variants.size(), [&](std::size_t i) {
     return run_variant(cli_, variants[i]).to_json().dump();
   });
-  std::vector<Evaluation> done;
-  for (std::size_t i = 0; i < texts.size(); ++i) {
-    Evaluation e{points[i], variants[i], VariantResult::from_json(nlohmann::json::parse(texts[i])),
-                 0};
-    e.objective = objective(e.result);
-    done.push_back(e);
+  const std::size_t per_point = std::max<std::size_t>(1, realisations());
+  std::vector<Evaluation> done;  // rank 0 only: the others have no texts
+  for (std::size_t p = 0; p * per_point < texts.size(); ++p) {
+    std::vector<VariantResult> runs;
+    for (std::size_t i = p * per_point; i < (p + 1) * per_point; ++i)
+      runs.push_back(VariantResult::from_json(nlohmann::json::parse(texts[i])));
+    done.push_back(evaluation(points[p], runs));
   }
   return done;
 }

@@ -81,7 +81,12 @@ nlohmann::json summary_json(const CalibrationProblem& problem, const Evaluation&
                                {"lo", problem.free()[k].lo},
                                {"hi", problem.free()[k].hi},
                                {"fitted", v[k]}});
-  for (const Target& t : problem.targets()) {
+  if (problem.realisations() > 0) {
+    j["realisations"] = problem.realisations();
+    j["best_realisations_used"] = best.n;
+  }
+  for (std::size_t i = 0; i < problem.targets().size(); ++i) {
+    const Target& t = problem.targets()[i];
     const double s = CalibrationProblem::figure(best.result, t);
     j["targets"].push_back({{"name", t.name},
                             {"unit", unit_of(t)},
@@ -89,6 +94,8 @@ nlohmann::json summary_json(const CalibrationProblem& problem, const Evaluation&
                             {"weight", t.weight},
                             {"fitted", s},
                             {"relative_misfit", (s - t.value) / t.value}});
+    if (problem.realisations() > 0)
+      j["targets"].back()["fitted_std"] = number_or_empty(best.spread[i]);
   }
   for (const SensitivityEntry& e : sensitivity)
     j["sensitivity"].push_back({{"target", e.target},
@@ -106,6 +113,9 @@ void print_table(const nlohmann::json& j) {
       j["stop_reason"].get<std::string>().c_str(), j["search_runs"].get<int>(),
       j["runs"].get<int>() - j["search_runs"].get<int>(), j["ranks"].get<int>(),
       j["objective"].get<double>());
+  if (j.contains("realisations"))
+    std::printf("  each run is a point of %d realisations (heterogeneity seeds 1 to %d)\n",
+                j["realisations"].get<int>(), j["realisations"].get<int>());
   if (!j["best_met_its_criteria"].get<bool>())
     std::printf(
         "  no run met its criteria: the best ended `%s`, so its figures are not equilibrium "
@@ -115,11 +125,17 @@ void print_table(const nlohmann::json& j) {
     std::printf("  fitted %-32s = %.6g  (bounds %.4g to %.4g)\n",
                 p["key"].get<std::string>().c_str(), p["fitted"].get<double>(),
                 p["lo"].get<double>(), p["hi"].get<double>());
-  for (const auto& t : j["targets"])
-    std::printf("  target %-22s %.6g %s, fitted %.6g %s (%+.3f%%)\n",
+  for (const auto& t : j["targets"]) {
+    std::printf("  target %-22s %.6g %s, fitted %.6g %s (%+.3f%%)",
                 t["name"].get<std::string>().c_str(), t["target"].get<double>(),
                 t["unit"].get<std::string>().c_str(), t["fitted"].get<double>(),
                 t["unit"].get<std::string>().c_str(), 100 * t["relative_misfit"].get<double>());
+    if (t.contains("fitted_std") && t["fitted_std"].is_number())
+      std::printf(", the mean of %d realisations, std %.3g %s",
+                  j["best_realisations_used"].get<int>(), t["fitted_std"].get<double>(),
+                  t["unit"].get<std::string>().c_str());
+    std::printf("\n");
+  }
   std::printf(
       "  sensitivity at the optimum (elasticity: %% change of the figure per %% change of the "
       "key):\n");
@@ -162,6 +178,11 @@ void write_calibration_table(const CalibrationProblem& problem, const std::strin
   std::vector<std::string> columns{"run", "variant"};
   for (const FreeKey& f : problem.free()) columns.push_back(f.key);
   for (const Target& t : problem.targets()) columns.push_back(t.name + "_" + unit_of(t));
+  const bool ensemble = problem.realisations() > 0;
+  if (ensemble) {
+    columns.push_back("n");
+    for (const Target& t : problem.targets()) columns.push_back(t.name + "_std_" + unit_of(t));
+  }
   columns.insert(columns.end(), {"objective", "status", "wall_time_s"});
   Table table(columns);
   for (std::size_t i = 0; i < problem.record().size(); ++i) {
@@ -170,7 +191,11 @@ void write_calibration_table(const CalibrationProblem& problem, const std::strin
     for (double v : problem.values(e.x)) row.push_back(v);
     for (const Target& t : problem.targets()) {
       const double s = CalibrationProblem::figure(e.result, t);
-      row.push_back(std::isfinite(s) ? nlohmann::json(s) : nlohmann::json());
+      row.push_back(number_or_empty(s));
+    }
+    if (ensemble) {
+      row.push_back(e.n);
+      for (double sd : e.spread) row.push_back(number_or_empty(sd));
     }
     row.insert(row.end(), {e.objective, e.result.status, e.result.wall_s});
     table.add(row);

@@ -1,9 +1,12 @@
 // `rockfdem calibrate SCENE --target NAME=VALUE ... --free KEY=LO:HI ...`:
 // back-analysis. NLopt's BOBYQA (or COBYLA) moves the free keys, scaled to
 // [0, 1], to minimise the weighted sum of squared relative misfits of the
-// targets (calibrate_problem.hpp). Both are sequential: one run per step,
-// so under mpirun the other ranks wait during the search and share the
+// targets (calibrate_problem.hpp); with --realisations N, of the targets'
+// means over N heterogeneity seeds per point. Both are sequential: one
+// point per step (its realisations spread over the ranks), so under mpirun
+// the other ranks otherwise wait during the search, and they share the
 // sensitivity runs at the optimum.
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <exception>
@@ -117,6 +120,11 @@ int command_calibrate(const Scene& scene, const CommandLine& cli) {
     scene_with(cli, {f.key + "=" + exact_text(f.hi)}, "--free", f.key + "=" + exact_text(f.hi));
   }
   CalibrationProblem problem(cli, free, read_targets(cli.study, scene));
+  check_realisations_differ(
+      cli.study,
+      heterogeneous_rock(scene) || std::any_of(free.begin(), free.end(), [](const FreeKey& f) {
+        return f.key == "materials.rock.heterogeneity";
+      }));
   stop_study_if_interrupted(cli, "while checking the free keys' scenes (nothing run)");
   if (rank() == 0) or_abort_all([&] { lock_study_dir(cli.output_dir); });
   if (rank() != 0) {

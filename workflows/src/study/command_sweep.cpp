@@ -2,7 +2,9 @@
 // per variant (the product of the lists, or --samples N Latin hypercube
 // points over KEY=LO:HI ranges) in DIR/variants/<name>/, then DIR/sweep.csv
 // (inputs, status and key figures per variant; rewritten after every
-// finished variant) and DIR/sweep.png. DIR is locked against a second study. Under
+// finished variant), DIR/ensemble.csv where a heterogeneity seed is varied
+// (--realisations N: seeds 1..N of each variant) and DIR/sweep.png. DIR is
+// locked against a second study. Under
 // mpirun the variants are spread over the ranks; the table is the same for
 // any rank count.
 #include <algorithm>
@@ -14,6 +16,7 @@
 #include "rockfdem/error.hpp"
 #include "run/interrupt.hpp"
 #include "run/output_dir.hpp"
+#include "study/ensemble_table.hpp"
 #include "study/study_commands.hpp"
 #include "study/study_figures.hpp"
 #include "study/study_ranks.hpp"
@@ -28,11 +31,21 @@ constexpr std::size_t kMostSeries = 12;
 
 constexpr const char* kPending = "pending";
 
+// The product of the lists, or the Latin hypercube points over the ranges,
+// each once per seed of --realisations (a list after the ranges).
+std::vector<Variant> all_variants(const CommandLine& cli, const std::vector<VariedKey>& keys) {
+  if (cli.study.samples == 0) return product_variants(keys);
+  const bool seeds = !keys.back().range;
+  const std::vector<Variant> points = latin_hypercube(
+      std::vector<VariedKey>(keys.begin(), keys.end() - (seeds ? 1 : 0)), cli.study.samples);
+  return seeds ? crossed(points, keys.back()) : points;
+}
+
 // Every variant's scene is checked before anything runs or is written;
 // `ids` receives each variant's identity (study_run.hpp).
 std::vector<Variant> checked_variants(const CommandLine& cli, const std::vector<VariedKey>& keys,
                                       std::vector<nlohmann::json>* ids) {
-  std::size_t n = 1;
+  std::size_t n = cli.study.samples > 0 ? std::size_t(cli.study.samples) : 1;
   for (const VariedKey& k : keys) {
     if (k.range) {
       scene_with(cli, {k.key + "=" + exact_text(k.lo)}, "--vary", k.key + "=" + exact_text(k.lo));
@@ -46,17 +59,26 @@ std::vector<Variant> checked_variants(const CommandLine& cli, const std::vector<
       throw InputError("command line: --vary: the product of the lists holds over " +
                        std::to_string(kMostVariants) + " variants; allowed: fewer values");
   }
-  std::vector<Variant> variants =
-      cli.study.samples > 0 ? latin_hypercube(keys, cli.study.samples) : product_variants(keys);
+  std::vector<Variant> variants = all_variants(cli, keys);
+  bool heterogeneous = false;
   for (const Variant& v : variants) {
     stop_study_if_interrupted(cli, "while checking the variants' scenes (nothing run)");
-    ids->push_back(variant_identity(scene_with(cli, v.overrides(), "--vary", v.name), v));
+    const Scene scene = scene_with(cli, v.overrides(), "--vary", v.name);
+    heterogeneous = heterogeneous || heterogeneous_rock(scene);
+    ids->push_back(variant_identity(scene, v));
   }
+  check_realisations_differ(cli.study, heterogeneous);
   return variants;
 }
 
-void write_table(const std::string& path, const Scene& scene, const std::vector<VariedKey>& keys,
-                 const std::vector<Variant>& variants, const std::vector<VariantResult>& results) {
+bool varies_a_seed(const std::vector<VariedKey>& keys) {
+  return std::any_of(keys.begin(), keys.end(),
+                     [](const VariedKey& k) { return is_seed_key(k.key); });
+}
+
+// sweep.csv, and ensemble.csv where a seed is varied.
+void write_tables(const std::string& dir, const Scene& scene, const std::vector<VariedKey>& keys,
+                  const std::vector<Variant>& variants, const std::vector<VariantResult>& results) {
   std::vector<std::string> columns{"variant"};
   for (const VariedKey& k : keys) columns.push_back(k.key);
   columns.push_back("status");
@@ -75,7 +97,12 @@ void write_table(const std::string& path, const Scene& scene, const std::vector<
                                                 : nlohmann::json(results[i].wall_s));
     table.add(row);
   }
-  table.write(path);
+  table.write(output_path(dir, "sweep.csv"));
+  if (!varies_a_seed(keys)) return;
+  std::vector<std::string> names;
+  for (const VariedKey& k : keys) names.push_back(k.key);
+  write_ensemble_table(output_path(dir, "ensemble.csv"), names,
+                       ensemble_rows(names, variants, results, ensemble_figures(figures)));
 }
 
 // The study so far: what this rank has run, else what the variants' folders
@@ -92,7 +119,7 @@ std::vector<VariantResult> so_far(const CommandLine& cli, const std::vector<Vari
   return results;
 }
 
-// Runs the variants; sweep.csv is rewritten after each, whichever rank ran it.
+// Runs the variants; the tables are rewritten after each, whichever rank ran it.
 std::vector<VariantResult> run_all(const CommandLine& cli, const Scene& scene,
                                    const std::vector<VariedKey>& keys,
                                    const std::vector<Variant>& variants,
@@ -100,8 +127,7 @@ std::vector<VariantResult> run_all(const CommandLine& cli, const Scene& scene,
   std::vector<std::optional<VariantResult>> mine(variants.size());
   const std::vector<std::string> texts = farm(variants.size(), [&](std::size_t i) {
     mine[i] = run_variant(cli, variants[i]);
-    write_table(output_path(cli.output_dir, "sweep.csv"), scene, keys, variants,
-                so_far(cli, variants, ids, mine));
+    write_tables(cli.output_dir, scene, keys, variants, so_far(cli, variants, ids, mine));
     return mine[i]->to_json().dump();
   });
   std::vector<VariantResult> results;
@@ -179,7 +205,7 @@ void plot_sweep(const std::string& path, const Scene& scene, const std::vector<V
   if (!why.empty()) std::cerr << "rockfdem: sweep.png not drawn: " << why << '\n';
 }
 
-void report(const std::vector<VariantResult>& results, const std::string& dir) {
+void report(const std::vector<VariantResult>& results, const std::string& dir, bool ensemble) {
   std::size_t reused = 0, failed = 0;
   for (const VariantResult& r : results) {
     reused += r.reused;
@@ -191,7 +217,11 @@ void report(const std::vector<VariantResult>& results, const std::string& dir) {
   std::cout << "sweep: " << results.size() << " variants on " << n_ranks()
             << " rank(s): " << results.size() - reused << " run now, " << reused
             << " taken from earlier runs, " << failed << " failed or refused; table "
-            << output_path(dir, "sweep.csv") << '\n';
+            << output_path(dir, "sweep.csv");
+  if (ensemble)
+    std::cout << ", ensemble statistics (mean, std, 95% interval of the mean) "
+              << output_path(dir, "ensemble.csv");
+  std::cout << '\n';
 }
 
 }  // namespace
@@ -205,10 +235,10 @@ int command_sweep(const Scene& scene, const CommandLine& cli) {
   if (rank() == 0) or_abort_all([&] { lock_study_dir(cli.output_dir); });
   const std::vector<VariantResult> results = run_all(cli, scene, keys, variants, ids);
   if (rank() != 0) return 0;
-  write_table(output_path(cli.output_dir, "sweep.csv"), scene, keys, variants, results);
+  write_tables(cli.output_dir, scene, keys, variants, results);
   if (scene.output.plots)
     plot_sweep(output_path(cli.output_dir, "sweep.png"), scene, keys, variants, results);
-  report(results, cli.output_dir);
+  report(results, cli.output_dir, varies_a_seed(keys));
   signal_point("study-end");
   stop_study_if_interrupted(cli, "as the sweep ended (its variants and table are written)");
   return 0;

@@ -11,7 +11,12 @@
 #include "study/study_figures.hpp"
 
 namespace rockfdem::workflows::study {
+
+const char* const kRealisationKey = "materials.rock.heterogeneity_seed";
+
 namespace {
+
+constexpr long kMostRealisations = 10000;
 
 [[noreturn]] void refuse(const std::string& flag, const std::string& value,
                          const std::string& why) {
@@ -86,8 +91,10 @@ VariedKey read_one_vary(const std::string& text, bool sampled) {
 }  // namespace
 
 std::vector<VariedKey> read_vary(const StudyOptions& options) {
-  if (options.vary.empty())
-    throw InputError("command line: `rockfdem sweep` needs at least one --vary KEY=V1,V2,...");
+  if (options.vary.empty() && (!options.realisations || options.samples != 0))
+    throw InputError(
+        "command line: `rockfdem sweep` needs at least one --vary KEY=V1,V2,... (or, without "
+        "--samples, --realisations N)");
   if (options.samples < 0 || options.samples > 100000)
     refuse("--samples", std::to_string(options.samples), "allowed 1 to 100000");
   std::vector<VariedKey> keys;
@@ -95,6 +102,11 @@ std::vector<VariedKey> read_vary(const StudyOptions& options) {
   for (const std::string& text : options.vary) {
     keys.push_back(read_one_vary(text, options.samples > 0));
     check_unique("--vary", text, keys.back().key, seen);
+  }
+  const VariedKey seeds = read_realisations(options);
+  if (!seeds.values.empty()) {
+    check_unique("--realisations", std::to_string(*options.realisations), seeds.key, seen);
+    keys.push_back(seeds);
   }
   return keys;
 }
@@ -143,6 +155,31 @@ std::vector<Target> read_targets(const StudyOptions& options, const Scene& scene
       refuse("--weight", text, "allowed: a finite number > 0");
   }
   return targets;
+}
+
+VariedKey read_realisations(const StudyOptions& options) {
+  VariedKey seeds{kRealisationKey, {}, false, 0, 0};
+  if (!options.realisations) return seeds;
+  const long n = *options.realisations;
+  if (n < 2 || n > kMostRealisations)
+    refuse("--realisations", std::to_string(n),
+           "allowed: a whole number of runs from 2 to " + std::to_string(kMostRealisations) +
+               " (one per seed " + kRealisationKey + "=1..N)");
+  for (long s = 1; s <= n; ++s) seeds.values.push_back(std::to_string(s));
+  return seeds;
+}
+
+void check_realisations_differ(const StudyOptions& options, bool heterogeneous) {
+  if (options.realisations && !heterogeneous)
+    refuse("--realisations", std::to_string(*options.realisations),
+           "materials.rock.heterogeneity is 0 (a homogeneous rock: every seed gives the same "
+           "run); allowed only with a Weibull modulus > 0, e.g. --set "
+           "materials.rock.heterogeneity=5");
+}
+
+bool heterogeneous_rock(const Scene& scene) {
+  const auto rock = scene.materials.find(mesh::kRock);
+  return rock != scene.materials.end() && rock->second.heterogeneity > 0;
 }
 
 Scene scene_with(const CommandLine& cli, const std::vector<std::string>& overrides,

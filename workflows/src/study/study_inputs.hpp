@@ -1,5 +1,5 @@
 // The study flags read into checked records: --vary (sweep), --free,
-// --target and --weight (calibrate). Every refusal is an InputError that
+// --target and --weight (calibrate), --realisations (both). Every refusal is an InputError that
 // names the flag, its value and what is allowed (exit 2).
 #pragma once
 
@@ -33,7 +33,8 @@ struct Target {
   double weight = 1;
 };
 
-/// --vary, all lists (samples == 0) or all ranges (samples > 0).
+/// --vary, all lists (samples == 0) or all ranges (samples > 0), then the
+/// seeds of --realisations (a list) where it is given.
 std::vector<VariedKey> read_vary(const StudyOptions& options);
 
 /// --free: number keys with finite bounds lo < hi.
@@ -41,6 +42,20 @@ std::vector<FreeKey> read_free(const StudyOptions& options);
 
 /// --target and --weight; the names allowed depend on the scene's model.
 std::vector<Target> read_targets(const StudyOptions& options, const Scene& scene);
+
+/// The key --realisations N varies: materials.rock.heterogeneity_seed.
+extern const char* const kRealisationKey;
+
+/// --realisations N: the seeds 1..N of kRealisationKey, N from 2 to 10000;
+/// no values when the flag is not given.
+VariedKey read_realisations(const StudyOptions& options);
+
+/// Refuses --realisations when no run's rock is heterogeneous
+/// (materials.rock.heterogeneity = 0): every seed would give the same run.
+void check_realisations_differ(const StudyOptions& options, bool heterogeneous);
+
+/// Whether the scene's rock has strength heterogeneity (a Weibull modulus > 0).
+bool heterogeneous_rock(const Scene& scene);
 
 /// The scene with `overrides` added to the command line's; a refusal is
 /// rethrown naming `flag` and `value` first.

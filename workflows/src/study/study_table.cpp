@@ -1,5 +1,6 @@
 #include "study/study_table.hpp"
 
+#include <cmath>
 #include <stdexcept>
 
 #include "rockfdem/coupling/atomic_file.hpp"
@@ -44,6 +45,10 @@ void Table::add(const std::vector<nlohmann::json>& row) {
 }
 
 void Table::write(const std::string& path) const { coupling::atomic_write_text(path, text_); }
+
+nlohmann::json number_or_empty(double v) {
+  return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json();
+}
 
 std::string draw(const std::string& path, const std::string& title, const std::string& x_label,
                  const std::string& y_label, const std::vector<plots::PlotSeries>& series) {

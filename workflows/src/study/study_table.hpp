@@ -24,6 +24,10 @@ class Table {
   std::size_t n_columns_;
 };
 
+/// A cell for `v`: the number, or empty where it is not finite (a statistic
+/// its sample does not define).
+nlohmann::json number_or_empty(double v);
+
 /// Draws a line plot to `path`; returns "" or why it was not drawn (no
 /// display: run under xvfb-run).
 std::string draw(const std::string& path, const std::string& title, const std::string& x_label,

@@ -99,4 +99,15 @@ std::vector<Variant> latin_hypercube(const std::vector<VariedKey>& keys, long sa
   return variants;
 }
 
+std::vector<Variant> crossed(const std::vector<Variant>& variants, const VariedKey& list) {
+  std::vector<Variant> all;
+  for (const Variant& v : variants)
+    for (const std::string& value : list.values) {
+      std::vector<std::pair<std::string, std::string>> settings = v.settings;
+      settings.push_back({list.key, value});
+      all.push_back(make_variant(std::move(settings)));
+    }
+  return all;
+}
+
 }  // namespace rockfdem::workflows::study

@@ -32,6 +32,10 @@ std::vector<Variant> product_variants(const std::vector<VariedKey>& keys);
 /// same flags give the same variants on any machine and any rank count).
 std::vector<Variant> latin_hypercube(const std::vector<VariedKey>& keys, long samples);
 
+/// Each variant once per value of `list` (its key added last), the list
+/// varying fastest: the realisations of each variant.
+std::vector<Variant> crossed(const std::vector<Variant>& variants, const VariedKey& list);
+
 /// Numbers in variant names and CSV cells: the shortest text that reads back
 /// as the same double.
 std::string exact_text(double v);

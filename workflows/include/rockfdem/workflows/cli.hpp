@@ -2,6 +2,7 @@
 // from running so tests can check both without spawning processes.
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -17,6 +18,8 @@ struct StudyOptions {
   std::vector<std::string> free;     ///< calibrate: KEY=LO:HI
   long max_evals = 60;               ///< calibrate: runs the optimiser may ask for
   std::string method = "bobyqa";     ///< calibrate: bobyqa or cobyla
+  /// sweep and calibrate: runs per variant, over heterogeneity seeds 1..N
+  std::optional<long> realisations;
 };
 
 struct CommandLine {
