@@ -171,8 +171,15 @@ TEST(CheckBounds, an_implausible_rock_set_is_warned_of_by_check_and_run) {
   const std::string scene = kTestDir + "/support_pair_supported.toml -q ";
   const std::string soft = "--set materials.rock.young=0.3e9 ";
   const std::string said = "the rock's ucs_over_young = 0.0346 is outside [0.001, 0.01]";
-  EXPECT_TRUE(has(run("check " + scene + soft).output, "warning: " + said));
-  EXPECT_FALSE(has(run("check " + scene).output, "ucs_over_young = "));
+  const std::string checked = run("check " + scene + soft).output;
+  EXPECT_TRUE(has(checked, "warning: " + said));
+  // The verdict closes the output: both warnings (the rock set and its
+  // l_ch, which falls with E) listed; as shipped, the l_ch one alone.
+  EXPECT_TRUE(has(checked, "verdict: valid, with 2 warnings:\n  - the fracture zone's")) << checked;
+  EXPECT_TRUE(has(checked, "\n  - " + said)) << checked;
+  const std::string shipped = run("check " + scene).output;
+  EXPECT_FALSE(has(shipped, "ucs_over_young = "));
+  EXPECT_TRUE(has(shipped, "verdict: valid, with 1 warning:\n")) << shipped;
   const fs::path out = scratch("implausible-rock");
   const Result r = run("run " + scene + soft + "-j 1 --set 'stages[4].max_steps=20' " +
                        "--set output.plots=false --set output.vtk=false -o " + out.string());

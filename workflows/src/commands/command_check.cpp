@@ -10,6 +10,8 @@
 #include <cmath>
 #include <cstdio>
 #include <iostream>
+#include <string>
+#include <vector>
 
 #include "commands/check_probe.hpp"
 #include "commands/commands.hpp"
@@ -351,8 +353,14 @@ void print_constants(const Scene& scene, const Estimate& e, double cp, int threa
               dt);
 }
 
+// A warning on stderr as it is found, kept for the verdict at the end.
+void warn(std::vector<std::string>& said, const std::string& line) {
+  std::fprintf(stderr, "warning: %s\n", line.c_str());
+  said.push_back(line);
+}
+
 // The rock set against real rock's ranges (h / l_ch is warned of above).
-void print_plausibility(const RockPlausibilityFigures& p) {
+void print_plausibility(const RockPlausibilityFigures& p, std::vector<std::string>& said) {
   if (!p.ucs_Pa) return;
   std::printf("  rock set:                   UCS %.3g MPa (Mohr-Coulomb of c, phi)",
               *p.ucs_Pa / 1e6);
@@ -360,8 +368,17 @@ void print_plausibility(const RockPlausibilityFigures& p) {
     if (f.name != "h_over_l_ch") std::printf(", %s %.3g", f.name.c_str(), f.value);
   std::printf("\n");
   for (const std::string& line : plausibility_warnings(p))
-    if (line.find("h_over_l_ch") == std::string::npos)
-      std::fprintf(stderr, "warning: %s\n", line.c_str());
+    if (line.find("h_over_l_ch") == std::string::npos) warn(said, line);
+}
+
+// The last line: valid, or valid with what the warnings said.
+void print_verdict(const std::vector<std::string>& said) {
+  if (said.empty()) {
+    std::printf("verdict: valid\n");
+    return;
+  }
+  std::printf("verdict: valid, with %zu warning%s:\n", said.size(), said.size() == 1 ? "" : "s");
+  for (const std::string& w : said) std::printf("  - %s\n", w.c_str());
 }
 
 }  // namespace
@@ -370,6 +387,7 @@ int command_check(const Scene& scene, const RunContext& ctx) {
   const Estimate e = estimate(scene);
   const double cp = p_wave_speed(scene.materials.at(mesh::kRock), scene.plane_stress);
   std::printf("scene %s: valid\n", scene.source.c_str());
+  std::vector<std::string> said(scene.warnings);  // the input warnings, said on reading
   if (e.exact) std::printf("  mesh from %s\n", scene.mesh.msh.path.c_str());
   // Crack elements: about 1.5 interior edges per triangle.
   std::printf("  crack elements (estimate):  %.0f\n", 1.5 * e.fracture_triangles);
@@ -379,13 +397,16 @@ int command_check(const Scene& scene, const RunContext& ctx) {
         "  fracture resolution:        h / l_ch = %.3g (h = %.3g m, l_ch = E GfI / "
         "ft^2 = %.3g m; limit %g)\n",
         r.ratio, r.h, r.l_ch, kResolutionLimit);
-    if (r.ratio > kResolutionLimit)
-      std::fprintf(stderr,
-                   "warning: the fracture zone's elements are %.2g times the rock's l_ch "
-                   "(limit %g): crack pattern and displacements depend on the mesh; refine "
-                   "mesh.size_near\n",
-                   r.ratio, kResolutionLimit);
-    print_plausibility(rock_plausibility(scene, r.ratio));
+    if (r.ratio > kResolutionLimit) {
+      char line[300];
+      std::snprintf(line, sizeof line,
+                    "the fracture zone's elements are %.2g times the rock's l_ch (limit %g): "
+                    "crack pattern and displacements depend on the mesh; refine "
+                    "mesh.size_near",
+                    r.ratio, kResolutionLimit);
+      warn(said, line);
+    }
+    print_plausibility(rock_plausibility(scene, r.ratio), said);
   }
   if (e.triangles <= kProbeTriangleLimit)
     print_probe(scene, probe_scene(scene, ctx));
@@ -393,6 +414,7 @@ int command_check(const Scene& scene, const RunContext& ctx) {
     print_constants(scene, e, cp, ctx.threads);
   std::printf("  P-wave speed of rock:       %.1f m/s\n", cp);
   std::printf("  threads:                    %d\n", ctx.threads);
+  print_verdict(said);
   return 0;
 }
 
