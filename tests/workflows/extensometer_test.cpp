@@ -107,7 +107,9 @@ TEST(Extensometer, misplaced_or_misnamed_instruments_are_refused) {
 // A monitor read relative to the support reads 0 until the lining stage
 // installs the ring and from then on the in-situ-based reading minus its
 // value at installation: the last row of the soften stage (the lining
-// stage takes no step), to the 10 digits history.csv prints.
+// stage takes no step), to the 10 digits history.csv prints. An
+// extensometer read relative to the support likewise, both its reading
+// against the deepest anchor and its head's axial displacement.
 TEST(Monitor, relative_to_support_starts_at_the_lining_installation) {
   const fs::path out = scratch("relative-monitor");
   const Result r = run("run " + kTestDir + "/relative_monitor.toml -q -j 1 -o " + out.string());
@@ -128,17 +130,28 @@ TEST(Monitor, relative_to_support_starts_at_the_lining_installation) {
     for (std::stringstream s(line); std::getline(s, line, ',');) row.push_back(std::stod(line));
     rows.push_back(row);
   }
-  double at_install = std::nan("");
+  double at_install = std::nan(""), ext_at_install = at_install, head_at_install = at_install;
   int before = 0, after = 0;
   for (const auto& row : rows) {
     const std::string stage = stages.at(std::size_t(row[col("stage")]));
     const double abs = row[col("from_insitu_uy_mm")], rel = row[col("from_lining_uy_mm")];
+    // The extensometers' readings: the head against the deepest anchor, and
+    // the head's own axial displacement.
+    const double ext_abs = row[col("ext_insitu_a0_mm")], ext_rel = row[col("ext_lining_a0_mm")];
+    const double head_abs = row[col("ext_insitu_a0_abs_mm")];
+    const double head_rel = row[col("ext_lining_a0_abs_mm")];
     if (stage == "handoff" || stage == "soften") {
       EXPECT_EQ(rel, 0.0) << stage;
+      EXPECT_EQ(ext_rel, 0.0) << stage;
+      EXPECT_EQ(head_rel, 0.0) << stage;
       at_install = abs;
+      ext_at_install = ext_abs;
+      head_at_install = head_abs;
       ++before;
     } else {
       EXPECT_NEAR(rel, abs - at_install, 1e-9 * std::abs(abs)) << stage;
+      EXPECT_NEAR(ext_rel, ext_abs - ext_at_install, 2e-9 * std::abs(ext_abs) + 1e-12) << stage;
+      EXPECT_NEAR(head_rel, head_abs - head_at_install, 2e-9 * std::abs(head_abs)) << stage;
       ++after;
     }
   }
@@ -147,6 +160,9 @@ TEST(Monitor, relative_to_support_starts_at_the_lining_installation) {
   // The core's removal moves the crown after installation: a reading to check.
   EXPECT_GT(std::abs(rows.back()[col("from_lining_uy_mm")]), 0.01);
   EXPECT_EQ(j.at("monitors").at("from_lining").at("from"), "support");
+  EXPECT_GT(std::abs(rows.back()[col("ext_lining_a0_abs_mm")]), 0.01);
+  EXPECT_EQ(j.at("extensometers").at("ext_lining").at("read_from"), "support");
+  EXPECT_EQ(j.at("extensometers").at("ext_insitu").at("read_from"), "in-situ state");
   fs::remove_all(out);
 }
 

@@ -232,6 +232,9 @@ std::map<std::string, Text> text_fields() {
   f["monitor[0].relative_to_support"] = [](const Scene& s) {
     return yes(s.monitors[0].relative_to_support);
   };
+  f["extensometer[0].relative_to_support"] = [](const Scene& s) {
+    return yes(s.extensometers[0].relative_to_support);
+  };
   f["contact.enabled"] = [](const Scene& s) { return yes(s.engine.contact); };
   f["contact.friction"] = [](const Scene& s) { return yes(s.engine.contact_friction); };
   f["stages[0].stop_when_unstable"] = [](const Scene& s) {

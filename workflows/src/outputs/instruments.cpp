@@ -97,12 +97,25 @@ std::vector<double> Instruments::axial(const Extensometer& x, const NodeDisplace
   return out;
 }
 
+std::vector<double> Instruments::reading(std::size_t i, const NodeDisplacement& u) const {
+  const Extensometer& x = extensometers_[i];
+  std::vector<double> a = axial(x, u);
+  if (!x.spec->relative_to_support) return a;
+  std::size_t at = 0;  // x's first point in support_axial_
+  for (std::size_t k = 0; k < i; ++k) at += extensometers_[k].points.size();
+  for (std::size_t k = 0; k < a.size(); ++k) a[k] = installed_ ? a[k] - support_axial_[at + k] : 0;
+  return a;
+}
+
 void Instruments::support_installed(const NodeDisplacement& u) {
   if (installed_) return;
   installed_ = true;
   support_u_.clear();
   for (const MaterialPoint& p : monitors_)
     for (double v : interpolate(p, u)) support_u_.push_back(v);
+  support_axial_.clear();
+  for (const Extensometer& x : extensometers_)
+    for (double v : axial(x, u)) support_axial_.push_back(v);
 }
 
 std::vector<double> Instruments::row(const fdem::Engine& e, const mesh::Mesh& m,
@@ -112,8 +125,8 @@ std::vector<double> Instruments::row(const fdem::Engine& e, const mesh::Mesh& m,
     const std::array<double, 2> d = monitor_u(i, u);
     row.insert(row.end(), {mm(d[0]), mm(d[1]), mm(std::hypot(d[0], d[1]))});
   }
-  for (const Extensometer& x : extensometers_) {
-    const std::vector<double> a = axial(x, u);
+  for (std::size_t i = 0; i < extensometers_.size(); ++i) {
+    const std::vector<double> a = reading(i, u);
     for (std::size_t k = 0; k + 1 < a.size(); ++k) row.push_back(mm(a[k] - a.back()));
     for (double v : a) row.push_back(mm(v));
   }
@@ -137,10 +150,12 @@ void Instruments::add_monitors(MonitorRecord& monitors, const NodeDisplacement& 
 
 void Instruments::finish(RunRecord& summary, const fdem::Engine& e, const mesh::Mesh& m,
                          const NodeDisplacement& u) const {
-  for (const Extensometer& x : extensometers_) {
-    const std::vector<double> a = axial(x, u);
+  for (std::size_t i = 0; i < extensometers_.size(); ++i) {
+    const Extensometer& x = extensometers_[i];
+    const std::vector<double> a = reading(i, u);
     ExtensometerFigures& f = summary.extensometers[x.spec->name];
     f = ExtensometerFigures{{x.x, x.y}, {x.dx, x.dy}, std::nullopt, x.spec->length, {}};
+    f.read_from = x.spec->relative_to_support ? "support" : "in-situ state";
     if (!x.spec->from.empty()) f.from = x.spec->from;
     for (std::size_t k = 0; k < a.size(); ++k)
       f.points.push_back({k == 0 ? "head" : "anchor " + std::to_string(k),
@@ -156,12 +171,27 @@ void Instruments::finish(RunRecord& summary, const fdem::Engine& e, const mesh::
 }
 
 nlohmann::json Instruments::state() const {
-  return {{"support_installed", installed_}, {"support_u", support_u_}};
+  return {{"support_installed", installed_},
+          {"support_u", support_u_},
+          {"support_axial", support_axial_}};
 }
 
 void Instruments::restore(const nlohmann::json& s) {
   installed_ = s.value("support_installed", false);
   support_u_ = s.value("support_u", std::vector<double>{});
+  support_axial_ = s.value("support_axial", std::vector<double>{});
+  // Only a relative extensometer reads it (a state of an earlier version has none).
+  std::size_t points = 0;
+  bool relative = false;
+  for (const Extensometer& x : extensometers_) {
+    points += x.points.size();
+    relative = relative || x.spec->relative_to_support;
+  }
+  if (installed_ && relative && support_axial_.size() != points)
+    throw InputError(
+        "corrupt run state: the instruments' support reference holds " +
+        std::to_string(support_axial_.size()) + " extensometer readings; the scene's " +
+        std::to_string(extensometers_.size()) + " extensometers need " + std::to_string(points));
   if (installed_ && support_u_.size() != 2 * monitors_.size())
     throw InputError("corrupt run state: the instruments' support reference holds " +
                      std::to_string(support_u_.size()) + " values; the scene's " +

@@ -68,15 +68,18 @@ class Instruments : public OutputStepObserver {
   std::array<double, 2> monitor_u(std::size_t i, const NodeDisplacement& u) const;
   /// Per point of x: absolute reading [m] (towards the opening along the axis).
   std::vector<double> axial(const Extensometer& x, const NodeDisplacement& u) const;
+  /// axial() less its value at the support where x asks (0 before).
+  std::vector<double> reading(std::size_t i, const NodeDisplacement& u) const;
   std::vector<MonitorSpec> specs_;       ///< the scene's monitors, as it gave them
   std::vector<MaterialPoint> monitors_;  ///< per scene monitor
   std::vector<Extensometer> extensometers_;
   std::vector<std::string> ray_names_;  ///< key points
   std::vector<Ray> rays_;
-  double half_width_ = 0;          ///< half the fracture zone's element size [m]
-  std::vector<char> bolted_;       ///< bolt triangles, left out of the broken zone
-  bool installed_ = false;         ///< whether the first support stage has begun
-  std::vector<double> support_u_;  ///< (ux, uy) per monitor at the support
+  double half_width_ = 0;              ///< half the fracture zone's element size [m]
+  std::vector<char> bolted_;           ///< bolt triangles, left out of the broken zone
+  bool installed_ = false;             ///< whether the first support stage has begun
+  std::vector<double> support_u_;      ///< (ux, uy) per monitor at the support
+  std::vector<double> support_axial_;  ///< axial() per extensometer point at the support
 };
 
 }  // namespace rockfdem::workflows

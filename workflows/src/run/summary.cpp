@@ -395,11 +395,8 @@ nlohmann::json extensometer_json(const ExtensometerFigures& x) {
                       {"depth_m", p.depth_m},
                       {"relative_mm", p.relative_mm},
                       {"absolute_mm", p.absolute_mm}});
-  return {{"head", x.head},
-          {"direction", x.direction},
-          {"from", or_null(x.from)},
-          {"length_m", x.length_m},
-          {"points", points}};
+  return {{"head", x.head},         {"direction", x.direction}, {"from", or_null(x.from)},
+          {"length_m", x.length_m}, {"read_from", x.read_from}, {"points", points}};
 }
 
 nlohmann::json comparison_json(const ContinuumComparison& c) {

@@ -93,6 +93,7 @@ struct ExtensometerFigures {
   std::optional<std::string> from;  ///< the key point it starts at
   double length_m = 0;
   std::vector<ExtensometerPoint> points;
+  std::string read_from = "in-situ state";  ///< or "support" (relative_to_support)
 };
 
 /// "outer_boundary": the rigid motion of the model's outer boundary.

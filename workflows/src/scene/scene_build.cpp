@@ -700,6 +700,16 @@ std::string misplaced(const Scene& s, const std::string& what, double x, double 
   return "";
 }
 
+// An instrument's relative_to_support: only where a stage installs support.
+bool read_relative_to_support(const Reader& r, const Scene& s, const std::string& p) {
+  const bool relative = r.boolean(p + ".relative_to_support");
+  if (relative && std::none_of(s.stages.begin(), s.stages.end(),
+                               [](auto& st) { return stage_of(st.kind).installs_support(); }))
+    r.fail(p + ".relative_to_support",
+           "the stages install no support; allowed: true only with a `lining` or `bolts` stage");
+  return relative;
+}
+
 void read_monitors(const Reader& r, Scene& s, std::set<std::string>& names) {
   const toml::node* list = r.node("monitor");
   for (std::size_t i = 0; list && i < list->as_array()->size(); ++i) {
@@ -710,14 +720,9 @@ void read_monitors(const Reader& r, Scene& s, std::set<std::string>& names) {
     m.name = r.text(p + ".name");
     m.x = r.number(p + ".x");
     m.y = r.number(p + ".y");
-    m.relative_to_support = r.boolean(p + ".relative_to_support");
+    m.relative_to_support = read_relative_to_support(r, s, p);
     const std::string where = misplaced(s, p + " \"" + m.name + "\"", m.x, m.y);
     if (!where.empty()) r.fail(p + ".x", where);
-    if (m.relative_to_support && std::none_of(s.stages.begin(), s.stages.end(), [](auto& st) {
-          return stage_of(st.kind).installs_support();
-        }))
-      r.fail(p + ".relative_to_support",
-             "the stages install no support; allowed: true only with a `lining` or `bolts` stage");
     s.monitors.push_back(m);
   }
 }
@@ -727,6 +732,7 @@ ExtensometerSpec read_extensometer(const Reader& r, const Scene& s, const std::s
   x.name = r.text(p + ".name");
   x.length = r.number(p + ".length");
   x.anchors = r.integer(p + ".anchors");
+  x.relative_to_support = read_relative_to_support(r, s, p);
   if (r.has(p + ".from")) {
     if (r.has(p + ".head") || r.has(p + ".direction"))
       r.fail(p + ".from", "the head is the key point's; allowed: `from` or `head` and `direction`");

@@ -186,6 +186,10 @@ void add_instruments(std::vector<KeySpec>& s) {
   }
   s.push_back(
       positive("extensometer[].length", "m", "", "Distance from the head to the deepest anchor."));
+  s.push_back(boolean("extensometer[].relative_to_support", "false",
+                      "Read the displacements from the state at the first `lining` or `bolts` "
+                      "stage (what an extensometer installed with the support reads; 0 "
+                      "before); false: from the in-situ state."));
   s.push_back(integer("extensometer[].anchors", "3", 1, 50,
                       "Anchors at equal spacing from the head: anchor k at k length / anchors; "
                       "the deepest is the fixed reference of the readings."));

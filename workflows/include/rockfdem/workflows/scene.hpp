@@ -159,6 +159,7 @@ struct ExtensometerSpec {
   double dir_x{}, dir_y{};    ///< unit vector into the rock, when `from` is empty
   double length{};            ///< head to the deepest anchor [m]
   int anchors{};
+  bool relative_to_support{};  ///< read from the first lining or bolts stage
 };
 
 struct OutputSettings {
