@@ -182,6 +182,15 @@ std::vector<plots::PlotSeries> curves(const std::vector<Variant>& variants,
   }
   std::vector<plots::PlotSeries> series;
   for (auto& [name, s] : groups) series.push_back(s);
+  // Runs that stopped short of their criteria: marked where they lie.
+  plots::PlotSeries short_of{"not completed (unstable, not at equilibrium, ...)", {}, {}, true};
+  for (std::size_t i : order)
+    if (results[i].status != "completed" && results[i].status != kPending &&
+        results[i].figures.value(column, nlohmann::json()).is_number()) {
+      short_of.x.push_back(x[i]);
+      short_of.y.push_back(results[i].figures[column].get<double>());
+    }
+  if (!short_of.x.empty()) series.push_back(short_of);
   if (series.size() <= kMostSeries) return series;
   plots::PlotSeries all{column + " (all variants)", {}, {}};
   for (std::size_t i : order)
@@ -189,7 +198,8 @@ std::vector<plots::PlotSeries> curves(const std::vector<Variant>& variants,
       all.x.push_back(x[i]);
       all.y.push_back(results[i].figures[column].get<double>());
     }
-  return {all};
+  if (short_of.x.empty()) return {all};
+  return {all, short_of};
 }
 
 void plot_sweep(const std::string& path, const Scene& scene, const std::vector<VariedKey>& keys,

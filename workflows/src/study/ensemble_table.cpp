@@ -63,7 +63,7 @@ std::vector<EnsembleRow> ensemble_rows(const std::vector<std::string>& keys,
 std::vector<std::string> ensemble_figures(const std::vector<std::string>& figure_columns) {
   std::vector<std::string> f;
   for (const std::string& c : figure_columns)
-    if (c != "state_hash") f.push_back(c);
+    if (c != "state_hash" && c != "support_verdict") f.push_back(c);  // not numbers
   return f;
 }
 

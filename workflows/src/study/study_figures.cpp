@@ -1,5 +1,7 @@
 #include "study/study_figures.hpp"
 
+#include <algorithm>
+
 namespace rockfdem::workflows::study {
 namespace {
 
@@ -30,6 +32,32 @@ void take(const nlohmann::json& summary, const char* section, const std::string&
   if (v != s->end() && v->is_number()) figures[column] = scale * v->get<double>();
 }
 
+// What a tunnel run says of its support and damage (summary.json's
+// support, lining, bolts, broken_zone), beside the displacements.
+const char* const kSupportColumns[] = {"vault_explicit_share",     "broken_depth_m",
+                                       "lining_min_safety_factor", "max_bolt_tension_kN_per_bar",
+                                       "bolts_with_broken_steel",  "support_verdict"};
+
+// The support columns of kSupportColumns from a tunnel's summary.
+void take_support(const nlohmann::json& summary, nlohmann::json& f) {
+  if (const auto m = summary.find("monitors"); m != summary.end() && m->contains("vault"))
+    take((*m), "vault", "explicit_share", "vault_explicit_share", 1, f);
+  take(summary, "broken_zone", "depth_m", "broken_depth_m", 1, f);
+  take(summary, "lining", "min_safety_factor", "lining_min_safety_factor", 1, f);
+  if (const auto b = summary.find("bolts"); b != summary.end() && b->contains("each")) {
+    double most = 0;
+    long broken = 0;
+    for (const auto& bolt : (*b)["each"]) {
+      most = std::max(most, bolt.value("max_tension_kN_per_bar", 0.0));
+      broken += bolt.value("broken", false) ? 1 : 0;
+    }
+    f["max_bolt_tension_kN_per_bar"] = most;
+    f["bolts_with_broken_steel"] = broken;
+  }
+  if (const auto s = summary.find("support"); s != summary.end() && s->contains("verdict"))
+    f["support_verdict"] = (*s)["verdict"];
+}
+
 }  // namespace
 
 const std::vector<std::string>& key_point_names() {
@@ -47,6 +75,7 @@ std::vector<std::string> figure_columns(const Scene& scene) {
     for (const Pair& pair : kPairs) c.push_back(pair.column);
     c.insert(c.end(), std::begin(kChords), std::end(kChords));
     for (const std::string& p : key_point_names()) c.push_back(p + "_since_support_mm");
+    c.insert(c.end(), std::begin(kSupportColumns), std::end(kSupportColumns));
   }
   c.insert(c.end(), {"broken_I", "broken_II", "broken_mixed", "steps", "state_hash"});
   return c;
@@ -65,6 +94,7 @@ nlohmann::json key_figures(const nlohmann::json& summary) {
       if (f.contains(l) && f.contains(r)) f[column] = (f[l].get<double>() + f[r].get<double>()) / 2;
     }
     for (const char* c : kChords) take(summary, "monitors", c, c, 1, f);
+    take_support(summary, f);
   }
   take(summary, "specimen", "peak_stress", "peak_stress_MPa", 1e-6, f);
   take(summary, "broken", "mode_I", "broken_I", 1, f);

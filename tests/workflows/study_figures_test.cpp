@@ -1,0 +1,49 @@
+// What a sweep's table takes from each tunnel run's summary.json
+// (study/study_figures.hpp): the support and damage columns from a
+// constructed summary, and their absence where the summary has none.
+#include "study/study_figures.hpp"
+
+#include <gtest/gtest.h>
+
+namespace study = rockfdem::workflows::study;
+
+namespace {
+
+nlohmann::json tunnel_summary() {
+  nlohmann::json bolts = nlohmann::json::array();
+  bolts.push_back({{"max_tension_kN_per_bar", 76.7}, {"broken", false}});
+  bolts.push_back({{"max_tension_kN_per_bar", 80.8}, {"broken", true}});
+  bolts.push_back({{"max_tension_kN_per_bar", 12.0}, {"broken", true}});
+  return {{"monitors", {{"vault", {{"radial_mm", 48.6}, {"explicit_share", 0.57}}}}},
+          {"broken_zone", {{"depth_m", 5.99}}},
+          {"lining", {{"min_safety_factor", 0.56}}},
+          {"bolts", {{"each", bolts}}},
+          {"support", {{"verdict", "overstressed"}}},
+          {"broken", {{"mode_I", 15}, {"mode_II", 1918}, {"mixed", 67}}}};
+}
+
+}  // namespace
+
+// Each support column is the summary's figure: the largest bolt tension
+// of all bars, the count of bars with broken steel.
+TEST(StudyFigures, a_tunnel_runs_support_and_damage_become_columns) {
+  const nlohmann::json f = study::key_figures(tunnel_summary());
+  EXPECT_DOUBLE_EQ(f.at("vault_explicit_share").get<double>(), 0.57);
+  EXPECT_DOUBLE_EQ(f.at("broken_depth_m").get<double>(), 5.99);
+  EXPECT_DOUBLE_EQ(f.at("lining_min_safety_factor").get<double>(), 0.56);
+  EXPECT_DOUBLE_EQ(f.at("max_bolt_tension_kN_per_bar").get<double>(), 80.8);
+  EXPECT_EQ(f.at("bolts_with_broken_steel").get<long>(), 2);
+  EXPECT_EQ(f.at("support_verdict").get<std::string>(), "overstressed");
+  EXPECT_DOUBLE_EQ(f.at("vault_radial_mm").get<double>(), 48.6);
+}
+
+// An unsupported, unlined run: no support columns rather than zeros.
+TEST(StudyFigures, a_run_without_support_has_no_support_columns) {
+  nlohmann::json s = tunnel_summary();
+  for (const char* k : {"lining", "bolts", "support"}) s.erase(k);
+  const nlohmann::json f = study::key_figures(s);
+  for (const char* c : {"lining_min_safety_factor", "max_bolt_tension_kN_per_bar",
+                        "bolts_with_broken_steel", "support_verdict"})
+    EXPECT_FALSE(f.contains(c)) << c;
+  EXPECT_TRUE(f.contains("broken_depth_m"));
+}
