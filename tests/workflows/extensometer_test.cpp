@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -163,6 +164,14 @@ TEST(Monitor, relative_to_support_starts_at_the_lining_installation) {
   EXPECT_GT(std::abs(rows.back()[col("ext_lining_a0_abs_mm")]), 0.01);
   EXPECT_EQ(j.at("extensometers").at("ext_lining").at("read_from"), "support");
   EXPECT_EQ(j.at("extensometers").at("ext_insitu").at("read_from"), "in-situ state");
+  // report.md lists both, with what they read from and the summary's figures.
+  const std::string md = read_text(out / "report.md");
+  const nlohmann::json& head = j.at("extensometers").at("ext_lining").at("points").at(0);
+  char row[200];
+  std::snprintf(row, sizeof row, "| ext_lining | vault | support | 6.00 | %.2f | %.2f |",
+                head.at("relative_mm").get<double>(), head.at("absolute_mm").get<double>());
+  EXPECT_NE(md.find(row), std::string::npos) << row << "\n" << md;
+  EXPECT_NE(md.find("| from_lining | 0.00 | 4.00 | support |"), std::string::npos) << md;
   fs::remove_all(out);
 }
 

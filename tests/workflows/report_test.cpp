@@ -141,6 +141,22 @@ TEST(Report, tunnel_run_writes_a_report_with_the_summary_figures) {
   EXPECT_EQ(row_of(md, "wall_chord")[1],
             two_decimals(j["monitors"]["wall_chord_convergence_mm"].get<double>()));
   EXPECT_NE(md.find("a test"), std::string::npos);
+  // The lining and broken-zone tables carry the summary's figures with units.
+  const nlohmann::json& lining = j["lining"];
+  EXPECT_EQ(row_of(md, "lining-rock bond")[1],
+            std::to_string(lining["interface_broken"].get<long>()) + " of " +
+                std::to_string(lining["interface_cracks"].get<long>()) + " crack elements broken");
+  EXPECT_EQ(
+      row_of(md, "largest thrust")[2],
+      "at " + std::to_string(std::lround(lining["max_thrust_angle_deg"].get<double>())) + " deg");
+  const double thrust = lining["max_thrust_kN_per_m"].get<double>();
+  EXPECT_NEAR(std::stod(row_of(md, "largest thrust")[1]), thrust, 0.005 * std::abs(thrust));
+  EXPECT_EQ(row_of(md, "deepest from the opening")[1],
+            two_decimals(j["broken_zone"]["depth_m"].get<double>()) + " m");
+  const long all = j["broken"]["mode_I"].get<long>() + j["broken"]["mode_II"].get<long>() +
+                   j["broken"]["mixed"].get<long>();
+  const std::string broken = row_of(md, "broken crack elements, all")[1];
+  EXPECT_EQ(broken.substr(0, broken.find(' ')), std::to_string(all));
   // Every bolt of the summary has its row.
   for (const auto& b : j["bolts"]["each"])
     EXPECT_FALSE(row_of(md, b["name"].get<std::string>()).empty()) << b["name"];

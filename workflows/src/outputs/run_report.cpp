@@ -275,77 +275,121 @@ void bolts(std::ostream& md, const std::optional<BoltRecord>& r) {
      << value_text(r->grout_cracks_broken) << ".\n";
 }
 
-// Rows of figures by name, in the order of their names (summary.json's).
-using Rows = std::map<std::string, std::string>;
-
-void scalar_table(std::ostream& md, const Rows& rows) {
-  md << "| figure | value |\n|---|---|\n";
-  for (const auto& [key, text] : rows) md << "| " << key << " | " << text << " |\n";
+// A figure with its value (units in the text) and where it holds.
+void figure_row(std::ostream& md, const std::string& figure, const std::string& value,
+                const std::string& where = "") {
+  md << "| " << figure << " | " << value << " | " << where << " |\n";
 }
 
-void capacity_rows(Rows& t, const LiningCapacityFigures& c) {
-  t["compressive_strength_Pa"] = value_text(c.compressive_strength_Pa);
-  t["tensile_strength_Pa"] = value_text(c.tensile_strength_Pa);
-  if (c.invert_compressive_strength_Pa) {
-    t["invert_compressive_strength_Pa"] = value_text(*c.invert_compressive_strength_Pa);
-    t["invert_tensile_strength_Pa"] = value_text(*c.invert_tensile_strength_Pa);
-    t["min_safety_factor_in_invert"] = value_text(c.min_safety_factor_in_invert);
-  }
-  t["min_safety_factor"] = value_text(c.min_safety_factor);
-  t["min_safety_factor_angle_deg"] = value_text(c.min_safety_factor_angle_deg);
-  t["min_safety_factor_x_m"] = value_text(c.min_safety_factor_x_m);
-  t["min_safety_factor_y_m"] = value_text(c.min_safety_factor_y_m);
-  t["min_safety_factor_at_corner"] = value_text(c.min_safety_factor_at_corner);
-  t["segments_below_1"] = value_text(c.segments_below_1);
-}
+std::string at_angle(double deg) { return "at " + fixed(deg, 0) + " deg"; }
 
-void force_rows(Rows& t, const LiningForceFigures& f) {
-  t["file"] = "lining.csv";
-  t["step"] = value_text(f.step);
-  t["segments"] = value_text(f.segments);
-  t["thickness_m"] = value_text(f.thickness_m);
-  if (f.invert_thickness_m) t["invert_thickness_m"] = value_text(*f.invert_thickness_m);
-  t["corner_segments"] = value_text(f.corner_segments);
-  t["max_thrust_kN_per_m"] = value_text(f.max_thrust_kN_per_m);
-  t["max_thrust_angle_deg"] = value_text(f.max_thrust_angle_deg);
-  t["min_thrust_kN_per_m"] = value_text(f.min_thrust_kN_per_m);
-  t["min_thrust_angle_deg"] = value_text(f.min_thrust_angle_deg);
-  t["max_abs_moment_kNm_per_m"] = value_text(f.max_abs_moment_kNm_per_m);
-  t["max_abs_moment_angle_deg"] = value_text(f.max_abs_moment_angle_deg);
-  t["max_abs_shear_kN_per_m"] = value_text(f.max_abs_shear_kN_per_m);
-  t["max_abs_shear_angle_deg"] = value_text(f.max_abs_shear_angle_deg);
-  t["capacity"] = f.capacity;
-  if (f.check) capacity_rows(t, *f.check);
+// A section force: whole units from 1000 up, else three significant digits.
+std::string force(double v) { return std::abs(v) >= 1000 ? fixed(v, 0) : sig(v); }
+
+void capacity_rows(std::ostream& md, const LiningForceFigures& f, const LiningCapacityFigures& c) {
+  std::string strengths =
+      "tension " + mpa(c.tensile_strength_Pa) + ", compression " + mpa(c.compressive_strength_Pa);
+  if (c.invert_compressive_strength_Pa)
+    strengths += "; floor part: tension " + mpa(*c.invert_tensile_strength_Pa) + ", compression " +
+                 mpa(*c.invert_compressive_strength_Pa);
+  figure_row(md, "strengths", strengths);
+  if (c.min_safety_factor)
+    figure_row(md, "smallest safety factor", fixed(*c.min_safety_factor, 2),
+               std::string(c.min_safety_factor_in_invert ? "in the floor part, " : "") +
+                   at_angle(c.min_safety_factor_angle_deg) + " (x " +
+                   fixed(c.min_safety_factor_x_m, 2) + " m, y " +
+                   fixed(c.min_safety_factor_y_m, 2) + " m)" +
+                   (c.min_safety_factor_at_corner ? ", at a corner" : ""));
+  else
+    figure_row(md, "smallest safety factor", "-", "the ring carries nothing");
+  figure_row(md, "segments below 1",
+             value_text(c.segments_below_1) + " of " + value_text(f.segments));
 }
 
 void lining(std::ostream& md, const LiningRecord& r) {
   if (r.empty()) return;
-  md << "\n## Lining (end of run)\n\n";
-  Rows t;
-  if (r.interface) {
-    t["interface_cracks"] = value_text(r.interface->first);
-    t["interface_broken"] = value_text(r.interface->second);
+  md << "\n## Lining (end of run)\n\nSection forces per metre of tunnel; thrust "
+        "compression positive; angles about the opening's centroid from +x, counter-clockwise (90 "
+        "crown, 270 invert); figures per segment in lining.csv.\n\n"
+        "| figure | value | where |\n|---|---|---|\n";
+  if (const auto& f = r.forces) {
+    figure_row(md, "section",
+               fixed(1000 * f->thickness_m, 0) + " mm" +
+                   (f->invert_thickness_m
+                        ? "; floor part " + fixed(1000 * *f->invert_thickness_m, 0) + " mm"
+                        : std::string()));
+    figure_row(md, "capacity check", f->capacity);
+    if (f->check) capacity_rows(md, *f, *f->check);
+    figure_row(md, "largest thrust", force(f->max_thrust_kN_per_m) + " kN/m",
+               at_angle(f->max_thrust_angle_deg));
+    figure_row(
+        md, "smallest thrust", force(f->min_thrust_kN_per_m) + " kN/m",
+        at_angle(f->min_thrust_angle_deg) + (f->min_thrust_kN_per_m < 0 ? " (tension)" : ""));
+    figure_row(md, "largest moment (magnitude)", force(f->max_abs_moment_kNm_per_m) + " kNm/m",
+               at_angle(f->max_abs_moment_angle_deg));
+    figure_row(md, "largest shear (magnitude)", force(f->max_abs_shear_kN_per_m) + " kN/m",
+               at_angle(f->max_abs_shear_angle_deg));
+    figure_row(md, "segments",
+               value_text(f->segments) + " (" + value_text(f->corner_segments) + " at corners)",
+               "lining.csv, step " + value_text(f->step));
   }
-  if (r.forces) force_rows(t, *r.forces);
-  scalar_table(md, t);
+  if (r.interface)
+    figure_row(md, "lining-rock bond",
+               value_text(r.interface->second) + " of " + value_text(r.interface->first) +
+                   " crack elements broken",
+               "where broken, the ring slides on the rock");
 }
 
 void broken_zone(std::ostream& md, const fdem::BrokenCounts& b,
                  const std::optional<BrokenZoneRecord>& z) {
-  md << "\n## Broken zone (end of run)\n\nBroken crack elements: mode I " << value_text(b.mode_I)
-     << ", mode II " << value_text(b.mode_II) << ", mixed " << value_text(b.mixed) << ".\n\n";
+  md << "\n## Broken zone (end of run)\n\n| figure | value | note |\n|---|---|---|\n";
+  figure_row(md, "broken crack elements, all",
+             value_text(b.total()) + " (mode I " + value_text(b.mode_I) + ", mode II " +
+                 value_text(b.mode_II) + ", mixed " + value_text(b.mixed) +
+                 "): the rock's, the bolts' steel and grout, the lining-rock bond");
   if (!z) return;
-  Rows t{{"broken_rock_cracks", value_text(z->broken_rock_cracks)},
-         {"depth_m", value_text(z->depth_m)},
-         {"fracture_zone_m", value_text(z->fracture_zone_m)},
-         {"clearance_m", value_text(z->clearance_m)},
-         {"capped", value_text(z->capped)}};
-  if (z->ray_half_width_m) t["ray_half_width_m"] = value_text(*z->ray_half_width_m);
-  scalar_table(md, t);
+  figure_row(md, "broken between two rock triangles",
+             value_text(z->broken_rock_cracks) + " (in the fracture zone, away from bolts)");
+  figure_row(md, "deepest from the opening", fixed(z->depth_m, 2) + " m");
+  figure_row(md, "fracture zone depth", fixed(z->fracture_zone_m, 2) + " m",
+             "crack elements exist within it");
+  figure_row(md, "clearance to the zone's edge",
+             z->clearance_m ? fixed(*z->clearance_m, 2) + " m" : std::string("- (none broken)"),
+             z->capped ? "capped: the zone limits the damage" : "not capped");
   if (z->rays.empty()) return;
   md << "\n| ray from | broken depth [m] |\n|---|---|\n";
   for (const auto& [name, r] : z->rays)
     md << "| " << name << " | " << value_text(r.depth_m) << " |\n";
+  if (z->ray_half_width_m)
+    md << "\nRays take broken elements within " << fixed(*z->ray_half_width_m, 3)
+       << " m of them.\n";
+}
+
+// The scene's monitors and extensometers at the end.
+void instruments(std::ostream& md, const RunRecord& r) {
+  if (r.monitors.points.empty() && r.extensometers.empty()) return;
+  md << "\n## Instruments (end of run)\n";
+  if (!r.monitors.points.empty()) {
+    md << "\n| monitor | x [m] | y [m] | read from | ux [mm] | uy [mm] | \\|u\\| [mm] |\n"
+          "|---|---|---|---|---|---|---|\n";
+    for (const auto& [name, p] : r.monitors.points)
+      md << "| " << name << " | " << fixed(p.x, 2) << " | " << fixed(p.y, 2) << " | " << p.from
+         << " | " << fixed(p.ux_mm, 2) << " | " << fixed(p.uy_mm, 2) << " | " << fixed(p.u_mm, 2)
+         << " |\n";
+  }
+  if (r.extensometers.empty()) return;
+  md << "\nExtensometers: the head's reading against the deepest anchor (what the instrument "
+        "gives) and the head's own displacement towards the opening.\n\n| extensometer | from | "
+        "read from | length [m] | head to deepest anchor [mm] | head [mm] |\n"
+        "|---|---|---|---|---|---|\n";
+  for (const auto& [name, x] : r.extensometers) {
+    const bool any = !x.points.empty();
+    md << "| " << name << " | "
+       << x.from.value_or("(" + fixed(x.head[0], 2) + ", " + fixed(x.head[1], 2) + ")") << " | "
+       << x.read_from << " | " << fixed(x.length_m, 2) << " | "
+       << (any ? fixed(x.points.front().relative_mm, 2) : "-") << " | "
+       << (any ? fixed(x.points.front().absolute_mm, 2) : "-") << " |\n";
+  }
 }
 
 // The post-peak continuum's verdict (insitu.continuum_post_peak).
@@ -389,6 +433,7 @@ std::string report_markdown(const Scene& scene, const RunRecord& record,
   bolts(md, record.bolts);
   lining(md, record.lining);
   broken_zone(md, record.state.broken, record.broken_zone);
+  instruments(md, record);
   post_peak(md, record.continuum_post_peak);
   pictures(md, extras);
   return printable(md.str(), true);  // any scene text above (group names, paths) too
