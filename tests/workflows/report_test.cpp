@@ -29,9 +29,11 @@ std::vector<std::string> row_of(const std::string& md, const std::string& name) 
   std::size_t from = 1;
   for (std::size_t bar = line.find('|', from); bar != std::string::npos;
        from = bar + 1, bar = line.find('|', from)) {
-    std::string cell = line.substr(from, bar - from);
-    cells.push_back(cell.substr(cell.find_first_not_of(' '),
-                                cell.find_last_not_of(' ') - cell.find_first_not_of(' ') + 1));
+    const std::string cell = line.substr(from, bar - from);
+    const std::size_t first = cell.find_first_not_of(' ');
+    cells.push_back(first == std::string::npos
+                        ? std::string()
+                        : cell.substr(first, cell.find_last_not_of(' ') - first + 1));
   }
   return cells;
 }

@@ -9,6 +9,7 @@
 #include "outputs/broken_zone.hpp"
 #include "outputs/continuum_comparison.hpp"
 #include "outputs/engine_report.hpp"
+#include "outputs/ground_reaction.hpp"
 #include "outputs/rock_plausibility.hpp"
 #include "outputs/run_report.hpp"
 #include "rockfdem/coupling/atomic_file.hpp"
@@ -46,6 +47,7 @@ RunOutputs::RunOutputs(const Scene& scene, const RunContext& ctx, RunRecord& sum
       vtk_(scene.output.vtk),
       rollers_(scene.insitu.rollers),
       lining_ring_(scene.lining_ring),
+      insitu_(scene.insitu),
       is_cable_(scene.bolts.is_cable),
       shotcrete_(ring_strength(scene)),
       invert_top_(invert_top(scene)) {
@@ -257,7 +259,7 @@ void RunOutputs::finish(const fdem::Engine& e, const mesh::Mesh& m, PhaseTimer& 
                                                  kRigidRotationLimitDeg,
                                                  {mm(fit.tx), mm(fit.ty)},
                                                  scene_.insitu.rollers ? "rollers" : "tractions"};
-  record_ground_reaction(e);
+  record_ground_reaction(e, m);
   const bool lining_forces = lining_outputs(e, m);
   damage_outputs(e, m);
   if (instruments_) instruments_->finish(summary_, e, m, key_points_->node_displacements(e));
@@ -291,13 +293,21 @@ void RunOutputs::finish(const fdem::Engine& e, const mesh::Mesh& m, PhaseTimer& 
 
 // Ground reaction curve, implicit part: the core's share of the in-situ
 // stress (alpha) against the vault settlement it allows.
-void RunOutputs::record_ground_reaction(const fdem::Engine& e) {
+void RunOutputs::record_ground_reaction(const fdem::Engine& e, const mesh::Mesh& m) {
   const int vault_vertex = e.node_vertex()[key_points_->find("vault").node];
   std::vector<GroundReactionPoint>& grc = summary_.ground_reaction_curve;
   grc.clear();
-  for (const insitu::InsituField& f : fields_)
+  for (const insitu::InsituField& f : fields_) {
     grc.push_back(
         {f.alpha, -mm(f.uy[vault_vertex]), "implicit stage, alpha = " + detail_number(f.alpha)});
+    // In pressure: the core's traction on the opening (0 once removed).
+    for (const Monitor& k : key_points_->monitors()) {
+      const int v = e.node_vertex()[k.node];
+      grc.back().key_points[k.name] = {mm(f.ux[v] * k.inward_x + f.uy[v] * k.inward_y),
+                                       core_pressure(m, f, v, k.inward_x, k.inward_y).value_or(0.0),
+                                       insitu_normal_stress(insitu_, k.inward_x, k.inward_y)};
+    }
+  }
   // The end: the core's factor then (0 once removed), the support carrying the rest.
   const double end_ratio =
       history_->rows().empty() ? 0.0 : history_->column("support_pressure_ratio").back();

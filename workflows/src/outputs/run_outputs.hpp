@@ -94,7 +94,7 @@ class RunOutputs : public StepOutputs {
   void report_dt();
   /// The record's ground reaction curve: the implicit stage's points and
   /// the end of the run (after the monitors).
-  void record_ground_reaction(const fdem::Engine& e);
+  void record_ground_reaction(const fdem::Engine& e, const mesh::Mesh& m);
   /// With plots asked for and a display: the writer, after the run's
   /// curves against time (run_plots.hpp) and ground_reaction.png; else null.
   std::unique_ptr<PlotWriter> curves(const fdem::Engine& e);
@@ -127,6 +127,7 @@ class RunOutputs : public StepOutputs {
   bool vtk_ = false;                          ///< output.vtk
   bool rollers_ = false;                      ///< insitu.rollers
   bool lining_ring_ = false;                  ///< the model has a lining ring
+  InsituSettings insitu_;                     ///< the in-situ stress, p0 of the curve in pressure
   std::optional<insitu::KirschCase> kirsch_;  ///< the Kirsch case the scene is, if any
   std::vector<std::uint8_t> is_cable_;        ///< per bolt segment
   std::optional<RingStrength> shotcrete_;     ///< materials.lining's (and .invert's) strengths

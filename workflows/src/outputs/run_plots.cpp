@@ -99,24 +99,29 @@ void tunnel_curves(PlotWriter& plots, const fdem::Engine& e, const History& h,
 }
 
 void ground_reaction_plot(PlotWriter& plots, const std::vector<GroundReactionPoint>& grc) {
-  // The implicit stage's points (alpha, the vault's displacement it
-  // allows), and apart the run's final state, which is no point of the
-  // unsupported curve: the support carries the load there.
-  std::vector<double> ratio, settlement;
-  for (std::size_t i = 0; i + 1 < grc.size(); ++i) {
-    ratio.push_back(grc[i].support_pressure_ratio);
-    settlement.push_back(grc[i].vault_settlement_mm);
+  // Per key point, the implicit solves' pressure against displacement;
+  // apart, the run's final state at the vault, no point of the unsupported
+  // curve: the support carries the load there.
+  std::vector<plots::PlotSeries> series;
+  for (const char* name : {"vault", "right_wall", "invert"}) {
+    plots::PlotSeries s{name, {}, {}};
+    for (std::size_t i = 0; i + 1 < grc.size(); ++i) {
+      const auto k = grc[i].key_points.find(name);
+      if (k == grc[i].key_points.end() || !(k->second.insitu_Pa > 0)) continue;
+      s.x.push_back(k->second.radial_mm);
+      s.y.push_back(k->second.pressure_Pa / k->second.insitu_Pa);
+    }
+    if (!s.x.empty()) series.push_back(s);
   }
-  std::vector<plots::PlotSeries> series{
-      {"implicit stage: core stiffness factor alpha", settlement, ratio}};
   if (!grc.empty())
-    series.push_back({grc.back().point,
+    series.push_back({"vault, " + grc.back().point,
                       {grc.back().vault_settlement_mm},
                       {grc.back().support_pressure_ratio},
                       true});
-  plots.xy("ground_reaction.png", "Ground reaction curve at the vault",
-           "vault radial displacement (settlement) from the in-situ state [mm]",
-           "support pressure ratio p/p0 = core stiffness factor alpha [-]", series);
+  if (series.empty()) return;
+  plots.xy("ground_reaction.png", "Ground reaction curves (implicit stage)",
+           "radial displacement towards the opening from the in-situ state [mm]",
+           "p / p0: the core's pressure on the opening over the in-situ normal stress [-]", series);
 }
 
 void tunnel_pictures(PlotWriter& plots, const PictureContext& c, const NodeDisplacement& u) {

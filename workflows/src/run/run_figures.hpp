@@ -196,9 +196,16 @@ struct MonitorRecord {
 
 /// One point of the ground reaction curve ("ground_reaction_curve"[i]).
 struct GroundReactionPoint {
-  double support_pressure_ratio = 0;  ///< p/p0 = the core's factor alpha
+  double support_pressure_ratio = 0;  ///< the core's factor alpha (not p/p0: ground_reaction.hpp)
   double vault_settlement_mm = 0;
   std::string point;  ///< what the point is, in words
+  /// An implicit solve's point in pressure, per key point.
+  struct InPressure {
+    double radial_mm = 0;    ///< towards the opening
+    double pressure_Pa = 0;  ///< the core's normal traction on the opening, compression +
+    double insitu_Pa = 0;    ///< the in-situ normal stress there, p0
+  };
+  std::map<std::string, InPressure> key_points;
 };
 
 }  // namespace rockfdem::workflows

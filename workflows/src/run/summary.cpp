@@ -237,10 +237,16 @@ nlohmann::json monitors_json(const MonitorRecord& m) {
 
 nlohmann::json ground_reaction_json(const std::vector<GroundReactionPoint>& curve) {
   nlohmann::json j = nlohmann::json::array();
-  for (const GroundReactionPoint& p : curve)
+  for (const GroundReactionPoint& p : curve) {
     j.push_back({{"support_pressure_ratio", p.support_pressure_ratio},
                  {"vault_settlement_mm", p.vault_settlement_mm},
                  {"point", p.point}});
+    for (const auto& [name, k] : p.key_points)
+      j.back()["key_points"][name] = {{"radial_mm", k.radial_mm},
+                                      {"pressure_Pa", k.pressure_Pa},
+                                      {"insitu_Pa", k.insitu_Pa},
+                                      {"pressure_ratio", k.pressure_Pa / k.insitu_Pa}};
+  }
   return j;
 }
 
