@@ -10,7 +10,10 @@ case "$mode" in run|test) ;; *) echo "usage: bash scripts/setup.sh run|test" >&2
 
 bash scripts/install-deps.sh
 build=${ROCKFDEM_BUILD_DIR:-build}
-cmake -S . -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release >/dev/null
+# ROCKFDEM_WERROR=ON makes warnings errors (CI sets it: .ci/run); unset, the
+# build folder keeps what it was configured with (OFF in a new one).
+cmake -S . -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release \
+  ${ROCKFDEM_WERROR:+-DROCKFDEM_WERROR="$ROCKFDEM_WERROR"} >/dev/null
 cmake --build "$build" -j "$(nproc)"
 
 if [ "$mode" = run ]; then

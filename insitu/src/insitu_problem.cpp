@@ -3,8 +3,10 @@
 // This file reads like a deal.II tutorial (step-8 for elasticity, step-18 for
 // the staged loop): one class, InsituProblem, whose constructor takes the
 // mesh and the spec and whose run() solves one elastic state per softening
-// factor alpha. It is the only translation unit of rockfdem that includes
-// deal.II headers for the finite element work.
+// factor alpha. The finite element work of rockfdem lives in two deal.II
+// translation units: this one (the elastic stage) and plastic_problem.cpp
+// (the Mohr-Coulomb continuum on the same grid); parallel_init.cpp
+// includes deal.II only to start MPI.
 //
 // ## The mathematics
 //

@@ -68,7 +68,9 @@ long check_moment(const std::string& key, const std::string& value,
   const long s = fired.grout.at("steps").get<long>();
   const long n0 = fired.bolts.at("changes").at("broken_at_install").get<long>();
   EXPECT_GT(n0, 0) << "cracks broke before the bolts went in";
-  if (c.contains("broken_at_support")) EXPECT_EQ(c.at("broken_at_support").get<long>(), n0);
+  if (c.contains("broken_at_support")) {
+    EXPECT_EQ(c.at("broken_at_support").get<long>(), n0);
+  }
   EXPECT_TRUE(holds(broken(fired), n0, s)) << key << " at step " << s << ": N = " << broken(fired);
   // The moment: step and time at the stage's end (the trigger ends it), the
   // run's step count (hand-off step 1 plus every stage's steps).

@@ -5,7 +5,6 @@
 #include <cmath>
 #include <sstream>
 
-#include "commands/commands.hpp"
 #include "outputs/continuum_comparison.hpp"
 #include "outputs/run_plots.hpp"
 #include "rockfdem/coupling/atomic_file.hpp"

@@ -1,7 +1,7 @@
 // Text from outside (a scene's key or title, a .msh physical name, a
 // checkpoint's field) shown safely: in an error message on a terminal, in
-// report.md or a CSV cell. Beside error.hpp because every stage's messages
-// go through it.
+// report.md or a CSV cell. Beside error.hpp (in common/, below every
+// library) because every stage's messages go through it.
 #pragma once
 
 #include <string>
