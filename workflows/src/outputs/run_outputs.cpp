@@ -298,8 +298,10 @@ void RunOutputs::record_ground_reaction(const fdem::Engine& e, const mesh::Mesh&
   std::vector<GroundReactionPoint>& grc = summary_.ground_reaction_curve;
   grc.clear();
   for (const insitu::InsituField& f : fields_) {
-    grc.push_back(
-        {f.alpha, -mm(f.uy[vault_vertex]), "implicit stage, alpha = " + detail_number(f.alpha)});
+    grc.push_back({f.alpha,
+                   -mm(f.uy[vault_vertex]),
+                   "implicit stage, alpha = " + detail_number(f.alpha),
+                   {}});
     // In pressure: the core's traction on the opening (0 once removed).
     for (const Monitor& k : key_points_->monitors()) {
       const int v = e.node_vertex()[k.node];
@@ -311,9 +313,11 @@ void RunOutputs::record_ground_reaction(const fdem::Engine& e, const mesh::Mesh&
   // The end: the core's factor then (0 once removed), the support carrying the rest.
   const double end_ratio =
       history_->rows().empty() ? 0.0 : history_->column("support_pressure_ratio").back();
-  grc.push_back({end_ratio, summary_.monitors.chords->vault_settlement_mm,
+  grc.push_back({end_ratio,
+                 summary_.monitors.chords->vault_settlement_mm,
                  end_ratio > 0 ? "end of run (FDEM), core at alpha = " + detail_number(end_ratio)
-                               : std::string("end of run (FDEM), core removed")});
+                               : std::string("end of run (FDEM), core removed"),
+                 {}});
 }
 
 void RunOutputs::damage_outputs(const fdem::Engine& e, const mesh::Mesh& m) {
