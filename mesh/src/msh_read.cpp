@@ -1,7 +1,11 @@
 // read_msh: a user's .msh through gmsh's reader (every version and binary
 // form gmsh knows), then checked hard, since a bad mesh would otherwise fail
 // much later and far from its cause. Each check names the file and the node,
-// element or physical group at fault, and says what is allowed.
+// element or physical group at fault, and says what is allowed. The checks
+// before gmsh run in the caller's process, gmsh's read and the checks after
+// it in a child process (msh_child.hpp).
+#include "msh_read.hpp"
+
 #include <gmsh.h>
 #include <sys/stat.h>
 
@@ -14,11 +18,13 @@
 #include <new>
 #include <numeric>
 #include <set>
+#include <stdexcept>
 #include <string>
 #include <tuple>
 
 #include "gmsh_model.hpp"
 #include "gmsh_session.hpp"
+#include "msh_child.hpp"
 #include "msh_header.hpp"
 #include "msh_names.hpp"
 #include "rockfdem/error.hpp"
@@ -62,7 +68,8 @@ struct Reader {
     return size;
   }
 
-  void open() const {
+  // The checks before gmsh; returns the file's size.
+  std::uint64_t check_before_gmsh() const {
     const std::uint64_t size = check_file();
     if (const auto items = detail::declared_items(spec.path)) {
       const std::uint64_t bound = detail::kFixedBytes + detail::kBytesPerItem * *items;
@@ -78,16 +85,28 @@ struct Reader {
       fail(*bad +
            " is not a node, element or entity tag gmsh can read; tags in $Elements "
            "and $Periodic must be integers from 0 to 2147483647");
+    return size;
+  }
+
+  void open() const {
     detail::gmsh_guarded(spec.path + ": not a readable gmsh mesh", detail::GmshFailure::kInput,
                          [&] {
                            // A backstop for what count_beyond_file cannot see
-                           // (binary counts): gmsh allocates by a declared count.
+                           // (binary counts, an entity's count of physical
+                           // groups or bounding entities): gmsh allocates by a
+                           // declared count, and a vector's size beyond its
+                           // limit is a std::length_error.
                            try {
                              gmsh::open(spec.path);
                            } catch (const std::bad_alloc&) {
                              fail(
                                  "gmsh ran out of memory reading it: a count in the file is "
                                  "larger than the file holds; give a complete gmsh .msh file");
+                           } catch (const std::length_error&) {
+                             fail(
+                                 "gmsh could not allocate what a count in the file asks for (more "
+                                 "than any array can hold): a count in the file is larger than "
+                                 "the file holds; give a complete gmsh .msh file");
                            }
                          });
     std::string last;
@@ -397,11 +416,17 @@ void check_folds(const Reader& r, const std::vector<std::size_t>& element_tags,
 
 }  // namespace
 
-Mesh read_msh(const MshFileSpec& spec) {
+namespace detail {
+
+std::uint64_t check_before_gmsh(const MshFileSpec& spec) {
+  return Reader{spec}.check_before_gmsh();
+}
+
+Mesh read_with_gmsh(const MshFileSpec& spec) {
   const Reader r{spec};
-  detail::GmshSession session(1);
+  GmshSession session(1);
   Mesh m;
-  detail::gmsh_guarded(spec.path, detail::GmshFailure::kInput, [&] {
+  gmsh_guarded(spec.path, GmshFailure::kInput, [&] {
     r.open();
     r.check_element_types();
     const std::vector<std::size_t> node_tags = r.read_nodes(m);
@@ -411,8 +436,29 @@ Mesh read_msh(const MshFileSpec& spec) {
     check_areas(r, triangle_tags, node_tags, m);
     check_folds(r, triangle_tags, node_tags, m);
   });
-  detail::compact_vertices(m);
+  compact_vertices(m);
   return m;
+}
+
+Mesh read_msh_in_process(const MshFileSpec& spec) {
+  check_before_gmsh(spec);
+  return read_with_gmsh(spec);
+}
+
+}  // namespace detail
+
+// The checks before gmsh here; gmsh's read in a child process, so that a
+// crash of gmsh's reader on a malformed file is an InputError, not the
+// end of the run (msh_child.hpp).
+Mesh read_msh(const MshFileSpec& spec) {
+  const std::uint64_t size = detail::check_before_gmsh(spec);
+  std::set<int> zones;
+  if (!spec.zone_groups.empty() || !spec.edge_groups.empty())
+    for (const auto& [name, zone] : spec.zone_groups) zones.insert(zone);
+  else
+    for (const auto& [name, zone] : detail::default_zone_groups()) zones.insert(zone);
+  return detail::read_in_child(spec.path, detail::record_limits(size, std::move(zones)),
+                               [&] { return detail::read_with_gmsh(spec); });
 }
 
 }  // namespace rockfdem::mesh

@@ -3,7 +3,6 @@
 // InputError that names the file.
 #include "rockfdem/mesh/msh_io.hpp"
 
-#include <gmsh.h>
 #include <gtest/gtest.h>
 #include <sys/stat.h>
 #include <unistd.h>
@@ -18,6 +17,7 @@
 #include <string>
 #include <tuple>
 
+#include "msh_test_files.hpp"
 #include "rockfdem/error.hpp"
 #include "rockfdem/mesh/build.hpp"
 
@@ -62,21 +62,9 @@ TEST(MshRoundTrip, written_tunnel_reads_back_identical) {
 // group. It reads as the MSH 4.1 file does: the same triangles, zones,
 // fracture flags and edges (it was refused as "triangles ... overlap").
 TEST(MshRoundTrip, gmsh_msh22_with_a_triangle_per_physical_group_reads_as_msh41) {
-  MeshSpec s;
-  s.tunnel.shape = TunnelShape::kCircular;
-  s.tunnel.radius = 3, s.tunnel.lining_thickness = 0.3;
-  s.tunnel.fracture_zone = 1;
-  s.domain = {24, 24, 0, 0};
-  s.size.size_near = 0.6, s.size.size_far = 3;
   const std::string v41 = temp_path("rockfdem_v41.msh"), v22 = temp_path("rockfdem_v22.msh");
-  write_msh(build_mesh(s), v41);
-  gmsh::initialize();
-  gmsh::option::setNumber("General.Terminal", 0);
-  gmsh::open(v41);
-  gmsh::option::setNumber("Mesh.MshFileVersion", 2.2);
-  gmsh::option::setNumber("Mesh.SaveAll", 0);
-  gmsh::write(v22);
-  gmsh::finalize();
+  write_msh(build_mesh(test::lined_circular_tunnel()), v41);
+  test::gmsh_rewrite(v41, v22, 2.2);
   std::ifstream in(v22);
   std::string line;
   std::getline(in, line), std::getline(in, line);
@@ -442,6 +430,19 @@ TEST(MshUserFile, binary_counts_beyond_the_file_are_refused) {
                  "the $Nodes section declares 3 nodes, but its 1 blocks hold 4");
   expect_refused("rockfdem_bin4_elements.msh", binary_msh4(4, 4, 5555555555),
                  "the $Elements section declares 5555555555 elements");
+}
+
+// Found by flipping bits of a binary MSH 4.1 (issue 32, item 4): the top
+// bit of an entity's count of physical groups makes gmsh 4.8 throw
+// std::length_error from its vector (it was exit 1, an unexpected error).
+TEST(MshUserFile, binary_entity_count_beyond_any_array_is_refused) {
+  std::string s = binary_msh4(4, 4, 3);
+  // The first entity's physical count: after the 4 totals, its tag and box.
+  const std::size_t at = s.find("$Entities\n") + 10 + 4 * 8 + 4 + 6 * 8;
+  ASSERT_EQ(s[at], 1);
+  s[at + 7] = char(0x80);
+  expect_refused("rockfdem_bin4_physicals.msh", s,
+                 "gmsh could not allocate what a count in the file asks for");
 }
 
 // Found by tests/fuzz/fuzz_msh: gmsh::open reads a file that does not start

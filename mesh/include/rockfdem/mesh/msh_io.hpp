@@ -28,6 +28,12 @@ void write_msh(const Mesh& m, const std::string& path);
 /// group, an element type other than 3-node triangles and 2-node lines,
 /// NaN or infinite coordinates, two nodes at one position, a zero-area
 /// triangle, a triangle in no zone group.
+/// gmsh reads the file in a forked child process (the checks before gmsh
+/// run in this one): a crash of gmsh's reader (a signal), a read longer
+/// than 60 s + 4 s per MiB, or a record from the child that is cut short or
+/// out of bounds is an InputError naming the file; this process's gmsh and
+/// OpenMP state are untouched. Throws std::runtime_error when no child
+/// process can be started.
 Mesh read_msh(const MshFileSpec& spec);
 
 /// Every zone and every edge tag with a name, in number order: what name
