@@ -45,10 +45,10 @@ std::vector<std::string> plausibility_warnings(const RockPlausibilityFigures& p)
   std::vector<std::string> lines;
   for (const PlausibilityFigure& f : p.figures) {
     if (f.in_range) continue;
-    char text[300];
+    char text[400];
     std::snprintf(text, sizeof text,
-                  "the rock's %s = %.3g is outside [%g, %g] (%s): the rock set is not one "
-                  "real rock has",
+                  "the rock's %s = %.3g is outside [%g, %g] (%s): no intact rock has this set "
+                  "(a rock mass's figures: give the lab set with materials.rock.gsi)",
                   f.name.c_str(), f.value, f.low, f.high, f.meaning.c_str());
     lines.emplace_back(text);
   }
