@@ -12,6 +12,7 @@
 #include <string>
 
 #include "cli_runner.hpp"
+#include "outputs/run_report.hpp"
 #include "outputs/run_timeline.hpp"
 #include "run/summary.hpp"
 
@@ -329,4 +330,21 @@ TEST(StageRecords, checkpoint_copy_reads_back_every_field) {
   EXPECT_EQ(b.moving_most->mm_per_1000_steps, 18.3);
   EXPECT_EQ(b.support_pressure_ratio, 0.25);
   EXPECT_EQ(stage_records_json(back), j);
+}
+
+// The support verdict is stated once, under the status: its warning line
+// (summary.json and stderr carry it) is not repeated in the list below,
+// while every other warning is.
+TEST(Report, the_support_verdict_is_stated_once) {
+  using namespace rockfdem::workflows;
+  const Scene scene = load_scene(kTestDir + "/support_pair_supported.toml");
+  RunRecord r(scene, 1);
+  r.status = "completed";
+  r.support = SupportVerdict{"overstressed", {"lining SF 0.56 at 238 deg"}, {}};
+  r.warnings = {r.support->line(), "another warning"};
+  const std::string md = report_markdown(scene, r, ReportExtras{});
+  EXPECT_NE(md.find("**Support overstressed**: lining SF 0.56 at 238 deg"), std::string::npos)
+      << md;
+  EXPECT_EQ(md.find("- warning: support overstressed"), std::string::npos) << md;
+  EXPECT_NE(md.find("- warning: another warning"), std::string::npos) << md;
 }

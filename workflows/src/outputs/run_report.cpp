@@ -153,7 +153,8 @@ void status(std::ostream& md, const RunRecord& r) {
      << " after the hand-off step, " << value_text(r.fdem ? r.fdem->unbalanced_ratio_at_end : none)
      << " at the end (a stage's equilibrium criterion: below its `ratio`, with the key points "
         "settled; whether it was met is the status above)\n";
-  for (const std::string& w : r.warnings) md << "- warning: " << w << '\n';
+  for (const std::string& w : r.warnings)  // the support's is stated above
+    if (!r.support || w != r.support->line()) md << "- warning: " << w << '\n';
 }
 
 // A row of the key-point table: the figure, since support, the reference.
