@@ -41,10 +41,11 @@ RockPlausibilityFigures rock_plausibility(const Scene& scene, double h_over_l_ch
   return p;
 }
 
-std::vector<std::string> plausibility_warnings(const RockPlausibilityFigures& p) {
+std::vector<std::string> plausibility_warnings(const RockPlausibilityFigures& p,
+                                               bool with_resolution) {
   std::vector<std::string> lines;
   for (const PlausibilityFigure& f : p.figures) {
-    if (f.in_range) continue;
+    if (f.in_range || (!with_resolution && f.name == "h_over_l_ch")) continue;
     char text[400];
     std::snprintf(text, sizeof text,
                   "the rock's %s = %.3g is outside [%g, %g] (%s): no intact rock has this set "

@@ -31,7 +31,9 @@ RockPlausibilityFigures rock_plausibility(const MaterialSpec& rock, double h_ove
 RockPlausibilityFigures rock_plausibility(const Scene& scene, double h_over_l_ch);
 
 /// One line per figure outside its range, naming the figure, its value,
-/// the range and what it means; empty when all are within.
-std::vector<std::string> plausibility_warnings(const RockPlausibilityFigures& p);
+/// the range and what it means; empty when all are within. Without
+/// `with_resolution` h / l_ch is left out (the caller warns of it with h).
+std::vector<std::string> plausibility_warnings(const RockPlausibilityFigures& p,
+                                               bool with_resolution = true);
 
 }  // namespace rockfdem::workflows

@@ -328,8 +328,9 @@ void RunOutputs::damage_outputs(const fdem::Engine& e, const mesh::Mesh& m) {
     if (!ctx_.quiet) std::cerr << "warning: " << msg << '\n';
   };
   summary_.rock_plausibility = rock_plausibility(scene_, r.ratio);
-  for (const std::string& line : plausibility_warnings(*summary_.rock_plausibility))
-    if (line.find("h_over_l_ch") == std::string::npos) warn(line);  // said below, with h
+  // h / l_ch is said below, with h.
+  for (const std::string& line : plausibility_warnings(*summary_.rock_plausibility, false))
+    warn(line);
   char msg[500];
   if (r.ratio > kResolutionLimit) {
     std::snprintf(msg, sizeof msg,

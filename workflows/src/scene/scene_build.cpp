@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <iostream>
 #include <optional>
 #include <set>
@@ -440,20 +441,19 @@ void read_rock_mass(const Reader& r, Scene& s) {
   m.lab = rock;
   m.intact = {rock.young, mohr_coulomb_ucs(rock.cohesion, rock.friction_angle), m.mi};
   m.mass = rock_mass(m.intact, m.gsi, m.disturbance, m.gamma_h);
-  const auto reduce = [&](MaterialSpec& x, const std::string& p) {
-    if (!r.has(p + "young")) x.young = m.mass.young;
-    if (!r.has(p + "cohesion")) x.cohesion = m.mass.cohesion;
-    if (!r.has(p + "friction_angle")) x.friction_angle = m.mass.friction_angle;
-    if (!r.has(p + "tensile_strength")) x.tensile_strength = m.mass.tensile_strength;
+  // The rock takes every figure of the mass; the core each it does not give.
+  const auto reduce = [&](MaterialSpec& x, const std::function<bool(const char*)>& given) {
+    if (!given("young")) x.young = m.mass.young;
+    if (!given("cohesion")) x.cohesion = m.mass.cohesion;
+    if (!given("friction_angle")) x.friction_angle = m.mass.friction_angle;
+    if (!given("tensile_strength")) x.tensile_strength = m.mass.tensile_strength;
     x.residual_friction_angle = std::min(x.residual_friction_angle, x.friction_angle);
   };
-  rock.young = m.mass.young;
-  rock.cohesion = m.mass.cohesion;
-  rock.friction_angle = m.mass.friction_angle;
-  rock.tensile_strength = m.mass.tensile_strength;
-  rock.residual_friction_angle = std::min(rock.residual_friction_angle, rock.friction_angle);
+  reduce(rock, [](const char*) { return false; });
   const auto core = s.materials.find(mesh::kCore);
-  if (core != s.materials.end()) reduce(core->second, "materials.core.");
+  if (core != s.materials.end())
+    reduce(core->second,
+           [&](const char* key) { return r.has(std::string("materials.core.") + key); });
   s.rock_mass = m;
 }
 
