@@ -141,7 +141,7 @@ TEST(Monitor, relative_to_support_starts_at_the_lining_installation) {
     const double ext_abs = row[col("ext_insitu_a0_mm")], ext_rel = row[col("ext_lining_a0_mm")];
     const double head_abs = row[col("ext_insitu_a0_abs_mm")];
     const double head_rel = row[col("ext_lining_a0_abs_mm")];
-    if (stage == "handoff" || stage == "soften") {
+    if (stage == "insitu" || stage == "soften") {
       EXPECT_EQ(rel, 0.0) << stage;
       EXPECT_EQ(ext_rel, 0.0) << stage;
       EXPECT_EQ(head_rel, 0.0) << stage;

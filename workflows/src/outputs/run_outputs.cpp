@@ -55,6 +55,9 @@ RunOutputs::RunOutputs(const Scene& scene, const RunContext& ctx, RunRecord& sum
   if (kirsch_case(scene, &k)) kirsch_ = k;
   summary_.note_turned_off(scene.output, "fdem.pvd, fdem_NNNN.vtu, insitu.vtu, continuum.vtu",
                            true);
+  // Stage numbers: 0 the implicit stage, then the explicit ones in order.
+  stage_names_.push_back("insitu");
+  for (const StageSpec& st : scene.stages) stage_names_.push_back(st.kind);
 }
 
 void RunOutputs::record_insitu(const mesh::Mesh& m,
@@ -114,18 +117,12 @@ void RunOutputs::set_lining_installed(bool installed) {
   if (lining_) lining_->set_installed(installed);
 }
 
-void RunOutputs::record_rows(const fdem::Engine& e, const mesh::Mesh& m, const std::string& stage,
+void RunOutputs::record_rows(const fdem::Engine& e, const mesh::Mesh& m, const StageTag& stage,
                              double support_ratio, const fdem::EnergyBalance& energy) {
-  if (stage_names_.empty() || stage_names_.back() != stage) stage_names_.push_back(stage);
   const fdem::BrokenCounts b = e.broken_counts();
-  std::vector<double> row{double(stage_names_.size() - 1),
-                          double(e.step_count()),
-                          e.time(),
-                          e.kinetic_energy(),
-                          e.unbalanced_force_ratio(),
-                          double(b.mode_I),
-                          double(b.mode_II),
-                          double(b.mixed)};
+  std::vector<double> row{
+      double(stage.number),       double(e.step_count()), e.time(),          e.kinetic_energy(),
+      e.unbalanced_force_ratio(), double(b.mode_I),       double(b.mode_II), double(b.mixed)};
   for (const Monitor& mon : key_points_->monitors())
     for (double v : key_points_->figures(e, mon)) row.push_back(v);
   for (double v : key_points_->chords_mm(e)) row.push_back(v);
@@ -133,20 +130,20 @@ void RunOutputs::record_rows(const fdem::Engine& e, const mesh::Mesh& m, const s
   row.push_back(support_ratio);
   for (double v : energy_row(energy)) row.push_back(v);
   const NodeDisplacement u = key_points_->node_displacements(e);
-  const OutputStep step{e, m, stage, int(stage_names_.size() - 1), u};
+  const OutputStep step{e, m, stage.kind, stage.number, u};
   for (OutputStepObserver* o : observers()) o->at_output_step(step, row);
   history_->add(row);
 }
 
-void RunOutputs::record_frame(const fdem::Engine& e, const mesh::Mesh& m, const std::string& stage,
+void RunOutputs::record_frame(const fdem::Engine& e, const mesh::Mesh& m, const StageTag& stage,
                               const fdem::EnergyBalance& energy, PhaseTimer& timer) {
   check_rigid_motion(e, e.step_count());
   // The hand-off step's dt, once it passed (a failed one is no good state).
-  if (stage == "handoff" && stage_names_.size() == 1) handoff_dt_ = e.dt();
+  if (stage.kind == "handoff") handoff_dt_ = e.dt();
   if (vtk_) {
     const NodeDisplacement u = key_points_->node_displacements(e);
     std::vector<double> no_columns;
-    frames_->at_output_step({e, m, stage, int(stage_names_.size() - 1), u}, no_columns);
+    frames_->at_output_step({e, m, stage.kind, stage.number, u}, no_columns);
   }
   last_good_.take(e, energy, monitor_figures(e));
   timer.stamp("output");
@@ -206,7 +203,6 @@ nlohmann::json RunOutputs::state() const {
 void RunOutputs::restore(const nlohmann::json& s, const std::string& from_dir) {
   namespace fs = std::filesystem;
   history_->restore(s.at("history").get<std::vector<std::vector<double>>>());
-  stage_names_ = s.at("stages").get<std::vector<std::string>>();
   handoff_dt_ = s.value("handoff_dt", 0.0);  // 0: a checkpoint from before it was kept
   max_rotation_deg_ = s.value("max_rotation_deg", 0.0);
   if (instruments_ && s.contains("instruments") && s.at("instruments").is_object())

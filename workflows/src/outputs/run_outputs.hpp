@@ -60,11 +60,11 @@ class RunOutputs : public StepOutputs {
   /// An output step's history row, with the columns and files of the
   /// outputs that observe output steps (bolts, instruments, lining);
   /// before the run's checks of the step, so that a failing step has its row.
-  void record_rows(const fdem::Engine& e, const mesh::Mesh& m, const std::string& stage,
+  void record_rows(const fdem::Engine& e, const mesh::Mesh& m, const StageTag& stage,
                    double support_ratio, const fdem::EnergyBalance& energy) override;
   /// The output step once the run's checks passed: the outer boundary's
   /// rigid-motion check, the ParaView frame (if enabled) and the last good state.
-  void record_frame(const fdem::Engine& e, const mesh::Mesh& m, const std::string& stage,
+  void record_frame(const fdem::Engine& e, const mesh::Mesh& m, const StageTag& stage,
                     const fdem::EnergyBalance& energy, PhaseTimer& timer) override;
   /// The outputs that observe output steps, in history.csv's column order.
   std::vector<OutputStepObserver*> observers() const;

@@ -118,7 +118,7 @@ void stages(std::ostream& md, const RunRecord& r) {
         "status |\n|---|---|---|---|---|---|\n";
   if (!r.fdem) return;
   if (r.fdem->handoff_dt) {
-    md << "| 0 | handoff (implicit to explicit";
+    md << "| 0 | insitu: hand-off step (implicit to explicit";
     if (r.fdem->handoff_alpha) md << ", alpha " << sig(*r.fdem->handoff_alpha);
     md << ") | 1 | " << sig(*r.fdem->handoff_dt) << " | - | ";
     if (r.fdem->handoff)
@@ -128,9 +128,8 @@ void stages(std::ostream& md, const RunRecord& r) {
       md << "-";
     md << " |\n";
   }
-  int i = 1;
   for (const StageRecord& st : r.fdem->stages.value_or(std::vector<StageRecord>{}))
-    md << "| " << i++ << " | " << st.kind << " | " << value_text(st.steps) << " | "
+    md << "| " << st.number << " | " << st.kind << " | " << value_text(st.steps) << " | "
        << value_text(st.simulated_time) << " | " << value_text(st.unbalanced_ratio) << " | "
        << stage_of(st.kind).outcome(st) << " |\n";
 }

@@ -35,8 +35,8 @@ SpecimenOutputs::SpecimenOutputs(const Scene& scene, const RunContext& ctx, RunR
   summary_.note_turned_off(scene.output, "fdem.pvd, fdem_NNNN.vtu", true);
 }
 
-void SpecimenOutputs::record_rows(const fdem::Engine& e, const mesh::Mesh&, const std::string&,
-                                  double, const fdem::EnergyBalance& energy) {
+void SpecimenOutputs::record_rows(const fdem::Engine& e, const mesh::Mesh&, const StageTag&, double,
+                                  const fdem::EnergyBalance& energy) {
   const PlatenReading r = load_.read(e);
   const fdem::BrokenCounts b = e.broken_counts();
   std::vector<double> row{
@@ -47,9 +47,9 @@ void SpecimenOutputs::record_rows(const fdem::Engine& e, const mesh::Mesh&, cons
 }
 
 void SpecimenOutputs::record_frame(const fdem::Engine& e, const mesh::Mesh& m,
-                                   const std::string& stage, const fdem::EnergyBalance& energy,
+                                   const StageTag& stage, const fdem::EnergyBalance& energy,
                                    PhaseTimer& timer) {
-  if (scene_.output.vtk) write_frame(e, m, stage);
+  if (scene_.output.vtk) write_frame(e, m, stage.kind);
   last_good_.take(e, energy);
   timer.stamp("output");
 }

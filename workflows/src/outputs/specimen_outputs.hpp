@@ -25,9 +25,9 @@ class SpecimenOutputs : public StepOutputs {
   SpecimenOutputs(const Scene& scene, const RunContext& ctx, RunRecord& summary);
   /// The platens' load: the stage's peak and post-peak stop, the rows' stress.
   PlatenLoad& load() { return load_; }
-  void record_rows(const fdem::Engine& e, const mesh::Mesh& m, const std::string& stage,
+  void record_rows(const fdem::Engine& e, const mesh::Mesh& m, const StageTag& stage,
                    double support_ratio, const fdem::EnergyBalance& energy) override;
-  void record_frame(const fdem::Engine& e, const mesh::Mesh& m, const std::string& stage,
+  void record_frame(const fdem::Engine& e, const mesh::Mesh& m, const StageTag& stage,
                     const fdem::EnergyBalance& energy, PhaseTimer& timer) override;
   /// What a restart needs: history rows, frames, the peak and stop.
   nlohmann::json state() const;

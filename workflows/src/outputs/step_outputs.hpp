@@ -14,17 +14,26 @@
 
 namespace rockfdem::workflows {
 
+/// The stage an output step belongs to: its kind ("handoff" for the
+/// hand-off step) and its number, the same in history.csv, summary.json and
+/// report.md: 0 the implicit stage (whose hand-off step it is), then the
+/// explicit stages in order, as [[stages]] lists them after `insitu`.
+struct StageTag {
+  std::string kind;
+  int number = 0;
+};
+
 class StepOutputs {
  public:
   virtual ~StepOutputs() = default;
   /// An output step's history row of `stage`, before the run's checks of
   /// the step (so that a failing step has its row); `support_ratio`: the
   /// core's stiffness factor then (0 once removed).
-  virtual void record_rows(const fdem::Engine& e, const mesh::Mesh& m, const std::string& stage,
+  virtual void record_rows(const fdem::Engine& e, const mesh::Mesh& m, const StageTag& stage,
                            double support_ratio, const fdem::EnergyBalance& energy) = 0;
   /// The output step once the run's checks passed: the ParaView frame (if
   /// enabled) and the last good state.
-  virtual void record_frame(const fdem::Engine& e, const mesh::Mesh& m, const std::string& stage,
+  virtual void record_frame(const fdem::Engine& e, const mesh::Mesh& m, const StageTag& stage,
                             const fdem::EnergyBalance& energy, PhaseTimer& timer) = 0;
   /// Whether the lining ring is installed as lining (tunnels).
   virtual void set_lining_installed(bool) {}

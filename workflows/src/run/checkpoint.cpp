@@ -399,6 +399,7 @@ class RunStateCheck {
         {"installed", "an array of 0 and 1"},
         {"installed_stress", "an array of arrays of [xx, yy, xy] stresses"},
         {"kind", "a string"},
+        {"stage", "an integer"},
         {"steps", "an integer"},
         {"simulated_time", "a number"},
         {"max_steps", "an integer"},
@@ -521,6 +522,7 @@ class RunStateCheck {
   void stage_report(const json& r, const std::string& at) {
     object(r, at);
     string(member(r, at, "kind"), at + ".kind");
+    integer(member(r, at, "stage"), at + ".stage");
     changes(member(r, at, "changes"), at + ".changes");
     integer(member(r, at, "steps"), at + ".steps");
     number(member(r, at, "simulated_time"), at + ".simulated_time");

@@ -36,7 +36,8 @@ struct Checkpoint {
   std::string engine_state;  ///< Engine::save_state() bytes
 };
 
-constexpr std::uint32_t kCheckpointVersion = 1;
+/// 2: stage numbers (history.csv's stage column, the stage reports' "stage").
+constexpr std::uint32_t kCheckpointVersion = 2;
 
 /// FNV-1a 64 of the scene's canonical text (the key a checkpoint records).
 std::uint64_t scene_key(const Scene& scene);

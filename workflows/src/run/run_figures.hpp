@@ -62,6 +62,7 @@ struct StageChanges {
 /// One explicit stage as it ended ("fdem"."stages"[i]).
 struct StageRecord {
   std::string kind;
+  int number = 0;        ///< the stage's number (outputs/step_outputs.hpp, StageTag)
   StageChanges changes;  ///< the stage's own report of its changes
   long steps = 0;
   double simulated_time = 0;      ///< [s]

@@ -82,7 +82,7 @@ class SpecimenRun : StagedRun<SpecimenOutputs> {
     stages_.emplace(engine(), mesh_, stress_free_, scene_, ctx_, out_, no_key_points_, no_bolts_,
                     SupportMaterials{});
     stages_->model().platens = &out_.load();
-    resume_or_record(scene_.stages.front().kind);
+    resume_or_record({scene_.stages.front().kind, 0});
   }
 
   void run_stages() {

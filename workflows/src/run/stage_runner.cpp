@@ -175,7 +175,7 @@ void StageRunner::interrupted(const StageSpec& stage) {
                              "'; outputs and a checkpoint are written");
 }
 
-void StageRunner::record_output(const std::string& stage, PhaseTimer& timer) {
+void StageRunner::record_output(const StageTag& stage, PhaseTimer& timer) {
   // One ledger per output step (a sweep over every element) for the row,
   // the check and the last good state.
   const fdem::EnergyBalance energy = engine_.energy_balance();
@@ -259,10 +259,17 @@ void StageRunner::run(const StageSpec& stage) {
   report_.push_back(report_entry(stage, done, converged));
 }
 
+int StageRunner::number() const {
+  const mesh::ModelKind k = scene_.mesh.kind;
+  const bool implicit = k != mesh::ModelKind::kUcs && k != mesh::ModelKind::kBrazilian;
+  return int(cursor_.index) + (implicit ? 1 : 0);
+}
+
 StageRecord StageRunner::report_entry(const StageSpec& stage, const StageChanges& changes,
                                       bool converged) const {
   StageRecord r;
   r.kind = stage.kind;
+  r.number = number();
   r.changes = changes;
   r.steps = engine_.step_count() - cursor_.first;
   r.simulated_time = engine_.time() - cursor_.t0;

@@ -72,9 +72,9 @@ class StageRunner {
   bool step_until(const StageSpec& stage, const StopTest& stop = {});
   /// Whether an unstable opening ended the stages.
   bool stopped() const { return stopped_; }
-  /// One output step of `stage` (a kind, or "handoff"): history row, the
-  /// energy balance's check, then the frame (RunOutputs).
-  void record_output(const std::string& stage, PhaseTimer& timer);
+  /// One output step of `stage` (a kind, or "handoff" numbered 0): history
+  /// row, the energy balance's check, then the frame (RunOutputs).
+  void record_output(const StageTag& stage, PhaseTimer& timer);
   /// Simulated time since the stage began [s].
   double stage_time() const { return model_.engine.time() - cursor_.t0; }
   /// Explicit steps since the stage began.
@@ -99,7 +99,10 @@ class StageRunner {
   /// Writes a checkpoint and a last history row, then throws Interrupted.
   [[noreturn]] void interrupted(const StageSpec& stage);
   /// One output step of the stage (record_output).
-  void record_step(const StageSpec& stage) { record_output(stage.kind, *timer_); }
+  void record_step(const StageSpec& stage) { record_output({stage.kind, number()}, *timer_); }
+  /// The current stage's number (StageTag): after the implicit stage's 0
+  /// where the run has one (tunnels), from 0 where not (specimens).
+  int number() const;
   /// Whether the stage's stop criterion holds at this output: `reached`
   /// with a stop test, else ratio and settle held `hold` times.
   bool criterion_met(const StageSpec& stage, bool tested, bool reached);

@@ -30,7 +30,7 @@ void StagedRun<Outputs>::make_mesh() {
 }
 
 template <class Outputs>
-void StagedRun<Outputs>::resume_or_record(const std::string& first) {
+void StagedRun<Outputs>::resume_or_record(const StageTag& first) {
   if (restart_) {
     try {
       out_.restore(resume_.run.at("outputs"), run_dir_of(ctx_.restart));

@@ -37,7 +37,7 @@ class StagedRun {
   /// With stages_ made: a restart takes its checkpoint's outputs and stage
   /// cursor, a fresh run records its first output step (stage `first`);
   /// then the checkpoints are armed.
-  void resume_or_record(const std::string& first);
+  void resume_or_record(const StageTag& first);
   /// Runs `f`; a NumericalError in it is reported (fail).
   void reporting_failure(const std::function<void()>& f);
   /// summary.json of a run a NumericalError stopped, then the error again

@@ -93,6 +93,7 @@ StageChanges::Figure other_figure(const nlohmann::json& v) {
 
 nlohmann::json stage_json(const StageRecord& s) {
   return {{"kind", s.kind},
+          {"stage", s.number},
           {"changes", stage_changes_json(s.changes)},
           {"steps", s.steps},
           {"simulated_time", s.simulated_time},
@@ -122,6 +123,7 @@ std::optional<T> optional_at(const nlohmann::json& j, const char* key) {
 StageRecord stage_from_json(const nlohmann::json& j) {
   StageRecord s;
   s.kind = j.at("kind").get<std::string>();
+  s.number = j.at("stage").get<int>();
   s.changes = stage_changes_from_json(j.at("changes"));
   s.steps = j.at("steps").get<long>();
   s.simulated_time = j.at("simulated_time").get<double>();

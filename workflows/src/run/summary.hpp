@@ -35,7 +35,7 @@ struct OutputSettings;
 
 /// summary.json's "format_version": raised whenever a key is renamed,
 /// removed or changes meaning (docs/output-formats.md lists the changes).
-constexpr int kSummaryFormatVersion = 2;
+constexpr int kSummaryFormatVersion = 3;
 
 /// A checkpoint a run wrote or continued from, and its step.
 struct CheckpointMark {
@@ -70,7 +70,9 @@ class RunRecord {
   std::optional<FdemRecord> fdem;
   MonitorRecord monitors;
   std::vector<GroundReactionPoint> ground_reaction_curve;  ///< empty: not drawn (no key)
-  std::optional<std::vector<std::string>> history_stages;  ///< history.csv's stage names
+  /// The stages' kinds by number ("insitu" first): history.csv's stage
+  /// column and fdem.stages[].stage index it.
+  std::optional<std::vector<std::string>> history_stages;
   std::optional<BoltRecord> bolts;
   LiningRecord lining;                    ///< empty: no key
   std::optional<SupportVerdict> support;  ///< whether lining and bolts hold; none: no support

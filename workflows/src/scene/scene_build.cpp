@@ -867,6 +867,13 @@ void read_stages(const Reader& r, Scene& s) {
   }
   if (!s.bolts.segments.empty() && !at.bolted)
     r.fail("stages", "the scene has bolts but no stage of kind \"bolts\" installs them");
+  // The outputs number the implicit stage 0 and these from 1: a list that
+  // leaves it out would number its entries one above their stages[N].
+  if (!list->as_array()->empty() && r.text("stages[0].kind") != "insitu")
+    s.warnings.push_back(
+        "stages: the list does not begin with kind = \"insitu\"; the run still solves the "
+        "implicit stage and numbers it 0 in its outputs, so stages[N] is numbered N + 1 there: "
+        "list the implicit stage first");
 }
 
 mesh::ModelKind model_kind(const std::string& s) {
