@@ -178,6 +178,38 @@ TEST(Report, tunnel_run_writes_a_report_with_the_summary_figures) {
 // A run that fails (a forced dt of 2 ms inverts a triangle at step 3)
 // still leaves its report: status "failed" with the diagnostic, and the
 // key points of the last good state the summary reports.
+// report.md's continuum section gives each key point's radial displacement
+// of the FDEM and of its continuum counterpart: summary.json's
+// continuum_comparison [ux, uy] projected on the key point's inward
+// direction (monitors.<point>.inward), to the 0.01 mm the table prints.
+TEST(Report, continuum_counterpart_section_projects_the_summary_figures) {
+  const fs::path out = scratch("report-continuum");
+  const Result r = run("run " + kTestDir + "/grout_trigger.toml -q -j 1 -o " + out.string() +
+                       " --set stages[4].trigger_steps=20");
+  ASSERT_TRUE(r.code == 0 || r.code == 4) << r.output;  // 4: not at equilibrium
+  const nlohmann::json j = read_json(out / "summary.json");
+  const std::string md = read_text(out / "report.md");
+  const std::size_t at = md.find("## The continuum counterpart");
+  ASSERT_NE(at, std::string::npos) << md;
+  const std::string section = md.substr(at, md.find("\n## ", at + 1) - at);
+  const nlohmann::json& c = j.at("continuum_comparison").at("key_points");
+  for (const char* p :
+       {"vault", "left_shoulder", "right_shoulder", "left_wall", "right_wall", "invert"}) {
+    const nlohmann::json& in = j.at("monitors").at(p).at("inward");
+    const auto radial = [&](const char* key) {
+      const nlohmann::json& u = c.at(p).at(key);
+      return u[0].get<double>() * in[0].get<double>() + u[1].get<double>() * in[1].get<double>();
+    };
+    const auto cells = row_of(section, p);
+    ASSERT_EQ(cells.size(), 4u) << p << " in\n" << section;
+    EXPECT_NEAR(std::stod(cells[1]), radial("fdem_end_mm"), 0.006) << p;
+    EXPECT_NEAR(std::stod(cells[2]), radial("continuum_end_mm"), 0.006) << p;
+    EXPECT_NEAR(std::stod(cells[3]), radial("fdem_end_mm") - radial("continuum_end_mm"), 0.006)
+        << p;
+  }
+  fs::remove_all(out);
+}
+
 TEST(Report, failed_run_reports_its_last_good_state) {
   const fs::path out = scratch("report-failed");
   const Result r = run("run " + kTestDir +

@@ -176,6 +176,10 @@ void point_row(std::ostream& md, const std::string& name, double total, const Re
      << ") |\n";
 }
 
+// The key points in the tables' order: crown, arch, walls, floor.
+constexpr const char* kKeyPointOrder[] = {"vault",     "left_shoulder", "right_shoulder",
+                                          "left_wall", "right_wall",    "invert"};
+
 void key_points(std::ostream& md, const Scene& s, const MonitorRecord& mon, const ReportExtras& x) {
   const ReferenceSettings& ref = s.references;
   md << "\n## Key points and chords (end of run)\n\nRadial displacement: towards the opening "
@@ -189,8 +193,7 @@ void key_points(std::ostream& md, const Scene& s, const MonitorRecord& mon, cons
        << "; difference = computed - reference.";
   md << "\n\n| point | radial [mm] | at hand-off [mm] | since support [mm] | reference [mm] | "
         "difference [mm] |\n|---|---|---|---|---|---|\n";
-  for (const char* p :
-       {"vault", "left_shoulder", "right_shoulder", "left_wall", "right_wall", "invert"}) {
+  for (const char* p : kKeyPointOrder) {
     const auto k = mon.key_points.find(p);
     // A scene monitor of the same name stands in the summary instead.
     if (k != mon.key_points.end() && !mon.points.count(p))
@@ -392,6 +395,48 @@ void instruments(std::ostream& md, const RunRecord& r) {
   }
 }
 
+// Radial (towards the opening) of an [ux, uy] pair at key point k [mm].
+double radial_of(const std::array<double, 2>& u, const KeyPointFigures& k) {
+  return u[0] * k.inward_x + u[1] * k.inward_y;
+}
+
+// The FDEM against the continuum solution of the same sequence
+// (summary continuum_comparison): what fracture changed.
+void continuum(std::ostream& md, const RunRecord& r) {
+  if (!r.continuum_comparison) return;
+  const CounterpartComparison& c = *r.continuum_comparison;
+  md << "\n## The continuum counterpart\n\nThe same construction sequence solved as a "
+     << (c.model == "mohr_coulomb" ? "Mohr-Coulomb elasto-plastic" : "linear elastic")
+     << " continuum (no cracks) to alpha 0, against the FDEM at the end of the run. Radial "
+        "displacement from the in-situ state, towards the opening positive, at the key "
+        "point's vertex (without the boundary fit of the key-point table above). Stresses: "
+        "relative L2 difference over the "
+     << kComparisonRegion << ", " << fixed(100 * c.stress_rel_l2_end, 1) << "% at the end";
+  if (c.stress_rel_l2_handoff)
+    md << " (" << fixed(100 * *c.stress_rel_l2_handoff, 1) << "% at the hand-off)";
+  md << "; along the rays: continuum_profiles.csv.\n\n| point | FDEM [mm] | continuum [mm] | "
+        "FDEM - continuum [mm] |";
+  if (c.yield) md << " yielded depth [m] |";
+  md << "\n|---|---|---|---|" << (c.yield ? "---|" : "") << "\n";
+  for (const char* name : kKeyPointOrder) {
+    const auto at = c.key_points.find(name);
+    const auto fig = r.monitors.key_points.find(name);
+    if (at == c.key_points.end() || fig == r.monitors.key_points.end()) continue;
+    const CounterpartKeyPoint& k = at->second;
+    const double f = radial_of(k.fdem_end_mm, fig->second);
+    const double m = radial_of(k.continuum_end_mm, fig->second);
+    md << "| " << name << " | " << fixed(f, 2) << " | " << fixed(m, 2) << " | " << fixed(f - m, 2)
+       << " |";
+    if (c.yield) {
+      const auto d = c.yield->depth_m.find(name);
+      md << " " << (d == c.yield->depth_m.end() ? "-" : fixed(d->second, 2)) << " |";
+    }
+    md << "\n";
+  }
+  if (c.yield)
+    md << "\nYielded triangles in the continuum: " << value_text(long(c.yield->triangles)) << ".\n";
+}
+
 // The post-peak continuum's verdict (insitu.continuum_post_peak).
 void post_peak(std::ostream& md, const std::optional<PostPeakCounterpart>& p) {
   if (!p) return;
@@ -434,6 +479,7 @@ std::string report_markdown(const Scene& scene, const RunRecord& record,
   lining(md, record.lining);
   broken_zone(md, record.state.broken, record.broken_zone);
   instruments(md, record);
+  continuum(md, record);
   post_peak(md, record.continuum_post_peak);
   pictures(md, extras);
   return printable(md.str(), true);  // any scene text above (group names, paths) too
