@@ -27,6 +27,8 @@ struct Picture {
   double variance = 0;  ///< of the grey level over all pixels
   int n_black = 0;      ///< pixels with every channel below 40 (cracks, text)
   int n_magenta = 0;    ///< pixels with red and blue above 200, green below 60
+  int n_green = 0;      ///< the instruments' dark green: red, blue below 50, green 80-150
+  int n_white = 0;      ///< pixels with every channel above 235
 };
 
 Picture read_png(const std::string& path) {
@@ -53,6 +55,8 @@ Picture read_png(const std::string& path) {
       rgb[c] = v;
     }
     p.n_magenta += rgb[0] > 200 && rgb[1] < 60 && rgb[2] > 200;
+    p.n_green += rgb[0] < 50 && rgb[1] >= 80 && rgb[1] <= 150 && rgb[2] < 50;
+    p.n_white += rgb[0] > 235 && rgb[1] > 235 && rgb[2] > 235;
     sum += grey;
     sum2 += grey * grey;
     p.n_black += black;
@@ -307,6 +311,38 @@ TEST(Plot, mesh_png_of_an_uncracked_int_field_renders) {
   const Picture p = read_png(dir.file("zones.png"));
   EXPECT_EQ(p.width, 400);
   EXPECT_GT(p.variance, 10.0);
+}
+
+// The overlay's instruments are drawn in their dark green (an extensometer
+// line 0.8 of the square's width, 3 px wide: about 480 px at 400 x 300),
+// and its notes in a white box; without either, neither colour appears.
+TEST(Plot, overlay_draws_instruments_in_green_and_notes_on_white) {
+  SKIP_UNLESS_RENDERING();
+  VtkGrid g = cracked_square(6);
+  g.lines.clear();
+  g.cell_arrays.clear();
+  std::vector<std::int32_t> zone(g.n_triangles(), 1);
+  g.cell_arrays.push_back(scalar_array("zone", zone));
+  MeshOverlay bare;
+  bare.categories = {{1, "rock"}};
+  MeshOverlay full = bare;
+  full.instrument_segments.push_back({0.1, 0.6, 0.9, 0.6});
+  full.instrument_markers.push_back({0.9, 0.6, "ext"});
+  full.notes = {"Box 80 x 80 m: rollers in the explicit stages",
+                "Stages: 0 insitu, 1 remove_core, 2 equilibrium"};
+  const TempDir dir;
+  std::string why;
+  ASSERT_TRUE(
+      render_mesh_png(g, "zone", 0, dir.file("bare.png"), "Bare", 400, 300, &why, nullptr, &bare))
+      << why;
+  ASSERT_TRUE(
+      render_mesh_png(g, "zone", 0, dir.file("full.png"), "Full", 400, 300, &why, nullptr, &full))
+      << why;
+  const Picture b = read_png(dir.file("bare.png")), f = read_png(dir.file("full.png"));
+  EXPECT_LT(b.n_green, 20);
+  EXPECT_GT(f.n_green, 250) << "bare " << b.n_green;
+  // The notes' box: about 4,000 px of (near) white between its letters.
+  EXPECT_GT(f.n_white, b.n_white + 2000) << f.n_white << " against " << b.n_white;
 }
 
 }  // namespace

@@ -30,8 +30,13 @@ vtkSmartPointer<vtkActor> actor_of(vtkPolyData* poly, double r, double g, double
   return actor;
 }
 
+// The colours of the overlay's two kinds of things drawn.
+constexpr double kBoltRgb[3] = {0.55, 0.0, 0.0};
+constexpr double kKeyPointRgb[3] = {0.0, 0.2, 0.8};
+constexpr double kInstrumentRgb[3] = {0.0, 0.45, 0.1};
+
 vtkSmartPointer<vtkActor> segment_actor(const std::vector<MeshOverlay::Segment>& segments,
-                                        double lift) {
+                                        double lift, const double* rgb) {
   vtkNew<vtkPoints> points;
   vtkNew<vtkCellArray> lines;
   for (const MeshOverlay::Segment& s : segments) {
@@ -42,13 +47,13 @@ vtkSmartPointer<vtkActor> segment_actor(const std::vector<MeshOverlay::Segment>&
   vtkNew<vtkPolyData> poly;
   poly->SetPoints(points);
   poly->SetLines(lines);
-  auto actor = actor_of(poly, 0.55, 0.0, 0.0);
+  auto actor = actor_of(poly, rgb[0], rgb[1], rgb[2]);
   actor->GetProperty()->SetLineWidth(3.0);
   return actor;
 }
 
-vtkSmartPointer<vtkActor> marker_actor(const std::vector<MeshOverlay::Marker>& markers,
-                                       double lift) {
+vtkSmartPointer<vtkActor> marker_actor(const std::vector<MeshOverlay::Marker>& markers, double lift,
+                                       const double* rgb) {
   vtkNew<vtkPoints> points;
   vtkNew<vtkCellArray> verts;
   for (const MeshOverlay::Marker& m : markers) {
@@ -58,23 +63,49 @@ vtkSmartPointer<vtkActor> marker_actor(const std::vector<MeshOverlay::Marker>& m
   vtkNew<vtkPolyData> poly;
   poly->SetPoints(points);
   poly->SetVerts(verts);
-  auto actor = actor_of(poly, 0.0, 0.2, 0.8);
+  auto actor = actor_of(poly, rgb[0], rgb[1], rgb[2]);
   actor->GetProperty()->SetPointSize(11.0);
   actor->GetProperty()->RenderPointsAsSpheresOn();
   return actor;
 }
 
 // A marker's label, placed beside it in world coordinates.
-vtkSmartPointer<vtkTextActor> label_actor(const MeshOverlay::Marker& m, double lift) {
+vtkSmartPointer<vtkTextActor> label_actor(const MeshOverlay::Marker& m, double lift,
+                                          const double* rgb) {
   auto text = vtkSmartPointer<vtkTextActor>::New();
   text->SetInput(m.label.c_str());
   text->GetPositionCoordinate()->SetCoordinateSystemToWorld();
   text->GetPositionCoordinate()->SetValue(m.x, m.y, 2 * lift);
   vtkTextProperty* p = text->GetTextProperty();
   p->SetFontSize(15);
-  p->SetColor(0.0, 0.1, 0.5);
+  p->SetColor(0.6 * rgb[0], 0.6 * rgb[1], 0.6 * rgb[2]);
   p->BoldOn();
   return text;
+}
+
+// The notes as one block of text on a white box at the lower left.
+vtkSmartPointer<vtkTextActor> notes_actor(const std::vector<std::string>& notes) {
+  std::string text;
+  for (const std::string& n : notes) text += (text.empty() ? "" : "\n") + n;
+  auto actor = vtkSmartPointer<vtkTextActor>::New();
+  actor->SetInput(text.c_str());
+  actor->GetPositionCoordinate()->SetCoordinateSystemToNormalizedViewport();
+  actor->GetPositionCoordinate()->SetValue(0.01, 0.01);
+  vtkTextProperty* p = actor->GetTextProperty();
+  p->SetFontSize(13);
+  p->SetColor(0.0, 0.0, 0.0);
+  p->SetBackgroundColor(1.0, 1.0, 1.0);
+  p->SetBackgroundOpacity(0.85);
+  p->SetJustificationToLeft();
+  p->SetVerticalJustificationToBottom();
+  return actor;
+}
+
+void add_points(vtkRenderer* renderer, const std::vector<MeshOverlay::Marker>& markers, double lift,
+                const double* rgb) {
+  if (markers.empty()) return;
+  renderer->AddActor(marker_actor(markers, lift, rgb));
+  for (const MeshOverlay::Marker& m : markers) renderer->AddActor2D(label_actor(m, lift, rgb));
 }
 
 }  // namespace
@@ -95,10 +126,13 @@ vtkSmartPointer<vtkLookupTable> category_colours(
 }
 
 void add_overlay(vtkRenderer* renderer, const MeshOverlay& overlay, double lift) {
-  if (!overlay.segments.empty()) renderer->AddActor(segment_actor(overlay.segments, lift));
-  if (overlay.markers.empty()) return;
-  renderer->AddActor(marker_actor(overlay.markers, lift));
-  for (const MeshOverlay::Marker& m : overlay.markers) renderer->AddActor2D(label_actor(m, lift));
+  if (!overlay.segments.empty())
+    renderer->AddActor(segment_actor(overlay.segments, lift, kBoltRgb));
+  if (!overlay.instrument_segments.empty())
+    renderer->AddActor(segment_actor(overlay.instrument_segments, lift, kInstrumentRgb));
+  add_points(renderer, overlay.markers, lift, kKeyPointRgb);
+  add_points(renderer, overlay.instrument_markers, lift, kInstrumentRgb);
+  if (!overlay.notes.empty()) renderer->AddActor2D(notes_actor(overlay.notes));
 }
 
 }  // namespace rockfdem::plots

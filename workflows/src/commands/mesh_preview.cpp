@@ -1,8 +1,11 @@
 #include "commands/mesh_preview.hpp"
 
 #include <algorithm>
+#include <cstdio>
 #include <iostream>
 #include <optional>
+#include <string>
+#include <vector>
 
 #include "rockfdem/coupling/mesh_grid.hpp"
 #include "rockfdem/mesh/msh_io.hpp"
@@ -46,6 +49,80 @@ plots::MeshView window(const mesh::OpeningBoundary& b, const Scene& scene) {
   return v;
 }
 
+// %g of a value in a unit (MPa from Pa: factor 1e-6).
+std::string num(double v, double factor = 1) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%g", v * factor);
+  return text;
+}
+
+// The scene's monitors (labelled points) and extensometers (head to the
+// deepest anchor, from a key point along its outward normal or as given).
+void add_instruments(const Scene& scene, const std::vector<mesh::KeyPoint>& key_points,
+                     plots::MeshOverlay& overlay) {
+  for (const MonitorSpec& m : scene.monitors)
+    overlay.instrument_markers.push_back({m.x, m.y, m.name});
+  for (const ExtensometerSpec& x : scene.extensometers) {
+    double hx = x.head_x, hy = x.head_y, dx = x.dir_x, dy = x.dir_y;
+    if (!x.from.empty()) {
+      const std::string from = x.from == "crown" ? "vault" : x.from;
+      const auto k = std::find_if(key_points.begin(), key_points.end(),
+                                  [&](const mesh::KeyPoint& p) { return p.name == from; });
+      if (k == key_points.end()) continue;
+      hx = k->x, hy = k->y, dx = -k->inward_x, dy = -k->inward_y;
+    }
+    overlay.instrument_segments.push_back({hx, hy, hx + x.length * dx, hy + x.length * dy});
+    overlay.instrument_markers.push_back({hx + x.length * dx, hy + x.length * dy, x.name});
+  }
+}
+
+// A stage as the notes list it: its number, kind and what bounds it.
+std::string stage_note(int number, const StageSpec& st) {
+  std::string t = std::to_string(number) + " " + st.kind;
+  if (st.kind == "soften") t += " to alpha " + num(st.alpha);
+  if (!st.triggers.empty()) t += " (" + st.triggers.front() + " " + num(st.trigger_value) + ")";
+  if (st.max_steps > 0) t += " (at most " + std::to_string(st.max_steps) + " steps)";
+  return t;
+}
+
+// What the picture cannot draw: the box's loads and supports, the in-situ
+// stress and the stages, numbered as the run's outputs number them.
+std::vector<std::string> tunnel_notes(const Scene& scene) {
+  const InsituSettings& in = scene.insitu;
+  std::vector<std::string> notes;
+  notes.push_back((scene.mesh.kind == mesh::ModelKind::kTunnel
+                       ? "Box " + num(scene.mesh.domain.width) + " x " +
+                             num(scene.mesh.domain.height) + " m (beyond the picture): "
+                       : std::string("Outer boundary: ")) +
+                  "in-situ tractions in the implicit stage,");
+  notes.push_back(std::string("  ") +
+                  (in.rollers ? "rollers at the hand-off's normal displacement"
+                              : "the in-situ tractions alone") +
+                  " in the explicit stages");
+  std::string stress = "In-situ stress (compression): sigma_H " + num(in.sigma_h, 1e-6) +
+                       " MPa, sigma_v " + num(in.sigma_v, 1e-6) + " MPa";
+  if (in.angle_deg != 0) stress += ", sigma_H at " + num(in.angle_deg) + " deg from x";
+  if (in.unit_weight > 0) stress += ", unit weight " + num(in.unit_weight, 1e-3) + " kN/m^3";
+  if (scene.engine.gravity > 0) stress += "; gravity " + num(scene.engine.gravity) + " m/s^2";
+  notes.push_back(stress);
+  std::string alphas;
+  for (double a : in.alpha) alphas += (alphas.empty() ? "" : ", ") + num(a);
+  std::string line = "Stages: 0 insitu (alpha " + alphas + ")";
+  constexpr std::size_t kListed = 12;  // a long list is summarised
+  for (std::size_t i = 0; i < scene.stages.size() && i < kListed; ++i) {
+    const std::string next = stage_note(int(i) + 1, scene.stages[i]);
+    if (line.size() + next.size() > 90)
+      notes.push_back(line + ","), line = "  ";
+    else
+      line += ", ";
+    line += next;
+  }
+  if (scene.stages.size() > kListed)
+    line += " and " + std::to_string(scene.stages.size() - kListed) + " more";
+  notes.push_back(line);
+  return notes;
+}
+
 }  // namespace
 
 void write_mesh_preview(const Scene& scene, const mesh::Mesh& m, const std::string& dir,
@@ -58,15 +135,18 @@ void write_mesh_preview(const Scene& scene, const mesh::Mesh& m, const std::stri
   std::optional<plots::MeshView> view;
   if (const auto opening = mesh::find_opening(m)) {
     const bool shaped = scene.mesh.kind == mesh::ModelKind::kTunnel;
-    for (const mesh::KeyPoint& p :
-         mesh::opening_key_points(m, *opening, shaped ? &scene.mesh.tunnel : nullptr))
-      overlay.markers.push_back({p.x, p.y, p.name});
+    const std::vector<mesh::KeyPoint> key_points =
+        mesh::opening_key_points(m, *opening, shaped ? &scene.mesh.tunnel : nullptr);
+    for (const mesh::KeyPoint& p : key_points) overlay.markers.push_back({p.x, p.y, p.name});
+    add_instruments(scene, key_points, overlay);
+    overlay.notes = tunnel_notes(scene);
     view = window(*opening, scene);
   }
   std::string why;
   const bool drawn =
       plots::render_mesh_png(grid, "region", 0, output_path(dir, "preview.png"),
-                             "Preview: regions, bolts and cables (dark red), key points (blue)",
+                             "Preview: regions, bolts and cables (dark red), key points (blue), "
+                             "instruments (green)",
                              1000, 800, &why, view ? &*view : nullptr, &overlay);
   if (drawn) return;
   summary.skipped.push_back("plot preview.png: " + why);

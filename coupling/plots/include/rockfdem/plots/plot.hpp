@@ -131,8 +131,14 @@ struct MeshOverlay {
     double x = 0, y = 0;  ///< [m]
     std::string label;
   };
-  std::vector<Segment> segments;
-  std::vector<Marker> markers;
+  std::vector<Segment> segments;  ///< bolts and cables (dark red)
+  std::vector<Marker> markers;    ///< key points (blue)
+  /// Instruments (green): extensometer lines and labelled monitor points.
+  std::vector<Segment> instrument_segments;
+  std::vector<Marker> instrument_markers;
+  /// Lines of text in a box at the picture's lower left (what the picture
+  /// cannot show as geometry: loads, boundary conditions, stages).
+  std::vector<std::string> notes;
   std::vector<std::pair<int, std::string>> categories;  ///< code, name; empty: a colour scale
 };
 
