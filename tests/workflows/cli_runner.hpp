@@ -72,6 +72,21 @@ inline std::string read_text(const std::filesystem::path& p) {
   return s.str();
 }
 
+/// The rows of a CSV file's text of numbers, its header line left out.
+inline std::vector<std::vector<double>> numeric_rows(const std::string& csv) {
+  std::istringstream in(csv);
+  std::string line;
+  std::getline(in, line);
+  std::vector<std::vector<double>> rows;
+  while (std::getline(in, line)) {
+    std::vector<double> v;
+    std::istringstream cells(line);
+    for (std::string c; std::getline(cells, c, ',');) v.push_back(std::stod(c));
+    rows.push_back(std::move(v));
+  }
+  return rows;
+}
+
 const std::string kTestDir = ROCKFDEM_TEST_DIR;
 /// The seed tunnel, the shipped scene most tests vary with --set.
 const std::string kSeedScene = std::string(ROCKFDEM_SOURCE_DIR) + "/scenes/tunnel-seed.toml";

@@ -7,7 +7,6 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
-#include <sstream>
 #include <string>
 #include <vector>
 
@@ -38,16 +37,9 @@ struct Segment {
 };
 
 std::vector<Segment> read_segments(const fs::path& p) {
-  std::istringstream in(rt::read_text(p));
-  std::string line;
-  std::getline(in, line);
   std::vector<Segment> out;
-  while (std::getline(in, line)) {
-    std::vector<double> v;
-    std::istringstream cells(line);
-    for (std::string c; std::getline(cells, c, ',');) v.push_back(std::stod(c));
+  for (const std::vector<double>& v : rt::numeric_rows(rt::read_text(p)))
     out.push_back({v.at(5), v.at(6), v.at(7) * 1e3, v.at(8) * 1e3, v.at(11), v.at(12) != 0});
-  }
   return out;
 }
 

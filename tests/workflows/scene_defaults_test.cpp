@@ -87,7 +87,10 @@ void add_material(std::map<std::string, Number>& f, mesh::Zone name) {
   f[p + "residual_friction_angle"] = [=](const Scene& s) {
     return mat(s, name).residual_friction_angle;
   };
-  if (name == mesh::kLining) return;  // an elastic liner: no crack keys
+  if (name == mesh::kLining) {  // an elastic liner: no crack keys, its section's
+    f[p + "steel_young"] = [=](const Scene& s) { return mat(s, name).section.steel_young; };
+    return;
+  }
   f[p + "cohesion"] = [=](const Scene& s) { return mat(s, name).cohesion; };
   f[p + "fracture_energy_I"] = [=](const Scene& s) { return mat(s, name).fracture_energy_I; };
   f[p + "fracture_energy_II"] = [=](const Scene& s) { return mat(s, name).fracture_energy_II; };
@@ -208,6 +211,9 @@ std::map<std::string, Text> text_fields() {
   f["insitu.boundary"] = [](const Scene& s) {
     return s.insitu.kirsch_boundary ? "kirsch" : "far_field";
   };
+  f["materials.lining.section"] = [](const Scene& s) {
+    return s.materials.at(mesh::kLining).section.kind;
+  };
   f["insitu.rollers"] = [](const Scene& s) { return yes(s.insitu.rollers); };
   f["insitu.continuum_post_peak"] = [](const Scene& s) {
     return yes(s.insitu.continuum_post_peak);
@@ -267,7 +273,10 @@ const std::set<std::string> kElsewhere = {
     "tunnel.invert_thickness", "materials.invert.density", "materials.invert.young",
     "materials.invert.poisson", "materials.invert.friction_angle",
     "materials.invert.residual_friction_angle", "materials.invert.tensile_strength",
-    "materials.invert.compressive_strength",
+    "materials.invert.compressive_strength", "materials.invert.section",
+    "materials.invert.steel_young", "materials.invert.steel_yield_strength",
+    "materials.invert.bar_area", "materials.invert.bar_cover", "materials.invert.set_area",
+    "materials.invert.set_inertia", "materials.invert.set_depth", "materials.invert.set_spacing",
     // With gsi alone: RockMass.a_scene_with_gsi_runs_on_the_rock_mass.
     "materials.rock.disturbance"};
 
@@ -399,8 +408,36 @@ TEST(SceneDefaults, a_floor_part_takes_the_rings_values) {
   EXPECT_EQ(i.residual_friction_angle, 38);  // its own friction angle, as every material's
   EXPECT_EQ(i.tensile_strength, 2e6);
   EXPECT_EQ(i.compressive_strength, 25e6);
-  for (const char* key : {"density", "young", "poisson", "friction_angle", "tensile_strength",
-                          "compressive_strength"})
+  for (const char* key :
+       {"density", "young", "poisson", "friction_angle", "tensile_strength", "compressive_strength",
+        "section", "steel_young", "steel_yield_strength", "bar_area", "bar_cover", "set_area",
+        "set_inertia", "set_depth", "set_spacing"})
     EXPECT_EQ(spec_of(std::string("materials.invert.") + key).default_text,
               std::string("materials.lining.") + key);
+  EXPECT_EQ(i.section.kind, "plain");
+  EXPECT_EQ(i.section.steel_young, l.section.steel_young);
+}
+
+// The floor part's section follows the lining's, key by key: a reinforced
+// ring's invert is reinforced with its bars unless it says otherwise.
+TEST(SceneDefaults, a_floor_part_takes_the_rings_section) {
+  const std::string ring =
+      "[tunnel]\nlining_thickness = 0.3\n"
+      "[materials.rock]\nyoung = 5e9\npoisson = 0.25\n"
+      "[materials.lining]\nyoung = 20e9\npoisson = 0.2\ncompressive_strength = 25e6\n"
+      "section = \"reinforced\"\nsteel_young = 195e9\nsteel_yield_strength = 500e6\n"
+      "bar_area = 1.131e-3\nbar_cover = 0.05\n"
+      "[insitu]\nsigma_h = 1e6\nsigma_v = 1e6\n"
+      "[materials.invert]\n";
+  const Scene h = parse_scene(ring, "invert.toml", ".");
+  ASSERT_TRUE(h.invert);
+  const LiningSectionSpec& i = h.invert->section;
+  EXPECT_EQ(i.kind, "reinforced");
+  EXPECT_EQ(i.steel_young, 195e9);
+  EXPECT_EQ(i.steel_yield_strength, 500e6);
+  EXPECT_EQ(i.bar_area, 1.131e-3);
+  EXPECT_EQ(i.bar_cover, 0.05);
+  const Scene p = parse_scene(ring + "section = \"plain\"\n", "plain_invert.toml", ".");
+  EXPECT_EQ(p.invert->section.kind, "plain");
+  EXPECT_EQ(p.materials.at(mesh::kLining).section.kind, "reinforced");
 }

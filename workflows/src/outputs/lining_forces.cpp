@@ -189,7 +189,7 @@ std::vector<std::array<double, 2>> capacity_envelope(double thickness, const Sho
 }
 
 std::string lining_csv(long step, const LiningGeometry& g, const std::vector<SectionForces>& f,
-                       const std::vector<ShotcreteStrength>* strengths) {
+                       const std::vector<double>* safety_factors) {
   std::string csv =
       "step,segment,angle_deg,arc_m,x_m,y_m,thickness_m,thrust_kN_per_m,moment_kNm_per_m,"
       "shear_kN_per_m,utilisation,safety_factor,corner\n";
@@ -200,8 +200,8 @@ std::string lining_csv(long step, const LiningGeometry& g, const std::vector<Sec
                   s.angle_deg, s.arc_m, s.x, s.y, s.thickness, f[i].thrust / 1e3, f[i].moment / 1e3,
                   f[i].shear / 1e3);
     csv += line;
-    if (strengths) {
-      const double fs = safety_factor(f[i], s.thickness, (*strengths)[i]);
+    if (safety_factors) {
+      const double fs = (*safety_factors)[i];
       std::snprintf(line, sizeof line, ",%.6g,%.6g", 1 / fs, fs);
       csv += line;
     } else {

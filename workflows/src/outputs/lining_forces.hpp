@@ -85,9 +85,9 @@ std::vector<std::array<double, 2>> capacity_envelope(double thickness, const Sho
                                                      double fs);
 
 /// lining.csv's text: a header and one row per segment, forces in kN/m and
-/// kNm/m; `strengths` (one per segment) null: no utilisation or safety
-/// factor (empty cells).
+/// kNm/m; `safety_factors` (one per segment, of its section) null: no
+/// utilisation or safety factor (empty cells).
 std::string lining_csv(long step, const LiningGeometry& g, const std::vector<SectionForces>& f,
-                       const std::vector<ShotcreteStrength>* strengths);
+                       const std::vector<double>* safety_factors);
 
 }  // namespace rockfdem::workflows

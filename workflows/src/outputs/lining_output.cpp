@@ -29,30 +29,80 @@ double median_thickness(const LiningGeometry& g, const std::vector<char>& in_inv
   return t[t.size() / 2];
 }
 
+// What the check is, for summary.json's "capacity": the plain ring's
+// criterion, or each part's section.
+std::string capacity_text(const RingSections& r) {
+  const auto text = [](const LiningSection& s) -> std::string {
+    switch (s.kind) {
+      case SectionKind::kPlain:
+        return "plain shotcrete section, elastic: N/t +- 6M/t^2 within [-tensile, compressive] "
+               "strength";
+      case SectionKind::kReinforced:
+        return "reinforced section: M-N interaction diagram, EN 1992-1-1 rectangular stress "
+               "block, two symmetric layers of bars, steel elastic-perfectly plastic";
+      case SectionKind::kSteelSets:
+        return "steel sets in shotcrete, composite: N and M shared by EA and EI, each part within "
+               "its elastic limit (Carranza-Torres and Diederichs 2009)";
+    }
+    return "?";
+  };
+  if (!r.invert || r.invert->kind == r.lining.kind) return text(r.lining);
+  return "arch and walls: " + text(r.lining) + "; invert: " + text(*r.invert);
+}
+
+// The plot title's words for a part's section at thickness t (short: the
+// title is one line).
+std::string section_caption(const LiningSection& s, double t) {
+  char line[160];
+  if (s.kind == SectionKind::kReinforced)
+    std::snprintf(line, sizeof line,
+                  "reinforced t = %.3g m, fck %.3g MPa, 2 x %.4g mm^2/m, fy %.3g MPa", t,
+                  s.concrete.compressive / 1e6, s.bar_area * 1e6, s.steel_yield / 1e6);
+  else if (s.kind == SectionKind::kSteelSets)
+    std::snprintf(line, sizeof line,
+                  "steel sets t = %.3g m, fc %.3g MPa, sets at %.3g m, fy %.3g MPa", t,
+                  s.concrete.compressive / 1e6, s.set_spacing, s.steel_yield / 1e6);
+  else
+    std::snprintf(line, sizeof line, "t = %.3g m, fc = %.3g MPa, ft = %.3g MPa", t,
+                  s.concrete.compressive / 1e6, s.concrete.tensile / 1e6);
+  return line;
+}
+
 }  // namespace
 
-std::optional<RingStrength> ring_strength(const Scene& scene) {
+std::optional<RingSections> ring_sections(const Scene& scene) {
   const auto it = scene.materials.find(mesh::kLining);
   if (it == scene.materials.end() || !(it->second.compressive_strength > 0)) return std::nullopt;
-  RingStrength r;
-  r.lining = {it->second.compressive_strength, it->second.tensile_strength};
-  if (scene.invert)
-    r.invert =
-        ShotcreteStrength{scene.invert->compressive_strength, scene.invert->tensile_strength};
+  RingSections r;
+  r.lining = lining_section(it->second);
+  if (scene.invert) r.invert = lining_section(*scene.invert);
   return r;
 }
 
 LiningOutput::LiningOutput(const mesh::Mesh& m, double invert_top,
-                           std::optional<RingStrength> strength, std::string dir)
-    : strength_(strength), dir_(std::move(dir)) {
+                           std::optional<RingSections> sections, std::string dir)
+    : sections_(std::move(sections)), dir_(std::move(dir)) {
   if (auto g = lining_geometry(m)) geometry_ = std::move(*g);
   for (std::size_t t = 0; t < m.n_triangles(); ++t)
     if (m.zone[t] == mesh::kLining) triangles_.push_back(int(t));
-  for (const LiningSegment& s : geometry_.segments) {
-    const bool invert = s.y < invert_top;
-    segment_invert_.push_back(invert);
-    if (strength_) segment_strength_.push_back(invert ? *strength_->invert : strength_->lining);
-  }
+  for (const LiningSegment& s : geometry_.segments) segment_invert_.push_back(s.y < invert_top);
+}
+
+const LiningSection& LiningOutput::section_of(std::size_t i) const {
+  return segment_invert_[i] ? *sections_->invert : sections_->lining;
+}
+
+std::vector<double> LiningOutput::safety_factors(const std::vector<SectionForces>& f) const {
+  std::vector<double> fs;
+  for (std::size_t i = 0; i < f.size(); ++i)
+    fs.push_back(section_safety_factor(f[i], geometry_.segments[i].thickness, section_of(i)));
+  return fs;
+}
+
+std::string LiningOutput::csv(long step, const std::vector<SectionForces>& f) const {
+  if (!sections_) return lining_csv(step, geometry_, f, nullptr);
+  const std::vector<double> fs = safety_factors(f);
+  return lining_csv(step, geometry_, f, &fs);
 }
 
 bool LiningOutput::installed(const fdem::Engine& e) const {
@@ -73,9 +123,7 @@ void LiningOutput::at_output_step(const OutputStep& step, std::vector<double>&) 
   if (!installed_ || !installed(e)) return;
   char name[40];
   std::snprintf(name, sizeof name, "lining_%06ld.csv", e.step_count());
-  coupling::atomic_write_text(
-      output_path(dir_, name),
-      lining_csv(e.step_count(), geometry_, forces(e), strength_ ? &segment_strength_ : nullptr));
+  coupling::atomic_write_text(output_path(dir_, name), csv(e.step_count(), forces(e)));
 }
 
 LiningForceFigures LiningOutput::finish(const fdem::Engine& e, const std::string& dir,
@@ -87,9 +135,7 @@ LiningForceFigures LiningOutput::finish(const fdem::Engine& e, const std::string
 
 LiningForceFigures LiningOutput::figures(const fdem::Engine& e, const std::string& dir) {
   last_ = forces(e);
-  coupling::atomic_write_text(
-      output_path(dir, "lining.csv"),
-      lining_csv(e.step_count(), geometry_, last_, strength_ ? &segment_strength_ : nullptr));
+  coupling::atomic_write_text(output_path(dir, "lining.csv"), csv(e.step_count(), last_));
   const auto angle = [&](std::size_t i) { return geometry_.segments[i].angle_deg; };
   const std::size_t n_max = arg_max(last_, [](const SectionForces& f) { return f.thrust; });
   const std::size_t n_min = arg_max(last_, [](const SectionForces& f) { return -f.thrust; });
@@ -118,23 +164,22 @@ LiningForceFigures LiningOutput::figures(const fdem::Engine& e, const std::strin
 }
 
 void LiningOutput::check_capacity(LiningForceFigures& f) const {
-  if (!strength_) {
+  if (!sections_) {
     f.capacity = "not checked: materials.lining.compressive_strength not given";
     return;
   }
-  std::vector<double> fs;
-  for (std::size_t i = 0; i < last_.size(); ++i)
-    fs.push_back(safety_factor(last_[i], geometry_.segments[i].thickness, segment_strength_[i]));
+  const std::vector<double> fs = safety_factors(last_);
   const std::size_t i = std::size_t(std::min_element(fs.begin(), fs.end()) - fs.begin());
   const LiningSegment& s = geometry_.segments[i];
-  f.capacity =
-      "plain shotcrete section, elastic: N/t +- 6M/t^2 within [-tensile, compressive] strength";
+  f.capacity = capacity_text(*sections_);
   LiningCapacityFigures c;
-  c.compressive_strength_Pa = strength_->lining.compressive;
-  c.tensile_strength_Pa = strength_->lining.tensile;
-  if (strength_->invert) {
-    c.invert_compressive_strength_Pa = strength_->invert->compressive;
-    c.invert_tensile_strength_Pa = strength_->invert->tensile;
+  c.section = section_name(sections_->lining.kind);
+  c.compressive_strength_Pa = sections_->lining.concrete.compressive;
+  c.tensile_strength_Pa = sections_->lining.concrete.tensile;
+  if (sections_->invert) {
+    c.invert_section = section_name(sections_->invert->kind);
+    c.invert_compressive_strength_Pa = sections_->invert->concrete.compressive;
+    c.invert_tensile_strength_Pa = sections_->invert->concrete.tensile;
   }
   c.min_safety_factor_in_invert = segment_invert_[i];
   // An unloaded ring has no finite factor: JSON null.
@@ -164,21 +209,31 @@ void LiningOutput::plots(PlotWriter& plots) const {
                 {"moment M [kNm/m]", {{"M", angle, m}}, {}},
                 {"shear V [kN/m]", {{"V", angle, v}}, {}}},
                1000);
-  if (!strength_) return;
+  if (sections_) capacity_plot(plots, m, n);
+}
+
+// Each part's diagram at its median thickness, for safety factors 1 and 1.5
+// (the radial factor: the diagram shrunk about the origin), with the
+// part's segments' (M, N) [kNm/m, kN/m].
+void LiningOutput::capacity_plot(PlotWriter& plots, const std::vector<double>& m,
+                                 const std::vector<double>& n) const {
   std::vector<plots::PlotSeries> envelopes, points;
-  std::string title = "Lining capacity (plain sections, elastic)";
+  const bool all_plain = sections_->lining.kind == SectionKind::kPlain &&
+                         (!sections_->invert || sections_->invert->kind == SectionKind::kPlain);
+  std::string title = all_plain ? "Lining capacity (plain sections, elastic)" : "Lining capacity";
   for (const bool invert : {false, true}) {
-    if (invert && !strength_->invert) break;
-    const ShotcreteStrength& st = invert ? *strength_->invert : strength_->lining;
-    const std::string part = strength_->invert ? (invert ? "invert" : "arch and walls") : "ring";
+    if (invert && !sections_->invert) break;
+    const LiningSection& sec = invert ? *sections_->invert : sections_->lining;
+    const std::string part = sections_->invert ? (invert ? "invert" : "arch and walls") : "ring";
     const double t = median_thickness(geometry_, segment_invert_, invert);
+    const std::vector<MNPoint> diagram = capacity_diagram(sec, t);
     for (double fs : {1.0, 1.5}) {
       char name[120];
       std::snprintf(name, sizeof name, "%s, safety factor %.1f", part.c_str(), fs);
       plots::PlotSeries c{name, {}, {}};
-      for (const auto& p : capacity_envelope(t, st, fs)) {
-        c.x.push_back(p[0] / 1e3);
-        c.y.push_back(p[1] / 1e3);
+      for (const MNPoint& p : diagram) {
+        c.x.push_back(p[0] / fs / 1e3);
+        c.y.push_back(p[1] / fs / 1e3);
       }
       envelopes.push_back(std::move(c));
     }
@@ -189,10 +244,7 @@ void LiningOutput::plots(PlotWriter& plots) const {
         pts.y.push_back(n[i]);
       }
     points.push_back(std::move(pts));
-    char line[160];
-    std::snprintf(line, sizeof line, "; %s t = %.3g m, fc = %.3g MPa, ft = %.3g MPa", part.c_str(),
-                  t, st.compressive / 1e6, st.tensile / 1e6);
-    title += line;
+    title += "; " + part + " " + section_caption(sec, t);
   }
   plots.panels("lining_capacity.png", title, "bending moment M [kNm/m]",
                {{"thrust N [kN/m]", envelopes, points}}, 800);

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "outputs/lining_forces.hpp"
+#include "outputs/lining_sections.hpp"
 #include "outputs/output_step.hpp"
 #include "outputs/run_plots.hpp"
 #include "rockfdem/fdem/engine.hpp"
@@ -21,17 +22,17 @@ namespace rockfdem::workflows {
 
 /// The ring's sections: the lining's, and the floor part's where the scene
 /// gives [materials.invert].
-struct RingStrength {
-  ShotcreteStrength lining;
-  std::optional<ShotcreteStrength> invert;
+struct RingSections {
+  LiningSection lining;
+  std::optional<LiningSection> invert;
 };
 
 class LiningOutput : public OutputStepObserver {
  public:
   /// The ring's segments of `m`, those with a mid-line point below
   /// `invert_top` [m] in its floor part (-infinity: none), checked against
-  /// `strength` (none: forces only); files go to `dir`.
-  LiningOutput(const mesh::Mesh& m, double invert_top, std::optional<RingStrength> strength,
+  /// `sections` (none: forces only); files go to `dir`.
+  LiningOutput(const mesh::Mesh& m, double invert_top, std::optional<RingSections> sections,
                std::string dir);
   /// Whether the mesh has a ring to cut into segments.
   bool has_ring() const { return !geometry_.segments.empty(); }
@@ -52,22 +53,30 @@ class LiningOutput : public OutputStepObserver {
   LiningForceFigures figures(const fdem::Engine& e, const std::string& dir);
   /// The pictures of finish(), of the state figures() saw.
   void plots(PlotWriter& plots) const;
+  /// lining_capacity.png, of the segments' M and N [kNm/m, kN/m].
+  void capacity_plot(PlotWriter& plots, const std::vector<double>& m,
+                     const std::vector<double>& n) const;
   std::vector<SectionForces> forces(const fdem::Engine& e) const;
+  /// Each segment's safety factor for `f` (with sections_).
+  std::vector<double> safety_factors(const std::vector<SectionForces>& f) const;
+  /// lining.csv's text for `f` at `step`.
+  std::string csv(long step, const std::vector<SectionForces>& f) const;
   /// The figures of the safety factor check into `f`.
   void check_capacity(LiningForceFigures& f) const;
   LiningGeometry geometry_;
   std::vector<int> triangles_;  ///< every lining triangle
-  std::optional<RingStrength> strength_;
-  std::vector<ShotcreteStrength> segment_strength_;  ///< per segment, with strength_
-  std::vector<char> segment_invert_;                 ///< per segment: in the floor part
-  std::vector<SectionForces> last_;                  ///< forces of finish()
+  /// Segment i's section (with sections_): its part's.
+  const LiningSection& section_of(std::size_t i) const;
+  std::optional<RingSections> sections_;
+  std::vector<char> segment_invert_;  ///< per segment: in the floor part
+  std::vector<SectionForces> last_;   ///< forces of finish()
   std::string dir_;
   bool installed_ = false;
 };
 
-/// The strengths the scene gives (materials.lining, materials.invert);
+/// The sections the scene gives (materials.lining, materials.invert);
 /// none without the lining's compressive strength.
-std::optional<RingStrength> ring_strength(const Scene& scene);
+std::optional<RingSections> ring_sections(const Scene& scene);
 
 /// Crack elements joining a lining triangle to a triangle of another zone
 /// (the shotcrete-rock bond), in crack order.

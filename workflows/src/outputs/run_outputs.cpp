@@ -49,7 +49,7 @@ RunOutputs::RunOutputs(const Scene& scene, const RunContext& ctx, RunRecord& sum
       lining_ring_(scene.lining_ring),
       insitu_(scene.insitu),
       is_cable_(scene.bolts.is_cable),
-      shotcrete_(ring_strength(scene)),
+      sections_(ring_sections(scene)),
       invert_top_(invert_top(scene)) {
   insitu::KirschCase k;
   if (kirsch_case(scene, &k)) kirsch_ = k;
@@ -95,7 +95,7 @@ void RunOutputs::begin(const mesh::Mesh& m, const KeyPoints& key_points,
   instruments_ = std::move(instruments);
   key_points_ = &key_points;
   if (lining_ring_) {
-    lining_ = std::make_unique<LiningOutput>(m, invert_top_, shotcrete_, ctx_.output_dir);
+    lining_ = std::make_unique<LiningOutput>(m, invert_top_, sections_, ctx_.output_dir);
     if (!lining_->has_ring()) lining_.reset();
     if (lining_) lining_->set_installed(lining_installed_);
   }

@@ -130,7 +130,7 @@ class RunOutputs : public StepOutputs {
   InsituSettings insitu_;                     ///< the in-situ stress, p0 of the curve in pressure
   std::optional<insitu::KirschCase> kirsch_;  ///< the Kirsch case the scene is, if any
   std::vector<std::uint8_t> is_cable_;        ///< per bolt segment
-  std::optional<RingStrength> shotcrete_;     ///< materials.lining's (and .invert's) strengths
+  std::optional<RingSections> sections_;      ///< materials.lining's (and .invert's) sections
   double invert_top_;  ///< the ring's floor part lies below [m]; -infinity: no part of its own
   std::vector<insitu::InsituField> fields_;
   std::unique_ptr<History> history_;

@@ -296,6 +296,9 @@ void capacity_rows(std::ostream& md, const LiningForceFigures& f, const LiningCa
     strengths += "; floor part: tension " + mpa(*c.invert_tensile_strength_Pa) + ", compression " +
                  mpa(*c.invert_compressive_strength_Pa);
   figure_row(md, "strengths", strengths);
+  figure_row(md, "section type",
+             c.invert_section ? "arch and walls " + c.section + "; floor part " + *c.invert_section
+                              : c.section);
   if (c.min_safety_factor)
     figure_row(md, "smallest safety factor", fixed(*c.min_safety_factor, 2),
                std::string(c.min_safety_factor_in_invert ? "in the floor part, " : "") +

@@ -289,6 +289,8 @@ nlohmann::json bolts_json(const BoltRecord& r) {
 }
 
 void add_capacity(nlohmann::json& j, const LiningCapacityFigures& c) {
+  j["section"] = c.section;
+  if (c.invert_section) j["invert_section"] = *c.invert_section;
   j["compressive_strength_Pa"] = c.compressive_strength_Pa;
   j["tensile_strength_Pa"] = c.tensile_strength_Pa;
   if (c.invert_compressive_strength_Pa) {

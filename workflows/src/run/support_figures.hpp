@@ -46,8 +46,10 @@ struct BoltRecord {
   std::vector<BoltFigures> each;
 };
 
-/// The plain shotcrete section's check (where a compressive strength is given).
+/// The ring's capacity check (where a compressive strength is given).
 struct LiningCapacityFigures {
+  std::string section = "plain";  ///< the lining's: "plain", "reinforced" or "steel_sets"
+  std::optional<std::string> invert_section;                    ///< the floor part's
   double compressive_strength_Pa = 0, tensile_strength_Pa = 0;  ///< the lining's
   /// The floor part's, with [materials.invert].
   std::optional<double> invert_compressive_strength_Pa, invert_tensile_strength_Pa;

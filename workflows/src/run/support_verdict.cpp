@@ -13,9 +13,13 @@ void check_lining(const LiningForceFigures& f, SupportVerdict& v) {
   }
   const LiningCapacityFigures& c = *f.check;
   if (!c.min_safety_factor || *c.min_safety_factor >= 1) return;
-  const std::string part = c.invert_compressive_strength_Pa
-                               ? (c.min_safety_factor_in_invert ? "invert " : "arch and walls ")
-                               : "";
+  std::string part = c.invert_compressive_strength_Pa
+                         ? (c.min_safety_factor_in_invert ? "invert " : "arch and walls ")
+                         : "";
+  // A section with steel is named: its factor is of another diagram.
+  const std::string& section =
+      c.min_safety_factor_in_invert && c.invert_section ? *c.invert_section : c.section;
+  if (section != "plain") part += "(" + section + ") ";
   v.findings.push_back("lining " + part + "SF " + fixed(*c.min_safety_factor, 2) + " at " +
                        fixed(c.min_safety_factor_angle_deg, 0) + " deg" +
                        (c.min_safety_factor_at_corner ? " (a corner)" : "") + ", " +

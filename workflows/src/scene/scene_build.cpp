@@ -58,6 +58,8 @@ class Reader {
   }
   std::string text(const std::string& path) const {
     if (const toml::node* n = node(path)) return n->as_string()->get();
+    const std::string from = default_key(spec(path), path);
+    if (!from.empty()) return text(from);
     std::string d = spec(path).default_text;
     return d == "\"\"" ? std::string() : d;
   }
@@ -94,6 +96,13 @@ class Reader {
   }
   const std::string& source() const { return raw_.source; }
   const RawScene& raw() const { return raw_; }
+  /// The key whose value `path` holds: itself where the file gives it,
+  /// else the key its default names, followed (the invert's the lining's).
+  std::string given_at(const std::string& path) const {
+    if (has(path)) return path;
+    const std::string from = default_key(spec(path), path);
+    return from.empty() ? path : given_at(from);
+  }
 
  private:
   static const KeySpec& spec(const std::string& path) {
@@ -339,9 +348,99 @@ void read_msh(const Reader& r, const std::string& base_dir, mesh::MeshSpec& m) {
   m.msh.fracture_group = r.text("msh.fracture_group");
 }
 
+// The keys of each kind of section with steel; a part's own table giving
+// one its section does not take is a slip, refused.
+const char* const kBarKeys[] = {"bar_area", "bar_cover"};
+const char* const kSetKeys[] = {"set_area", "set_inertia", "set_depth", "set_spacing"};
+
+// The ring part's thickness where the scene generates the ring; 0 for a
+// user's mesh (measured per segment in the run).
+double part_thickness(const Scene& s, const std::string& name) {
+  if (s.mesh.kind != mesh::ModelKind::kTunnel) return 0;
+  return name == "invert" ? s.mesh.tunnel.invert_thickness : s.mesh.tunnel.lining_thickness;
+}
+
+// A value the section's kind needs (its own or, for the invert, the
+// lining's); missing: refused.
+double needed(const Reader& r, const std::string& path, const std::string& why) {
+  const double v = r.number_or(path, 0);
+  if (!(v > 0)) r.require(path, why);
+  return v;
+}
+
+// Where a key the section needs is out of place for the part's thickness.
+[[noreturn]] void fail_at(const Reader& r, const std::string& path, const std::string& problem) {
+  const std::string at = r.given_at(path);
+  r.fail(at, problem + (at == path ? "" : " (" + path + " takes " + at + ")"));
+}
+
+void read_bars(const Reader& r, const std::string& p, double h, LiningSectionSpec& sec) {
+  const std::string why = p + "section = \"reinforced\"";
+  sec.bar_area = needed(r, p + "bar_area", why);
+  sec.bar_cover = needed(r, p + "bar_cover", why);
+  if (h <= 0) return;
+  if (sec.bar_cover >= h / 2)
+    fail_at(r, p + "bar_cover",
+            "would put the layers across the mid-line of the part's " + num(h) + " m; allowed: < " +
+                num(h / 2) + " m");
+  // EN 1992-1-1 9.2.1.1(3): As,max = 0.04 Ac; more is a unit slip or no section.
+  if (2 * sec.bar_area > 0.04 * h)
+    fail_at(r, p + "bar_area",
+            "two layers exceed 4% of the section (EN 1992-1-1 9.2.1.1, As,max = 0.04 Ac); "
+            "allowed: <= " +
+                num(0.02 * h) + " m^2/m per layer for " + num(h) + " m");
+}
+
+void read_sets(const Reader& r, const std::string& p, double h, LiningSectionSpec& sec) {
+  const std::string why = p + "section = \"steel_sets\"";
+  sec.set_area = needed(r, p + "set_area", why);
+  sec.set_inertia = needed(r, p + "set_inertia", why);
+  sec.set_depth = needed(r, p + "set_depth", why);
+  sec.set_spacing = needed(r, p + "set_spacing", why);
+  if (h > 0 && sec.set_depth > h)
+    fail_at(r, p + "set_depth",
+            "is deeper than the part (the sets are embedded in the shotcrete); allowed: <= " +
+                num(h) + " m, the part's thickness");
+  // All the area at the extreme fibres is the most any section holds.
+  if (sec.set_inertia > sec.set_area * sec.set_depth * sec.set_depth / 4)
+    fail_at(r, p + "set_inertia",
+            "exceeds set_area x set_depth^2 / 4, the most a section of that area and depth has "
+            "(a unit slip?); allowed: <= " +
+                num(sec.set_area * sec.set_depth * sec.set_depth / 4) + " m^4");
+}
+
+// The ring part's section (materials.lining or materials.invert, `name`),
+// with strength `fc` of its concrete or shotcrete.
+LiningSectionSpec read_section(const Reader& r, const Scene& s, const std::string& name,
+                               double fc) {
+  const std::string p = "materials." + name + ".";
+  LiningSectionSpec sec;
+  sec.kind = r.text(p + "section");
+  sec.steel_young = r.number(p + "steel_young");
+  const bool bars = sec.kind == "reinforced", sets = sec.kind == "steel_sets";
+  const std::string is = "; this part's section is \"" + sec.kind + "\"";
+  for (const char* key : kBarKeys)
+    if (!bars && r.has(p + key)) r.fail(p + key, "applies with section = \"reinforced\"" + is);
+  for (const char* key : kSetKeys)
+    if (!sets && r.has(p + key)) r.fail(p + key, "applies with section = \"steel_sets\"" + is);
+  if (!bars && !sets) {
+    for (const char* key : {"steel_young", "steel_yield_strength"})
+      if (r.has(p + key))
+        r.fail(p + key, "applies with section = \"reinforced\" or \"steel_sets\"" + is);
+    return sec;
+  }
+  const std::string why = p + "section = \"" + sec.kind + "\"";
+  if (!(fc > 0)) r.require(p + "compressive_strength", why);
+  sec.steel_yield_strength = needed(r, p + "steel_yield_strength", why);
+  const double h = part_thickness(s, name);
+  if (bars) read_bars(r, p, h, sec);
+  if (sets) read_sets(r, p, h, sec);
+  return sec;
+}
+
 // `name` is a zone's or "invert" (the ring's floor part, an elastic liner
 // too, its keys defaulting to the lining's).
-MaterialSpec read_material(const Reader& r, const std::string& name) {
+MaterialSpec read_material(const Reader& r, const Scene& s, const std::string& name) {
   const std::string p = "materials." + name + ".";
   const bool liner = name == mesh::zone_name(mesh::kLining) || name == "invert";
   // The core's keys default to the rock's, the invert's to the lining's.
@@ -360,6 +459,7 @@ MaterialSpec read_material(const Reader& r, const std::string& name) {
   // for the capacity check alone, its friction for its contacts.
   if (liner) {
     m.compressive_strength = r.number_or(p + "compressive_strength", 0);
+    m.section = read_section(r, s, name, m.compressive_strength);
     return m;
   }
   m.cohesion = r.number_or(p + "cohesion", 0);
@@ -391,7 +491,7 @@ void read_invert_material(const Reader& r, Scene& s) {
            "tunnel.lining_thickness > 0; allowed here: no [materials.invert]");
   if (!r.has("materials.lining"))
     r.fail("materials.invert", "needs [materials.lining] (the rest of the ring)");
-  s.invert = read_material(r, "invert");
+  s.invert = read_material(r, s, "invert");
   if (s.invert->compressive_strength > 0 &&
       !(s.materials.at(mesh::kLining).compressive_strength > 0))
     r.fail("materials.invert.compressive_strength",
@@ -404,7 +504,7 @@ bool needs_fracture(const mesh::MeshSpec& m) {
 }
 
 void read_materials(const Reader& r, Scene& s) {
-  s.materials[mesh::kRock] = read_material(r, mesh::zone_name(mesh::kRock));
+  s.materials[mesh::kRock] = read_material(r, s, mesh::zone_name(mesh::kRock));
   if (needs_fracture(s.mesh)) {
     for (const char* key :
          {"tensile_strength", "cohesion", "fracture_energy_I", "fracture_energy_II"})
@@ -412,9 +512,9 @@ void read_materials(const Reader& r, Scene& s) {
   }
   const bool tunnel_like =
       s.mesh.kind == mesh::ModelKind::kTunnel || s.mesh.kind == mesh::ModelKind::kMshFile;
-  if (tunnel_like) s.materials[mesh::kCore] = read_material(r, mesh::zone_name(mesh::kCore));
+  if (tunnel_like) s.materials[mesh::kCore] = read_material(r, s, mesh::zone_name(mesh::kCore));
   if (has_ring(s.mesh) || r.has("materials.lining"))
-    s.materials[mesh::kLining] = read_material(r, mesh::zone_name(mesh::kLining));
+    s.materials[mesh::kLining] = read_material(r, s, mesh::zone_name(mesh::kLining));
   read_invert_material(r, s);
 }
 

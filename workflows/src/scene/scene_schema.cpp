@@ -147,6 +147,63 @@ void add_material(std::vector<KeySpec>& s, const std::string& name, const std::s
                       "Seed of the " + role + "'s strength heterogeneity."));
 }
 
+// A ring part's section for its capacity check (docs/support.md, "Section
+// types"): plain, reinforced (two symmetric layers of bars) or steel sets
+// in the shotcrete. `inherit` ("materials.lining."): each key defaults to
+// that part's (the invert's to the lining's).
+void add_section(std::vector<KeySpec>& s, const std::string& name, const std::string& inherit) {
+  const std::string p = "materials." + name + ".";
+  const auto def = [&](const char* key, const char* value) {
+    return inherit.empty() ? std::string(value) : inherit + key;
+  };
+  const auto required = [&](KeySpec k, const char* where) {
+    if (inherit.empty()) k.default_doc = std::string("required with section = ") + where;
+    return k;
+  };
+  s.push_back(choice(p + "section", def("section", "plain"), {"plain", "reinforced", "steel_sets"},
+                     "Section of the capacity check: \"plain\" shotcrete (the elastic limit of "
+                     "the fibre stresses), \"reinforced\" shotcrete or concrete (two symmetric "
+                     "layers of bars: the M-N interaction diagram of EN 1992-1-1's rectangular "
+                     "stress block) or \"steel_sets\" embedded in the shotcrete (a composite "
+                     "section: thrust and moment shared by stiffness, each part within its "
+                     "elastic limit, Carranza-Torres and Diederichs 2009). The model's ring is "
+                     "elastic with `young` whatever the section; the section decides only the "
+                     "capacity and safety factors (docs/support.md)."));
+  s.push_back(positive(p + "steel_young", "Pa", def("steel_young", "200e9"),
+                       "Young's modulus of the bars (reinforced) or the steel sets (steel_sets)."));
+  s.push_back(required(positive(p + "steel_yield_strength", "Pa", def("steel_yield_strength", ""),
+                                "Yield strength fy of the bars or the steel sets (elastic-"
+                                "perfectly plastic; e.g. 500e6 for B500 bars, 235e6 to "
+                                "355e6 for sets); no partial factor."),
+                       "reinforced or steel_sets"));
+  s.push_back(required(number(p + "bar_area", "m^2", def("bar_area", ""), 0, true, 0.1, false,
+                              "Reinforced: area of the bars per metre of tunnel in EACH of the "
+                              "two layers (one near each face), e.g. 1.131e-3 for 12 mm bars "
+                              "at 100 mm. At most 0.1 m^2/m (a larger value is a unit slip)."),
+                       "reinforced"));
+  s.push_back(required(positive(p + "bar_cover", "m", def("bar_cover", ""),
+                                "Reinforced: distance from each face to its layer's bar "
+                                "centroid; below half the part's thickness."),
+                       "reinforced"));
+  s.push_back(required(positive(p + "set_area", "m^2", def("set_area", ""),
+                                "Steel sets: cross-section area of one set (e.g. 5.43e-3 for "
+                                "an HEB 160)."),
+                       "steel_sets"));
+  s.push_back(required(positive(p + "set_inertia", "m^4", def("set_inertia", ""),
+                                "Steel sets: second moment of area of one set about its axis "
+                                "of bending in the ring (e.g. 2.492e-5 for an HEB 160 about its "
+                                "strong axis)."),
+                       "steel_sets"));
+  s.push_back(required(positive(p + "set_depth", "m", def("set_depth", ""),
+                                "Steel sets: depth of one set through the ring's thickness "
+                                "(its extreme fibres at +-depth/2 from the mid-line; at most the "
+                                "part's thickness)."),
+                       "steel_sets"));
+  s.push_back(required(positive(p + "set_spacing", "m", def("set_spacing", ""),
+                                "Steel sets: spacing of the sets along the tunnel."),
+                       "steel_sets"));
+}
+
 // [[monitor]] and [[extensometer]]: history points followed as material
 // points of the rock (docs/workflow.md, "Monitors and results").
 void add_instruments(std::vector<KeySpec>& s) {
@@ -680,6 +737,7 @@ std::vector<KeySpec> build_schema() {
                         "the tensile limit (0 when not given: no tension); not given: no check.");
   fc.default_doc = "none: no capacity check";
   s.push_back(fc);
+  add_section(s, "lining", "");
   add_material(s, "invert",
                "lining ring's floor part (an invert arch, e.g. cast concrete under a shotcrete "
                "arch; horseshoe and arched openings; the whole section defaults to "
@@ -694,6 +752,7 @@ std::vector<KeySpec> build_schema() {
                          "capacity check (segments of the floor part; needs "
                          "materials.lining.compressive_strength).");
   s.push_back(fci);
+  add_section(s, "invert", "materials.lining.");
   add_insitu(s);
   add_engine(s);
   add_support(s);

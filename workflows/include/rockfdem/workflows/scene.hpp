@@ -24,6 +24,20 @@
 
 namespace rockfdem::workflows {
 
+/// The section a ring part's capacity check takes (materials.lining and
+/// materials.invert; docs/support.md, "Section types"). Per metre of tunnel.
+struct LiningSectionSpec {
+  std::string kind;               ///< "plain", "reinforced" or "steel_sets"
+  double steel_young{};           ///< Pa, of the bars or the sets
+  double steel_yield_strength{};  ///< Pa (0: not given, plain)
+  double bar_area{};              ///< reinforced: m^2 per m of tunnel, each face (0: not given)
+  double bar_cover{};             ///< reinforced: face to the bars' centroid [m]
+  double set_area{};              ///< steel_sets: one set's cross-section [m^2]
+  double set_inertia{};           ///< steel_sets: one set's second moment [m^4]
+  double set_depth{};             ///< steel_sets: one set's depth [m]
+  double set_spacing{};           ///< steel_sets: along the tunnel [m]
+};
+
 struct MaterialSpec {
   double density{};                  ///< kg/m^3
   double young{};                    ///< Pa
@@ -38,6 +52,7 @@ struct MaterialSpec {
   double heterogeneity{};            ///< Weibull modulus of crack strengths; 0: homogeneous
   std::uint64_t heterogeneity_seed{};
   double compressive_strength{};  ///< Pa, lining only: its capacity check (0: not given)
+  LiningSectionSpec section;      ///< lining and invert only: the capacity check's section
 };
 
 struct InsituSettings {
