@@ -70,6 +70,7 @@ class RunRecord {
   std::optional<FdemRecord> fdem;
   MonitorRecord monitors;
   std::vector<GroundReactionPoint> ground_reaction_curve;  ///< empty: not drawn (no key)
+  std::optional<ConvergenceConfinementFigures> convergence_confinement;
   std::optional<std::vector<std::string>> history_stages;  ///< history.csv's stage names
   std::optional<BoltRecord> bolts;
   LiningRecord lining;                    ///< empty: no key
