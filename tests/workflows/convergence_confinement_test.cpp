@@ -111,3 +111,19 @@ TEST(LongitudinalProfile, scene_installs_at_the_alpha_of_the_face_distance) {
   std::printf("  installed at alpha %.5f (closed form %.5f), u* %.5f\n", installed, alpha, u_star);
   fs::remove_all(out);
 }
+
+// The face distance sets the hand-off alpha, so the support must go in at
+// the hand-off: refused (exit 2, naming the key) without a support stage
+// and with a soften stage before it.
+TEST(LongitudinalProfile, face_distance_needs_the_support_at_the_handoff) {
+  const std::string key = "insitu.install_at_face_distance";
+  const Result none = run("check " + kTestDir + "/elastic_circular.toml --set " + key + "=2");
+  EXPECT_EQ(none.code, 2) << none.output;
+  EXPECT_NE(none.output.find(key), std::string::npos) << none.output;
+  EXPECT_NE(none.output.find("lining or bolts stage"), std::string::npos) << none.output;
+  const Result soften = run("check " + kTestDir + "/lined_elastic_circular.toml --set " + key +
+                            "=2 --set stages[1].kind=\"soften\" --set stages[1].alpha=0.1");
+  EXPECT_EQ(soften.code, 2) << soften.output;
+  EXPECT_NE(soften.output.find(key), std::string::npos) << soften.output;
+  EXPECT_NE(soften.output.find("before any soften stage"), std::string::npos) << soften.output;
+}
