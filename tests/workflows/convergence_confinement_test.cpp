@@ -104,8 +104,9 @@ TEST(LongitudinalProfile, scene_installs_at_the_alpha_of_the_face_distance) {
   EXPECT_DOUBLE_EQ(face.at("r_star").get<double>(), 1.0);
   const double installed = face.at("alpha").get<double>();
   EXPECT_NEAR(installed, alpha, 0.02 * alpha);
-  // The hand-off and the lining stage are at that alpha.
+  // The hand-off, the lining stage and its continuum counterpart are at that alpha.
   EXPECT_DOUBLE_EQ(s.at("fdem").at("handoff_alpha").get<double>(), installed);
+  EXPECT_DOUBLE_EQ(s.at("continuum_comparison").at("lining_alpha").get<double>(), installed);
   EXPECT_DOUBLE_EQ(s.at("convergence_confinement").at("installation").at("alpha").get<double>(),
                    installed);
   std::printf("  installed at alpha %.5f (closed form %.5f), u* %.5f\n", installed, alpha, u_star);

@@ -273,7 +273,11 @@ void Run::compare_with_references() {
     summary_.comparison = compare_with_continuum(
         scene_, mesh_, engine(), reference, output_path(ctx_.output_dir, "fdem_vs_continuum.csv"));
   }
-  compare_with_continuum_counterpart(scene_, ctx_, mesh_, engine(), handoff(),
+  // The counterpart follows the sequence solved: the face distance moved
+  // the hand-off, and the support with it.
+  Scene solved = scene_;
+  if (scene_.insitu.install_at_face_distance) solved.insitu.alpha = handoff_figures_.alphas;
+  compare_with_continuum_counterpart(solved, ctx_, mesh_, engine(), handoff(),
                                      key_points_.monitors(), summary_);
   timer_.stamp("insitu");
 }
