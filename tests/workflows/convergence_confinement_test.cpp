@@ -128,3 +128,46 @@ TEST(LongitudinalProfile, face_distance_needs_the_support_at_the_handoff) {
   EXPECT_NE(soften.output.find(key), std::string::npos) << soften.output;
   EXPECT_NE(soften.output.find("before any soften stage"), std::string::npos) << soften.output;
 }
+
+// The scene's pattern: 9 bolts 17.5 deg apart over the arch (the default
+// tunnel's) and 2 cables 35 deg apart, on an opening of equivalent radius
+// 5 m: s_c = R times the angle between neighbours (the open gap under the
+// floor left out), l the mean length, T_bf the ultimate strength times the
+// bar's area; a ring from the lining's strength; and their sum.
+TEST(SupportLines, scene_pattern_gives_the_spacing_round_the_opening) {
+  Scene s;
+  const double r = 5, step = 17.5 * M_PI / 180;
+  for (int i = 0; i < 9; ++i) {
+    const double a = 20 * M_PI / 180 + i * step, len = i % 2 ? 3.0 : 4.0;
+    s.bolts.segments.push_back(
+        {r * std::cos(a), r * std::sin(a), (r + len) * std::cos(a), (r + len) * std::sin(a)});
+    s.bolts.is_cable.push_back(0);
+  }
+  for (const double deg : {72.5, 107.5}) {
+    const double a = deg * M_PI / 180;
+    s.bolts.segments.push_back(
+        {r * std::cos(a), r * std::sin(a), (r + 7) * std::cos(a), (r + 7) * std::sin(a)});
+    s.bolts.is_cable.push_back(1);
+  }
+  s.bolts.bolt = {0.025, 1.0, 200e9, 400e6, 500e6, 0, 0, 0};
+  s.bolts.cable = {0.0152, 1.5, 195e9, 1600e6, 1860e6, 0, 0, 0};
+  s.materials[rockfdem::mesh::kLining].young = 0.5e9;
+  s.materials[rockfdem::mesh::kLining].poisson = 0.3;
+  s.materials[rockfdem::mesh::kLining].compressive_strength = 20e6;
+  const std::vector<SupportLine> lines = scene_support_lines(s, {r, 0.2, 0, 0});
+  ASSERT_EQ(lines.size(), 4u);
+  EXPECT_EQ(lines[0].name, "shotcrete");
+  EXPECT_EQ(lines[1].name, "bolts");
+  EXPECT_EQ(lines[2].name, "cables");
+  EXPECT_EQ(lines[3].name, "combined");
+  const double d = 0.025, mean_length = (5 * 4.0 + 4 * 3.0) / 9;
+  const SupportLine bolts =
+      bolt_line(500e6 * M_PI * d * d / 4, r * step, 1.0, mean_length, d, 200e9, 0);
+  EXPECT_NEAR(lines[1].p_max, bolts.p_max, 1e-9 * bolts.p_max);
+  EXPECT_NEAR(lines[1].stiffness, bolts.stiffness, 1e-9 * bolts.stiffness);
+  const SupportLine cables =
+      bolt_line(1860e6 * M_PI * 0.0152 * 0.0152 / 4, r * 2 * step, 1.5, 7, 0.0152, 195e9, 0);
+  EXPECT_NEAR(lines[2].p_max, cables.p_max, 1e-9 * cables.p_max);
+  EXPECT_NEAR(lines[3].stiffness, lines[0].stiffness + bolts.stiffness + cables.stiffness,
+              1e-9 * lines[3].stiffness);
+}
