@@ -30,6 +30,7 @@ double alpha_at_fraction(const std::vector<double>& alphas, const std::vector<do
   const double target = fraction * u.back();
   for (std::size_t i = 1; i < alphas.size(); ++i) {
     if (u[i] < target) continue;
+    if (!(u[i] > u[i - 1])) return alphas[i];  // a flat stretch: nothing to interpolate
     const double s = (target - u[i - 1]) / (u[i] - u[i - 1]);
     return alphas[i - 1] + s * (alphas[i] - alphas[i - 1]);
   }
