@@ -200,11 +200,11 @@ std::vector<PlasticField> PlasticProblem::run() {
     PlasticField field;
     Timer timer;
     if (!lining_installed_ && install < target) {
-      if (install > lambda) advance(lambda, install, field);
+      if (install > lambda && !advance(lambda, install, field)) break;
       lambda = std::max(lambda, install);
       install_lining();
     }
-    advance(lambda, target, field);
+    if (!advance(lambda, target, field)) break;  // stop_at_failure: what was reached
     lambda = target;
     output(lambda, field);
     field.seconds = timer.wall_time();
@@ -482,7 +482,8 @@ bool PlasticProblem::newton(const double lambda, int& iterations) {
 }
 
 // lambda from `from` to `to` in steps of at most max_increment, each halved
-// while Newton fails (and doubled again after each success).
+// while Newton fails (and doubled again after each success). False: a step
+// failed max_halvings times under stop_at_failure (else that throws).
 bool PlasticProblem::advance(const double from, const double to, PlasticField& field) {
   double lambda = from;
   int halvings = 0;
@@ -499,7 +500,8 @@ bool PlasticProblem::advance(const double from, const double to, PlasticField& f
       continue;
     }
     solution_ = step_start_;
-    if (++halvings > plastic_.max_halvings)
+    if (++halvings > plastic_.max_halvings && plastic_.stop_at_failure) return false;
+    if (halvings > plastic_.max_halvings)
       throw NumericalError(
           "insitu mohr_coulomb: the release step to lambda = " + std::to_string(next) +
           " did not converge after " + std::to_string(plastic_.max_halvings) +

@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "outputs/continuum_comparison.hpp"
+#include "outputs/continuum_ground_reaction.hpp"
 #include "outputs/run_plots.hpp"
 #include "rockfdem/coupling/atomic_file.hpp"
 #include "rockfdem/coupling/insitu_grid.hpp"
@@ -260,6 +261,22 @@ std::map<std::string, CounterpartKeyPoint> key_points(const fdem::Engine& e,
   return out;
 }
 
+/// The Mohr-Coulomb ground reaction curve at the key points; one that
+/// cannot be solved is named in "skipped" and the comparison stands.
+void add_ground_reaction(const Scene& scene, const RunContext& ctx, const mesh::Mesh& m,
+                         const fdem::Engine& e, const std::vector<Monitor>& monitors,
+                         RunRecord& summary) {
+  std::vector<WallPoint> points;
+  for (const Monitor& mon : monitors)
+    points.push_back({mon.name, e.node_vertex()[mon.node], mon.inward_x, mon.inward_y});
+  try {
+    summary.continuum_comparison->ground_reaction =
+        keeping_threads(ctx, [&] { return mohr_coulomb_ground_reaction(scene, m, points); });
+  } catch (const std::runtime_error& err) {
+    summary.skipped.push_back(std::string("continuum ground reaction curve: ") + err.what());
+  }
+}
+
 }  // namespace
 
 ContinuumStates solve_continuum_counterpart(const Scene& scene, const mesh::Mesh& m) {
@@ -354,6 +371,7 @@ void compare_with_continuum_counterpart(const Scene& scene, const RunContext& ct
         keeping_threads(ctx, [&] { return solve_continuum_counterpart(scene, m); });
     summary.continuum_comparison = compare_with_counterpart(scene, m, e, fdem_handoff, c, monitors,
                                                             ctx.output_dir, summary, ctx.quiet);
+    if (c.model == "mohr_coulomb") add_ground_reaction(scene, ctx, m, e, monitors, summary);
     if (scene.insitu.continuum_post_peak) {
       const auto start = std::chrono::steady_clock::now();
       summary.continuum_post_peak =

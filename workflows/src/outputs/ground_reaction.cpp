@@ -9,7 +9,10 @@ std::optional<double> core_pressure(const mesh::Mesh& m, const insitu::InsituFie
   double sum = 0;
   int n = 0;
   for (std::size_t t = 0; t < m.n_triangles(); ++t) {
-    if (m.zone[t] != mesh::kCore || !f.active[t]) continue;
+    // A ring not yet installed is softened with the core: it is the opening.
+    const bool opening =
+        m.zone[t] == mesh::kCore || (m.zone[t] == mesh::kLining && !f.lining_installed);
+    if (!opening || !f.active[t]) continue;
     const auto& v = m.triangles[t];
     if (v[0] != vertex && v[1] != vertex && v[2] != vertex) continue;
     const insitu::Stress& s = f.stress[t];

@@ -17,8 +17,9 @@
 namespace rockfdem::workflows {
 
 /// The mean of -n.sigma.n [Pa, compression positive] over the active core
-/// triangles of `f` that have `vertex` as a corner; none when no active
-/// core triangle has it (the core removed: no pressure).
+/// triangles of `f` that have `vertex` as a corner, those of a lining ring
+/// not yet installed included (softened with the core); none when no such
+/// triangle has it (the core removed: no pressure).
 std::optional<double> core_pressure(const mesh::Mesh& m, const insitu::InsituField& f, int vertex,
                                     double nx, double ny);
 

@@ -8,6 +8,7 @@
 
 #include "outputs/broken_zone.hpp"
 #include "outputs/continuum_comparison.hpp"
+#include "outputs/convergence_confinement.hpp"
 #include "outputs/engine_report.hpp"
 #include "outputs/ground_reaction.hpp"
 #include "outputs/rock_plausibility.hpp"
@@ -70,6 +71,12 @@ void RunOutputs::record_insitu(const mesh::Mesh& m,
   if (kirsch_ && fields.back().alpha == 0.0)
     summary_.insitu.kirsch_rel_l2 =
         insitu::compare_kirsch(m, fields.back(), *kirsch_).stress_rel_l2;
+}
+
+void RunOutputs::record_face_distance(const FaceDistanceFigures& f,
+                                      std::vector<insitu::InsituField> curve) {
+  face_ = f;
+  curve_fields_ = std::move(curve);
 }
 
 std::vector<std::string> RunOutputs::history_columns(const std::vector<Monitor>& monitors) const {
@@ -256,6 +263,7 @@ void RunOutputs::finish(const fdem::Engine& e, const mesh::Mesh& m, PhaseTimer& 
                                                  {mm(fit.tx), mm(fit.ty)},
                                                  scene_.insitu.rollers ? "rollers" : "tractions"};
   record_ground_reaction(e, m);
+  record_convergence_confinement(e, m);
   const bool lining_forces = lining_outputs(e, m);
   damage_outputs(e, m);
   if (instruments_) instruments_->finish(summary_, e, m, key_points_->node_displacements(e));
@@ -293,7 +301,7 @@ void RunOutputs::record_ground_reaction(const fdem::Engine& e, const mesh::Mesh&
   const int vault_vertex = e.node_vertex()[key_points_->find("vault").node];
   std::vector<GroundReactionPoint>& grc = summary_.ground_reaction_curve;
   grc.clear();
-  for (const insitu::InsituField& f : fields_) {
+  for (const insitu::InsituField& f : curve_fields_.empty() ? fields_ : curve_fields_) {
     grc.push_back({f.alpha,
                    -mm(f.uy[vault_vertex]),
                    "implicit stage, alpha = " + detail_number(f.alpha),
@@ -314,6 +322,34 @@ void RunOutputs::record_ground_reaction(const fdem::Engine& e, const mesh::Mesh&
                  end_ratio > 0 ? "end of run (FDEM), core at alpha = " + detail_number(end_ratio)
                                : std::string("end of run (FDEM), core removed"),
                  {}});
+}
+
+// The key points' mean radial displacement at the support's installation
+// (the history's row then; the hand-off's without a support stage) and at
+// the end.
+void RunOutputs::record_convergence_confinement(const fdem::Engine& e, const mesh::Mesh& m) {
+  if (!history_ || history_->rows().empty() || !key_points_) return;
+  const std::size_t row = support_row().value_or(0);
+  ConvergenceConfinementState s;
+  int n = 0;
+  for (const Monitor& k : key_points_->monitors()) {
+    const auto end = summary_.monitors.key_points.find(k.name);
+    if (end == summary_.monitors.key_points.end()) continue;
+    s.install_radial_mm += history_->column(k.name + "_radial_mm")[row];
+    s.end_radial_mm += end->second.radial_mm;
+    ++n;
+  }
+  if (n == 0) return;
+  s.install_radial_mm /= n;
+  s.end_radial_mm /= n;
+  s.install_alpha = history_->column("support_pressure_ratio")[row];
+  s.lining_installed = lining_ && lining_installed_ && lining_->installed(e);
+  ConvergenceConfinementFigures c = convergence_confinement(scene_, m, e, s);
+  if (face_)
+    c.face = ConvergenceConfinementFigures::FaceDistance{
+        face_->face_distance_m, face_->plastic_radius_m, face_->x_star,
+        face_->r_star,          face_->u_star,           face_->alpha};
+  summary_.convergence_confinement = c;
 }
 
 void RunOutputs::damage_outputs(const fdem::Engine& e, const mesh::Mesh& m) {
@@ -423,7 +459,7 @@ std::unique_ptr<PlotWriter> RunOutputs::curves(const fdem::Engine& e) {
   const std::optional<std::size_t> from =
       scene_.output.convergence_from_support ? support_row() : std::nullopt;
   tunnel_curves(*plots, e, *history_, key_points_->monitors(), timeline(), from);
-  ground_reaction_plot(*plots, summary_.ground_reaction_curve);
+  ground_reaction_plot(*plots, summary_);
   return plots;
 }
 

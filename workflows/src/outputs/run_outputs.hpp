@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "outputs/bolt_results.hpp"
+#include "outputs/face_distance.hpp"
 #include "outputs/frame_output.hpp"
 #include "outputs/history.hpp"
 #include "outputs/instruments.hpp"
@@ -36,6 +37,10 @@ class RunOutputs : public StepOutputs {
   RunOutputs(const Scene& scene, const RunContext& ctx, RunRecord& summary);
   /// summary.json's insitu keys and the implicit part of the ground reaction curve.
   void record_insitu(const mesh::Mesh& m, const std::vector<insitu::InsituField>& fields);
+  /// insitu.install_at_face_distance: where it put the support, and the
+  /// implicit fields down to alpha = 0 it was read from, which the ground
+  /// reaction curve then shows (beyond the hand-off).
+  void record_face_distance(const FaceDistanceFigures& f, std::vector<insitu::InsituField> curve);
   /// The outputs that observe the output steps, made before anything is
   /// written (a restart's run state is checked against history_columns()
   /// next): the key points, displaced from `handoff` and with `m`'s outer
@@ -95,6 +100,8 @@ class RunOutputs : public StepOutputs {
   /// The record's ground reaction curve: the implicit stage's points and
   /// the end of the run (after the monitors).
   void record_ground_reaction(const fdem::Engine& e, const mesh::Mesh& m);
+  /// summary "convergence_confinement" (after the monitors and the curve).
+  void record_convergence_confinement(const fdem::Engine& e, const mesh::Mesh& m);
   /// With plots asked for and a display: the writer, after the run's
   /// curves against time (run_plots.hpp) and ground_reaction.png; else null.
   std::unique_ptr<PlotWriter> curves(const fdem::Engine& e);
@@ -133,6 +140,8 @@ class RunOutputs : public StepOutputs {
   std::optional<RingSections> sections_;      ///< materials.lining's (and .invert's) sections
   double invert_top_;  ///< the ring's floor part lies below [m]; -infinity: no part of its own
   std::vector<insitu::InsituField> fields_;
+  std::optional<FaceDistanceFigures> face_;        ///< insitu.install_at_face_distance's
+  std::vector<insitu::InsituField> curve_fields_;  ///< with face_: the curve to alpha = 0
   std::unique_ptr<History> history_;
   std::unique_ptr<Instruments> instruments_;
   std::unique_ptr<FrameOutput> frames_;  ///< from begin

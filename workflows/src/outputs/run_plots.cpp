@@ -98,30 +98,75 @@ void tunnel_curves(PlotWriter& plots, const fdem::Engine& e, const History& h,
   plots.broken_cracks(e, h, markers);
 }
 
-void ground_reaction_plot(PlotWriter& plots, const std::vector<GroundReactionPoint>& grc) {
-  // Per key point, the implicit solves' pressure against displacement;
-  // apart, the run's final state at the vault, no point of the unsupported
-  // curve: the support carries the load there.
-  std::vector<plots::PlotSeries> series;
-  for (const char* name : {"vault", "right_wall", "invert"}) {
-    plots::PlotSeries s{name, {}, {}};
-    for (std::size_t i = 0; i + 1 < grc.size(); ++i) {
-      const auto k = grc[i].key_points.find(name);
-      if (k == grc[i].key_points.end() || !(k->second.insitu_Pa > 0)) continue;
-      s.x.push_back(k->second.radial_mm);
-      s.y.push_back(k->second.pressure_Pa / k->second.insitu_Pa);
-    }
-    if (!s.x.empty()) series.push_back(s);
+namespace {
+
+/// The curve in pressure of one key point: the implicit solves' points.
+plots::PlotSeries implicit_curve(const std::vector<GroundReactionPoint>& grc, const char* name) {
+  plots::PlotSeries s{std::string(name) + " (elastic)", {}, {}};
+  for (std::size_t i = 0; i + 1 < grc.size(); ++i) {
+    const auto k = grc[i].key_points.find(name);
+    if (k == grc[i].key_points.end()) continue;
+    s.x.push_back(k->second.radial_mm);
+    s.y.push_back(1e-6 * k->second.pressure_Pa);
   }
-  if (!grc.empty())
-    series.push_back({"vault, " + grc.back().point,
-                      {grc.back().vault_settlement_mm},
-                      {grc.back().support_pressure_ratio},
-                      true});
+  return s;
+}
+
+plots::PlotSeries mohr_coulomb_curve(const std::vector<ContinuumGroundReactionPoint>& curve,
+                                     const char* name) {
+  plots::PlotSeries s{std::string(name) + " (Mohr-Coulomb)", {}, {}};
+  for (const ContinuumGroundReactionPoint& p : curve) {
+    const auto k = p.key_points.find(name);
+    if (k == p.key_points.end()) continue;
+    s.x.push_back(k->second.radial_mm);
+    s.y.push_back(1e-6 * k->second.pressure_Pa);
+  }
+  return s;
+}
+
+/// The support lines from the installation, each flat past its maximum to
+/// `x_end` [mm]; and the run's end point.
+void add_support(std::vector<plots::PlotSeries>& series, const ConvergenceConfinementFigures& c,
+                 double x_end) {
+  const double u0 = c.install_radial_mm;
+  for (const SupportLineFigures& l : c.support) {
+    const double u1 = u0 + l.max_displacement_mm;
+    series.push_back({"support: " + l.name,
+                      {u0, u1, std::max(u1, x_end)},
+                      {0.0, 1e-6 * l.p_max_Pa, 1e-6 * l.p_max_Pa}});
+  }
+  series.push_back({c.end_pressure_Pa ? "end of run: mean of key points, lining thrust / R"
+                                      : "end of run: mean of key points (no lining)",
+                    {c.end_radial_mm},
+                    {1e-6 * c.end_pressure_Pa.value_or(0.0)},
+                    true});
+}
+
+}  // namespace
+
+void ground_reaction_plot(PlotWriter& plots, const RunRecord& r) {
+  // Per key point, the implicit solves' curve and the Mohr-Coulomb
+  // counterpart's; the support's lines on the equivalent circle from its
+  // installation, and the run's end on the same axes.
+  std::vector<plots::PlotSeries> series;
+  double x_end = 0;
+  const auto add = [&](plots::PlotSeries s) {
+    if (s.x.empty()) return;
+    for (const double x : s.x) x_end = std::max(x_end, x);
+    series.push_back(std::move(s));
+  };
+  for (const char* name : {"vault", "right_wall", "invert"}) {
+    add(implicit_curve(r.ground_reaction_curve, name));
+    if (r.continuum_comparison)
+      add(mohr_coulomb_curve(r.continuum_comparison->ground_reaction, name));
+  }
   if (series.empty()) return;
-  plots.xy("ground_reaction.png", "Ground reaction curves (implicit stage)",
+  if (r.convergence_confinement)
+    add_support(series, *r.convergence_confinement,
+                std::max(x_end, r.convergence_confinement->end_radial_mm));
+  plots.xy("ground_reaction.png", "Convergence-confinement: ground reaction and support",
            "radial displacement towards the opening from the in-situ state [mm]",
-           "p / p0: the core's pressure on the opening over the in-situ normal stress [-]", series);
+           "pressure on the opening [MPa]", series);
 }
 
 void tunnel_pictures(PlotWriter& plots, const PictureContext& c, const NodeDisplacement& u) {

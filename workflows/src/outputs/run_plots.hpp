@@ -65,9 +65,10 @@ void tunnel_curves(PlotWriter& plots, const fdem::Engine& e, const History& h,
                    const std::vector<Monitor>& monitors, const std::vector<StageSpan>& spans,
                    std::optional<std::size_t> from);
 
-/// ground_reaction.png from the record's ground reaction curve: the
-/// implicit stage's points, and apart the run's end.
-void ground_reaction_plot(PlotWriter& plots, const std::vector<GroundReactionPoint>& grc);
+/// ground_reaction.png: the record's ground reaction curves in pressure
+/// (implicit, and the Mohr-Coulomb counterpart's), the support's
+/// characteristic lines and the run's end point (convergence_confinement).
+void ground_reaction_plot(PlotWriter& plots, const RunRecord& r);
 
 /// A tunnel's final state: displacement.png (`u`: the key points'
 /// displacement), sigma_max_compressive.png, sigma_min_compressive.png and

@@ -38,6 +38,18 @@ struct CounterpartYield {
   std::map<std::string, double> depth_m;  ///< "yielded_depth_m" per ray; empty: no key
 };
 
+/// One point of the Mohr-Coulomb ground reaction curve: the unsupported
+/// release to lambda, per key point the inward radial displacement [mm]
+/// and the fictitious support pressure (1 - lambda) p0 [Pa] there
+/// ("continuum_comparison"."ground_reaction"[i]).
+struct ContinuumGroundReactionPoint {
+  double lambda = 0;
+  struct AtKeyPoint {
+    double radial_mm = 0, pressure_Pa = 0;
+  };
+  std::map<std::string, AtKeyPoint> key_points;
+};
+
 /// "continuum_comparison": the FDEM state against the continuum solution
 /// of the scene's construction sequence.
 struct CounterpartComparison {
@@ -49,6 +61,9 @@ struct CounterpartComparison {
   std::optional<double> stress_rel_l2_handoff;  ///< none: no hand-off state (null)
   std::map<std::string, CounterpartKeyPoint> key_points;
   std::optional<CounterpartYield> yield;  ///< Mohr-Coulomb only
+  /// Mohr-Coulomb only: the unsupported release, to lambda = 1 or as far as
+  /// the ground stands (its last lambda).
+  std::vector<ContinuumGroundReactionPoint> ground_reaction;
 };
 
 /// The Mohr-Coulomb counterpart with the FDEM's post-peak strength: the

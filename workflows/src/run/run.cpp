@@ -12,11 +12,13 @@
 // as it found it.
 #include "run/run.hpp"
 
+#include <algorithm>
 #include <iostream>
 #include <sstream>
 
 #include "outputs/continuum_comparison.hpp"
 #include "outputs/continuum_counterpart.hpp"
+#include "outputs/face_distance.hpp"
 #include "rockfdem/error.hpp"
 #include "rockfdem/mesh/msh_io.hpp"
 #include "run/handoff_choice.hpp"
@@ -136,10 +138,34 @@ int Run::run() {
 
 void Run::solve_insitu() {
   fields_ = keeping_threads(ctx_, [&] { return insitu::solve_insitu(mesh_, insitu_spec(scene_)); });
+  if (scene_.insitu.install_at_face_distance) install_at_face_distance();
   check_implicit_field(scene_, mesh_, fields_);
   choose_handoff_field();
   timer_.stamp("insitu");
   stop_if_interrupted("the implicit stage");
+}
+
+// insitu.install_at_face_distance: the ground reaction curve down to the
+// open hole (alpha = 0 added when the list lacks it) gives the alpha where
+// the wall has made the profile's share of its final displacement; the
+// fields above it stay, one solved there is handed over, and the support
+// stages install on it. Each elastic alpha is a solve of its own (no ring
+// carries load in the implicit stage here), so the fields above are those
+// a list ending at that alpha gives.
+void Run::install_at_face_distance() {
+  insitu::InsituSpec spec = insitu_spec(scene_);
+  std::vector<insitu::InsituField> curve = fields_;
+  if (curve.back().alpha > 0) {
+    spec.alphas = {0.0};
+    curve.push_back(keeping_threads(ctx_, [&] { return insitu::solve_insitu(mesh_, spec); })[0]);
+  }
+  const FaceDistanceFigures f = face_distance_installation(scene_, mesh_, curve);
+  fields_.erase(std::remove_if(fields_.begin(), fields_.end(),
+                               [&](const insitu::InsituField& x) { return x.alpha <= f.alpha; }),
+                fields_.end());
+  spec.alphas = {f.alpha};
+  fields_.push_back(keeping_threads(ctx_, [&] { return insitu::solve_insitu(mesh_, spec); })[0]);
+  out_.record_face_distance(f, std::move(curve));
 }
 
 // The field handed over (insitu.handoff): the fields after it were solved to
@@ -247,7 +273,11 @@ void Run::compare_with_references() {
     summary_.comparison = compare_with_continuum(
         scene_, mesh_, engine(), reference, output_path(ctx_.output_dir, "fdem_vs_continuum.csv"));
   }
-  compare_with_continuum_counterpart(scene_, ctx_, mesh_, engine(), handoff(),
+  // The counterpart follows the sequence solved: the face distance moved
+  // the hand-off, and the support with it.
+  Scene solved = scene_;
+  if (scene_.insitu.install_at_face_distance) solved.insitu.alpha = handoff_figures_.alphas;
+  compare_with_continuum_counterpart(solved, ctx_, mesh_, engine(), handoff(),
                                      key_points_.monitors(), summary_);
   timer_.stamp("insitu");
 }

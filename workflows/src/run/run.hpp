@@ -32,6 +32,7 @@ class Run : StagedRun<RunOutputs> {
  private:
   // The phases, in the order run() calls them.
   void solve_insitu();
+  void install_at_face_distance();
   void choose_handoff_field();
   int write_implicit_results_only();
   void build_engine();

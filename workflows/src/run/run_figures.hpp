@@ -195,6 +195,33 @@ struct MonitorRecord {
   std::map<std::string, MonitorPointFigures> points;
 };
 
+/// A support characteristic line ("convergence_confinement"."support"[i]).
+struct SupportLineFigures {
+  std::string name;
+  double p_max_Pa = 0, stiffness_Pa_per_m = 0, max_displacement_mm = 0;
+};
+
+/// "convergence_confinement": the support's lines on the equivalent
+/// circle, where they start and where the run ended.
+struct ConvergenceConfinementFigures {
+  double radius_m = 0;            ///< the equivalent circle's
+  double lining_thickness_m = 0;  ///< the ring's on it (0: none)
+  std::vector<SupportLineFigures> support;
+  /// The first support stage's start: the key points' mean radial
+  /// displacement [mm] and the core's alpha then.
+  double install_radial_mm = 0, install_alpha = 0;
+  /// With insitu.install_at_face_distance.
+  struct FaceDistance {
+    double face_distance_m = 0, plastic_radius_m = 0, x_star = 0, r_star = 0, u_star = 0;
+    double alpha = 0;
+  };
+  std::optional<FaceDistance> face;
+  /// The end of the run: the key points' mean radial displacement [mm] and
+  /// the lining's pressure, its mean thrust over R [Pa] (none: no lining).
+  double end_radial_mm = 0;
+  std::optional<double> end_pressure_Pa;
+};
+
 /// One point of the ground reaction curve ("ground_reaction_curve"[i]).
 struct GroundReactionPoint {
   double support_pressure_ratio = 0;  ///< the core's factor alpha (not p/p0: ground_reaction.hpp)

@@ -252,6 +252,28 @@ nlohmann::json ground_reaction_json(const std::vector<GroundReactionPoint>& curv
   return j;
 }
 
+nlohmann::json convergence_confinement_json(const ConvergenceConfinementFigures& c) {
+  nlohmann::json support = nlohmann::json::array();
+  for (const SupportLineFigures& s : c.support)
+    support.push_back({{"name", s.name},
+                       {"p_max_Pa", s.p_max_Pa},
+                       {"stiffness_Pa_per_m", s.stiffness_Pa_per_m},
+                       {"max_displacement_mm", s.max_displacement_mm}});
+  nlohmann::json install = {{"radial_mm", c.install_radial_mm}, {"alpha", c.install_alpha}};
+  if (c.face)
+    install["face"] = {{"face_distance_m", c.face->face_distance_m},
+                       {"plastic_radius_m", c.face->plastic_radius_m},
+                       {"x_star", c.face->x_star},
+                       {"r_star", c.face->r_star},
+                       {"u_star", c.face->u_star},
+                       {"alpha", c.face->alpha}};
+  return {{"radius_m", c.radius_m},
+          {"lining_thickness_m", c.lining_thickness_m},
+          {"support", support},
+          {"installation", install},
+          {"end", {{"radial_mm", c.end_radial_mm}, {"pressure_Pa", or_null(c.end_pressure_Pa)}}}};
+}
+
 nlohmann::json bolt_json(const BoltFigures& b) {
   nlohmann::json j = {{"name", b.name},
                       {"kind", b.kind},
@@ -431,6 +453,12 @@ nlohmann::json counterpart_json(const CounterpartComparison& c) {
                       {"stress_rel_l2_end", c.stress_rel_l2_end},
                       {"stress_rel_l2_handoff", or_null(c.stress_rel_l2_handoff)},
                       {"key_points", key_points}};
+  for (const ContinuumGroundReactionPoint& p : c.ground_reaction) {
+    nlohmann::json point = {{"lambda", p.lambda}, {"key_points", nlohmann::json::object()}};
+    for (const auto& [name, k] : p.key_points)
+      point["key_points"][name] = {{"radial_mm", k.radial_mm}, {"pressure_Pa", k.pressure_Pa}};
+    j["ground_reaction"].push_back(point);
+  }
   if (!c.yield) return j;
   j["yielded_triangles"] = c.yield->triangles;
   for (const auto& [ray, depth] : c.yield->depth_m) j["yielded_depth_m"][ray] = depth;
@@ -639,6 +667,8 @@ nlohmann::json RunRecord::to_json() const {
   j["monitors"] = monitors_json(monitors);
   if (!ground_reaction_curve.empty())
     j["ground_reaction_curve"] = ground_reaction_json(ground_reaction_curve);
+  if (convergence_confinement)
+    j["convergence_confinement"] = convergence_confinement_json(*convergence_confinement);
   if (history_stages) j["history_stages"] = *history_stages;
   add_support(j, *this);
   if (comparison) j["comparison"] = comparison_json(*comparison);

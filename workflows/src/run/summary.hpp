@@ -70,6 +70,7 @@ class RunRecord {
   std::optional<FdemRecord> fdem;
   MonitorRecord monitors;
   std::vector<GroundReactionPoint> ground_reaction_curve;  ///< empty: not drawn (no key)
+  std::optional<ConvergenceConfinementFigures> convergence_confinement;
   /// The stages' kinds by number ("insitu" first): history.csv's stage
   /// column and fdem.stages[].stage index it.
   std::optional<std::vector<std::string>> history_stages;

@@ -976,6 +976,28 @@ void read_stages(const Reader& r, Scene& s) {
         "list the implicit stage first");
 }
 
+// insitu.install_at_face_distance sets the hand-off alpha, so the support
+// must go in at the hand-off: a lining or bolts stage before any soften
+// stage, the list's last alpha handed over, no lining in the implicit stage.
+void read_face_distance(const Reader& r, Scene& s) {
+  const char* key = "insitu.install_at_face_distance";
+  if (!r.has(key)) return;
+  s.insitu.install_at_face_distance = r.number(key);
+  if (s.mesh.kind != mesh::ModelKind::kTunnel && s.mesh.kind != mesh::ModelKind::kMshFile)
+    r.fail(key, "applies to tunnels and .msh models");
+  if (s.insitu.handoff_first_crack)
+    r.fail(key, "sets the hand-off alpha itself; allowed with insitu.handoff = \"last\"");
+  if (s.insitu.lining_active)
+    r.fail(key, "installs the support at the hand-off; allowed with insitu.lining_active = false");
+  for (const StageSpec& st : s.stages) {
+    if (st.kind == "lining" || st.kind == "bolts") return;
+    if (st.kind == "soften" || st.kind == "remove_core")
+      r.fail(key, "the support must go in at the hand-off: a lining or bolts stage before any " +
+                      st.kind + " stage");
+  }
+  r.fail(key, "needs a lining or bolts stage: there is no support to install");
+}
+
 mesh::ModelKind model_kind(const std::string& s) {
   if (s == "ucs") return mesh::ModelKind::kUcs;
   if (s == "brazilian") return mesh::ModelKind::kBrazilian;
@@ -1065,6 +1087,7 @@ Scene build_scene(const RawScene& raw, const std::string& base_dir) {
   read_references(r, s.references);
   read_bolts(r, s);
   read_stages(r, s);
+  read_face_distance(r, s);
   read_instruments(r, s);
   std::ostringstream canonical;
   canonical << raw.root;

@@ -440,6 +440,17 @@ void add_insitu(std::vector<KeySpec>& s) {
   s.push_back(number("insitu.dilation_angle", "deg", "0", 0, false, 90, true,
                      "Mohr-Coulomb continuum: the rock's dilation angle psi (0: no volume "
                      "change in plastic flow; at most materials.rock.friction_angle)."));
+  s.push_back(number(
+      "insitu.install_at_face_distance", "m", "", 0, false, 1000, false,
+      "Convergence-confinement: the support goes in this far behind the face. The "
+      "longitudinal displacement profile (Vlachopoulos and Diederichs 2009, with Salencon's "
+      "plastic radius of the equivalent circular opening) turns it into the fraction u* of the "
+      "final wall displacement, and the implicit stage's ground reaction curve into the core's "
+      "alpha at which the wall has moved that much; the implicit stage then hands over at that "
+      "alpha, where the support stages install (summary.json "
+      "convergence_confinement.installation). Needs a lining or bolts stage with no soften "
+      "stage before it, insitu.handoff = \"last\" and insitu.lining_active = false. Left "
+      "out: the support goes in at the last alpha of insitu.alpha."));
 }
 
 // The explicit engine, and the platens of specimen tests.

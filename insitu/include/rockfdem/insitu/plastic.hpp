@@ -49,6 +49,10 @@ struct PlasticSpec {
   int max_halvings = 8;         ///< halvings of one step before giving up
   /// Newton stops when ||residual|| <= tolerance * ||in-situ nodal forces||.
   double tolerance = 1e-9;
+  /// A release step that fails ends the sequence quietly: the fields of the
+  /// lambdas reached are returned (a ground reaction curve up to the
+  /// ground's collapse) instead of a NumericalError.
+  bool stop_at_failure = false;
 };
 
 struct PlasticField {

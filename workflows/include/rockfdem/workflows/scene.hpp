@@ -77,6 +77,10 @@ struct InsituSettings {
   /// Also solve the Mohr-Coulomb continuum with the FDEM's post-peak
   /// strength (c 0, residual friction): does the ground itself stand?
   bool continuum_post_peak{};
+  /// Convergence-confinement: the support goes in this far behind the face
+  /// [m]; the hand-off alpha follows from the longitudinal displacement
+  /// profile (outputs/face_distance.hpp). None: at the last alpha.
+  std::optional<double> install_at_face_distance;
 };
 
 struct EngineSettings {
