@@ -84,6 +84,13 @@
 // its near-null space (two translations and the rotation): with only the two
 // translations ML coarsens elasticity poorly. If CG does not converge the
 // direct solver takes over and the record says so.
+//
+// The alphas of one grid share what does not change (update_system,
+// solve_amg_cg): the dofs and sparsity, the host rock's part of the matrix
+// and loads (only cells whose law changed are assembled again, as the
+// difference of their laws), ML's hierarchy while CG stays fast with it, and
+// CG's start, projected from the earlier solutions. None of it changes the
+// answer: CG stops on the residual.
 #include <Epetra_MultiVector.h>
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/quadrature_lib.h>
@@ -117,6 +124,7 @@
 #include <memory>
 #include <numeric>
 #include <string>
+#include <type_traits>
 #include <unordered_map>
 #include <unordered_set>
 #include <vector>
@@ -177,7 +185,19 @@ class InsituProblem {
   void setup_system();
   void balance_removed_weight(double alpha);
   void assemble_system(double alpha);
-  void solve(InsituField& field);
+  // The stage a matrix (and the right-hand side assembled with it) holds:
+  // the roles and alpha it was last brought to, and the base correction (no
+  // roles: nothing assembled yet).
+  struct HeldStage {
+    std::vector<Role> role;
+    double alpha = 1;
+    double base_q0 = 0, base_q1 = 0;
+  };
+  template <class Matrix>
+  void update_system(double alpha, Matrix& matrix, HeldStage& held, bool with_loads);
+  void add_base_correction(const DoFHandler<2>::active_cell_iterator& cell, double dq0, double dq1,
+                           Vector<double>& cell_vector);
+  void solve(double alpha, InsituField& field);
   void output_results(double alpha, InsituField& field);
 
   // The constitutive law of one cell during this stage, see (2) and (3).
@@ -186,12 +206,19 @@ class InsituProblem {
     SymmetricTensor<2, 2> s0;
     Tensor<1, 2> b;
   };
-  CellLaw cell_law(int triangle, double alpha, const Point<2>& x) const;
+  CellLaw cell_law(int triangle, double alpha, const Point<2>& x) const {
+    return cell_law(role_[triangle], triangle, alpha, x);
+  }
+  CellLaw cell_law(Role role, int triangle, double alpha, const Point<2>& x) const;
   SymmetricTensor<2, 2> initial_stress(const Point<2>& x) const;
   double initial_szz(const Point<2>& x) const;
   Tensor<1, 2> boundary_traction(const Point<2>& x, const Tensor<1, 2>& normal) const;
+  void make_direct_matrix();
   void solve_direct();
-  int solve_amg_cg(double target_residual);
+  int solve_amg_cg(double target_residual, InsituField& field);
+  void build_amg();
+  void start_from_earlier_solutions();
+  void remember_solution();
   template <class CellVector>
   void add_boundary_tractions(const DoFHandler<2>::active_cell_iterator& cell, double sign,
                               CellVector& cell_vector);
@@ -224,8 +251,25 @@ class InsituProblem {
   AffineConstraints<double> constraints_;
   std::vector<types::global_dof_index> pinned_dofs_;
   SparsityPattern sparsity_pattern_;
+  // The stiffness lives in one matrix: deal.II's for UMFPACK, Trilinos' for
+  // AMG-CG (ML reads it, CG multiplies with it). Between alphas only the
+  // cells whose law changed are added again (update_system), and ML's
+  // hierarchy is kept while it still serves (solve_amg_cg). The right-hand
+  // side goes along with the matrix: only the changed cells' loads change.
+  bool use_cg_ = false;
   SparseMatrix<double> system_matrix_;
+  HeldStage direct_held_;
+  TrilinosWrappers::SparseMatrix cg_matrix_;
+  HeldStage cg_held_;
+  std::unique_ptr<TrilinosWrappers::PreconditionAMG> amg_;
+  std::vector<double> null_space_;    ///< ML keeps a pointer to it: lives with amg_
+  int amg_reference_iterations_ = 0;  ///< first solve after the last build
+  int last_iterations_ = 0;
   Vector<double> solution_;
+  // This grid's earlier solutions, orthonormalised: CG starts from the
+  // combination of them closest to the new solution (see
+  // start_from_earlier_solutions).
+  std::vector<Vector<double>> earlier_solutions_;
   Vector<double> system_rhs_;
   Vector<double> insitu_forces_;  ///< int sigma0 : eps(phi_i): the load scale
 
@@ -293,7 +337,7 @@ std::vector<InsituField> InsituProblem::run() {
     field.assembly_seconds = timer.wall_time();
 
     timer.restart();
-    solve(field);
+    solve(alpha, field);
     field.solve_seconds = timer.wall_time();
 
     timer.restart();
@@ -353,6 +397,11 @@ void InsituProblem::make_grid() {
 void InsituProblem::setup_system() {
   if (have_system_) return;
   system_matrix_.clear();  // it holds a pointer to the pattern we replace
+  cg_matrix_.clear();
+  amg_.reset();
+  earlier_solutions_.clear();
+  direct_held_ = HeldStage();
+  cg_held_ = HeldStage();
   dof_handler_.reinit(triangulation_);
   dof_handler_.distribute_dofs(fe_);
 
@@ -361,10 +410,20 @@ void InsituProblem::setup_system() {
   for (const auto dof : pinned_dofs_) constraints_.add_line(dof);
   constraints_.close();
 
-  DynamicSparsityPattern dsp(dof_handler_.n_dofs(), dof_handler_.n_dofs());
-  DoFTools::make_sparsity_pattern(dof_handler_, dsp, constraints_, false);
-  sparsity_pattern_.copy_from(dsp);
-  system_matrix_.reinit(sparsity_pattern_);
+  // The matrix the solver needs, and only that one (Trilinos keeps its own
+  // copy of the pattern: deal.II's is made only for UMFPACK).
+  const SolverSpec& s = spec_.solver;
+  const bool small = dof_handler_.n_dofs() < s.direct_below_dofs;
+  const bool want_cg = s.kind == LinearSolver::kAmgCg || (s.kind == LinearSolver::kAuto && !small);
+  use_cg_ = want_cg && ScopedParallelInit::active();
+  sparsity_pattern_.reinit(0, 0, 0);
+  if (use_cg_) {
+    DynamicSparsityPattern dsp(dof_handler_.n_dofs(), dof_handler_.n_dofs());
+    DoFTools::make_sparsity_pattern(dof_handler_, dsp, constraints_, false);
+    cg_matrix_.reinit(dsp);
+  } else {
+    make_direct_matrix();
+  }
   solution_.reinit(dof_handler_.n_dofs());
   system_rhs_.reinit(dof_handler_.n_dofs());
   insitu_forces_.reinit(dof_handler_.n_dofs());
@@ -405,11 +464,11 @@ Tensor<1, 2> InsituProblem::boundary_traction(const Point<2>& x, const Tensor<1,
   return sigma * normal;
 }
 
-InsituProblem::CellLaw InsituProblem::cell_law(const int triangle, const double alpha,
-                                               const Point<2>& x) const {
+InsituProblem::CellLaw InsituProblem::cell_law(const Role role, const int triangle,
+                                               const double alpha, const Point<2>& x) const {
   Tensor<1, 2> gravity;
   gravity[1] = -spec_.gravity.unit_weight;
-  switch (role_[triangle]) {
+  switch (role) {
     case Role::kRock:
       return {C_rock_, initial_stress(x), gravity};
     case Role::kGround:
@@ -418,9 +477,8 @@ InsituProblem::CellLaw InsituProblem::cell_law(const int triangle, const double 
       // The lining's weight is not part of the in-situ stage.
       return {C_lining_, -(C_lining_ * eps_install_[triangle]), Tensor<1, 2>()};
     case Role::kRemoved:
-      break;
+      break;  // carries nothing (and holds nothing in a matrix not yet assembled)
   }
-  Assert(false, ExcInternalError());
   return {};
 }
 
@@ -440,6 +498,25 @@ void InsituProblem::add_boundary_tractions(const DoFHandler<2>::active_cell_iter
       for (const unsigned int i : fe_face_values.dof_indices())
         cell_vector(i) +=
             sign * (fe_face_values[displacement].value(i, q) * t) * fe_face_values.JxW(q);
+    }
+  }
+}
+
+// The change of the base correction alone, on the base faces of a cell
+// (the rest of the box traction does not change between stages).
+void InsituProblem::add_base_correction(const DoFHandler<2>::active_cell_iterator& cell,
+                                        const double dq0, const double dq1,
+                                        Vector<double>& cell_vector) {
+  FEFaceValues<2>& fe_face_values = *fe_face_values_;
+  const FEValuesExtractors::Vector displacement(0);
+  for (const unsigned int f : cell->face_indices()) {
+    if (!cell->face(f)->at_boundary() || cell->face(f)->user_index() != kBase) continue;
+    fe_face_values.reinit(cell, f);
+    for (const unsigned int q : fe_face_values.quadrature_point_indices()) {
+      Tensor<1, 2> t;
+      t[1] = dq0 + dq1 * (fe_face_values.quadrature_point(q)[0] - base_x_);
+      for (const unsigned int i : fe_face_values.dof_indices())
+        cell_vector(i) += (fe_face_values[displacement].value(i, q) * t) * fe_face_values.JxW(q);
     }
   }
 }
@@ -490,13 +567,36 @@ void InsituProblem::balance_removed_weight(const double alpha) {
 // ---------------------------------------------------------------------------
 
 void InsituProblem::assemble_system(const double alpha) {
-  system_matrix_ = 0;
-  system_rhs_ = 0;
-  insitu_forces_ = 0;
+  if (use_cg_)
+    update_system(alpha, cg_matrix_, cg_held_, true);
+  else
+    update_system(alpha, system_matrix_, direct_held_, true);
+}
+
+// The weak form (3) is linear in each cell's law (D, s0, b), so bringing the
+// matrix and right-hand side from the stage they hold to this one means
+// adding, cell by cell, the terms of law_now - law_held, and only on the
+// cells whose law changed: the softened core at every alpha, the ring when
+// the lining goes in. The host rock, most of the grid, and the box
+// tractions are assembled once per grid; of the loads only the base
+// correction (gravity) changes besides. A system that holds nothing gets
+// every cell, and the in-situ nodal forces that scale the tolerances.
+// (The rows of the pinned dofs only get a positive diagonal and a zero
+// right-hand side.)
+template <class Matrix>
+void InsituProblem::update_system(const double alpha, Matrix& matrix, HeldStage& held,
+                                  const bool with_loads) {
+  const bool empty = held.role.empty();
+  if (empty && with_loads) {
+    system_rhs_ = 0;
+    insitu_forces_ = 0;
+  }
+  const double dq0 = base_q0_ - (empty ? 0.0 : held.base_q0);
+  const double dq1 = base_q1_ - (empty ? 0.0 : held.base_q1);
+  const bool base_changed = with_loads && !empty && (dq0 != 0 || dq1 != 0);
 
   FEValues<2>& fe_values = *fe_values_;
   const FEValuesExtractors::Vector displacement(0);
-
   const unsigned int dofs_per_cell = fe_.n_dofs_per_cell();
   FullMatrix<double> cell_matrix(dofs_per_cell, dofs_per_cell);
   Vector<double> cell_rhs(dofs_per_cell);
@@ -505,85 +605,204 @@ void InsituProblem::assemble_system(const double alpha) {
   std::vector<SymmetricTensor<2, 2>> eps_phi(dofs_per_cell);
 
   for (const auto& cell : dof_handler_.active_cell_iterators()) {
+    const int t = cell_to_triangle_[cell->active_cell_index()];
+    const Role held_role = empty ? Role::kRemoved : held.role[t];
+    const bool changed =
+        held_role != role_[t] || (role_[t] == Role::kGround && held.alpha != alpha);
+    if (!changed) {
+      if (!base_changed || !cell->at_boundary()) continue;
+      cell_rhs = 0;
+      add_base_correction(cell, dq0, dq1, cell_rhs);
+      cell->get_dof_indices(local_dof_indices);
+      constraints_.distribute_local_to_global(cell_rhs, local_dof_indices, system_rhs_);
+      continue;
+    }
+    fe_values.reinit(cell);
     cell_matrix = 0;
     cell_rhs = 0;
     cell_insitu = 0;
-    fe_values.reinit(cell);
-    const int triangle = cell_to_triangle_[cell->active_cell_index()];
-
     for (const unsigned int q : fe_values.quadrature_point_indices()) {
       const Point<2>& x = fe_values.quadrature_point(q);
-      const CellLaw law = cell_law(triangle, alpha, x);
+      const CellLaw now = cell_law(t, alpha, x);
+      const CellLaw before = cell_law(held_role, t, held.alpha, x);
+      const SymmetricTensor<4, 2> D = now.D - before.D;
+      const SymmetricTensor<2, 2> s0 = now.s0 - before.s0;
+      const Tensor<1, 2> b = now.b - before.b;
       const SymmetricTensor<2, 2> sigma0 = initial_stress(x);
       const double JxW = fe_values.JxW(q);
       for (const unsigned int i : fe_values.dof_indices())
         eps_phi[i] = fe_values[displacement].symmetric_gradient(i, q);
-
       for (const unsigned int i : fe_values.dof_indices()) {
-        const SymmetricTensor<2, 2> D_eps_i = law.D * eps_phi[i];
+        const SymmetricTensor<2, 2> D_eps_i = D * eps_phi[i];
         for (const unsigned int j : fe_values.dof_indices())
           cell_matrix(i, j) += (D_eps_i * eps_phi[j]) * JxW;
-        cell_rhs(i) += (fe_values[displacement].value(i, q) * law.b - eps_phi[i] * law.s0) * JxW;
+        cell_rhs(i) += (fe_values[displacement].value(i, q) * b - eps_phi[i] * s0) * JxW;
         cell_insitu(i) += (eps_phi[i] * sigma0) * JxW;
       }
     }
-    add_boundary_tractions(cell, +1.0, cell_rhs);
+    if (empty)
+      add_boundary_tractions(cell, +1.0, cell_rhs);
+    else if (base_changed)
+      add_base_correction(cell, dq0, dq1, cell_rhs);
 
     cell->get_dof_indices(local_dof_indices);
-    constraints_.distribute_local_to_global(cell_matrix, cell_rhs, local_dof_indices,
-                                            system_matrix_, system_rhs_);
-    insitu_forces_.add(local_dof_indices, cell_insitu);
+    if (!with_loads) {
+      constraints_.distribute_local_to_global(cell_matrix, local_dof_indices, matrix);
+      continue;
+    }
+    constraints_.distribute_local_to_global(cell_matrix, cell_rhs, local_dof_indices, matrix,
+                                            system_rhs_);
+    if (empty) insitu_forces_.add(local_dof_indices, cell_insitu);
   }
+  if constexpr (std::is_same_v<Matrix, TrilinosWrappers::SparseMatrix>)
+    matrix.compress(VectorOperation::add);
+  held.role = role_;
+  held.alpha = alpha;
+  held.base_q0 = base_q0_;
+  held.base_q1 = base_q1_;
 }
 
 // ---------------------------------------------------------------------------
 // solve(): AMG-CG or UMFPACK, with the fallback.
 // ---------------------------------------------------------------------------
 
-void InsituProblem::solve(InsituField& field) {
+void InsituProblem::solve(const double alpha, InsituField& field) {
   field.n_dofs = dof_handler_.n_dofs();
   field.n_cells = triangulation_.n_active_cells();
-  solution_ = 0;
 
-  const SolverSpec& s = spec_.solver;
-  const bool small = field.n_dofs < s.direct_below_dofs;
-  const bool want_cg = s.kind == LinearSolver::kAmgCg || (s.kind == LinearSolver::kAuto && !small);
   // CG stops at an absolute residual scaled by the in-situ nodal forces, not
   // by the right-hand side: at alpha = 1 the latter is round-off, and nothing
-  // is to be gained by reducing it further.
-  const double target = s.tolerance * insitu_forces_.l2_norm();
+  // is to be gained by reducing it further. The test is on the residual, so
+  // where CG starts (the previous alpha's solution) does not change what it
+  // delivers.
+  const double target = spec_.solver.tolerance * insitu_forces_.l2_norm();
 
-  if (want_cg && !ScopedParallelInit::active()) {
-    field.solver = "direct (no MPI runtime: create ScopedParallelInit in main for AMG)";
+  if (!use_cg_) {
+    const bool wanted_cg = spec_.solver.kind == LinearSolver::kAmgCg ||
+                           (spec_.solver.kind == LinearSolver::kAuto &&
+                            field.n_dofs >= spec_.solver.direct_below_dofs);
+    field.solver =
+        wanted_cg ? "direct (no MPI runtime: create ScopedParallelInit in main for AMG)" : "direct";
     solve_direct();
-  } else if (want_cg) {
+  } else {
     try {
-      field.iterations = solve_amg_cg(target);
+      field.iterations = solve_amg_cg(target, field);
       field.solver = "amg-cg";
     } catch (const SolverControl::NoConvergence& e) {
       field.iterations = static_cast<int>(e.last_step);
       field.solver = "direct (cg stopped at " + std::to_string(e.last_step) + " iterations)";
-      solution_ = 0;
+      amg_.reset();
+      // UMFPACK takes deal.II's matrix: assembled for this alpha only.
+      make_direct_matrix();
+      HeldStage held;
+      update_system(alpha, system_matrix_, held, false);
       solve_direct();
+      system_matrix_.clear();
+      sparsity_pattern_.reinit(0, 0, 0);
     }
-  } else {
-    field.solver = "direct";
-    solve_direct();
   }
   constraints_.distribute(solution_);
 }
 
+void InsituProblem::make_direct_matrix() {
+  DynamicSparsityPattern dsp(dof_handler_.n_dofs(), dof_handler_.n_dofs());
+  DoFTools::make_sparsity_pattern(dof_handler_, dsp, constraints_, false);
+  sparsity_pattern_.copy_from(dsp);
+  system_matrix_.reinit(sparsity_pattern_);
+}
+
 void InsituProblem::solve_direct() { grid::solve_direct(system_matrix_, solution_, system_rhs_); }
 
-int InsituProblem::solve_amg_cg(const double target_residual) {
-  // ML works on a Trilinos copy of the matrix; CG itself runs on deal.II's.
-  TrilinosWrappers::SparseMatrix trilinos_matrix;
-  trilinos_matrix.reinit(system_matrix_);
+// ML's hierarchy is built on the first matrix of a grid and kept for the
+// alphas after it: the preconditioner only sets how fast CG converges, never
+// what it converges to, and the matrices of neighbouring alphas differ in the
+// core only. It is built again when CG has slowed down to more than
+// kRebuildGrowth times the iterations it needed right after the last build,
+// or when a solve with the kept hierarchy does not converge. ML reads the
+// matrix through a pointer: the kept hierarchy's finest level multiplies with
+// this alpha's matrix, its smoother and coarse levels are the build's.
+int InsituProblem::solve_amg_cg(const double target_residual, InsituField& field) {
+  constexpr double kRebuildGrowth = 1.5;
+  const bool slowed = amg_reference_iterations_ > 0 &&
+                      last_iterations_ > kRebuildGrowth * amg_reference_iterations_;
+  start_from_earlier_solutions();
 
+  // Nothing to solve (alpha = 1: the right-hand side is round-off): no
+  // hierarchy is built for it.
+  Vector<double> residual(solution_.size());
+  cg_matrix_.vmult(residual, solution_);
+  residual.sadd(-1.0, 1.0, system_rhs_);
+  if (residual.l2_norm() <= target_residual) return 0;
+
+  field.preconditioner_reused = amg_ && !slowed;
+  if (!field.preconditioner_reused) build_amg();
+
+  const auto run_cg = [&] {
+    SolverControl control(spec_.solver.max_iterations, target_residual, false, false);
+    SolverCG<Vector<double>> cg(control);
+    cg.solve(cg_matrix_, solution_, system_rhs_, *amg_);
+    return static_cast<int>(control.last_step());
+  };
+  int iterations = 0;
+  try {
+    iterations = run_cg();
+  } catch (const SolverControl::NoConvergence&) {
+    if (!field.preconditioner_reused) throw;
+    field.preconditioner_reused = false;
+    build_amg();
+    iterations = run_cg();
+  }
+  if (amg_reference_iterations_ == 0) amg_reference_iterations_ = iterations;
+  last_iterations_ = iterations;
+  remember_solution();
+  return iterations;
+}
+
+// CG's start: the combination of this grid's earlier solutions closest to
+// the new one in the energy norm, i.e. the Galerkin projection of
+// K u = f onto their span (m products with K and an m x m solve, m <= the
+// number of alphas so far). The fields are smooth in alpha, so a few of
+// them span most of the next one; the previous solution alone is the
+// crudest member of that span. Only the start changes: CG's stopping test
+// is on the residual.
+void InsituProblem::start_from_earlier_solutions() {
+  const std::size_t m = earlier_solutions_.size();
+  if (m == 0) return;
+  FullMatrix<double> G(m, m);
+  Vector<double> g(m), K_w(solution_.size());
+  for (std::size_t i = 0; i < m; ++i) {
+    cg_matrix_.vmult(K_w, earlier_solutions_[i]);
+    for (std::size_t j = 0; j < m; ++j) G(j, i) = earlier_solutions_[j] * K_w;
+    g(i) = earlier_solutions_[i] * system_rhs_;
+  }
+  G.gauss_jordan();
+  Vector<double> c(m);
+  G.vmult(c, g);
+  solution_ = 0;
+  for (std::size_t i = 0; i < m; ++i) solution_.add(c(i), earlier_solutions_[i]);
+}
+
+// Adds this solution's new direction to the basis (Gram-Schmidt, twice for
+// round-off); a solution the basis already spans adds nothing.
+void InsituProblem::remember_solution() {
+  constexpr std::size_t kMaxBasis = 8;
+  const double norm = solution_.l2_norm();
+  if (norm == 0) return;
+  Vector<double> w = solution_;
+  for (int pass = 0; pass < 2; ++pass)
+    for (const Vector<double>& b : earlier_solutions_) w.add(-(w * b), b);
+  const double rest = w.l2_norm();
+  if (rest <= 1e-8 * norm) return;
+  w /= rest;
+  if (earlier_solutions_.size() == kMaxBasis) earlier_solutions_.erase(earlier_solutions_.begin());
+  earlier_solutions_.push_back(std::move(w));
+}
+
+void InsituProblem::build_amg() {
   // The near-null space: the rigid motions of the plate, evaluated at every
   // vertex dof. ML wants them as columns of one array in dof order.
   const std::size_t n = dof_handler_.n_dofs();
-  std::vector<double> null_space(3 * n, 0.0);
+  null_space_.assign(3 * n, 0.0);
   Point<2> center;
   double extent = 0;
   for (const auto& v : triangulation_.get_vertices()) center += v / triangulation_.n_vertices();
@@ -594,10 +813,10 @@ int InsituProblem::solve_amg_cg(const double target_residual) {
     for (const unsigned int v : cell->vertex_indices()) {
       const auto dx = cell->vertex_dof_index(v, 0), dy = cell->vertex_dof_index(v, 1);
       const Tensor<1, 2> p = (cell->vertex(v) - center) / extent;
-      null_space[0 * n + dx] = 1;
-      null_space[1 * n + dy] = 1;
-      null_space[2 * n + dx] = -p[1];
-      null_space[2 * n + dy] = p[0];
+      null_space_[0 * n + dx] = 1;
+      null_space_[1 * n + dy] = 1;
+      null_space_[2 * n + dx] = -p[1];
+      null_space_[2 * n + dy] = p[0];
       node_blocks = node_blocks && dx % 2 == 0 && dy == dx + 1;
     }
 
@@ -608,19 +827,16 @@ int InsituProblem::solve_amg_cg(const double target_residual) {
   data.aggregation_threshold = 1e-3;
   Teuchos::ParameterList parameters;
   std::unique_ptr<Epetra_MultiVector> distributed_modes;
-  data.set_parameters(parameters, distributed_modes, trilinos_matrix);
+  data.set_parameters(parameters, distributed_modes, cg_matrix_);
   parameters.set("PDE equations", node_blocks ? 2 : 1);
   parameters.set("null space: type", "pre-computed");
   parameters.set("null space: dimension", 3);
-  parameters.set("null space: vectors", null_space.data());
+  parameters.set("null space: vectors", null_space_.data());
 
-  TrilinosWrappers::PreconditionAMG amg;
-  amg.initialize(trilinos_matrix, parameters);
-
-  SolverControl control(spec_.solver.max_iterations, target_residual, false, false);
-  SolverCG<Vector<double>> cg(control);
-  cg.solve(system_matrix_, solution_, system_rhs_, amg);
-  return static_cast<int>(control.last_step());
+  amg_ = std::make_unique<TrilinosWrappers::PreconditionAMG>();
+  amg_->initialize(cg_matrix_, parameters);
+  amg_reference_iterations_ = 0;
+  last_iterations_ = 0;
 }
 
 // ---------------------------------------------------------------------------

@@ -145,9 +145,10 @@ std::string timing_table(const std::vector<InsituField>& fields) {
   os << line;
   for (const auto& f : fields) {
     std::snprintf(line, sizeof line, "%8.4g %9zu %9zu %-26s %5d %9.3f %9.3f %9.3f %9.3f %10.2e\n",
-                  f.alpha, f.n_cells, f.n_dofs, f.solver.substr(0, 26).c_str(), f.iterations,
-                  f.setup_seconds, f.assembly_seconds, f.solve_seconds, f.total_seconds,
-                  f.unbalanced_ratio);
+                  f.alpha, f.n_cells, f.n_dofs,
+                  (f.solver + (f.preconditioner_reused ? " (kept)" : "")).substr(0, 26).c_str(),
+                  f.iterations, f.setup_seconds, f.assembly_seconds, f.solve_seconds,
+                  f.total_seconds, f.unbalanced_ratio);
     os << line;
   }
   return os.str();

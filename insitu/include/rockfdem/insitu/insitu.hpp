@@ -161,6 +161,9 @@ struct InsituField {
   // Solver report.
   std::string solver;  ///< "direct", "amg-cg", "direct (cg failed: ...)"
   int iterations = 0;  ///< CG iterations (0 for direct)
+  /// AMG-CG: the hierarchy built for an earlier alpha (same grid) served this
+  /// solve; false when it was built for this one.
+  bool preconditioner_reused = false;
   std::size_t n_dofs = 0;
   std::size_t n_cells = 0;
   double setup_seconds = 0;  ///< triangulation, dofs, sparsity
