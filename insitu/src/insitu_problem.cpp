@@ -259,7 +259,9 @@ class InsituProblem {
   bool use_cg_ = false;
   SparseMatrix<double> system_matrix_;
   HeldStage direct_held_;
-  TrilinosWrappers::SparseMatrix cg_matrix_;
+  // Built only with the MPI runtime: even an empty Trilinos matrix asks MPI
+  // for its communicator.
+  std::unique_ptr<TrilinosWrappers::SparseMatrix> cg_matrix_;
   HeldStage cg_held_;
   std::unique_ptr<TrilinosWrappers::PreconditionAMG> amg_;
   std::vector<double> null_space_;    ///< ML keeps a pointer to it: lives with amg_
@@ -397,7 +399,7 @@ void InsituProblem::make_grid() {
 void InsituProblem::setup_system() {
   if (have_system_) return;
   system_matrix_.clear();  // it holds a pointer to the pattern we replace
-  cg_matrix_.clear();
+  cg_matrix_.reset();
   amg_.reset();
   earlier_solutions_.clear();
   direct_held_ = HeldStage();
@@ -420,7 +422,8 @@ void InsituProblem::setup_system() {
   if (use_cg_) {
     DynamicSparsityPattern dsp(dof_handler_.n_dofs(), dof_handler_.n_dofs());
     DoFTools::make_sparsity_pattern(dof_handler_, dsp, constraints_, false);
-    cg_matrix_.reinit(dsp);
+    cg_matrix_ = std::make_unique<TrilinosWrappers::SparseMatrix>();
+    cg_matrix_->reinit(dsp);
   } else {
     make_direct_matrix();
   }
@@ -568,7 +571,7 @@ void InsituProblem::balance_removed_weight(const double alpha) {
 
 void InsituProblem::assemble_system(const double alpha) {
   if (use_cg_)
-    update_system(alpha, cg_matrix_, cg_held_, true);
+    update_system(alpha, *cg_matrix_, cg_held_, true);
   else
     update_system(alpha, system_matrix_, direct_held_, true);
 }
@@ -730,7 +733,7 @@ int InsituProblem::solve_amg_cg(const double target_residual, InsituField& field
   // Nothing to solve (alpha = 1: the right-hand side is round-off): no
   // hierarchy is built for it.
   Vector<double> residual(solution_.size());
-  cg_matrix_.vmult(residual, solution_);
+  cg_matrix_->vmult(residual, solution_);
   residual.sadd(-1.0, 1.0, system_rhs_);
   if (residual.l2_norm() <= target_residual) return 0;
 
@@ -740,7 +743,7 @@ int InsituProblem::solve_amg_cg(const double target_residual, InsituField& field
   const auto run_cg = [&] {
     SolverControl control(spec_.solver.max_iterations, target_residual, false, false);
     SolverCG<Vector<double>> cg(control);
-    cg.solve(cg_matrix_, solution_, system_rhs_, *amg_);
+    cg.solve(*cg_matrix_, solution_, system_rhs_, *amg_);
     return static_cast<int>(control.last_step());
   };
   int iterations = 0;
@@ -771,7 +774,7 @@ void InsituProblem::start_from_earlier_solutions() {
   FullMatrix<double> G(m, m);
   Vector<double> g(m), K_w(solution_.size());
   for (std::size_t i = 0; i < m; ++i) {
-    cg_matrix_.vmult(K_w, earlier_solutions_[i]);
+    cg_matrix_->vmult(K_w, earlier_solutions_[i]);
     for (std::size_t j = 0; j < m; ++j) G(j, i) = earlier_solutions_[j] * K_w;
     g(i) = earlier_solutions_[i] * system_rhs_;
   }
@@ -827,14 +830,14 @@ void InsituProblem::build_amg() {
   data.aggregation_threshold = 1e-3;
   Teuchos::ParameterList parameters;
   std::unique_ptr<Epetra_MultiVector> distributed_modes;
-  data.set_parameters(parameters, distributed_modes, cg_matrix_);
+  data.set_parameters(parameters, distributed_modes, *cg_matrix_);
   parameters.set("PDE equations", node_blocks ? 2 : 1);
   parameters.set("null space: type", "pre-computed");
   parameters.set("null space: dimension", 3);
   parameters.set("null space: vectors", null_space_.data());
 
   amg_ = std::make_unique<TrilinosWrappers::PreconditionAMG>();
-  amg_->initialize(cg_matrix_, parameters);
+  amg_->initialize(*cg_matrix_, parameters);
   amg_reference_iterations_ = 0;
   last_iterations_ = 0;
 }

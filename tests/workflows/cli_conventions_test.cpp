@@ -192,7 +192,7 @@ TEST(CliConventions, set_errors_are_blamed_on_the_set) {
 
 // A small tunnel run with overrides; its folder's scene.toml, run without
 // any, gives the same state bit for bit. The summary lists the overrides,
-// has format_version 2 and only snake_case keys.
+// has format_version 3 and only snake_case keys.
 TEST(RunFolder, scene_toml_repeats_the_run_with_its_overrides) {
   const std::vector<std::string> sets = {"insitu.alpha=[1.0,0.2]", "engine.steps=300",
                                          "output.every_steps=100", "output.plots=false",
@@ -204,7 +204,7 @@ TEST(RunFolder, scene_toml_repeats_the_run_with_its_overrides) {
       run("run " + kTestDir + "/good_circular.toml -q -j 1" + args + " -o " + first.string());
   ASSERT_EQ(r.code, 0) << r.output;
   const nlohmann::json j = read_json(first / "summary.json");
-  EXPECT_EQ(j["format_version"], 2);
+  EXPECT_EQ(j["format_version"], 3);
   EXPECT_EQ(j["overrides"], nlohmann::json(sets));
   expect_snake_case_keys(j, "summary");
   EXPECT_TRUE(j["timings"].contains("fdem_setup")) << j["timings"];

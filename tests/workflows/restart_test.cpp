@@ -85,6 +85,7 @@ std::string refusal(const std::string& path) {
 nlohmann::json valid_run_state() {
   const nlohmann::json report = {
       {"kind", "lining"},
+      {"stage", 1},
       {"changes", nlohmann::json::object()},
       {"steps", 0},
       {"simulated_time", 0.0},
@@ -556,6 +557,7 @@ TEST(CheckpointRead, forged_run_states_name_the_checkpoint_and_the_field) {
       {"/stages/unstable", false, "field 'stages.unstable' = false is not a string"},
       {"/stages/alpha", removed, "field 'stages.alpha' is missing (expected a number)"},
       {"/stages/report/0/steps", removed, "field 'stages.report[0].steps' is missing"},
+      {"/stages/report/0/stage", "1", "field 'stages.report[0].stage' = \"1\" is not an integer"},
       {"/stages/report/0/criteria", 1, "field 'stages.report[0].criteria' = 1 is not an object"},
       {"/stages/report/0/simulated_time", removed,
        "field 'stages.report[0].simulated_time' is missing (expected a number)"},
