@@ -182,7 +182,7 @@ TEST(Report, tunnel_run_writes_a_report_with_the_summary_figures) {
 // of the FDEM and of its continuum counterpart: summary.json's
 // continuum_comparison [ux, uy] projected on the key point's inward
 // direction (monitors.<point>.inward), to the 0.01 mm the table prints.
-TEST(Report, continuum_counterpart_section_projects_the_summary_figures) {
+TEST(Report, continuum_and_convergence_confinement_sections_project_the_summary) {
   const fs::path out = scratch("report-continuum");
   const Result r = run("run " + kTestDir + "/grout_trigger.toml -q -j 1 -o " + out.string() +
                        " --set stages[4].trigger_steps=20");
@@ -206,6 +206,22 @@ TEST(Report, continuum_counterpart_section_projects_the_summary_figures) {
     EXPECT_NEAR(std::stod(cells[2]), radial("continuum_end_mm"), 0.006) << p;
     EXPECT_NEAR(std::stod(cells[3]), radial("fdem_end_mm") - radial("continuum_end_mm"), 0.006)
         << p;
+  }
+  // Convergence-confinement: each support line's meeting with the ground
+  // as summary.json states it.
+  const std::size_t cc = md.find("## Convergence-confinement");
+  ASSERT_NE(cc, std::string::npos) << md;
+  const std::string lines = md.substr(cc, md.find("\n## ", cc + 1) - cc);
+  const nlohmann::json& eq = j.at("convergence_confinement").at("equilibrium");
+  ASSERT_FALSE(eq.empty());
+  for (const nlohmann::json& e : eq) {
+    const auto cells = row_of(lines, e.at("name").get<std::string>());
+    ASSERT_EQ(cells.size(), 8u) << lines;
+    if (!e.at("found").get<bool>()) continue;
+    EXPECT_NEAR(std::stod(cells[4]), e.at("radial_mm").get<double>(), 0.06) << cells[0];
+    if (e.at("factor_of_safety").is_number()) {
+      EXPECT_NEAR(std::stod(cells[6]), e.at("factor_of_safety").get<double>(), 0.006) << cells[0];
+    }
   }
   fs::remove_all(out);
 }

@@ -11,6 +11,7 @@
 #include "rockfdem/workflows/version.hpp"
 #include "run/number_text.hpp"
 #include "run/output_dir.hpp"
+#include "run/support_equilibrium.hpp"
 #include "stages/registry.hpp"
 #include "stages/stage.hpp"
 
@@ -440,6 +441,54 @@ void continuum(std::ostream& md, const RunRecord& r) {
     md << "\nYielded triangles in the continuum: " << value_text(long(c.yield->triangles)) << ".\n";
 }
 
+// The support lines against the ground's curve (summary
+// convergence_confinement): the method's equilibrium beside the run's end.
+void convergence_confinement(std::ostream& md, const RunRecord& r) {
+  if (!r.convergence_confinement || r.convergence_confinement->support.empty()) return;
+  const ConvergenceConfinementFigures& c = *r.convergence_confinement;
+  const std::optional<GroundCurve> g =
+      ground_curve(r.ground_reaction_curve, r.continuum_comparison);
+  md << "\n## Convergence-confinement\n\nThe support lines on the equivalent circle (R = "
+     << fixed(c.radius_m, 2) << " m";
+  if (c.lining_thickness_m > 0) md << ", ring " << fixed(c.lining_thickness_m, 2) << " m thick";
+  md << "), installed at the key points' mean radial displacement of "
+     << fixed(c.install_radial_mm, 1) << " mm from the in-situ state (core at alpha "
+     << sig(c.install_alpha) << ")";
+  if (!g) {
+    md << "; no ground reaction curve to meet (fewer than two implicit solves).\n";
+    return;
+  }
+  md << ", against the ground's curve: "
+     << (g->source == "mohr_coulomb"
+             ? "the Mohr-Coulomb counterpart's unsupported release"
+             : std::string("the implicit (elastic) stage's") +
+                   (g->extended_to_zero ? ", carried on straight to p = 0" : ""))
+     << " (key points' mean). Where a line meets it is the method's equilibrium; p_max over "
+        "the pressure there is the support's factor of safety.\n\n| support | p_max [MPa] | "
+        "K [MPa/m] | p_max after [mm] | meets the ground at [mm] | pressure [MPa] | factor "
+        "of safety | |\n|---|---|---|---|---|---|---|---|\n";
+  const std::vector<SupportEquilibrium> eq = support_equilibria(c, *g);
+  for (std::size_t i = 0; i < eq.size(); ++i) {
+    const SupportLineFigures& s = c.support[i];
+    const SupportEquilibrium& e = eq[i];
+    md << "| " << s.name << " | " << sig(s.p_max_Pa / 1e6) << " | "
+       << sig(s.stiffness_Pa_per_m / 1e6) << " | " << fixed(s.max_displacement_mm, 1) << " | "
+       << (e.found ? fixed(e.radial_mm, 1) : "-") << " | "
+       << (e.found ? sig(e.pressure_Pa / 1e6) : "-") << " | "
+       << (e.factor_of_safety ? fixed(*e.factor_of_safety, 2) : "-") << " | " << e.note << " |\n";
+  }
+  md << "\nThe run ended at " << fixed(c.end_radial_mm, 1) << " mm";
+  if (c.end_pressure_Pa) {
+    md << " with the ring's pressure (its mean thrust over R) at " << sig(*c.end_pressure_Pa / 1e6)
+       << " MPa";
+    for (const SupportLineFigures& s : c.support)
+      if (s.name == "shotcrete" && s.p_max_Pa > 0)
+        md << ", " << fixed(*c.end_pressure_Pa / s.p_max_Pa, 2) << " times the ring's p_max";
+  }
+  md << ": what differs from the equilibria above is what the continuum curve leaves out "
+        "(fracture, gravity, the stages after the installation).\n";
+}
+
 // The post-peak continuum's verdict (insitu.continuum_post_peak).
 void post_peak(std::ostream& md, const std::optional<PostPeakCounterpart>& p) {
   if (!p) return;
@@ -483,6 +532,7 @@ std::string report_markdown(const Scene& scene, const RunRecord& record,
   broken_zone(md, record.state.broken, record.broken_zone);
   instruments(md, record);
   continuum(md, record);
+  convergence_confinement(md, record);
   post_peak(md, record.continuum_post_peak);
   pictures(md, extras);
   return printable(md.str(), true);  // any scene text above (group names, paths) too

@@ -9,6 +9,7 @@
 #include "rockfdem/mesh/build.hpp"
 #include "rockfdem/workflows/scene.hpp"
 #include "rockfdem/workflows/version.hpp"
+#include "run/support_equilibrium.hpp"
 
 namespace rockfdem::workflows {
 namespace {
@@ -250,6 +251,23 @@ nlohmann::json ground_reaction_json(const std::vector<GroundReactionPoint>& curv
                                       {"pressure_ratio", k.pressure_Pa / k.insitu_Pa}};
   }
   return j;
+}
+
+// Where each support line meets the ground's curve (support_equilibrium.hpp).
+void add_equilibria(nlohmann::json& j, const ConvergenceConfinementFigures& c,
+                    const std::vector<GroundReactionPoint>& implicit,
+                    const std::optional<CounterpartComparison>& counterpart) {
+  const std::optional<GroundCurve> g = ground_curve(implicit, counterpart);
+  if (!g) return;
+  j["ground_curve"] = {{"source", g->source}, {"extended_to_zero", g->extended_to_zero}};
+  j["equilibrium"] = nlohmann::json::array();
+  for (const SupportEquilibrium& e : support_equilibria(c, *g))
+    j["equilibrium"].push_back({{"name", e.name},
+                                {"found", e.found},
+                                {"radial_mm", e.found ? nlohmann::json(e.radial_mm) : nullptr},
+                                {"pressure_Pa", e.found ? nlohmann::json(e.pressure_Pa) : nullptr},
+                                {"factor_of_safety", or_null(e.factor_of_safety)},
+                                {"note", e.note}});
 }
 
 nlohmann::json convergence_confinement_json(const ConvergenceConfinementFigures& c) {
@@ -667,8 +685,11 @@ nlohmann::json RunRecord::to_json() const {
   j["monitors"] = monitors_json(monitors);
   if (!ground_reaction_curve.empty())
     j["ground_reaction_curve"] = ground_reaction_json(ground_reaction_curve);
-  if (convergence_confinement)
+  if (convergence_confinement) {
     j["convergence_confinement"] = convergence_confinement_json(*convergence_confinement);
+    add_equilibria(j["convergence_confinement"], *convergence_confinement, ground_reaction_curve,
+                   continuum_comparison);
+  }
   if (history_stages) j["history_stages"] = *history_stages;
   add_support(j, *this);
   if (comparison) j["comparison"] = comparison_json(*comparison);
