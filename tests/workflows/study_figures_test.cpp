@@ -5,6 +5,9 @@
 
 #include <gtest/gtest.h>
 
+#include "cli_runner.hpp"
+#include "rockfdem/workflows/scene.hpp"
+
 namespace study = rockfdem::workflows::study;
 
 namespace {
@@ -46,4 +49,32 @@ TEST(StudyFigures, a_run_without_support_has_no_support_columns) {
                         "bolts_with_broken_steel", "support_verdict"})
     EXPECT_FALSE(f.contains(c)) << c;
   EXPECT_TRUE(f.contains("broken_depth_m"));
+}
+
+// calibrate --help names every target calibrate accepts, for a tunnel and
+// for a specimen, and its example is a specimen that reaches its peak.
+TEST(StudyFigures, calibrate_help_lists_every_target_name) {
+  namespace test = rockfdem::test;
+  const test::Result r = test::run("calibrate --help");
+  ASSERT_EQ(r.code, 0) << r.output;
+  // Boost wraps long option texts, within words too: search without spaces.
+  std::string help;
+  for (const char c : r.output)
+    if (c != '\n' && c != ' ') help.push_back(c);
+  for (const char* scene : {"/scenes/tunnel-seed.toml", "/scenes/brazilian-disc.toml"}) {
+    const rockfdem::workflows::Scene s =
+        rockfdem::workflows::load_scene(std::string(ROCKFDEM_SOURCE_DIR) + scene);
+    for (const study::TargetName& t : study::target_names(s)) {
+      const std::string suffix = "_since_support";
+      const bool composed =
+          t.name.size() > suffix.size() &&
+          t.name.compare(t.name.size() - suffix.size(), suffix.size(), suffix) == 0;
+      const std::string base = composed ? t.name.substr(0, t.name.size() - suffix.size()) : t.name;
+      EXPECT_NE(help.find(base), std::string::npos) << t.name << " in\n" << r.output;
+    }
+  }
+  EXPECT_NE(help.find("with_since_support"), std::string::npos) << r.output;
+  EXPECT_NE(help.find("calibratescenes/brazilian-disc.toml--targettensile_strength="),
+            std::string::npos)
+      << r.output;
 }

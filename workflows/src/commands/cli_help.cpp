@@ -62,8 +62,8 @@ const CommandHelp kCommands[] = {
      "targets' means over the completed realisations.",
      {"output", "threads", "set", "target", "weight", "free", "max-evals", "method",
       "realisations"},
-     "rockfdem calibrate scenes/tunnel-seed.toml --target vault=223.02 "
-     "--free materials.rock.young=1e9:2e10"},
+     "rockfdem calibrate scenes/brazilian-disc.toml --target tensile_strength=5 "
+     "--free materials.rock.tensile_strength=2e6:6e6 -j 2"},
 };
 
 }  // namespace

@@ -36,8 +36,11 @@ po::options_description study_options() {
                   "(with --samples; repeatable)")(
       "samples", po::value<long>(), "sweep: N Latin hypercube samples over the KEY=LO:HI ranges")(
       "target", po::value<Strings>()->composing(),
-      "calibrate: NAME=VALUE, a key point's radial displacement [mm] or a specimen's "
-      "peak_stress / tensile_strength [MPa] (repeatable)")(
+      "calibrate: NAME=VALUE (repeatable). Tunnels [mm]: vault, left_shoulder, "
+      "right_shoulder, left_wall, right_wall, invert (radial from the in-situ state), each "
+      "with _since_support (since the support's installation), shoulders and walls (a pair's "
+      "mean), vault_settlement, wall_chord_convergence, shoulder_chord_convergence. "
+      "Specimens [MPa]: peak_stress (UCS, Brazilian), tensile_strength (Brazilian)")(
       "weight", po::value<Strings>()->composing(), "calibrate: NAME=W, a target's weight (1)")(
       "free", po::value<Strings>()->composing(),
       "calibrate: KEY=LO:HI, a scene number to fit within its bounds (repeatable)")(
