@@ -190,6 +190,18 @@ TEST(Study, calibrate_ranks_runs_not_at_equilibrium_behind_and_says_so) {
   EXPECT_FALSE(s["best_met_its_criteria"].get<bool>());
   const double misfit = s["targets"][0]["relative_misfit"].get<double>();
   EXPECT_NEAR(s["objective"].get<double>(), 100 + misfit * misfit, 1e-12);
+  // Cut off at 3 runs: the stop says how far from converged.
+  const std::string stop = s["stop_reason"].get<std::string>();
+  EXPECT_EQ(stop.find("stopped at --max-evals, not converged: "), 0u) << stop;
+  const nlohmann::json& last = s["last_improvement"];
+  if (last.is_null()) {
+    EXPECT_NE(stop.find("no run improved on the first"), std::string::npos) << stop;
+  } else {
+    EXPECT_GE(last["run"].get<int>(), 2);
+    EXPECT_LE(last["run"].get<int>(), 3);
+    EXPECT_GT(last["step_of_range"].get<double>(), 1e-6);
+    EXPECT_GT(last["objective_drop"].get<double>(), 0.0);
+  }
   fs::remove_all(out);
 }
 

@@ -59,12 +59,49 @@ void plot_misfit(const CalibrationProblem& problem, const std::string& path) {
   if (!why.empty()) std::cerr << "rockfdem: calibration.png not drawn: " << why << '\n';
 }
 
+// The search's last improvement of the best-so-far objective: which run,
+// how far it moved the scaled parameters (the largest share of a range)
+// and by what share it lowered the objective. None before two improvements.
+std::optional<nlohmann::json> last_improvement(const CalibrationProblem& problem) {
+  const std::vector<Evaluation>& r = problem.record();
+  const std::size_t n = r.size() - std::min(r.size(), sensitivity_runs(problem));
+  std::size_t best = 0, before = 0;
+  bool improved = false;
+  for (std::size_t i = 1; i < n; ++i)
+    if (r[i].objective < r[best].objective) {
+      before = best;
+      best = i;
+      improved = true;
+    }
+  if (!improved) return std::nullopt;
+  double step = 0;
+  for (std::size_t k = 0; k < r[best].x.size(); ++k)
+    step = std::max(step, std::abs(r[best].x[k] - r[before].x[k]));
+  const double drop = (r[before].objective - r[best].objective) / r[before].objective;
+  return nlohmann::json{{"run", best + 1}, {"step_of_range", step}, {"objective_drop", drop}};
+}
+
+// A search cut off by --max-evals says how far it was from converging.
+std::string stop_with_distance(const std::string& stop, const std::optional<nlohmann::json>& last) {
+  if (stop != stop_reason(nlopt::MAXEVAL_REACHED)) return stop;
+  if (!last) return stop + ", not converged: no run improved on the first";
+  char b[200];
+  std::snprintf(b, sizeof b,
+                ", not converged: the last improvement (run %d) moved the parameters by %.3g of "
+                "their ranges (converged: below %.0e) and lowered the objective by %.3g%%",
+                (*last)["run"].get<int>(), (*last)["step_of_range"].get<double>(), kXTolerance,
+                100 * (*last)["objective_drop"].get<double>());
+  return stop + b;
+}
+
 nlohmann::json summary_json(const CalibrationProblem& problem, const Evaluation& best,
                             const Sensitivity& sensitivity, const std::string& stop,
                             const CommandLine& cli, double wall_s) {
+  const std::optional<nlohmann::json> last = last_improvement(problem);
   nlohmann::json j{{"scene", cli.scene},
                    {"method", cli.study.method},
-                   {"stop_reason", stop},
+                   {"stop_reason", stop_with_distance(stop, last)},
+                   {"last_improvement", last ? *last : nlohmann::json()},
                    {"runs", problem.record().size()},
                    {"search_runs", problem.record().size() - sensitivity_runs(problem)},
                    {"max_evals", cli.study.max_evals},

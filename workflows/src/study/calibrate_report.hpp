@@ -21,6 +21,9 @@ struct SensitivityEntry {
 };
 using Sensitivity = std::vector<SensitivityEntry>;
 
+/// The search stops when its steps fall below this share of each scaled range.
+constexpr double kXTolerance = 1e-6;
+
 std::string stop_reason(nlopt::result result);
 
 /// The evaluation with the lowest objective (the first of equals).

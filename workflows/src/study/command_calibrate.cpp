@@ -26,8 +26,7 @@
 namespace rockfdem::workflows::study {
 namespace {
 
-constexpr double kStartStep = 0.1;    // of each scaled range: the first trust region
-constexpr double kXTolerance = 1e-6;  // of each scaled range: stop when steps are below it
+constexpr double kStartStep = 0.1;  // of each scaled range: the first trust region
 constexpr double kSensitivityStep = 0.01;
 
 nlopt::algorithm algorithm(const std::string& method) {
