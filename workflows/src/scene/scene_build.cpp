@@ -1098,6 +1098,14 @@ Scene build_scene(const RawScene& raw, const std::string& base_dir) {
   std::ostringstream key;
   key << keyed;
   s.restart_key = key.str();
+  // Nor do the pictures and ParaView files change a result a study keeps.
+  if (toml::table* out = keyed["output"].as_table()) {
+    out->erase("plots");
+    out->erase("vtk");
+  }
+  std::ostringstream results;
+  results << keyed;
+  s.results_key = results.str();
   s.as_run = scene_as_run(raw.root, s.mesh);
   s.warnings = detail::unit_warnings(raw);
   for (std::string& w : detail::damping_warnings(raw, s)) s.warnings.push_back(std::move(w));

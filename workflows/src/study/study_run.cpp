@@ -72,7 +72,7 @@ nlohmann::json variant_identity(const Scene& scene, const Variant& v) {
   std::error_code ec;
   const fs::path file = fs::weakly_canonical(fs::absolute(scene.source, ec), ec);
   char hash[24];
-  std::snprintf(hash, sizeof hash, "%016zx", std::hash<std::string>{}(scene.canonical));
+  std::snprintf(hash, sizeof hash, "%016zx", std::hash<std::string>{}(scene.results_key));
   return {{"scene", file.string()}, {"scene_hash", hash}, {"settings", v.overrides()}};
 }
 

@@ -235,6 +235,9 @@ struct Scene {
       canonical;  ///< the validated scene as TOML (overrides applied), for hashing and records
   /// canonical without output.checkpoint_every: what a checkpoint must match
   std::string restart_key;
+  /// restart_key without output.plots and output.vtk: what a study's
+  /// finished variant must match to be taken instead of rerun
+  std::string results_key;
   /// canonical with msh.file made absolute: a scene file that reruns this scene from anywhere
   std::string as_run;
   std::vector<std::string> overrides;  ///< the --set arguments applied, in order
