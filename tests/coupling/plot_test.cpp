@@ -217,6 +217,26 @@ std::vector<int> differing_columns(const std::string& a, const std::string& b) {
   return count;
 }
 
+// Per pixel column, how many pixels have the colour `rgb` (within 3 per channel).
+std::vector<int> columns_of_colour(const std::string& path, std::array<int, 3> rgb) {
+  vtkNew<vtkPNGReader> r;
+  r->SetFileName(path.c_str());
+  r->Update();
+  int dims[3];
+  r->GetOutput()->GetDimensions(dims);
+  auto* px = vtkUnsignedCharArray::SafeDownCast(r->GetOutput()->GetPointData()->GetScalars());
+  const int nc = px->GetNumberOfComponents();
+  std::vector<int> count(dims[0], 0);
+  for (int j = 0; j < dims[1]; ++j)
+    for (int i = 0; i < dims[0]; ++i) {
+      const vtkIdType k = (vtkIdType(j) * dims[0] + i) * nc;
+      bool match = true;
+      for (int c = 0; c < 3; ++c) match = match && std::abs(px->GetValue(k + c) - rgb[c]) <= 3;
+      count[i] += match;
+    }
+  return count;
+}
+
 // Stage markers are vertical lines at their abscissae: drawn over a plot
 // whose x axis spans [0, 1], markers at 0.2, 0.4 and 0.8 change three
 // narrow bands of pixel columns over most of the plot's height (the dashed
@@ -251,6 +271,31 @@ TEST(Plot, stage_markers_are_vertical_lines_at_their_abscissae) {
   int near_first = 0;
   for (int i = int(bands[0]) - 20; i <= int(bands[0]) + 20; ++i) near_first += diff[i];
   EXPECT_GT(near_first, diff[int(bands[0])] + 50);
+}
+
+// Stage bands shade their share of the x axis behind the curves: a plot
+// over [0, 1] with one band over [0.5, 1] has its light blue shade only in
+// the right half of the plot area, over most of its height.
+TEST(Plot, stage_bands_shade_their_part_of_the_x_axis) {
+  SKIP_UNLESS_RENDERING();
+  const TempDir dir;
+  const std::vector<PlotSeries> series{{"broken", {0.0, 0.5, 1.0}, {0.0, 10.0, 4.0}}};
+  std::string why;
+  ASSERT_TRUE(plot_xy_png("t", "step", "count", series, dir.file("banded.png"), 800, 500, &why, {},
+                          {{0.5, 1.0, "2 equilibrium"}}))
+      << why;
+  const std::vector<int> shaded = columns_of_colour(dir.file("banded.png"), {222, 232, 245});
+  int first = -1, last = -1;
+  for (int i = 0; i < int(shaded.size()); ++i)
+    if (shaded[i] > 500 / 3) {
+      if (first < 0) first = i;
+      last = i;
+    }
+  ASSERT_GE(first, 0) << "no shaded column";
+  // The plot area spans roughly 10%-95% of the width: the band its right half.
+  EXPECT_GT(first, 800 * 0.4);
+  EXPECT_GT(last, 800 * 0.85);
+  EXPECT_GT(last - first, 800 * 0.3);
 }
 
 TEST(Plot, mesh_png_has_the_asked_size_colours_and_black_cracks) {
