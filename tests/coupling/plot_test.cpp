@@ -13,6 +13,7 @@
 #include <cmath>
 #include <cstdlib>
 
+#include "plot_ticks.hpp"
 #include "temp_dir.hpp"
 
 namespace rockfdem::plots {
@@ -217,21 +218,40 @@ std::vector<int> differing_columns(const std::string& a, const std::string& b) {
   return count;
 }
 
+// A PNG's pixels: rgb(i, j) of column i, row j (from the bottom, as VTK
+// stores them).
+class Pixels {
+ public:
+  explicit Pixels(const std::string& path) {
+    reader_->SetFileName(path.c_str());
+    reader_->Update();
+    int dims[3];
+    reader_->GetOutput()->GetDimensions(dims);
+    width = dims[0], height = dims[1];
+    px_ = vtkUnsignedCharArray::SafeDownCast(reader_->GetOutput()->GetPointData()->GetScalars());
+    nc_ = px_->GetNumberOfComponents();
+  }
+  std::array<int, 3> rgb(int i, int j) const {
+    const vtkIdType k = (vtkIdType(j) * width + i) * nc_;
+    return {px_->GetValue(k), px_->GetValue(k + 1), px_->GetValue(k + 2)};
+  }
+  int width = 0, height = 0;
+
+ private:
+  vtkNew<vtkPNGReader> reader_;
+  vtkUnsignedCharArray* px_ = nullptr;
+  int nc_ = 3;
+};
+
 // Per pixel column, how many pixels have the colour `rgb` (within 3 per channel).
 std::vector<int> columns_of_colour(const std::string& path, std::array<int, 3> rgb) {
-  vtkNew<vtkPNGReader> r;
-  r->SetFileName(path.c_str());
-  r->Update();
-  int dims[3];
-  r->GetOutput()->GetDimensions(dims);
-  auto* px = vtkUnsignedCharArray::SafeDownCast(r->GetOutput()->GetPointData()->GetScalars());
-  const int nc = px->GetNumberOfComponents();
-  std::vector<int> count(dims[0], 0);
-  for (int j = 0; j < dims[1]; ++j)
-    for (int i = 0; i < dims[0]; ++i) {
-      const vtkIdType k = (vtkIdType(j) * dims[0] + i) * nc;
+  const Pixels png(path);
+  std::vector<int> count(png.width, 0);
+  for (int j = 0; j < png.height; ++j)
+    for (int i = 0; i < png.width; ++i) {
+      const auto p = png.rgb(i, j);
       bool match = true;
-      for (int c = 0; c < 3; ++c) match = match && std::abs(px->GetValue(k + c) - rgb[c]) <= 3;
+      for (int c = 0; c < 3; ++c) match = match && std::abs(p[c] - rgb[c]) <= 3;
       count[i] += match;
     }
   return count;
@@ -296,6 +316,73 @@ TEST(Plot, stage_bands_shade_their_part_of_the_x_axis) {
   EXPECT_GT(first, 800 * 0.4);
   EXPECT_GT(last, 800 * 0.85);
   EXPECT_GT(last - first, 800 * 0.3);
+}
+
+// Tick values are round multiples of 1, 2 or 5 times a power of ten,
+// written with the decimals the step needs: the colour bar of a range
+// 8.48-166.2 reads 20, 40, ..., 160, never "166." or "8.48".
+TEST(PlotTicks, round_values_written_as_the_step_needs) {
+  const Ticks t = nice_ticks(8.48, 166.2);
+  EXPECT_EQ(t.step, 20.0);
+  ASSERT_EQ(t.values.size(), 8u);
+  EXPECT_EQ(t.label(t.values.front()), "20");
+  EXPECT_EQ(t.label(t.values.back()), "160");
+  const Ticks small = nice_ticks(-0.013, 0.11, 6);
+  EXPECT_EQ(small.step, 0.02);
+  EXPECT_EQ(small.label(small.values.front()), "0");  // not "-0.00"
+  EXPECT_EQ(small.label(0.06), "0.06");
+  // A range just short of two multiples gets a finer step.
+  EXPECT_GE(nice_ticks(1.1, 1.9, 2).values.size(), 2u);
+  EXPECT_TRUE(nice_ticks(1.0, 1.0).values.empty());
+  EXPECT_EQ(round_length(0.225), 0.2);
+  EXPECT_EQ(round_length(7.3), 5.0);
+  EXPECT_EQ(round_length(1.0), 1.0);
+}
+
+// Longest run of black pixels (every channel below 40) along one row in
+// the window x in [x0, x1), y in [y0, y1) of a PNG (rows from the bottom);
+// and the number of black pixels there.
+struct BlackRuns {
+  int longest = 0;
+  int count = 0;
+};
+BlackRuns black_in(const std::string& path, int x0, int x1, int y0, int y1) {
+  const Pixels png(path);
+  BlackRuns out;
+  for (int j = y0; j < y1; ++j) {
+    int run = 0;
+    for (int i = x0; i < x1; ++i) {
+      const auto p = png.rgb(i, j);
+      const bool black = p[0] < 40 && p[1] < 40 && p[2] < 40;
+      run = black ? run + 1 : 0;
+      out.count += black;
+      out.longest = std::max(out.longest, run);
+    }
+  }
+  return out;
+}
+
+// A mesh picture has axes in metres: tick values (black text, antialiased:
+// about 100 pixels fully black on each axis) in the strip
+// left of the mesh and in the strip under it, where the picture was white
+// before; and a scale bar at the mesh's lower right, a black bar as long as
+// its round length: the 1 m square fills the mesh viewport's height (676 px
+// of 800 at 0.075-0.92, with 5% margin: 1.05 m), so 1 m is 643.8 px, the
+// viewport (725 px wide) shows 1.126 m and the bar is round_length(0.225 m)
+// = 0.2 m: 129 px.
+TEST(Plot, mesh_picture_has_axes_in_metres_and_a_scale_bar) {
+  SKIP_UNLESS_RENDERING();
+  const TempDir dir;
+  std::string why;
+  const VtkGrid g = cracked_square(6);  // its crack runs far from the bar
+  ASSERT_TRUE(render_mesh_png(g, "field", 0, dir.file("m.png"), "Axes", 1000, 800, &why)) << why;
+  const std::string png = dir.file("m.png");
+  EXPECT_GT(black_in(png, 0, 70, 80, 730).count, 50) << "no y axis values";
+  EXPECT_GT(black_in(png, 80, 790, 0, 55).count, 50) << "no x axis values";
+  // The mesh viewport spans x 75-800, y 60-736 (from the bottom); the bar
+  // lies in its lower right corner, 4 px thick.
+  const BlackRuns bar = black_in(png, 560, 795, 62, 120);
+  EXPECT_NEAR(bar.longest, 129, 4);
 }
 
 TEST(Plot, mesh_png_has_the_asked_size_colours_and_black_cracks) {

@@ -18,7 +18,7 @@ double round_step(double raw) {
 
 std::string Ticks::label(double v) const {
   char s[32];
-  if (std::abs(v) < 0.5 * step) v = 0;  // no "-0" from rounding
+  if (std::abs(v) < 0.5 * step) return "0";  // not "-0.00"
   std::snprintf(s, sizeof s, "%.*f", decimals, v);
   return s;
 }

@@ -313,11 +313,20 @@ bool plot_panels_png(const std::string& title, const std::string& x_label,
     check_series(p.lines.empty() ? p.markers : p.lines);
     if (!p.markers.empty()) check_series(p.markers);
   }
+  std::vector<PlotSeries> all;
+  for (const PlotPanel& p : panels) {
+    all.insert(all.end(), p.lines.begin(), p.lines.end());
+    all.insert(all.end(), p.markers.begin(), p.markers.end());
+  }
   return render_png(width, height, path, why, [&](vtkContextView* view) {
     vtkNew<vtkChartMatrix> matrix;  // the scene keeps it
     view->GetScene()->AddItem(matrix);
     const int n = int(panels.size());
     matrix->SetSize(vtkVector2i(1, n));
+    // Room for the y axis titles (VTK's default border clips their first
+    // letter) and between charts for the x tick values of the one above.
+    matrix->SetBorders(80, 60, 30, 40);
+    matrix->SetGutterY(45);
     for (int i = 0; i < n; ++i) {
       const PlotPanel& p = panels[std::size_t(i)];
       vtkChart* chart = matrix->GetChart(vtkVector2i(0, n - 1 - i));  // row 0 is the bottom
@@ -328,6 +337,9 @@ bool plot_panels_png(const std::string& title, const std::string& x_label,
       // The x axis is shared: its title under the last chart only.
       label_axis(chart->GetAxis(vtkAxis::BOTTOM), i + 1 == n ? x_label : "");
       label_axis(chart->GetAxis(vtkAxis::LEFT), p.y_label);
+      // One x range for every chart, the data's (VTK's own would round it
+      // out, 360 deg to 400).
+      fix_x_range(chart->GetAxis(vtkAxis::BOTTOM), all, {});
       std::size_t k = 0;
       for (const PlotSeries& s : p.lines) add_series(chart, s, k++);
       for (const PlotSeries& s : p.markers) add_series(chart, s, k++, true);

@@ -76,7 +76,7 @@ std::vector<Segment> dashed(const std::vector<Segment>& segments, double dash) {
   for (const Segment& s : segments) {
     const double dx = s[2] - s[0], dy = s[3] - s[1], length = std::hypot(dx, dy);
     double at = 0;
-    while (at < length) {
+    while (length - at > 1e-9 * dash) {  // no sliver of rounding at the end
       const bool on = phase < dash;
       const double step = std::min(length - at, (on ? dash : 2 * dash) - phase);
       if (on)
