@@ -429,6 +429,29 @@ TEST(Plot, picture_with_point_values_hidden_triangles_and_coloured_lines) {
   EXPECT_EQ(dir.entries(), (std::set<std::string>{"u.png"}));
 }
 
+// A picture of the mesh itself: with `edges`, every triangle's edges in
+// grey (89, 89, 89) over the colours of its `categories`; without, none.
+TEST(Plot, mesh_picture_with_edges_draws_the_triangles_edges_in_grey) {
+  SKIP_UNLESS_RENDERING();
+  const VtkGrid g = cracked_square(8);
+  MeshPicture p;
+  p.title = "Final mesh";
+  p.bar_title = "zone";
+  for (std::size_t t = 0; t < g.n_triangles(); ++t) p.values.push_back(double(t % 2));
+  p.categories = {{0, "rock, cracks"}, {1, "rock, no cracks"}};
+  const TempDir dir;
+  std::string why;
+  ASSERT_TRUE(render_picture_png(g, p, dir.file("plain.png"), 600, 500, &why)) << why;
+  p.edges = true;
+  ASSERT_TRUE(render_picture_png(g, p, dir.file("edges.png"), 600, 500, &why)) << why;
+  int plain = 0, edged = 0;
+  for (const int n : columns_of_colour(dir.file("plain.png"), {89, 89, 89})) plain += n;
+  for (const int n : columns_of_colour(dir.file("edges.png"), {89, 89, 89})) edged += n;
+  // 8 x 8 squares, 3 edges each of about 50 px (the diagonals longer): thousands.
+  EXPECT_LT(plain, 50);
+  EXPECT_GT(edged, 2000) << "plain " << plain;
+}
+
 TEST(Plot, mesh_png_of_an_uncracked_int_field_renders) {
   SKIP_UNLESS_RENDERING();
   std::string why;
