@@ -77,8 +77,12 @@ std::string time_axis_label(const fdem::Engine& e) {
 
 void tunnel_curves(PlotWriter& plots, const History& h, const std::vector<Monitor>& monitors,
                    const std::vector<StageSpan>& spans, std::optional<std::size_t> from) {
-  const std::vector<plots::PlotBand> bands = stage_bands(spans);
+  std::vector<plots::PlotBand> bands = stage_bands(spans);
   const std::vector<double> t = h.column("step");
+  // A run stopped inside a stage has no report of it; its rows get a band.
+  if (!t.empty() && (bands.empty() || t.back() > bands.back().x1))
+    bands.push_back({bands.empty() ? t.front() : bands.back().x1, t.back(),
+                     std::to_string(int(h.column("stage").back())) + " (stopped in this stage)"});
   const std::size_t first = from.value_or(0);
   const auto curve = [&](const std::string& column) {
     return from ? since_row(h.column(column), first) : h.column(column);
