@@ -13,6 +13,7 @@
 #include <cmath>
 #include <cstdlib>
 
+#include "plot_ticks.hpp"
 #include "temp_dir.hpp"
 
 namespace rockfdem::plots {
@@ -217,6 +218,45 @@ std::vector<int> differing_columns(const std::string& a, const std::string& b) {
   return count;
 }
 
+// A PNG's pixels: rgb(i, j) of column i, row j (from the bottom, as VTK
+// stores them).
+class Pixels {
+ public:
+  explicit Pixels(const std::string& path) {
+    reader_->SetFileName(path.c_str());
+    reader_->Update();
+    int dims[3];
+    reader_->GetOutput()->GetDimensions(dims);
+    width = dims[0], height = dims[1];
+    px_ = vtkUnsignedCharArray::SafeDownCast(reader_->GetOutput()->GetPointData()->GetScalars());
+    nc_ = px_->GetNumberOfComponents();
+  }
+  std::array<int, 3> rgb(int i, int j) const {
+    const vtkIdType k = (vtkIdType(j) * width + i) * nc_;
+    return {px_->GetValue(k), px_->GetValue(k + 1), px_->GetValue(k + 2)};
+  }
+  int width = 0, height = 0;
+
+ private:
+  vtkNew<vtkPNGReader> reader_;
+  vtkUnsignedCharArray* px_ = nullptr;
+  int nc_ = 3;
+};
+
+// Per pixel column, how many pixels have the colour `rgb` (within 3 per channel).
+std::vector<int> columns_of_colour(const std::string& path, std::array<int, 3> rgb) {
+  const Pixels png(path);
+  std::vector<int> count(png.width, 0);
+  for (int j = 0; j < png.height; ++j)
+    for (int i = 0; i < png.width; ++i) {
+      const auto p = png.rgb(i, j);
+      bool match = true;
+      for (int c = 0; c < 3; ++c) match = match && std::abs(p[c] - rgb[c]) <= 3;
+      count[i] += match;
+    }
+  return count;
+}
+
 // Stage markers are vertical lines at their abscissae: drawn over a plot
 // whose x axis spans [0, 1], markers at 0.2, 0.4 and 0.8 change three
 // narrow bands of pixel columns over most of the plot's height (the dashed
@@ -251,6 +291,98 @@ TEST(Plot, stage_markers_are_vertical_lines_at_their_abscissae) {
   int near_first = 0;
   for (int i = int(bands[0]) - 20; i <= int(bands[0]) + 20; ++i) near_first += diff[i];
   EXPECT_GT(near_first, diff[int(bands[0])] + 50);
+}
+
+// Stage bands shade their share of the x axis behind the curves: a plot
+// over [0, 1] with one band over [0.5, 1] has its light blue shade only in
+// the right half of the plot area, over most of its height.
+TEST(Plot, stage_bands_shade_their_part_of_the_x_axis) {
+  SKIP_UNLESS_RENDERING();
+  const TempDir dir;
+  const std::vector<PlotSeries> series{{"broken", {0.0, 0.5, 1.0}, {0.0, 10.0, 4.0}}};
+  std::string why;
+  ASSERT_TRUE(plot_xy_png("t", "step", "count", series, dir.file("banded.png"), 800, 500, &why, {},
+                          {{0.5, 1.0, "2 equilibrium"}}))
+      << why;
+  const std::vector<int> shaded = columns_of_colour(dir.file("banded.png"), {222, 232, 245});
+  int first = -1, last = -1;
+  for (int i = 0; i < int(shaded.size()); ++i)
+    if (shaded[i] > 500 / 3) {
+      if (first < 0) first = i;
+      last = i;
+    }
+  ASSERT_GE(first, 0) << "no shaded column";
+  // The plot area spans roughly 10%-95% of the width: the band its right half.
+  EXPECT_GT(first, 800 * 0.4);
+  EXPECT_GT(last, 800 * 0.85);
+  EXPECT_GT(last - first, 800 * 0.3);
+}
+
+// Tick values are round multiples of 1, 2 or 5 times a power of ten,
+// written with the decimals the step needs: the colour bar of a range
+// 8.48-166.2 reads 20, 40, ..., 160, never "166." or "8.48".
+TEST(PlotTicks, round_values_written_as_the_step_needs) {
+  const Ticks t = nice_ticks(8.48, 166.2);
+  EXPECT_EQ(t.step, 20.0);
+  ASSERT_EQ(t.values.size(), 8u);
+  EXPECT_EQ(t.label(t.values.front()), "20");
+  EXPECT_EQ(t.label(t.values.back()), "160");
+  const Ticks small = nice_ticks(-0.013, 0.11, 6);
+  EXPECT_EQ(small.step, 0.02);
+  EXPECT_EQ(small.label(small.values.front()), "0");  // not "-0.00"
+  EXPECT_EQ(small.label(0.06), "0.06");
+  // A range just short of two multiples gets a finer step.
+  EXPECT_GE(nice_ticks(1.1, 1.9, 2).values.size(), 2u);
+  EXPECT_TRUE(nice_ticks(1.0, 1.0).values.empty());
+  EXPECT_EQ(round_length(0.225), 0.2);
+  EXPECT_EQ(round_length(7.3), 5.0);
+  EXPECT_EQ(round_length(1.0), 1.0);
+}
+
+// Longest run of black pixels (every channel below 40) along one row in
+// the window x in [x0, x1), y in [y0, y1) of a PNG (rows from the bottom);
+// and the number of black pixels there.
+struct BlackRuns {
+  int longest = 0;
+  int count = 0;
+};
+BlackRuns black_in(const std::string& path, int x0, int x1, int y0, int y1) {
+  const Pixels png(path);
+  BlackRuns out;
+  for (int j = y0; j < y1; ++j) {
+    int run = 0;
+    for (int i = x0; i < x1; ++i) {
+      const auto p = png.rgb(i, j);
+      const bool black = p[0] < 40 && p[1] < 40 && p[2] < 40;
+      run = black ? run + 1 : 0;
+      out.count += black;
+      out.longest = std::max(out.longest, run);
+    }
+  }
+  return out;
+}
+
+// A mesh picture has axes in metres: tick values (black text, antialiased:
+// about 100 pixels fully black on each axis) in the strip
+// left of the mesh and in the strip under it, where the picture was white
+// before; and a scale bar at the mesh's lower right, a black bar as long as
+// its round length: the 1 m square fills the mesh viewport's height (676 px
+// of 800 at 0.075-0.92, with 5% margin: 1.05 m), so 1 m is 643.8 px, the
+// viewport (725 px wide) shows 1.126 m and the bar is round_length(0.225 m)
+// = 0.2 m: 129 px.
+TEST(Plot, mesh_picture_has_axes_in_metres_and_a_scale_bar) {
+  SKIP_UNLESS_RENDERING();
+  const TempDir dir;
+  std::string why;
+  const VtkGrid g = cracked_square(6);  // its crack runs far from the bar
+  ASSERT_TRUE(render_mesh_png(g, "field", 0, dir.file("m.png"), "Axes", 1000, 800, &why)) << why;
+  const std::string png = dir.file("m.png");
+  EXPECT_GT(black_in(png, 0, 70, 80, 730).count, 50) << "no y axis values";
+  EXPECT_GT(black_in(png, 80, 790, 0, 55).count, 50) << "no x axis values";
+  // The mesh viewport spans x 75-800, y 60-736 (from the bottom); the bar
+  // lies in its lower right corner, 4 px thick.
+  const BlackRuns bar = black_in(png, 560, 795, 62, 120);
+  EXPECT_NEAR(bar.longest, 129, 4);
 }
 
 TEST(Plot, mesh_png_has_the_asked_size_colours_and_black_cracks) {
@@ -295,6 +427,29 @@ TEST(Plot, picture_with_point_values_hidden_triangles_and_coloured_lines) {
   p.values.pop_back();
   EXPECT_THROW(render_picture_png(g, p, dir.file("bad.png"), 600, 400), std::invalid_argument);
   EXPECT_EQ(dir.entries(), (std::set<std::string>{"u.png"}));
+}
+
+// A picture of the mesh itself: with `edges`, every triangle's edges in
+// grey (89, 89, 89) over the colours of its `categories`; without, none.
+TEST(Plot, mesh_picture_with_edges_draws_the_triangles_edges_in_grey) {
+  SKIP_UNLESS_RENDERING();
+  const VtkGrid g = cracked_square(8);
+  MeshPicture p;
+  p.title = "Final mesh";
+  p.bar_title = "zone";
+  for (std::size_t t = 0; t < g.n_triangles(); ++t) p.values.push_back(double(t % 2));
+  p.categories = {{0, "rock, cracks"}, {1, "rock, no cracks"}};
+  const TempDir dir;
+  std::string why;
+  ASSERT_TRUE(render_picture_png(g, p, dir.file("plain.png"), 600, 500, &why)) << why;
+  p.edges = true;
+  ASSERT_TRUE(render_picture_png(g, p, dir.file("edges.png"), 600, 500, &why)) << why;
+  int plain = 0, edged = 0;
+  for (const int n : columns_of_colour(dir.file("plain.png"), {89, 89, 89})) plain += n;
+  for (const int n : columns_of_colour(dir.file("edges.png"), {89, 89, 89})) edged += n;
+  // 8 x 8 squares, 3 edges each of about 50 px (the diagonals longer): thousands.
+  EXPECT_LT(plain, 50);
+  EXPECT_GT(edged, 2000) << "plain " << plain;
 }
 
 TEST(Plot, mesh_png_of_an_uncracked_int_field_renders) {

@@ -290,6 +290,31 @@ TEST(StageMarkers, stages_starting_together_share_a_marker_and_grouting_has_its_
   EXPECT_EQ(since_row({3.0, 5.0, 9.0}, 1), (std::vector<double>{0.0, 4.0}));
 }
 
+// The seed's sequence on the step axis (hand-off at step 1): a band per
+// stage that took steps, numbered; the three stages of no steps named at
+// the head of the grout band's label, the grouting's count at its end.
+TEST(StageBands, stages_of_no_steps_join_the_next_band_and_grouting_is_counted) {
+  using rockfdem::workflows::StageRecord;
+  std::vector<StageRecord> stages = {
+      stage_record("lining", 0.0), stage_record("bolts", 0.0), stage_record("remove_core", 0.0),
+      stage_record("grout", 0.0048, grouting(true, 324)), stage_record("equilibrium", 0.736)};
+  const long steps[] = {0, 0, 0, 14, 9000};
+  for (std::size_t i = 0; i < stages.size(); ++i) {
+    stages[i].number = int(i) + 1;
+    stages[i].steps = steps[i];
+  }
+  using namespace rockfdem::workflows;
+  const auto bands = stage_bands(stage_spans(stages, 0.0005, 1));
+  ASSERT_EQ(bands.size(), 2u);
+  EXPECT_EQ(bands[0].x0, 1);
+  EXPECT_EQ(bands[0].x1, 15);
+  EXPECT_EQ(bands[0].label,
+            "1 lining, 2 bolts, 3 remove_core, then 4 grout (324 cracks re-joined)");
+  EXPECT_EQ(bands[1].x0, 15);
+  EXPECT_EQ(bands[1].x1, 9015);
+  EXPECT_EQ(bands[1].label, "5 equilibrium");
+}
+
 // A grout stage that did not trigger adds no grouting marker; a run
 // without lining or bolts stages has no support to measure from.
 TEST(StageMarkers, untriggered_grout_and_no_support) {

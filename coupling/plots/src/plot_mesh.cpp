@@ -1,9 +1,10 @@
 // The mesh coloured by one component of a cell field, with cracks (the grid's
 // line cells) in black on top: the "final cracked mesh" picture of a run.
 //
-// Layout: three renderers side by side in one offscreen window: the mesh
-// (left, most of it), the colour bar (right strip) and the title (top strip),
-// so the bar never covers the mesh.
+// Layout: renderers side by side in one offscreen window: the mesh (most of
+// it), the axes in metres (strips left of and under it, plot_frame), the
+// colour bar (right strip) and the title (top strip), so nothing covers the
+// mesh but its scale bar.
 #include <vtkActor2D.h>
 #include <vtkCamera.h>
 #include <vtkCellArray.h>
@@ -31,15 +32,19 @@
 #include <stdexcept>
 
 #include "plot_display.hpp"
+#include "plot_frame.hpp"
 #include "plot_overlay.hpp"
 #include "plot_png.hpp"
+#include "plot_ticks.hpp"
 #include "rockfdem/plots/plot.hpp"
 
 namespace rockfdem::plots {
 namespace {
 
-constexpr double kMeshRight = 0.80;  // the colour bar takes the strip right of this
-constexpr double kMeshTop = 0.92;    // the title takes the strip above this
+constexpr double kMeshLeft = 0.075;    // the y axis takes the strip left of this
+constexpr double kMeshBottom = 0.075;  // the x axis takes the strip below this (full width)
+constexpr double kMeshRight = 0.80;    // the colour bar takes the strip right of this
+constexpr double kMeshTop = 0.92;      // the title takes the strip above this
 
 // Per-triangle values of one component of a cell array, as doubles.
 std::vector<double> triangle_values(const VtkGrid& grid, const VtkArray& a, int component) {
@@ -153,6 +158,11 @@ vtkSmartPointer<vtkActor> triangle_actor(const VtkGrid& grid, const MeshPicture&
   mapper->UseLookupTableScalarRangeOn();
   auto actor = vtkSmartPointer<vtkActor>::New();
   actor->SetMapper(mapper);
+  if (p.edges) {
+    actor->GetProperty()->EdgeVisibilityOn();
+    actor->GetProperty()->SetEdgeColor(0.35, 0.35, 0.35);
+    actor->GetProperty()->SetLineWidth(1.0f);
+  }
   return actor;
 }
 
@@ -209,8 +219,9 @@ std::vector<double> values_shown(const VtkGrid& grid, const MeshPicture& p) {
 }
 
 // Looks straight down z with a parallel projection just large enough for
-// the window `v` in a viewport of the given pixel size.
-void fit_camera(vtkRenderer* renderer, const MeshView& v, double view_w, double view_h) {
+// the window `v` in the frame's viewport; returns the window shown.
+MeshView fit_camera(vtkRenderer* renderer, const MeshView& v, const Frame& f) {
+  const double view_w = (f.right - f.left) * f.width, view_h = (f.top - f.bottom) * f.height;
   const double cx = 0.5 * (v.x0 + v.x1), cy = 0.5 * (v.y0 + v.y1);
   const double half_w = 0.5 * (v.x1 - v.x0), half_h = 0.5 * (v.y1 - v.y0);
   vtkCamera* camera = renderer->GetActiveCamera();
@@ -218,8 +229,10 @@ void fit_camera(vtkRenderer* renderer, const MeshView& v, double view_w, double 
   camera->SetFocalPoint(cx, cy, 0.0);
   camera->SetPosition(cx, cy, 1.0 + 4.0 * std::max(half_w, half_h));
   camera->SetViewUp(0.0, 1.0, 0.0);
-  camera->SetParallelScale(1.05 * std::max({half_h, half_w * view_h / view_w, 1e-12}));
+  const double scale = 1.05 * std::max({half_h, half_w * view_h / view_w, 1e-12});
+  camera->SetParallelScale(scale);
   renderer->ResetCameraClippingRange();
+  return shown_window(f, cx, cy, scale);
 }
 
 void plain_text(vtkTextProperty* p, int size) {
@@ -235,8 +248,13 @@ vtkSmartPointer<vtkScalarBarActor> scalar_bar(vtkLookupTable* lut, const std::st
   auto bar = vtkSmartPointer<vtkScalarBarActor>::New();
   bar->SetLookupTable(lut);
   bar->SetTitle(label.c_str());
-  bar->SetNumberOfLabels(6);
-  bar->SetLabelFormat("%-#8.3g");
+  // Round values at the ticks ("-20", "2.5"), not six evenly spaced ones ("166.").
+  const Ticks ticks = nice_ticks(lut->GetRange()[0], lut->GetRange()[1]);
+  vtkNew<vtkDoubleArray> at;
+  for (const double v : ticks.values) at->InsertNextValue(v);
+  bar->SetCustomLabels(at);
+  bar->SetUseCustomLabels(!ticks.values.empty() && !lut->GetIndexedLookup());
+  bar->SetLabelFormat(("%." + std::to_string(ticks.decimals) + "f").c_str());
   bar->SetPosition(0.05, y0);
   bar->SetWidth(0.9);
   bar->SetHeight(height);
@@ -278,6 +296,9 @@ vtkSmartPointer<vtkActor2D> stroke(const PictureLines& l, double x0, double x1, 
 // One entry per labelled line set, top down from `top`: a stroke in its
 // colour and the label in black.
 void add_legend(vtkRenderer* renderer, const std::vector<PictureLines>& lines, double top) {
+  const auto n = std::count_if(lines.begin(), lines.end(),
+                               [](const PictureLines& l) { return !l.label.empty(); });
+  const double gap = std::min(0.04, (top - 0.01) / double(std::max<long>(n, 1)));
   double y = top;
   for (const PictureLines& l : lines) {
     if (l.label.empty()) continue;
@@ -289,7 +310,7 @@ void add_legend(vtkRenderer* renderer, const std::vector<PictureLines>& lines, d
     text->GetPositionCoordinate()->SetCoordinateSystemToNormalizedViewport();
     text->GetPositionCoordinate()->SetValue(0.24, y);
     renderer->AddActor2D(text);
-    y -= 0.04;  // nine entries fit below the bar
+    y -= gap;  // nine entries fit below the bar at 0.04; more closer together
   }
 }
 
@@ -297,7 +318,7 @@ void add_legend(vtkRenderer* renderer, const std::vector<PictureLines>& lines, d
 // the labelled lines where there are any.
 vtkSmartPointer<vtkRenderer> side_strip(vtkLookupTable* lut, const MeshPicture& p) {
   auto renderer = vtkSmartPointer<vtkRenderer>::New();
-  renderer->SetViewport(kMeshRight, 0.0, 1.0, kMeshTop);
+  renderer->SetViewport(kMeshRight, kMeshBottom, 1.0, kMeshTop);
   renderer->SetBackground(1.0, 1.0, 1.0);
   const bool any_label = std::any_of(p.lines.begin(), p.lines.end(),
                                      [](const PictureLines& l) { return !l.label.empty(); });
@@ -359,18 +380,22 @@ bool render_picture_png(const VtkGrid& grid, const MeshPicture& p, const std::st
     if (why) *why = display.reason();
     return false;
   }
-  const auto lut = p.overlay && !p.overlay->categories.empty()
-                       ? category_colours(p.overlay->categories)
+  const auto& categories =
+      !p.categories.empty() || !p.overlay ? p.categories : p.overlay->categories;
+  const auto lut = !categories.empty()
+                       ? category_colours(categories)
                        : colour_map(finite_range(values_shown(grid, p)), p.magnitude);
   vtkNew<vtkRenderer> mesh;
-  mesh->SetViewport(0.0, 0.0, kMeshRight, kMeshTop);
+  mesh->SetViewport(kMeshLeft, kMeshBottom, kMeshRight, kMeshTop);
   mesh->SetBackground(1.0, 1.0, 1.0);
   mesh->AddActor(triangle_actor(grid, p, lut));
-  fit_camera(mesh, p.view ? *p.view : whole(grid), kMeshRight * width, kMeshTop * height);
+  Frame frame{kMeshLeft, kMeshBottom, kMeshRight, kMeshTop, {}, width, height};
+  frame.shown = fit_camera(mesh, p.view ? *p.view : whole(grid), frame);
   const double lift = 1e-3 * mesh->GetActiveCamera()->GetParallelScale();
   for (std::size_t i = 0; i < p.lines.size(); ++i)
     mesh->AddActor(lines_actor(p.lines[i], lift * double(i + 1)));
   if (p.overlay) add_overlay(mesh, *p.overlay, lift * double(p.lines.size() + 1));
+  add_scale_bar(mesh, frame);
   mesh->ResetCameraClippingRange();
 
   vtkNew<vtkRenderWindow> window;
@@ -379,6 +404,7 @@ bool render_picture_png(const VtkGrid& grid, const MeshPicture& p, const std::st
   window->AddRenderer(mesh);
   window->AddRenderer(side_strip(lut, p));
   window->AddRenderer(title_strip(p.title, width, height));
+  add_axes(window, frame);
   save_window_png(window, path);
   return true;
 }

@@ -1,5 +1,7 @@
 // Line plots with vtkChartXY in an offscreen vtkContextView.
+#include <vtkActor2D.h>
 #include <vtkAxis.h>
+#include <vtkCellArray.h>
 #include <vtkChartLegend.h>
 #include <vtkChartMatrix.h>
 #include <vtkChartXY.h>
@@ -10,6 +12,11 @@
 #include <vtkPen.h>
 #include <vtkPlot.h>
 #include <vtkPlotPoints.h>
+#include <vtkPoints.h>
+#include <vtkPolyData.h>
+#include <vtkPolyDataMapper2D.h>
+#include <vtkPropCollection.h>
+#include <vtkProperty2D.h>
 #include <vtkRenderWindow.h>
 #include <vtkRenderer.h>
 #include <vtkTable.h>
@@ -171,6 +178,81 @@ void add_marker_labels(vtkContextView* view, vtkChartXY* chart,
   }
 }
 
+// A rectangle from pixel (x0, y0) to (x1, y1), filled with `rgb`.
+vtkSmartPointer<vtkActor2D> pixel_box(double x0, double y0, double x1, double y1,
+                                      const unsigned char* rgb) {
+  vtkNew<vtkPoints> points;
+  for (const auto& c : {std::array<double, 2>{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}})
+    points->InsertNextPoint(c[0], c[1], 0.0);
+  vtkNew<vtkCellArray> cells;
+  const vtkIdType ids[4] = {0, 1, 2, 3};
+  cells->InsertNextCell(4, ids);
+  vtkNew<vtkPolyData> poly;
+  poly->SetPoints(points);
+  poly->SetPolys(cells);
+  vtkNew<vtkPolyDataMapper2D> mapper;
+  mapper->SetInputData(poly);
+  auto actor = vtkSmartPointer<vtkActor2D>::New();
+  actor->SetMapper(mapper);
+  actor->GetProperty()->SetColor(rgb[0] / 255.0, rgb[1] / 255.0, rgb[2] / 255.0);
+  return actor;
+}
+
+// Puts `under` beneath everything the renderer draws in 2D so far (the
+// chart): 2D props are drawn in the order they were added.
+void add_under(vtkRenderer* renderer, const std::vector<vtkSmartPointer<vtkActor2D>>& under) {
+  std::vector<vtkSmartPointer<vtkProp>> before;
+  vtkPropCollection* props = renderer->GetViewProps();
+  props->InitTraversal();
+  while (vtkProp* p = props->GetNextProp()) before.emplace_back(p);
+  for (const auto& p : before) renderer->RemoveViewProp(p);
+  for (const auto& a : under) renderer->AddViewProp(a);
+  for (const auto& p : before) renderer->AddViewProp(p);
+}
+
+// The bands: light shades over the plot area's height, alternating, under
+// the chart (whose plot area is transparent); their labels horizontal at
+// each band's top left, a label that would run into an earlier one in its
+// row a row lower. Placed in pixels, after a first render has laid out the axes.
+void add_bands(vtkContextView* view, vtkChartXY* chart, const std::vector<PlotBand>& bands) {
+  if (bands.empty()) return;
+  constexpr unsigned char kShade[2][3] = {{222, 232, 245}, {240, 240, 240}};
+  constexpr double kRow = 17;  // [px] of a 13 pt line, with a gap
+  view->GetRenderWindow()->Render();
+  vtkAxis* x = chart->GetAxis(vtkAxis::BOTTOM);
+  vtkAxis* y = chart->GetAxis(vtkAxis::LEFT);
+  const double px0 = x->GetPoint1()[0], px1 = x->GetPoint2()[0];
+  const double bottom = y->GetPoint1()[1], top = y->GetPoint2()[1];
+  const double x0 = x->GetMinimum(), x1 = x->GetMaximum();
+  const auto pixel = [&](double v) {
+    return px0 + (std::clamp(v, x0, x1) - x0) / (x1 - x0) * (px1 - px0);
+  };
+  std::vector<vtkSmartPointer<vtkActor2D>> boxes;
+  std::vector<double> row_end;  // per row, the right edge of its last label [px]
+  for (std::size_t i = 0; i < bands.size(); ++i) {
+    const PlotBand& b = bands[i];
+    if (b.x1 < x0 || b.x0 > x1) continue;
+    boxes.push_back(pixel_box(pixel(b.x0), bottom, pixel(b.x1), top, kShade[i % 2]));
+    if (b.label.empty()) continue;
+    vtkNew<vtkTextActor> text;
+    text->SetInput(b.label.c_str());
+    vtkTextProperty* p = text->GetTextProperty();
+    p->SetFontSize(13);
+    p->SetColor(0.2, 0.2, 0.2);
+    p->SetVerticalJustificationToTop();
+    double box[4];
+    text->GetBoundingBox(view->GetRenderer(), box);
+    const double left = pixel(b.x0) + 4;
+    std::size_t row = 0;
+    while (row < row_end.size() && left < row_end[row] + 6) ++row;
+    if (row == row_end.size()) row_end.push_back(0);
+    row_end[row] = left + (box[1] - box[0]);
+    text->SetDisplayPosition(static_cast<int>(left), static_cast<int>(top - 4 - kRow * row));
+    view->GetRenderer()->AddActor2D(text);
+  }
+  add_under(view->GetRenderer(), boxes);
+}
+
 void label_axis(vtkAxis* axis, const std::string& title) {
   axis->SetTitle(title);
   axis->GetTitleProperties()->SetFontSize(16);
@@ -201,7 +283,8 @@ bool render_png(int width, int height, const std::string& path, std::string* why
 
 bool plot_xy_png(const std::string& title, const std::string& x_label, const std::string& y_label,
                  const std::vector<PlotSeries>& series, const std::string& path, int width,
-                 int height, std::string* why, const std::vector<PlotMarker>& markers) {
+                 int height, std::string* why, const std::vector<PlotMarker>& markers,
+                 const std::vector<PlotBand>& bands) {
   check_series(series);
   return render_png(width, height, path, why, [&](vtkContextView* view) {
     vtkNew<vtkChartXY> chart;  // the scene keeps it
@@ -210,13 +293,14 @@ bool plot_xy_png(const std::string& title, const std::string& x_label, const std
     chart->GetTitleProperties()->SetFontSize(18);
     label_axis(chart->GetAxis(vtkAxis::BOTTOM), x_label);
     label_axis(chart->GetAxis(vtkAxis::LEFT), y_label);
-    for (std::size_t i = 0; i < series.size(); ++i) add_series(chart, series[i], i);
     const auto y_range = leave_room_for_legend(chart->GetAxis(vtkAxis::LEFT), series);
     const std::vector<PlotMarker> shown =
         fix_x_range(chart->GetAxis(vtkAxis::BOTTOM), series, markers);
+    for (std::size_t i = 0; i < series.size(); ++i) add_series(chart, series[i], i);
     add_marker_lines(chart, shown, y_range);
     chart->SetShowLegend(true);
     chart->GetLegend()->GetLabelProperties()->SetFontSize(14);
+    add_bands(view, chart, bands);
     add_marker_labels(view, chart, shown);
   });
 }
@@ -229,11 +313,20 @@ bool plot_panels_png(const std::string& title, const std::string& x_label,
     check_series(p.lines.empty() ? p.markers : p.lines);
     if (!p.markers.empty()) check_series(p.markers);
   }
+  std::vector<PlotSeries> all;
+  for (const PlotPanel& p : panels) {
+    all.insert(all.end(), p.lines.begin(), p.lines.end());
+    all.insert(all.end(), p.markers.begin(), p.markers.end());
+  }
   return render_png(width, height, path, why, [&](vtkContextView* view) {
     vtkNew<vtkChartMatrix> matrix;  // the scene keeps it
     view->GetScene()->AddItem(matrix);
     const int n = int(panels.size());
     matrix->SetSize(vtkVector2i(1, n));
+    // Room for the y axis titles (VTK's default border clips their first
+    // letter) and between charts for the x tick values of the one above.
+    matrix->SetBorders(80, 60, 30, 40);
+    matrix->SetGutterY(45);
     for (int i = 0; i < n; ++i) {
       const PlotPanel& p = panels[std::size_t(i)];
       vtkChart* chart = matrix->GetChart(vtkVector2i(0, n - 1 - i));  // row 0 is the bottom
@@ -244,6 +337,9 @@ bool plot_panels_png(const std::string& title, const std::string& x_label,
       // The x axis is shared: its title under the last chart only.
       label_axis(chart->GetAxis(vtkAxis::BOTTOM), i + 1 == n ? x_label : "");
       label_axis(chart->GetAxis(vtkAxis::LEFT), p.y_label);
+      // One x range for every chart, the data's (VTK's own would round it
+      // out, 360 deg to 400).
+      fix_x_range(chart->GetAxis(vtkAxis::BOTTOM), all, {});
       std::size_t k = 0;
       for (const PlotSeries& s : p.lines) add_series(chart, s, k++);
       for (const PlotSeries& s : p.markers) add_series(chart, s, k++, true);

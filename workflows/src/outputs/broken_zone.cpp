@@ -30,24 +30,6 @@ double nearest(double px, double py, const std::vector<Segment>& segs) {
 
 Segment segment(const mesh::Mesh& m, int a, int b) { return {m.x[a], m.y[a], m.x[b], m.y[b]}; }
 
-// Edges between a fracture triangle and a rock triangle without fracture:
-// the fracture zone's outer edge.
-std::vector<Segment> fracture_zone_edge(const mesh::Mesh& m) {
-  std::map<std::pair<int, int>, int> sides;  // edge -> bit 1: fracture side, bit 2: other rock
-  for (std::size_t t = 0; t < m.n_triangles(); ++t) {
-    if (m.zone[t] != mesh::kRock) continue;
-    const auto& v = m.triangles[t];
-    for (int k = 0; k < 3; ++k) {
-      const int a = v[k], b = v[(k + 1) % 3];
-      sides[{std::min(a, b), std::max(a, b)}] |= m.fracture[t] ? 1 : 2;
-    }
-  }
-  std::vector<Segment> out;
-  for (const auto& [edge, bits] : sides)
-    if (bits == 3) out.push_back(segment(m, edge.first, edge.second));
-  return out;
-}
-
 // The opening's boundary as mesh/ finds it (the rock's inner boundary,
 // against core, lining or nothing): a user's .msh need not tag it.
 std::vector<Segment> excavation_boundary(const mesh::Mesh& m) {
@@ -97,6 +79,23 @@ double distance_to_ray(const Segment& s, const Ray& r) {
 }
 
 }  // namespace
+
+std::vector<Segment> fracture_zone_edge(const mesh::Mesh& m) {
+  if (m.fracture.empty()) return {};
+  std::map<std::pair<int, int>, int> sides;  // edge -> bit 1: fracture side, bit 2: other rock
+  for (std::size_t t = 0; t < m.n_triangles(); ++t) {
+    if (m.zone[t] != mesh::kRock) continue;
+    const auto& v = m.triangles[t];
+    for (int k = 0; k < 3; ++k) {
+      const int a = v[k], b = v[(k + 1) % 3];
+      sides[{std::min(a, b), std::max(a, b)}] |= m.fracture[t] ? 1 : 2;
+    }
+  }
+  std::vector<Segment> out;
+  for (const auto& [edge, bits] : sides)
+    if (bits == 3) out.push_back(segment(m, edge.first, edge.second));
+  return out;
+}
 
 Resolution fracture_resolution(const Scene& scene, const mesh::Mesh* m) {
   Resolution r;

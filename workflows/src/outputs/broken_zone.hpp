@@ -14,6 +14,7 @@
 // reports h / l_ch and warns above kResolutionLimit.
 #pragma once
 
+#include <array>
 #include <vector>
 
 #include "rockfdem/fdem/bolt_install.hpp"
@@ -54,6 +55,11 @@ struct BrokenZone {
 /// (bolt steel and grout, which reach beyond the fracture zone) are left out.
 BrokenZone broken_zone(const fdem::Engine& e, const mesh::Mesh& m, double h,
                        const std::vector<char>& bolt_triangle);
+
+/// The fracture zone's outer edge: the edges between a rock triangle with
+/// crack elements and one without, as (x0, y0, x1, y1) of the reference
+/// configuration [m]. Empty where every rock triangle can crack.
+std::vector<std::array<double, 4>> fracture_zone_edge(const mesh::Mesh& m);
 
 /// Per triangle, 1 where a bolt of `bolts` owns it (steel or grout); empty
 /// when there are no bolts.

@@ -7,9 +7,11 @@
 
 #include "outputs/continuum_comparison.hpp"
 #include "outputs/continuum_ground_reaction.hpp"
+#include "outputs/continuum_yield.hpp"
 #include "outputs/run_plots.hpp"
 #include "rockfdem/coupling/atomic_file.hpp"
 #include "rockfdem/coupling/insitu_grid.hpp"
+#include "rockfdem/coupling/mesh_grid.hpp"
 #include "rockfdem/coupling/vtk_writer.hpp"
 #include "rockfdem/error.hpp"
 #include "rockfdem/insitu/plastic.hpp"
@@ -208,28 +210,40 @@ void write_profiles(const std::vector<Profile>& profiles, const std::string& pat
   coupling::atomic_write_text(path, csv.str());
 }
 
-void plot_profiles(const std::vector<Profile>& profiles, const std::string& model,
-                   const std::string& dir, RunRecord& summary, bool quiet) {
+// Compression positive, as the pictures: the engine and deal.II give
+// tension positive [Pa].
+std::vector<double> compression_mpa(std::vector<double> v) {
+  for (double& x : v) x *= -1e-6;
+  return v;
+}
+
+/// continuum_profiles.png: one chart per key point's ray, FDEM's and the
+/// counterpart's radial and tangential stress; with Mohr-Coulomb,
+/// continuum_yield.png.
+void plot_profiles(const std::vector<Profile>& profiles, const ContinuumStates& c,
+                   const mesh::Mesh& m, const std::string& dir, RunRecord& summary, bool quiet) {
   // Without a display the run's own plots say so, once.
   if (!plots::rendering_available()) return;
   PlotWriter plots(dir, summary, quiet);
-  const std::string name = model == "mohr_coulomb" ? "Mohr-Coulomb" : model;
-  const auto mpa = [](std::vector<double> v) {
-    for (double& x : v) x *= 1e-6;
-    return v;
-  };
-  std::vector<plots::PlotSeries> series;
+  const std::string name = c.model == "mohr_coulomb" ? "Mohr-Coulomb" : c.model;
+  std::vector<plots::PlotPanel> panels;
   for (const Profile& p : profiles) {
-    if (p.ray != "vault" && p.ray != "right_wall") continue;
-    series.push_back({"FDEM s_rr " + p.ray, p.d, mpa(p.fdem_rr)});
-    series.push_back({"FDEM s_tt " + p.ray, p.d, mpa(p.fdem_tt)});
-    series.push_back({name + " s_rr " + p.ray, p.d, mpa(p.cont_rr)});
-    series.push_back({name + " s_tt " + p.ray, p.d, mpa(p.cont_tt)});
+    if (p.d.empty()) continue;
+    panels.push_back({p.ray + " [MPa]",
+                      {{"FDEM radial", p.d, compression_mpa(p.fdem_rr)},
+                       {"FDEM tangential", p.d, compression_mpa(p.fdem_tt)},
+                       {name + " radial", p.d, compression_mpa(p.cont_rr)},
+                       {name + " tangential", p.d, compression_mpa(p.cont_tt)}},
+                      {}});
   }
-  if (series.empty()) return;
-  plots.xy("continuum_profiles.png",
-           "Radial and tangential stress along rays, end of run: FDEM vs " + name + " continuum",
-           "distance from the wall along the ray [m]", "stress [MPa], tension positive", series);
+  if (!panels.empty())
+    plots.panels("continuum_profiles.png",
+                 "Stress along each key point's ray, end of run: FDEM vs " + name +
+                     " continuum (compression +)",
+                 "distance from the wall along the ray [m]", panels, 260 * int(panels.size()));
+  if (c.model == "mohr_coulomb" && !c.yielded.empty())
+    plots.picture("continuum_yield.png", coupling::mesh_grid(m),
+                  yield_picture(m, c.yielded, c.end.active));
 }
 
 /// The continuum's end state as insitu.vtu is written, with the model named
@@ -349,7 +363,7 @@ CounterpartComparison compare_with_counterpart(
   for (const Monitor& mon : monitors) profiles.push_back(ray_profile(m, e, c, mon, 2 * span));
   write_profiles(profiles, output_path(dir, "continuum_profiles.csv"));
   if (scene.output.vtk) write_continuum_grid(m, c, output_path(dir, "continuum.vtu"));
-  if (scene.output.plots) plot_profiles(profiles, c.model, dir, summary, quiet);
+  if (scene.output.plots) plot_profiles(profiles, c, m, dir, summary, quiet);
   if (c.model == "mohr_coulomb") {
     out.yield = CounterpartYield{c.n_yielded, {}};
     for (const Profile& p : profiles) out.yield->depth_m[p.ray] = p.yielded_depth;

@@ -270,7 +270,7 @@ void RunOutputs::finish(const fdem::Engine& e, const mesh::Mesh& m, PhaseTimer& 
   summary_.history_stages = stage_names_;  // history.csv's "stage" column indexes this list
   // The run's curves, then the support's outputs (each with its plots),
   // then the pictures of the final state.
-  const std::unique_ptr<PlotWriter> plots = curves(e);
+  const std::unique_ptr<PlotWriter> plots = curves();
   if (lining_forces) summary_.lining.forces = lining_->finish(e, ctx_.output_dir, plots.get());
   if (bolt_results_) bolt_results_->finish(e, summary_, plots.get());
   summary_.support = support_verdict(summary_.lining, summary_.bolts);
@@ -279,7 +279,7 @@ void RunOutputs::finish(const fdem::Engine& e, const mesh::Mesh& m, PhaseTimer& 
     if (!ctx_.quiet) std::cerr << "warning: " << summary_.support->line() << '\n';
   }
   if (plots) {
-    tunnel_pictures(*plots, {e, m, scene_, bolts_}, key_points_->node_displacements(e));
+    tunnel_pictures(*plots, {e, m, scene_, bolts_, key_points_->node_displacements(e)});
     pictures_ = plots->rendered();
   }
   timer.stamp("output");
@@ -393,7 +393,8 @@ std::vector<StageSpan> RunOutputs::timeline() const {
   // The spans point into the record's stage reports: take them by reference.
   const std::optional<FdemRecord>& fdem = summary_.fdem;
   if (!history_ || history_->rows().empty() || !fdem || !fdem->stages) return {};
-  return stage_spans(*fdem->stages, history_->column("time").front());
+  return stage_spans(*fdem->stages, history_->column("time").front(),
+                     history_->column("step").front());
 }
 
 std::optional<std::size_t> RunOutputs::support_row() const {
@@ -451,14 +452,14 @@ void RunOutputs::write_report() const {
   workflows::write_report(ctx_.output_dir, scene_, summary_, extras);
 }
 
-std::unique_ptr<PlotWriter> RunOutputs::curves(const fdem::Engine& e) {
+std::unique_ptr<PlotWriter> RunOutputs::curves() {
   if (!scene_.output.plots) return nullptr;
   auto plots = std::make_unique<PlotWriter>(ctx_.output_dir, summary_, ctx_.quiet);
   if (!plots->available()) return nullptr;
   // From the support's installation where asked (and installed).
   const std::optional<std::size_t> from =
       scene_.output.convergence_from_support ? support_row() : std::nullopt;
-  tunnel_curves(*plots, e, *history_, key_points_->monitors(), timeline(), from);
+  tunnel_curves(*plots, *history_, key_points_->monitors(), timeline(), from);
   ground_reaction_plot(*plots, summary_);
   return plots;
 }

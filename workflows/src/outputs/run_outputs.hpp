@@ -104,7 +104,7 @@ class RunOutputs : public StepOutputs {
   void record_convergence_confinement(const fdem::Engine& e, const mesh::Mesh& m);
   /// With plots asked for and a display: the writer, after the run's
   /// curves against time (run_plots.hpp) and ground_reaction.png; else null.
-  std::unique_ptr<PlotWriter> curves(const fdem::Engine& e);
+  std::unique_ptr<PlotWriter> curves();
   /// The explicit stages on the history's time axis (run_timeline.hpp).
   std::vector<StageSpan> timeline() const;
   /// The history row of the support's installation (the first lining or

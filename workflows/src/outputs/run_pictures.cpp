@@ -2,8 +2,10 @@
 
 #include <cmath>
 #include <map>
+#include <set>
 
 #include "outputs/broken_zone.hpp"
+#include "outputs/picture_outlines.hpp"
 #include "rockfdem/fdem/bolt_sections.hpp"
 #include "rockfdem/mesh/opening.hpp"
 
@@ -106,6 +108,16 @@ std::vector<std::uint8_t> excavated(const fdem::Engine& e) {
   return hidden;
 }
 
+// The fracture zone's edge (dashes of a hundredth of the window's width)
+// and, with a displacement, the opening's magnified deformed outline.
+void add_outlines(const PictureContext& c, plots::MeshPicture& p) {
+  const double width = p.view ? p.view->x1 - p.view->x0 : 0.0;
+  plots::PictureLines edge = fracture_zone_lines(c.m, 0.01 * width);
+  if (!edge.segments.empty()) p.lines.push_back(std::move(edge));
+  if (!c.u) return;
+  if (auto outline = deformed_opening(c.e, c.m, c.u)) p.lines.push_back(std::move(*outline));
+}
+
 // The zoomed picture's frame: the window, the lines, the opening left
 // out. A stress picture (`stress`) leaves out the bolts' strip triangles
 // too: steel stresses would set the rock's colour scale, and the bolts
@@ -121,6 +133,7 @@ plots::MeshPicture framed(const PictureContext& c, bool stress) {
   if (!lining.segments.empty()) p.lines.push_back(lining);
   for (const auto& l : bolt_lines(c)) p.lines.push_back(l);
   p.view = opening_window(c.m);
+  add_outlines(c, p);
   return p;
 }
 
@@ -144,14 +157,14 @@ std::optional<plots::MeshView> opening_window(const mesh::Mesh& m) {
   return plots::MeshView{b->xmin - span, b->xmax + span, b->ymin - span, b->ymax + span};
 }
 
-plots::MeshPicture displacement_picture(const PictureContext& c, const NodeDisplacement& u) {
+plots::MeshPicture displacement_picture(const PictureContext& c) {
   plots::MeshPicture p = framed(c, false);
   p.title = "Displacement magnitude |u| from the in-situ state [mm], end of run";
   p.bar_title = "|u| [mm]";
   p.per_point = true;
   p.magnitude = true;
   for (std::size_t n = 0; n < c.e.n_nodes(); ++n) {
-    const auto d = u(int(n));
+    const auto d = c.u ? c.u(int(n)) : std::array<double, 2>{0, 0};
     p.values.push_back(1000 * std::hypot(d[0], d[1]));
   }
   return p;
@@ -165,6 +178,34 @@ plots::MeshPicture principal_picture(const PictureContext& c, bool most_compress
       std::string(most_compressive ? "most" : "least") + " compressive [MPa]\ncompression +";
   for (std::size_t t = 0; t < c.e.n_triangles(); ++t)
     p.values.push_back(compressive_principal_mpa(c.e, t)[most_compressive ? 0 : 1]);
+  return p;
+}
+
+plots::MeshPicture mesh_picture(const PictureContext& c) {
+  plots::MeshPicture p;
+  p.title = "Final mesh: zones, broken cracks in red";
+  p.bar_title = "zone";
+  p.edges = true;
+  p.hidden = excavated(c.e);
+  const std::vector<char> bolted = bolt_triangles(c.bolts, c.m.n_triangles());
+  std::set<int> present;
+  for (std::size_t t = 0; t < c.e.n_triangles(); ++t) {
+    const bool cracks = !c.m.fracture.empty() && c.m.fracture[t];
+    p.values.push_back(!bolted.empty() && bolted[t]   ? 3
+                       : c.m.zone[t] == mesh::kLining ? 2
+                       : cracks                       ? 0
+                                                      : 1);
+    if (!p.hidden[t]) present.insert(int(p.values.back()));
+  }
+  const char* names[] = {"rock, cracks", "rock, no cracks", "lining", "bolt, grout"};
+  for (const int code : present) p.categories.push_back({code, names[code]});
+  p.lines = broken_cracks(c.e, {}, false);
+  p.lines.front().rgb = {0.85, 0.0, 0.0};
+  p.lines.front().width = 2.5;
+  p.view = opening_window(c.m);
+  plots::PictureLines edge =
+      fracture_zone_lines(c.m, p.view ? 0.01 * (p.view->x1 - p.view->x0) : 0);
+  if (!edge.segments.empty()) p.lines.push_back(std::move(edge));
   return p;
 }
 

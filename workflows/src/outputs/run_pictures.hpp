@@ -28,17 +28,29 @@ struct PictureContext {
   const mesh::Mesh& m;
   const Scene& scene;
   const fdem::BoltPlan* bolts;  ///< installed bolts are drawn; may be null
+  /// Displacement from the in-situ state (the key points'); empty: the
+  /// opening's deformed outline is not drawn.
+  NodeDisplacement u;
 };
 
-/// |u| [mm] per node, from the in-situ state (`u`: the key points'
-/// displacement), with the broken rock cracks by mode, the lining and the bolts.
-plots::MeshPicture displacement_picture(const PictureContext& c, const NodeDisplacement& u);
+/// |u| [mm] per node, from the in-situ state (c.u), with the broken rock
+/// cracks by mode, the lining, the bolts, the fracture zone's edge and the
+/// opening's magnified deformed outline.
+plots::MeshPicture displacement_picture(const PictureContext& c);
 
 /// The most (or least) compressive in-plane principal stress [MPa],
-/// compression positive, with the broken rock cracks, the lining and the bolts.
+/// compression positive, with the broken rock cracks, the lining, the
+/// bolts, the fracture zone's edge and the opening's deformed outline.
 plots::MeshPicture principal_picture(const PictureContext& c, bool most_compressive);
 
-/// The whole model (final_mesh.png) coloured by the most compressive
+/// final_mesh.png of a tunnel: the mesh around the opening (as the field
+/// pictures frame it), its triangles' edges, coloured by what they are
+/// (rock that can crack, rock that cannot, lining, bolt steel and grout),
+/// the excavated ones left out, every broken crack in red and the fracture
+/// zone's edge.
+plots::MeshPicture mesh_picture(const PictureContext& c);
+
+/// A specimen's whole model (final_mesh.png) coloured by the most compressive
 /// in-plane principal stress [MPa], compression positive, or with
 /// `most_tensile` (a Brazilian disc) the most tensile, tension positive;
 /// every broken crack in black, excavated triangles grey.

@@ -33,10 +33,11 @@ void PlotWriter::note(bool rendered, const std::string& file, const std::string&
 
 void PlotWriter::xy(const std::string& file, const std::string& title, const std::string& x_label,
                     const std::string& y_label, const std::vector<plots::PlotSeries>& series,
-                    const std::vector<plots::PlotMarker>& markers) {
+                    const std::vector<plots::PlotMarker>& markers,
+                    const std::vector<plots::PlotBand>& bands) {
   std::string why;
   note(plots::plot_xy_png(title, x_label, y_label, series, output_path(dir_, file), 900, 600, &why,
-                          markers),
+                          markers, bands),
        file, why);
 }
 
@@ -48,15 +49,15 @@ void PlotWriter::panels(const std::string& file, const std::string& title,
        file, why);
 }
 
-void PlotWriter::broken_cracks(const fdem::Engine& e, const History& h,
-                               const std::vector<plots::PlotMarker>& markers) {
-  const std::vector<double> t = h.column("time");
-  xy("broken.png", "Broken crack elements by failure mode", time_axis_label(e),
+void PlotWriter::broken_cracks(const History& h, const std::string& x, const std::string& x_label,
+                               const std::vector<plots::PlotBand>& bands) {
+  const std::vector<double> t = h.column(x);
+  xy("broken.png", "Broken crack elements by failure mode", x_label,
      "broken crack elements [count]",
      {{"mode I", t, h.column("broken_I")},
       {"mode II", t, h.column("broken_II")},
       {"mixed", t, h.column("broken_mixed")}},
-     markers);
+     {}, bands);
 }
 
 void PlotWriter::picture(const std::string& file, const coupling::VtkGrid& grid,
@@ -74,11 +75,14 @@ std::string time_axis_label(const fdem::Engine& e) {
   return e.mass_scaling_report().enabled ? "pseudo-time [s] (mass-scaled)" : "time [s]";
 }
 
-void tunnel_curves(PlotWriter& plots, const fdem::Engine& e, const History& h,
-                   const std::vector<Monitor>& monitors, const std::vector<StageSpan>& spans,
-                   std::optional<std::size_t> from) {
-  const std::vector<plots::PlotMarker> markers = stage_markers(spans);
-  const std::vector<double> t = h.column("time");
+void tunnel_curves(PlotWriter& plots, const History& h, const std::vector<Monitor>& monitors,
+                   const std::vector<StageSpan>& spans, std::optional<std::size_t> from) {
+  std::vector<plots::PlotBand> bands = stage_bands(spans);
+  const std::vector<double> t = h.column("step");
+  // A run stopped inside a stage has no report of it; its rows get a band.
+  if (!t.empty() && (bands.empty() || t.back() > bands.back().x1))
+    bands.push_back({bands.empty() ? t.front() : bands.back().x1, t.back(),
+                     std::to_string(int(h.column("stage").back())) + " (stopped in this stage)"});
   const std::size_t first = from.value_or(0);
   const auto curve = [&](const std::string& column) {
     return from ? since_row(h.column(column), first) : h.column(column);
@@ -88,14 +92,14 @@ void tunnel_curves(PlotWriter& plots, const fdem::Engine& e, const History& h,
   std::vector<plots::PlotSeries> points;
   for (const Monitor& mon : monitors)
     points.push_back({mon.name, tt, curve(mon.name + "_radial_mm")});
-  plots.xy("convergence.png", "Key points: radial displacement towards the opening",
-           time_axis_label(e), "radial displacement " + origin + " [mm]", points, markers);
-  plots.xy("chord_convergence.png", "Chord convergence (closure between key points)",
-           time_axis_label(e), "closure " + origin + " [mm]",
+  plots.xy("convergence.png", "Key points: radial displacement towards the opening", kStepAxis,
+           "radial displacement " + origin + " [mm]", points, {}, bands);
+  plots.xy("chord_convergence.png", "Chord convergence (closure between key points)", kStepAxis,
+           "closure " + origin + " [mm]",
            {{"walls (chord)", tt, curve("wall_chord_convergence_mm")},
             {"shoulders (chord)", tt, curve("shoulder_chord_convergence_mm")}},
-           markers);
-  plots.broken_cracks(e, h, markers);
+           {}, bands);
+  plots.broken_cracks(h, "step", kStepAxis, bands);
 }
 
 namespace {
@@ -169,12 +173,12 @@ void ground_reaction_plot(PlotWriter& plots, const RunRecord& r) {
            "pressure on the opening [MPa]", series);
 }
 
-void tunnel_pictures(PlotWriter& plots, const PictureContext& c, const NodeDisplacement& u) {
+void tunnel_pictures(PlotWriter& plots, const PictureContext& c) {
   const coupling::VtkGrid grid = picture_grid(c.e);
-  plots.picture("displacement.png", grid, displacement_picture(c, u));
+  plots.picture("displacement.png", grid, displacement_picture(c));
   plots.picture("sigma_max_compressive.png", grid, principal_picture(c, true));
   plots.picture("sigma_min_compressive.png", grid, principal_picture(c, false));
-  plots.final_mesh(c.e, false);
+  plots.picture("final_mesh.png", grid, mesh_picture(c));
 }
 
 void specimen_plots(const fdem::Engine& e, const History& h, bool disc, const std::string& dir,
@@ -187,7 +191,7 @@ void specimen_plots(const fdem::Engine& e, const History& h, bool disc, const st
            disc ? "tensile stress [MPa]" : "axial stress [MPa]",
            {{disc ? "tensile stress" : "axial stress", h.column("axial_strain"),
              scaled(h.column(stress), 1e-6)}});
-  plots.broken_cracks(e, h);
+  plots.broken_cracks(h, "time", time_axis_label(e));
   // A disc splits in tension (the major principal stress), a UCS specimen
   // is crushed (the minor).
   plots.final_mesh(e, disc);

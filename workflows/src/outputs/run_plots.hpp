@@ -25,17 +25,20 @@ class PlotWriter {
   /// stderr unless `quiet`) and available() is false.
   PlotWriter(std::string dir, RunRecord& summary, bool quiet);
   bool available() const { return available_; }
-  /// DIR/`file`: a line plot of `series`, with vertical `markers`.
+  /// DIR/`file`: a line plot of `series`, with vertical `markers` and
+  /// shaded `bands`.
   void xy(const std::string& file, const std::string& title, const std::string& x_label,
           const std::string& y_label, const std::vector<plots::PlotSeries>& series,
-          const std::vector<plots::PlotMarker>& markers = {});
+          const std::vector<plots::PlotMarker>& markers = {},
+          const std::vector<plots::PlotBand>& bands = {});
   /// DIR/`file`: charts stacked top to bottom (plots::plot_panels_png).
   void panels(const std::string& file, const std::string& title, const std::string& x_label,
               const std::vector<plots::PlotPanel>& panels, int height);
-  /// broken.png: broken crack elements by mode against (pseudo-)time.
-  void broken_cracks(const fdem::Engine& e, const History& h,
-                     const std::vector<plots::PlotMarker>& markers = {});
-  /// final_mesh.png: the whole model coloured by the most compressive
+  /// broken.png: broken crack elements by mode against history column
+  /// `x` (labelled `x_label`), with the stages' `bands`.
+  void broken_cracks(const History& h, const std::string& x, const std::string& x_label,
+                     const std::vector<plots::PlotBand>& bands = {});
+  /// final_mesh.png of a specimen: the whole model coloured by the most compressive
   /// in-plane principal stress [MPa] (compression positive), or for a
   /// Brazilian disc (`most_tensile`) the most tensile (tension positive);
   /// broken cracks in black, excavated triangles grey.
@@ -56,24 +59,25 @@ class PlotWriter {
 /// The time axis' label: pseudo-time when the masses are scaled.
 std::string time_axis_label(const fdem::Engine& e);
 
-/// A tunnel run's curves against (pseudo-)time, with the stages' markers
-/// (`spans`): convergence.png (the key points' radial displacement),
+/// The step axis' label of a tunnel's curves.
+constexpr const char* kStepAxis = "explicit step (stages shaded)";
+
+/// A tunnel run's curves against the explicit step, with the stages as
+/// bands (`spans`): convergence.png (the key points' radial displacement),
 /// chord_convergence.png (the chords' closure), from the in-situ state or,
 /// given history row `from` (the support's installation), from that row
 /// on less their value there; and broken.png.
-void tunnel_curves(PlotWriter& plots, const fdem::Engine& e, const History& h,
-                   const std::vector<Monitor>& monitors, const std::vector<StageSpan>& spans,
-                   std::optional<std::size_t> from);
+void tunnel_curves(PlotWriter& plots, const History& h, const std::vector<Monitor>& monitors,
+                   const std::vector<StageSpan>& spans, std::optional<std::size_t> from);
 
 /// ground_reaction.png: the record's ground reaction curves in pressure
 /// (implicit, and the Mohr-Coulomb counterpart's), the support's
 /// characteristic lines and the run's end point (convergence_confinement).
 void ground_reaction_plot(PlotWriter& plots, const RunRecord& r);
 
-/// A tunnel's final state: displacement.png (`u`: the key points'
-/// displacement), sigma_max_compressive.png, sigma_min_compressive.png and
-/// final_mesh.png.
-void tunnel_pictures(PlotWriter& plots, const PictureContext& c, const NodeDisplacement& u);
+/// A tunnel's final state: displacement.png, sigma_max_compressive.png,
+/// sigma_min_compressive.png and final_mesh.png (the mesh).
+void tunnel_pictures(PlotWriter& plots, const PictureContext& c);
 
 /// A specimen's pictures: stress_strain.png (axial stress of a UCS test,
 /// or the Brazilian tensile stress 2P / (pi D) of a disc, against the

@@ -8,14 +8,44 @@
 
 namespace rockfdem::workflows {
 
-std::vector<StageSpan> stage_spans(const std::vector<StageRecord>& stages, double t_handoff) {
+std::vector<StageSpan> stage_spans(const std::vector<StageRecord>& stages, double t_handoff,
+                                   double step_handoff) {
   std::vector<StageSpan> spans;
-  double t = t_handoff;
+  double t = t_handoff, step = step_handoff;
   for (const StageRecord& s : stages) {
-    spans.push_back({s.kind, t, t + s.simulated_time, &s});
+    spans.push_back({s.kind, t, t + s.simulated_time, step, step + double(s.steps), &s});
     t += s.simulated_time;
+    step += double(s.steps);
   }
   return spans;
+}
+
+namespace {
+
+std::string numbered(const StageSpan& s) {
+  return (s.report ? std::to_string(s.report->number) + " " : std::string()) + s.kind;
+}
+
+}  // namespace
+
+std::vector<plots::PlotBand> stage_bands(const std::vector<StageSpan>& spans) {
+  std::vector<plots::PlotBand> bands;
+  std::string before;  // the stages of no steps since the last band
+  for (const StageSpan& s : spans) {
+    if (!(s.last_step > s.first_step)) {
+      before += (before.empty() ? "" : ", ") + numbered(s);
+      continue;
+    }
+    std::string label = before.empty() ? numbered(s) : before + ", then " + numbered(s);
+    before.clear();
+    const StageChanges none;
+    const StageChanges& changes = s.report ? s.report->changes : none;
+    if (changes.triggered.value_or(false))  // only a grout stage triggers
+      label += " (" + std::to_string(changes.rejoined.value_or(0)) + " cracks re-joined)";
+    bands.push_back({s.first_step, s.last_step, label});
+  }
+  if (!before.empty() && !bands.empty()) bands.back().label += ", then " + before;
+  return bands;
 }
 
 std::vector<plots::PlotMarker> stage_markers(const std::vector<StageSpan>& spans) {

@@ -12,18 +12,28 @@
 
 namespace rockfdem::workflows {
 
-/// When one explicit stage began and ended on the run's time axis [s].
+/// When one explicit stage began and ended on the run's time axis [s]
+/// and in steps.
 struct StageSpan {
   std::string kind;
   double start = 0, end = 0;
-  const StageRecord* report = nullptr;  ///< its entry of the record's stages
+  double first_step = 0, last_step = 0;  ///< equal for a stage of no steps
+  const StageRecord* report = nullptr;   ///< its entry of the record's stages
 };
 
 /// The stages of `stages` (the record's stage reports: kind, simulated_time
-/// per stage, in order) laid end to end from `t_handoff`, the time at the end of
-/// the hand-off step (history.csv's first row). The spans point into
-/// `stages`, which must outlive them.
-std::vector<StageSpan> stage_spans(const std::vector<StageRecord>& stages, double t_handoff);
+/// and steps per stage, in order) laid end to end from `t_handoff` and
+/// `step_handoff`, the time and step at the end of the hand-off step
+/// (history.csv's first row). The spans point into `stages`, which must
+/// outlive them.
+std::vector<StageSpan> stage_spans(const std::vector<StageRecord>& stages, double t_handoff,
+                                   double step_handoff = 0);
+
+/// The plots' stage bands on the step axis: one per stage that took steps,
+/// labelled with its number and kind; the stages of no steps before it are
+/// named at the head of its label ("2 lining, 3 bolts, then 5 grout"), and
+/// a grout stage that grouted says how many cracks it re-joined.
+std::vector<plots::PlotBand> stage_bands(const std::vector<StageSpan>& spans);
 
 /// One marker per stage start, stages starting together sharing one
 /// ("lining, bolts, remove_core"); a grout stage that grouted adds one at

@@ -48,9 +48,19 @@ struct PlotMarker {
   std::string label;
 };
 
-/// Line plot with title, axis labels, a legend and `markers`, written
-/// atomically as PNG of width x height pixels. The x axis spans the series
-/// exactly; a marker outside it is not drawn.
+/// A shaded band across a line plot from x0 to x1 (a construction stage),
+/// its label written at its top left; bands next to each other alternate
+/// two light shades.
+struct PlotBand {
+  double x0 = 0, x1 = 0;
+  std::string label;
+};
+
+/// Line plot with title, axis labels, a legend, `markers` and `bands`
+/// (behind the curves), written atomically as PNG of width x height
+/// pixels. The x axis spans the series exactly; a marker outside it is not
+/// drawn, a band is clipped to it. Labels that would overlap the one
+/// before move down a row.
 /// @return false (reason in *why) when rendering is not available; nothing written.
 /// @throws std::invalid_argument for no series, x/y size mismatch (names the
 ///         series) or a size below 16 pixels; std::runtime_error naming `path`
@@ -58,7 +68,8 @@ struct PlotMarker {
 bool plot_xy_png(const std::string& title, const std::string& x_label, const std::string& y_label,
                  const std::vector<PlotSeries>& series, const std::string& path, int width = 900,
                  int height = 600, std::string* why = nullptr,
-                 const std::vector<PlotMarker>& markers = {});
+                 const std::vector<PlotMarker>& markers = {},
+                 const std::vector<PlotBand>& bands = {});
 
 /// One chart of a stacked figure: its y axis label, curves drawn as lines
 /// and series drawn as unjoined circles (either list may be empty, not both).
@@ -96,13 +107,19 @@ struct PictureLines {
 /// What a mesh picture shows: the grid's triangles (only its points and
 /// triangles are used) coloured by `values`, NaN grey, hidden triangles
 /// left out (white); `lines` on top in order; a colour bar titled
-/// `bar_title` (the quantity and its unit); a legend of the labelled lines.
+/// `bar_title` (the quantity and its unit) with round tick values; a legend
+/// of the labelled lines. Every mesh picture has axes in metres left of and
+/// under the mesh and a scale bar at its lower right.
 struct MeshPicture {
   std::string title;
   std::string bar_title;
-  std::vector<double> values;        ///< one per triangle, or per point with `per_point`
-  bool per_point = false;            ///< values per point, interpolated over each triangle
-  bool magnitude = false;            ///< a light-to-dark map from yellow to red (else blue to red)
+  std::vector<double> values;  ///< one per triangle, or per point with `per_point`
+  bool per_point = false;      ///< values per point, interpolated over each triangle
+  bool magnitude = false;      ///< a light-to-dark map from yellow to red (else blue to red)
+  bool edges = false;          ///< the triangles' edges drawn (the mesh itself)
+  /// Names for the codes in `values` (each code its own colour, named
+  /// beside the bar); empty: a colour scale (or the overlay's categories).
+  std::vector<std::pair<int, std::string>> categories;
   std::vector<std::uint8_t> hidden;  ///< per triangle, 1: not drawn; empty: all drawn
   std::vector<PictureLines> lines;
   /// The window drawn; the colour scale then spans the drawn triangles
