@@ -279,7 +279,7 @@ TEST(MshRecord, a_record_cut_short_or_out_of_bounds_is_refused) {
   EXPECT_NE(answer(long_error, limits).find("an error message of 65537 bytes"), std::string::npos);
 }
 
-// Issue 32, item 4: a binary MSH 4.1 with 20 flipped bits crashed gmsh.
+// A binary MSH 4.1 with 20 flipped bits crashed gmsh.
 // Here 60 such files (bits chosen by seeds 1-60 anywhere after the
 // $MeshFormat line): each reads or is one InputError naming the file, and
 // this process lives on.
