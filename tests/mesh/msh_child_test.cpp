@@ -82,13 +82,16 @@ const Files& tunnel_files() {
   return f;
 }
 
-// The two inputs tests/fuzz/fuzz_msh found crashing gmsh 4.8's reader with
-// SIGSEGV (in GModel::_associateEntityWithMeshVertices, and in
-// GModel::setPhysicalName past the end of a tree): read in this process
+// The inputs tests/fuzz/fuzz_msh found crashing gmsh 4.8's reader with
+// SIGSEGV (in GModel::_associateEntityWithMeshVertices, in
+// GModel::setPhysicalName past the end of a tree, and in
+// GModel::getMeshVertexByTag(int) on a binary MSH 4.1 element naming a node
+// tag beyond int, which no check of ours scans in a binary file): read in this process
 // they end it (checked in a forked death test); through read_msh each is
 // an InputError naming the file and the signal.
 TEST(MshChild, gmsh_crashes_are_refused_naming_the_file_and_the_signal) {
-  for (const char* name : {"gmsh48_msh2_associate_entity.msh", "gmsh48_set_physical_name.msh"}) {
+  for (const char* name : {"gmsh48_msh2_associate_entity.msh", "gmsh48_set_physical_name.msh",
+                           "gmsh48_msh41_binary_tag_beyond_int.msh"}) {
     const std::string path = std::string(ROCKFDEM_FUZZ_REFUSED_DIR) + "/" + name;
     for (const MshFileSpec& spec :
          {MshFileSpec{path, {}, {}, ""},
@@ -279,7 +282,7 @@ TEST(MshRecord, a_record_cut_short_or_out_of_bounds_is_refused) {
   EXPECT_NE(answer(long_error, limits).find("an error message of 65537 bytes"), std::string::npos);
 }
 
-// Issue 32, item 4: a binary MSH 4.1 with 20 flipped bits crashed gmsh.
+// A binary MSH 4.1 with 20 flipped bits crashed gmsh.
 // Here 60 such files (bits chosen by seeds 1-60 anywhere after the
 // $MeshFormat line): each reads or is one InputError naming the file, and
 // this process lives on.

@@ -432,7 +432,7 @@ TEST(MshUserFile, binary_counts_beyond_the_file_are_refused) {
                  "the $Elements section declares 5555555555 elements");
 }
 
-// Found by flipping bits of a binary MSH 4.1 (issue 32, item 4): the top
+// Found by flipping bits of a binary MSH 4.1: the top
 // bit of an entity's count of physical groups makes gmsh 4.8 throw
 // std::length_error from its vector (it was exit 1, an unexpected error).
 TEST(MshUserFile, binary_entity_count_beyond_any_array_is_refused) {
@@ -456,7 +456,7 @@ TEST(MshUserFile, geo_script_is_refused_and_never_run) {
   EXPECT_FALSE(std::ifstream(marker).good()) << "the script's command ran";
 }
 
-// Bounded reads (issue 32, item 5). A 3 GB sparse file was read for 43 s
+// Bounded reads. A 3 GB sparse file was read for 43 s
 // and 7.5 GB before "does not start with $MeshFormat" (its "first line"
 // had no end), and a valid mesh with 2 GB appended was read for 22.7 s and
 // 4.6 GB, then accepted. The start is now told from 64 bytes, the end from

@@ -122,7 +122,7 @@ fs::path one_step_stages(const std::string& name, int n) {
 
 }  // namespace
 
-// Per-stage costs (issue 32, item 9): a scene of as many one-step stages
+// Per-stage costs: a scene of as many one-step stages
 // as a scene may hold runs within the time check states. The bound used
 // to count steps and outputs only: 999 such stages on 1,378 triangles were
 // bounded at about 8 s and took 13-16 s here (13 ms per stage outside its
@@ -143,7 +143,7 @@ TEST(CheckBounds, many_stages_run_within_the_time_check_states) {
   fs::remove_all(scene.parent_path());
 }
 
-// More stages than any construction sequence (the issue's 20,000 one-step
+// More stages than any construction sequence (20,000 one-step
 // stages) are bad input: exit 2 naming the key and the limit, for check
 // and run alike, and nothing written.
 TEST(CheckBounds, more_stages_than_the_limit_are_refused) {

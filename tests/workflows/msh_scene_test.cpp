@@ -76,7 +76,7 @@ TEST(MshScene, check_reads_the_mesh_file_and_refuses_a_bad_one) {
 }
 
 // The two files tests/fuzz/fuzz_msh found crashing gmsh 4.8's reader with
-// SIGSEGV (issue 32, item 4) ended `rockfdem` by that signal (exit 139).
+// SIGSEGV ended `rockfdem` by that signal (exit 139).
 // gmsh now reads a user's .msh in a child process: each is exit 2 from
 // check, run and mesh, one line naming the file and the signal, nothing
 // written.

@@ -4,12 +4,16 @@
 #include <fcntl.h>
 #include <gtest/gtest.h>
 #include <sys/file.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <filesystem>
+#include <fstream>
 #include <functional>
 #include <map>
 #include <set>
+#include <utility>
+#include <vector>
 
 #include "cli_runner.hpp"
 
@@ -98,6 +102,34 @@ TEST(OutputDir, refused_run_leaves_an_existing_directory_untouched) {
     EXPECT_EQ(r.code, 2) << args << ": " << r.output;
     EXPECT_NE(r.output.find("engine.dt"), std::string::npos) << r.output;
     EXPECT_EQ(snapshot(out), before) << args;
+  }
+  fs::remove_all(out);
+}
+
+// The owner record is a line or two this program wrote. In its place a
+// FIFO (read, it would block the command for good), a link to /dev/zero
+// (read whole, memory without bound) or a file beyond any record's size is
+// exit 2 naming the record and what it is, at once and with nothing
+// written; `timeout` ends a command that waits or grows instead.
+TEST(OutputDir, an_owner_record_that_is_not_a_small_file_is_refused_unread) {
+  const fs::path out = scratch("owner-forged");
+  const fs::path owner = out / ".rockfdem-scene";
+  const std::vector<std::pair<std::function<void()>, std::string>> cases{
+      {[&] { ASSERT_EQ(mkfifo(owner.c_str(), 0644), 0); }, "is a FIFO, not a regular file"},
+      {[&] { fs::create_symlink("/dev/zero", owner); }, "is a device, not a regular file"},
+      {[&] {
+         std::ofstream(owner) << "sparse";
+         fs::resize_file(owner, std::uintmax_t(1) << 30);
+       },
+       "has 1073741824 bytes"}};
+  for (const auto& [make, expect] : cases) {
+    fs::remove_all(out);
+    fs::create_directories(out);
+    make();
+    const Result r = run("mesh " + kCircular + " -q -o " + out.string(), "timeout 60");
+    EXPECT_EQ(r.code, 2) << expect << ": " << r.output;
+    EXPECT_TRUE(has(r.output, owner.string() + " " + expect)) << r.output;
+    EXPECT_EQ(names_in(out), std::set<std::string>{".rockfdem-scene"}) << expect;
   }
   fs::remove_all(out);
 }

@@ -337,7 +337,7 @@ TEST_F(Outputs, specimen_runs_render_their_plots_under_xvfb) {
   }
 }
 
-// A full disk (issue 32, item 10): the run stops with exit 1 and one line
+// A full disk: the run stops with exit 1 and one line
 // naming the file and the system's reason, without VTK's dozen lines of
 // pipeline state and colour codes on stderr, and summary.json records the
 // failure where it still fits (the half-written frame is removed first);

@@ -1,4 +1,4 @@
-// Checkpoint and restart as a user meets them (issue 9): a run restarted
+// Checkpoint and restart as a user meets them: a run restarted
 // from a checkpoint ends bit-identical to an uninterrupted one, with
 // fracture, contact, bolts and grouting active and another thread count;
 // SIGTERM writes outputs and a checkpoint and exits 143; SIGKILL at any
@@ -228,8 +228,8 @@ TEST_F(Restart, refuses_truncated_corrupt_foreign_and_other_version_checkpoints)
   fs::remove_all(dir);
 }
 
-// A checkpoint whose run state is {} with a recomputed checksum (the
-// issue's forgery): exit 2 naming the file and the field, nothing written.
+// A checkpoint whose run state is {} with a recomputed checksum (a
+// forgery): exit 2 naming the file and the field, nothing written.
 TEST_F(Restart, forged_empty_run_state_is_refused_with_exit_2) {
   const Checkpoint good =
       read_checkpoint(checkpoints(*reference_dir_).back().string(), restart_scene());
@@ -279,8 +279,8 @@ TEST_F(Restart, forgeries_that_do_not_fit_the_run_leave_no_output_folder) {
        [](Checkpoint& c) {
          c.run["stages"]["stage_monitor_u"] = {0.0, 0.0};
        }},
-      // Consistent among themselves, but not with the engine state's step
-      // (issue 32, item 8): the first stage again, from the hand-off step.
+      // Consistent among themselves, but not with the engine state's step:
+      // the first stage again, from the hand-off step.
       {"stage-zero",
        [](Checkpoint& c) {
          nlohmann::json& s = c.run["stages"];
@@ -599,8 +599,8 @@ TEST(CheckpointRead, forged_run_states_name_the_checkpoint_and_the_field) {
        {{"csv", "step\n"},
         {"frames", nlohmann::json::array({nlohmann::json::array({0.0, "../x"})})}},
        "field 'outputs.bolts.frames[0][1]' = \"../x\" is not a plain file name"},
-      // Values of the right type that the restart would run on with
-      // (issue 32, item 8): each against the scene and the other fields.
+      // Values of the right type that the restart would run on, checked
+      // each against the scene and the other fields.
       {"/stages/stage_first_step", std::int64_t(9000000000000000000),
        "field 'stages.stage_first_step' = 9000000000000000000 is not 1, the hand-off step and "
        "the finished stages' steps"},
@@ -671,7 +671,7 @@ std::string forge_raw(const fs::path& dir, const std::string& run) {
   return path.string();
 }
 
-// Run state text that is not the JSON a run writes (issue 32, item 8):
+// Run state text that is not the JSON a run writes:
 // 100,000 nested '[' crashed the reader (SIGSEGV, the nesting was checked
 // after the parse and a message dumped the value recursively); NaN, an
 // infinity and trailing text were refused with the JSON library's raw

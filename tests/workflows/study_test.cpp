@@ -7,6 +7,7 @@
 #include <signal.h>
 #include <spawn.h>
 #include <sys/stat.h>
+#include <sys/types.h>
 #include <sys/wait.h>
 
 #include <algorithm>
@@ -614,4 +615,42 @@ TEST(Study, resume_reruns_no_finished_status) {
                                              "refused", "failed"}));
   fs::remove_all(out);
   fs::remove_all(forced);
+}
+
+// A variant's record in its place is this program's own small JSON file;
+// anything else there (a FIFO, a record nested 100,000 levels deep under its identity, one whose
+// result has the wrong types) is not waited on, read whole or dumped: it counts as no record, and
+// the same command runs that variant again and ends with exit 0.
+TEST(Study, a_forged_variant_record_is_run_again) {
+  const fs::path out = scratch("forged-record");
+  const std::string args =
+      "sweep " + kScene + " --vary materials.rock.young=3e9 -j 1 -q -o " + out.string();
+  const Result first = run(args);
+  ASSERT_EQ(first.code, 0) << first.output;
+  const fs::path record = out / "variants" / "materials.rock.young=3e9" / "variant.json";
+  ASSERT_TRUE(fs::exists(record)) << first.output;
+  const nlohmann::json written = read_json(record);
+  const std::vector<std::pair<std::string, std::function<void()>>> forgeries{
+      {"fifo", [&] { ASSERT_EQ(mkfifo(record.c_str(), 0644), 0); }},
+      {"deep",
+       [&] {
+         const std::string deep = std::string(100000, '[') + std::string(100000, ']');
+         std::ofstream(record) << "{\"identity\": " << written["identity"].dump()
+                               << ", \"result\": {\"figures\": " << deep << "}}";
+       }},
+      {"types", [&] {
+         nlohmann::json j = written;
+         j["result"]["status"] = 7;
+         std::ofstream(record) << j.dump();
+       }}};
+  for (const auto& [name, forge] : forgeries) {
+    fs::remove(record);
+    forge();
+    const Result again = run(args, "timeout 120");
+    EXPECT_EQ(again.code, 0) << name << ": " << again.output;
+    EXPECT_TRUE(has(again.output, "1 run now, 0 taken from earlier runs"))
+        << name << ": " << again.output;
+    EXPECT_EQ(read_json(record)["result"]["status"], "completed") << name;
+  }
+  fs::remove_all(out);
 }

@@ -168,7 +168,7 @@ constexpr double kTimeMargin = 2.5;
 // at its end. Measured on the shared 2-core machine, 200 one-step
 // equilibrium stages of the elastic circular tunnel: 25 ms per stage at
 // 2,048 triangles, 20 ms at 4,688; 20,000 such stages of a scene were
-// bounded at 70 s by steps alone and took 14 ms each (issue 32). The bound
+// bounded at 70 s by steps alone and took 14 ms each. The bound
 // takes 10 ms + 8 us per triangle per stage.
 constexpr double kStageSeconds = 0.010;
 constexpr double kStageSecondsPerTriangle = 8e-6;

@@ -15,10 +15,12 @@
 
 #include "rockfdem/coupling/atomic_file.hpp"
 #include "rockfdem/error.hpp"
+#include "rockfdem/printable.hpp"
 #include "rockfdem/workflows/scene.hpp"
 #include "rockfdem/workflows/version.hpp"
 #include "run/checkpoint.hpp"
 #include "run/run_context.hpp"
+#include "run/small_file.hpp"
 #include "scene/scene_reader.hpp"
 
 namespace fs = std::filesystem;
@@ -28,6 +30,7 @@ namespace {
 
 constexpr const char* kOwnerFile = ".rockfdem-scene";
 constexpr const char* kLockFile = ".rockfdem-lock";
+constexpr std::size_t kMaxOwnerBytes = 64 * 1024;  // a written record: the scene's path and key
 
 // An exclusive flock on DIR/.rockfdem-lock, held while the returned
 // descriptor is open (the kernel releases it on any death, kill -9
@@ -285,15 +288,22 @@ bool prepare_output_dir(const std::string& dir, const Scene& scene, bool force,
   std::error_code ec;
   refuse_if_not_directory(dir);
   const std::string owner = output_path(dir, kOwnerFile);
-  const bool claimed = fs::exists(owner, ec);
+  const bool claimed = fs::exists(fs::symlink_status(owner, ec));
   if (claimed && !force) {
-    std::ifstream in(owner);
-    std::stringstream held;
-    held << in.rdbuf();
-    if (held.str() != owner_record(scene))
-      throw InputError("output directory " + dir + ": holds results of another scene (" +
-                       held.str().substr(0, held.str().find('\n')) +
-                       "); choose another -o or pass --force to overwrite");
+    // The record this program writes is a line or two; anything else in
+    // its place (a FIFO, a link to a device, a huge file) is refused
+    // unread, never waited on or read whole.
+    const SmallFile held = read_small_file(owner, kMaxOwnerBytes);
+    if (held.kind == SmallFile::Kind::kRefused)
+      throw InputError("output directory " + dir + ": its record of the scene " + owner + " " +
+                       held.why + "; allowed: the file rockfdem wrote there (at most " +
+                       std::to_string(kMaxOwnerBytes) +
+                       " bytes); remove it, choose another -o or pass --force to overwrite");
+    if (held.text != owner_record(scene))
+      throw InputError(
+          "output directory " + dir + ": holds results of another scene (" +
+          printable(held.text.substr(0, std::min<std::size_t>(held.text.find('\n'), 200))) +
+          "); choose another -o or pass --force to overwrite");
   }
   create_dir(dir);
   lock_output_dir(dir);

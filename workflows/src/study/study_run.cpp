@@ -11,6 +11,7 @@
 #include "rockfdem/error.hpp"
 #include "run/interrupt.hpp"
 #include "run/output_dir.hpp"
+#include "run/small_file.hpp"
 #include "study/study_figures.hpp"
 
 namespace fs = std::filesystem;
@@ -20,10 +21,17 @@ namespace {
 
 constexpr const char* kRecord = "variant.json";
 
+// A variant's record and its run's summary: each a few KiB as written. A
+// torn file, one that is not a regular file (a FIFO is not waited on), one
+// larger than any written record or nested deeper reads as discarded, and
+// the variant runs again.
+constexpr std::size_t kMaxRecordBytes = 16 << 20;
+constexpr int kMaxRecordDepth = 32;
+
 nlohmann::json read_json(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) return nullptr;
-  return nlohmann::json::parse(in, nullptr, false);  // a torn file reads as discarded
+  const SmallFile file = read_small_file(path, kMaxRecordBytes);
+  if (file.kind != SmallFile::Kind::kText) return nullptr;
+  return parse_shallow_json(file.text, kMaxRecordDepth);
 }
 
 bool finished(const std::string& status) {
@@ -35,7 +43,11 @@ bool finished(const std::string& status) {
 bool reuse(const std::string& dir, const nlohmann::json& id, VariantResult* r) {
   const nlohmann::json record = read_json(output_path(dir, kRecord));
   if (!record.is_object() || record.value("identity", nlohmann::json()) != id) return false;
-  *r = VariantResult::from_json(record.at("result"));
+  try {
+    *r = VariantResult::from_json(record.at("result"));
+  } catch (const nlohmann::json::exception&) {
+    return false;  // not a record this program wrote: the variant runs again
+  }
   r->reused = true;
   return finished(r->status);
 }

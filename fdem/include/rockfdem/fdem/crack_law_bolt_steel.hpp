@@ -43,7 +43,8 @@ struct BoltSteelLaw {
   /// inv_h = 1 / h; the strength terms are the material's (k).
   template <class T>
   static ROCKFDEM_LAW_INLINE CrackPointOf<T> point(const CrackConstants& k, const StrengthTerms<T>&,
-                                                   T o, T s, T h, T inv_h, T& damage) {
+                                                   const T& o, const T& s, const T& h,
+                                                   const T& inv_h, T& damage) {
     const T zero{};
     const T op = h * k.op_per_h;
     const T sp = h * k.c * k.two_over_pt;

@@ -80,7 +80,7 @@ inline StrengthTerms<double> material_terms(const CrackConstants& k) {
 /// The terms of an element whose strengths are f times its material's;
 /// F is double or a register of factors.
 template <class F>
-ROCKFDEM_LAW_INLINE StrengthTerms<F> scaled_strength_terms(const CrackConstants& k, F f) {
+ROCKFDEM_LAW_INLINE StrengthTerms<F> scaled_strength_terms(const CrackConstants& k, const F& f) {
   return {k.ft * f, k.c * f, k.inv_c / f, k.op_per_h * f, k.h_per_op / f, k.inv_open_range * f};
 }
 

@@ -125,8 +125,9 @@ struct RockLaw {
   /// inv_h = 1 / h; st the element's strength terms.
   template <class T>
   static ROCKFDEM_LAW_INLINE CrackPointOf<T> point(const CrackConstants& k,
-                                                   const StrengthTerms<T>& st, T o, T s, T h,
-                                                   T inv_h, T& damage) {
+                                                   const StrengthTerms<T>& st, const T& o,
+                                                   const T& s, const T& h, const T& inv_h,
+                                                   T& damage) {
     const T zero{};
     const T sigma_c = (o < zero) ? k.pn * o * inv_h : zero;  // penalty, unaffected by damage
     const T fs = st.c - sigma_c * k.tan_phi;                 // Mohr-Coulomb, tension positive
