@@ -7,7 +7,7 @@
 
 namespace rockfdem::coupling {
 
-inline void add_array_legend(VtkFieldData& f) {
+inline void add_array_legend(VtkFieldData& f, bool joints = false) {
   static const char* const kLegend[][2] = {
       {"units",
        "coordinates, displacement: m; velocity: m/s; stress, principal_stress, "
@@ -24,6 +24,10 @@ inline void add_array_legend(VtkFieldData& f) {
       {"failure_mode_codes",
        "crack elements: 0 none, 1 mode I, 2 mode II, 3 mixed; -1 on triangles"}};
   for (const auto& entry : kLegend) f.text.push_back({entry[0], entry[1]});
+  if (joints)
+    f.text.push_back({"joint_codes",
+                      "crack elements: 0 intact rock, k > 0 on joint trace k (1-based, in the "
+                      "order of joints.csv); -1 on triangles"});
 }
 
 }  // namespace rockfdem::coupling

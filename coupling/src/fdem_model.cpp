@@ -4,6 +4,7 @@
 
 #include "array_legend.hpp"
 #include "principal_stress.hpp"
+#include "rockfdem/coupling/joint_cracks.hpp"
 #include "rockfdem/error.hpp"
 
 namespace rockfdem::coupling {
@@ -117,7 +118,10 @@ VtkGrid fdem_grid(const fdem::Engine& e, const mesh::Mesh& m, const insitu::Insi
   add_node_arrays(e, implicit, g);
   add_triangle_arrays(e, m, implicit, g);
   add_crack_arrays(e, g);
-  add_array_legend(g.field);
+  // Only a jointed model has the array, so other files stay as they were.
+  if (!m.joint_edges.empty())
+    g.cell_arrays.push_back(line_cell_array(g, scalar_array("joint", joint_crack_traces(e, m))));
+  add_array_legend(g.field, !m.joint_edges.empty());
   return g;
 }
 

@@ -114,7 +114,7 @@ inline double element_potential(const CrackConstants& k, const double o[3], cons
   // break (it is skipped once two points reach 1).
   if ((d0 - before[0]) + (d1 - before[1]) + (d2 - before[2]) > 0.0) {
     const double dn[3] = {d0, d1, d2};
-    const bool broke = (d0 >= 1.0) + (d1 >= 1.0) + (d2 >= 1.0) >= 2;
+    const bool broke = k.breaks && (d0 >= 1.0) + (d1 >= 1.0) + (d2 >= 1.0) >= 2;
     released += released_potential(d, c, before, broke ? nullptr : dn);
     damage[0] = d0;
     damage[1] = d1;

@@ -27,10 +27,10 @@ void check_sizes(const MeshSpec& spec) {
   if (spec.tunnel.fracture_zone < 0) throw InputError("tunnel: fracture_zone must be >= 0");
 }
 
-detail::GmshModelMap add_model(const MeshSpec& spec) {
+detail::GmshModelMap add_model(const MeshSpec& spec, const std::vector<JointTrace>& joints) {
   switch (spec.kind) {
     case ModelKind::kTunnel: {
-      detail::GmshModelMap model = detail::add_tunnel_model(spec);
+      detail::GmshModelMap model = detail::add_tunnel_model(spec, joints);
       detail::set_tunnel_size_field(spec, model);
       return model;
     }
@@ -64,12 +64,12 @@ void flag_fracture_zone(const TunnelSpec& t, Mesh& m) {
   }
 }
 
-Mesh mesh_geometry(const MeshSpec& spec, int& threads_used) {
+Mesh mesh_geometry(const MeshSpec& spec, const std::vector<JointTrace>& joints, int& threads_used) {
   detail::GmshSession session(spec.size.threads);
   threads_used = session.threads();
   Mesh m = detail::gmsh_guarded("meshing", detail::GmshFailure::kRuntime, [&] {
     gmsh::model::add("rockfdem");
-    const detail::GmshModelMap model = add_model(spec);
+    const detail::GmshModelMap model = add_model(spec, joints);
     gmsh::model::mesh::generate(2);
     return detail::extract_mesh(model);
   });
@@ -87,11 +87,15 @@ Mesh build_mesh(const MeshSpec& spec, MeshReport* report) {
   const auto start = std::chrono::steady_clock::now();
   int threads_used = 0;
   Mesh m;
+  JointTraceReport joints;
+  std::vector<JointTrace> traces;
   if (spec.kind == ModelKind::kMshFile) {
     m = read_msh(spec.msh);
   } else {
     check_sizes(spec);
-    m = mesh_geometry(spec, threads_used);
+    if (spec.kind == ModelKind::kTunnel && !spec.joints.empty())
+      traces = prepare_joint_traces(spec, spec.joints, &joints);
+    m = mesh_geometry(spec, traces, threads_used);
   }
   if (report) {
     const MeshQuality q = measure_quality(m);
@@ -100,6 +104,8 @@ Mesh build_mesh(const MeshSpec& spec, MeshReport* report) {
     report->min_altitude = q.min_altitude;
     report->min_angle_deg = q.min_angle_deg;
     report->gmsh_threads = threads_used;
+    report->joints = joints;
+    report->joint_traces = traces;
     report->seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   }

@@ -106,6 +106,10 @@ void compact_vertices(Mesh& m) {
   for (const TaggedEdge& e : m.edges)
     if (new_id[e.a] >= 0 && new_id[e.b] >= 0) kept.push_back({new_id[e.a], new_id[e.b], e.tag});
   m.edges.swap(kept);
+  std::vector<JointEdge> joints;
+  for (const JointEdge& e : m.joint_edges)
+    if (new_id[e.a] >= 0 && new_id[e.b] >= 0) joints.push_back({new_id[e.a], new_id[e.b], e.trace});
+  m.joint_edges.swap(joints);
 }
 
 void orient_counter_clockwise(Mesh& m) {
@@ -118,6 +122,13 @@ Mesh extract_mesh(const GmshModelMap& model) {
   const TagIndex index(read_gmsh_nodes(m));
   for (const auto& [s, zone] : model.surface_zone) append_triangles(s, zone, 0, index, m);
   for (const auto& [c, tag] : model.curve_tag) append_edges(c, tag, index, m);
+  for (const auto& [c, trace] : model.joint_curve) {
+    std::vector<std::size_t> element_tags, nodes;
+    gmsh::model::mesh::getElementsByType(1, element_tags, nodes, c);
+    for (std::size_t e = 0; e < element_tags.size(); ++e)
+      m.joint_edges.push_back(
+          {index_of(index, nodes[2 * e]), index_of(index, nodes[2 * e + 1]), trace});
+  }
   compact_vertices(m);
   orient_counter_clockwise(m);
   return m;

@@ -20,12 +20,14 @@ namespace rockfdem::mesh::detail {
 struct GmshModelMap {
   std::vector<std::pair<int, int>> surface_zone;  ///< (gmsh surface tag, Zone)
   std::vector<std::pair<int, int>> curve_tag;     ///< (gmsh curve tag, EdgeTag)
+  std::vector<std::pair<int, int>> joint_curve;   ///< (gmsh curve tag, joint trace index)
 };
 
 // --- geometry (tunnel_geometry.cpp, specimen_geometry.cpp) ---------------
 
-/// The tunnel in its rock rectangle. Throws InputError when it does not fit.
-GmshModelMap add_tunnel_model(const MeshSpec& spec);
+/// The tunnel in its rock rectangle, with `joints` (prepared: in the rock)
+/// as embedded curves. Throws InputError when it does not fit.
+GmshModelMap add_tunnel_model(const MeshSpec& spec, const std::vector<JointTrace>& joints = {});
 /// UCS specimen: x in [-w/2, w/2], y in [0, h] (the lower platen at y = 0).
 GmshModelMap add_ucs_model(const SpecimenSpec& s);
 /// Brazilian disc of the given diameter centred on the origin.

@@ -71,7 +71,8 @@ std::set<int> curves_of_zone(const GmshModelMap& m, int zone) {
 }
 
 void classify_curves(const DomainSpec& d, GmshModelMap& out) {
-  const std::set<int> rock = curves_of_zone(out, kRock);
+  std::set<int> rock = curves_of_zone(out, kRock);
+  for (const auto& [c, trace] : out.joint_curve) rock.erase(c);  // inside the rock
   const std::set<int> lining = curves_of_zone(out, kLining);
   const std::set<int> core = curves_of_zone(out, kCore);
   const double x0 = d.center_x - d.width / 2, y0 = d.center_y - d.height / 2;
@@ -130,7 +131,18 @@ int rectangle_side_tag(int curve, double xmin, double ymin, double xmax, double 
                          " is not on the outer rectangle");
 }
 
-GmshModelMap add_tunnel_model(const MeshSpec& spec) {
+// Joint curves from the fragment map: the pieces of trace k are the curves
+// its entry maps to (split where traces cross). A curve two traces share
+// goes to the first.
+void classify_joints(const std::vector<gmsh::vectorpair>& map, std::size_t first,
+                     GmshModelMap& out) {
+  std::set<int> seen;
+  for (std::size_t k = first; k < map.size(); ++k)
+    for (const auto& [dim, tag] : map[k])
+      if (dim == 1 && seen.insert(tag).second) out.joint_curve.emplace_back(tag, int(k - first));
+}
+
+GmshModelMap add_tunnel_model(const MeshSpec& spec, const std::vector<JointTrace>& joints) {
   check_fits_domain(spec);
   const TunnelSpec& t = spec.tunnel;
   const DomainSpec& d = spec.domain;
@@ -142,6 +154,14 @@ GmshModelMap add_tunnel_model(const MeshSpec& spec) {
                                                   d.center_y - d.height / 2, 0, d.width, d.height);
   gmsh::vectorpair tools{{2, add_outline_surface(opening)}};
   if (has_lining) tools.emplace_back(2, add_outline_surface(inset));
+  // Joints go into the same fragment, so the mesh is conformal along them
+  // and at their crossings.
+  const std::size_t first_joint = 1 + tools.size();
+  for (const JointTrace& j : joints) {
+    const int a = gmsh::model::occ::addPoint(j.x0, j.y0, 0);
+    const int b = gmsh::model::occ::addPoint(j.x1, j.y1, 0);
+    tools.emplace_back(1, gmsh::model::occ::addLine(a, b));
+  }
   gmsh::vectorpair pieces;
   std::vector<gmsh::vectorpair> map;
   gmsh::model::occ::fragment({{2, rect}}, tools, pieces, map);
@@ -149,6 +169,7 @@ GmshModelMap add_tunnel_model(const MeshSpec& spec) {
 
   GmshModelMap out;
   classify_surfaces(map, has_lining, out);
+  classify_joints(map, first_joint, out);
   classify_curves(d, out);
   return out;
 }

@@ -58,6 +58,9 @@ y = 10.0
 name = "e"
 from = "vault"
 length = 5.0
+[[joint_set]]
+dip = 30.0
+spacing = 2.0
 )";
 
 // The same stages given explicitly, each with its keys left out.
@@ -144,6 +147,27 @@ double fan_deg(const Scene& s, std::size_t k) {
 }
 
 // Where each numeric key lands in the Scene.
+void add_joints(std::map<std::string, Number>& f) {
+  using J = JointSettings;
+  add_members<J>(f, "joints", [](const Scene& s) -> const J& { return s.joints; },
+                 {{"tensile_strength", &J::tensile_strength},
+                  {"cohesion", &J::cohesion},
+                  {"friction_angle", &J::friction_angle},
+                  {"residual_friction_angle", &J::residual_friction_angle},
+                  {"fracture_energy_I", &J::fracture_energy_I},
+                  {"fracture_energy_II", &J::fracture_energy_II},
+                  {"penalty_factor", &J::penalty_factor},
+                  {"margin", &J::margin}});
+  f["joints.seed"] = [](const Scene& s) { return double(s.joints.seed); };
+  using S = mesh::JointSetSpec;
+  add_members<S>(f, "joint_set[0]", [](const Scene& s) -> const S& { return s.joints.sets[0]; },
+                 {{"trace_length", &S::trace_length},
+                  {"persistence", &S::persistence},
+                  {"dip_scatter", &S::dip_scatter_deg},
+                  {"spacing_scatter", &S::spacing_scatter},
+                  {"length_scatter", &S::length_scatter}});
+}
+
 std::map<std::string, Number> number_fields() {
   std::map<std::string, Number> f;
   f["domain.width"] = [](const Scene& s) { return s.mesh.domain.width; };
@@ -192,6 +216,7 @@ std::map<std::string, Number> number_fields() {
   f["stages[0].every_steps"] = [](const Scene& s) { return double(last(s).every_steps); };
   f["output.every_steps"] = [](const Scene& s) { return double(s.output.every_steps); };
   f["output.checkpoint_every"] = [](const Scene& s) { return double(s.output.checkpoint_every); };
+  add_joints(f);
   return f;
 }
 
@@ -255,6 +280,7 @@ std::map<std::string, Text> text_fields() {
     return s.references.from_support ? "support" : "start";
   };
   f["references.source"] = [](const Scene& s) { return "\"" + s.references.source + "\""; };
+  f["joints.dfn_file"] = [](const Scene& s) { return "\"" + s.joints.dfn_file + "\""; };
   f["insitu.alpha"] = [](const Scene& s) {
     return s.insitu.alpha == std::vector<double>{1.0} ? "[1.0]" : "other";
   };
@@ -335,7 +361,9 @@ TEST(SceneDefaults, a_default_that_names_a_key_takes_its_value) {
                                          "materials.rock.penalty_factor=20",
                                          "materials.rock.heterogeneity=5",
                                          "materials.rock.heterogeneity_seed=9",
-                                         "materials.lining.friction_angle=40"};
+                                         "materials.lining.friction_angle=40",
+                                         "tunnel.fracture_zone=1.5",
+                                         "joints.friction_angle=40"};
   const auto fields = number_fields();
   int linked = 0;
   for (const std::string& text : {kTunnel, kTunnel + kStages}) {
@@ -355,7 +383,9 @@ TEST(SceneDefaults, a_default_that_names_a_key_takes_its_value) {
       ++linked;
     }
   }
-  EXPECT_EQ(linked, 2 * (11 + 3 + 2));  // the core's 11 keys, 3 residual angles, 2 stage keys
+  // the core's 11 keys, 3 residual angles, 2 stage keys, the joints' margin,
+  // penalty and residual angle
+  EXPECT_EQ(linked, 2 * (11 + 3 + 2 + 3));
 }
 
 // The defaults the tunnel above cannot show: a horseshoe opening's size and

@@ -11,6 +11,7 @@
 #include "outputs/convergence_confinement.hpp"
 #include "outputs/engine_report.hpp"
 #include "outputs/ground_reaction.hpp"
+#include "outputs/joint_results.hpp"
 #include "outputs/rock_plausibility.hpp"
 #include "outputs/run_report.hpp"
 #include "rockfdem/coupling/atomic_file.hpp"
@@ -352,6 +353,17 @@ void RunOutputs::record_convergence_confinement(const fdem::Engine& e, const mes
   summary_.convergence_confinement = c;
 }
 
+void RunOutputs::record_joints(const fdem::Engine& e, const mesh::Mesh& m) {
+  if (m.joint_edges.empty()) return;
+  const std::vector<mesh::JointTrace> none;
+  JointRecord& j = summary_.joints.emplace(
+      joint_results(e, m, summary_.mesh ? summary_.mesh->joint_traces : none,
+                    output_path(ctx_.output_dir, "joints.csv")));
+  j.set_traces = scene_.joints.set_traces;
+  j.dfn_traces = scene_.joints.dfn_traces;
+  if (summary_.mesh) j.traces = summary_.mesh->joints;
+}
+
 void RunOutputs::damage_outputs(const fdem::Engine& e, const mesh::Mesh& m) {
   const Resolution r = fracture_resolution(scene_, &m);
   summary_.resolution = ResolutionFigures{r.h, r.l_ch, r.ratio, kResolutionLimit};
@@ -372,6 +384,7 @@ void RunOutputs::damage_outputs(const fdem::Engine& e, const mesh::Mesh& m) {
                   r.h, r.ratio, r.l_ch, kResolutionLimit);
     warn(msg);
   }
+  record_joints(e, m);
   const BrokenZone z = broken_zone(e, m, r.h, bolt_triangles(bolts_, m.n_triangles()));
   BrokenZoneRecord& zone = summary_.broken_zone.emplace();
   zone.broken_rock_cracks = z.broken;

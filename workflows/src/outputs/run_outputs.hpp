@@ -122,6 +122,8 @@ class RunOutputs : public StepOutputs {
   /// summary "resolution" (h / l_ch) and "broken_zone" (depth, clearance to
   /// the fracture zone's edge), with warnings when either limits the answer.
   void damage_outputs(const fdem::Engine& e, const mesh::Mesh& m);
+  /// summary "joints" and joints.csv: traces meshed and joint elements by state.
+  void record_joints(const fdem::Engine& e, const mesh::Mesh& m);
   /// summary "lining": the lining-rock crack elements and how many broke;
   /// returns whether the ring is installed, to report its section forces.
   bool lining_outputs(const fdem::Engine& e, const mesh::Mesh& m);

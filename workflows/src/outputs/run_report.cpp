@@ -347,13 +347,30 @@ void lining(std::ostream& md, const LiningRecord& r) {
                "where broken, the ring slides on the rock");
 }
 
+void joint_rows(std::ostream& md, const std::optional<JointRecord>& j) {
+  if (!j) return;
+  figure_row(md, "joint traces meshed",
+             value_text(j->traces.kept) + " (" + fixed(j->traces.length, 1) + " m; " +
+                 value_text(j->set_traces) + " from the sets, " + value_text(j->dfn_traces) +
+                 " from the file)",
+             value_text(j->traces.merged) + " merged, " + value_text(j->traces.snapped) +
+                 " snapped, " + value_text(j->traces.too_short) + " dropped as slivers");
+  figure_row(md, "joint crack elements",
+             value_text(j->elements) + " (" + value_text(j->active) + " active)",
+             "not counted among the broken: a joint element never breaks");
+  figure_row(md, "joint elements past the peak",
+             value_text(j->yielding) + " softening, " + value_text(j->residual) +
+                 " sliding on residual friction");
+}
+
 void broken_zone(std::ostream& md, const fdem::BrokenCounts& b,
-                 const std::optional<BrokenZoneRecord>& z) {
+                 const std::optional<BrokenZoneRecord>& z, const std::optional<JointRecord>& j) {
   md << "\n## Broken zone (end of run)\n\n| figure | value | note |\n|---|---|---|\n";
   figure_row(md, "broken crack elements, all",
              value_text(b.total()) + " (mode I " + value_text(b.mode_I) + ", mode II " +
                  value_text(b.mode_II) + ", mixed " + value_text(b.mixed) +
                  "): the rock's, the bolts' steel and grout, the lining-rock bond");
+  joint_rows(md, j);
   if (!z) return;
   figure_row(md, "broken between two rock triangles",
              value_text(z->broken_rock_cracks) + " (in the fracture zone, away from bolts)");
@@ -529,7 +546,7 @@ std::string report_markdown(const Scene& scene, const RunRecord& record,
   answer_origin(md, record, extras);
   bolts(md, record.bolts);
   lining(md, record.lining);
-  broken_zone(md, record.state.broken, record.broken_zone);
+  broken_zone(md, record.state.broken, record.broken_zone, record.joints);
   instruments(md, record);
   continuum(md, record);
   convergence_confinement(md, record);

@@ -529,6 +529,25 @@ nlohmann::json rock_mass_json(const RockMassSpec& m) {
            "Corkum 2002)"}};
 }
 
+nlohmann::json joints_json(const JointRecord& r) {
+  const mesh::JointTraceReport& t = r.traces;
+  return {{"traces",
+           {{"generated", r.set_traces},
+            {"from_file", r.dfn_traces},
+            {"outside_rock", t.outside},
+            {"split_by_opening", t.split},
+            {"merged", t.merged},
+            {"snapped", t.snapped},
+            {"too_short", t.too_short},
+            {"meshed", t.kept},
+            {"length_m", t.length},
+            {"sliver_tolerance_m", t.tolerance}}},
+          {"elements", r.elements},
+          {"active", r.active},
+          {"yielding", r.yielding},
+          {"residual", r.residual}};
+}
+
 // The support and damage figures at the end of a tunnel run.
 void add_support(nlohmann::json& j, const RunRecord& r) {
   if (r.bolts) j["bolts"] = bolts_json(*r.bolts);
@@ -546,6 +565,7 @@ void add_support(nlohmann::json& j, const RunRecord& r) {
   if (r.rock_plausibility) j["rock_plausibility"] = plausibility_json(*r.rock_plausibility);
   if (r.rock_mass) j["rock_mass"] = rock_mass_json(*r.rock_mass);
   if (r.broken_zone) j["broken_zone"] = broken_zone_json(*r.broken_zone);
+  if (r.joints) j["joints"] = joints_json(*r.joints);
   for (const auto& [name, x] : r.extensometers) j["extensometers"][name] = extensometer_json(x);
   if (const auto& b = r.outer_boundary)
     j["outer_boundary"] = {{"rotation_deg", b->rotation_deg},

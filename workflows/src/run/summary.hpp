@@ -84,6 +84,7 @@ class RunRecord {
   std::optional<DampingFigures> damping;
   std::map<std::string, ExtensometerFigures> extensometers;  ///< empty: no key
   std::optional<BrokenZoneRecord> broken_zone;
+  std::optional<JointRecord> joints;       ///< "joints": a model with joint traces
   std::optional<SpecimenRecord> specimen;  ///< a specimen's peak and post-peak stop
   // Once the core is removed: the open excavation (no lining ring) and the
   // construction sequence's continuum counterpart (none: not solved).

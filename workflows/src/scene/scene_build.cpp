@@ -14,11 +14,13 @@
 #include <sstream>
 
 #include "rockfdem/error.hpp"
+#include "rockfdem/mesh/joints.hpp"
 #include "rockfdem/mesh/mesh.hpp"
 #include "rockfdem/mesh/msh_io.hpp"
 #include "rockfdem/mesh/outline.hpp"
 #include "rockfdem/workflows/scene.hpp"
 #include "rockfdem/workflows/scene_schema.hpp"
+#include "scene/dfn_file.hpp"
 #include "scene/scene_checks.hpp"
 #include "scene/scene_reader.hpp"
 #include "stages/registry.hpp"
@@ -874,6 +876,78 @@ void read_instruments(const Reader& r, Scene& s) {
   }
 }
 
+// [[joint_set]] entry p: the set's statistics, its spacing no finer than
+// the mesh (a joint every element or two leaves no rock between them).
+mesh::JointSetSpec read_joint_set(const Reader& r, const Scene& s, const std::string& p) {
+  for (const char* k : {".dip", ".spacing"}) r.require(p + k, "a joint set needs dip and spacing");
+  mesh::JointSetSpec j;
+  j.dip_deg = r.number(p + ".dip");
+  j.spacing = r.number(p + ".spacing");
+  j.trace_length = r.number(p + ".trace_length");
+  j.persistence = r.number(p + ".persistence");
+  j.dip_scatter_deg = r.number(p + ".dip_scatter");
+  j.spacing_scatter = r.number(p + ".spacing_scatter");
+  j.length_scatter = r.number(p + ".length_scatter");
+  if (j.spacing < s.mesh.size.size_near)
+    r.fail(p + ".spacing", "finer than the mesh (mesh.size_near = " + num(s.mesh.size.size_near) +
+                               " m); allowed: >= mesh.size_near");
+  if (j.persistence < 1 && j.trace_length == 0)
+    r.fail(p + ".persistence",
+           "a persistence below 1 needs traces of a length; allowed: 1 with trace_length = 0");
+  return j;
+}
+
+// [joints], [[joint_set]] and the DFN file: the joint material and the
+// traces (generated in the opening's box grown by joints.margin, within
+// the domain), into s.mesh.joints. Tunnels only.
+void read_joints(const Reader& r, const std::string& base_dir, Scene& s) {
+  JointSettings& j = s.joints;
+  j.tensile_strength = r.number("joints.tensile_strength");
+  j.cohesion = r.number("joints.cohesion");
+  j.friction_angle = r.number("joints.friction_angle");
+  j.residual_friction_angle = r.number("joints.residual_friction_angle");
+  j.fracture_energy_I = r.number("joints.fracture_energy_I");
+  j.fracture_energy_II = r.number("joints.fracture_energy_II");
+  j.penalty_factor = r.number("joints.penalty_factor");
+  j.seed = std::uint64_t(r.number("joints.seed"));
+  j.margin = s.mesh.kind == mesh::ModelKind::kTunnel ? r.number("joints.margin") : 0;
+  if (j.residual_friction_angle > j.friction_angle)
+    r.fail(r.given_at("joints.residual_friction_angle"),
+           "above joints.friction_angle = " + num(j.friction_angle) +
+               " deg; allowed: at most the peak friction angle");
+  if ((r.has("joint_set") || r.has("joints")) && s.mesh.kind != mesh::ModelKind::kTunnel)
+    r.fail(r.has("joint_set") ? "joint_set" : "joints",
+           "joints need a generated tunnel (model.kind = \"tunnel\"); allowed: none here");
+  const toml::node* list = r.node("joint_set");
+  for (std::size_t i = 0; list && i < list->as_array()->size(); ++i)
+    j.sets.push_back(read_joint_set(r, s, "joint_set[" + std::to_string(i) + "]"));
+  const mesh::HalfExtent e = s.mesh.kind == mesh::ModelKind::kTunnel
+                                 ? mesh::opening_half_extent(s.mesh.tunnel)
+                                 : mesh::HalfExtent{};
+  const mesh::DomainSpec& d = s.mesh.domain;
+  const mesh::JointRegion region{std::max(-e.hx - j.margin, d.center_x - d.width / 2),
+                                 std::max(-e.hy - j.margin, d.center_y - d.height / 2),
+                                 std::min(e.hx + j.margin, d.center_x + d.width / 2),
+                                 std::min(e.hy + j.margin, d.center_y + d.height / 2)};
+  for (std::size_t i = 0; i < j.sets.size(); ++i) {
+    const auto traces = mesh::generate_joint_set(j.sets[i], region, j.seed, int(i));
+    s.mesh.joints.insert(s.mesh.joints.end(), traces.begin(), traces.end());
+    if (s.mesh.joints.size() > kMaxDfnTraces)
+      r.fail("joint_set[" + std::to_string(i) + "].spacing",
+             "the sets generate more than " + std::to_string(kMaxDfnTraces) +
+                 " traces; allowed: a larger spacing or trace_length, or a smaller joints.margin");
+  }
+  j.set_traces = long(s.mesh.joints.size());
+  std::string file = r.text("joints.dfn_file");
+  if (!file.empty()) {
+    if (file[0] != '/' && !base_dir.empty()) file = base_dir + "/" + file;
+    j.dfn_file = file;
+    const auto dfn = read_dfn_csv(file, "joints.dfn_file");
+    j.dfn_traces = long(dfn.size());
+    s.mesh.joints.insert(s.mesh.joints.end(), dfn.begin(), dfn.end());
+  }
+}
+
 // One stage's keys at `p` ("stages[2]"); absent keys take the schema's
 // defaults (max_steps engine.steps, every_steps output.every_steps).
 StageSpec read_stage(const Reader& r, const std::string& p, const std::string& kind) {
@@ -1089,6 +1163,7 @@ Scene build_scene(const RawScene& raw, const std::string& base_dir) {
   read_stages(r, s);
   read_face_distance(r, s);
   read_instruments(r, s);
+  read_joints(r, base_dir, s);
   std::ostringstream canonical;
   canonical << raw.root;
   s.canonical = canonical.str();
@@ -1109,6 +1184,10 @@ Scene build_scene(const RawScene& raw, const std::string& base_dir) {
   s.as_run = scene_as_run(raw.root, s.mesh);
   s.warnings = detail::unit_warnings(raw);
   for (std::string& w : detail::damping_warnings(raw, s)) s.warnings.push_back(std::move(w));
+  if (!s.mesh.joints.empty() && s.mesh.tunnel.fracture_zone <= 0)
+    s.warnings.push_back(s.source +
+                         ": the joints are meshed but act nowhere: joint crack elements exist "
+                         "only within tunnel.fracture_zone, which is 0");
   return s;
 }
 

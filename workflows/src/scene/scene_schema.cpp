@@ -252,6 +252,62 @@ void add_instruments(std::vector<KeySpec>& s) {
                       "the deepest is the fixed reference of the readings."));
 }
 
+// [joints] and [[joint_set]]: discontinuities the mesh honours and whose
+// crack elements take the joint material (docs/meshing.md, "Joints").
+void add_joints(std::vector<KeySpec>& s) {
+  s.push_back(non_negative("joints.tensile_strength", "Pa", "0",
+                           "Tensile strength of the joints' crack elements; 0: a joint opens "
+                           "freely and carries no tension."));
+  s.push_back(non_negative("joints.cohesion", "Pa", "0",
+                           "Cohesion of the joints (Mohr-Coulomb peak: c + sigma tan(phi))."));
+  s.push_back(number("joints.friction_angle", "deg", "30", 0, false, 90, true,
+                     "Peak friction angle phi of the joints."));
+  s.push_back(number("joints.residual_friction_angle", "deg", "friction_angle", 0, false, 90, true,
+                     "Residual friction angle phi_r (at most phi): once the slip has taken a "
+                     "joint element past its softening range it slides at sigma tan(phi_r), "
+                     "and goes on doing so (a joint element never breaks)."));
+  s.push_back(positive("joints.fracture_energy_I", "J/m^2", "10",
+                       "Mode I fracture energy of the joints (used with a tensile strength)."));
+  s.push_back(positive("joints.fracture_energy_II", "J/m^2", "50",
+                       "Mode II energy: the slip past the peak over which the strength falls "
+                       "from the peak to the residual is fracture_energy_II / (0.386 (c + "
+                       "sigma tan(phi)))."));
+  s.push_back(number("joints.penalty_factor", "-", "materials.rock.penalty_factor", 1, false, 1000,
+                     false,
+                     "Normal and shear penalty (stiffness) of the joints as a multiple of the "
+                     "rock's Young's modulus."));
+  s.push_back(integer("joints.seed", "1", 0, 2147483647,
+                      "Seed of the joint sets' random offsets and scatter: the same seed gives "
+                      "the same joints, bit for bit."));
+  s.push_back(non_negative(
+      "joints.margin", "m", "tunnel.fracture_zone",
+      "The joint sets fill the opening's bounding box grown by this margin (joints act where "
+      "there are crack elements: within tunnel.fracture_zone of the opening)."));
+  s.push_back(
+      text("joints.dfn_file", "\"\"",
+           "Joint traces from a file (a discrete fracture network mapped or generated elsewhere), "
+           "relative to the scene file: CSV, one trace per line `x0,y0,x1,y1` in m in the model's "
+           "frame (the opening's bounding box centred on the origin); lines starting with `#` and "
+           "a header line of names are skipped. Empty: none."));
+  s.push_back(number("joint_set[].dip", "deg", "", 0, false, 180, true,
+                     "Dip of the set's traces in the section plane, below the horizontal, "
+                     "dipping towards +x (90: vertical; above 90: dipping towards -x)."));
+  s.push_back(positive("joint_set[].spacing", "m", "",
+                       "Spacing of the set's parallel lines, measured across them (at least "
+                       "mesh.size_near)."));
+  s.push_back(non_negative("joint_set[].trace_length", "m", "0",
+                           "Length of each trace; 0: continuous (persistent) joints."));
+  s.push_back(number("joint_set[].persistence", "-", "1", 0, true, 1, false,
+                     "Fraction of each line the traces cover (the rest is rock bridges); with "
+                     "trace_length only."));
+  s.push_back(number("joint_set[].dip_scatter", "deg", "0", 0, false, 45, false,
+                     "Each line's dip is uniform within +- this of the set's dip."));
+  s.push_back(number("joint_set[].spacing_scatter", "-", "0", 0, false, 0.9, false,
+                     "Each spacing is uniform within +- this fraction of the set's."));
+  s.push_back(number("joint_set[].length_scatter", "-", "0", 0, false, 0.9, false,
+                     "Each trace length is uniform within +- this fraction of the set's."));
+}
+
 // [references]: figures to compare the run with in report.md (measured
 // convergences, another code's answer).
 void add_references(std::vector<KeySpec>& s) {
@@ -770,6 +826,7 @@ std::vector<KeySpec> build_schema() {
   add_bolts(s);
   add_instruments(s);
   add_contact(s);
+  add_joints(s);
   add_stages(s);
   add_output(s);
   add_references(s);

@@ -4,6 +4,7 @@
 #include <cstdio>
 
 #include "rockfdem/coupling/fdem_model.hpp"
+#include "rockfdem/coupling/joint_cracks.hpp"
 #include "rockfdem/error.hpp"
 #include "scene/lining_parts.hpp"
 
@@ -263,6 +264,42 @@ SupportMaterials add_support_materials(const Scene& scene, fdem::ModelInput& in)
   return support;
 }
 
+// The joint material: the rock's elastic constants (its triangles are the
+// rock's), the joint law with the [joints] strengths and penalties.
+fdem::Material joint_material(const Scene& scene) {
+  const MaterialSpec& rock = scene.materials.at(mesh::kRock);
+  const JointSettings& j = scene.joints;
+  fdem::Material m = engine_material(rock, scene.engine);
+  m.crack_law = fdem::CrackLaw::kJoint;
+  m.tensile_strength = j.tensile_strength;
+  m.cohesion = j.cohesion;
+  m.friction_deg = j.friction_angle;
+  m.residual_friction_deg = j.residual_friction_angle;
+  m.gf_I = j.fracture_energy_I;
+  m.gf_II = j.fracture_energy_II;
+  m.normal_penalty = j.penalty_factor * rock.young;
+  m.tangential_penalty = 0;  // the normal one
+  m.weibull_modulus = 0;
+  return m;
+}
+
+// The joint material's index in `in` (added only where the mesh has joints,
+// so a model without them is the same as before); -1 without joints.
+int add_joint_material(const Scene& scene, const mesh::Mesh& m, fdem::ModelInput& in) {
+  if (m.joint_edges.empty()) return -1;
+  in.materials.push_back(joint_material(scene));
+  return int(in.materials.size()) - 1;
+}
+
+// Crack elements on joint traces take the joint material, before the first
+// step (the crack pre-stress is set then, with their law).
+void assign_joints(const mesh::Mesh& m, int material, fdem::Engine& engine) {
+  if (material < 0) return;
+  const std::vector<std::int32_t> traces = coupling::joint_crack_traces(engine, m);
+  for (std::size_t c = 0; c < traces.size(); ++c)
+    if (traces[c]) engine.set_crack_material(c, material);
+}
+
 // The stages' local damping lowers the limit by sqrt(1 + alpha): an
 // explicit dt must hold then too, and is refused before anything is written.
 void refuse_dt_with_stage_damping(const Scene& scene, fdem::Engine& engine,
@@ -281,10 +318,12 @@ EngineSetup setup_engine(const Scene& scene, const mesh::Mesh& m,
                          const insitu::InsituField& handoff, int threads, bool force_dt) {
   fdem::ModelInput in = engine_input(scene, m, handoff, threads);
   const SupportMaterials support = add_support_materials(scene, in);
+  const int joint = add_joint_material(scene, m, in);
   fdem::BoltPlan bolts;
   if (!scene.bolts.segments.empty()) bolts = planned_bolts(scene, in);
   EngineSetup setup{support, std::move(bolts), make_engine(in, scene, force_dt),
                     stage_damping(scene)};
+  assign_joints(m, joint, setup.engine);
   refuse_dt_with_stage_damping(scene, setup.engine, in.damping, setup.stage_damping, force_dt);
   return setup;
 }

@@ -23,6 +23,7 @@
 #include <cmath>
 
 #include "rockfdem/fdem/crack_law_bolt_steel.hpp"
+#include "rockfdem/fdem/crack_law_joint.hpp"
 #include "rockfdem/fdem/crack_law_parts.hpp"
 #include "rockfdem/fdem/crack_law_rock.hpp"
 
@@ -32,7 +33,7 @@ template <class... Laws>
 struct CrackLawList {};
 
 /// Every crack law. An id that names none falls back to the first.
-using CrackLaws = CrackLawList<RockLaw, BoltSteelLaw>;
+using CrackLaws = CrackLawList<RockLaw, BoltSteelLaw, JointLaw>;
 
 namespace detail {
 
@@ -69,12 +70,14 @@ inline CrackConstants make_crack_constants(const Material& m) {
   k.pn = m.normal_penalty > 0 ? m.normal_penalty : 10.0 * m.young;
   k.pt = m.tangential_penalty > 0 ? m.tangential_penalty : k.pn;
   with_crack_law(m.crack_law, [&](auto law) { decltype(law)::set_constants(m, k); });
+  // A joint may have ft = 0, c = 0 (no opening range): their reciprocals
+  // are then 0, not infinite, so that no point computes 0 * inf.
   k.op_per_h = 2.0 * k.ft / k.pn;
-  k.h_per_op = k.pn / (2.0 * k.ft);
+  k.h_per_op = k.ft > 0 ? k.pn / (2.0 * k.ft) : 0.0;
   k.half_pt = 0.5 * k.pt;
   k.two_over_pt = 2.0 / k.pt;
-  k.inv_c = 1.0 / k.c;
-  k.inv_open_range = 1.0 / k.open_range;
+  k.inv_c = k.c > 0 ? 1.0 / k.c : 0.0;
+  k.inv_open_range = k.open_range > 0 ? 1.0 / k.open_range : 0.0;
   k.inv_slip_energy = 1.0 / k.slip_energy;
   return k;
 }
@@ -118,11 +121,18 @@ inline bool pre_peak_displacement(const CrackConstants& k, double sigma, double 
   };
   if (sigma < 0.0) {
     o = sigma * h / k.pn;
-  } else {
+  } else if (k.ft > 0.0) {
     o = invert(sigma / k.ft) * h * k.op_per_h;
+  } else {  // a joint without tensile strength carries no tension
+    o = 0.0;
+    clipped = sigma > 0.0;
   }
   const double fs =
       with_crack_law(k.law, [&](auto law) { return decltype(law)::shear_strength(k, sigma); });
+  if (!(fs > 0.0)) {  // a joint without cohesion in tension carries no shear
+    s = 0.0;
+    return clipped || tau != 0.0;
+  }
   const double sp = h * fs * k.two_over_pt;
   s = std::copysign(invert(std::fabs(tau) / fs) * sp, tau);
   return clipped;
@@ -147,14 +157,15 @@ inline double crack_point_potential(const CrackConstants& k, double o, double s,
     using Law = decltype(law);
     double g_n, g_s;
     Law::damage_factors(k, damage, g_n, g_s);
-    double e;
+    double e = 0.0;
     if (o < 0.0) {
       e = 0.5 * k.pn * o * o / h;
-    } else {
+    } else if (k.ft > 0.0) {  // a joint without tensile strength stores nothing open
       const double op = h * k.op_per_h, x = std::min(o / op, 1.0);
       e = g_n * k.ft * (op * (x * x - x * x * x / 3.0) + std::max(o - op, 0.0));
     }
     const double fs = Law::shear_strength(k, o < 0.0 ? k.pn * o / h : 0.0);
+    if (!(fs > 0.0)) return e;  // a joint without cohesion in tension
     const double sp = h * fs * k.two_over_pt, abs_s = std::fabs(s);
     const double y = std::min(abs_s / sp, 1.0);
     return e + g_s * fs * (sp * (y * y - y * y * y / 3.0) + std::max(abs_s - sp, 0.0));

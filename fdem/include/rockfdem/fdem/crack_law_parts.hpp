@@ -39,7 +39,8 @@ struct CrackConstants {
   double ft = 0;           ///< rock: tensile strength; bolt: yield strength sigma_y
   double fu = 0;           ///< bolt: ultimate strength sigma_u
   double c = 0;            ///< rock: cohesion; bolt: shear yield tau_y
-  double tan_phi = 0;      ///< rock: tan(friction angle)
+  double tan_phi = 0;      ///< rock, joint: tan(friction angle)
+  double tan_phi_r = 0;    ///< joint: tan(residual friction angle)
   double pn = 0, pt = 0;   ///< normal and tangential penalties [Pa]
   double open_range = 0;   ///< or - op [m]
   double slip_energy = 0;  ///< sr - sp = slip_energy / fs [Pa m]
@@ -51,6 +52,7 @@ struct CrackConstants {
   double inv_c = 0;            ///< 1 / c
   double inv_open_range = 0;   ///< 1 / (or - op)
   double inv_slip_energy = 0;  ///< 1 / slip_energy
+  bool breaks = true;          ///< whether the element breaks when two points reach D = 1
 };
 
 /// Range of a crack element's strength factor (Material::weibull_modulus):

@@ -21,6 +21,7 @@ namespace rockfdem::fdem {
 enum class CrackLaw : std::uint8_t {
   kRock = 0,       ///< Evans-Marathe softening, Mohr-Coulomb shear strength (reference sec. 2)
   kBoltSteel = 1,  ///< bilinear hardening in tension, brittle shear (seed eqs. 11-19)
+  kJoint = 2,      ///< rock joint: Mohr-Coulomb peak and residual friction, ft >= 0, never breaks
 };
 
 enum class Plane : std::uint8_t { kStrain, kStress };

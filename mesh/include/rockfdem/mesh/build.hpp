@@ -4,6 +4,7 @@
 
 #include <cstddef>
 
+#include "rockfdem/mesh/joints.hpp"
 #include "rockfdem/mesh/mesh.hpp"
 #include "rockfdem/mesh/mesh_spec.hpp"
 
@@ -17,6 +18,9 @@ struct MeshReport {
   double min_angle_deg = 0;  ///< [deg]
   double seconds = 0;        ///< wall time of build_mesh, gmsh start to Mesh record
   int gmsh_threads = 0;      ///< General.NumThreads given to gmsh
+  JointTraceReport joints;   ///< what became of MeshSpec::joints (tunnels)
+  /// The traces meshed (Mesh::joint_edges index them).
+  std::vector<JointTrace> joint_traces;
 };
 
 /// Builds the mesh a spec describes.

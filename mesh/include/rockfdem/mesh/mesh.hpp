@@ -39,12 +39,21 @@ struct TaggedEdge {
   int tag = 0;  ///< an EdgeTag (or a user tag >= 100 from a .msh file)
 };
 
+/// A mesh edge on a joint trace: vertices a, b and the index of the trace
+/// (in the prepared traces, joints.hpp) it lies on.
+struct JointEdge {
+  int a = 0;
+  int b = 0;
+  int trace = 0;
+};
+
 struct Mesh {
   std::vector<double> x, y;                   ///< vertex coordinates [m]
   std::vector<std::array<int, 3>> triangles;  ///< counter-clockwise vertex ids
   std::vector<int> zone;                      ///< per triangle: a Zone
   std::vector<std::uint8_t> fracture;         ///< per triangle: 1 where crack elements are allowed
   std::vector<TaggedEdge> edges;              ///< tagged boundary and interface edges
+  std::vector<JointEdge> joint_edges;         ///< edges on joint traces (tunnels with joints)
 
   std::size_t n_vertices() const { return x.size(); }
   std::size_t n_triangles() const { return triangles.size(); }

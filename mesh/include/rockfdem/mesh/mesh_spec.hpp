@@ -5,6 +5,7 @@
 
 #include <map>
 #include <string>
+#include <vector>
 
 namespace rockfdem::mesh {
 
@@ -56,6 +57,12 @@ struct MeshSizeSpec {
   int threads = 0;    ///< gmsh General.NumThreads (0 = OpenMP default)
 };
 
+/// A joint trace: a straight segment in the section plane [m], in the
+/// model's frame (the opening's bounding box centred on the origin).
+struct JointTrace {
+  double x0 = 0, y0 = 0, x1 = 0, y1 = 0;
+};
+
 struct MeshSpec {
   ModelKind kind = ModelKind::kTunnel;
   TunnelSpec tunnel;
@@ -63,6 +70,9 @@ struct MeshSpec {
   SpecimenSpec specimen;
   MshFileSpec msh;
   MeshSizeSpec size;
+  /// Joint traces the tunnel mesh honours (conformal mesh lines), as
+  /// given: build_mesh clips them (joints.hpp, prepare_joint_traces).
+  std::vector<JointTrace> joints;
 };
 
 }  // namespace rockfdem::mesh

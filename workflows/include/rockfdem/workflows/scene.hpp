@@ -17,6 +17,7 @@
 #include <string>
 #include <vector>
 
+#include "rockfdem/mesh/joints.hpp"
 #include "rockfdem/mesh/mesh.hpp"
 #include "rockfdem/mesh/mesh_spec.hpp"
 #include "rockfdem/workflows/rock_mass.hpp"
@@ -210,6 +211,21 @@ struct RockMassSpec {
   RockMassFigures mass;
 };
 
+/// [joints] and [[joint_set]]: the joint material and where the traces come
+/// from (the traces themselves are in mesh.joints).
+struct JointSettings {
+  double tensile_strength{}, cohesion{};               ///< Pa
+  double friction_angle{}, residual_friction_angle{};  ///< deg
+  double fracture_energy_I{}, fracture_energy_II{};    ///< J/m^2
+  double penalty_factor{};                             ///< times the rock's Young's modulus
+  std::uint64_t seed{};
+  double margin{};                       ///< m: the sets fill the opening's box grown by it
+  std::string dfn_file;                  ///< resolved path; empty: none
+  std::vector<mesh::JointSetSpec> sets;  ///< [[joint_set]]
+  long set_traces{};                     ///< traces the sets generated
+  long dfn_traces{};                     ///< traces read from dfn_file
+};
+
 struct Scene {
   std::string source;  ///< the scene file's path, or "default"
   std::string title;
@@ -226,6 +242,7 @@ struct Scene {
   BoltSettings bolts;
   GroutSettings grout;
   BondSettings lining_interface;      ///< re-joins the lining-rock crack elements at installation
+  JointSettings joints;               ///< [joints]; mesh.joints holds the traces
   std::vector<MonitorSpec> monitors;  ///< scene [[monitor]]
   std::vector<ExtensometerSpec> extensometers;  ///< scene [[extensometer]]
   OutputSettings output;

@@ -1,0 +1,107 @@
+// The joint crack law (crack_law_joint.hpp) through the engine: direct shear
+// against Mohr-Coulomb peak and residual strength, free opening without
+// tensile strength, and a crown wedge against its limit equilibrium.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+#include "rockfdem/fdem/constants.hpp"
+#include "rockfdem/fdem/crack_law.hpp"
+#include "rockfdem/fdem/engine.hpp"
+#include "test_models.hpp"
+
+namespace rockfdem::fdem {
+namespace {
+
+/// Joint of the tests: ft = 0, c = 0.5 MPa, phi = 35, phi_r = 25 degrees,
+/// GfII = 100 J/m^2, penalties 10 E of the rock.
+Material joint() {
+  Material m = test::rock();
+  m.crack_law = CrackLaw::kJoint;
+  m.tensile_strength = 0;
+  m.cohesion = 0.5e6;
+  m.friction_deg = 35;
+  m.residual_friction_deg = 25;
+  m.gf_II = 100;
+  return m;
+}
+
+double tan_deg(double deg) { return std::tan(deg * kPi / 180.0); }
+
+struct ShearCurve {
+  double peak = 0;      ///< largest shear stress [Pa]
+  double residual = 0;  ///< shear stress at the end [Pa]
+  double normal = 0;    ///< normal stress at the end [Pa], compression positive
+};
+
+/// Direct shear of the two-triangle joint: the upper triangle is pressed
+/// down by `closure`, then translated along the joint to `slip` in n
+/// increments; stresses from the nodal forces over the joint length h.
+ShearCurve direct_shear(const Material& m, double h, double closure, double slip, int n) {
+  ModelInput in = test::two_triangles(h, m);
+  Engine e(in);
+  const auto top = e.triangle_nodes(1), bottom = e.triangle_nodes(0);
+  ShearCurve c;
+  for (int i = 0; i <= n; ++i) {
+    const double u = slip * i / n;
+    for (int k = 0; k < 3; ++k) {
+      const int v = e.node_vertex()[top[k]], w = e.node_vertex()[bottom[k]];
+      e.set_node_state(top[k], in.x[v] + u, in.y[v] - closure, 0, 0);
+      e.set_node_state(bottom[k], in.x[w], in.y[w], 0, 0);
+    }
+    e.step();
+    double fx = 0, fy = 0;
+    for (int node : top) {
+      fx += e.node_force(node)[0];
+      fy += e.node_force(node)[1];
+    }
+    c.peak = std::max(c.peak, -fx / h);
+    c.residual = -fx / h;
+    c.normal = fy / h;
+  }
+  return c;
+}
+
+// Peak c + sigma tan(phi) and residual sigma tan(phi_r) at sigma = 2 MPa
+// (closure sigma h / pn), slip to 1.5 x the end of the softening range.
+TEST(JointLaw, direct_shear_follows_mohr_coulomb_peak_and_residual) {
+  const Material m = joint();
+  const double h = 0.1, sigma = 2e6;
+  const CrackConstants k = make_crack_constants(m);
+  const double fp = m.cohesion + sigma * tan_deg(m.friction_deg);
+  const double end = 2 * h * fp / k.pt + k.slip_energy / fp;
+  const ShearCurve c = direct_shear(m, h, sigma * h / k.pn, 1.5 * end, 3000);
+  const double fr = sigma * tan_deg(m.residual_friction_deg);
+  std::printf("direct shear: sigma %.4g, peak %.6g (Mohr-Coulomb %.6g), residual %.6g (%.6g)\n",
+              c.normal, c.peak, fp, c.residual, fr);
+  EXPECT_NEAR(c.normal, sigma, 1e-6 * sigma);
+  EXPECT_NEAR(c.peak, fp, 0.02 * fp);
+  EXPECT_NEAR(c.residual, fr, 0.02 * fr);
+}
+
+// Without tensile strength and cohesion an open joint carries nothing and
+// takes no damage; it never breaks.
+TEST(JointLaw, open_joint_without_strength_carries_nothing) {
+  Material m = joint();
+  m.cohesion = 0;
+  const double h = 0.1;
+  ModelInput in = test::two_triangles(h, m);
+  Engine e(in);
+  const auto top = e.triangle_nodes(1);
+  for (int k = 0; k < 3; ++k) {
+    const int v = e.node_vertex()[top[k]];
+    e.set_node_state(top[k], in.x[v] + 1e-3, in.y[v] + 1e-3, 0, 0);
+  }
+  e.step();
+  for (int node : top) {  // round-off of the translated triangle only (1 MPa on h: 1e5 N/m)
+    EXPECT_NEAR(e.node_force(node)[0], 0.0, 1e-3);
+    EXPECT_NEAR(e.node_force(node)[1], 0.0, 1e-3);
+  }
+  EXPECT_EQ(e.crack_damage(0), 0.0);
+  EXPECT_NE(e.crack_state(0), CrackState::kBroken);
+}
+
+}  // namespace
+}  // namespace rockfdem::fdem
