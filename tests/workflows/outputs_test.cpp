@@ -337,6 +337,24 @@ TEST_F(Outputs, specimen_runs_render_their_plots_under_xvfb) {
   }
 }
 
+// A tunnel's support and instruments over the run: the bolts' forces and
+// the extensometers' readings against the step, where the scene has them.
+TEST_F(Outputs, tunnel_runs_plot_bolt_forces_and_extensometers_over_the_run) {
+  if (std::string(ROCKFDEM_XVFB_RUN).empty()) GTEST_SKIP() << "xvfb-run is not installed";
+  const std::string xvfb =
+      std::string(ROCKFDEM_XVFB_RUN) + " -n " + std::to_string(100 + getpid() % 800) + " -a";
+  const std::string plots = " -j 1 --set output.plots=true --set output.vtk=false";
+  nlohmann::json j =
+      summary_of("run " + kTestDir + "/extensometer_circular.toml" + plots, out, 0, xvfb);
+  EXPECT_TRUE(is_png(out / "extensometers.png")) << j["skipped"];
+  EXPECT_FALSE(fs::exists(out / "bolt_forces_history.png")) << "no bolts";
+  fs::remove_all(out);
+  j = summary_of("run " + kTestDir + "/restart_support.toml" + plots, out, 0, xvfb);
+  EXPECT_TRUE(is_png(out / "bolt_forces_history.png")) << j["skipped"];
+  EXPECT_FALSE(fs::exists(out / "extensometers.png")) << "no extensometers";
+  fs::remove_all(out);
+}
+
 // A full disk: the run stops with exit 1 and one line
 // naming the file and the system's reason, without VTK's dozen lines of
 // pipeline state and colour codes on stderr, and summary.json records the

@@ -17,6 +17,7 @@ class History {
   void restore(const std::vector<std::vector<double>>& rows);
   /// The values of one column, for plots.
   std::vector<double> column(const std::string& name) const;
+  const std::vector<std::string>& columns() const { return columns_; }
 
  private:
   void append_text(const std::vector<double>& row);

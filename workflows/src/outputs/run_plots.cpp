@@ -13,6 +13,46 @@ std::vector<double> scaled(std::vector<double> v, double factor) {
   return v;
 }
 
+bool starts_with(const std::string& s, const std::string& head) {
+  return s.compare(0, head.size(), head) == 0;
+}
+
+bool ends_with(const std::string& s, const std::string& tail) {
+  return s.size() >= tail.size() && s.compare(s.size() - tail.size(), tail.size(), tail) == 0;
+}
+
+// An extensometer point's relative reading: "<name>_a<k>_mm" (the
+// absolute one ends "_abs_mm", a monitor's "_ux_mm" and the like).
+bool extensometer_point(const std::string& c) {
+  if (!ends_with(c, "_mm")) return false;
+  const std::string stem = c.substr(0, c.size() - 3);
+  const std::size_t a = stem.rfind("_a");
+  if (a == std::string::npos || a + 2 == stem.size()) return false;
+  return stem.find_first_not_of("0123456789", a + 2) == std::string::npos;
+}
+
+// The support and the instruments over the run, where the history has
+// them: each bolt's and cable's largest axial force, and each extensometer
+// point's relative reading (the deepest anchor fixed).
+void support_history(PlotWriter& plots, const History& h, const std::vector<double>& t,
+                     const std::vector<plots::PlotBand>& bands) {
+  const std::string bolt_tail = "_max_axial_kN";
+  std::vector<plots::PlotSeries> bolts, points;
+  for (const std::string& c : h.columns()) {
+    if (starts_with(c, "bolt_") && ends_with(c, bolt_tail))
+      bolts.push_back({c.substr(0, c.size() - bolt_tail.size()), t, h.column(c)});
+    else if (extensometer_point(c))
+      points.push_back({c.substr(0, c.size() - 3), t, h.column(c)});
+  }
+  if (!bolts.empty())
+    plots.xy("bolt_forces_history.png", "Bolts and cables: largest axial force", kStepAxis,
+             "axial force of largest magnitude along the bar [kN per bar], tension +", bolts, {},
+             bands);
+  if (!points.empty())
+    plots.xy("extensometers.png", "Extensometers: each point against the deepest anchor", kStepAxis,
+             "relative reading [mm], extension +", points, {}, bands);
+}
+
 }  // namespace
 
 PlotWriter::PlotWriter(std::string dir, RunRecord& summary, bool quiet)
@@ -100,6 +140,7 @@ void tunnel_curves(PlotWriter& plots, const History& h, const std::vector<Monito
             {"shoulders (chord)", tt, curve("shoulder_chord_convergence_mm")}},
            {}, bands);
   plots.broken_cracks(h, "step", kStepAxis, bands);
+  support_history(plots, h, t, bands);
 }
 
 namespace {
