@@ -11,6 +11,7 @@
 #include <omp.h>
 #include <poll.h>
 #include <sys/prctl.h>
+#include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -18,12 +19,14 @@
 #include <chrono>
 #include <cmath>
 #include <csignal>
+#include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <new>
 #include <stdexcept>
 #include <string>
 #include <thread>
+#include <vector>
 
 #include "rockfdem/error.hpp"
 #include "rockfdem/printable.hpp"
@@ -221,11 +224,16 @@ double child_time_limit_s(std::uint64_t file_bytes) {
   return 60.0 + 4.0 * double(file_bytes) / double(1 << 20);
 }
 
+std::uint64_t child_memory_budget(std::uint64_t file_bytes) {
+  return (std::uint64_t(1) << 30) + 32 * file_bytes;
+}
+
 namespace {
 
 // A test hook: ROCKFDEM_TEST_MSH_CHILD=hang (the child never answers; the
-// time limit is then 2 s), exit (it exits with status 3 before reading)
-// or truncate (it sends half its record).
+// time limit is then 2 s), exit (it exits with status 3 before reading),
+// truncate (it sends half its record) or allocate (it takes memory in 64
+// MiB blocks, up to 4 GiB, before reading).
 std::string test_hook() {
   const char* v = std::getenv("ROCKFDEM_TEST_MSH_CHILD");
   return v ? v : "";
@@ -241,8 +249,30 @@ bool write_all(int fd, const char* data, std::size_t n) {
   return true;
 }
 
+// The child's address space: what it maps at the fork (libraries, the
+// parent's heap) plus child_memory_budget(), so that a count forged in a
+// file ends in std::bad_alloc, which the parent reports as running out of
+// memory, instead of taking the machine's memory.
+void limit_address_space(std::uint64_t file_bytes) {
+  std::FILE* f = std::fopen("/proc/self/statm", "r");
+  unsigned long pages = 0;
+  const bool known = f && std::fscanf(f, "%lu", &pages) == 1;
+  if (f) std::fclose(f);
+  if (!known) return;  // no /proc: the machine's memory bounds it
+  rlimit r{};
+  r.rlim_cur = r.rlim_max =
+      rlim_t(pages) * rlim_t(::sysconf(_SC_PAGESIZE)) + rlim_t(child_memory_budget(file_bytes));
+  ::setrlimit(RLIMIT_AS, &r);
+}
+
+// The allocate hook: memory taken and touched until it is refused.
+void take_memory() {
+  std::vector<std::vector<char>> held;
+  for (int i = 0; i < 64; ++i) held.emplace_back(std::size_t(64) << 20, char(1));
+}
+
 [[noreturn]] void child_main(int fd, pid_t parent, const std::string& hook,
-                             const std::function<Mesh()>& read) {
+                             std::uint64_t file_bytes, const std::function<Mesh()>& read) {
   // Dies with the parent (a SIGKILL of the run must not leave it reading);
   // the parent may have gone before the request took effect.
   ::prctl(PR_SET_PDEATHSIG, SIGKILL);
@@ -258,8 +288,10 @@ bool write_all(int fd, const char* data, std::size_t n) {
   if (hook == "hang")
     for (;;) ::pause();
   if (hook == "exit") _exit(3);
+  limit_address_space(file_bytes);
   std::string record;
   try {
+    if (hook == "allocate") take_memory();
     record = encode_mesh(read());
   } catch (const InputError& e) {
     record = encode_error(1, e.what());
@@ -325,7 +357,7 @@ Mesh read_in_child(const std::string& path, const RecordLimits& limits,
         path + ": cannot start a process to read it (fork: " + std::strerror(errno) + ")");
   if (pid == 0) {
     in.close();
-    child_main(out.get(), parent, hook, read);
+    child_main(out.get(), parent, hook, limits.file_bytes, read);
   }
   out.close();
 
@@ -407,8 +439,10 @@ Mesh read_in_child(const std::string& path, const RecordLimits& limits,
       throw InputError(a.message);
     case 3:
       throw std::logic_error(a.message);
-    case 4:
-      throw std::bad_alloc();
+    case 4:  // the child's memory, limited for this file, not the run's
+      throw fail("gmsh ran out of memory reading it (the reading process may take " +
+                 std::to_string(child_memory_budget(limits.file_bytes) >> 20) +
+                 " MiB): a count in the file is larger than the file holds" + allowed);
     default:
       throw std::runtime_error(a.message);
   }

@@ -79,8 +79,15 @@ class RecordReceiver {
 /// shared 2-core VM: 2.8 s for 21 MB, whose limit is 140 s).
 double child_time_limit_s(std::uint64_t file_bytes);
 
+/// The memory a child may take beyond what it maps at the fork: 1 GiB +
+/// 32 bytes per byte of the file (its address space is limited to that
+/// sum, RLIMIT_AS). gmsh's model of a valid file takes a few bytes per
+/// byte of it; a count forged in a file asks for far more.
+std::uint64_t child_memory_budget(std::uint64_t file_bytes);
+
 /// Runs read() in a forked child and returns its Mesh. Errors read() throws
-/// come back as the same type and message. A child that dies by a signal,
+/// come back as the same type and message, but running out of memory (the
+/// child's budget) is an InputError naming `path`. A child that dies by a signal,
 /// exits without a whole record, sends an implausible one or runs past
 /// child_time_limit_s (then killed) is an InputError naming `path`.
 /// Failing to start the child (fork, pipe) is a std::runtime_error.

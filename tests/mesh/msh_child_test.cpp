@@ -206,6 +206,16 @@ TEST_F(MshChildHook, a_reader_that_exits_or_answers_half_is_refused) {
   EXPECT_TRUE(with_hook("").empty());
 }
 
+// A reader that keeps taking memory meets the child's address-space
+// limit (1 GiB and a little more for this file) long before the hook's 4
+// GiB: gmsh running out of memory, refused by name, the parent unharmed.
+TEST_F(MshChildHook, a_reader_that_takes_memory_meets_the_childs_limit) {
+  const std::string what = with_hook("allocate");
+  EXPECT_NE(what.find(tunnel_files().v41 + ": gmsh ran out of memory"), std::string::npos) << what;
+  EXPECT_EQ(detail::child_memory_budget(std::uint64_t(1) << 20),
+            (std::uint64_t(1) << 30) + (std::uint64_t(32) << 20));
+}
+
 TEST(MshChild, time_limit_grows_with_the_file) {
   EXPECT_EQ(detail::child_time_limit_s(0), 60.0);
   EXPECT_EQ(detail::child_time_limit_s(std::uint64_t(10) << 20), 100.0);
