@@ -73,7 +73,8 @@ struct JointLaw {
   /// lane computes 0/0.
   template <class T>
   static ROCKFDEM_LAW_INLINE CrackPointOf<T> point(const CrackConstants& k, const StrengthTerms<T>&,
-                                                   T o, T s, T h, T inv_h, T& damage) {
+                                                   const T& o, const T& s, const T& h,
+                                                   const T& inv_h, T& damage) {
     const T zero{};
     const T one = lanes::splat<T>(1.0);
     const T sigma_c = (o < zero) ? k.pn * o * inv_h : zero;  // penalty, unaffected by damage
