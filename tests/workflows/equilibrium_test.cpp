@@ -9,8 +9,8 @@
 #include <string>
 
 #include "cli_runner.hpp"
-#include "outputs/outer_boundary.hpp"
 #include "rockfdem/error.hpp"
+#include "run/rigid_rotation_guard.hpp"
 
 namespace fs = std::filesystem;
 using rockfdem::test::kTestDir;

@@ -14,7 +14,7 @@
 #include "cli_runner.hpp"
 #include "outputs/run_report.hpp"
 #include "outputs/run_timeline.hpp"
-#include "run/summary.hpp"
+#include "record/summary.hpp"
 
 namespace fs = std::filesystem;
 using namespace rockfdem::test;

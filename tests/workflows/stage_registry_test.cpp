@@ -36,7 +36,7 @@ class Mark : public Stage {
     done.other["core_present"] = m.core_present;
     return done;
   }
-  bool step(StageRunner&, const StageSpec&, StageChanges& changes) const override {
+  bool step(StageDriver&, const StageSpec&, StageChanges& changes) const override {
     ++stepped;
     changes.other["stepped"] = true;
     return true;

@@ -1,7 +1,7 @@
 // The convergence-confinement equilibrium (run/support_equilibrium.hpp):
 // where a support line meets the ground's curve, against hand-solved
 // straight lines.
-#include "run/support_equilibrium.hpp"
+#include "record/support_equilibrium.hpp"
 
 #include <gtest/gtest.h>
 

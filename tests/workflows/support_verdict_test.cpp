@@ -2,7 +2,7 @@
 // overstressed lining and broken steel are named with their figures and
 // where; a ring within its capacity and intact bars hold; a ring without a
 // capacity to check is said to be unchecked.
-#include "run/support_verdict.hpp"
+#include "record/support_verdict.hpp"
 
 #include <gtest/gtest.h>
 

@@ -6,9 +6,9 @@
 
 #include <cstddef>
 
+#include "record/run_context.hpp"
 #include "rockfdem/mesh/mesh.hpp"
 #include "rockfdem/workflows/scene.hpp"
-#include "run/run_context.hpp"
 
 namespace rockfdem::workflows {
 

@@ -10,6 +10,9 @@
 
 #include "commands/commands.hpp"
 #include "outputs/continuum_comparison.hpp"
+#include "record/output_dir.hpp"
+#include "record/phase_timer.hpp"
+#include "record/summary.hpp"
 #include "rockfdem/coupling/atomic_file.hpp"
 #include "rockfdem/coupling/insitu_grid.hpp"
 #include "rockfdem/coupling/vtk_writer.hpp"
@@ -17,9 +20,6 @@
 #include "rockfdem/mesh/build.hpp"
 #include "rockfdem/mesh/msh_io.hpp"
 #include "run/implicit_check.hpp"
-#include "run/output_dir.hpp"
-#include "run/phase_timer.hpp"
-#include "run/summary.hpp"
 #include "stages/stage_inputs.hpp"
 
 namespace rockfdem::workflows {

@@ -6,13 +6,13 @@
 
 #include "commands/commands.hpp"
 #include "commands/mesh_preview.hpp"
+#include "record/output_dir.hpp"
+#include "record/phase_timer.hpp"
+#include "record/summary.hpp"
 #include "rockfdem/coupling/mesh_grid.hpp"
 #include "rockfdem/coupling/vtk_writer.hpp"
 #include "rockfdem/mesh/build.hpp"
 #include "rockfdem/mesh/msh_io.hpp"
-#include "run/output_dir.hpp"
-#include "run/phase_timer.hpp"
-#include "run/summary.hpp"
 
 namespace rockfdem::workflows {
 

@@ -1,9 +1,9 @@
 // Private: one function per subcommand, each taking a validated scene.
 #pragma once
 
+#include "record/run_context.hpp"
 #include "rockfdem/workflows/cli.hpp"
 #include "rockfdem/workflows/scene.hpp"
-#include "run/run_context.hpp"
 
 namespace rockfdem::workflows {
 

@@ -7,12 +7,12 @@
 #include <string>
 #include <vector>
 
+#include "record/output_dir.hpp"
 #include "rockfdem/coupling/mesh_grid.hpp"
 #include "rockfdem/mesh/msh_io.hpp"
 #include "rockfdem/mesh/opening.hpp"
 #include "rockfdem/plots/plot.hpp"
 #include "rockfdem/workflows/scene.hpp"
-#include "run/output_dir.hpp"
 
 namespace rockfdem::workflows {
 namespace {

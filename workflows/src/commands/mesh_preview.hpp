@@ -4,8 +4,8 @@
 
 #include <string>
 
+#include "record/summary.hpp"
 #include "rockfdem/mesh/mesh.hpp"
-#include "run/summary.hpp"
 
 namespace rockfdem::workflows {
 

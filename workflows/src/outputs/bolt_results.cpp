@@ -5,9 +5,9 @@
 #include <cstdio>
 #include <filesystem>
 
+#include "record/output_dir.hpp"
 #include "rockfdem/coupling/atomic_file.hpp"
 #include "rockfdem/fdem/bolt_output.hpp"
-#include "run/output_dir.hpp"
 
 namespace rockfdem::workflows {
 namespace {

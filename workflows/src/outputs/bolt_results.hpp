@@ -13,10 +13,10 @@
 
 #include "outputs/output_step.hpp"
 #include "outputs/run_plots.hpp"
+#include "record/summary.hpp"
 #include "rockfdem/coupling/vtk_writer.hpp"
 #include "rockfdem/fdem/bolt_sections.hpp"
 #include "rockfdem/plots/plot.hpp"
-#include "run/summary.hpp"
 
 namespace rockfdem::workflows {
 

@@ -8,11 +8,11 @@
 #include <cmath>
 #include <string>
 
+#include "record/continuum_figures.hpp"
 #include "rockfdem/fdem/engine.hpp"
 #include "rockfdem/insitu/insitu.hpp"
 #include "rockfdem/mesh/mesh.hpp"
 #include "rockfdem/workflows/scene.hpp"
-#include "run/continuum_figures.hpp"
 
 namespace rockfdem::workflows {
 

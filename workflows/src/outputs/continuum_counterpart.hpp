@@ -15,13 +15,13 @@
 #include <vector>
 
 #include "outputs/monitors.hpp"
+#include "record/continuum_figures.hpp"
+#include "record/run_context.hpp"
+#include "record/summary.hpp"
 #include "rockfdem/fdem/engine.hpp"
 #include "rockfdem/insitu/insitu.hpp"
 #include "rockfdem/mesh/mesh.hpp"
 #include "rockfdem/workflows/scene.hpp"
-#include "run/continuum_figures.hpp"
-#include "run/run_context.hpp"
-#include "run/summary.hpp"
 
 namespace rockfdem::workflows {
 

@@ -11,9 +11,9 @@
 #include <string>
 #include <vector>
 
+#include "record/continuum_figures.hpp"
 #include "rockfdem/mesh/mesh.hpp"
 #include "rockfdem/workflows/scene.hpp"
-#include "run/continuum_figures.hpp"
 
 namespace rockfdem::workflows {
 

@@ -6,10 +6,10 @@
 
 #include <optional>
 
+#include "record/run_figures.hpp"
 #include "rockfdem/fdem/engine.hpp"
 #include "rockfdem/mesh/mesh.hpp"
 #include "rockfdem/workflows/scene.hpp"
-#include "run/run_figures.hpp"
 
 namespace rockfdem::workflows {
 

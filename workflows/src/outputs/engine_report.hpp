@@ -6,9 +6,9 @@
 #include <string>
 #include <vector>
 
+#include "record/phase_timer.hpp"
+#include "record/summary.hpp"
 #include "rockfdem/fdem/engine.hpp"
-#include "run/phase_timer.hpp"
-#include "run/summary.hpp"
 
 namespace rockfdem::workflows {
 

@@ -3,10 +3,10 @@
 #include <cmath>
 #include <cstdio>
 
+#include "outputs/frame_restore.hpp"
+#include "record/output_dir.hpp"
 #include "rockfdem/coupling/fdem_model.hpp"
 #include "rockfdem/fdem/bolt_output.hpp"
-#include "run/checkpoint.hpp"
-#include "run/output_dir.hpp"
 
 namespace rockfdem::workflows {
 

@@ -10,10 +10,10 @@
 
 #include "outputs/bolt_results.hpp"
 #include "outputs/output_step.hpp"
+#include "record/summary.hpp"
 #include "rockfdem/coupling/vtk_writer.hpp"
 #include "rockfdem/fdem/bolt_install.hpp"
 #include "rockfdem/insitu/insitu.hpp"
-#include "run/summary.hpp"
 
 namespace rockfdem::workflows {
 

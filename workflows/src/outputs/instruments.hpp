@@ -20,9 +20,9 @@
 #include "outputs/material_point.hpp"
 #include "outputs/monitors.hpp"
 #include "outputs/output_step.hpp"
+#include "record/summary.hpp"
 #include "rockfdem/fdem/bolt_install.hpp"
 #include "rockfdem/workflows/scene.hpp"
-#include "run/summary.hpp"
 
 namespace rockfdem::workflows {
 

@@ -5,9 +5,9 @@
 #include <string>
 #include <vector>
 
+#include "record/support_figures.hpp"
 #include "rockfdem/fdem/engine.hpp"
 #include "rockfdem/mesh/mesh.hpp"
-#include "run/support_figures.hpp"
 
 namespace rockfdem::workflows {
 

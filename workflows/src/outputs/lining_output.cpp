@@ -4,8 +4,9 @@
 #include <cmath>
 #include <cstdio>
 
+#include "record/output_dir.hpp"
 #include "rockfdem/coupling/atomic_file.hpp"
-#include "run/output_dir.hpp"
+#include "rockfdem/coupling/lining_cracks.hpp"
 
 namespace rockfdem::workflows {
 namespace {
@@ -250,20 +251,11 @@ void LiningOutput::capacity_plot(PlotWriter& plots, const std::vector<double>& m
                {{"thrust N [kN/m]", envelopes, points}}, 800);
 }
 
-std::vector<std::size_t> lining_interface_cracks(const fdem::Engine& e, const mesh::Mesh& m) {
-  std::vector<std::size_t> out;
-  for (std::size_t c = 0; c < e.n_cracks(); ++c) {
-    const auto t = e.crack_triangles(c);
-    if ((m.zone[t[0]] == mesh::kLining) != (m.zone[t[1]] == mesh::kLining)) out.push_back(c);
-  }
-  return out;
-}
-
 std::optional<std::pair<long, long>> lining_bond(const fdem::Engine& e, const mesh::Mesh& m) {
   // A bond acts only between two active triangles: a ring that was never
   // installed (or was removed) has none.
   long n_bond = 0, broken = 0;
-  for (std::size_t c : lining_interface_cracks(e, m)) {
+  for (std::size_t c : coupling::lining_interface_cracks(e, m)) {
     const auto t = e.crack_triangles(c);
     if (!e.active(t[0]) || !e.active(t[1])) continue;
     ++n_bond;

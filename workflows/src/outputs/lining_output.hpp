@@ -14,9 +14,9 @@
 #include "outputs/lining_sections.hpp"
 #include "outputs/output_step.hpp"
 #include "outputs/run_plots.hpp"
+#include "record/support_figures.hpp"
 #include "rockfdem/fdem/engine.hpp"
 #include "rockfdem/workflows/scene.hpp"
-#include "run/support_figures.hpp"
 
 namespace rockfdem::workflows {
 
@@ -77,10 +77,6 @@ class LiningOutput : public OutputStepObserver {
 /// The sections the scene gives (materials.lining, materials.invert);
 /// none without the lining's compressive strength.
 std::optional<RingSections> ring_sections(const Scene& scene);
-
-/// Crack elements joining a lining triangle to a triangle of another zone
-/// (the shotcrete-rock bond), in crack order.
-std::vector<std::size_t> lining_interface_cracks(const fdem::Engine& engine, const mesh::Mesh& m);
 
 /// The bond's crack elements between two active triangles and how many
 /// broke; none when no bond acts (a ring never installed, or removed).

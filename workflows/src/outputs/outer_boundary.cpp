@@ -1,9 +1,6 @@
 #include "outputs/outer_boundary.hpp"
 
 #include <cmath>
-#include <cstdio>
-
-#include "rockfdem/error.hpp"
 
 namespace rockfdem::workflows {
 
@@ -33,18 +30,6 @@ RigidFit rigid_fit(const std::vector<double>& x, const std::vector<double>& y,
   }
   f.rotation = inertia > 0 ? moment / inertia : 0.0;
   return f;
-}
-
-void check_rigid_rotation(const RigidFit& fit, bool rollers, long step) {
-  const double deg = fit.rotation * 180 / M_PI;
-  if (rollers || !(std::abs(deg) > kRigidRotationLimitDeg)) return;
-  char msg[400];
-  std::snprintf(msg, sizeof msg,
-                "fdem: step %ld: the outer boundary turned %.3g deg as a rigid body (limit "
-                "%g deg): the box, loaded by tractions alone, has a rigid-body mode and is "
-                "rotating on the broken ground around the opening; keep insitu.rollers = true",
-                step, deg, kRigidRotationLimitDeg);
-  throw NumericalError(msg);
 }
 
 }  // namespace rockfdem::workflows

@@ -3,7 +3,8 @@
 // them but does not remove them, and once a ring around the opening is
 // fully broken the outer block can turn on it. The least-squares rigid fit
 // of the boundary's displacements measures that motion; the run reports it
-// and stops when it exceeds kRigidRotationLimitDeg.
+// and the stage loop stops it when it exceeds kRigidRotationLimitDeg
+// (run/rigid_rotation_guard.hpp).
 #pragma once
 
 #include <array>
@@ -25,10 +26,5 @@ struct RigidFit {
 /// displacements (ux, uy) of the points (x, y); all vectors of one size.
 RigidFit rigid_fit(const std::vector<double>& x, const std::vector<double>& y,
                    const std::vector<double>& ux, const std::vector<double>& uy);
-
-/// Throws rockfdem::NumericalError naming `step` and the angle when a box
-/// loaded by tractions alone (`rollers` false) has turned by more than
-/// kRigidRotationLimitDeg; rollers leave no rigid mode, so nothing to stop.
-void check_rigid_rotation(const RigidFit& fit, bool rollers, long step);
 
 }  // namespace rockfdem::workflows

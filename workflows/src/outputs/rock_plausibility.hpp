@@ -14,9 +14,9 @@
 //   the crack pattern depends on the mesh.
 #pragma once
 
+#include "record/support_figures.hpp"
 #include "rockfdem/workflows/rock_mass.hpp"
 #include "rockfdem/workflows/scene.hpp"
-#include "run/support_figures.hpp"
 
 namespace rockfdem::workflows {
 

@@ -14,12 +14,11 @@
 #include "outputs/joint_results.hpp"
 #include "outputs/rock_plausibility.hpp"
 #include "outputs/run_report.hpp"
+#include "record/output_dir.hpp"
 #include "rockfdem/coupling/atomic_file.hpp"
 #include "rockfdem/coupling/fdem_model.hpp"
 #include "rockfdem/coupling/insitu_grid.hpp"
 #include "rockfdem/fdem/bolt_output.hpp"
-#include "run/checkpoint.hpp"
-#include "run/output_dir.hpp"
 #include "scene/lining_parts.hpp"
 
 namespace rockfdem::workflows {
@@ -36,10 +35,19 @@ std::string detail_number(double v) {
 
 }  // namespace
 
-void RunOutputs::check_rigid_motion(const fdem::Engine& e, long step) {
+void RunOutputs::stage_done(StageChanges& done) {
+  if (!done.rejoined) return;  // not a grout stage that fired
+  std::string csv = "crack,x,y\n";
+  for (const StageChanges::Grouted& g : done.grouted)
+    csv += std::to_string(g.crack) + ',' + std::to_string(g.x) + ',' + std::to_string(g.y) + '\n';
+  coupling::atomic_write_text(output_path(ctx_.output_dir, "grouted_cracks.csv"), csv);
+  done.positions_file = "grouted_cracks.csv";
+}
+
+double RunOutputs::outer_rotation(const fdem::Engine& e) {
   const RigidFit fit = key_points_->boundary_fit(e);
   max_rotation_deg_ = std::max(max_rotation_deg_, std::abs(fit.rotation) * 180 / M_PI);
-  check_rigid_rotation(fit, rollers_, step);
+  return fit.rotation;
 }
 
 RunOutputs::RunOutputs(const Scene& scene, const RunContext& ctx, RunRecord& summary)
@@ -47,7 +55,6 @@ RunOutputs::RunOutputs(const Scene& scene, const RunContext& ctx, RunRecord& sum
       ctx_(ctx),
       summary_(summary),
       vtk_(scene.output.vtk),
-      rollers_(scene.insitu.rollers),
       lining_ring_(scene.lining_ring),
       insitu_(scene.insitu),
       is_cable_(scene.bolts.is_cable),
@@ -145,7 +152,6 @@ void RunOutputs::record_rows(const fdem::Engine& e, const mesh::Mesh& m, const S
 
 void RunOutputs::record_frame(const fdem::Engine& e, const mesh::Mesh& m, const StageTag& stage,
                               const fdem::EnergyBalance& energy, PhaseTimer& timer) {
-  check_rigid_motion(e, e.step_count());
   // The hand-off step's dt, once it passed (a failed one is no good state).
   if (stage.kind == "handoff") handoff_dt_ = e.dt();
   if (vtk_) {
@@ -248,9 +254,8 @@ bool RunOutputs::lining_outputs(const fdem::Engine& e, const mesh::Mesh& m) {
 }
 
 void RunOutputs::finish(const fdem::Engine& e, const mesh::Mesh& m, PhaseTimer& timer,
-                        const fdem::BoltPlan& bolts, const EnergyCheck& energy) {
+                        const fdem::BoltPlan& bolts) {
   report_engine(e, timer, summary_);
-  energy.warn_if_unbalanced(e, ctx_.quiet, summary_);
   report_dt();
   summary_.counts.bolts = long(bolts.specs.size());
   if (!bolt_results_) summary_.skipped.push_back("bolts: none in the scene");

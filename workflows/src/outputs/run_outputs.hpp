@@ -14,21 +14,20 @@
 #include "outputs/frame_output.hpp"
 #include "outputs/history.hpp"
 #include "outputs/instruments.hpp"
+#include "outputs/last_good.hpp"
 #include "outputs/lining_output.hpp"
 #include "outputs/monitors.hpp"
 #include "outputs/outer_boundary.hpp"
 #include "outputs/run_plots.hpp"
 #include "outputs/run_timeline.hpp"
 #include "outputs/step_outputs.hpp"
+#include "record/phase_timer.hpp"
+#include "record/run_context.hpp"
+#include "record/summary.hpp"
 #include "rockfdem/coupling/vtk_writer.hpp"
 #include "rockfdem/fdem/bolt_install.hpp"
 #include "rockfdem/insitu/insitu.hpp"
 #include "rockfdem/workflows/scene.hpp"
-#include "run/energy_check.hpp"
-#include "run/last_good.hpp"
-#include "run/phase_timer.hpp"
-#include "run/run_context.hpp"
-#include "run/summary.hpp"
 
 namespace rockfdem::workflows {
 
@@ -67,8 +66,12 @@ class RunOutputs : public StepOutputs {
   /// before the run's checks of the step, so that a failing step has its row.
   void record_rows(const fdem::Engine& e, const mesh::Mesh& m, const StageTag& stage,
                    double support_ratio, const fdem::EnergyBalance& energy) override;
-  /// The output step once the run's checks passed: the outer boundary's
-  /// rigid-motion check, the ParaView frame (if enabled) and the last good state.
+  /// A grout stage's re-joined cracks: grouted_cracks.csv (crack, x, y).
+  void stage_done(StageChanges& done) override;
+  /// The outer boundary's rigid rotation [rad], its largest kept for the summary.
+  double outer_rotation(const fdem::Engine& e) override;
+  /// The output step once the run's checks passed: the ParaView frame (if
+  /// enabled) and the last good state.
   void record_frame(const fdem::Engine& e, const mesh::Mesh& m, const StageTag& stage,
                     const fdem::EnergyBalance& energy, PhaseTimer& timer) override;
   /// The outputs that observe output steps, in history.csv's column order.
@@ -82,7 +85,7 @@ class RunOutputs : public StepOutputs {
   /// Counts, monitors, broken cracks, hash, plots, timings; writes summary.json.
   /// `energy`: the stage loop's check, whose end warning the summary carries.
   void finish(const fdem::Engine& e, const mesh::Mesh& m, PhaseTimer& timer,
-              const fdem::BoltPlan& bolts, const EnergyCheck& energy);
+              const fdem::BoltPlan& bolts);
   /// The hand-off state, before the first explicit step: what a failure in
   /// that step reports as the last good state (nothing is written yet).
   void keep_start(const fdem::Engine& e) { last_good_.take(e, e.energy_balance()); }
@@ -127,14 +130,11 @@ class RunOutputs : public StepOutputs {
   /// summary "lining": the lining-rock crack elements and how many broke;
   /// returns whether the ring is installed, to report its section forces.
   bool lining_outputs(const fdem::Engine& e, const mesh::Mesh& m);
-  /// Stops the run (NumericalError) when the boundary turns as a rigid body.
-  void check_rigid_motion(const fdem::Engine& e, long step);
   const Scene& scene_;  ///< read by the constructor, finish() and report_failure() alone
   const RunContext& ctx_;
   RunRecord& summary_;
   // What the outputs before finish() take from the scene.
   bool vtk_ = false;                          ///< output.vtk
-  bool rollers_ = false;                      ///< insitu.rollers
   bool lining_ring_ = false;                  ///< the model has a lining ring
   InsituSettings insitu_;                     ///< the in-situ stress, p0 of the curve in pressure
   std::optional<insitu::KirschCase> kirsch_;  ///< the Kirsch case the scene is, if any

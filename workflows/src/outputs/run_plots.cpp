@@ -3,7 +3,7 @@
 #include <cmath>
 #include <iostream>
 
-#include "run/output_dir.hpp"
+#include "record/output_dir.hpp"
 
 namespace rockfdem::workflows {
 namespace {

@@ -12,10 +12,10 @@
 #include "outputs/monitors.hpp"
 #include "outputs/run_pictures.hpp"
 #include "outputs/run_timeline.hpp"
+#include "record/summary.hpp"
 #include "rockfdem/fdem/engine.hpp"
 #include "rockfdem/mesh/mesh.hpp"
 #include "rockfdem/plots/plot.hpp"
-#include "run/summary.hpp"
 
 namespace rockfdem::workflows {
 

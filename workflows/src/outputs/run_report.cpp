@@ -5,13 +5,13 @@
 #include <optional>
 #include <sstream>
 
+#include "record/number_text.hpp"
+#include "record/output_dir.hpp"
+#include "record/support_equilibrium.hpp"
 #include "rockfdem/coupling/atomic_file.hpp"
 #include "rockfdem/mesh/msh_io.hpp"
 #include "rockfdem/printable.hpp"
 #include "rockfdem/workflows/version.hpp"
-#include "run/number_text.hpp"
-#include "run/output_dir.hpp"
-#include "run/support_equilibrium.hpp"
 #include "stages/registry.hpp"
 #include "stages/stage.hpp"
 

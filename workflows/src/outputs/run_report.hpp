@@ -8,8 +8,8 @@
 #include <string>
 #include <vector>
 
+#include "record/summary.hpp"
 #include "rockfdem/workflows/scene.hpp"
-#include "run/summary.hpp"
 
 namespace rockfdem::workflows {
 

@@ -7,8 +7,8 @@
 #include <string>
 #include <vector>
 
+#include "record/run_figures.hpp"
 #include "rockfdem/plots/plot.hpp"
-#include "run/run_figures.hpp"
 
 namespace rockfdem::workflows {
 

@@ -4,11 +4,11 @@
 #include <iostream>
 
 #include "outputs/engine_report.hpp"
+#include "outputs/frame_restore.hpp"
 #include "outputs/run_plots.hpp"
+#include "record/output_dir.hpp"
 #include "rockfdem/coupling/fdem_model.hpp"
 #include "rockfdem/error.hpp"
-#include "run/checkpoint.hpp"
-#include "run/output_dir.hpp"
 
 namespace rockfdem::workflows {
 namespace {
@@ -83,13 +83,12 @@ void SpecimenOutputs::restore(const nlohmann::json& s, const std::string& from_d
   load_.restore(s.at("load"));
 }
 
-void SpecimenOutputs::finish(const fdem::Engine& e, PhaseTimer& timer, const EnergyCheck& energy) {
+void SpecimenOutputs::finish(const fdem::Engine& e, PhaseTimer& timer) {
   if (scene_.output.plots)
     specimen_plots(e, history_, disc_, ctx_.output_dir, summary_, ctx_.quiet);
   timer.stamp("output");
   summary_.status = "completed";
   report_engine(e, timer, summary_);
-  energy.warn_if_unbalanced(e, ctx_.quiet, summary_);
   summary_.specimen = load_.record();
   const SpecimenRecord& peak = *summary_.specimen;
   summary_.skipped.push_back("insitu: a specimen starts stress-free");

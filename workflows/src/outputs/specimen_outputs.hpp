@@ -9,13 +9,12 @@
 #include <vector>
 
 #include "outputs/history.hpp"
+#include "outputs/last_good.hpp"
 #include "outputs/step_outputs.hpp"
+#include "record/run_context.hpp"
+#include "record/summary.hpp"
 #include "rockfdem/coupling/vtk_writer.hpp"
 #include "rockfdem/workflows/scene.hpp"
-#include "run/energy_check.hpp"
-#include "run/last_good.hpp"
-#include "run/run_context.hpp"
-#include "run/summary.hpp"
 #include "stages/platen_load.hpp"
 
 namespace rockfdem::workflows {
@@ -39,7 +38,7 @@ class SpecimenOutputs : public StepOutputs {
   void restore(const nlohmann::json& state, const std::string& from_dir);
   /// Plots, the engine's figures (with `energy`'s end warning) and the
   /// peak; writes summary.json.
-  void finish(const fdem::Engine& e, PhaseTimer& timer, const EnergyCheck& energy);
+  void finish(const fdem::Engine& e, PhaseTimer& timer);
   /// summary.json of a run a NumericalError stopped: the last good state.
   void report_failure(const fdem::Engine& e, PhaseTimer& timer, const std::string& why);
   /// summary.json of a run a signal stopped (after its checkpoint).

@@ -8,9 +8,10 @@
 #include <vector>
 
 #include "outputs/monitors.hpp"
+#include "record/phase_timer.hpp"
+#include "record/run_figures.hpp"
 #include "rockfdem/fdem/engine.hpp"
 #include "rockfdem/mesh/mesh.hpp"
-#include "run/phase_timer.hpp"
 
 namespace rockfdem::workflows {
 
@@ -35,8 +36,15 @@ class StepOutputs {
   /// enabled) and the last good state.
   virtual void record_frame(const fdem::Engine& e, const mesh::Mesh& m, const StageTag& stage,
                             const fdem::EnergyBalance& energy, PhaseTimer& timer) = 0;
+  /// The outer boundary's rigid rotation now [rad] (its least-squares fit,
+  /// outputs/outer_boundary.hpp), for the stage loop's guard; 0 where the
+  /// model has no outer box (specimens).
+  virtual double outer_rotation(const fdem::Engine&) { return 0; }
   /// Whether the lining ring is installed as lining (tunnels).
   virtual void set_lining_installed(bool) {}
+  /// A stage ended, having done `done` (its record's changes, which the
+  /// outputs complete with the files they wrote from it).
+  virtual void stage_done(StageChanges&) {}
   /// A `lining` or `bolts` stage installed its support (tunnels).
   virtual void support_installed(const fdem::Engine&) {}
 };

@@ -20,16 +20,11 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
-#include "run/run_context.hpp"
-
-namespace rockfdem::coupling {
-class PvdCollection;
-}
+#include "record/run_context.hpp"
 
 namespace rockfdem::workflows {
 
 struct Scene;
-class RunRecord;
 
 struct Checkpoint {
   nlohmann::json run;        ///< the workflow's state (stage_runner, run_outputs)
@@ -72,18 +67,5 @@ void validate_run_state(const std::string& path, const nlohmann::json& run, cons
 /// and the field.
 void check_run_state_against_engine(const std::string& path, const nlohmann::json& run,
                                     const Scene& scene, long step, double time);
-
-/// The run directory a checkpoint belongs to: OUTDIR/checkpoints/FILE -> OUTDIR.
-std::string run_dir_of(const std::string& checkpoint);
-
-/// A run state's frame list: [time, file name] per ParaView frame.
-nlohmann::json frames_state(const coupling::PvdCollection& pvd);
-
-/// Adds the frames of `frames` (frames_state) to `pvd` and rewrites it;
-/// where `to_dir` is not `from_dir` (a restart into another -o) copies each
-/// frame from there so the series stays whole, noting in the summary any
-/// that is missing. Returns the number of frames.
-int restore_frames(const nlohmann::json& frames, const std::string& from_dir,
-                   const std::string& to_dir, coupling::PvdCollection& pvd, RunRecord& summary);
 
 }  // namespace rockfdem::workflows

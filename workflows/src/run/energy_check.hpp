@@ -4,10 +4,10 @@
 // written); at the end, a balance that closes only loosely is a warning.
 #pragma once
 
+#include "record/summary.hpp"
 #include "rockfdem/fdem/engine.hpp"
 #include "rockfdem/mesh/mesh.hpp"
 #include "rockfdem/workflows/scene.hpp"
-#include "run/summary.hpp"
 
 namespace rockfdem::workflows {
 

@@ -19,12 +19,12 @@
 #include "outputs/continuum_comparison.hpp"
 #include "outputs/continuum_counterpart.hpp"
 #include "outputs/face_distance.hpp"
+#include "record/output_dir.hpp"
 #include "rockfdem/error.hpp"
 #include "rockfdem/mesh/msh_io.hpp"
 #include "run/handoff_choice.hpp"
 #include "run/implicit_check.hpp"
 #include "run/interrupt.hpp"
-#include "run/output_dir.hpp"
 #include "scene/scene_reader.hpp"
 #include "stages/stage_inputs.hpp"
 
@@ -246,7 +246,7 @@ void Run::run_stages() {
   } catch (const Interrupted&) {
     summary_.status = "interrupted";
     summary_.fdem = stages_only(*stages_);
-    out_.finish(engine(), mesh_, timer_, bolts_, stages_->energy_check());
+    finish_outputs();
     throw;
   } catch (const NumericalError& e) {
     // The frames and history rows written so far are the last good output.
@@ -282,6 +282,13 @@ void Run::compare_with_references() {
   timer_.stamp("insitu");
 }
 
+// The run's closing checks, then the outputs' last files: the energy
+// warning is the run's judgement, the outputs only write it down.
+void Run::finish_outputs() {
+  stages_->energy_check().warn_if_unbalanced(engine(), ctx_.quiet, summary_);
+  out_.finish(engine(), mesh_, timer_, bolts_);
+}
+
 // The verdict of the stages, the run's figures and the last outputs.
 void Run::finish() {
   const RunVerdict verdict = stages_->verdict();
@@ -299,7 +306,7 @@ void Run::finish() {
   summary_.fdem->handoff_alpha = handoff().alpha;
   handoff_figures_.crack_points_over_strength = engine().crack_prestress_clipped();
   summary_.fdem->handoff = handoff_figures_;
-  out_.finish(engine(), mesh_, timer_, bolts_, stages_->energy_check());
+  finish_outputs();
   if (!ctx_.quiet)
     std::cout << "status: " << verdict.status
               << (verdict.message.empty() ? " (every stage met its criteria)"

@@ -8,12 +8,12 @@
 
 #include "outputs/monitors.hpp"
 #include "outputs/run_outputs.hpp"
+#include "record/run_context.hpp"
 #include "rockfdem/fdem/bolt_install.hpp"
 #include "rockfdem/fdem/engine.hpp"
 #include "rockfdem/insitu/insitu.hpp"
 #include "rockfdem/mesh/mesh.hpp"
 #include "rockfdem/workflows/scene.hpp"
-#include "run/run_context.hpp"
 #include "run/staged_run.hpp"
 
 namespace rockfdem::workflows {
@@ -43,6 +43,7 @@ class Run : StagedRun<RunOutputs> {
   void run_stages();
   void compare_with_references();
   void finish();
+  void finish_outputs();
 
   // What the phases share.
   const insitu::InsituField& handoff() const { return fields_.back(); }

@@ -14,12 +14,12 @@
 #include <sstream>
 
 #include "outputs/specimen_outputs.hpp"
+#include "record/output_dir.hpp"
 #include "rockfdem/error.hpp"
 #include "rockfdem/fdem/engine.hpp"
 #include "rockfdem/mesh/msh_io.hpp"
 #include "run/checkpoint.hpp"
 #include "run/interrupt.hpp"
-#include "run/output_dir.hpp"
 #include "run/run.hpp"
 #include "run/staged_run.hpp"
 #include "stages/platen_load.hpp"
@@ -42,7 +42,8 @@ class SpecimenRun : StagedRun<SpecimenOutputs> {
       write_first_outputs();
       begin_stages();
       run_stages();
-      out_.finish(engine(), timer_, stages_->energy_check());
+      stages_->energy_check().warn_if_unbalanced(engine(), ctx_.quiet, summary_);
+      out_.finish(engine(), timer_);
     } catch (const OutputError& e) {
       output_failed(e);
     }

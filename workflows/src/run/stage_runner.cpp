@@ -4,11 +4,12 @@
 #include <cmath>
 #include <limits>
 
+#include "record/output_dir.hpp"
+#include "record/summary.hpp"
 #include "rockfdem/error.hpp"
 #include "run/interrupt.hpp"
-#include "run/output_dir.hpp"
 #include "run/progress.hpp"
-#include "run/summary.hpp"
+#include "run/rigid_rotation_guard.hpp"
 #include "stages/registry.hpp"
 
 namespace rockfdem::workflows {
@@ -182,6 +183,8 @@ void StageRunner::record_output(const StageTag& stage, PhaseTimer& timer) {
   out_.record_rows(engine_, model_.mesh, stage, model_.support_ratio(), energy);
   // Before the frame: the last frame stays the last good state.
   energy_.at_output_step(energy, engine_.step_count());
+  check_rigid_rotation({0, 0, out_.outer_rotation(engine_)}, scene_.insitu.rollers,
+                       engine_.step_count());
   out_.record_frame(engine_, model_.mesh, stage, energy, timer);
 }
 
@@ -256,6 +259,7 @@ void StageRunner::run(const StageSpec& stage) {
   StageChanges done = cursor_.changes;
   last_settle_ = -1;  // no output interval yet
   const bool converged = kind.step(*this, stage, done);
+  out_.stage_done(done);
   report_.push_back(report_entry(stage, done, converged));
 }
 

@@ -19,14 +19,14 @@
 
 #include "outputs/monitors.hpp"
 #include "outputs/step_outputs.hpp"
+#include "record/phase_timer.hpp"
+#include "record/run_context.hpp"
+#include "record/run_figures.hpp"
 #include "rockfdem/fdem/bolt_install.hpp"
 #include "rockfdem/fdem/engine.hpp"
 #include "rockfdem/insitu/insitu.hpp"
 #include "rockfdem/workflows/scene.hpp"
 #include "run/energy_check.hpp"
-#include "run/phase_timer.hpp"
-#include "run/run_context.hpp"
-#include "run/run_figures.hpp"
 #include "stages/stage.hpp"
 
 namespace rockfdem::workflows {
@@ -41,7 +41,7 @@ struct RunVerdict {
   std::string message;  ///< what a not-completed status rests on; empty when completed
 };
 
-class StageRunner {
+class StageRunner : public StageDriver {
  public:
   StageRunner(fdem::Engine& engine, const mesh::Mesh& m, const insitu::InsituField& handoff,
               const Scene& scene, const RunContext& ctx, StepOutputs& out,
@@ -55,30 +55,22 @@ class StageRunner {
   /// a checkpoint and a last history row) when SIGINT or SIGTERM arrives.
   void run_all(PhaseTimer& timer);
   /// One entry per stage run: kind, steps, simulated time, dt, final ratio, converged.
-  const std::vector<StageRecord>& report() const { return report_; }
+  const std::vector<StageRecord>& report() const override { return report_; }
   bool core_present() const { return model_.core_present; }
   /// The run's status from the stages run so far.
   RunVerdict verdict() const;
   nlohmann::json state() const;
   void restore(const nlohmann::json& state);
 
-  // What the stages (stages/stage_<kind>.cpp) drive.
-  StageModel& model() { return model_; }
-  /// A stop test run after every step: true stops the stage there.
-  using StopTest = std::function<bool()>;
-  /// Steps in output chunks until the stage's criterion; returns converged.
-  /// With a `stop` test, until it holds (checked after every step, so the
-  /// trigger does not depend on the output interval or the mesh).
-  bool step_until(const StageSpec& stage, const StopTest& stop = {});
-  /// Whether an unstable opening ended the stages.
-  bool stopped() const { return stopped_; }
+  // What the stages (stages/stage_<kind>.cpp) drive: StageDriver.
+  StageModel& model() override { return model_; }
+  bool step_until(const StageSpec& stage, const StopTest& stop) override;
+  bool stopped() const override { return stopped_; }
   /// One output step of `stage` (a kind, or "handoff" numbered 0): history
   /// row, the energy balance's check, then the frame (RunOutputs).
   void record_output(const StageTag& stage, PhaseTimer& timer);
-  /// Simulated time since the stage began [s].
-  double stage_time() const { return model_.engine.time() - cursor_.t0; }
-  /// Explicit steps since the stage began.
-  long stage_steps() const { return model_.engine.step_count() - cursor_.first; }
+  double stage_time() const override { return model_.engine.time() - cursor_.t0; }
+  long stage_steps() const override { return model_.engine.step_count() - cursor_.first; }
 
  private:
   struct Cursor {

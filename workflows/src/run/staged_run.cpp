@@ -4,9 +4,9 @@
 
 #include "outputs/run_outputs.hpp"
 #include "outputs/specimen_outputs.hpp"
+#include "record/output_dir.hpp"
 #include "rockfdem/error.hpp"
 #include "rockfdem/mesh/build.hpp"
-#include "run/output_dir.hpp"
 
 namespace rockfdem::workflows {
 

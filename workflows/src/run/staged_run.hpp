@@ -9,15 +9,15 @@
 #include <optional>
 #include <string>
 
+#include "record/phase_timer.hpp"
+#include "record/run_context.hpp"
+#include "record/summary.hpp"
 #include "rockfdem/error.hpp"
 #include "rockfdem/fdem/engine.hpp"
 #include "rockfdem/mesh/mesh.hpp"
 #include "rockfdem/workflows/scene.hpp"
 #include "run/checkpoint.hpp"
-#include "run/phase_timer.hpp"
-#include "run/run_context.hpp"
 #include "run/stage_runner.hpp"
-#include "run/summary.hpp"
 
 namespace rockfdem::workflows {
 

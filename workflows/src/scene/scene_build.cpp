@@ -23,8 +23,7 @@
 #include "scene/dfn_file.hpp"
 #include "scene/scene_checks.hpp"
 #include "scene/scene_reader.hpp"
-#include "stages/registry.hpp"
-#include "stages/stage.hpp"
+#include "scene/stage_kind.hpp"
 
 namespace rockfdem::workflows {
 namespace {
@@ -806,7 +805,7 @@ std::string misplaced(const Scene& s, const std::string& what, double x, double 
 bool read_relative_to_support(const Reader& r, const Scene& s, const std::string& p) {
   const bool relative = r.boolean(p + ".relative_to_support");
   if (relative && std::none_of(s.stages.begin(), s.stages.end(),
-                               [](auto& st) { return stage_of(st.kind).installs_support(); }))
+                               [](auto& st) { return stage_kind(st.kind).installs_support(); }))
     r.fail(p + ".relative_to_support",
            "the stages install no support; allowed: true only with a `lining` or `bolts` stage");
   return relative;
@@ -1036,7 +1035,7 @@ void read_stages(const Reader& r, Scene& s) {
     }
     const StageSpec st = read_stage(r, p, kind);
     EntryCheck check(r, p, s, st, at);
-    stage_of(kind).check(check);
+    stage_kind(kind).check(check);
     s.stages.push_back(st);
   }
   if (!s.bolts.segments.empty() && !at.bolted)

@@ -5,7 +5,7 @@
 
 #include "rockfdem/mesh/outline.hpp"
 #include "rockfdem/workflows/scene_schema.hpp"
-#include "stages/stage_inputs.hpp"
+#include "scene/stage_damping.hpp"
 
 namespace rockfdem::workflows::detail {
 namespace {

@@ -10,8 +10,7 @@
 
 #include "rockfdem/mesh/msh_io.hpp"
 #include "scene/schema_keys.hpp"
-#include "stages/registry.hpp"
-#include "stages/stage.hpp"
+#include "scene/stage_kind.hpp"
 
 namespace rockfdem::workflows {
 namespace {
@@ -559,7 +558,7 @@ void add_engine(std::vector<KeySpec>& s) {
                            "needs insitu.rollers and angle 0."));
   // The stages' own keys ([loading]: stage_load_platens.cpp).
   for (const std::string& kind : stage_kinds())
-    for (KeySpec& k : stage_of(kind).keys()) s.push_back(std::move(k));
+    for (KeySpec& k : stage_kind(kind).keys()) s.push_back(std::move(k));
 }
 
 // The steel of bolts and cables; the grout and lining-rock bonds.

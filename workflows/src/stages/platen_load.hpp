@@ -7,11 +7,11 @@
 
 #include <nlohmann/json.hpp>
 
+#include "record/run_figures.hpp"
 #include "rockfdem/fdem/engine.hpp"
 #include "rockfdem/fdem/model_input.hpp"
 #include "rockfdem/mesh/mesh.hpp"
 #include "rockfdem/workflows/scene.hpp"
-#include "run/run_figures.hpp"
 
 namespace rockfdem::workflows {
 

@@ -49,6 +49,8 @@ const Stage& stage_of(const std::string& kind) {
   throw std::logic_error("no stage of kind '" + kind + "' is registered");
 }
 
+const StageKind& stage_kind(const std::string& kind) { return stage_of(kind); }
+
 std::vector<std::string> stage_kinds() {
   std::vector<std::string> kinds;
   for (const StageEntry& e : registry()) kinds.push_back(e.first);

@@ -8,6 +8,8 @@
 #include <string>
 #include <vector>
 
+#include "scene/stage_kind.hpp"
+
 namespace rockfdem::workflows {
 
 class Stage;
@@ -18,10 +20,5 @@ void register_stage(const std::string& kind, std::unique_ptr<const Stage> stage)
 /// The stage of `kind`; std::logic_error when none is registered (a
 /// validated scene names only registered kinds).
 const Stage& stage_of(const std::string& kind);
-/// The registered kinds, built-in first, in the order of the reference.
-std::vector<std::string> stage_kinds();
-/// The kinds with their one-line descriptions, as the scene reference
-/// lists them: "`soften` (core to alpha, explicit), ..., `equilibrium`".
-std::string stage_kind_descriptions();
 
 }  // namespace rockfdem::workflows

@@ -1,7 +1,5 @@
 #include "stages/stage.hpp"
 
-#include "run/stage_runner.hpp"
-
 namespace rockfdem::workflows {
 
 void StageModel::set_zone(int zone, bool active, fdem::ActivationReference ref) {
@@ -11,8 +9,8 @@ void StageModel::set_zone(int zone, bool active, fdem::ActivationReference ref) 
 
 StageChanges Stage::apply(StageModel&, const StageSpec&) const { return {}; }
 
-bool Stage::step(StageRunner& runner, const StageSpec& spec, StageChanges&) const {
-  return runner.step_until(spec);
+bool Stage::step(StageDriver& runner, const StageSpec& spec, StageChanges&) const {
+  return runner.step_until(spec, {});
 }
 
 std::string Stage::outcome(const StageRecord& record) const {

@@ -1,6 +1,6 @@
 // grout: steps until its trigger fires (or the stage's time has passed),
-// then re-joins the broken crack elements with grout and lists where
-// (grouted_cracks.csv). One trigger per stage, N the broken count:
+// then re-joins the broken crack elements with grout and says which (the
+// outputs list them in grouted_cracks.csv). One trigger per stage, N the broken count:
 //   trigger_broken = n                N >= n (0, the default: at once)
 //   trigger_broken_since_support = n  N - N0 >= n
 //   trigger_broken_growth = g         N - N0 >= g N0 and N > N0
@@ -13,11 +13,8 @@
 // run ending on it is not at equilibrium.
 #include <cstdio>
 
-#include "rockfdem/coupling/atomic_file.hpp"
 #include "rockfdem/error.hpp"
 #include "rockfdem/fdem/bolt_grouting.hpp"
-#include "run/output_dir.hpp"
-#include "run/stage_runner.hpp"
 #include "stages/registry.hpp"
 #include "stages/stage.hpp"
 
@@ -25,7 +22,8 @@ namespace rockfdem::workflows {
 namespace {
 
 // Re-joins the broken crack elements (not a bolt's steel) with grout;
-// adds the count and the positions file to `done`.
+// adds the count and which cracks (with their midpoints) to `done`, for the
+// outputs to list.
 void grout_broken(StageModel& m, StageChanges& done) {
   const fdem::CrackSelector select = m.bolts.specs.empty()
                                          ? fdem::CrackSelector{}
@@ -33,12 +31,9 @@ void grout_broken(StageModel& m, StageChanges& done) {
   const fdem::GroutingResult g = fdem::grout_broken_cracks(m.engine, m.materials.grout, select);
   done.rejoined = g.count;
   done.broken_after = m.engine.broken_counts().total();
-  std::string csv = "crack,x,y\n";
+  done.grouted.reserve(g.cracks.size());
   for (std::size_t i = 0; i < g.cracks.size(); ++i)
-    csv += std::to_string(g.cracks[i]) + ',' + std::to_string(g.midpoints[i][0]) + ',' +
-           std::to_string(g.midpoints[i][1]) + '\n';
-  coupling::atomic_write_text(output_path(m.ctx.output_dir, "grouted_cracks.csv"), csv);
-  done.positions_file = "grouted_cracks.csv";
+    done.grouted.push_back({std::size_t(g.cracks[i]), g.midpoints[i][0], g.midpoints[i][1]});
 }
 
 enum class TriggerKind { kBroken, kSinceSupport, kGrowth, kSteps };
@@ -53,7 +48,7 @@ struct Trigger {
     return kind == TriggerKind::kSinceSupport || kind == TriggerKind::kGrowth;
   }
   /// Whether it holds now (after a step, or at the stage's start).
-  bool reached(const StageRunner& runner, const fdem::Engine& engine) const {
+  bool reached(const StageDriver& runner, const fdem::Engine& engine) const {
     if (kind == TriggerKind::kSteps) return double(runner.stage_steps()) >= value;
     const long n = engine.broken_counts().total();
     if (kind == TriggerKind::kSinceSupport) return double(n - n0) >= value;
@@ -78,7 +73,7 @@ Trigger given_trigger(const StageSpec& spec) {
 }
 
 /// N0: the broken count in the record of the first stage that installed support.
-long broken_at_support(const StageRunner& runner) {
+long broken_at_support(const StageDriver& runner) {
   for (const StageRecord& r : runner.report()) {
     if (!stage_of(r.kind).installs_support()) continue;
     if (r.changes.broken_at_install) return *r.changes.broken_at_install;
@@ -117,7 +112,7 @@ class Grout : public Stage {
                                 std::to_string(c.spec.max_steps) + " before; raise max_steps");
   }
 
-  bool step(StageRunner& runner, const StageSpec& spec, StageChanges& changes) const override {
+  bool step(StageDriver& runner, const StageSpec& spec, StageChanges& changes) const override {
     StageModel& m = runner.model();
     Trigger t = given_trigger(spec);
     if (t.from_support()) t.n0 = broken_at_support(runner);

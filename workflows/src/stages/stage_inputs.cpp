@@ -205,14 +205,6 @@ fdem::Engine make_engine(fdem::ModelInput in, const Scene& scene, bool force_dt)
   return engine;
 }
 
-fdem::DampingSettings stage_damping(const Scene& s) {
-  fdem::DampingSettings d;
-  d.local = s.engine.local_damping >= 0 ? s.engine.local_damping : kTunnelLocalDamping;
-  d.mass_proportional = s.engine.mass_damping;
-  d.kinetic = s.engine.kinetic_damping;
-  return d;
-}
-
 fdem::ModelInput engine_input(const Scene& scene, const mesh::Mesh& m,
                               const insitu::InsituField& handoff, int threads) {
   std::map<mesh::Zone, fdem::Material> materials = engine_materials(scene);

@@ -8,6 +8,7 @@
 #include "rockfdem/fdem/model_input.hpp"
 #include "rockfdem/insitu/insitu.hpp"
 #include "rockfdem/workflows/scene.hpp"
+#include "scene/stage_damping.hpp"
 #include "stages/stage.hpp"
 
 namespace rockfdem::workflows {
@@ -61,9 +62,5 @@ EngineSetup setup_engine(const Scene& scene, const mesh::Mesh& m,
 /// Throws the scene's InputError for an explicit engine.dt above `limit`
 /// (the stability limit of `model`, in words); nothing when dt <= limit.
 void refuse_dt_above(const Scene& scene, double dt, double limit, const char* model);
-
-/// The damping of the explicit stages after the hand-off step: the scene's
-/// local damping (0.8 unless set) and mass-proportional damping.
-fdem::DampingSettings stage_damping(const Scene& s);
 
 }  // namespace rockfdem::workflows

@@ -1,6 +1,6 @@
 // lining: the lining ring installed stress-free in the deformed shape,
 // bonded to the rock by the lining interface where the two faces are.
-#include "outputs/lining_output.hpp"
+#include "rockfdem/coupling/lining_cracks.hpp"
 #include "stages/stage.hpp"
 
 namespace rockfdem::workflows {
@@ -12,7 +12,7 @@ long bond_lining(StageModel& m) {
   if (m.materials.lining_interface < 0) return 0;
   // Sprayed onto the rock as it is now: the bond starts intact where the
   // two faces are, whatever the rock's convergence so far.
-  const std::vector<std::size_t> bond = lining_interface_cracks(m.engine, m.mesh);
+  const std::vector<std::size_t> bond = coupling::lining_interface_cracks(m.engine, m.mesh);
   for (std::size_t c : bond) m.engine.rejoin_crack(c, m.materials.lining_interface);
   return long(bond.size());
 }

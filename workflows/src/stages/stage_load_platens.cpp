@@ -6,7 +6,6 @@
 // depend on the output interval; the stage ends at that stop or after its
 // max_steps (engine.steps). A specimen's implicit stage list is this one
 // stage.
-#include "run/stage_runner.hpp"
 #include "scene/schema_keys.hpp"
 #include "stages/platen_load.hpp"
 #include "stages/stage.hpp"
@@ -43,7 +42,7 @@ class LoadPlatens : public Stage {
 
   // Ends on its own criterion, the post-peak stop or the step count: a
   // specimen has no equilibrium to reach.
-  bool step(StageRunner& runner, const StageSpec& spec, StageChanges&) const override {
+  bool step(StageDriver& runner, const StageSpec& spec, StageChanges&) const override {
     PlatenLoad& load = *runner.model().platens;
     const fdem::Engine& e = runner.model().engine;
     runner.step_until(spec, [&] { return load.after_step(e); });

@@ -36,7 +36,7 @@ class Soften : public Stage {
     return {};
   }
 
-  bool step(StageRunner& runner, const StageSpec& spec, StageChanges& changes) const override {
+  bool step(StageDriver& runner, const StageSpec& spec, StageChanges& changes) const override {
     return changes.skipped ? true : Stage::step(runner, spec, changes);
   }
 

@@ -8,9 +8,9 @@
 #include <iostream>
 #include <sstream>
 
+#include "record/output_dir.hpp"
 #include "rockfdem/coupling/atomic_file.hpp"
 #include "rockfdem/printable.hpp"
-#include "run/output_dir.hpp"
 #include "study/study_inputs.hpp"
 #include "study/study_ranks.hpp"
 #include "study/study_table.hpp"

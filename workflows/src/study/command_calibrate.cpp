@@ -13,10 +13,10 @@
 #include <iostream>
 #include <nlopt.hpp>
 
+#include "record/output_dir.hpp"
 #include "rockfdem/error.hpp"
 #include "rockfdem/workflows/scene_schema.hpp"
 #include "run/interrupt.hpp"
-#include "run/output_dir.hpp"
 #include "scene/scene_reader.hpp"
 #include "study/calibrate_problem.hpp"
 #include "study/calibrate_report.hpp"

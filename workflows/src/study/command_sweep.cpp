@@ -13,9 +13,9 @@
 #include <map>
 #include <optional>
 
+#include "record/output_dir.hpp"
 #include "rockfdem/error.hpp"
 #include "run/interrupt.hpp"
-#include "run/output_dir.hpp"
 #include "study/ensemble_table.hpp"
 #include "study/study_commands.hpp"
 #include "study/study_figures.hpp"

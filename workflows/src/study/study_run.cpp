@@ -7,11 +7,11 @@
 #include <optional>
 
 #include "commands/commands.hpp"
+#include "record/output_dir.hpp"
+#include "record/small_file.hpp"
 #include "rockfdem/coupling/atomic_file.hpp"
 #include "rockfdem/error.hpp"
 #include "run/interrupt.hpp"
-#include "run/output_dir.hpp"
-#include "run/small_file.hpp"
 #include "study/study_figures.hpp"
 
 namespace fs = std::filesystem;

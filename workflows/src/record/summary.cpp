@@ -1,15 +1,15 @@
-#include "run/summary.hpp"
+#include "record/summary.hpp"
 
 #include <algorithm>
 #include <variant>
 
+#include "record/support_equilibrium.hpp"
 #include "rockfdem/coupling/atomic_file.hpp"
 #include "rockfdem/fdem/bits_hash.hpp"
 #include "rockfdem/insitu/insitu.hpp"
 #include "rockfdem/mesh/build.hpp"
 #include "rockfdem/workflows/scene.hpp"
 #include "rockfdem/workflows/version.hpp"
-#include "run/support_equilibrium.hpp"
 
 namespace rockfdem::workflows {
 namespace {

@@ -1,4 +1,4 @@
-#include "run/last_good.hpp"
+#include "outputs/last_good.hpp"
 
 #include "outputs/engine_report.hpp"
 

@@ -1,6 +1,6 @@
-#include "run/support_verdict.hpp"
+#include "record/support_verdict.hpp"
 
-#include "run/number_text.hpp"
+#include "record/number_text.hpp"
 
 namespace rockfdem::workflows {
 namespace {

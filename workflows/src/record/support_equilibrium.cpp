@@ -1,4 +1,4 @@
-#include "run/support_equilibrium.hpp"
+#include "record/support_equilibrium.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -1,4 +1,4 @@
-#include "run/small_file.hpp"
+#include "record/small_file.hpp"
 
 #include <fcntl.h>
 #include <sys/stat.h>

@@ -13,12 +13,12 @@
 #include <string>
 #include <vector>
 
+#include "record/continuum_figures.hpp"
+#include "record/phase_timer.hpp"
+#include "record/run_figures.hpp"
+#include "record/support_figures.hpp"
+#include "record/support_verdict.hpp"
 #include "rockfdem/workflows/scene.hpp"
-#include "run/continuum_figures.hpp"
-#include "run/phase_timer.hpp"
-#include "run/run_figures.hpp"
-#include "run/support_figures.hpp"
-#include "run/support_verdict.hpp"
 
 namespace rockfdem::mesh {
 struct Mesh;

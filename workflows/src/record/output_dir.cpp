@@ -1,4 +1,4 @@
-#include "run/output_dir.hpp"
+#include "record/output_dir.hpp"
 
 #include <fcntl.h>
 #include <sys/file.h>
@@ -13,14 +13,13 @@
 #include <sstream>
 #include <vector>
 
+#include "record/run_context.hpp"
+#include "record/small_file.hpp"
 #include "rockfdem/coupling/atomic_file.hpp"
 #include "rockfdem/error.hpp"
 #include "rockfdem/printable.hpp"
 #include "rockfdem/workflows/scene.hpp"
 #include "rockfdem/workflows/version.hpp"
-#include "run/checkpoint.hpp"
-#include "run/run_context.hpp"
-#include "run/small_file.hpp"
 #include "scene/scene_reader.hpp"
 
 namespace fs = std::filesystem;
@@ -272,6 +271,11 @@ void remove_previous_outputs(const std::string& dir) {
     if (entry.is_regular_file(ec) && is_rockfdem_output(entry.path().filename().string()))
       fs::remove(entry.path(), ec);
   remove_checkpoints(dir);
+}
+
+std::string run_dir_of(const std::string& checkpoint) {
+  const fs::path p = fs::absolute(checkpoint);
+  return p.parent_path().parent_path().string();
 }
 
 bool same_directory(const std::string& a, const std::string& b) {

@@ -1,4 +1,4 @@
-#include "run/run_context.hpp"
+#include "record/run_context.hpp"
 
 #include <omp.h>
 

@@ -8,8 +8,8 @@
 #include <string>
 #include <vector>
 
-#include "run/continuum_figures.hpp"
-#include "run/run_figures.hpp"
+#include "record/continuum_figures.hpp"
+#include "record/run_figures.hpp"
 
 namespace rockfdem::workflows {
 

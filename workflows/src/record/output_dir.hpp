@@ -59,6 +59,9 @@ void remove_stale_temporaries(const std::string& dir);
 /// Whether two paths name the same existing directory.
 bool same_directory(const std::string& a, const std::string& b);
 
+/// The run directory a checkpoint belongs to: OUTDIR/checkpoints/FILE -> OUTDIR.
+std::string run_dir_of(const std::string& checkpoint);
+
 /// `dir` + "/" + `name`.
 std::string output_path(const std::string& dir, const std::string& name);
 

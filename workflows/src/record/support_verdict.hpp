@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "run/support_figures.hpp"
+#include "record/support_figures.hpp"
 
 namespace rockfdem::workflows {
 

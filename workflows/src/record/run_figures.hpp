@@ -51,6 +51,13 @@ struct StageChanges {
   std::optional<long> rejoined;               ///< of them, re-joined with grout (triggered only)
   std::optional<long> broken_after;           ///< broken crack elements after the re-joining
   std::optional<std::string> positions_file;  ///< the re-joined ones' list (grouted_cracks.csv)
+  /// The re-joined crack elements and their midpoints [m], in crack order:
+  /// what the stage did, for the outputs to list (not in summary.json).
+  struct Grouted {
+    std::size_t crack = 0;
+    double x = 0, y = 0;
+  };
+  std::vector<Grouted> grouted;
   // soften
   std::optional<bool> skipped;  ///< the hand-off was already at or below its alpha
   /// A stage kind none of these describe (one registered outside the

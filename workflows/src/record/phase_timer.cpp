@@ -1,4 +1,4 @@
-#include "run/phase_timer.hpp"
+#include "record/phase_timer.hpp"
 
 #include <cstdio>
 

@@ -7,9 +7,9 @@
 #include <optional>
 #include <string>
 
+#include "record/phase_timer.hpp"
+#include "record/summary.hpp"
 #include "rockfdem/fdem/engine.hpp"
-#include "run/phase_timer.hpp"
-#include "run/summary.hpp"
 
 namespace rockfdem::workflows {
 
