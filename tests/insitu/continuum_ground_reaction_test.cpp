@@ -1,5 +1,5 @@
 // The Mohr-Coulomb ground reaction curve of the continuum counterpart
-// (workflows/src/outputs/continuum_ground_reaction.hpp) against Salencon's
+// (workflows/src/run/continuum_ground_reaction.hpp) against Salencon's
 // closed form (1969) with the wall displacement of the flow rule of
 // dilation psi (Carranza-Torres and Fairhurst 2000; docs/insitu.md,
 // plastic_ring): a circular opening (a = 3 m) in hydrostatic p0 = 10 MPa,
@@ -9,7 +9,7 @@
 // The mesh: elastic_circular.toml's (0.3 m at the wall, 63 edges round it,
 // a 100 m box), the wall's mean inward displacement over its vertices.
 // Within 3% at every pressure (measured: printed).
-#include "outputs/continuum_ground_reaction.hpp"
+#include "run/continuum_ground_reaction.hpp"
 
 #include <gtest/gtest.h>
 

@@ -15,9 +15,9 @@
 #include <cstdio>
 #include <string>
 
-#include "outputs/continuum_counterpart.hpp"
 #include "rockfdem/mesh/build.hpp"
 #include "rockfdem/workflows/scene.hpp"
+#include "run/continuum_solve.hpp"
 
 namespace rockfdem::workflows {
 namespace {

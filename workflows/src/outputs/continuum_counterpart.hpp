@@ -1,7 +1,8 @@
 // The continuum counterpart of a tunnel run: the scene's construction
-// sequence solved by deal.II, elastic or Mohr-Coulomb (insitu.continuum),
-// and its comparison with the FDEM state (summary "continuum_comparison",
-// continuum_profiles.csv and .png; docs/workflow.md).
+// sequence solved by deal.II, elastic or Mohr-Coulomb (insitu.continuum;
+// the solves are the run's, run/continuum_solve.hpp), and its comparison
+// with the FDEM state (summary "continuum_comparison", continuum_profiles.csv
+// and .png; docs/workflow.md).
 //
 // The sequence: the implicit stage's alphas, the soften stages' alphas, 0 at
 // remove_core; the lining (where the scene installs one) joins stress-free
@@ -36,17 +37,6 @@ struct ContinuumStates {
   double seconds = 0;  ///< wall time of the solve
 };
 
-/// Solves the scene's sequence as a continuum (see above).
-ContinuumStates solve_continuum_counterpart(const Scene& scene, const mesh::Mesh& m);
-
-/// Solves the scene's sequence with the post-peak strength (see above).
-/// Throws InputError when the scene's strengths cannot be posed that way
-/// (residual friction above the peak's or below the dilation angle). The
-/// run calls it only when insitu.continuum_post_peak asks: where there is
-/// no equilibrium it costs many failing Newton steps (39 s on a 0.3 m mesh
-/// of a 3 m tunnel, over 10 min at 0.15 m).
-PostPeakCounterpart solve_post_peak_counterpart(const Scene& scene, const mesh::Mesh& m);
-
 /// FDEM (the hand-off field and the engine's final state) against the
 /// continuum: relative L2 of the stresses near the opening at the hand-off
 /// and at the end, the key points' displacements, and radial and tangential
@@ -57,13 +47,5 @@ CounterpartComparison compare_with_counterpart(
     const Scene& scene, const mesh::Mesh& m, const fdem::Engine& e,
     const insitu::InsituField& fdem_handoff, const ContinuumStates& c,
     const std::vector<Monitor>& monitors, const std::string& dir, RunRecord& summary, bool quiet);
-
-/// Both of the above for a finished tunnel run, into summary
-/// "continuum_comparison"; a counterpart that cannot be solved (e.g. the
-/// Mohr-Coulomb ground collapses) is noted in "skipped" and the run goes on.
-void compare_with_continuum_counterpart(const Scene& scene, const RunContext& ctx,
-                                        const mesh::Mesh& m, const fdem::Engine& e,
-                                        const insitu::InsituField& fdem_handoff,
-                                        const std::vector<Monitor>& monitors, RunRecord& summary);
 
 }  // namespace rockfdem::workflows

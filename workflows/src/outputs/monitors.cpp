@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 #include <limits>
 #include <optional>
 #include <stdexcept>
@@ -44,6 +45,12 @@ std::vector<Monitor> tie_to_nodes(const std::vector<mesh::KeyPoint>& points,
     }
   }
 
+  // mesh::opening_key_points gives them in the roles' order.
+  constexpr KeyRole kRoles[] = {KeyRole::kVault,    KeyRole::kLeftShoulder, KeyRole::kRightShoulder,
+                                KeyRole::kLeftWall, KeyRole::kRightWall,    KeyRole::kInvert};
+  if (points.size() != std::size(kRoles))
+    throw std::logic_error("opening_key_points gave " + std::to_string(points.size()) +
+                           " key points, not 6");
   std::vector<Monitor> monitors;
   for (const mesh::KeyPoint& p : points) {
     int nearest = on_boundary.front();
@@ -54,6 +61,7 @@ std::vector<Monitor> tie_to_nodes(const std::vector<mesh::KeyPoint>& points,
     }
     Monitor mon;
     mon.name = p.name;
+    mon.role = kRoles[monitors.size()];
     mon.x = p.x, mon.y = p.y;
     mon.node = node_of_vertex[nearest];
     mon.node_x = m.x[nearest], mon.node_y = m.y[nearest];
@@ -115,10 +123,19 @@ KeyPoints::KeyPoints(std::vector<Monitor> monitors, const mesh::Mesh& m,
                            boundary_vertices_.end());
 }
 
-const Monitor& KeyPoints::find(const std::string& name) const {
+const Monitor& KeyPoints::find(KeyRole role) const {
   for (const Monitor& m : monitors_)
-    if (m.name == name) return m;
-  throw std::logic_error("no monitor " + name);
+    if (m.role == role) return m;
+  throw std::logic_error("no monitor of role " + std::to_string(int(role)));
+}
+
+double KeyPoints::span() const {
+  double lo = 0, hi = 0;
+  for (const Monitor& m : monitors_) {
+    if (m.role == KeyRole::kLeftWall) lo = m.x;
+    if (m.role == KeyRole::kRightWall) hi = m.x;
+  }
+  return hi - lo;
 }
 
 RigidFit KeyPoints::boundary_fit(const fdem::Engine& e) const {
@@ -161,8 +178,7 @@ std::array<double, 4> KeyPoints::figures(const fdem::Engine& e, const Monitor& m
   return {mm(u[0]), mm(u[1]), mm(std::hypot(u[0], u[1])), mm(radial_convergence(mon, u))};
 }
 
-double KeyPoints::convergence(const fdem::Engine& e, const std::string& a,
-                              const std::string& b) const {
+double KeyPoints::convergence(const fdem::Engine& e, KeyRole a, KeyRole b) const {
   const Monitor &ma = find(a), &mb = find(b);
   const auto ua = displacement(e, ma), ub = displacement(e, mb);
   const double dx = mb.x - ma.x, dy = mb.y - ma.y, len = std::hypot(dx, dy);
@@ -170,8 +186,9 @@ double KeyPoints::convergence(const fdem::Engine& e, const std::string& a,
 }
 
 std::array<double, 3> KeyPoints::chords_mm(const fdem::Engine& e) const {
-  return {-mm(displacement(e, find("vault"))[1]), mm(convergence(e, "left_wall", "right_wall")),
-          mm(convergence(e, "left_shoulder", "right_shoulder"))};
+  return {-mm(displacement(e, find(KeyRole::kVault))[1]),
+          mm(convergence(e, KeyRole::kLeftWall, KeyRole::kRightWall)),
+          mm(convergence(e, KeyRole::kLeftShoulder, KeyRole::kRightShoulder))};
 }
 
 std::pair<std::string, double> KeyPoints::largest(const fdem::Engine& e,

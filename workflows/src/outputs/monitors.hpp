@@ -20,10 +20,15 @@
 
 namespace rockfdem::workflows {
 
+/// What a key point is on the opening: the run's checks and chords find
+/// points by role, the outputs name them (Monitor::name).
+enum class KeyRole { kVault, kLeftShoulder, kRightShoulder, kLeftWall, kRightWall, kInvert };
+
 struct Monitor {
-  std::string name;     ///< vault, left_shoulder, right_shoulder, left_wall, right_wall, invert
-  double x = 0, y = 0;  ///< key point on the mesh's excavation boundary [m]
-  int node = -1;        ///< engine node followed
+  std::string name;  ///< vault, left_shoulder, right_shoulder, left_wall, right_wall, invert
+  KeyRole role = KeyRole::kVault;
+  double x = 0, y = 0;                ///< key point on the mesh's excavation boundary [m]
+  int node = -1;                      ///< engine node followed
   double node_x = 0, node_y = 0;      ///< where that node is: the actual monitor position [m]
   double inward_x = 0, inward_y = 0;  ///< unit vector towards the opening's centre: u . inward
                                       ///< is the radial convergence (> 0 into the opening)
@@ -65,8 +70,11 @@ class KeyPoints {
   KeyPoints(std::vector<Monitor> monitors, const mesh::Mesh& m, std::vector<double> implicit_ux,
             std::vector<double> implicit_uy);
   const std::vector<Monitor>& monitors() const { return monitors_; }
-  /// The key point called `name` (vault, left_wall, ...).
-  const Monitor& find(const std::string& name) const;
+  /// The key point of `role`.
+  const Monitor& find(KeyRole role) const;
+  /// The opening's span as its wall key points measure it [m]; 0 without
+  /// key points (a specimen).
+  double span() const;
   /// Rigid motion of the outer boundary in the engine (fit to its nodes).
   RigidFit boundary_fit(const fdem::Engine& e) const;
   /// Any engine node's displacement, as the instruments read it.
@@ -84,7 +92,7 @@ class KeyPoints {
                                          const std::vector<Monitor>& monitors) const;
 
  private:
-  double convergence(const fdem::Engine& e, const std::string& a, const std::string& b) const;
+  double convergence(const fdem::Engine& e, KeyRole a, KeyRole b) const;
   std::vector<Monitor> monitors_;
   std::vector<double> implicit_ux_, implicit_uy_;
   std::vector<int> boundary_vertices_;  ///< outer boundary, for the rigid translation

@@ -304,7 +304,7 @@ void RunOutputs::finish(const fdem::Engine& e, const mesh::Mesh& m, PhaseTimer& 
 // Ground reaction curve, implicit part: the core's share of the in-situ
 // stress (alpha) against the vault settlement it allows.
 void RunOutputs::record_ground_reaction(const fdem::Engine& e, const mesh::Mesh& m) {
-  const int vault_vertex = e.node_vertex()[key_points_->find("vault").node];
+  const int vault_vertex = e.node_vertex()[key_points_->find(KeyRole::kVault).node];
   std::vector<GroundReactionPoint>& grc = summary_.ground_reaction_curve;
   grc.clear();
   for (const insitu::InsituField& f : curve_fields_.empty() ? fields_ : curve_fields_) {

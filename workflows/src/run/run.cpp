@@ -17,11 +17,11 @@
 #include <sstream>
 
 #include "outputs/continuum_comparison.hpp"
-#include "outputs/continuum_counterpart.hpp"
 #include "outputs/face_distance.hpp"
 #include "record/output_dir.hpp"
 #include "rockfdem/error.hpp"
 #include "rockfdem/mesh/msh_io.hpp"
+#include "run/continuum_solve.hpp"
 #include "run/handoff_choice.hpp"
 #include "run/implicit_check.hpp"
 #include "run/interrupt.hpp"
@@ -65,12 +65,8 @@ void check_key_point_fields(const nlohmann::json& run, const std::vector<Monitor
       throw InputError(file + ": corrupt run state: a history row has " +
                        std::to_string(row.size()) + " values; history.csv has " +
                        std::to_string(width) + " columns");
-  const std::size_t n_u = run.at("stages").at("stage_monitor_u").size();
-  if (n_u != 2 * monitors.size())
-    throw InputError(file + ": corrupt run state: field 'stages.stage_monitor_u' holds " +
-                     std::to_string(n_u) + " values; the model's " +
-                     std::to_string(monitors.size()) + " key points need " +
-                     std::to_string(2 * monitors.size()));
+  check_stage_monitor_u(run.at("stages").at("stage_monitor_u").size(), monitors.size(),
+                        file + ": ");
 }
 
 /// A restart's engine state and bolts put back, and the run state checked

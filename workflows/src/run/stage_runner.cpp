@@ -79,16 +79,6 @@ bool StageRunner::advance(long n, const StopTest& stop, bool* reached) {
 
 namespace {
 
-// The opening's span as its wall key points measure it [m].
-double key_point_span(const std::vector<Monitor>& ms) {
-  double lo = 0, hi = 0;
-  for (const Monitor& m : ms) {
-    if (m.name == "left_wall") lo = m.x;
-    if (m.name == "right_wall") hi = m.x;
-  }
-  return hi - lo;
-}
-
 // The key points' trend: the largest monitor move per 1000 steps averaged
 // over the last kWindow outputs against its average over the kWindow
 // before. Means over long windows, because a cracking model moves in
@@ -127,7 +117,7 @@ bool StageRunner::unstable(const StageSpec& stage, bool criteria) {
   cursor_.rates.push_back(last_rate_);
   if (cursor_.rates.size() > 2 * kWindow) cursor_.rates.erase(cursor_.rates.begin());
   const auto [name, u] = key_points_.largest(engine_, monitors());
-  const double span = key_point_span(monitors());
+  const double span = key_points_.span();
   const double limit = stage.unstable_fraction * span;
   const bool beyond = span > 0 && u > limit;
   // Both trends count only once the stage is 2 kWindow outputs old (past
@@ -353,6 +343,15 @@ nlohmann::json StageRunner::state() const {
           {"last_checkpoint", engine_.step_count()}};
 }
 
+void check_stage_monitor_u(std::size_t n_values, std::size_t n_key_points,
+                           const std::string& where) {
+  if (n_values == 2 * n_key_points) return;
+  throw InputError(where + "corrupt run state: field 'stages.stage_monitor_u' holds " +
+                   std::to_string(n_values) + " values; the model's " +
+                   std::to_string(n_key_points) + " key points need " +
+                   std::to_string(2 * n_key_points));
+}
+
 void StageRunner::restore(const nlohmann::json& s) {
   cursor_.index = s.at("stage_index").get<std::size_t>();
   cursor_.started = s.at("stage_started").get<bool>();
@@ -361,11 +360,7 @@ void StageRunner::restore(const nlohmann::json& s) {
   cursor_.changes = stage_changes_from_json(s.at("stage_changes"));
   cursor_.monitor_u = s.at("stage_monitor_u").get<std::vector<double>>();
   // settle_measure() reads a pair per monitor.
-  if (cursor_.monitor_u.size() != 2 * monitors().size())
-    throw InputError("corrupt run state: field 'stages.stage_monitor_u' holds " +
-                     std::to_string(cursor_.monitor_u.size()) + " values; the model's " +
-                     std::to_string(monitors().size()) + " key points need " +
-                     std::to_string(2 * monitors().size()));
+  check_stage_monitor_u(cursor_.monitor_u.size(), monitors().size(), "");
   cursor_.held = s.value("stage_held", 0);
   cursor_.rates = s.value("stage_rates", std::vector<double>{});
   const std::string unstable = s.value("unstable", std::string());

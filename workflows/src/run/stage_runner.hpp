@@ -41,6 +41,11 @@ struct RunVerdict {
   std::string message;  ///< what a not-completed status rests on; empty when completed
 };
 
+/// Throws InputError ("corrupt run state: ...", after `where`) unless a run
+/// state's stage_monitor_u holds a pair (ux, uy) per key point.
+void check_stage_monitor_u(std::size_t n_values, std::size_t n_key_points,
+                           const std::string& where);
+
 class StageRunner : public StageDriver {
  public:
   StageRunner(fdem::Engine& engine, const mesh::Mesh& m, const insitu::InsituField& handoff,

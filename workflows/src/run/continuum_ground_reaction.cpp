@@ -1,4 +1,4 @@
-#include "outputs/continuum_ground_reaction.hpp"
+#include "run/continuum_ground_reaction.hpp"
 
 #include "outputs/ground_reaction.hpp"
 #include "rockfdem/insitu/plastic.hpp"
