@@ -147,3 +147,18 @@ TEST(GroutTrigger, two_triggers_or_a_trigger_that_cannot_fire_are_refused) {
   const std::string beyond = error_of([&] { load_scene(kScene, {entry("trigger_steps=301")}); });
   EXPECT_TRUE(has(beyond, entry("trigger_steps")) && has(beyond, "max_steps = 300")) << beyond;
 }
+
+// A key one kind alone reads would do nothing in another kind's entry: a
+// grout trigger on the equilibrium stage (stages[2]) and a soften alpha on
+// the grout stage are refused, each naming the key and the kind that reads it.
+TEST(GroutTrigger, another_kinds_keys_are_refused) {
+  using rockfdem::workflows::load_scene;
+  const std::string trigger = error_of([&] { load_scene(kScene, {"stages[2].trigger_steps=10"}); });
+  EXPECT_TRUE(has(trigger, "stages[2].trigger_steps") && has(trigger, "\"grout\"") &&
+              has(trigger, "\"equilibrium\""))
+      << trigger;
+  const std::string alpha =
+      error_of([&] { load_scene(kScene, {"stages[" + std::to_string(kGrout) + "].alpha=0.5"}); });
+  EXPECT_TRUE(has(alpha, "stages[4].alpha") && has(alpha, "\"soften\"")) << alpha;
+  EXPECT_NO_THROW(load_scene(kScene, {"stages[" + std::to_string(kGrout) + "].trigger_steps=10"}));
+}

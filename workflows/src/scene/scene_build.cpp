@@ -947,28 +947,43 @@ void read_joints(const Reader& r, const std::string& base_dir, Scene& s) {
   }
 }
 
+// A [[stages]] entry's keys for its kind (StageKind::read).
+class EntryKeys : public StageEntry {
+ public:
+  EntryKeys(const Reader& r, std::string prefix) : r_(r), p_(std::move(prefix)) {}
+  bool has(const std::string& key) const override { return r_.has(p_ + key); }
+  double number(const std::string& key) const override { return r_.number(p_ + key); }
+
+ private:
+  const Reader& r_;
+  std::string p_;
+};
+
 // One stage's keys at `p` ("stages[2]"); absent keys take the schema's
 // defaults (max_steps engine.steps, every_steps output.every_steps).
 StageSpec read_stage(const Reader& r, const std::string& p, const std::string& kind) {
   StageSpec st;
   st.kind = kind;
-  st.alpha = r.number_or(p + ".alpha", 0);  // soften only, which requires it
   for (auto [key, field] : {std::pair{".ratio", &StageSpec::ratio},
                             {".time", &StageSpec::time},
                             {".settle", &StageSpec::settle},
                             {".unstable_fraction", &StageSpec::unstable_fraction}})
     st.*field = r.number(p + key);
   st.max_steps = long(r.number(p + ".max_steps"));
-  st.trigger_broken = long(r.number(p + ".trigger_broken"));
-  for (const char* key :
-       {"trigger_broken", "trigger_broken_since_support", "trigger_broken_growth", "trigger_steps"})
-    if (r.has(p + "." + key)) {
-      if (st.triggers.empty()) st.trigger_value = r.number(p + "." + key);
-      st.triggers.push_back(key);
-    }
   st.every_steps = r.integer(p + ".every_steps");
   st.hold = r.integer(p + ".hold");
   st.stop_when_unstable = r.boolean(p + ".stop_when_unstable");
+  // The kind's own keys; another kind's is a key that would do nothing.
+  for (const std::string& other : stage_kinds()) {
+    if (other == kind) continue;
+    for (const KeySpec& k : stage_kind(other).entry_keys()) {
+      const std::string key = p + k.path.substr(std::string("stages[]").size());
+      if (r.has(key))
+        r.fail(key, "only a stage of kind \"" + other + "\" reads it, not \"" + kind +
+                        "\": remove it from this entry");
+    }
+  }
+  stage_kind(kind).read(EntryKeys(r, p), st);
   return st;
 }
 

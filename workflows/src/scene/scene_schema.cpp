@@ -684,8 +684,6 @@ void add_stages(std::vector<KeySpec>& s) {
                          "Brazilian specimens (which take no [[stages]]): load_platens. At "
                          "most " +
                          std::to_string(kMaxStages) + " entries."));
-  s.push_back(number("stages[].alpha", "-", "", 0, true, 1, false,
-                     "soften: target core stiffness factor, below the implicit hand-off's."));
   s.push_back(integer("stages[].max_steps", "engine.steps", 0, 1e12,
                       "Explicit steps at most in this stage."));
   s.push_back(number("stages[].ratio", "-", "1e-3", 0, true, 1, false,
@@ -712,32 +710,11 @@ void add_stages(std::vector<KeySpec>& s) {
                            "Stop after this much simulated time in the stage (pseudo-time when "
                            "engine.mass_scaling is on, as it is for tunnels by default: prefer "
                            "max_steps then); 0: no limit."));
-  // grout's triggers, one per stage (grout_triggers() lists them).
-  s.push_back(integer("stages[].trigger_broken", "0", 0, 1e12,
-                      "grout: step until this many crack elements are broken in all (or the "
-                      "stage's time has passed), then grout; 0: at once. One trigger per grout "
-                      "stage: this, trigger_broken_since_support, trigger_broken_growth or "
-                      "trigger_steps."));
-  KeySpec since = integer("stages[].trigger_broken_since_support", "", 1, 1e12,
-                          "grout: step until this many more crack elements are broken than "
-                          "right after the support went in (the first `lining` or `bolts` "
-                          "stage, which must come before), then grout.");
-  since.default_doc = "none";
-  s.push_back(since);
-  KeySpec growth = number("stages[].trigger_broken_growth", "-", "", 0, true, 1e3, false,
-                          "grout: step until the broken count has grown by this fraction of "
-                          "its value right after the support went in, and by at least one "
-                          "crack element (N - N0 >= g N0 and N > N0), then grout: 0.5 fires "
-                          "at half as many again; needs a `lining` or `bolts` stage before.");
-  growth.default_doc = "none";
-  s.push_back(growth);
-  KeySpec steps = integer("stages[].trigger_steps", "", 1, 1e12,
-                          "grout: step this many explicit steps from the stage's start, then "
-                          "grout (at most the stage's max_steps).");
-  steps.default_doc = "none";
-  s.push_back(steps);
   s.push_back(integer("stages[].every_steps", "output.every_steps", 1, 1e9,
                       "Steps between outputs in this stage."));
+  // The keys one kind alone reads (stage_soften.cpp, stage_grout.cpp, ...).
+  for (const std::string& kind : stage_kinds())
+    for (KeySpec& k : stage_kind(kind).entry_keys()) s.push_back(std::move(k));
 }
 
 void add_output(std::vector<KeySpec>& s) {

@@ -37,6 +37,17 @@ class StageCheck {
   StageOrder& order;
 };
 
+/// One [[stages]] entry's keys as its kind reads them (".alpha"): whether
+/// the file gives one, and its value or the schema's default.
+class StageEntry {
+ public:
+  virtual bool has(const std::string& key) const = 0;
+  virtual double number(const std::string& key) const = 0;
+
+ protected:
+  ~StageEntry() = default;
+};
+
 class StageKind {
  public:
   virtual ~StageKind() = default;
@@ -46,6 +57,12 @@ class StageKind {
   /// The scene keys the stage reads beyond stages[] (scene_schema() lists
   /// them where the reference has them); none by default.
   virtual std::vector<KeySpec> keys() const { return {}; }
+  /// The keys of a [[stages]] entry that this kind alone reads
+  /// ("stages[].alpha"), listed in the schema after the keys every entry
+  /// has; an entry of another kind that gives one is refused.
+  virtual std::vector<KeySpec> entry_keys() const { return {}; }
+  /// Reads the entry's own keys (entry_keys) into `spec`.
+  virtual void read(const StageEntry&, StageSpec&) const {}
   /// Refuses an entry the stages before it (or the scene) do not allow,
   /// and notes in check.order what it changes; allows any by default.
   virtual void check(StageCheck&) const {}

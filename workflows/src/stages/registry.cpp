@@ -22,29 +22,29 @@ namespace rockfdem::workflows {
 #define ROCKFDEM_DECLARE_STAGE(kind) std::unique_ptr<const Stage> make_##kind##_stage();
 ROCKFDEM_BUILTIN_STAGES(ROCKFDEM_DECLARE_STAGE)
 
-using StageEntry = std::pair<std::string, std::unique_ptr<const Stage>>;
+using RegisteredStage = std::pair<std::string, std::unique_ptr<const Stage>>;
 
-static std::vector<StageEntry> builtin_stages() {
-  std::vector<StageEntry> s;
+static std::vector<RegisteredStage> builtin_stages() {
+  std::vector<RegisteredStage> s;
 #define ROCKFDEM_ADD_STAGE(kind) s.emplace_back(#kind, make_##kind##_stage());
   ROCKFDEM_BUILTIN_STAGES(ROCKFDEM_ADD_STAGE)
   return s;
 }
 
 // Made on first use, from whichever translation unit asks first.
-static std::vector<StageEntry>& registry() {
-  static std::vector<StageEntry> entries = builtin_stages();
+static std::vector<RegisteredStage>& registry() {
+  static std::vector<RegisteredStage> entries = builtin_stages();
   return entries;
 }
 
 void register_stage(const std::string& kind, std::unique_ptr<const Stage> stage) {
-  for (const StageEntry& e : registry())
+  for (const RegisteredStage& e : registry())
     if (e.first == kind) throw std::logic_error("stage kind '" + kind + "' registered twice");
   registry().emplace_back(kind, std::move(stage));
 }
 
 const Stage& stage_of(const std::string& kind) {
-  for (const StageEntry& e : registry())
+  for (const RegisteredStage& e : registry())
     if (e.first == kind) return *e.second;
   throw std::logic_error("no stage of kind '" + kind + "' is registered");
 }
@@ -53,13 +53,13 @@ const StageKind& stage_kind(const std::string& kind) { return stage_of(kind); }
 
 std::vector<std::string> stage_kinds() {
   std::vector<std::string> kinds;
-  for (const StageEntry& e : registry()) kinds.push_back(e.first);
+  for (const RegisteredStage& e : registry()) kinds.push_back(e.first);
   return kinds;
 }
 
 std::string stage_kind_descriptions() {
   std::string out;
-  for (const StageEntry& e : registry()) {
+  for (const RegisteredStage& e : registry()) {
     const std::string what = e.second->description();
     out += (out.empty() ? "`" : ", `") + e.first + '`' + (what.empty() ? "" : " (" + what + ")");
   }

@@ -15,6 +15,7 @@
 
 #include "rockfdem/error.hpp"
 #include "rockfdem/fdem/bolt_grouting.hpp"
+#include "scene/schema_keys.hpp"
 #include "stages/registry.hpp"
 #include "stages/stage.hpp"
 
@@ -95,6 +96,48 @@ class Grout : public Stage {
   const char* description() const override {
     return "re-join broken cracks with grout once its trigger fires: trigger_broken, "
            "trigger_broken_since_support, trigger_broken_growth or trigger_steps";
+  }
+
+  // Its triggers, one per stage.
+  std::vector<KeySpec> entry_keys() const override {
+    using namespace schema;
+    std::vector<KeySpec> s;
+    s.push_back(integer("stages[].trigger_broken", "0", 0, 1e12,
+                        "grout: step until this many crack elements are broken in all (or the "
+                        "stage's time has passed), then grout; 0: at once. One trigger per grout "
+                        "stage: this, trigger_broken_since_support, trigger_broken_growth or "
+                        "trigger_steps."));
+    KeySpec since = integer("stages[].trigger_broken_since_support", "", 1, 1e12,
+                            "grout: step until this many more crack elements are broken than "
+                            "right after the support went in (the first `lining` or `bolts` "
+                            "stage, which must come before), then grout.");
+    since.default_doc = "none";
+    s.push_back(since);
+    KeySpec growth =
+        schema::number("stages[].trigger_broken_growth", "-", "", 0, true, 1e3, false,
+                       "grout: step until the broken count has grown by this fraction of "
+                       "its value right after the support went in, and by at least one "
+                       "crack element (N - N0 >= g N0 and N > N0), then grout: 0.5 fires "
+                       "at half as many again; needs a `lining` or `bolts` stage before.");
+    growth.default_doc = "none";
+    s.push_back(growth);
+    KeySpec steps = integer("stages[].trigger_steps", "", 1, 1e12,
+                            "grout: step this many explicit steps from the stage's start, then "
+                            "grout (at most the stage's max_steps).");
+    steps.default_doc = "none";
+    s.push_back(steps);
+    return s;
+  }
+
+  // trigger_broken with its default; the triggers given, in the schema's order.
+  void read(const StageEntry& e, StageSpec& spec) const override {
+    spec.trigger_broken = long(e.number(".trigger_broken"));
+    for (const char* key : {"trigger_broken", "trigger_broken_since_support",
+                            "trigger_broken_growth", "trigger_steps"})
+      if (e.has(std::string(".") + key)) {
+        if (spec.triggers.empty()) spec.trigger_value = e.number(std::string(".") + key);
+        spec.triggers.push_back(key);
+      }
   }
 
   void check(StageCheck& c) const override {

@@ -2,6 +2,7 @@
 // stage's stiffness factor alpha, the explicit continuation of the
 // implicit stage's core softening.
 #include "scene/scene_reader.hpp"
+#include "scene/schema_keys.hpp"
 #include "stages/stage.hpp"
 
 namespace rockfdem::workflows {
@@ -10,6 +11,17 @@ namespace {
 class Soften : public Stage {
  public:
   const char* description() const override { return "core to alpha, explicit"; }
+
+  std::vector<KeySpec> entry_keys() const override {
+    using namespace schema;
+    return {number("stages[].alpha", "-", "", 0, true, 1, false,
+                   "soften: target core stiffness factor, below the implicit hand-off's.")};
+  }
+
+  // Required (check): 0 until then.
+  void read(const StageEntry& e, StageSpec& spec) const override {
+    spec.alpha = e.has(".alpha") ? e.number(".alpha") : 0;
+  }
 
   // Softening only goes down, and only while the core is there.
   void check(StageCheck& c) const override {
