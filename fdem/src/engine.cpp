@@ -585,6 +585,22 @@ double Engine::crack_strength_factor(std::size_t c) const {
   return k.empty() ? 1.0 : k[c];
 }
 
+CrackDisplacement Engine::crack_displacement(std::size_t c) const {
+  check_index(c, n_cracks(), "crack element");
+  const auto& d = impl_->d;
+  double os[6];
+  CrackDisplacement r;
+  r.length = detail::crack_point_openings(d, c, os);
+  for (int i = 0; i < 3; ++i) {
+    r.opening[i] = r.law_opening[i] = os[2 * i];
+    r.slip[i] = r.law_slip[i] = os[2 * i + 1];
+    if (d.cracks.offset.empty()) continue;
+    r.law_opening[i] -= d.cracks.offset[6 * c + 2 * i];
+    r.law_slip[i] -= d.cracks.offset[6 * c + 2 * i + 1];
+  }
+  return r;
+}
+
 CrackState Engine::crack_state(std::size_t c) const {
   check_index(c, n_cracks(), "crack element");
   return CrackState(impl_->d.cracks.state[c]);

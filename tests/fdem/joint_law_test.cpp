@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 
@@ -101,6 +102,44 @@ TEST(JointLaw, open_joint_without_strength_carries_nothing) {
   }
   EXPECT_EQ(e.crack_damage(0), 0.0);
   EXPECT_NE(e.crack_state(0), CrackState::kBroken);
+}
+
+// crack_displacement on an imposed motion: the upper triangle pressed down
+// by a closure and slid along the joint; every point reports the slip and
+// the (negative) opening, whichever face is first (positions of order h:
+// round-off 1e-16 m, tolerance 1e-12 m). After a re-join at that position
+// the law's values are zero and the positions' values unchanged.
+TEST(JointLaw, crack_displacement_reports_the_imposed_slip_and_closure) {
+  const double h = 0.1, closure = 2e-5, slip = 3e-3;
+  ModelInput in = test::two_triangles(h, joint());
+  Engine e(in);
+  const auto top = e.triangle_nodes(1);
+  for (int k = 0; k < 3; ++k) {
+    const int v = e.node_vertex()[top[k]];
+    e.set_node_state(top[k], in.x[v] + slip, in.y[v] - closure, 0, 0);
+  }
+  // The sign of the slip: positive when the face on the left of the
+  // element, looking along it, moves forward; here the upper face moves
+  // along +x, and the joint runs along x either way round.
+  const bool top_first = e.crack_triangles(0)[0] == 1;
+  const std::array<int, 4> nodes = e.crack_nodes(0);
+  const double along = e.positions()[2 * nodes[1]] - e.positions()[2 * nodes[0]];
+  EXPECT_EQ(top_first, along > 0);
+  const CrackDisplacement u = e.crack_displacement(0);
+  EXPECT_NEAR(u.length, h, 1e-12);
+  for (int i = 0; i < 3; ++i) {
+    EXPECT_NEAR(u.slip[i], slip, 1e-12);
+    EXPECT_NEAR(u.opening[i], -closure, 1e-12);
+    EXPECT_EQ(u.law_slip[i], u.slip[i]);
+    EXPECT_EQ(u.law_opening[i], u.opening[i]);
+  }
+  e.rejoin_crack(0, 0);
+  const CrackDisplacement r = e.crack_displacement(0);
+  for (int i = 0; i < 3; ++i) {
+    EXPECT_EQ(r.slip[i], u.slip[i]);
+    EXPECT_EQ(r.law_slip[i], 0.0);
+    EXPECT_EQ(r.law_opening[i], 0.0);
+  }
 }
 
 }  // namespace
