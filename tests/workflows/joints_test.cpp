@@ -5,15 +5,19 @@
 // thread count.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <sstream>
 #include <string>
+#include <vector>
 
 #include "cli_runner.hpp"
+#include "outputs/joint_results.hpp"
 #include "rockfdem/error.hpp"
+#include "rockfdem/fdem/engine.hpp"
 #include "rockfdem/workflows/scene.hpp"
 
 namespace fs = std::filesystem;
@@ -35,6 +39,17 @@ std::string text_of(const fs::path& p) {
 
 nlohmann::json summary_of(const fs::path& dir) {
   return nlohmann::json::parse(text_of(dir / "summary.json"));
+}
+
+/// The fields of joint_profile.csv's row `row` (1 = the first after the header).
+std::vector<std::string> profile_row(const std::string& csv, int row) {
+  std::stringstream in(csv);
+  std::string line;
+  for (int i = 0; i <= row; ++i) std::getline(in, line);
+  std::vector<std::string> f;
+  std::stringstream l(line);
+  for (std::string x; std::getline(l, x, ',');) f.push_back(x);
+  return f;
 }
 
 bool same_traces(const Scene& a, const Scene& b) {
@@ -87,8 +102,9 @@ TEST(JointScene, bad_joint_input_is_refused_naming_file_key_value_and_allowed) {
 }
 
 // 200 steps: the joints' elements take the joint law (they soften and slide,
-// never break), are counted apart, flagged in the VTK file and listed per
-// trace in joints.csv; 1 and 2 threads give the same bits.
+// never break), are counted apart, flagged in the VTK file, listed per
+// trace in joints.csv and per element in joint_profile.csv; 1 and 2 threads
+// give the same bits.
 TEST(JointScene, a_run_counts_joint_elements_apart_with_the_same_bits_on_1_and_2_threads) {
   const fs::path one = rockfdem::test::scratch("joints-1"),
                  two = rockfdem::test::scratch("joints-2");
@@ -110,8 +126,81 @@ TEST(JointScene, a_run_counts_joint_elements_apart_with_the_same_bits_on_1_and_2
                 s["broken"]["mixed"].get<long>());
   const std::string csv = text_of(one / "joints.csv");
   EXPECT_EQ(long(std::count(csv.begin(), csv.end(), '\n')), j["traces"]["meshed"].get<long>() + 1);
+  const std::string profile = text_of(one / "joint_profile.csv");
+  EXPECT_EQ(long(std::count(profile.begin(), profile.end(), '\n')), j["elements"].get<long>() + 1);
   EXPECT_TRUE(has(text_of(one / "fdem_0001.vtu"), "Name=\"joint\""));
   EXPECT_TRUE(has(text_of(one / "report.md"), "joint crack elements"));
   fs::remove_all(one);
   fs::remove_all(two);
+}
+
+// joint_profile.csv on a constructed case: two triangles joined along a
+// horizontal joint of length h (one trace), the upper triangle moved by an
+// imposed slip and opening; the row reports them in mm (printed to 6
+// digits: 1e-5 relative), the same whichever way the trace runs, with the
+// state the motion gives.
+TEST(JointScene, joint_profile_reports_an_imposed_slip_and_opening) {
+  const double h = 0.2;
+  mesh::Mesh m;
+  m.x = {0, h, h / 2, h / 2};
+  m.y = {0, 0, -h, h};
+  m.triangles = {{0, 2, 1}, {0, 1, 3}};
+  m.zone = {mesh::kRock, mesh::kRock};
+  m.fracture = {1, 1};
+  m.joint_edges = {{0, 1, 0}};
+  fdem::ModelInput in;
+  in.x = m.x;
+  in.y = m.y;
+  in.triangles = m.triangles;
+  in.material = {0, 0};
+  in.fracture = m.fracture;
+  fdem::Material joint;
+  joint.crack_law = fdem::CrackLaw::kJoint;
+  joint.tensile_strength = 0;
+  joint.cohesion = 0.5e6;
+  joint.friction_deg = 35;
+  joint.residual_friction_deg = 25;
+  in.materials = {joint};
+  fdem::Engine e(in);
+  // The upper triangle moved by (u, v) from the mesh, the lower at rest in it.
+  const auto move = [&](double u, double v) {
+    for (int t = 0; t < 2; ++t)
+      for (int node : e.triangle_nodes(t)) {
+        const int w = e.node_vertex()[node];
+        e.set_node_state(node, in.x[w] + t * u, in.y[w] + t * v, 0, 0);
+      }
+  };
+  const auto near = [](const std::string& f, double x) {
+    return std::fabs(std::stod(f) - x) <= 1e-5 * std::fabs(x) + 1e-9;
+  };
+  for (const mesh::JointTrace t : {mesh::JointTrace{0, 0, h, 0}, mesh::JointTrace{h, 0, 0, 0}}) {
+    // Slid 2.5 mm and pressed 0.01 mm down: closed (aperture 0), intact
+    // (no step taken: no damage).
+    move(2.5e-3, -1e-5);
+    std::vector<std::string> f = profile_row(workflows::joint_profile_csv(e, m, {t}), 1);
+    ASSERT_EQ(f.size(), 12u);
+    EXPECT_EQ(f[0], "1");
+    EXPECT_TRUE(near(f[2], h / 2)) << f[2];  // distance_m of the midpoint
+    EXPECT_TRUE(near(f[6], 2.5)) << f[6];    // slip_mm
+    EXPECT_TRUE(near(f[7], -0.01)) << f[7];  // opening_mm
+    EXPECT_TRUE(near(f[8], 0)) << f[8];      // aperture_mm
+    EXPECT_EQ(f[11], "intact");
+    // Slid to -1.5 mm and lifted 0.4 mm: open.
+    move(-1.5e-3, 4e-4);
+    f = profile_row(workflows::joint_profile_csv(e, m, {t}), 1);
+    EXPECT_TRUE(near(f[6], -1.5)) << f[6];
+    EXPECT_TRUE(near(f[7], 0.4)) << f[7];
+    EXPECT_TRUE(near(f[8], 0.4)) << f[8];
+    EXPECT_EQ(f[11], "open");
+  }
+  // Closed again and slid far past the softening range (one step raises
+  // the damage to 1): sliding.
+  move(20e-3, -1e-5);
+  e.step();
+  move(20e-3, -1e-5);
+  const std::vector<std::string> f =
+      profile_row(workflows::joint_profile_csv(e, m, {mesh::JointTrace{0, 0, h, 0}}), 1);
+  EXPECT_TRUE(near(f[6], 20)) << f[6];
+  EXPECT_TRUE(near(f[10], 1)) << f[10];
+  EXPECT_EQ(f[11], "sliding");
 }
