@@ -32,7 +32,7 @@ void fields(Ar& ar, Material& m) {
   each_member(ar, m, m.density, m.young, m.poisson, m.tensile_strength, m.cohesion, m.friction_deg,
               m.residual_friction_deg, m.gf_I, m.gf_II, m.normal_penalty, m.tangential_penalty,
               m.damping_ratio, m.crack_law, m.yield_strength, m.ultimate_strength,
-              m.shear_yield_strength, m.weibull_modulus, m.heterogeneity_seed);
+              m.shear_yield_strength, m.jrc, m.jcs, m.weibull_modulus, m.heterogeneity_seed);
 }
 
 template <class Ar>

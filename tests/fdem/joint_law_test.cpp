@@ -82,6 +82,68 @@ TEST(JointLaw, direct_shear_follows_mohr_coulomb_peak_and_residual) {
   EXPECT_NEAR(c.residual, fr, 0.02 * fr);
 }
 
+/// tau = sigma tan(phi_r + JRC log10(JCS / sigma)), the angle in
+/// [phi_r, 70 deg]: the closed form the Barton-Bandis peak is tested against.
+double barton_bandis(double sigma, double jrc, double jcs, double phi_r_deg) {
+  const double angle = std::clamp(phi_r_deg + jrc * std::log10(jcs / sigma), phi_r_deg, 70.0);
+  return sigma * tan_deg(angle);
+}
+
+// Barton-Bandis peak: the joint (no cohesion, phi_r = 25 deg) under direct
+// shear at several normal stresses peaks at the closed form within 2% and
+// ends at sigma tan(phi_r): JRC 10, JCS 50 MPa at 0.5, 2 and 8 MPa (total
+// angles 45, 39 and 33 deg); JRC 20, JCS 100 MPa at 0.2 MPa (79 deg, capped
+// at 70); JCS 5 MPa below the 8 MPa normal stress (angle held at phi_r).
+TEST(JointLaw, direct_shear_peaks_at_the_barton_bandis_strength) {
+  struct Case {
+    double jrc, jcs, sigma;
+  };
+  const double h = 0.1;
+  for (const Case& q : {Case{10, 50e6, 0.5e6}, Case{10, 50e6, 2e6}, Case{10, 50e6, 8e6},
+                        Case{20, 100e6, 0.2e6}, Case{10, 5e6, 8e6}}) {
+    Material m = joint();
+    m.cohesion = 0;
+    m.jrc = q.jrc;
+    m.jcs = q.jcs;
+    const CrackConstants k = make_crack_constants(m);
+    const double fp = barton_bandis(q.sigma, q.jrc, q.jcs, m.residual_friction_deg);
+    const double end = 2 * h * fp / k.pt + k.slip_energy / fp;
+    const ShearCurve c = direct_shear(m, h, q.sigma * h / k.pn, 1.5 * end, 3000);
+    const double fr = q.sigma * tan_deg(m.residual_friction_deg);
+    std::printf(
+        "Barton-Bandis JRC %g, JCS %.3g: sigma %.4g, peak %.6g (closed form %.6g), "
+        "residual %.6g (%.6g)\n",
+        q.jrc, q.jcs, c.normal, c.peak, fp, c.residual, fr);
+    EXPECT_NEAR(c.normal, q.sigma, 1e-6 * q.sigma);
+    EXPECT_NEAR(c.peak, fp, 0.02 * fp) << "JRC " << q.jrc << ", sigma " << q.sigma;
+    EXPECT_NEAR(c.residual, fr, 0.02 * fr);
+  }
+  // The strength the pre-stress and the potential use is the same closed form,
+  // c added; in tension it is c alone.
+  Material m = joint();
+  m.jrc = 10;
+  m.jcs = 50e6;
+  const CrackConstants k = make_crack_constants(m);
+  EXPECT_NEAR(JointLaw::shear_strength(k, -2e6), m.cohesion + barton_bandis(2e6, 10, 50e6, 25),
+              1e-9 * m.cohesion);
+  EXPECT_EQ(JointLaw::shear_strength(k, 1e6), m.cohesion);
+}
+
+// Barton-Bandis input: JCS > 0, JRC in [0, 20], phi_r below the cap.
+TEST(JointLaw, barton_bandis_input_is_checked) {
+  Material m = joint();
+  m.jrc = 10;
+  m.jcs = 50e6;
+  EXPECT_EQ(JointLaw::input_problem(m), "");
+  m.jrc = 21;
+  EXPECT_NE(JointLaw::input_problem(m).find("JRC"), std::string::npos);
+  m.jrc = 10;
+  m.jcs = -1;
+  EXPECT_NE(JointLaw::input_problem(m).find("JCS"), std::string::npos);
+  m.jcs = 0;  // JRC alone: JCS missing
+  EXPECT_NE(JointLaw::input_problem(m).find("JCS"), std::string::npos);
+}
+
 // Without tensile strength and cohesion an open joint carries nothing and
 // takes no damage; it never breaks.
 TEST(JointLaw, open_joint_without_strength_carries_nothing) {

@@ -95,6 +95,27 @@ TEST(JointScene, bad_joint_input_is_refused_naming_file_key_value_and_allowed) {
               has(value, "allowed: four finite numbers"))
       << value;
   fs::remove_all(bad);
+  // Barton-Bandis: JCS > 0 and JRC in [0, 20] (the schema's ranges), both
+  // given with it and neither without it.
+  const std::string bb = "joints.shear_strength=\"barton_bandis\"";
+  const std::string jcs = refused({bb, "joints.jrc=10", "joints.jcs=0"});
+  EXPECT_TRUE(has(jcs, "joints.jcs") && has(jcs, "0") && has(jcs, "allowed: > 0")) << jcs;
+  const std::string jrc = refused({bb, "joints.jrc=25", "joints.jcs=50e6"});
+  EXPECT_TRUE(has(jrc, "joints.jrc") && has(jrc, "25") && has(jrc, "allowed") && has(jrc, "20"))
+      << jrc;
+  const std::string alone = refused({bb, "joints.jrc=10"});
+  EXPECT_TRUE(has(alone, "joints.jcs") && has(alone, "allowed")) << alone;
+  const std::string without = refused({"joints.jrc=10"});
+  EXPECT_TRUE(has(without, "joints.jrc") && has(without, "barton_bandis") &&
+              has(without, "allowed"))
+      << without;
+  const Scene b = load_scene(kScene, {bb, "joints.jrc=8", "joints.jcs=60e6"});
+  EXPECT_TRUE(b.joints.barton_bandis);
+  EXPECT_EQ(b.joints.jrc, 8);
+  EXPECT_EQ(b.joints.jcs, 60e6);
+  const rockfdem::test::Result bad_jrc = rockfdem::test::run(
+      "check " + kScene + " --set '" + bb + "'" + " --set joints.jrc=-1 --set joints.jcs=50e6");
+  EXPECT_EQ(bad_jrc.code, 2) << bad_jrc.output;
   const rockfdem::test::Result r =
       rockfdem::test::run("check " + kScene + " --set joint_set[1].dip=180");
   EXPECT_EQ(r.code, 2) << r.output;
