@@ -125,7 +125,7 @@ TEST(JointScene, bad_joint_input_is_refused_naming_file_key_value_and_allowed) {
 // 200 steps: the joints' elements take the joint law (they soften and slide,
 // never break), are counted apart, flagged in the VTK file, listed per
 // trace in joints.csv and per element in joint_profile.csv; 1 and 2 threads
-// give the same bits.
+// give the same bits and the same energy ledger.
 TEST(JointScene, a_run_counts_joint_elements_apart_with_the_same_bits_on_1_and_2_threads) {
   const fs::path one = rockfdem::test::scratch("joints-1"),
                  two = rockfdem::test::scratch("joints-2");
@@ -137,6 +137,9 @@ TEST(JointScene, a_run_counts_joint_elements_apart_with_the_same_bits_on_1_and_2
   }
   const nlohmann::json s = summary_of(one);
   EXPECT_EQ(s["state_hash"], summary_of(two)["state_hash"]);
+  // The ledger too, the joints' residual friction included (fixed-block sums).
+  EXPECT_GT(s["energy"]["joint_friction"].get<double>(), 0.0);
+  EXPECT_EQ(s["energy"], summary_of(two)["energy"]);
   const nlohmann::json& j = s["joints"];
   EXPECT_EQ(j["traces"]["from_file"], 3);
   EXPECT_GT(j["elements"].get<long>(), 50);

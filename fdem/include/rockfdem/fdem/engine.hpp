@@ -146,6 +146,10 @@ struct EnergyBalance {
   /// released by damage growth and breakage), friction (contact, plastic
   /// slip), absorbing (boundary dashpots).
   double damping = 0, fracture = 0, friction = 0, absorbing = 0;
+  /// Of friction: the work of the joint elements' residual friction (the
+  /// part of a joint law's shear traction its potential leaves out: the
+  /// friction gained as it softened; docs/engine.md, "Energy balance").
+  double joint_friction = 0;
   /// Stored energy taken out by stiffness-factor changes (core softening;
   /// negative when a factor rises).
   double softening = 0;
