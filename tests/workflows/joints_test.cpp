@@ -103,6 +103,12 @@ TEST(JointScene, bad_joint_input_is_refused_naming_file_key_value_and_allowed) {
   const std::string jrc = refused({bb, "joints.jrc=25", "joints.jcs=50e6"});
   EXPECT_TRUE(has(jrc, "joints.jrc") && has(jrc, "25") && has(jrc, "allowed") && has(jrc, "20"))
       << jrc;
+  const std::string cap =
+      refused({bb, "joints.jrc=10", "joints.jcs=50e6", "joints.friction_angle=80",
+               "joints.residual_friction_angle=75"});
+  EXPECT_TRUE(has(cap, "joints.residual_friction_angle") && has(cap, "75") &&
+              has(cap, "allowed: below 70"))
+      << cap;
   const std::string alone = refused({bb, "joints.jrc=10"});
   EXPECT_TRUE(has(alone, "joints.jcs") && has(alone, "allowed")) << alone;
   const std::string without = refused({"joints.jrc=10"});

@@ -917,6 +917,10 @@ void read_joints(const Reader& r, const std::string& base_dir, Scene& s) {
       r.require(key, "joints.shear_strength = \"barton_bandis\" needs joints.jrc and joints.jcs");
     j.jrc = r.number_or("joints.jrc", 0);
     j.jcs = r.number_or("joints.jcs", 0);
+    if (j.residual_friction_angle >= 70)  // crack_law_joint.hpp's cap
+      r.fail(r.given_at("joints.residual_friction_angle"),
+             "at or above the Barton-Bandis cap of the total friction angle; allowed: below 70 "
+             "deg with joints.shear_strength = \"barton_bandis\"");
   } else {
     for (const char* key : {"joints.jrc", "joints.jcs"})
       if (r.has(key))
