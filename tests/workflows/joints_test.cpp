@@ -164,6 +164,35 @@ TEST(JointScene, a_run_counts_joint_elements_apart_with_the_same_bits_on_1_and_2
   fs::remove_all(two);
 }
 
+// A jointed run restarts bit for bit: checkpoints every 50 steps (at the
+// output steps) with 1 thread; the older kept one, restarted with 2
+// threads, gives the uninterrupted run's state hash, energy ledger (the
+// joints' residual friction included) and joint_profile.csv.
+TEST(JointScene, a_jointed_run_restarts_bit_for_bit) {
+  const fs::path ref = rockfdem::test::scratch("joints-ref"),
+                 again = rockfdem::test::scratch("joints-restart");
+  // Output (and so checkpoints) every 50 steps; the restart repeats the --set.
+  const std::string kSets =
+      " --set output.every_steps=50 --set output.plots=false --set output.vtk=false";
+  rockfdem::test::Result r = rockfdem::test::run(
+      "run " + kScene + " -q -j 1 --checkpoint-every 50" + kSets + " -o " + ref.string());
+  ASSERT_EQ(r.code, 0) << r.output;
+  const auto kept = rockfdem::test::checkpoints(ref);
+  ASSERT_FALSE(kept.empty());
+  r = rockfdem::test::run("run " + kScene + " -q -j 2" + kSets + " --restart " +
+                          kept.front().string() + " -o " + again.string());
+  ASSERT_EQ(r.code, 0) << r.output;
+  const nlohmann::json a = summary_of(ref), b = summary_of(again);
+  EXPECT_GT(b["restarted_from"]["step"].get<long>(), 0);
+  EXPECT_LT(b["restarted_from"]["step"].get<long>(), a["steps"].get<long>());
+  EXPECT_EQ(b["state_hash"], a["state_hash"]);
+  EXPECT_GT(a["energy"]["joint_friction"].get<double>(), 0.0);
+  EXPECT_EQ(b["energy"], a["energy"]);
+  EXPECT_EQ(text_of(again / "joint_profile.csv"), text_of(ref / "joint_profile.csv"));
+  fs::remove_all(ref);
+  fs::remove_all(again);
+}
+
 // joint_profile.csv on a constructed case: two triangles joined along a
 // horizontal joint of length h (one trace), the upper triangle moved by an
 // imposed slip and opening; the row reports them in mm (printed to 6
