@@ -134,9 +134,9 @@ std::size_t Engine::memory_bytes() const {
          b(n.vertex) + b(n.slot_start) + b(n.slot_index) + b(t.nodes) + b(t.ref_inv) + b(t.area0) +
          b(t.eta) + b(t.alpha) + b(t.sigma0) + b(t.viscous_stress) + b(t.material) + b(t.active) +
          b(c.nodes) + b(c.tri) + b(c.damage) + b(c.material) + b(c.state) + b(c.mode) +
-         b(c.active) + b(c.broken_step) + b(c.offset) + b(d.slots) + b(d.block_partial) +
-         b(d.energy_partial) + b(d.vertex_nodes) + b(d.vertex_node_start) +
-         contact_bytes(d.contact, b);
+         b(c.active) + b(c.broken_step) + b(c.offset) + b(c.joints) + b(c.joint_force) +
+         b(d.slots) + b(d.block_partial) + b(d.energy_partial) + b(d.vertex_nodes) +
+         b(d.vertex_node_start) + contact_bytes(d.contact, b);
 }
 
 }  // namespace rockfdem::fdem

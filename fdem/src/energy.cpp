@@ -9,6 +9,7 @@
 #include "contact.hpp"
 #include "crack_elements.hpp"
 #include "engine_impl.hpp"
+#include "joint_friction.hpp"
 #include "parallel.hpp"
 #include "triangle_force.hpp"
 
@@ -57,6 +58,7 @@ void start_ledger(EngineData& d) {
   e.initial = stored_energy(d);
   e.started = true;
   std::fill(d.tris.viscous_stress.begin(), d.tris.viscous_stress.end(), 0.0);
+  std::fill(d.cracks.joint_force.begin(), d.cracks.joint_force.end(), 0.0);
 }
 
 double node_energy(const EngineData& d, std::size_t n) {
@@ -126,7 +128,8 @@ EnergyBalance Engine::energy_balance() const {
                               [&](long t) { return detail::triangle_viscous_pending(d, t); });
   b.damping = e.viscous + pending + e.nodal_damping + e.contact_damping + e.kinetic_damping;
   b.fracture = e.fracture;
-  b.friction = e.friction;
+  b.joint_friction = e.joint_friction + detail::joint_friction_pending(d);
+  b.friction = e.friction + b.joint_friction;
   b.absorbing = e.absorbing;
   b.softening = e.softening;
   b.removed = e.removed;

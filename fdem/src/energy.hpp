@@ -20,7 +20,9 @@
 //             an element's whole potential when it breaks, less the contact
 //             energy of pairs that detection finds already overlapping
 //   friction  plastic slip of the contact friction springs,
-//             F (F_trial - F) / k_t when the spring is clipped at mu F_n
+//             F (F_trial - F) / k_t when the spring is clipped at mu F_n;
+//             and the joint elements' residual friction, its force times
+//             the mid-step displacement (joint_friction.hpp)
 //   contact_damping  normal contact damping f_d v_n dt
 // while kinetic, strain, crack and contact energies are closed forms of the
 // state. Their balance is then a test of the scheme and of the ledger, not a
@@ -52,6 +54,8 @@ struct EnergyLedger {
   double absorbing = 0;
   double fracture = 0;  ///< released crack potential, net of the contact handover
   double friction = 0;
+  double joint_friction =
+      0;                 ///< work of the joint elements' residual friction (joint_friction.hpp)
   double softening = 0;  ///< stored energy taken out by stiffness-factor changes
   double removed = 0;    ///< energy taken out by other stage controls (negative: added)
 };

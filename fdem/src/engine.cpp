@@ -22,6 +22,7 @@
 #include "crack_prestress.hpp"
 #include "energy.hpp"
 #include "engine_impl.hpp"
+#include "joint_friction.hpp"
 #include "kinetic_damping.hpp"
 #include "node_update.hpp"
 #include "parallel.hpp"
@@ -147,6 +148,7 @@ Engine::Engine(const ModelInput& in) : impl_(std::make_unique<Impl>()) {
   d.gravity[1] = in.gravity_y;
   detail::build_topology(in, d);
   detail::assign_strength_factors(d);
+  detail::init_joint_friction(d);
   set_viscous_damping(d);
   detail::resolve_edges(in, d);
   detail::apply_boundary_conditions(in.boundary_conditions, d);
@@ -254,6 +256,7 @@ void Engine::step() {
   impl_->times.triangles += t1 - t0;
   if (bad_tri >= 0) raise_bad_triangle(d, bad_tri);
   const long n_broken = detail::crack_forces(d);
+  detail::book_joint_friction(d);  // the ledger only: forces unchanged
   double t2 = omp_get_wtime();
   impl_->times.cracks += t2 - t1;
   if (d.contact_on) {                             // one branch per step while contact is off
@@ -439,6 +442,7 @@ void Engine::set_crack_material(std::size_t c, int material) {
   book_crack_change(d, c, [&] {
     d.cracks.material[c] = static_cast<std::uint16_t>(material);
     detail::assign_strength_factor(d, c);  // the new material's strengths (and its factor)
+    detail::update_joint_list(d, c);
   });
   impl_->stiffness_changed();
 }
@@ -583,6 +587,22 @@ double Engine::crack_strength_factor(std::size_t c) const {
   check_index(c, n_cracks(), "crack element");
   const auto& k = impl_->d.cracks.strength;
   return k.empty() ? 1.0 : k[c];
+}
+
+CrackDisplacement Engine::crack_displacement(std::size_t c) const {
+  check_index(c, n_cracks(), "crack element");
+  const auto& d = impl_->d;
+  double os[6];
+  CrackDisplacement r;
+  r.length = detail::crack_point_openings(d, c, os);
+  for (int i = 0; i < 3; ++i) {
+    r.opening[i] = r.law_opening[i] = os[2 * i];
+    r.slip[i] = r.law_slip[i] = os[2 * i + 1];
+    if (d.cracks.offset.empty()) continue;
+    r.law_opening[i] -= d.cracks.offset[6 * c + 2 * i];
+    r.law_slip[i] -= d.cracks.offset[6 * c + 2 * i + 1];
+  }
+  return r;
 }
 
 CrackState Engine::crack_state(std::size_t c) const {

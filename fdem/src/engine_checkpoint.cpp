@@ -32,7 +32,7 @@ void fields(Ar& ar, Material& m) {
   each_member(ar, m, m.density, m.young, m.poisson, m.tensile_strength, m.cohesion, m.friction_deg,
               m.residual_friction_deg, m.gf_I, m.gf_II, m.normal_penalty, m.tangential_penalty,
               m.damping_ratio, m.crack_law, m.yield_strength, m.ultimate_strength,
-              m.shear_yield_strength, m.weibull_modulus, m.heterogeneity_seed);
+              m.shear_yield_strength, m.jrc, m.jcs, m.weibull_modulus, m.heterogeneity_seed);
 }
 
 template <class Ar>
@@ -74,7 +74,7 @@ template <class Ar>
 void fields(Ar& ar, EnergyLedger& e) {
   each_member(ar, e, e.started, e.last_dt, e.initial, e.external, e.viscous, e.nodal_damping,
               e.contact_damping, e.kinetic_damping, e.absorbing, e.fracture, e.friction,
-              e.softening, e.removed);
+              e.joint_friction, e.softening, e.removed);
 }
 
 template <class Ar>
@@ -118,7 +118,7 @@ void fields(Ar& ar, Triangles& t) {
 
 template <class Ar>
 void fields(Ar& ar, Cracks& c) {
-  ROCKFDEM_CHECKPOINT_MEMBERS(Cracks, 10);
+  ROCKFDEM_CHECKPOINT_MEMBERS(Cracks, 12);
   ar.tag("CRAK");
   ar.model(c.nodes);
   ar.model(c.tri);
@@ -129,7 +129,9 @@ void fields(Ar& ar, Cracks& c) {
   ar.state(c.active);
   ar.state(c.broken_step);
   ar.state(c.offset);
-  ar.state(c.strength);  // set_crack_material draws again with the new material
+  ar.state(c.strength);     // set_crack_material draws again with the new material
+  ar.state(c.joints);       // follows set_crack_material
+  ar.state(c.joint_force);  // the energy ledger books its work at the next step
 }
 
 template <class Ar>

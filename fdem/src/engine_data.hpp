@@ -66,12 +66,16 @@ struct Cracks {
   std::vector<std::uint8_t> mode;    ///< FailureMode
   std::vector<std::uint8_t> active;  ///< both triangles active
   std::vector<std::int32_t> broken_step;
-  std::vector<double> offset;    ///< (o, s) taken as zero at end 0, midpoint, end 1
-                                 ///< (6 per element); empty until an element is
-                                 ///< re-joined or pre-stressed (crack_prestress.cpp)
-  std::vector<double> strength;  ///< strength factor k (ft and c times k) per element;
-                                 ///< empty while every factor is 1
-                                 ///< (strength_heterogeneity.hpp)
+  std::vector<double> offset;       ///< (o, s) taken as zero at end 0, midpoint, end 1
+                                    ///< (6 per element); empty until an element is
+                                    ///< re-joined or pre-stressed (crack_prestress.cpp)
+  std::vector<double> strength;     ///< strength factor k (ft and c times k) per element;
+                                    ///< empty while every factor is 1
+                                    ///< (strength_heterogeneity.hpp)
+  std::vector<int> joints;          ///< the elements with the joint law, ascending
+  std::vector<double> joint_force;  ///< 4 per element: the last step's residual friction
+                                    ///< forces on nodes 0, 1 (joint_friction.hpp); empty
+                                    ///< without a joint-law material
   std::size_t size() const { return material.size(); }
 };
 

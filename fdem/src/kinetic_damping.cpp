@@ -2,6 +2,7 @@
 #include "kinetic_damping.hpp"
 
 #include "energy.hpp"
+#include "joint_friction.hpp"
 #include "parallel.hpp"
 #include "triangle_force.hpp"
 
@@ -42,6 +43,7 @@ bool kinetic_damping(EngineData& d) {
   if (!d.tris.viscous_stress.empty())
     d.energy.viscous += block_sum(static_cast<long>(d.tris.size()), d.threads,
                                   [&](long t) { return triangle_viscous_pending(d, t); });
+  d.energy.joint_friction += joint_friction_pending(d);  // likewise
   settle_free_components(d);
   const double left = kinetic_energy(d);  // of prescribed velocities, if any
   d.energy.kinetic_damping += ke - left;

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 
@@ -81,6 +82,68 @@ TEST(JointLaw, direct_shear_follows_mohr_coulomb_peak_and_residual) {
   EXPECT_NEAR(c.residual, fr, 0.02 * fr);
 }
 
+/// tau = sigma tan(phi_r + JRC log10(JCS / sigma)), the angle in
+/// [phi_r, 70 deg]: the closed form the Barton-Bandis peak is tested against.
+double barton_bandis(double sigma, double jrc, double jcs, double phi_r_deg) {
+  const double angle = std::clamp(phi_r_deg + jrc * std::log10(jcs / sigma), phi_r_deg, 70.0);
+  return sigma * tan_deg(angle);
+}
+
+// Barton-Bandis peak: the joint (no cohesion, phi_r = 25 deg) under direct
+// shear at several normal stresses peaks at the closed form within 2% and
+// ends at sigma tan(phi_r): JRC 10, JCS 50 MPa at 0.5, 2 and 8 MPa (total
+// angles 45, 39 and 33 deg); JRC 20, JCS 100 MPa at 0.2 MPa (79 deg, capped
+// at 70); JCS 5 MPa below the 8 MPa normal stress (angle held at phi_r).
+TEST(JointLaw, direct_shear_peaks_at_the_barton_bandis_strength) {
+  struct Case {
+    double jrc, jcs, sigma;
+  };
+  const double h = 0.1;
+  for (const Case& q : {Case{10, 50e6, 0.5e6}, Case{10, 50e6, 2e6}, Case{10, 50e6, 8e6},
+                        Case{20, 100e6, 0.2e6}, Case{10, 5e6, 8e6}}) {
+    Material m = joint();
+    m.cohesion = 0;
+    m.jrc = q.jrc;
+    m.jcs = q.jcs;
+    const CrackConstants k = make_crack_constants(m);
+    const double fp = barton_bandis(q.sigma, q.jrc, q.jcs, m.residual_friction_deg);
+    const double end = 2 * h * fp / k.pt + k.slip_energy / fp;
+    const ShearCurve c = direct_shear(m, h, q.sigma * h / k.pn, 1.5 * end, 3000);
+    const double fr = q.sigma * tan_deg(m.residual_friction_deg);
+    std::printf(
+        "Barton-Bandis JRC %g, JCS %.3g: sigma %.4g, peak %.6g (closed form %.6g), "
+        "residual %.6g (%.6g)\n",
+        q.jrc, q.jcs, c.normal, c.peak, fp, c.residual, fr);
+    EXPECT_NEAR(c.normal, q.sigma, 1e-6 * q.sigma);
+    EXPECT_NEAR(c.peak, fp, 0.02 * fp) << "JRC " << q.jrc << ", sigma " << q.sigma;
+    EXPECT_NEAR(c.residual, fr, 0.02 * fr);
+  }
+  // The strength the pre-stress and the potential use is the same closed form,
+  // c added; in tension it is c alone.
+  Material m = joint();
+  m.jrc = 10;
+  m.jcs = 50e6;
+  const CrackConstants k = make_crack_constants(m);
+  EXPECT_NEAR(JointLaw::shear_strength(k, -2e6), m.cohesion + barton_bandis(2e6, 10, 50e6, 25),
+              1e-9 * m.cohesion);
+  EXPECT_EQ(JointLaw::shear_strength(k, 1e6), m.cohesion);
+}
+
+// Barton-Bandis input: JCS > 0, JRC in [0, 20], phi_r below the cap.
+TEST(JointLaw, barton_bandis_input_is_checked) {
+  Material m = joint();
+  m.jrc = 10;
+  m.jcs = 50e6;
+  EXPECT_EQ(JointLaw::input_problem(m), "");
+  m.jrc = 21;
+  EXPECT_NE(JointLaw::input_problem(m).find("JRC"), std::string::npos);
+  m.jrc = 10;
+  m.jcs = -1;
+  EXPECT_NE(JointLaw::input_problem(m).find("JCS"), std::string::npos);
+  m.jcs = 0;  // JRC alone: JCS missing
+  EXPECT_NE(JointLaw::input_problem(m).find("JCS"), std::string::npos);
+}
+
 // Without tensile strength and cohesion an open joint carries nothing and
 // takes no damage; it never breaks.
 TEST(JointLaw, open_joint_without_strength_carries_nothing) {
@@ -101,6 +164,44 @@ TEST(JointLaw, open_joint_without_strength_carries_nothing) {
   }
   EXPECT_EQ(e.crack_damage(0), 0.0);
   EXPECT_NE(e.crack_state(0), CrackState::kBroken);
+}
+
+// crack_displacement on an imposed motion: the upper triangle pressed down
+// by a closure and slid along the joint; every point reports the slip and
+// the (negative) opening, whichever face is first (positions of order h:
+// round-off 1e-16 m, tolerance 1e-12 m). After a re-join at that position
+// the law's values are zero and the positions' values unchanged.
+TEST(JointLaw, crack_displacement_reports_the_imposed_slip_and_closure) {
+  const double h = 0.1, closure = 2e-5, slip = 3e-3;
+  ModelInput in = test::two_triangles(h, joint());
+  Engine e(in);
+  const auto top = e.triangle_nodes(1);
+  for (int k = 0; k < 3; ++k) {
+    const int v = e.node_vertex()[top[k]];
+    e.set_node_state(top[k], in.x[v] + slip, in.y[v] - closure, 0, 0);
+  }
+  // The sign of the slip: positive when the face on the left of the
+  // element, looking along it, moves forward; here the upper face moves
+  // along +x, and the joint runs along x either way round.
+  const bool top_first = e.crack_triangles(0)[0] == 1;
+  const std::array<int, 4> nodes = e.crack_nodes(0);
+  const double along = e.positions()[2 * nodes[1]] - e.positions()[2 * nodes[0]];
+  EXPECT_EQ(top_first, along > 0);
+  const CrackDisplacement u = e.crack_displacement(0);
+  EXPECT_NEAR(u.length, h, 1e-12);
+  for (int i = 0; i < 3; ++i) {
+    EXPECT_NEAR(u.slip[i], slip, 1e-12);
+    EXPECT_NEAR(u.opening[i], -closure, 1e-12);
+    EXPECT_EQ(u.law_slip[i], u.slip[i]);
+    EXPECT_EQ(u.law_opening[i], u.opening[i]);
+  }
+  e.rejoin_crack(0, 0);
+  const CrackDisplacement r = e.crack_displacement(0);
+  for (int i = 0; i < 3; ++i) {
+    EXPECT_EQ(r.slip[i], u.slip[i]);
+    EXPECT_EQ(r.law_slip[i], 0.0);
+    EXPECT_EQ(r.law_opening[i], 0.0);
+  }
 }
 
 }  // namespace

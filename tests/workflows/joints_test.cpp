@@ -5,15 +5,19 @@
 // thread count.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <sstream>
 #include <string>
+#include <vector>
 
 #include "cli_runner.hpp"
+#include "outputs/joint_results.hpp"
 #include "rockfdem/error.hpp"
+#include "rockfdem/fdem/engine.hpp"
 #include "rockfdem/workflows/scene.hpp"
 
 namespace fs = std::filesystem;
@@ -35,6 +39,17 @@ std::string text_of(const fs::path& p) {
 
 nlohmann::json summary_of(const fs::path& dir) {
   return nlohmann::json::parse(text_of(dir / "summary.json"));
+}
+
+/// The fields of joint_profile.csv's row `row` (1 = the first after the header).
+std::vector<std::string> profile_row(const std::string& csv, int row) {
+  std::stringstream in(csv);
+  std::string line;
+  for (int i = 0; i <= row; ++i) std::getline(in, line);
+  std::vector<std::string> f;
+  std::stringstream l(line);
+  for (std::string x; std::getline(l, x, ',');) f.push_back(x);
+  return f;
 }
 
 bool same_traces(const Scene& a, const Scene& b) {
@@ -80,6 +95,33 @@ TEST(JointScene, bad_joint_input_is_refused_naming_file_key_value_and_allowed) {
               has(value, "allowed: four finite numbers"))
       << value;
   fs::remove_all(bad);
+  // Barton-Bandis: JCS > 0 and JRC in [0, 20] (the schema's ranges), both
+  // given with it and neither without it.
+  const std::string bb = "joints.shear_strength=\"barton_bandis\"";
+  const std::string jcs = refused({bb, "joints.jrc=10", "joints.jcs=0"});
+  EXPECT_TRUE(has(jcs, "joints.jcs") && has(jcs, "0") && has(jcs, "allowed: > 0")) << jcs;
+  const std::string jrc = refused({bb, "joints.jrc=25", "joints.jcs=50e6"});
+  EXPECT_TRUE(has(jrc, "joints.jrc") && has(jrc, "25") && has(jrc, "allowed") && has(jrc, "20"))
+      << jrc;
+  const std::string cap =
+      refused({bb, "joints.jrc=10", "joints.jcs=50e6", "joints.friction_angle=80",
+               "joints.residual_friction_angle=75"});
+  EXPECT_TRUE(has(cap, "joints.residual_friction_angle") && has(cap, "75") &&
+              has(cap, "allowed: below 70"))
+      << cap;
+  const std::string alone = refused({bb, "joints.jrc=10"});
+  EXPECT_TRUE(has(alone, "joints.jcs") && has(alone, "allowed")) << alone;
+  const std::string without = refused({"joints.jrc=10"});
+  EXPECT_TRUE(has(without, "joints.jrc") && has(without, "barton_bandis") &&
+              has(without, "allowed"))
+      << without;
+  const Scene b = load_scene(kScene, {bb, "joints.jrc=8", "joints.jcs=60e6"});
+  EXPECT_TRUE(b.joints.barton_bandis);
+  EXPECT_EQ(b.joints.jrc, 8);
+  EXPECT_EQ(b.joints.jcs, 60e6);
+  const rockfdem::test::Result bad_jrc = rockfdem::test::run(
+      "check " + kScene + " --set '" + bb + "'" + " --set joints.jrc=-1 --set joints.jcs=50e6");
+  EXPECT_EQ(bad_jrc.code, 2) << bad_jrc.output;
   const rockfdem::test::Result r =
       rockfdem::test::run("check " + kScene + " --set joint_set[1].dip=180");
   EXPECT_EQ(r.code, 2) << r.output;
@@ -87,8 +129,9 @@ TEST(JointScene, bad_joint_input_is_refused_naming_file_key_value_and_allowed) {
 }
 
 // 200 steps: the joints' elements take the joint law (they soften and slide,
-// never break), are counted apart, flagged in the VTK file and listed per
-// trace in joints.csv; 1 and 2 threads give the same bits.
+// never break), are counted apart, flagged in the VTK file, listed per
+// trace in joints.csv and per element in joint_profile.csv; 1 and 2 threads
+// give the same bits and the same energy ledger.
 TEST(JointScene, a_run_counts_joint_elements_apart_with_the_same_bits_on_1_and_2_threads) {
   const fs::path one = rockfdem::test::scratch("joints-1"),
                  two = rockfdem::test::scratch("joints-2");
@@ -100,6 +143,9 @@ TEST(JointScene, a_run_counts_joint_elements_apart_with_the_same_bits_on_1_and_2
   }
   const nlohmann::json s = summary_of(one);
   EXPECT_EQ(s["state_hash"], summary_of(two)["state_hash"]);
+  // The ledger too, the joints' residual friction included (fixed-block sums).
+  EXPECT_GT(s["energy"]["joint_friction"].get<double>(), 0.0);
+  EXPECT_EQ(s["energy"], summary_of(two)["energy"]);
   const nlohmann::json& j = s["joints"];
   EXPECT_EQ(j["traces"]["from_file"], 3);
   EXPECT_GT(j["elements"].get<long>(), 50);
@@ -110,8 +156,110 @@ TEST(JointScene, a_run_counts_joint_elements_apart_with_the_same_bits_on_1_and_2
                 s["broken"]["mixed"].get<long>());
   const std::string csv = text_of(one / "joints.csv");
   EXPECT_EQ(long(std::count(csv.begin(), csv.end(), '\n')), j["traces"]["meshed"].get<long>() + 1);
+  const std::string profile = text_of(one / "joint_profile.csv");
+  EXPECT_EQ(long(std::count(profile.begin(), profile.end(), '\n')), j["elements"].get<long>() + 1);
   EXPECT_TRUE(has(text_of(one / "fdem_0001.vtu"), "Name=\"joint\""));
   EXPECT_TRUE(has(text_of(one / "report.md"), "joint crack elements"));
   fs::remove_all(one);
   fs::remove_all(two);
+}
+
+// A jointed run restarts bit for bit: checkpoints every 50 steps (at the
+// output steps) with 1 thread; the older kept one, restarted with 2
+// threads, gives the uninterrupted run's state hash, energy ledger (the
+// joints' residual friction included) and joint_profile.csv.
+TEST(JointScene, a_jointed_run_restarts_bit_for_bit) {
+  const fs::path ref = rockfdem::test::scratch("joints-ref"),
+                 again = rockfdem::test::scratch("joints-restart");
+  // Output (and so checkpoints) every 50 steps; the restart repeats the --set.
+  const std::string kSets =
+      " --set output.every_steps=50 --set output.plots=false --set output.vtk=false";
+  rockfdem::test::Result r = rockfdem::test::run(
+      "run " + kScene + " -q -j 1 --checkpoint-every 50" + kSets + " -o " + ref.string());
+  ASSERT_EQ(r.code, 0) << r.output;
+  const auto kept = rockfdem::test::checkpoints(ref);
+  ASSERT_FALSE(kept.empty());
+  r = rockfdem::test::run("run " + kScene + " -q -j 2" + kSets + " --restart " +
+                          kept.front().string() + " -o " + again.string());
+  ASSERT_EQ(r.code, 0) << r.output;
+  const nlohmann::json a = summary_of(ref), b = summary_of(again);
+  EXPECT_GT(b["restarted_from"]["step"].get<long>(), 0);
+  EXPECT_LT(b["restarted_from"]["step"].get<long>(), a["steps"].get<long>());
+  EXPECT_EQ(b["state_hash"], a["state_hash"]);
+  EXPECT_GT(a["energy"]["joint_friction"].get<double>(), 0.0);
+  EXPECT_EQ(b["energy"], a["energy"]);
+  EXPECT_EQ(text_of(again / "joint_profile.csv"), text_of(ref / "joint_profile.csv"));
+  fs::remove_all(ref);
+  fs::remove_all(again);
+}
+
+// joint_profile.csv on a constructed case: two triangles joined along a
+// horizontal joint of length h (one trace), the upper triangle moved by an
+// imposed slip and opening; the row reports them in mm (printed to 6
+// digits: 1e-5 relative), the same whichever way the trace runs, with the
+// state the motion gives.
+TEST(JointScene, joint_profile_reports_an_imposed_slip_and_opening) {
+  const double h = 0.2;
+  mesh::Mesh m;
+  m.x = {0, h, h / 2, h / 2};
+  m.y = {0, 0, -h, h};
+  m.triangles = {{0, 2, 1}, {0, 1, 3}};
+  m.zone = {mesh::kRock, mesh::kRock};
+  m.fracture = {1, 1};
+  m.joint_edges = {{0, 1, 0}};
+  fdem::ModelInput in;
+  in.x = m.x;
+  in.y = m.y;
+  in.triangles = m.triangles;
+  in.material = {0, 0};
+  in.fracture = m.fracture;
+  fdem::Material joint;
+  joint.crack_law = fdem::CrackLaw::kJoint;
+  joint.tensile_strength = 0;
+  joint.cohesion = 0.5e6;
+  joint.friction_deg = 35;
+  joint.residual_friction_deg = 25;
+  in.materials = {joint};
+  fdem::Engine e(in);
+  // The upper triangle moved by (u, v) from the mesh, the lower at rest in it.
+  const auto move = [&](double u, double v) {
+    for (int t = 0; t < 2; ++t)
+      for (int node : e.triangle_nodes(t)) {
+        const int w = e.node_vertex()[node];
+        e.set_node_state(node, in.x[w] + t * u, in.y[w] + t * v, 0, 0);
+      }
+  };
+  const auto near = [](const std::string& f, double x) {
+    return std::fabs(std::stod(f) - x) <= 1e-5 * std::fabs(x) + 1e-9;
+  };
+  for (const mesh::JointTrace t : {mesh::JointTrace{0, 0, h, 0}, mesh::JointTrace{h, 0, 0, 0}}) {
+    // Slid 2.5 mm and pressed 0.01 mm down: closed (aperture 0), intact
+    // (no step taken: no damage).
+    move(2.5e-3, -1e-5);
+    std::vector<std::string> f = profile_row(workflows::joint_profile_csv(e, m, {t}), 1);
+    ASSERT_EQ(f.size(), 12u);
+    EXPECT_EQ(f[0], "1");
+    EXPECT_TRUE(near(f[2], h / 2)) << f[2];  // distance_m of the midpoint
+    EXPECT_TRUE(near(f[6], 2.5)) << f[6];    // slip_mm
+    EXPECT_TRUE(near(f[7], -0.01)) << f[7];  // opening_mm
+    EXPECT_TRUE(near(f[8], 0)) << f[8];      // aperture_mm
+    EXPECT_EQ(f[11], "intact");
+    // Slid to -1.5 mm and lifted 0.4 mm: open.
+    move(-1.5e-3, 4e-4);
+    f = profile_row(workflows::joint_profile_csv(e, m, {t}), 1);
+    EXPECT_TRUE(near(f[6], -1.5)) << f[6];
+    EXPECT_TRUE(near(f[7], 0.4)) << f[7];
+    EXPECT_TRUE(near(f[8], 0.4)) << f[8];
+    EXPECT_EQ(f[11], "open");
+  }
+  // Closed again and slid far past the softening range (one step raises
+  // the damage to 1): sliding.
+  move(20e-3, -1e-5);
+  e.step();
+  move(20e-3, -1e-5);
+  const std::vector<std::string> f =
+      profile_row(workflows::joint_profile_csv(e, m, {mesh::JointTrace{0, 0, h, 0}}), 1);
+  EXPECT_TRUE(near(f[6], 20)) << f[6];
+  EXPECT_TRUE(near(f[10], 1)) << f[10];
+  EXPECT_EQ(f[11], "sliding");
 }

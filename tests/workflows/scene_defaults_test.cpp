@@ -281,6 +281,9 @@ std::map<std::string, Text> text_fields() {
   };
   f["references.source"] = [](const Scene& s) { return "\"" + s.references.source + "\""; };
   f["joints.dfn_file"] = [](const Scene& s) { return "\"" + s.joints.dfn_file + "\""; };
+  f["joints.shear_strength"] = [](const Scene& s) {
+    return s.joints.barton_bandis ? "barton_bandis" : "mohr_coulomb";
+  };
   f["insitu.alpha"] = [](const Scene& s) {
     return s.insitu.alpha == std::vector<double>{1.0} ? "[1.0]" : "other";
   };

@@ -1,5 +1,6 @@
-// Joints at the end of a tunnel run: summary.json's "joints" and joints.csv,
-// the state of each meshed trace's crack elements.
+// Joints at the end of a tunnel run: summary.json's "joints", joints.csv
+// (the state of each meshed trace's crack elements) and joint_profile.csv
+// (each element's slip and opening along its trace).
 #pragma once
 
 #include <string>
@@ -16,5 +17,12 @@ namespace rockfdem::workflows {
 /// files' `joint` array numbers them.
 JointRecord joint_results(const fdem::Engine& e, const mesh::Mesh& m,
                           const std::vector<mesh::JointTrace>& traces, const std::string& csv_path);
+
+/// joint_profile.csv's text: one row per joint crack element, by trace and
+/// along it (distance of the element's midpoint from the trace's start),
+/// with its mean slip and opening since the start [mm], its aperture (the
+/// faces apart beyond contact) and its state (docs/output-formats.md).
+std::string joint_profile_csv(const fdem::Engine& e, const mesh::Mesh& m,
+                              const std::vector<mesh::JointTrace>& traces);
 
 }  // namespace rockfdem::workflows

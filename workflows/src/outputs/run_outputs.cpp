@@ -361,9 +361,11 @@ void RunOutputs::record_convergence_confinement(const fdem::Engine& e, const mes
 void RunOutputs::record_joints(const fdem::Engine& e, const mesh::Mesh& m) {
   if (m.joint_edges.empty()) return;
   const std::vector<mesh::JointTrace> none;
+  const std::vector<mesh::JointTrace>& traces = summary_.mesh ? summary_.mesh->joint_traces : none;
   JointRecord& j = summary_.joints.emplace(
-      joint_results(e, m, summary_.mesh ? summary_.mesh->joint_traces : none,
-                    output_path(ctx_.output_dir, "joints.csv")));
+      joint_results(e, m, traces, output_path(ctx_.output_dir, "joints.csv")));
+  coupling::atomic_write_text(output_path(ctx_.output_dir, "joint_profile.csv"),
+                              joint_profile_csv(e, m, traces));
   j.set_traces = scene_.joints.set_traces;
   j.dfn_traces = scene_.joints.dfn_traces;
   if (summary_.mesh) j.traces = summary_.mesh->joints;

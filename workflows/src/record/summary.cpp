@@ -187,6 +187,7 @@ nlohmann::json energy_json(const fdem::EnergyBalance& en) {
           {"damping", en.damping},
           {"fracture", en.fracture},
           {"friction", en.friction},
+          {"joint_friction", en.joint_friction},
           {"absorbing", en.absorbing},
           {"softening", en.softening},
           {"removed_by_stages", en.removed},

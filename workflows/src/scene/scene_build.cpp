@@ -910,7 +910,23 @@ void read_joints(const Reader& r, const std::string& base_dir, Scene& s) {
   j.penalty_factor = r.number("joints.penalty_factor");
   j.seed = std::uint64_t(r.number("joints.seed"));
   j.margin = s.mesh.kind == mesh::ModelKind::kTunnel ? r.number("joints.margin") : 0;
-  if (j.residual_friction_angle > j.friction_angle)
+  j.barton_bandis = r.text("joints.shear_strength") == "barton_bandis";
+  if (j.barton_bandis) {
+    for (const char* key : {"joints.jrc", "joints.jcs"})
+      r.require(key, "joints.shear_strength = \"barton_bandis\" needs joints.jrc and joints.jcs");
+    j.jrc = r.number_or("joints.jrc", 0);
+    j.jcs = r.number_or("joints.jcs", 0);
+    if (j.residual_friction_angle >= 70)  // crack_law_joint.hpp's cap
+      r.fail(r.given_at("joints.residual_friction_angle"),
+             "at or above the Barton-Bandis cap of the total friction angle; allowed: below 70 "
+             "deg with joints.shear_strength = \"barton_bandis\"");
+  } else {
+    for (const char* key : {"joints.jrc", "joints.jcs"})
+      if (r.has(key))
+        r.fail(key, "applies with joints.shear_strength = \"barton_bandis\"; allowed: no " +
+                        std::string(key) + " with mohr_coulomb");
+  }
+  if (!j.barton_bandis && j.residual_friction_angle > j.friction_angle)
     r.fail(r.given_at("joints.residual_friction_angle"),
            "above joints.friction_angle = " + num(j.friction_angle) +
                " deg; allowed: at most the peak friction angle");

@@ -275,6 +275,26 @@ void add_joints(std::vector<KeySpec>& s) {
                      false,
                      "Normal and shear penalty (stiffness) of the joints as a multiple of the "
                      "rock's Young's modulus."));
+  s.push_back(
+      choice("joints.shear_strength", "mohr_coulomb", {"mohr_coulomb", "barton_bandis"},
+             "Peak shear strength of the joints: `mohr_coulomb`, c + sigma_n tan(friction_angle); "
+             "`barton_bandis`, c + sigma_n tan(phi_r + JRC log10(JCS / sigma_n)) with phi_r the "
+             "residual_friction_angle (the basic friction of the walls) and joints.jrc, joints.jcs "
+             "(both required), the total angle at most 70 deg (as sigma_n -> 0) and at least phi_r "
+             "(sigma_n above JCS), no tension; friction_angle is then unused. Past the peak both "
+             "soften to the residual sigma_n tan(phi_r)."));
+  KeySpec jrc = number("joints.jrc", "-", "", 0, false, 20, false,
+                       "Joint roughness coefficient JRC of Barton and Choubey's profiles "
+                       "(shear_strength = \"barton_bandis\"): 0 smooth and planar, 20 very "
+                       "rough.");
+  jrc.default_doc = "none: required with barton_bandis";
+  s.push_back(jrc);
+  KeySpec jcs = positive("joints.jcs", "Pa", "",
+                         "Joint wall compressive strength JCS (shear_strength = "
+                         "\"barton_bandis\"): the intact rock's uniaxial compressive strength "
+                         "for fresh walls, less for weathered ones.");
+  jcs.default_doc = "none: required with barton_bandis";
+  s.push_back(jcs);
   s.push_back(integer("joints.seed", "1", 0, 2147483647,
                       "Seed of the joint sets' random offsets and scatter: the same seed gives "
                       "the same joints, bit for bit."));

@@ -272,6 +272,8 @@ fdem::Material joint_material(const Scene& scene) {
   m.normal_penalty = j.penalty_factor * rock.young;
   m.tangential_penalty = 0;  // the normal one
   m.weibull_modulus = 0;
+  m.jrc = j.jrc;  // both 0 with Mohr-Coulomb
+  m.jcs = j.jcs;
   return m;
 }
 

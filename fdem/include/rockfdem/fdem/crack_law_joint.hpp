@@ -16,6 +16,16 @@
 // The slip is the total one of the element (no plastic slip history): the
 // law is Mohr-Coulomb for monotonic sliding; on a reversal the shear stress
 // returns along the pre-peak curve.
+//
+// Barton-Bandis peak (optional, Material::jcs > 0): with sigma_n = -sigma
+// the compression,
+//   fp = c + sigma_n tan(phi_r + JRC log10(JCS / sigma_n)),
+// the total angle at most kBartonBandisMaxAngleDeg (70 deg: as sigma_n -> 0
+// the logarithm grows without bound, the cap keeps fp -> c) and at least
+// phi_r (sigma_n above JCS: the asperities are sheared off); no tension
+// (fp = c for sigma_n <= 0). The peak friction angle phi is then unused;
+// the residual is phi_r's, as in Barton's model once the roughness is
+// worn down. The slip range follows from fp as before.
 #pragma once
 
 #include <cmath>
@@ -27,6 +37,9 @@
 #include "rockfdem/fdem/crack_law_rock.hpp"
 
 namespace rockfdem::fdem {
+
+/// Cap of the Barton-Bandis total friction angle phi_r + JRC log10(JCS/sigma_n).
+constexpr double kBartonBandisMaxAngleDeg = 70.0;
 
 struct JointLaw {
   static constexpr CrackLaw kId = CrackLaw::kJoint;
@@ -46,12 +59,29 @@ struct JointLaw {
     k.open_range = m.tensile_strength > 0 ? m.gf_I / (integral * m.tensile_strength) : 0.0;
     k.slip_energy = m.gf_II / integral;
     k.breaks = false;
+    k.barton_bandis = m.jcs > 0;
+    k.phi_r = m.residual_friction_deg * kPi / 180.0;
+    k.jrc_rad = m.jrc * kPi / 180.0;
+    k.jcs = m.jcs;
+    k.max_angle_rad = kBartonBandisMaxAngleDeg * kPi / 180.0;
   }
 
   /// What is wrong with m's parameters for this law ("": nothing).
   static std::string input_problem(const Material& m) {
     if (!(m.tensile_strength >= 0 && m.cohesion >= 0))
       return "tensile strength and cohesion must be >= 0 for the joint crack law";
+    if (m.jcs != 0 || m.jrc != 0) {  // Barton-Bandis: phi_r, JRC and JCS; phi unused
+      std::ostringstream s;
+      if (!(m.jcs > 0))
+        s << "joint wall compressive strength JCS " << m.jcs << " Pa must be > 0";
+      else if (!(m.jrc >= 0 && m.jrc <= 20))
+        s << "joint roughness coefficient JRC " << m.jrc << " must lie in [0, 20]";
+      else if (!(m.residual_friction_deg >= 0 &&
+                 m.residual_friction_deg < kBartonBandisMaxAngleDeg))
+        s << "residual friction angle " << m.residual_friction_deg << " must lie in [0, "
+          << kBartonBandisMaxAngleDeg << ") degrees with Barton-Bandis";
+      return s.str();
+    }
     if (!(m.friction_deg >= 0 && m.friction_deg < 90) ||
         !(m.residual_friction_deg >= 0 && m.residual_friction_deg <= m.friction_deg)) {
       std::ostringstream s;
@@ -60,6 +90,21 @@ struct JointLaw {
       return s.str();
     }
     return "";
+  }
+
+  /// Peak shear strength at the penalty stress sigma_c (tension positive, 0
+  /// when open): Mohr-Coulomb c - sigma_c tan(phi), or Barton-Bandis.
+  template <class T>
+  static ROCKFDEM_LAW_INLINE T peak_strength(const CrackConstants& k, const T& sigma_c) {
+    if (!k.barton_bandis) return k.c - sigma_c * k.tan_phi;
+    const T zero{};
+    const T one = lanes::splat<T>(1.0);
+    const T sigma_n = zero - sigma_c;                 // compression, >= 0
+    const T safe = (sigma_n > zero) ? sigma_n : one;  // open: any angle, times 0
+    const T raw = k.phi_r + k.jrc_rad * lanes::log10(k.jcs / safe);
+    const T capped = (raw > k.max_angle_rad) ? lanes::splat<T>(k.max_angle_rad) : raw;
+    const T angle = (capped < k.phi_r) ? lanes::splat<T>(k.phi_r) : capped;
+    return k.c + sigma_n * lanes::tan(angle);
   }
 
   template <class T>
@@ -78,7 +123,7 @@ struct JointLaw {
     const T zero{};
     const T one = lanes::splat<T>(1.0);
     const T sigma_c = (o < zero) ? k.pn * o * inv_h : zero;  // penalty, unaffected by damage
-    const T fp = k.c - sigma_c * k.tan_phi;                  // peak, tension positive
+    const T fp = peak_strength(k, sigma_c);                  // peak, tension positive
     const T fr = -sigma_c * k.tan_phi_r;                     // residual
     const T op = h * k.op_per_h;
     const T sp = h * fp * k.two_over_pt;
@@ -96,9 +141,10 @@ struct JointLaw {
     return p;
   }
 
-  /// Peak shear strength at the total normal stress sigma: the rock's.
+  /// Peak shear strength at the total normal stress sigma (the point's,
+  /// c in tension).
   static double shear_strength(const CrackConstants& k, double sigma) {
-    return RockLaw::shear_strength(k, sigma);
+    return sigma < 0.0 ? peak_strength(k, sigma) : k.c;
   }
 
   /// z(D) for both curves, as the rock's: the potential is the softened peak

@@ -53,6 +53,12 @@ struct CrackConstants {
   double inv_open_range = 0;   ///< 1 / (or - op)
   double inv_slip_energy = 0;  ///< 1 / slip_energy
   bool breaks = true;          ///< whether the element breaks when two points reach D = 1
+  // Joint with a Barton-Bandis peak (crack_law_joint.hpp).
+  bool barton_bandis = false;
+  double phi_r = 0;          ///< residual (basic) friction angle [rad]
+  double jrc_rad = 0;        ///< JRC pi / 180: the roughness angle per decade of JCS / sigma_n
+  double jcs = 0;            ///< joint wall compressive strength [Pa]
+  double max_angle_rad = 0;  ///< cap of the total friction angle [rad]
 };
 
 /// Range of a crack element's strength factor (Material::weibull_modulus):
@@ -180,6 +186,29 @@ ROCKFDEM_LAW_INLINE T abs(T x) {
     const Bits<T> sign = (Bits<T>)splat<T>(-0.0);
     return (T)((Bits<T>)x & ~sign);
   }
+}
+
+/// f(x) of a double, or f of each lane of a register (library functions
+/// without a vector form: the same bits as the scalar call).
+template <class T, class F>
+ROCKFDEM_LAW_INLINE T each_lane(const T& x, F f) {
+  if constexpr (kScalar<T>) {
+    return f(x);
+  } else {
+    T y;
+    for (int i = 0; i < kWidth<T>; ++i) y[i] = f(x[i]);
+    return y;
+  }
+}
+
+template <class T>
+ROCKFDEM_LAW_INLINE T log10(const T& x) {
+  return each_lane(x, [](double v) { return std::log10(v); });
+}
+
+template <class T>
+ROCKFDEM_LAW_INLINE T tan(const T& x) {
+  return each_lane(x, [](double v) { return std::tan(v); });
 }
 
 /// |m| with the sign of s.

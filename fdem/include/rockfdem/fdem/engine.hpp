@@ -46,6 +46,21 @@ enum class ActivationReference {
   kCurrent,  ///< stress-free in the current, deformed configuration (lining)
 };
 
+/// Relative displacement of a crack element's faces (first face less the
+/// second, in the element's current frame: opening along the normal,
+/// positive apart; slip along the element from end 0 to end 1) at its
+/// three integration points, end 0, midpoint and end 1 [m].
+struct CrackDisplacement {
+  /// From the node positions: 0 where the faces coincide, i.e. measured
+  /// from the mesh (the explicit stage's start, the in-situ state).
+  std::array<double, 3> opening{}, slip{};
+  /// What the element's law sees: the same less its offsets (the crack
+  /// pre-stress of an in-situ start, a re-join's new zero). A negative
+  /// opening is the compressive penalty's overlap.
+  std::array<double, 3> law_opening{}, law_slip{};
+  double length = 0;  ///< current length h [m]
+};
+
 struct BrokenCounts {
   long mode_I = 0, mode_II = 0, mixed = 0;
   long total() const { return mode_I + mode_II + mixed; }
@@ -131,6 +146,10 @@ struct EnergyBalance {
   /// released by damage growth and breakage), friction (contact, plastic
   /// slip), absorbing (boundary dashpots).
   double damping = 0, fracture = 0, friction = 0, absorbing = 0;
+  /// Of friction: the work of the joint elements' residual friction (the
+  /// part of a joint law's shear traction its potential leaves out: the
+  /// friction gained as it softened; docs/engine.md, "Energy balance").
+  double joint_friction = 0;
   /// Stored energy taken out by stiffness-factor changes (core softening;
   /// negative when a factor rises).
   double softening = 0;
@@ -276,6 +295,9 @@ class Engine {
   /// pre-stress is set just before the first step, with the activity,
   /// initial stresses and boundary conditions of that moment.
   long crack_prestress_clipped() const;
+  /// Opening and slip of crack element c now, computed from the node
+  /// positions on demand (nothing is kept per step; no allocation).
+  CrackDisplacement crack_displacement(std::size_t c) const;
   /// Step at which the element broke; -1 while unbroken.
   long crack_broken_step(std::size_t c) const;
 

@@ -45,6 +45,12 @@ struct Material {
                                       ///< eta = 2 h sqrt(E rho) (h = smallest altitude); the
                                       ///< stiffest mode's ratio is 1.7-1.8 times it
   CrackLaw crack_law = CrackLaw::kRock;
+  // Joint law only (CrackLaw::kJoint): Barton-Bandis peak shear strength
+  // instead of Mohr-Coulomb's when jcs > 0 (crack_law_joint.hpp),
+  // tau = c + sigma_n tan(phi_r + JRC log10(JCS / sigma_n)), the angle capped
+  // at kBartonBandisMaxAngleDeg and at least phi_r (residual_friction_deg).
+  double jrc = 0;  ///< joint roughness coefficient JRC [-], 0 to 20
+  double jcs = 0;  ///< joint wall compressive strength JCS [Pa]; 0: Mohr-Coulomb peak
   // Bolt steel only (CrackLaw::kBoltSteel), seed eqs. 11-19.
   double yield_strength = 0;        ///< sigma_y [Pa]
   double ultimate_strength = 0;     ///< sigma_u [Pa] (>= sigma_y)

@@ -218,6 +218,8 @@ struct JointSettings {
   double friction_angle{}, residual_friction_angle{};  ///< deg
   double fracture_energy_I{}, fracture_energy_II{};    ///< J/m^2
   double penalty_factor{};                             ///< times the rock's Young's modulus
+  bool barton_bandis{};  ///< shear_strength = "barton_bandis" (else Mohr-Coulomb)
+  double jrc{}, jcs{};   ///< Barton-Bandis JRC [-] and JCS [Pa]; 0 with Mohr-Coulomb
   std::uint64_t seed{};
   double margin{};                       ///< m: the sets fill the opening's box grown by it
   std::string dfn_file;                  ///< resolved path; empty: none
