@@ -1,5 +1,6 @@
 #include "outputs/run_plots.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <iostream>
 
@@ -31,9 +32,40 @@ bool extensometer_point(const std::string& c) {
   return stem.find_first_not_of("0123456789", a + 2) == std::string::npos;
 }
 
+// The lining ring's extremes over the run (history.csv's lining columns,
+// empty before its installation): the largest thrust, the largest |moment|
+// and, where its capacity is checked, the smallest safety factor with the
+// line of 1; nothing while the ring was never installed.
+void lining_history(PlotWriter& plots, const History& h, const std::vector<double>& t,
+                    const std::vector<plots::PlotBand>& bands) {
+  const std::vector<double> n = h.column("lining_max_thrust_kN_per_m");
+  const std::vector<double> m = h.column("lining_max_abs_moment_kNm_per_m");
+  const std::vector<double> fs = h.column("lining_min_safety_factor");
+  plots::PlotSeries thrust{"largest thrust N", {}, {}}, moment{"largest |M|", {}, {}};
+  plots::PlotSeries factor{"smallest safety factor", {}, {}};
+  for (std::size_t i = 0; i < t.size(); ++i) {
+    if (!std::isfinite(n[i])) continue;  // not installed at this step
+    thrust.x.push_back(t[i]), thrust.y.push_back(n[i]);
+    moment.x.push_back(t[i]), moment.y.push_back(m[i]);
+    if (std::isfinite(fs[i])) factor.x.push_back(t[i]), factor.y.push_back(fs[i]);
+  }
+  if (thrust.x.empty()) return;
+  std::vector<plots::PlotPanel> panels{{"largest thrust N [kN/m], compression +", {thrust}, {}},
+                                       {"largest |moment| [kNm/m]", {moment}, {}}};
+  if (!factor.x.empty()) {
+    const plots::PlotSeries capacity{
+        "1: at capacity", {factor.x.front(), factor.x.back()}, {1.0, 1.0}};
+    panels.push_back({"smallest safety factor [-]", {factor, capacity}, {}});
+  }
+  plots.panels("lining_history.png",
+               "Lining ring over the run: largest thrust and moment, smallest safety factor",
+               kStepAxis, panels, 900, bands);
+}
+
 // The support and the instruments over the run, where the history has
-// them: each bolt's and cable's largest axial force, and each extensometer
-// point's relative reading (the deepest anchor fixed).
+// them: each bolt's and cable's largest axial force, the lining ring's
+// extremes, and each extensometer point's relative reading (the deepest
+// anchor fixed).
 void support_history(PlotWriter& plots, const History& h, const std::vector<double>& t,
                      const std::vector<plots::PlotBand>& bands) {
   const std::string bolt_tail = "_max_axial_kN";
@@ -48,6 +80,9 @@ void support_history(PlotWriter& plots, const History& h, const std::vector<doub
     plots.xy("bolt_forces_history.png", "Bolts and cables: largest axial force", kStepAxis,
              "axial force of largest magnitude along the bar [kN per bar], tension +", bolts, {},
              bands);
+  const std::vector<std::string>& cols = h.columns();
+  if (std::find(cols.begin(), cols.end(), "lining_max_thrust_kN_per_m") != cols.end())
+    lining_history(plots, h, t, bands);
   if (!points.empty())
     plots.xy("extensometers.png", "Extensometers: each point against the deepest anchor", kStepAxis,
              "relative reading [mm], extension +", points, {}, bands);
@@ -83,9 +118,10 @@ void PlotWriter::xy(const std::string& file, const std::string& title, const std
 
 void PlotWriter::panels(const std::string& file, const std::string& title,
                         const std::string& x_label, const std::vector<plots::PlotPanel>& panels,
-                        int height) {
+                        int height, const std::vector<plots::PlotBand>& bands) {
   std::string why;
-  note(plots::plot_panels_png(title, x_label, panels, output_path(dir_, file), 900, height, &why),
+  note(plots::plot_panels_png(title, x_label, panels, output_path(dir_, file), 900, height, &why,
+                              bands),
        file, why);
 }
 

@@ -31,9 +31,11 @@ class PlotWriter {
           const std::string& y_label, const std::vector<plots::PlotSeries>& series,
           const std::vector<plots::PlotMarker>& markers = {},
           const std::vector<plots::PlotBand>& bands = {});
-  /// DIR/`file`: charts stacked top to bottom (plots::plot_panels_png).
+  /// DIR/`file`: charts stacked top to bottom (plots::plot_panels_png),
+  /// with shaded `bands` behind each.
   void panels(const std::string& file, const std::string& title, const std::string& x_label,
-              const std::vector<plots::PlotPanel>& panels, int height);
+              const std::vector<plots::PlotPanel>& panels, int height,
+              const std::vector<plots::PlotBand>& bands = {});
   /// broken.png: broken crack elements by mode against history column
   /// `x` (labelled `x_label`), with the stages' `bands`.
   void broken_cracks(const History& h, const std::string& x, const std::string& x_label,
