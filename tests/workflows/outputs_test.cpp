@@ -318,7 +318,8 @@ TEST_F(Outputs, specimen_run_without_a_display_says_why_it_has_no_plots) {
 }
 
 // Under Xvfb both specimens get the pictures a person looks at: the
-// stress-strain curve, broken cracks against time and the cracked mesh.
+// stress-strain curve, broken cracks against time, the cracked mesh and
+// the stress over the specimen.
 TEST_F(Outputs, specimen_runs_render_their_plots_under_xvfb) {
   if (std::string(ROCKFDEM_XVFB_RUN).empty()) GTEST_SKIP() << "xvfb-run is not installed";
   // A display number of our own: concurrent `xvfb-run -a` race for the first free one.
@@ -331,9 +332,16 @@ TEST_F(Outputs, specimen_runs_render_their_plots_under_xvfb) {
   for (const std::string& scene : scenes) {
     const nlohmann::json j = summary_of(
         "run " + scene + " -j 1 --set output.plots=true --set output.vtk=false", out, 0, xvfb);
-    for (const char* png : {"stress_strain.png", "broken.png", "final_mesh.png"})
+    const bool disc = scene.find("brazilian") != std::string::npos;
+    for (const char* png : {"stress_strain.png", "broken.png", "final_mesh.png",
+                            disc ? "sigma_max_tensile.png" : "sigma_max_compressive.png"})
       EXPECT_TRUE(is_png(out / png)) << scene << ": " << png;
     EXPECT_TRUE(skipped_with(j, "plots").empty()) << scene << j["skipped"];
+    // final_mesh.png is the mesh, as a tunnel's: every triangle's edges in
+    // grey (hundreds of triangles, thousands of edge pixels), no stress map.
+    const rockfdem::plots::PngPixels mesh =
+        rockfdem::plots::read_png_pixels((out / "final_mesh.png").string());
+    EXPECT_GT(mesh.count({89, 89, 89}), 3000) << scene;
     fs::remove_all(out);
   }
 }

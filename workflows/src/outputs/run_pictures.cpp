@@ -239,6 +239,20 @@ plots::MeshPicture mesh_picture(const PictureContext& c) {
   return p;
 }
 
+plots::MeshPicture specimen_mesh_picture(const fdem::Engine& e) {
+  plots::MeshPicture p;
+  p.title = "Final mesh (as deformed): broken cracks in red";
+  p.bar_title = "zone";
+  p.edges = true;
+  p.hidden = excavated(e);
+  p.values.assign(e.n_triangles(), 0.0);
+  p.categories = {{0, "rock"}};
+  p.lines = broken_cracks(e, {}, false);
+  p.lines.front().rgb = {0.85, 0.0, 0.0};
+  p.lines.front().width = 2.5;
+  return p;
+}
+
 plots::MeshPicture whole_model_picture(const fdem::Engine& e, bool most_tensile) {
   plots::MeshPicture p;
   p.title = std::string("Whole model: most ") + (most_tensile ? "tensile" : "compressive") +

@@ -142,8 +142,11 @@ void PlotWriter::picture(const std::string& file, const coupling::VtkGrid& grid,
   note(plots::render_picture_png(grid, p, output_path(dir_, file), 1000, 800, &why), file, why);
 }
 
-void PlotWriter::final_mesh(const fdem::Engine& e, bool most_tensile) {
-  picture("final_mesh.png", picture_grid(e), whole_model_picture(e, most_tensile));
+void PlotWriter::specimen_pictures(const fdem::Engine& e, bool most_tensile) {
+  const coupling::VtkGrid grid = picture_grid(e);
+  picture("final_mesh.png", grid, specimen_mesh_picture(e));
+  picture(most_tensile ? "sigma_max_tensile.png" : "sigma_max_compressive.png", grid,
+          whole_model_picture(e, most_tensile));
 }
 
 std::string time_axis_label(const fdem::Engine& e) {
@@ -271,7 +274,7 @@ void specimen_plots(const fdem::Engine& e, const History& h, bool disc, const st
   plots.broken_cracks(h, "time", time_axis_label(e));
   // A disc splits in tension (the major principal stress), a UCS specimen
   // is crushed (the minor).
-  plots.final_mesh(e, disc);
+  plots.specimen_pictures(e, disc);
 }
 
 }  // namespace rockfdem::workflows

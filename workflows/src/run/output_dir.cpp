@@ -161,6 +161,7 @@ const char* const kFixedNames[] = {"summary.json",
                                    "displacement.png",
                                    "sigma_max_compressive.png",
                                    "sigma_min_compressive.png",
+                                   "sigma_max_tensile.png",
                                    "report.md"};
 
 struct Numbered {
