@@ -32,8 +32,10 @@ bool extensometer_point(const std::string& c) {
   return stem.find_first_not_of("0123456789", a + 2) == std::string::npos;
 }
 
+constexpr double kLargestFactorShown = 5;  // larger safety factors are drawn at 5
+
 // The lining ring's extremes over the run (history.csv's lining columns,
-// empty before its installation): the largest thrust, the largest |moment|
+// "nan" before its installation): the largest thrust, the largest |moment|
 // and, where its capacity is checked, the smallest safety factor with the
 // line of 1; nothing while the ring was never installed.
 void lining_history(PlotWriter& plots, const History& h, const std::vector<double>& t,
@@ -47,19 +49,21 @@ void lining_history(PlotWriter& plots, const History& h, const std::vector<doubl
     if (!std::isfinite(n[i])) continue;  // not installed at this step
     thrust.x.push_back(t[i]), thrust.y.push_back(n[i]);
     moment.x.push_back(t[i]), moment.y.push_back(m[i]);
-    if (std::isfinite(fs[i])) factor.x.push_back(t[i]), factor.y.push_back(fs[i]);
+    // A ring just installed carries little: factors in the thousands
+    // would leave the ones near 1 flat on the axis.
+    if (std::isfinite(fs[i]))
+      factor.x.push_back(t[i]), factor.y.push_back(std::min(fs[i], kLargestFactorShown));
   }
   if (thrust.x.empty()) return;
-  std::vector<plots::PlotPanel> panels{{"largest thrust N [kN/m], compression +", {thrust}, {}},
-                                       {"largest |moment| [kNm/m]", {moment}, {}}};
+  std::vector<plots::PlotPanel> panels{{"largest N [kN/m]", {thrust}, {}},
+                                       {"largest |M| [kNm/m]", {moment}, {}}};
   if (!factor.x.empty()) {
     const plots::PlotSeries capacity{
         "1: at capacity", {factor.x.front(), factor.x.back()}, {1.0, 1.0}};
-    panels.push_back({"smallest safety factor [-]", {factor, capacity}, {}});
+    panels.push_back({"smallest safety factor [-], up to 5", {factor, capacity}, {}});
   }
-  plots.panels("lining_history.png",
-               "Lining ring over the run: largest thrust and moment, smallest safety factor",
-               kStepAxis, panels, 900, bands);
+  plots.panels("lining_history.png", "Lining ring over the run (N: compression +)", kStepAxis,
+               panels, 900, bands);
 }
 
 // The support and the instruments over the run, where the history has
