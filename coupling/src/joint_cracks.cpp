@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <utility>
 
 namespace rockfdem::coupling {
@@ -40,6 +41,28 @@ JointCounts count_joint_cracks(const fdem::Engine& e, const std::vector<std::int
     n.yielding += d > 0.0 && d < 1.0;
   }
   return n;
+}
+
+double crack_normal_opening(const fdem::Engine& e, std::size_t c) {
+  const std::vector<double>& p = e.positions();
+  const auto n = e.crack_nodes(c);
+  const auto at = [&](int k) { return std::array<double, 2>{p[2 * k], p[2 * k + 1]}; };
+  const auto a = at(n[0]), b = at(n[1]);
+  const double tx = b[0] - a[0], ty = b[1] - a[1], length = std::hypot(tx, ty);
+  if (!(length > 0)) return 0;
+  double nx = -ty / length, ny = tx / length;
+  // Away from the first face's triangle: its centroid lies on the other side.
+  const auto tri = e.triangle_nodes(std::size_t(e.crack_triangles(c)[0]));
+  double cx = 0, cy = 0;
+  for (const int k : tri) cx += p[2 * k] / 3, cy += p[2 * k + 1] / 3;
+  if ((cx - a[0]) * nx + (cy - a[1]) * ny > 0) nx = -nx, ny = -ny;
+  const auto d = at(n[3]), q = at(n[2]);
+  return 0.5 * ((d[0] - a[0] + q[0] - b[0]) * nx + (d[1] - a[1] + q[1] - b[1]) * ny);
+}
+
+JointState joint_state(const fdem::Engine& e, std::size_t c, double opened) {
+  if (crack_normal_opening(e, c) > opened) return JointState::kOpened;
+  return e.crack_damage(c) > 0.0 ? JointState::kSliding : JointState::kIntact;
 }
 
 }  // namespace rockfdem::coupling

@@ -318,6 +318,42 @@ TEST(Plot, stage_bands_shade_their_part_of_the_x_axis) {
   EXPECT_GT(last - first, 800 * 0.3);
 }
 
+// Stacked charts shade the bands behind each chart (the run's stages on
+// lining_history.png): a band over the right half of [0, 1] shades the
+// right half of both charts, the upper and the lower half of the picture,
+// and nothing without bands.
+TEST(Plot, panels_shade_the_bands_behind_every_chart) {
+  SKIP_UNLESS_RENDERING();
+  const TempDir dir;
+  const std::vector<PlotPanel> panels{
+      {"thrust [kN/m]", {{"N", {0.0, 0.5, 1.0}, {0.0, 900.0, 1200.0}}}, {}},
+      {"safety factor", {{"SF", {0.0, 0.5, 1.0}, {5.0, 2.0, 1.5}}}, {}}};
+  std::string why;
+  ASSERT_TRUE(plot_panels_png("t", "step", panels, dir.file("plain.png"), 800, 700, &why)) << why;
+  ASSERT_TRUE(plot_panels_png("t", "step", panels, dir.file("banded.png"), 800, 700, &why,
+                              {{0.5, 1.0, "2 equilibrium"}}))
+      << why;
+  const PngPixels plain = read_png_pixels(dir.file("plain.png"));
+  const PngPixels banded = read_png_pixels(dir.file("banded.png"));
+  EXPECT_LT(plain.count({222, 232, 245}), 50);
+  // Shaded pixels per half of the picture, and left or right of its middle.
+  int upper = 0, lower = 0, left = 0;
+  for (int j = 0; j < banded.height; ++j)
+    for (int i = 0; i < banded.width; ++i) {
+      const std::size_t k = 3 * (std::size_t(j) * std::size_t(banded.width) + std::size_t(i));
+      const bool shade = std::abs(banded.rgb[k] - 222) <= 3 &&
+                         std::abs(banded.rgb[k + 1] - 232) <= 3 &&
+                         std::abs(banded.rgb[k + 2] - 245) <= 3;
+      if (!shade) continue;
+      (j < banded.height / 2 ? lower : upper) += 1;
+      left += i < banded.width * 0.4;
+    }
+  // Each chart's band: about 350 px wide and over 150 px high.
+  EXPECT_GT(upper, 30000) << lower;
+  EXPECT_GT(lower, 30000) << upper;
+  EXPECT_EQ(left, 0);
+}
+
 // Tick values are round multiples of 1, 2 or 5 times a power of ten,
 // written with the decimals the step needs: the colour bar of a range
 // 8.48-166.2 reads 20, 40, ..., 160, never "166." or "8.48".

@@ -4,7 +4,9 @@
 // counts them apart and flags them in the VTK files, bit for bit with any
 // thread count.
 #include <gtest/gtest.h>
+#include <unistd.h>
 
+#include <array>
 #include <cmath>
 #include <cstring>
 #include <filesystem>
@@ -18,6 +20,7 @@
 #include "outputs/joint_results.hpp"
 #include "rockfdem/error.hpp"
 #include "rockfdem/fdem/engine.hpp"
+#include "rockfdem/plots/plot.hpp"
 #include "rockfdem/workflows/scene.hpp"
 
 namespace fs = std::filesystem;
@@ -262,4 +265,43 @@ TEST(JointScene, joint_profile_reports_an_imposed_slip_and_opening) {
   EXPECT_TRUE(near(f[6], 20)) << f[6];
   EXPECT_TRUE(near(f[10], 1)) << f[10];
   EXPECT_EQ(f[11], "sliding");
+}
+
+// The joints in the pictures: `rockfdem mesh` draws the traces as meshed
+// in purple in preview.png (a scene without joints has none of it), and a
+// run's final_mesh.png and displacement.png draw the joint elements by
+// state, in colours the rock's cracks do not take: intact lavender,
+// sliding purple, opened cyan, the states summary.json counts.
+TEST(JointScene, pictures_draw_the_joints_by_state_and_the_preview_their_traces) {
+  if (std::string(ROCKFDEM_XVFB_RUN).empty()) GTEST_SKIP() << "xvfb-run is not installed";
+  const std::string xvfb =
+      std::string(ROCKFDEM_XVFB_RUN) + " -n " + std::to_string(100 + getpid() % 800) + " -a ";
+  const fs::path jointed = rockfdem::test::scratch("joints-pictures"),
+                 plain = rockfdem::test::scratch("joints-pictures-plain");
+  const std::string plots = " -q -j 1 --set output.plots=true --set output.vtk=false -o ";
+  rockfdem::test::Result r = rockfdem::test::run("mesh " + kScene + plots + jointed.string(), xvfb);
+  ASSERT_EQ(r.code, 0) << r.output;
+  r = rockfdem::test::run(
+      "mesh " + std::string(ROCKFDEM_TEST_DIR) + "/good_circular.toml" + plots + plain.string(),
+      xvfb);
+  ASSERT_EQ(r.code, 0) << r.output;
+  const std::array<int, 3> purple{115, 0, 179}, lavender{158, 133, 209}, cyan{0, 191, 217};
+  using rockfdem::plots::read_png_pixels;
+  // Over 50 m of traces in the window, 2 px wide at about 30 px/m.
+  EXPECT_GT(read_png_pixels((jointed / "preview.png").string()).count(purple), 1000);
+  EXPECT_LT(read_png_pixels((plain / "preview.png").string()).count(purple), 20);
+  r = rockfdem::test::run("run " + kScene + plots + jointed.string() + " --force", xvfb);
+  ASSERT_EQ(r.code, 0) << r.output;
+  const nlohmann::json j = summary_of(jointed)["joints"];
+  for (const char* png : {"final_mesh.png", "displacement.png"}) {
+    const rockfdem::plots::PngPixels p = read_png_pixels((jointed / png).string());
+    // Each state drawn where the summary counts elements in it (an
+    // element's 0.2-0.4 m is 10 px or more); the legend's strokes alone
+    // are about 150 px each.
+    const long sliding = j["yielding"].get<long>() + j["residual"].get<long>();
+    EXPECT_GT(p.count(purple), sliding > 0 ? 300 : 0) << png;
+    EXPECT_GT(p.count(lavender) + p.count(purple) + p.count(cyan), 1000) << png;
+  }
+  fs::remove_all(jointed);
+  fs::remove_all(plain);
 }

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "cli_runner.hpp"
+#include "rockfdem/plots/plot.hpp"
 
 namespace fs = std::filesystem;
 using namespace rockfdem::test;
@@ -317,7 +318,8 @@ TEST_F(Outputs, specimen_run_without_a_display_says_why_it_has_no_plots) {
 }
 
 // Under Xvfb both specimens get the pictures a person looks at: the
-// stress-strain curve, broken cracks against time and the cracked mesh.
+// stress-strain curve, broken cracks against time, the cracked mesh and
+// the stress over the specimen.
 TEST_F(Outputs, specimen_runs_render_their_plots_under_xvfb) {
   if (std::string(ROCKFDEM_XVFB_RUN).empty()) GTEST_SKIP() << "xvfb-run is not installed";
   // A display number of our own: concurrent `xvfb-run -a` race for the first free one.
@@ -330,9 +332,16 @@ TEST_F(Outputs, specimen_runs_render_their_plots_under_xvfb) {
   for (const std::string& scene : scenes) {
     const nlohmann::json j = summary_of(
         "run " + scene + " -j 1 --set output.plots=true --set output.vtk=false", out, 0, xvfb);
-    for (const char* png : {"stress_strain.png", "broken.png", "final_mesh.png"})
+    const bool disc = scene.find("brazilian") != std::string::npos;
+    for (const char* png : {"stress_strain.png", "broken.png", "final_mesh.png",
+                            disc ? "sigma_max_tensile.png" : "sigma_max_compressive.png"})
       EXPECT_TRUE(is_png(out / png)) << scene << ": " << png;
     EXPECT_TRUE(skipped_with(j, "plots").empty()) << scene << j["skipped"];
+    // final_mesh.png is the mesh, as a tunnel's: every triangle's edges in
+    // grey (hundreds of triangles, thousands of edge pixels), no stress map.
+    const rockfdem::plots::PngPixels mesh =
+        rockfdem::plots::read_png_pixels((out / "final_mesh.png").string());
+    EXPECT_GT(mesh.count({89, 89, 89}), 3000) << scene;
     fs::remove_all(out);
   }
 }
@@ -353,6 +362,74 @@ TEST_F(Outputs, tunnel_runs_plot_bolt_forces_and_extensometers_over_the_run) {
   EXPECT_TRUE(is_png(out / "bolt_forces_history.png")) << j["skipped"];
   EXPECT_FALSE(fs::exists(out / "extensometers.png")) << "no extensometers";
   fs::remove_all(out);
+}
+
+// A lined and bolted tunnel: history.csv ends with the ring's extremes
+// ("nan" at the hand-off, before the lining stage installs the ring; then
+// those of each lining_NNNNNN.csv), drawn over the run in
+// lining_history.png; support_forces.png draws the ring's N (compression
+// blue) and M (green) and the bolts' force as diagrams on the geometry.
+TEST_F(Outputs, lining_extremes_end_the_history_and_support_forces_are_drawn_on_the_geometry) {
+  if (std::string(ROCKFDEM_XVFB_RUN).empty()) GTEST_SKIP() << "xvfb-run is not installed";
+  const std::string xvfb =
+      std::string(ROCKFDEM_XVFB_RUN) + " -n " + std::to_string(100 + getpid() % 800) + " -a";
+  const nlohmann::json j = summary_of("run " + kTestDir +
+                                          "/restart_support.toml -j 1 --set output.plots=true"
+                                          " --set output.vtk=false"
+                                          " --set materials.lining.compressive_strength=30e6",
+                                      out, 0, xvfb);
+  std::istringstream in(read_text(out / "history.csv"));
+  std::string header, first;
+  std::getline(in, header);
+  std::getline(in, first);
+  const std::string tail =
+      ",lining_max_thrust_kN_per_m,lining_max_abs_moment_kNm_per_m,lining_min_safety_factor";
+  ASSERT_GT(header.size(), tail.size());
+  EXPECT_EQ(header.substr(header.size() - tail.size()), tail);
+  EXPECT_EQ(first.substr(first.size() - 12), ",nan,nan,nan") << first;
+  const std::map<std::string, double> last = last_history_row(out / "history.csv");
+  // The same segment forces as the step's lining file: its largest thrust
+  // and |moment|, its smallest safety factor (all printed with 6 digits).
+  char name[40];
+  std::snprintf(name, sizeof name, "lining_%06ld.csv", long(last.at("step")));
+  std::istringstream lining(read_text(out / name));
+  std::string line;
+  std::getline(lining, line);
+  double n_max = -1e300, m_max = 0, fs_min = 1e300;
+  while (std::getline(lining, line)) {
+    std::vector<std::string> v;
+    for (std::stringstream s(line); std::getline(s, line, ',');) v.push_back(line);
+    n_max = std::max(n_max, std::stod(v.at(7)));
+    m_max = std::max(m_max, std::abs(std::stod(v.at(8))));
+    fs_min = std::min(fs_min, std::stod(v.at(11)));
+  }
+  EXPECT_GT(last.at("lining_max_thrust_kN_per_m"), 0);
+  EXPECT_NEAR(last.at("lining_max_thrust_kN_per_m"), n_max, 1e-5 * std::abs(n_max));
+  EXPECT_NEAR(last.at("lining_max_abs_moment_kNm_per_m"), m_max, 1e-5 * m_max + 1e-9);
+  EXPECT_NEAR(last.at("lining_min_safety_factor"), fs_min, 1e-5 * fs_min + 1e-9);
+  EXPECT_TRUE(is_png(out / "lining_history.png")) << j["skipped"];
+  ASSERT_TRUE(is_png(out / "support_forces.png")) << j["skipped"];
+  // Of 1000 x 800 pixels: the ring's N diagram, outline and hatching about
+  // 19 m of 2 px lines at 50 px/m, in the compression blue; its M diagram
+  // in dark green; the legend's strokes (48 x 3 px each) are a few hundred.
+  const rockfdem::plots::PngPixels p =
+      rockfdem::plots::read_png_pixels((out / "support_forces.png").string());
+  EXPECT_GT(p.count({26, 64, 217}), 1000);
+  EXPECT_GT(p.count({0, 128, 38}), 500);
+}
+
+// Without a ring or bolts there is no support to draw.
+TEST_F(Outputs, an_unsupported_tunnel_has_no_support_forces_picture) {
+  if (std::string(ROCKFDEM_XVFB_RUN).empty()) GTEST_SKIP() << "xvfb-run is not installed";
+  const std::string xvfb =
+      std::string(ROCKFDEM_XVFB_RUN) + " -n " + std::to_string(100 + getpid() % 800) + " -a";
+  const nlohmann::json j = summary_of("run " + kTestDir +
+                                          "/extensometer_circular.toml -j 1 --set output.plots=true"
+                                          " --set output.vtk=false",
+                                      out, 0, xvfb);
+  EXPECT_TRUE(is_png(out / "final_mesh.png")) << j["skipped"];
+  EXPECT_FALSE(fs::exists(out / "support_forces.png"));
+  EXPECT_FALSE(fs::exists(out / "lining_history.png"));
 }
 
 // A full disk: the run stops with exit 1 and one line

@@ -214,7 +214,11 @@ void add_under(vtkRenderer* renderer, const std::vector<vtkSmartPointer<vtkActor
 // the chart (whose plot area is transparent); their labels horizontal at
 // each band's top left, a label that would run into an earlier one in its
 // row a row lower. Placed in pixels, after a first render has laid out the axes.
-void add_bands(vtkContextView* view, vtkChartXY* chart, const std::vector<PlotBand>& bands) {
+// The shaded boxes are appended to `boxes`, for the caller to put under
+// the charts at once (add_under): a second call would lift the first's
+// boxes over the charts.
+void add_bands(vtkContextView* view, vtkChartXY* chart, const std::vector<PlotBand>& bands,
+               std::vector<vtkSmartPointer<vtkActor2D>>& boxes) {
   if (bands.empty()) return;
   constexpr unsigned char kShade[2][3] = {{222, 232, 245}, {240, 240, 240}};
   constexpr double kRow = 17;  // [px] of a 13 pt line, with a gap
@@ -227,7 +231,6 @@ void add_bands(vtkContextView* view, vtkChartXY* chart, const std::vector<PlotBa
   const auto pixel = [&](double v) {
     return px0 + (std::clamp(v, x0, x1) - x0) / (x1 - x0) * (px1 - px0);
   };
-  std::vector<vtkSmartPointer<vtkActor2D>> boxes;
   std::vector<double> row_end;  // per row, the right edge of its last label [px]
   for (std::size_t i = 0; i < bands.size(); ++i) {
     const PlotBand& b = bands[i];
@@ -250,7 +253,6 @@ void add_bands(vtkContextView* view, vtkChartXY* chart, const std::vector<PlotBa
     text->SetDisplayPosition(static_cast<int>(left), static_cast<int>(top - 4 - kRow * row));
     view->GetRenderer()->AddActor2D(text);
   }
-  add_under(view->GetRenderer(), boxes);
 }
 
 void label_axis(vtkAxis* axis, const std::string& title) {
@@ -300,14 +302,16 @@ bool plot_xy_png(const std::string& title, const std::string& x_label, const std
     add_marker_lines(chart, shown, y_range);
     chart->SetShowLegend(true);
     chart->GetLegend()->GetLabelProperties()->SetFontSize(14);
-    add_bands(view, chart, bands);
+    std::vector<vtkSmartPointer<vtkActor2D>> boxes;
+    add_bands(view, chart, bands, boxes);
+    add_under(view->GetRenderer(), boxes);
     add_marker_labels(view, chart, shown);
   });
 }
 
 bool plot_panels_png(const std::string& title, const std::string& x_label,
                      const std::vector<PlotPanel>& panels, const std::string& path, int width,
-                     int height, std::string* why) {
+                     int height, std::string* why, const std::vector<PlotBand>& bands) {
   if (panels.empty()) throw std::invalid_argument("plot has no panels");
   for (const PlotPanel& p : panels) {
     check_series(p.lines.empty() ? p.markers : p.lines);
@@ -346,6 +350,18 @@ bool plot_panels_png(const std::string& title, const std::string& x_label,
       chart->SetShowLegend(p.lines.size() + p.markers.size() > 1);
       chart->GetLegend()->GetLabelProperties()->SetFontSize(14);
     }
+    // The bands behind every chart (the stages of a run's curves), their
+    // labels on the first only.
+    std::vector<vtkSmartPointer<vtkActor2D>> boxes;
+    for (int i = 0; i < n && !bands.empty(); ++i) {
+      auto* chart = vtkChartXY::SafeDownCast(matrix->GetChart(vtkVector2i(0, n - 1 - i)));
+      if (!chart) continue;
+      std::vector<PlotBand> shaded = bands;
+      if (i > 0)
+        for (PlotBand& b : shaded) b.label.clear();
+      add_bands(view, chart, shaded, boxes);
+    }
+    add_under(view->GetRenderer(), boxes);
   });
 }
 

@@ -127,27 +127,39 @@ std::vector<std::string> tunnel_notes(const Scene& scene) {
 
 void write_mesh_preview(const Scene& scene, const mesh::Mesh& m, const std::string& dir,
                         RunRecord& summary, bool quiet) {
-  coupling::VtkGrid grid = coupling::mesh_grid(m);
+  const coupling::VtkGrid grid = coupling::mesh_grid(m);
   plots::MeshOverlay overlay;
-  grid.cell_arrays.push_back(coupling::triangle_cell_array(
-      grid, coupling::scalar_array("region", regions(m, overlay.categories))));
+  plots::MeshPicture p;
+  p.values = regions(m, overlay.categories);
+  p.bar_title = "region";
+  p.overlay = &overlay;
   for (const auto& s : scene.bolts.segments) overlay.segments.push_back({s[0], s[1], s[2], s[3]});
-  std::optional<plots::MeshView> view;
   if (const auto opening = mesh::find_opening(m)) {
     const bool shaped = scene.mesh.kind == mesh::ModelKind::kTunnel;
     const std::vector<mesh::KeyPoint> key_points =
         mesh::opening_key_points(m, *opening, shaped ? &scene.mesh.tunnel : nullptr);
-    for (const mesh::KeyPoint& p : key_points) overlay.markers.push_back({p.x, p.y, p.name});
+    for (const mesh::KeyPoint& k : key_points) overlay.markers.push_back({k.x, k.y, k.name});
     add_instruments(scene, key_points, overlay);
     overlay.notes = tunnel_notes(scene);
-    view = window(*opening, scene);
+    p.view = window(*opening, scene);
   }
+  // The tagged edges in black; the joint traces as meshed, in the purple
+  // the run's pictures draw joints in (their state there).
+  plots::PictureLines tagged{"", {0, 0, 0}, 2, {}};
+  for (const auto& l : grid.lines)
+    tagged.segments.push_back({grid.x[l[0]], grid.y[l[0]], grid.x[l[1]], grid.y[l[1]]});
+  p.lines.push_back(std::move(tagged));
+  if (!m.joint_edges.empty()) {
+    plots::PictureLines joints{"joint traces", {0.45, 0.0, 0.7}, 2, {}};
+    for (const mesh::JointEdge& j : m.joint_edges)
+      joints.segments.push_back({m.x[j.a], m.y[j.a], m.x[j.b], m.y[j.b]});
+    p.lines.push_back(std::move(joints));
+  }
+  p.title = std::string("Preview: regions, bolts and cables (dark red), key points (blue), ") +
+            (m.joint_edges.empty() ? "instruments (green)" : "instruments (green), joints");
   std::string why;
   const bool drawn =
-      plots::render_mesh_png(grid, "region", 0, output_path(dir, "preview.png"),
-                             "Preview: regions, bolts and cables (dark red), key points (blue), "
-                             "instruments (green)",
-                             1000, 800, &why, view ? &*view : nullptr, &overlay);
+      plots::render_picture_png(grid, p, output_path(dir, "preview.png"), 1000, 800, &why);
   if (drawn) return;
   summary.skipped.push_back("plot preview.png: " + why);
   if (!quiet) std::cerr << "rockfdem: preview.png skipped: " << why << '\n';

@@ -1,5 +1,6 @@
 #include "outputs/history.hpp"
 
+#include <cmath>
 #include <cstdio>
 #include <stdexcept>
 
@@ -18,7 +19,13 @@ void History::append_text(const std::vector<double>& row) {
   if (row.size() != columns_.size()) throw std::logic_error("history row has the wrong width");
   char buf[32];
   for (std::size_t i = 0; i < row.size(); ++i) {
-    std::snprintf(buf, sizeof buf, "%.10g", row[i]);
+    // NaN: no value at this step (the lining's columns before it is
+    // installed), written "nan", which strtod, Python's float() and
+    // NumPy's loadtxt read back as NaN (an empty cell they refuse).
+    if (std::isnan(row[i]))
+      std::snprintf(buf, sizeof buf, "nan");
+    else
+      std::snprintf(buf, sizeof buf, "%.10g", row[i]);
     text_ += (i ? "," : "") + std::string(buf);
   }
   text_ += '\n';
@@ -39,6 +46,15 @@ void History::restore(const std::vector<std::vector<double>>& rows) {
   for (const auto& r : rows) append_text(r);
   rows_ = rows;
   coupling::atomic_write_text(path_, text_);
+}
+
+std::vector<std::vector<double>> History::rows_from_json(const nlohmann::json& rows) {
+  std::vector<std::vector<double>> out;
+  for (const nlohmann::json& r : rows) {
+    out.emplace_back();
+    for (const nlohmann::json& v : r) out.back().push_back(v.is_null() ? NAN : v.get<double>());
+  }
+  return out;
 }
 
 std::vector<double> History::column(const std::string& name) const {

@@ -20,6 +20,15 @@ std::size_t arg_max(const std::vector<SectionForces>& f, F value) {
   return best;
 }
 
+// The segments of the largest thrust and of the largest |moment|: the
+// summary's extremes and history.csv's lining columns.
+std::size_t max_thrust(const std::vector<SectionForces>& f) {
+  return arg_max(f, [](const SectionForces& s) { return s.thrust; });
+}
+std::size_t max_abs_moment(const std::vector<SectionForces>& f) {
+  return arg_max(f, [](const SectionForces& s) { return std::abs(s.moment); });
+}
+
 // Of the segments in the floor part (`invert`) or out of it; 0 where none.
 double median_thickness(const LiningGeometry& g, const std::vector<char>& in_invert, bool invert) {
   std::vector<double> t;
@@ -119,12 +128,35 @@ std::vector<SectionForces> LiningOutput::forces(const fdem::Engine& e) const {
   return lining_forces(geometry_, stress);
 }
 
-void LiningOutput::at_output_step(const OutputStep& step, std::vector<double>&) {
+std::vector<std::string> LiningOutput::history_columns() const {
+  return {"lining_max_thrust_kN_per_m", "lining_max_abs_moment_kNm_per_m",
+          "lining_min_safety_factor"};
+}
+
+std::array<double, 3> LiningOutput::history_values(const std::vector<SectionForces>& f) const {
+  const double nan = std::nan("");
+  if (f.empty()) return {nan, nan, nan};
+  const double n = f[max_thrust(f)].thrust / 1e3;
+  const double m = std::abs(f[max_abs_moment(f)].moment) / 1e3;
+  double fs = nan;
+  if (sections_) {
+    const std::vector<double> all = safety_factors(f);
+    const double least = *std::min_element(all.begin(), all.end());
+    if (std::isfinite(least)) fs = least;  // an unloaded ring has no finite factor
+  }
+  return {n, m, fs};
+}
+
+void LiningOutput::at_output_step(const OutputStep& step, std::vector<double>& row) {
   const fdem::Engine& e = step.engine;
-  if (!installed_ || !installed(e)) return;
-  char name[40];
-  std::snprintf(name, sizeof name, "lining_%06ld.csv", e.step_count());
-  coupling::atomic_write_text(output_path(dir_, name), csv(e.step_count(), forces(e)));
+  std::vector<SectionForces> f;
+  if (installed_ && installed(e)) {
+    f = forces(e);
+    char name[40];
+    std::snprintf(name, sizeof name, "lining_%06ld.csv", e.step_count());
+    coupling::atomic_write_text(output_path(dir_, name), csv(e.step_count(), f));
+  }
+  for (const double v : history_values(f)) row.push_back(v);
 }
 
 LiningForceFigures LiningOutput::finish(const fdem::Engine& e, const std::string& dir,
@@ -138,10 +170,9 @@ LiningForceFigures LiningOutput::figures(const fdem::Engine& e, const std::strin
   last_ = forces(e);
   coupling::atomic_write_text(output_path(dir, "lining.csv"), csv(e.step_count(), last_));
   const auto angle = [&](std::size_t i) { return geometry_.segments[i].angle_deg; };
-  const std::size_t n_max = arg_max(last_, [](const SectionForces& f) { return f.thrust; });
+  const std::size_t n_max = max_thrust(last_);
   const std::size_t n_min = arg_max(last_, [](const SectionForces& f) { return -f.thrust; });
-  const std::size_t m_max =
-      arg_max(last_, [](const SectionForces& f) { return std::abs(f.moment); });
+  const std::size_t m_max = max_abs_moment(last_);
   const std::size_t v_max =
       arg_max(last_, [](const SectionForces& f) { return std::abs(f.shear); });
   LiningForceFigures f;

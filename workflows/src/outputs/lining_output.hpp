@@ -4,6 +4,7 @@
 // lining_capacity.png (docs/output-formats.md, docs/support.md).
 #pragma once
 
+#include <array>
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
@@ -34,6 +35,10 @@ class LiningOutput : public OutputStepObserver {
   /// `sections` (none: forces only); files go to `dir`.
   LiningOutput(const mesh::Mesh& m, double invert_top, std::optional<RingSections> sections,
                std::string dir);
+  /// The ring's segments (as built) and their forces at finish() (empty
+  /// before): what support_forces.png draws.
+  const LiningGeometry& geometry() const { return geometry_; }
+  const std::vector<SectionForces>& final_forces() const { return last_; }
   /// Whether the mesh has a ring to cut into segments.
   bool has_ring() const { return !geometry_.segments.empty(); }
   /// Whether every lining triangle carries load in `e`.
@@ -41,8 +46,17 @@ class LiningOutput : public OutputStepObserver {
   /// Whether the run has installed the ring as lining (before, its
   /// triangles are ground still to be excavated): its forces count from then.
   void set_installed(bool installed) { installed_ = installed; }
-  /// DIR/lining_<step>.csv, once installed and every lining triangle is active.
+  /// The ring's extremes per output step: "lining_max_thrust_kN_per_m",
+  /// "lining_max_abs_moment_kNm_per_m", "lining_min_safety_factor".
+  std::vector<std::string> history_columns() const override;
+  /// DIR/lining_<step>.csv, once installed and every lining triangle is
+  /// active, and the ring's extremes (history_values) into the row.
   void at_output_step(const OutputStep& step, std::vector<double>& row) override;
+  /// history_columns()' values for forces `f`: the largest thrust [kN/m],
+  /// the largest |moment| [kNm/m] and the smallest safety factor (NaN
+  /// without a capacity check or when unloaded); all NaN for no forces
+  /// (the ring not installed).
+  std::array<double, 3> history_values(const std::vector<SectionForces>& f) const;
   /// DIR/lining.csv and the ring's force extremes and capacity check; given
   /// `plots`, lining_forces.png and (with a compressive strength)
   /// lining_capacity.png.

@@ -14,6 +14,7 @@
 #include "outputs/joint_results.hpp"
 #include "outputs/rock_plausibility.hpp"
 #include "outputs/run_report.hpp"
+#include "outputs/support_diagrams.hpp"
 #include "record/output_dir.hpp"
 #include "rockfdem/coupling/atomic_file.hpp"
 #include "rockfdem/coupling/fdem_model.hpp"
@@ -216,7 +217,7 @@ nlohmann::json RunOutputs::state() const {
 
 void RunOutputs::restore(const nlohmann::json& s, const std::string& from_dir) {
   namespace fs = std::filesystem;
-  history_->restore(s.at("history").get<std::vector<std::vector<double>>>());
+  history_->restore(History::rows_from_json(s.at("history")));
   handoff_dt_ = s.value("handoff_dt", 0.0);  // 0: a checkpoint from before it was kept
   max_rotation_deg_ = s.value("max_rotation_deg", 0.0);
   if (instruments_ && s.contains("instruments") && s.at("instruments").is_object())
@@ -285,7 +286,12 @@ void RunOutputs::finish(const fdem::Engine& e, const mesh::Mesh& m, PhaseTimer& 
     if (!ctx_.quiet) std::cerr << "warning: " << summary_.support->line() << '\n';
   }
   if (plots) {
-    tunnel_pictures(*plots, {e, m, scene_, bolts_, key_points_->node_displacements(e)});
+    const PictureContext pictures{e, m, scene_, bolts_, key_points_->node_displacements(e)};
+    tunnel_pictures(*plots, pictures);
+    if (lining_forces)
+      support_forces_plot(*plots, pictures, &lining_->geometry(), &lining_->final_forces());
+    else
+      support_forces_plot(*plots, pictures, nullptr, nullptr);
     pictures_ = plots->rendered();
   }
   timer.stamp("output");

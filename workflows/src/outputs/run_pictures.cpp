@@ -6,6 +6,7 @@
 
 #include "outputs/broken_zone.hpp"
 #include "outputs/picture_outlines.hpp"
+#include "rockfdem/coupling/joint_cracks.hpp"
 #include "rockfdem/fdem/bolt_sections.hpp"
 #include "rockfdem/mesh/opening.hpp"
 
@@ -41,6 +42,31 @@ std::vector<plots::PictureLines> broken_cracks(const fdem::Engine& e, const std:
     sets[set].segments.push_back(between(e, n[0], n[1]));
   }
   return sets;
+}
+
+// Joint elements between two active triangles by state, told apart from
+// the rock's cracks by their purple and cyan: intact, sliding (past the
+// peak), opened by more than kOpenedJoint; one legend entry per state drawn.
+constexpr double kOpenedJoint = 1e-3;  // [m]
+
+std::vector<plots::PictureLines> joint_lines(const fdem::Engine& e, const mesh::Mesh& m) {
+  if (m.joint_edges.empty()) return {};
+  const std::vector<std::int32_t> on = coupling::joint_crack_traces(e, m);
+  std::vector<plots::PictureLines> sets{{"joint, intact", {0.62, 0.52, 0.82}, 1.5, {}},
+                                        {"joint, sliding", {0.45, 0.0, 0.7}, 2.5, {}},
+                                        {"joint, opened > 1 mm", {0.0, 0.75, 0.85}, 3, {}}};
+  for (std::size_t k = 0; k < e.n_cracks(); ++k) {
+    if (!on[k]) continue;
+    const auto t = e.crack_triangles(k);
+    if (!e.active(t[0]) || !e.active(t[1])) continue;
+    const auto n = e.crack_nodes(k);
+    sets[std::size_t(coupling::joint_state(e, k, kOpenedJoint))].segments.push_back(
+        between(e, n[0], n[1]));
+  }
+  std::vector<plots::PictureLines> out;
+  for (auto& l : sets)
+    if (!l.segments.empty()) out.push_back(std::move(l));
+  return out;
 }
 
 // The installed lining's faces: edges of one active lining triangle only.
@@ -129,6 +155,8 @@ plots::MeshPicture framed(const PictureContext& c, bool stress) {
   if (stress)
     for (std::size_t t = 0; t < bolted.size(); ++t) p.hidden[t] |= bolted[t];
   p.lines = broken_cracks(c.e, bolted, !stress);
+  if (!stress)
+    for (auto& l : joint_lines(c.e, c.m)) p.lines.push_back(std::move(l));
   plots::PictureLines lining = lining_faces(c);
   if (!lining.segments.empty()) p.lines.push_back(lining);
   for (const auto& l : bolt_lines(c)) p.lines.push_back(l);
@@ -183,7 +211,8 @@ plots::MeshPicture principal_picture(const PictureContext& c, bool most_compress
 
 plots::MeshPicture mesh_picture(const PictureContext& c) {
   plots::MeshPicture p;
-  p.title = "Final mesh: zones, broken cracks in red";
+  p.title = c.m.joint_edges.empty() ? "Final mesh: zones, broken cracks in red"
+                                    : "Final mesh: zones, broken cracks in red, joints by state";
   p.bar_title = "zone";
   p.edges = true;
   p.hidden = excavated(c.e);
@@ -202,10 +231,25 @@ plots::MeshPicture mesh_picture(const PictureContext& c) {
   p.lines = broken_cracks(c.e, {}, false);
   p.lines.front().rgb = {0.85, 0.0, 0.0};
   p.lines.front().width = 2.5;
+  for (auto& l : joint_lines(c.e, c.m)) p.lines.push_back(std::move(l));
   p.view = opening_window(c.m);
   plots::PictureLines edge =
       fracture_zone_lines(c.m, p.view ? 0.01 * (p.view->x1 - p.view->x0) : 0);
   if (!edge.segments.empty()) p.lines.push_back(std::move(edge));
+  return p;
+}
+
+plots::MeshPicture specimen_mesh_picture(const fdem::Engine& e) {
+  plots::MeshPicture p;
+  p.title = "Final mesh (as deformed): broken cracks in red";
+  p.bar_title = "zone";
+  p.edges = true;
+  p.hidden = excavated(e);
+  p.values.assign(e.n_triangles(), 0.0);
+  p.categories = {{0, "rock"}};
+  p.lines = broken_cracks(e, {}, false);
+  p.lines.front().rgb = {0.85, 0.0, 0.0};
+  p.lines.front().width = 2.5;
   return p;
 }
 

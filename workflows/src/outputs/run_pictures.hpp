@@ -50,7 +50,12 @@ plots::MeshPicture principal_picture(const PictureContext& c, bool most_compress
 /// zone's edge.
 plots::MeshPicture mesh_picture(const PictureContext& c);
 
-/// A specimen's whole model (final_mesh.png) coloured by the most compressive
+/// final_mesh.png of a specimen: the whole model as deformed, its
+/// triangles' edges, every broken crack in red (as a tunnel's), the
+/// triangles no longer active left out.
+plots::MeshPicture specimen_mesh_picture(const fdem::Engine& e);
+
+/// A specimen's whole model coloured by the most compressive
 /// in-plane principal stress [MPa], compression positive, or with
 /// `most_tensile` (a Brazilian disc) the most tensile, tension positive;
 /// every broken crack in black, excavated triangles grey.

@@ -1,5 +1,6 @@
 #include "outputs/run_plots.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <iostream>
 
@@ -31,9 +32,44 @@ bool extensometer_point(const std::string& c) {
   return stem.find_first_not_of("0123456789", a + 2) == std::string::npos;
 }
 
+constexpr double kLargestFactorShown = 5;  // larger safety factors are drawn at 5
+
+// The lining ring's extremes over the run (history.csv's lining columns,
+// "nan" before its installation): the largest thrust, the largest |moment|
+// and, where its capacity is checked, the smallest safety factor with the
+// line of 1; nothing while the ring was never installed.
+void lining_history(PlotWriter& plots, const History& h, const std::vector<double>& t,
+                    const std::vector<plots::PlotBand>& bands) {
+  const std::vector<double> n = h.column("lining_max_thrust_kN_per_m");
+  const std::vector<double> m = h.column("lining_max_abs_moment_kNm_per_m");
+  const std::vector<double> fs = h.column("lining_min_safety_factor");
+  plots::PlotSeries thrust{"largest thrust N", {}, {}}, moment{"largest |M|", {}, {}};
+  plots::PlotSeries factor{"smallest safety factor", {}, {}};
+  for (std::size_t i = 0; i < t.size(); ++i) {
+    if (!std::isfinite(n[i])) continue;  // not installed at this step
+    thrust.x.push_back(t[i]), thrust.y.push_back(n[i]);
+    moment.x.push_back(t[i]), moment.y.push_back(m[i]);
+    // A ring just installed carries little: factors in the thousands
+    // would leave the ones near 1 flat on the axis.
+    if (std::isfinite(fs[i]))
+      factor.x.push_back(t[i]), factor.y.push_back(std::min(fs[i], kLargestFactorShown));
+  }
+  if (thrust.x.empty()) return;
+  std::vector<plots::PlotPanel> panels{{"largest N [kN/m]", {thrust}, {}},
+                                       {"largest |M| [kNm/m]", {moment}, {}}};
+  if (!factor.x.empty()) {
+    const plots::PlotSeries capacity{
+        "1: at capacity", {factor.x.front(), factor.x.back()}, {1.0, 1.0}};
+    panels.push_back({"smallest safety factor [-], up to 5", {factor, capacity}, {}});
+  }
+  plots.panels("lining_history.png", "Lining ring over the run (N: compression +)", kStepAxis,
+               panels, 900, bands);
+}
+
 // The support and the instruments over the run, where the history has
-// them: each bolt's and cable's largest axial force, and each extensometer
-// point's relative reading (the deepest anchor fixed).
+// them: each bolt's and cable's largest axial force, the lining ring's
+// extremes, and each extensometer point's relative reading (the deepest
+// anchor fixed).
 void support_history(PlotWriter& plots, const History& h, const std::vector<double>& t,
                      const std::vector<plots::PlotBand>& bands) {
   const std::string bolt_tail = "_max_axial_kN";
@@ -48,6 +84,9 @@ void support_history(PlotWriter& plots, const History& h, const std::vector<doub
     plots.xy("bolt_forces_history.png", "Bolts and cables: largest axial force", kStepAxis,
              "axial force of largest magnitude along the bar [kN per bar], tension +", bolts, {},
              bands);
+  const std::vector<std::string>& cols = h.columns();
+  if (std::find(cols.begin(), cols.end(), "lining_max_thrust_kN_per_m") != cols.end())
+    lining_history(plots, h, t, bands);
   if (!points.empty())
     plots.xy("extensometers.png", "Extensometers: each point against the deepest anchor", kStepAxis,
              "relative reading [mm], extension +", points, {}, bands);
@@ -83,9 +122,10 @@ void PlotWriter::xy(const std::string& file, const std::string& title, const std
 
 void PlotWriter::panels(const std::string& file, const std::string& title,
                         const std::string& x_label, const std::vector<plots::PlotPanel>& panels,
-                        int height) {
+                        int height, const std::vector<plots::PlotBand>& bands) {
   std::string why;
-  note(plots::plot_panels_png(title, x_label, panels, output_path(dir_, file), 900, height, &why),
+  note(plots::plot_panels_png(title, x_label, panels, output_path(dir_, file), 900, height, &why,
+                              bands),
        file, why);
 }
 
@@ -106,8 +146,11 @@ void PlotWriter::picture(const std::string& file, const coupling::VtkGrid& grid,
   note(plots::render_picture_png(grid, p, output_path(dir_, file), 1000, 800, &why), file, why);
 }
 
-void PlotWriter::final_mesh(const fdem::Engine& e, bool most_tensile) {
-  picture("final_mesh.png", picture_grid(e), whole_model_picture(e, most_tensile));
+void PlotWriter::specimen_pictures(const fdem::Engine& e, bool most_tensile) {
+  const coupling::VtkGrid grid = picture_grid(e);
+  picture("final_mesh.png", grid, specimen_mesh_picture(e));
+  picture(most_tensile ? "sigma_max_tensile.png" : "sigma_max_compressive.png", grid,
+          whole_model_picture(e, most_tensile));
 }
 
 std::string time_axis_label(const fdem::Engine& e) {
@@ -235,7 +278,7 @@ void specimen_plots(const fdem::Engine& e, const History& h, bool disc, const st
   plots.broken_cracks(h, "time", time_axis_label(e));
   // A disc splits in tension (the major principal stress), a UCS specimen
   // is crushed (the minor).
-  plots.final_mesh(e, disc);
+  plots.specimen_pictures(e, disc);
 }
 
 }  // namespace rockfdem::workflows

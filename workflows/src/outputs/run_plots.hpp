@@ -31,18 +31,22 @@ class PlotWriter {
           const std::string& y_label, const std::vector<plots::PlotSeries>& series,
           const std::vector<plots::PlotMarker>& markers = {},
           const std::vector<plots::PlotBand>& bands = {});
-  /// DIR/`file`: charts stacked top to bottom (plots::plot_panels_png).
+  /// DIR/`file`: charts stacked top to bottom (plots::plot_panels_png),
+  /// with shaded `bands` behind each.
   void panels(const std::string& file, const std::string& title, const std::string& x_label,
-              const std::vector<plots::PlotPanel>& panels, int height);
+              const std::vector<plots::PlotPanel>& panels, int height,
+              const std::vector<plots::PlotBand>& bands = {});
   /// broken.png: broken crack elements by mode against history column
   /// `x` (labelled `x_label`), with the stages' `bands`.
   void broken_cracks(const History& h, const std::string& x, const std::string& x_label,
                      const std::vector<plots::PlotBand>& bands = {});
-  /// final_mesh.png of a specimen: the whole model coloured by the most compressive
-  /// in-plane principal stress [MPa] (compression positive), or for a
-  /// Brazilian disc (`most_tensile`) the most tensile (tension positive);
-  /// broken cracks in black, excavated triangles grey.
-  void final_mesh(const fdem::Engine& e, bool most_tensile);
+  /// A specimen's pictures of its final state: final_mesh.png (the mesh
+  /// as deformed, broken cracks in red: specimen_mesh_picture) and the
+  /// whole model coloured by the most compressive in-plane principal
+  /// stress [MPa] (compression positive, sigma_max_compressive.png), or
+  /// for a Brazilian disc (`most_tensile`) the most tensile (tension
+  /// positive, sigma_max_tensile.png), broken cracks in black.
+  void specimen_pictures(const fdem::Engine& e, bool most_tensile);
   /// DIR/`file`: a mesh picture of `grid`.
   void picture(const std::string& file, const coupling::VtkGrid& grid, const plots::MeshPicture& p);
   /// The files rendered so far, in order (report.md links them).
@@ -81,7 +85,8 @@ void tunnel_pictures(PlotWriter& plots, const PictureContext& c);
 
 /// A specimen's pictures: stress_strain.png (axial stress of a UCS test,
 /// or the Brazilian tensile stress 2P / (pi D) of a disc, against the
-/// platens' nominal strain), broken.png and final_mesh.png.
+/// platens' nominal strain), broken.png, final_mesh.png and the stress
+/// picture (PlotWriter::specimen_pictures).
 void specimen_plots(const fdem::Engine& e, const History& h, bool disc, const std::string& dir,
                     RunRecord& summary, bool quiet);
 

@@ -246,7 +246,7 @@ class RunStateCheck {
     for (std::size_t i = 0; i < history.size(); ++i) {
       const std::string at =
           "outputs.history[" + std::to_string(i) + "][" + std::to_string(k) + "]";
-      if (history[i].size() <= k) bad(at, nullptr, "a step");
+      if (history[i].size() <= k || !history[i][k].is_number()) bad(at, nullptr, "a step");
       const double row = history[i][k].get<double>();
       if (row < last || row > double(step))
         bad(at, &history[i][k],
@@ -599,7 +599,11 @@ class RunStateCheck {
     if (history.empty()) bad(at, &history, "an array of at least one row (the run's first)");
     for (std::size_t i = 0; i < history.size(); ++i) {
       const std::string row = at + "[" + std::to_string(i) + "]";
-      numbers(history[i], row);
+      // null: no value at that step (JSON's NaN: "nan" in history.csv, such
+      // as the lining's columns before the ring is installed).
+      array(history[i], row, "an array of numbers");
+      for (std::size_t k = 0; k < history[i].size(); ++k)
+        if (!history[i][k].is_null()) number(history[i][k], row + "[" + std::to_string(k) + "]");
       if (history[i].size() != history[0].size())
         bad(row, &history[i],
             "a row of " + std::to_string(history[0].size()) + " numbers like the first row");

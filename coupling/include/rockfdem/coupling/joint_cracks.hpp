@@ -24,6 +24,23 @@ struct JointCounts {
   long residual = 0;  ///< cohesion and tension lost: sliding on residual friction (damage 1)
 };
 
+/// The opening of crack element c normal to its first face [m]: the mean
+/// over its two node pairs (0 facing 3, 1 facing 2) of the second face's
+/// node's distance from the first's along the first face's normal pointing
+/// away from the first face's triangle; negative: the faces overlap.
+double crack_normal_opening(const fdem::Engine& e, std::size_t c);
+
+/// How a joint element stands in the pictures.
+enum class JointState {
+  kIntact,   ///< damage 0: below its peak strength
+  kSliding,  ///< damage > 0: past the peak, softening or sliding at the residual friction
+  kOpened,   ///< faces apart by more than the pictures' threshold
+};
+
+/// kOpened when crack_normal_opening exceeds `opened` [m], else kSliding
+/// with damage > 0, else kIntact.
+JointState joint_state(const fdem::Engine& e, std::size_t c, double opened);
+
 /// Counts over the flags of joint_crack_traces (inactive elements count
 /// only in `elements`).
 JointCounts count_joint_cracks(const fdem::Engine& e, const std::vector<std::int32_t>& traces);

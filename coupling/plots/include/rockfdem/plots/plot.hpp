@@ -80,13 +80,14 @@ struct PlotPanel {
 };
 
 /// Charts stacked top to bottom in one PNG, each with its own y axis, the
-/// shared x axis label under the last, `title` over the first; written
-/// atomically.
+/// shared x axis label under the last, `title` over the first, `bands`
+/// shaded behind every chart (labelled on the first); written atomically.
 /// @return false (reason in *why) when rendering is not available; nothing written.
 /// @throws as plot_xy_png, and std::invalid_argument for no panels.
 bool plot_panels_png(const std::string& title, const std::string& x_label,
                      const std::vector<PlotPanel>& panels, const std::string& path, int width = 900,
-                     int height = 900, std::string* why = nullptr);
+                     int height = 900, std::string* why = nullptr,
+                     const std::vector<PlotBand>& bands = {});
 
 /// A window of the model to draw [m]: x0 < x1, y0 < y1.
 struct MeshView {
@@ -173,5 +174,18 @@ bool render_mesh_png(const VtkGrid& grid, const std::string& cell_field, int com
                      const std::string& path, const std::string& title, int width = 1000,
                      int height = 800, std::string* why = nullptr, const MeshView* view = nullptr,
                      const MeshOverlay* overlay = nullptr);
+
+/// A PNG's pixels as read back (the tests' pixel checks): rgb of column i,
+/// row j (from the bottom, as VTK stores them) at 3 (j width + i).
+struct PngPixels {
+  int width = 0, height = 0;
+  std::vector<std::uint8_t> rgb;
+  /// How many pixels have `colour`, within `tolerance` per channel.
+  int count(std::array<int, 3> colour, int tolerance = 3) const;
+};
+
+/// Reads the PNG at `path` (needs no display).
+/// @throws std::runtime_error naming `path` when it is no readable PNG.
+PngPixels read_png_pixels(const std::string& path);
 
 }  // namespace rockfdem::plots
