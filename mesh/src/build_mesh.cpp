@@ -10,6 +10,7 @@
 #include "gmsh_session.hpp"
 #include "rockfdem/error.hpp"
 #include "rockfdem/mesh/build.hpp"
+#include "rockfdem/mesh/locality.hpp"
 #include "rockfdem/mesh/msh_io.hpp"
 
 namespace rockfdem::mesh {
@@ -78,7 +79,10 @@ Mesh mesh_geometry(const MeshSpec& spec, const std::vector<JointTrace>& joints, 
     flag_fracture_zone(spec.tunnel, m);
   else
     m.fracture.assign(m.triangles.size(), 1);
-  return m;
+  // gmsh's numbering scatters neighbours through the arrays; every later
+  // stage works in the locality order (locality.hpp). A user's .msh keeps
+  // its own numbering, so its triangle ids stay the file's.
+  return with_triangle_order(m, locality_order(m));
 }
 
 }  // namespace

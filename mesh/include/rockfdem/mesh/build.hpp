@@ -26,6 +26,8 @@ struct MeshReport {
 /// Builds the mesh a spec describes.
 /// @post triangles counter-clockwise, 3-node only, vertices numbered 0..n-1
 ///       with every vertex used; zone and fracture sized like triangles.
+/// @post a generated mesh has its triangles in locality order (locality.hpp);
+///       a .msh file's keep the file's order.
 /// @post the OpenMP thread count is what it was before the call.
 /// Throws rockfdem::InputError for a geometry that cannot be built (tunnel
 /// outside the domain, lining thicker than the opening, a bad .msh file)
