@@ -128,6 +128,7 @@ class PlasticProblem {
   SparsityPattern sparsity_pattern_;
   SparseMatrix<double> system_matrix_;
   Vector<double> solution_, step_start_, system_rhs_;
+  int failed_steps_ = 0;      ///< failed Newton steps over the whole release (max_failed_steps)
   Vector<double> box_load_;   ///< F0 - W_rock: the far-field traction (and the weight)
   Vector<double> wall_load_;  ///< W on the present wall
   double force_scale_ = 1;    ///< ||F0||
@@ -500,6 +501,15 @@ bool PlasticProblem::advance(const double from, const double to, PlasticField& f
       continue;
     }
     solution_ = step_start_;
+    ++failed_steps_;
+    if (plastic_.max_failed_steps > 0 && failed_steps_ > plastic_.max_failed_steps) {
+      if (plastic_.stop_at_failure) return false;
+      throw NumericalError("insitu mohr_coulomb: the release failed " +
+                           std::to_string(failed_steps_) +
+                           " steps on the way to lambda = " + std::to_string(next) +
+                           " (the ground creeps at the limit of collapse: no equilibrium "
+                           "within the work allowed)");
+    }
     if (++halvings > plastic_.max_halvings && plastic_.stop_at_failure) return false;
     if (halvings > plastic_.max_halvings)
       throw NumericalError(

@@ -47,6 +47,12 @@ struct PlasticSpec {
   double max_increment = 0.05;  ///< largest lambda step of the Newton loop
   int max_newton = 25;          ///< iterations per step before it is halved
   int max_halvings = 8;         ///< halvings of one step before giving up
+  /// Failed steps (each then halved) allowed over the whole release before
+  /// giving up as max_halvings does; 0: no limit. Ground at the limit of
+  /// collapse can creep on at steps of max_increment / 2^max_halvings,
+  /// each success doubling the step into another failure: a verdict
+  /// (insitu.continuum_post_peak) needs a bound on that work.
+  int max_failed_steps = 0;
   /// Newton stops when ||residual|| <= tolerance * ||in-situ nodal forces||.
   double tolerance = 1e-9;
   /// A release step that fails ends the sequence quietly: the fields of the
