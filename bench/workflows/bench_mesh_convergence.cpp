@@ -38,10 +38,6 @@
 // command (OUT/h_<size>.cmd), so a long study can be stopped and resumed.
 // Exit code: 0 when every run exited 0, 1 when one did not, 2 for bad options;
 // an interrupted run (Ctrl-C) stops the study after printing what there is.
-#include <fcntl.h>
-#include <sched.h>
-#include <sys/utsname.h>
-#include <sys/wait.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -61,14 +57,19 @@
 #include <string>
 #include <vector>
 
+#include "bench_process.hpp"
+
 namespace fs = std::filesystem;
+using bench::fixed;
+using bench::join_quoted;
+using bench::last_line;
+using bench::number_at;
+using bench::read_text;
+using bench::size_text;
+using bench::UsageError;
 using nlohmann::json;
 
 namespace {
-
-struct UsageError : std::runtime_error {
-  using std::runtime_error::runtime_error;
-};
 
 const char* const kUsage =
     "usage: bench_mesh_convergence [--scene PATH] [--sizes H1,H2,...] [--threads N]\n"
@@ -87,36 +88,6 @@ struct Options {
 
 // ---------------------------------------------------------------- helpers
 
-// A word as a POSIX shell would need it to read it back unchanged.
-std::string shell_quote(const std::string& word) {
-  const bool plain = !word.empty() && word.find_first_not_of(
-                                          "abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ"
-                                          "0123456789_-+=.,/:@%") == std::string::npos;
-  if (plain) return word;
-  std::string q = "'";
-  for (char c : word) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
-  return q + "'";
-}
-
-std::string join_quoted(const std::vector<std::string>& words) {
-  std::string s;
-  for (const std::string& w : words) s += (s.empty() ? "" : " ") + shell_quote(w);
-  return s;
-}
-
-// The size as it appears in directory names and in --set: shortest %g form.
-std::string size_text(double h) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%g", h);
-  return buf;
-}
-
-std::string fixed(double v, int decimals) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, "%.*f", decimals, v);
-  return buf;
-}
-
 std::string percent(double v) {
   char buf[64];
   std::snprintf(buf, sizeof buf, "%+.1f%%", 100 * v);
@@ -125,18 +96,6 @@ std::string percent(double v) {
 
 std::string text_or_dash(const std::optional<double>& v, int decimals) {
   return v ? fixed(*v, decimals) : "-";
-}
-
-// A number at a path of keys, or nothing where a key is missing or null
-// (older summaries lack some of them).
-std::optional<double> number_at(const json& j, std::initializer_list<const char*> path) {
-  const json* p = &j;
-  for (const char* key : path) {
-    if (!p->is_object() || !p->contains(key)) return std::nullopt;
-    p = &(*p)[key];
-  }
-  if (!p->is_number()) return std::nullopt;
-  return p->get<double>();
 }
 
 std::optional<double> mean(const std::optional<double>& a, const std::optional<double>& b) {
@@ -211,51 +170,6 @@ Options parse_options(int argc, char** argv) {
   if (!fs::is_regular_file(o.scene))
     throw UsageError("scene '" + o.scene + "' not found; pass --scene PATH");
   return o;
-}
-
-// Runs argv[0] with argv, stdout and stderr to `log`; returns the exit code
-// (128 + signal for a run killed by a signal, 127 when it could not start).
-int run_logged(const std::vector<std::string>& args, const std::string& log) {
-  std::vector<char*> argv;
-  for (const std::string& a : args) argv.push_back(const_cast<char*>(a.c_str()));
-  argv.push_back(nullptr);
-  std::cout.flush();
-  std::cerr.flush();
-  const pid_t pid = fork();
-  if (pid < 0) throw std::runtime_error(std::string("fork: ") + std::strerror(errno));
-  if (pid == 0) {
-    const int fd = open(log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-    if (fd >= 0) {
-      dup2(fd, 1);
-      dup2(fd, 2);
-      close(fd);
-    }
-    execv(argv[0], argv.data());
-    std::fprintf(stderr, "exec %s: %s\n", argv[0], std::strerror(errno));
-    _exit(127);
-  }
-  int status = 0;
-  while (waitpid(pid, &status, 0) < 0)
-    if (errno != EINTR) throw std::runtime_error(std::string("waitpid: ") + std::strerror(errno));
-  if (WIFEXITED(status)) return WEXITSTATUS(status);
-  if (WIFSIGNALED(status)) return 128 + WTERMSIG(status);
-  return 1;
-}
-
-std::string read_text(const fs::path& path) {
-  std::ifstream in(path);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
-// The last non-empty line of a file: what a failed run said last.
-std::string last_line(const fs::path& path) {
-  std::ifstream in(path);
-  std::string line, last = "(no output; see " + path.string() + ")";
-  while (std::getline(in, line))
-    if (line.find_first_not_of(" \t\r") != std::string::npos) last = line;
-  return last;
 }
 
 // ---------------------------------------------------------------- the study
@@ -375,7 +289,7 @@ class ConvergenceStudy {
     // A stale summary must not pass for this run's.
     std::error_code ignored;
     fs::remove(summary, ignored);
-    row.exit_code = run_logged(args, log.string());
+    row.exit_code = bench::run_logged(args, log.string()).exit_code;
     if (fs::exists(summary)) read_summary(summary, row);
     std::cerr << "h = " << name.substr(2) << ": exit " << row.exit_code
               << (row.status.empty() ? "" : ", " + row.status) << '\n';
@@ -419,23 +333,15 @@ class ConvergenceStudy {
   }
 
   void print_header() const {
-    char date[64];
-    const std::time_t now = std::time(nullptr);
-    std::strftime(date, sizeof date, "%Y-%m-%d %H:%M %Z", std::localtime(&now));
-    utsname host{};
-    uname(&host);
-    cpu_set_t cpus;
-    CPU_ZERO(&cpus);
-    const int n_cpus = sched_getaffinity(0, sizeof cpus, &cpus) == 0
-                           ? CPU_COUNT(&cpus)
-                           : int(sysconf(_SC_NPROCESSORS_ONLN));
+    const bench::Machine machine = bench::this_machine();
     std::vector<std::string> each = rockfdem_args(0);
     each[7] = (fs::path(o_.out) / "h_<size>").string();
     each[10] = "mesh.size_near=<size>";
     std::cout << "## Mesh convergence: " << fs::path(o_.scene).filename().string() << "\n\n"
               << "    " << o_.command_line << "\n\n"
-              << date << ", " << host.nodename << ", " << n_cpus << " cores (nproc), " << o_.threads
-              << (o_.threads == 1 ? " thread" : " threads") << " per run. Each size ran as\n\n"
+              << machine.date << ", " << machine.host << ", " << machine.cpus << " cores (nproc), "
+              << o_.threads << (o_.threads == 1 ? " thread" : " threads")
+              << " per run. Each size ran as\n\n"
               << "    " << join_quoted(each) << "\n\n";
   }
 

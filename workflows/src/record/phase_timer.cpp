@@ -1,8 +1,20 @@
 #include "record/phase_timer.hpp"
 
+#include <sys/resource.h>
+
 #include <cstdio>
 
 namespace rockfdem::workflows {
+
+namespace {
+
+double peak_rss_mib() {
+  rusage u{};
+  getrusage(RUSAGE_SELF, &u);
+  return double(u.ru_maxrss) / 1024.0;  // Linux: kilobytes
+}
+
+}  // namespace
 
 PhaseTimer::PhaseTimer() : start_(Clock::now()), last_(start_) {}
 
@@ -10,7 +22,13 @@ void PhaseTimer::stamp(const std::string& phase) {
   const Clock::time_point now = Clock::now();
   if (!seconds_.count(phase)) order_.push_back(phase);
   seconds_[phase] += std::chrono::duration<double>(now - last_).count();
+  peak_mib_[phase] = peak_rss_mib();
   last_ = now;
+}
+
+double PhaseTimer::peak_mib(const std::string& phase) const {
+  const auto it = peak_mib_.find(phase);
+  return it == peak_mib_.end() ? 0.0 : it->second;
 }
 
 double PhaseTimer::seconds(const std::string& phase) const {

@@ -672,7 +672,10 @@ void RunRecord::record_insitu(const std::vector<insitu::InsituField>& fields) {
 }
 
 void RunRecord::set_timings(const PhaseTimer& timer) {
-  for (const std::string& phase : timer.order()) timings_[snake_case(phase)] = timer.seconds(phase);
+  for (const std::string& phase : timer.order()) {
+    timings_[snake_case(phase)] = timer.seconds(phase);
+    peak_memory_mib_[snake_case(phase)] = timer.peak_mib(phase);
+  }
   timings_["total"] = timer.total();
 }
 
@@ -732,6 +735,7 @@ nlohmann::json RunRecord::to_json() const {
   if (restarted_from) j["restarted_from"] = mark_json("checkpoint", *restarted_from);
   if (checkpoint) j["checkpoint"] = mark_json("last", *checkpoint);
   j["timings"] = timings_;
+  j["peak_memory_mib"] = peak_memory_mib_;
   return j;
 }
 

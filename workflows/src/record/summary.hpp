@@ -116,6 +116,8 @@ class RunRecord {
   std::vector<std::string> overrides_;
   std::string title_;
   std::map<std::string, double> timings_;  ///< per phase (snake_case) and "total" [s]
+  /// The process's peak resident set at each phase's end [MiB]
+  std::map<std::string, double> peak_memory_mib_;
 };
 
 /// summary.json's "fdem"."stages" (also the checkpoints' copy of them).

@@ -275,7 +275,7 @@ void Run::compare_with_references() {
   if (scene_.insitu.install_at_face_distance) solved.insitu.alpha = handoff_figures_.alphas;
   compare_with_continuum_counterpart(solved, ctx_, mesh_, engine(), handoff(),
                                      key_points_.monitors(), summary_);
-  timer_.stamp("insitu");
+  timer_.stamp("continuum counterpart");
 }
 
 // The run's closing checks, then the outputs' last files: the energy
