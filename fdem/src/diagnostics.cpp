@@ -110,12 +110,6 @@ PhaseTimes Engine::phase_times() const { return impl_->times; }
 
 namespace {
 
-/// One array of the engine: its name and capacity in bytes.
-struct MemoryPart {
-  std::string name;
-  std::size_t bytes;
-};
-
 /// Appends arrays `v` under "record.name", the names listed in `names`
 /// separated by spaces, in the order of `v`.
 template <class... V>
@@ -173,9 +167,11 @@ std::vector<MemoryPart> memory_parts(const detail::EngineData& d) {
 
 }  // namespace
 
+std::vector<MemoryPart> Engine::memory_breakdown() const { return memory_parts(impl_->d); }
+
 std::size_t Engine::memory_bytes() const {
   std::size_t sum = 0;
-  for (const MemoryPart& p : memory_parts(impl_->d)) sum += p.bytes;
+  for (const MemoryPart& p : memory_breakdown()) sum += p.bytes;
   return sum;
 }
 
