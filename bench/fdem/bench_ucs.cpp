@@ -1,7 +1,7 @@
 // bench_ucs: throughput of the fracturing UCS test.
 //
 //   bench_ucs [--triangles N] [--steps S] [--threads T] [--velocity V]
-//             [--report-every K] [--contact 0|1]
+//             [--report-every K] [--contact 0|1] [--memory 0|1]
 //
 // A 50 x 100 mm specimen on the structured mesh (about N triangles, crack
 // elements on every interior edge) is loaded by rough platens moving towards
@@ -10,7 +10,8 @@
 // second, the state hash (equal hashes = bit-identical runs), broken counts
 // by mode and the axial stress history every K steps, with each interval's
 // throughput and contact counters (--contact 1 enables contact: the cost of
-// contact before and after fracture).
+// contact before and after fracture). --memory 1 prints the engine's arrays
+// with their bytes per triangle after the run (Engine::memory_breakdown).
 //
 //        v platen (prescribed velocity, x fixed)
 //      +-------+
@@ -30,9 +31,22 @@
 
 using namespace rockfdem;
 
+namespace {
+
+/// The engine's non-empty arrays in bytes per triangle, and their total.
+void print_memory(const fdem::Engine& e) {
+  const double nt = double(e.n_triangles());
+  for (const fdem::MemoryPart& p : e.memory_breakdown())
+    if (p.bytes > 0)
+      std::printf("memory %-28s %8.1f B/triangle\n", p.name.c_str(), double(p.bytes) / nt);
+  std::printf("memory total %.1f B/triangle\n", double(e.memory_bytes()) / nt);
+}
+
+}  // namespace
+
 int main(int argc, char** argv) {
   long n_tri = 33000, steps = 10000, report = 0;
-  int threads = 0, contact = 0;
+  int threads = 0, contact = 0, memory = 0;
   double velocity = 1.0;  // strain rate 20/s: peak near step 6000, post-peak by 10^4
   if (!bench::read_options(argc, argv,
                            {{"--triangles", &n_tri},
@@ -40,9 +54,10 @@ int main(int argc, char** argv) {
                             {"--threads", &threads},
                             {"--velocity", &velocity},
                             {"--contact", &contact},
+                            {"--memory", &memory},
                             {"--report-every", &report}},
                            "bench_ucs [--triangles N] [--steps S] [--threads T] [--velocity V] "
-                           "[--report-every K] [--contact 0|1]"))
+                           "[--report-every K] [--contact 0|1] [--memory 0|1]"))
     return 2;
   return bench::run_guarded([&] {
     const fdem::RectangleSpec grid = fdem::ucs_grid(0.05, 0.1, n_tri);
@@ -95,6 +110,7 @@ int main(int argc, char** argv) {
     std::printf("peak axial stress %.4g MPa\n", peak / 1e6);
     std::printf("broken mode_I %ld mode_II %ld mixed %ld\n", b.mode_I, b.mode_II, b.mixed);
     std::printf("state_hash %s\n", engine.state_hash().c_str());
+    if (memory) print_memory(engine);
     return 0;
   });
 }

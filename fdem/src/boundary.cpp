@@ -81,8 +81,9 @@ void constrain(BoundaryRecord& r, const BoundaryCondition& bc) {
 /// unit normal of the owning triangle.
 void edge_geometry(const EngineData& d, const EdgeRef& e, double& len, double& nx, double& ny) {
   const int na = d.tris.nodes[3 * e.tri + e.ka], nb = d.tris.nodes[3 * e.tri + e.kb];
-  const double* p = d.nodes.mesh_pos.data();
-  const double dx = p[2 * nb] - p[2 * na], dy = p[2 * nb + 1] - p[2 * na + 1];
+  const Nodes& n = d.nodes;
+  const double dx = n.mesh_position(nb, 0) - n.mesh_position(na, 0);
+  const double dy = n.mesh_position(nb, 1) - n.mesh_position(na, 1);
   len = std::sqrt(dx * dx + dy * dy);
   nx = dy / len;
   ny = -dx / len;

@@ -403,11 +403,12 @@ void contact_setup(EngineData& d) {
   }
   c.penalty = c.settings.penalty > 0 ? c.settings.penalty : e_max;
   double sum = 0;
-  const double* p = d.nodes.mesh_pos.data();
+  const Nodes& n = d.nodes;
   for (std::size_t t = 0; t < d.tris.size(); ++t)
     for (int k = 0; k < 3; ++k) {
       const int a = d.tris.nodes[3 * t + k], b = d.tris.nodes[3 * t + (k + 1) % 3];
-      sum += std::hypot(p[2 * b] - p[2 * a], p[2 * b + 1] - p[2 * a + 1]);
+      sum += std::hypot(n.mesh_position(b, 0) - n.mesh_position(a, 0),
+                        n.mesh_position(b, 1) - n.mesh_position(a, 1));
     }
   const double mean_edge = d.tris.size() ? sum / (3.0 * d.tris.size()) : 1.0;
   // An eighth of the mean edge: bench_contact's table in docs/benchmarks.md

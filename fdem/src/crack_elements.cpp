@@ -18,7 +18,7 @@ namespace rockfdem::fdem::detail {
 namespace {
 
 void zero_slots(double* s) {
-  for (int k = 0; k < 8; ++k) s[k] = 0.0;
+  for (int k = 0; k < 4; ++k) s[k] = 0.0;
 }
 
 /// The three integration points of one element with law L; the damage
@@ -130,14 +130,10 @@ inline double element_potential(const CrackConstants& k, const double o[3], cons
   const double sn1 = w_end * p1.sigma + w_mid * pm.sigma, st1 = w_end * p1.tau + w_mid * pm.tau;
   const double f0x = -(st0 * ex + sn0 * nx), f0y = -(st0 * ey + sn0 * ny);
   const double f1x = -(st1 * ex + sn1 * nx), f1y = -(st1 * ey + sn1 * ny);
-  out[0] = f0x;
+  out[0] = f0x;  // nodes 3, 2 take -f0, -f1 (the gather negates)
   out[1] = f0y;
   out[2] = f1x;
   out[3] = f1y;
-  out[4] = -f1x;
-  out[5] = -f1y;
-  out[6] = -f0x;
-  out[7] = -f0y;
   return false;
 }
 
@@ -254,8 +250,8 @@ void flush_cracks(CrackBatch& b, int n, const int* element, const CrackConstants
       scalar[c - begin] = 1;
       continue;
     }
-    double* out = slots + 8 * c;
-    for (int i = 0; i < 8; ++i) out[i] = b.out[i][r];
+    double* out = slots + 4 * c;  // nodes 0, 1 (b.out[4..7] are their negatives)
+    for (int i = 0; i < 4; ++i) out[i] = b.out[i][r];
   }
 }
 
@@ -332,7 +328,7 @@ long crack_forces(EngineData& d) {
         if (!scalar[c - begin]) continue;
         if (!active[c] || state[c] == std::uint8_t(CrackState::kBroken)) continue;
         double sum_a2 = 0, sum_b2 = 0;
-        double* out = slots + 8 * c;
+        double* out = slots + 4 * c;
         double* dmg = damage + 3 * c;
         if (crack_element(d, c, dmg, out, sum_a2, sum_b2, released)) {
           zero_slots(out);

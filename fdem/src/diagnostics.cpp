@@ -5,6 +5,9 @@
 #include <cstdint>
 #include <cstdio>
 #include <cstring>
+#include <sstream>
+#include <string>
+#include <vector>
 
 #include "crack_elements.hpp"
 #include "energy.hpp"
@@ -38,11 +41,11 @@ double Engine::unbalanced_force_ratio() const {
   // A component counts only when free: a constrained one carries a reaction.
   auto free_x = [&](long i) {
     const int b = d.nodes.bc[i];
-    return d.nodes.inv_mass[i] > 0 && (b < 0 || d.bc_records[b].x == Constraint::kFree);
+    return d.nodes.mass[i] > 0 && (b < 0 || d.bc_records[b].x == Constraint::kFree);
   };
   auto free_y = [&](long i) {
     const int b = d.nodes.bc[i];
-    return d.nodes.inv_mass[i] > 0 && (b < 0 || d.bc_records[b].y == Constraint::kFree);
+    return d.nodes.mass[i] > 0 && (b < 0 || d.bc_records[b].y == Constraint::kFree);
   };
   const double net = detail::block_sum(nn, d.threads, [&](long i) {
     double fx, fy;
@@ -51,10 +54,10 @@ double Engine::unbalanced_force_ratio() const {
   });
   const double gross = detail::block_sum(nn, d.threads, [&](long i) {
     const bool fx_on = free_x(i), fy_on = free_y(i);
-    double s = (fx_on ? std::fabs(d.nodes.fext[2 * i]) : 0.0) +
-               (fy_on ? std::fabs(d.nodes.fext[2 * i + 1]) : 0.0);
+    double s = (fx_on ? std::fabs(detail::dead_load(d.nodes, i, 0)) : 0.0) +
+               (fy_on ? std::fabs(detail::dead_load(d.nodes, i, 1)) : 0.0);
     for (int k = d.nodes.slot_start[i]; k < d.nodes.slot_start[i + 1]; ++k) {
-      const int sl = d.nodes.slot_index[k];
+      const int sl = detail::entry_slot(d.nodes.slot_index[k]);
       s += (fx_on ? std::fabs(d.slots[2 * sl]) : 0.0) +
            (fy_on ? std::fabs(d.slots[2 * sl + 1]) : 0.0);
     }
@@ -107,36 +110,69 @@ PhaseTimes Engine::phase_times() const { return impl_->times; }
 
 namespace {
 
-/// Contact arrays: per-triangle edge topology and per-node labels (when
-/// enabled), plus what the last detection holds.
-template <class Bytes>
-std::size_t contact_bytes(const detail::ContactData& c, Bytes b) {
-  const auto& s = c.breaks;
-  return b(c.edge_nbr) + b(c.edge_crack) + b(c.vertex_tri_start) + b(c.vertex_tri) +
-         b(c.vertex_crack_start) + b(c.vertex_crack) + b(c.component) + b(c.candidates) +
-         b(c.boxes) + b(c.watch_nodes) + b(c.detect_pos) + b(c.pairs) + b(c.old_pairs) +
-         b(c.friction) + b(c.old_friction) + b(c.pair_force) + b(c.gather_tri) + b(c.gather_start) +
-         b(c.gather_entry) + b(c.grid.cell) + b(c.grid.cell_start) + b(c.grid.items) +
-         b(c.grid.count) + b(c.grid.offset) + b(c.grid.found) + b(c.energy_partial) + b(s.cracks) +
-         b(s.tris) + b(s.vertices) + b(s.ints) + b(s.merged) + b(s.boxes) + b(s.trial) +
-         b(s.found) + b(s.gather_index) + b(c.narrow.tris) + b(c.narrow.rows);
+/// Appends arrays `v` under "record.name", the names listed in `names`
+/// separated by spaces, in the order of `v`.
+template <class... V>
+void add_parts(std::vector<MemoryPart>& parts, const char* record, const char* names,
+               const V&... v) {
+  std::istringstream words(names);
+  auto add = [&](std::size_t bytes) {
+    std::string name;
+    words >> name;
+    parts.push_back({std::string(record) + "." + name, bytes});
+  };
+  (add(v.capacity() * sizeof(typename V::value_type)), ...);
+}
+
+/// Every array of the engine: nodes, elements, force slots, contact's
+/// per-triangle topology and per-node labels (when enabled), what the last
+/// detection holds and the scratch it reuses.
+std::vector<MemoryPart> memory_parts(const detail::EngineData& d) {
+  std::vector<MemoryPart> p;
+  const auto& n = d.nodes;
+  add_parts(p, "nodes", "pos vel vertex_pos mass fext bc vertex slot_start slot_index", n.pos,
+            n.vel, n.vertex_pos, n.mass, n.fext, n.bc, n.vertex, n.slot_start, n.slot_index);
+  const auto& t = d.tris;
+  add_parts(p, "tris",
+            "nodes ref_inv area0 eta alpha sigma0 viscous_stress mass_scale material active",
+            t.nodes, t.ref_inv, t.area0, t.eta, t.alpha, t.sigma0, t.viscous_stress, t.mass_scale,
+            t.material, t.active);
+  const auto& c = d.cracks;
+  add_parts(p, "cracks",
+            "nodes tri damage material state mode active broken_step offset strength joints "
+            "joint_force",
+            c.nodes, c.tri, c.damage, c.material, c.state, c.mode, c.active, c.broken_step,
+            c.offset, c.strength, c.joints, c.joint_force);
+  add_parts(p, "engine", "slots block_partial energy_partial vertex_nodes vertex_node_start",
+            d.slots, d.block_partial, d.energy_partial, d.vertex_nodes, d.vertex_node_start);
+  const auto& k = d.contact;
+  add_parts(p, "contact",
+            "edge_nbr edge_crack vertex_tri_start vertex_tri vertex_crack_start vertex_crack "
+            "component candidates boxes watch_nodes detect_pos pairs old_pairs friction "
+            "old_friction pair_force gather_tri gather_start gather_entry energy_partial",
+            k.edge_nbr, k.edge_crack, k.vertex_tri_start, k.vertex_tri, k.vertex_crack_start,
+            k.vertex_crack, k.component, k.candidates, k.boxes, k.watch_nodes, k.detect_pos,
+            k.pairs, k.old_pairs, k.friction, k.old_friction, k.pair_force, k.gather_tri,
+            k.gather_start, k.gather_entry, k.energy_partial);
+  const auto& g = k.grid;
+  add_parts(p, "contact.grid", "cell cell_start items count offset found", g.cell, g.cell_start,
+            g.items, g.count, g.offset, g.found);
+  const auto& b = k.breaks;
+  add_parts(p, "contact.breaks", "cracks tris vertices ints merged boxes trial found gather_index",
+            b.cracks, b.tris, b.vertices, b.ints, b.merged, b.boxes, b.trial, b.found,
+            b.gather_index);
+  add_parts(p, "contact.narrow", "tris rows", k.narrow.tris, k.narrow.rows);
+  return p;
 }
 
 }  // namespace
 
+std::vector<MemoryPart> Engine::memory_breakdown() const { return memory_parts(impl_->d); }
+
 std::size_t Engine::memory_bytes() const {
-  const auto& d = impl_->d;
-  auto b = [](const auto& v) { return v.capacity() * sizeof(v[0]); };
-  const auto& n = d.nodes;
-  const auto& t = d.tris;
-  const auto& c = d.cracks;
-  return b(n.pos) + b(n.vel) + b(n.mesh_pos) + b(n.mass) + b(n.inv_mass) + b(n.fext) + b(n.bc) +
-         b(n.vertex) + b(n.slot_start) + b(n.slot_index) + b(t.nodes) + b(t.ref_inv) + b(t.area0) +
-         b(t.eta) + b(t.alpha) + b(t.sigma0) + b(t.viscous_stress) + b(t.material) + b(t.active) +
-         b(c.nodes) + b(c.tri) + b(c.damage) + b(c.material) + b(c.state) + b(c.mode) +
-         b(c.active) + b(c.broken_step) + b(c.offset) + b(c.joints) + b(c.joint_force) +
-         b(d.slots) + b(d.block_partial) + b(d.energy_partial) + b(d.vertex_nodes) +
-         b(d.vertex_node_start) + contact_bytes(d.contact, b);
+  std::size_t sum = 0;
+  for (const MemoryPart& p : memory_breakdown()) sum += p.bytes;
+  return sum;
 }
 
 }  // namespace rockfdem::fdem

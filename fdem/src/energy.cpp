@@ -67,9 +67,9 @@ double node_energy(const EngineData& d, std::size_t n) {
   double e = 0.5 * d.nodes.mass[n] * (vx * vx + vy * vy);
   const int tri_slots = static_cast<int>(d.crack_slot0());
   for (int k = d.nodes.slot_start[n]; k < d.nodes.slot_start[n + 1]; ++k) {
-    const int s = d.nodes.slot_index[k];
+    const int s = entry_slot(d.nodes.slot_index[k]);
     e += s < tri_slots ? triangle_stored_energy(d, s / 3, at)
-                       : crack_element_energy(d, (s - tri_slots) / 4, at);
+                       : crack_element_energy(d, (s - tri_slots) / 2, at);
   }
   return e;
 }

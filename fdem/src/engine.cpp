@@ -563,7 +563,8 @@ std::array<double, 2> Engine::node_force(std::size_t node) const {
 std::array<double, 2> Engine::displacement(std::size_t node) const {
   check_index(node, n_nodes(), "node");
   const auto& n = impl_->d.nodes;
-  return {n.pos[2 * node] - n.mesh_pos[2 * node], n.pos[2 * node + 1] - n.mesh_pos[2 * node + 1]};
+  return {n.pos[2 * node] - n.mesh_position(node, 0),
+          n.pos[2 * node + 1] - n.mesh_position(node, 1)};
 }
 
 std::array<double, 3> Engine::triangle_stress(std::size_t t) const {

@@ -86,13 +86,12 @@ void fields(Ar& ar, ContactSettings& s) {
 
 template <class Ar>
 void fields(Ar& ar, Nodes& n) {
-  ROCKFDEM_CHECKPOINT_MEMBERS(Nodes, 10);
+  ROCKFDEM_CHECKPOINT_MEMBERS(Nodes, 9);
   ar.tag("NODE");
   ar.state(n.pos);
   ar.state(n.vel);
-  ar.model(n.mesh_pos);
+  ar.model(n.vertex_pos);
   ar.state(n.mass);  // rebuilt only when masses_dirty: saved as they are
-  ar.state(n.inv_mass);
   ar.state(n.fext);
   ar.state(n.bc);
   ar.model(n.vertex);

@@ -3,10 +3,13 @@
 // directly; Engine::Impl (engine_impl.hpp) holds one behind the public Engine.
 //
 // Force slots: every triangle writes its three nodal forces into its own
-// slots [3t, 3t+3), every crack element its four into
-// [3 n_tri + 4c, 3 n_tri + 4c + 4). Each node then gathers its incident
-// slots in ascending slot order (CSR built once). No two loop iterations write
-// the same memory, so results do not depend on the thread count.
+// slots [3t, 3t+3), every crack element the forces on its nodes 0 and 1
+// into [3 n_tri + 2c, 3 n_tri + 2c + 2); nodes 3 and 2 receive exactly
+// their negatives (the element's forces balance), which the gather applies.
+// Each node then gathers its incident slots in the order of the element
+// corners (triangles, then crack elements' nodes 0-3; CSR built once). No
+// two loop iterations write the same memory, so results do not depend on
+// the thread count.
 #pragma once
 
 #include <array>
@@ -20,6 +23,11 @@
 
 namespace rockfdem::fdem::detail {
 
+/// A node's slot entry (Nodes::slot_index): the slot, and the sign its
+/// force enters the node with.
+inline int entry_slot(int entry) { return entry >> 1; }
+inline double entry_sign(int entry) { return (entry & 1) ? -1.0 : 1.0; }
+
 /// Per-material constants the triangle kernel needs.
 struct SolidConstants {
   double mu = 0, lambda = 0;  ///< Lame constants (lambda* in plane stress)
@@ -29,15 +37,18 @@ struct SolidConstants {
 };
 
 struct Nodes {
-  std::vector<double> pos, vel;  ///< interleaved x, y
-  std::vector<double> mesh_pos;  ///< mesh vertex position (displacement origin)
-  std::vector<double> mass, inv_mass;
-  std::vector<double> fext;     ///< interleaved: gravity + tractions [N/m]
-  std::vector<int> bc;          ///< -1 or index into BoundaryRecords
-  std::vector<int> vertex;      ///< mesh vertex of each node
-  std::vector<int> slot_start;  ///< CSR over force slots, n + 1 entries
-  std::vector<int> slot_index;
+  std::vector<double> pos, vel;    ///< interleaved x, y
+  std::vector<double> vertex_pos;  ///< per mesh vertex, interleaved: the displacement origin
+                                   ///< (nodes of one vertex share it: mesh_position())
+  std::vector<double> mass;        ///< lumped; 0: no active triangle (frozen)
+  std::vector<double> fext;        ///< interleaved: gravity + tractions [N/m]; empty without any
+  std::vector<int> bc;             ///< -1 or index into BoundaryRecords
+  std::vector<int> vertex;         ///< mesh vertex of each node
+  std::vector<int> slot_start;     ///< CSR over force slots, n + 1 entries
+  std::vector<int> slot_index;     ///< 2 slot + 1 where the node takes the slot's negative
   std::size_t size() const { return mass.size(); }
+  /// Coordinate `axis` of node i's mesh vertex.
+  double mesh_position(std::size_t i, int axis) const { return vertex_pos[2 * vertex[i] + axis]; }
 };
 
 struct Triangles {

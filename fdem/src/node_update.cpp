@@ -29,7 +29,7 @@ double corner_sum(const EngineData& d, long i, Factor f) {
   const Triangles& tr = d.tris;
   double m = 0;
   for (int k = n.slot_start[i]; k < n.slot_start[i + 1]; ++k) {
-    const int s = n.slot_index[k];
+    const int s = entry_slot(n.slot_index[k]);
     if (s >= tri_slots) break;  // slots are sorted: triangles come first
     const int t = s / 3;
     if (tr.active[t]) m += d.solids[tr.material[t]].rho * f(t) * tr.area0[t] / 3.0;
@@ -72,6 +72,12 @@ void keep_momentum(EngineData& d, const std::vector<double>& old_scale) {
 void refresh_external_forces(EngineData& d) {
   Nodes& n = d.nodes;
   const bool gravity = d.gravity[0] != 0.0 || d.gravity[1] != 0.0;
+  d.dead_loads = gravity || !d.loads.empty();
+  if (!d.dead_loads) {  // no array of zeros: node_force reads an empty fext as zero
+    std::vector<double>().swap(n.fext);
+    return;
+  }
+  n.fext.assign(2 * n.size(), 0.0);
   for (std::size_t i = 0; i < n.size(); ++i) {
     const double m = gravity ? weight_mass(d, long(i)) : 0.0;
     n.fext[2 * i] = m * d.gravity[0];
@@ -81,7 +87,6 @@ void refresh_external_forces(EngineData& d) {
     n.fext[2 * l.node] += l.fx;
     n.fext[2 * l.node + 1] += l.fy;
   }
-  d.dead_loads = gravity || !d.loads.empty();
 }
 
 /// Crack elements act only between two active triangles; an element that
@@ -93,7 +98,7 @@ void refresh_crack_activity(EngineData& d) {
     const bool on = d.tris.active[c.tri[2 * e]] && d.tris.active[c.tri[2 * e + 1]];
     c.active[e] = on;
     if (!on)
-      for (int k = 0; k < 8; ++k) d.slots[2 * (slot0 + 4 * e) + k] = 0.0;
+      for (int k = 0; k < 4; ++k) d.slots[2 * (slot0 + 2 * e) + k] = 0.0;
   }
   for (std::size_t t = 0; t < d.tris.size(); ++t)
     if (!d.tris.active[t])
@@ -109,7 +114,6 @@ void refresh_masses(EngineData& d) {
   for (long i = 0; i < nn; ++i) {
     const double m = corner_mass(d, i, d.tris.mass_scale);
     n.mass[i] = m;
-    n.inv_mass[i] = m > 0 ? 1.0 / m : 0.0;
     if (m == 0) n.vel[2 * i] = n.vel[2 * i + 1] = 0.0;
   }
 }
@@ -159,7 +163,7 @@ struct NodeSums {
                                           double cy, double lx, double ly, NodeSums& sum) {
   const double half_dt = 0.5 * d.dt;
   const double hx = (vx0 + vx) * half_dt, hy = (vy0 + vy) * half_dt;
-  const double m = d.nodes.mass[i], gx = d.nodes.fext[2 * i], gy = d.nodes.fext[2 * i + 1];
+  const double m = d.nodes.mass[i], gx = dead_load(d.nodes, i, 0), gy = dead_load(d.nodes, i, 1);
   double ex, ey;
   node_force(d, i, ex, ey);  // element forces + dead load
   sum.external += free_x ? gx * hx : m * (vx - vx0) * 0.5 * (vx + vx0) - (ex - gx) * hx;
@@ -197,8 +201,9 @@ long node_loop(EngineData& d) {
     NodeSums sum;
     const long end = std::min(nn, (blk + 1) * kNodeBlock);
     for (long i = blk * kNodeBlock; i < end; ++i) {
-      const double inv_m = n.inv_mass[i];
-      if (inv_m == 0.0) continue;  // no active triangle: frozen
+      // 1/m here rather than stored: the same bits, 8 B per node less.
+      if (!(n.mass[i] > 0.0)) continue;  // no active triangle: frozen
+      const double inv_m = 1.0 / n.mass[i];
       double fx, fy;
       node_force(d, i, fx, fy);
       const double vx0 = n.vel[2 * i], vy0 = n.vel[2 * i + 1];

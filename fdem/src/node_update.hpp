@@ -12,7 +12,7 @@ namespace rockfdem::fdem::detail {
 /// active). A node left without mass is frozen with zero velocity.
 void refresh_nodes(EngineData& d);
 
-/// Node masses (and their inverses) from the active triangles and their
+/// Node masses from the active triangles and their
 /// density factors; a node left without mass is frozen with zero velocity.
 void refresh_masses(EngineData& d);
 
@@ -21,15 +21,23 @@ void refresh_masses(EngineData& d);
 /// Returns the lowest node whose new velocity is not finite, or -1.
 long node_update(EngineData& d);
 
+/// Dead load on node i: fext, or zero when no node has one (fext empty).
+inline double dead_load(const Nodes& n, std::size_t i, int axis) {
+  return n.fext.empty() ? 0.0 : n.fext[2 * i + axis];
+}
+
 /// Net force on node i from its slots and external load (no damping).
 inline void node_force(const EngineData& d, std::size_t i, double& fx, double& fy) {
-  fx = d.nodes.fext[2 * i];
-  fy = d.nodes.fext[2 * i + 1];
+  fx = dead_load(d.nodes, i, 0);
+  fy = dead_load(d.nodes, i, 1);
   const double* slots = d.slots.data();
   for (int k = d.nodes.slot_start[i]; k < d.nodes.slot_start[i + 1]; ++k) {
-    const int s = d.nodes.slot_index[k];
-    fx += slots[2 * s];
-    fy += slots[2 * s + 1];
+    // The sign is +-1: x + (-1 y) has the bits of x + (-y), the negative
+    // a crack element's nodes 3, 2 had in slots of their own.
+    const int e = d.nodes.slot_index[k], s = entry_slot(e);
+    const double sign = entry_sign(e);
+    fx += sign * slots[2 * s];
+    fy += sign * slots[2 * s + 1];
   }
 }
 

@@ -93,8 +93,9 @@ void triangle_frequency(const EngineData& d, std::size_t t, double& omega2, doub
 }
 
 double contact_triangle_omega2(const EngineData& d, std::size_t t) {
-  const double h =
-      smallest_altitude(d.nodes.mesh_pos.data(), &d.tris.nodes[3 * t], d.tris.area0[t]);
+  const int* nd = &d.tris.nodes[3 * t];
+  const int vertices[3] = {d.nodes.vertex[nd[0]], d.nodes.vertex[nd[1]], d.nodes.vertex[nd[2]]};
+  const double h = smallest_altitude(d.nodes.vertex_pos.data(), vertices, d.tris.area0[t]);
   const double rho = d.materials[d.tris.material[t]].density * d.tris.density_factor(t);
   // A sticking friction spring is as stiff as the normal penalty.
   const double springs = d.contact.settings.friction ? 2.0 : 1.0;
@@ -199,8 +200,8 @@ void apply_stiffness(const EngineData& d, const std::vector<double>& u, std::vec
   const std::size_t slot0 = d.crack_slot0();
 #pragma omp parallel for schedule(static) num_threads(thread_count(d.threads))
   for (long e = 0; e < nc; ++e) {
-    double* out = &s[2 * (slot0 + 4 * e)];
-    for (int k = 0; k < 8; ++k) out[k] = 0.0;
+    double* out = &s[2 * (slot0 + 2 * e)];  // nodes 0, 1; the gather negates them for 3, 2
+    for (int k = 0; k < 4; ++k) out[k] = 0.0;
     if (!d.cracks.active[e] || d.cracks.state[e] == std::uint8_t(CrackState::kBroken)) continue;
     const int* nd = &d.cracks.nodes[4 * e];
     const double* p = d.nodes.pos.data();
@@ -223,8 +224,6 @@ void apply_stiffness(const EngineData& d, const std::vector<double>& u, std::vec
       const double fx = st * ex - on * ey, fy = st * ey + on * ex;
       out[2 * end] = fx;
       out[2 * end + 1] = fy;
-      out[2 * (3 - end)] = -fx;
-      out[2 * (3 - end) + 1] = -fy;
     }
   }
 }
@@ -268,8 +267,9 @@ double power_critical_dt(const EngineData& d, int max_iterations) {
         if (m[i] <= 0) continue;
         double fx = 0, fy = 0;
         for (int k = d.nodes.slot_start[i]; k < d.nodes.slot_start[i + 1]; ++k) {
-          fx += s[2 * d.nodes.slot_index[k]];
-          fy += s[2 * d.nodes.slot_index[k] + 1];
+          const int e = d.nodes.slot_index[k], sl = entry_slot(e);
+          fx += entry_sign(e) * s[2 * sl];
+          fy += entry_sign(e) * s[2 * sl + 1];
         }
         next[2 * i] = fx / m[i];
         next[2 * i + 1] = fy / m[i];

@@ -45,18 +45,19 @@ void build_nodes(const ModelInput& in, EngineData& d) {
       d.tris.nodes[3 * t + k] = id;
     }
   }
+  n.vertex.shrink_to_fit();  // grown by push_back: up to half of it unused
   const std::size_t nn = n.vertex.size();
   n.pos.resize(2 * nn);
-  n.mesh_pos.resize(2 * nn);
   n.vel.assign(2 * nn, 0.0);
   n.mass.assign(nn, 0.0);
-  n.inv_mass.assign(nn, 0.0);
-  n.fext.assign(2 * nn, 0.0);
   n.bc.assign(nn, -1);
+  n.vertex_pos.resize(2 * nv);
+  for (std::size_t v = 0; v < nv; ++v) {
+    n.vertex_pos[2 * v] = in.x[v];
+    n.vertex_pos[2 * v + 1] = in.y[v];
+  }
   for (std::size_t i = 0; i < nn; ++i) {
     const int v = n.vertex[i];
-    n.mesh_pos[2 * i] = in.x[v];
-    n.mesh_pos[2 * i + 1] = in.y[v];
     const double ux = in.initial_displacement.empty() ? 0.0 : in.initial_displacement[v][0];
     const double uy = in.initial_displacement.empty() ? 0.0 : in.initial_displacement[v][1];
     n.pos[2 * i] = in.x[v] + ux;
@@ -153,6 +154,9 @@ void build_cracks(const ModelInput& in, EngineData& d) {
   }
   std::sort(pairs.begin(), pairs.end());
   for (const auto& p : pairs) add_crack(in, d, p[0], p[1], p[2]);
+  d.cracks.nodes.shrink_to_fit();  // grown by push_back: up to half of it unused
+  d.cracks.tri.shrink_to_fit();
+  d.cracks.material.shrink_to_fit();
   const std::size_t nc = d.cracks.size();
   d.cracks.damage.assign(3 * nc, 0.0);
   d.cracks.state.assign(nc, 0);
@@ -161,22 +165,39 @@ void build_cracks(const ModelInput& in, EngineData& d) {
   d.cracks.broken_step.assign(nc, -1);
 }
 
-/// CSR node -> slots, filled by walking slots in ascending order so that
-/// each node's list is sorted: the gather order is fixed once and for all.
+/// CSR node -> slot entries, filled by walking the element corners
+/// (triangles', then crack elements' nodes 0-3) in order so that each
+/// node's list is sorted: the gather order is fixed once and for all.
+/// Crack corner j of element c takes slot 2c + 0, 2c + 1, 2c + 1, 2c + 0
+/// (j = 0..3), negated for j = 2, 3.
 void build_slot_incidence(EngineData& d) {
   const std::size_t nn = d.nodes.size(), nt = d.tris.size(), nc = d.cracks.size();
-  const std::size_t n_slots = 3 * nt + 4 * nc;
-  std::vector<int> slot_node(n_slots);
-  for (std::size_t s = 0; s < 3 * nt; ++s) slot_node[s] = d.tris.nodes[s];
-  for (std::size_t s = 0; s < 4 * nc; ++s) slot_node[3 * nt + s] = d.cracks.nodes[s];
+  const std::size_t n_corners = 3 * nt + 4 * nc, n_slots = 3 * nt + 2 * nc;
+  // Entries are 2 slot + sign in an int.
+  if (n_corners > std::size_t(INT32_MAX) || 2 * n_slots + 1 > std::size_t(INT32_MAX))
+    throw InputError("fdem model input: " + std::to_string(nt) + " triangles and " +
+                     std::to_string(nc) +
+                     " crack elements exceed the engine's 32-bit force-slot indices (at most " +
+                     std::to_string(INT32_MAX / 2) + " slots); use a coarser mesh");
+  std::vector<int> corner_node(n_corners), entry(n_corners);
+  for (std::size_t s = 0; s < 3 * nt; ++s) {
+    corner_node[s] = d.tris.nodes[s];
+    entry[s] = static_cast<int>(2 * s);
+  }
+  const int crack_slot[4] = {0, 1, 1, 0}, negated[4] = {0, 0, 1, 1};
+  for (std::size_t k = 0; k < 4 * nc; ++k) {
+    const std::size_t slot = 3 * nt + 2 * (k / 4) + crack_slot[k % 4];
+    corner_node[3 * nt + k] = d.cracks.nodes[k];
+    entry[3 * nt + k] = static_cast<int>(2 * slot) + negated[k % 4];
+  }
   auto& start = d.nodes.slot_start;
   start.assign(nn + 1, 0);
-  for (int node : slot_node) ++start[node + 1];
+  for (int node : corner_node) ++start[node + 1];
   for (std::size_t i = 0; i < nn; ++i) start[i + 1] += start[i];
   auto& index = d.nodes.slot_index;
-  index.resize(n_slots);
+  index.resize(n_corners);
   std::vector<int> fill(start.begin(), start.end() - 1);
-  for (std::size_t s = 0; s < n_slots; ++s) index[fill[slot_node[s]]++] = static_cast<int>(s);
+  for (std::size_t k = 0; k < n_corners; ++k) index[fill[corner_node[k]]++] = entry[k];
   d.slots.assign(2 * n_slots, 0.0);
 }
 

@@ -87,6 +87,12 @@ struct PhaseTimes {
   double contact = 0;  ///< detection, contact forces and their gather
 };
 
+/// One of the engine's arrays and the bytes it holds (memory_breakdown()).
+struct MemoryPart {
+  std::string name;  ///< "record.member", e.g. "nodes.pos", "contact.pairs"
+  std::size_t bytes = 0;
+};
+
 /// What contact did (contact_counters()): for the run summary.
 struct ContactCounters {
   bool enabled = false;
@@ -328,8 +334,11 @@ class Engine {
   /// FNV-1a 64 over the bytes of the node coordinates, as 16 hex digits.
   std::string state_hash() const;
   PhaseTimes phase_times() const;
-  /// Bytes held by the engine's arrays.
+  /// Bytes held by the engine's arrays (their capacity): the sum of
+  /// memory_breakdown().
   std::size_t memory_bytes() const;
+  /// The same, array by array, in a fixed order (empty arrays included).
+  std::vector<MemoryPart> memory_breakdown() const;
 
   // --- Checkpoint ------------------------------------------------------------
   /// Writes the whole mutable state (binary, native byte order) so that an

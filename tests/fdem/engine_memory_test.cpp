@@ -1,0 +1,45 @@
+// What the engine holds per element: the fracturing UCS's arrays, counted
+// from the model's sizes (docs/engine.md, "Memory per triangle"), against
+// memory_bytes(). A new per-element array, or one of the derived ones
+// (1/m, nodes 3 and 2's crack forces, per-node mesh positions, a zero
+// external force) stored again, shows here.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+
+#include "test_models.hpp"
+
+namespace rockfdem::fdem {
+namespace {
+
+TEST(EngineMemory, fracturing_ucs_holds_its_arrays_and_at_most_500_B_per_triangle) {
+  Material m = test::rock();
+  m.damping_ratio = 0.1;  // the energy ledger's viscous term, as in bench_ucs
+  ModelInput in = ucs_specimen(ucs_grid(0.02, 0.04, 1600), m, 2.0);
+  Engine e(in);
+  e.run(10);
+  const double nt = double(e.n_triangles()), nc = double(e.n_cracks()), nn = double(e.n_nodes());
+  const std::vector<int>& vertex = e.node_vertex();
+  const double nv = double(*std::max_element(vertex.begin(), vertex.end()) + 1);
+  // Per node: position, velocity 16 each, mass 8, BC index, vertex, CSR
+  // start 4 each; per element corner a 4-byte slot entry; per mesh vertex
+  // its position 16 and the vertex -> nodes CSR (4 per node, 4 per vertex).
+  const double nodes = nn * 52 + (3 * nt + 4 * nc) * 4 + nv * 20 + nn * 4;
+  // Per triangle: nodes 12, F0^-1 32, area, eta, alpha 8 each, the last
+  // viscous stress 24, material 2, active 1.
+  const double tris = nt * 95;
+  // Per crack element: nodes 16, triangles 8, damages 24, material 2,
+  // state, mode, active 1 each, broken step 4.
+  const double cracks = nc * 57;
+  const double slots = (3 * nt + 2 * nc) * 16;  // two per crack element
+  const double expected = nodes + tris + cracks + slots;
+  const double bytes = double(e.memory_bytes());
+  // Above the per-element arrays only the block sums (40 B per 512 nodes,
+  // 8 B per 4096 elements) and the CSR ends: 0.07% here.
+  EXPECT_GE(bytes, expected);
+  EXPECT_LE(bytes, expected * 1.002) << "bytes " << bytes << ", arrays " << expected;
+  EXPECT_LE(bytes / nt, 500.0) << "cracks per triangle " << nc / nt;
+}
+
+}  // namespace
+}  // namespace rockfdem::fdem
