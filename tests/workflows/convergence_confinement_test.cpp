@@ -48,6 +48,44 @@ TEST(SupportLines, shotcrete_ring_is_lames_thick_cylinder) {
   EXPECT_EQ(line_pressure(s, -1e-3), 0.0);
 }
 
+// The default's two-part ring on an equivalent circle of R = 6.2 m: 72% of
+// its length 0.2 m of shotcrete (11.5 MPa, 0.5 GPa, nu 0.3), 28% a 1 m C30
+// invert (30 MPa, 30 GPa, nu 0.2). By hand, the closed-ring formulas per
+// part (Lame, as above):
+//   arch:   p_max = 5.75 MPa (1 - 6.0^2 / 6.2^2) = 0.364984 MPa,
+//           K = 0.5e9 (38.44 - 36) / (1.3 (0.4 38.44 + 36) 6.2) = 2.946215e6 Pa/m
+//   invert: p_max = 15 MPa (1 - 5.2^2 / 6.2^2) = 4.448491 MPa,
+//           K = 30e9 (38.44 - 27.04) / (1.2 (0.6 38.44 + 27.04) 6.2) = 9.174465e8 Pa/m
+// Both parts carry the thrust p R, so the ring's p_max is the arch's (not
+// that of one ring of the mean thickness); the compliances add by length:
+//   1 / K = 0.72 / 2.946215e6 + 0.28 / 9.174465e8, K = 4.086862e6 Pa/m.
+// With a weak invert, the invert governs.
+TEST(SupportLines, ring_of_parts_fails_with_its_weakest_part) {
+  const std::vector<RingPart> parts{{"arch and walls", 0.72, 0.2, 11.5e6, 0.5e9, 0.3},
+                                    {"invert", 0.28, 1.0, 30e6, 30e9, 0.2}};
+  const SupportLine s = ring_line(parts, 6.2);
+  EXPECT_EQ(s.name, "lining ring");
+  EXPECT_NEAR(s.p_max, 0.364984e6, 2e-6 * 0.364984e6);
+  EXPECT_NEAR(s.stiffness, 4.086862e6, 1e-6 * 4.086862e6);
+  EXPECT_NE(s.note.find("p_max of the arch and walls (0.2 m, 11.5 MPa)"), std::string::npos)
+      << s.note;
+  EXPECT_NE(s.note.find("arch and walls 72%, invert 28%"), std::string::npos) << s.note;
+  // An invert of 1 MPa: 0.5 MPa (1 - 27.04 / 38.44) = 0.148283 MPa, below the arch's.
+  std::vector<RingPart> weak_floor = parts;
+  weak_floor[1].sigma_c = 1e6;
+  const SupportLine w = ring_line(weak_floor, 6.2);
+  EXPECT_NEAR(w.p_max, 0.148283e6, 1e-5 * 0.148283e6);
+  EXPECT_EQ(w.stiffness, s.stiffness);
+  EXPECT_NE(w.note.find("p_max of the invert (1 m, 1 MPa)"), std::string::npos) << w.note;
+  // One part, whatever its share, is the closed ring itself.
+  const SupportLine one = ring_line({parts[0]}, 6.2);
+  const SupportLine closed = shotcrete_ring_line(11.5e6, 0.5e9, 0.3, 6.2, 0.2);
+  EXPECT_EQ(one.name, "shotcrete");
+  EXPECT_EQ(one.p_max, closed.p_max);
+  EXPECT_NEAR(one.stiffness, closed.stiffness, 1e-12 * closed.stiffness);
+  EXPECT_TRUE(one.note.empty());
+}
+
 // A 25 mm bolt, 3 m, 200 GPa, on a 1 x 1.5 m pattern: the bar's own
 // stiffness E A / l per bolt spread over its tributary area; with Q the
 // head's and anchor's compliance adds in series. Two lines sum their

@@ -149,9 +149,9 @@ TEST(Report, tunnel_run_writes_a_report_with_the_summary_figures) {
   EXPECT_EQ(row_of(md, "lining-rock bond")[1],
             std::to_string(lining["interface_broken"].get<long>()) + " of " +
                 std::to_string(lining["interface_cracks"].get<long>()) + " crack elements broken");
-  EXPECT_EQ(
-      row_of(md, "largest thrust")[2],
-      "at " + std::to_string(std::lround(lining["max_thrust_angle_deg"].get<double>())) + " deg");
+  const std::string thrust_at =
+      "at " + std::to_string(std::lround(lining["max_thrust_angle_deg"].get<double>())) + " deg";
+  EXPECT_NE(row_of(md, "largest thrust")[2].find(thrust_at), std::string::npos) << md;
   const double thrust = lining["max_thrust_kN_per_m"].get<double>();
   EXPECT_NEAR(std::stod(row_of(md, "largest thrust")[1]), thrust, 0.005 * std::abs(thrust));
   EXPECT_EQ(row_of(md, "deepest from the opening")[1],

@@ -21,7 +21,8 @@ GroundReactionPoint implicit_point(double u_mm, double p_Pa) {
 ConvergenceConfinementFigures one_line(double u0, double k_mpa_per_mm, double p_max_mpa) {
   ConvergenceConfinementFigures c;
   c.install_radial_mm = u0;
-  c.support.push_back({"shotcrete", 1e6 * p_max_mpa, 1e9 * k_mpa_per_mm, p_max_mpa / k_mpa_per_mm});
+  c.support.push_back(
+      {"shotcrete", 1e6 * p_max_mpa, 1e9 * k_mpa_per_mm, p_max_mpa / k_mpa_per_mm, {}});
   return c;
 }
 

@@ -15,6 +15,7 @@
 
 #include "commands/check_probe.hpp"
 #include "commands/commands.hpp"
+#include "commands/run_time_estimate.hpp"
 #include "outputs/broken_zone.hpp"
 #include "outputs/rock_plausibility.hpp"
 #include "rockfdem/error.hpp"
@@ -149,6 +150,24 @@ double explicit_steps(const Scene& s) {
   return n;
 }
 
+// The steps a run is expected to take: a stage that ends at a criterion
+// (an equilibrium stage's ratio, a grout stage's trigger) at half its cap
+// (the shipped tunnels stopped at 0.25-1.0 of their caps, half on average,
+// docs/benchmarks.md, "check's bounds against runs"), the others at
+// theirs; a specimen's steps as given (its runs ended at 0.55-0.79 of them
+// after the peak, too close to the cap to halve).
+constexpr double kCriterionShare = 0.5;
+
+double expected_steps(const Scene& s) {
+  if (!staged(s)) return double(s.engine.steps);
+  double n = s.stages.empty() ? 0 : 1;
+  for (const StageSpec& st : s.stages) {
+    const bool criterion = (st.kind == "equilibrium" && st.ratio > 0) || st.kind == "grout";
+    n += (criterion ? kCriterionShare : 1.0) * double(st.max_steps);
+  }
+  return n;
+}
+
 // Serial engine throughput measured on the 2-core development machine
 // (docs/benchmarks.md, "A vector kernel for the narrow phase"): 11 M
 // triangle-steps/s for intact models (bench_ucs: 15 M), 8 M for a
@@ -226,22 +245,23 @@ namespace {
 
 // The probe's figures into bounds: the explicit stages' cost per step
 // measured here, raised for fracture (the probe's unloaded model does not
-// fracture; after fracture a step costs more with the touching pairs: a
-// confined specimen fell to 0.24 of its intact throughput, docs/
-// benchmarks.md) by kFractureCost on the share of triangles that may
-// fracture, plus meshing as measured and the implicit stage from its
-// documented constants; memory as measured after meshing and building
-// the engine, plus the implicit stage's share.
-constexpr double kFractureCost = 4.0;
+// fracture; run_time_estimate.hpp), plus meshing as measured and the
+// implicit stage from its documented constants; memory as measured after
+// meshing and building the engine, plus the implicit stage's share.
 // Fixed and output costs the probe does not see: the process's start (MPI
 // and library initialisation, scene reading: 0.9 s measured), and writing
 constexpr double kStartSeconds = 2.0;
-// each output step's frame and history row (2 us per triangle allowed,
-// and 5 ms for the files it rewrites: an output within a stage took 4-8 ms
-// at 2,048 triangles).
-constexpr double kOutputSecondsPerTriangle = 2e-6;
+// each output step's frame and history row (10 us per triangle for the
+// frame, and 5 ms for the files it rewrites: an output within a stage
+// took 4-8 ms at 2,048 triangles), and the end's pictures, report and
+// continuum counterpart with output.plots: 4 s + 0.03 ms per triangle
+// (the runs' "output" timers less their frames: 2.4-6.7 s at 5,382-39,364
+// triangles under a load of 5, docs/benchmarks.md, "check's bounds
+// against runs").
+constexpr double kOutputSecondsPerTriangle = 10e-6;
 constexpr double kOutputSeconds = 0.005;
-constexpr double kProbeTimeMargin = 1.5;
+constexpr double kPicturesSeconds = 4.0;
+constexpr double kPicturesSecondsPerTriangle = 0.03e-3;
 constexpr double kProbeMemoryMargin = 1.25;
 // What a tunnel run holds above the probe: the implicit solves (the sparse
 // factor grows faster than the mesh), the fields the outputs keep, the
@@ -255,11 +275,6 @@ constexpr double kProbeMemoryMargin = 1.25;
 // (docs/benchmarks.md).
 constexpr double kImplicitBytesPerTriangle = 2000;
 
-double fracture_factor(const Probe& p) {
-  return 1 + (kFractureCost - 1) * double(p.fracture_triangles) /
-                 double(std::max<std::size_t>(p.triangles, 1));
-}
-
 // Output steps at most: each stage's (and its last), or the specimen's.
 double output_steps(const Scene& s) {
   if (!staged(s)) return double(s.engine.steps) / std::max(1, s.output.every_steps) + 1;
@@ -268,15 +283,22 @@ double output_steps(const Scene& s) {
   return n;
 }
 
-double probe_seconds(const Scene& s, const Probe& p) {
+RunTimeFigures probe_run_time(const Scene& s, const Probe& p) {
   const double tri = double(p.triangles);
   const double implicit =
       staged(s) ? 90e-6 * tri + kAlphaSecondsPerTriangle * tri * double(s.insitu.alpha.size())
                 : 0.0;
-  const double fracture = fracture_factor(p);
-  const double outputs = output_steps(s) * (kOutputSeconds + kOutputSecondsPerTriangle * tri);
-  return kStartSeconds + p.mesh_seconds + implicit + outputs + stage_seconds(s, tri) +
-         explicit_steps(s) * p.seconds_per_step * fracture;
+  const double outputs =
+      output_steps(s) * (kOutputSeconds + kOutputSecondsPerTriangle * tri) +
+      (s.output.plots ? kPicturesSeconds + kPicturesSecondsPerTriangle * tri : 0);
+  RunTimeInputs in;
+  in.fixed_seconds = kStartSeconds + p.mesh_seconds + implicit + outputs + stage_seconds(s, tri);
+  in.seconds_per_step = p.seconds_per_step;
+  in.steps = explicit_steps(s);
+  in.expected_steps = expected_steps(s);
+  in.fracture_share = double(p.fracture_triangles) / double(std::max<std::size_t>(p.triangles, 1));
+  in.joints = !s.mesh.joints.empty();
+  return run_time(in);
 }
 
 double probe_bytes(const Scene& s, const Probe& p) {
@@ -302,15 +324,26 @@ void print_probe(const Scene& scene, const Probe& p) {
       p.rss_bytes / 1048576.0, kImplicitBytesPerTriangle, kBytesPerAlphaTriangle,
       kProbeMemoryMargin);
   print_step_counts(scene);
+  const RunTimeFigures t = probe_run_time(scene, p);
+  const char* plural = p.threads == 1 ? "" : "s";
+  std::printf(
+      "  run time (estimate):        about %.0f s on %d thread%s, between %.0f s and the bound "
+      "(%.3g ms per step measured here over %ld steps, x %.2f for the fracture%s expected, x "
+      "%.0f steps expected, a stage that ends at its criterion, equilibrium or a grout "
+      "trigger, at half its cap, + %.1f s for meshing, the implicit stage, start-up, outputs, "
+      "pictures and stage changes)\n",
+      t.estimate, p.threads, plural, t.least, 1e3 * p.seconds_per_step, p.steps,
+      t.expected_step_factor, scene.mesh.joints.empty() ? "" : " and joints", expected_steps(scene),
+      t.least);
   std::printf(
       "  run time (bound):           %.0f s at most on %d thread%s (bound: %.3g ms per step "
-      "measured here over %ld steps, x %.2f for fracture, x the steps, + meshing %.2f s + the "
+      "measured here over %ld steps, x %.2f for fracture%s, x the steps, + meshing %.2f s + the "
       "implicit stage + start-up and outputs + %.0f stage changes at %.3g s each, x %.1f "
       "margin)\n",
-      kProbeTimeMargin * probe_seconds(scene, p), p.threads, p.threads == 1 ? "" : "s",
-      1e3 * p.seconds_per_step, p.steps, fracture_factor(p), p.mesh_seconds, stage_changes(scene),
+      t.bound, p.threads, plural, 1e3 * p.seconds_per_step, p.steps, t.worst_step_factor,
+      scene.mesh.joints.empty() ? "" : " and joints", p.mesh_seconds, stage_changes(scene),
       stage_seconds(scene, double(p.triangles)) / std::max(1.0, stage_changes(scene)),
-      kProbeTimeMargin);
+      kRunTimeMargin);
   std::printf("  stable time step:           %.4g s on true masses (this mesh, its penalties)\n",
               scene.engine.dt_safety * p.critical_true);
   std::printf("  time step at the start:     %.8g s%s\n", p.dt_start,

@@ -28,8 +28,8 @@ ConvergenceConfinementFigures convergence_confinement(const Scene& scene, const 
   ConvergenceConfinementFigures c;
   c.radius_m = o.radius;
   c.lining_thickness_m = o.lining_thickness;
-  for (const SupportLine& l : scene_support_lines(scene, o))
-    c.support.push_back({l.name, l.p_max, l.stiffness, 1e3 * l.max_displacement()});
+  for (const SupportLine& l : scene_support_lines(scene, o, ring_parts(scene, m, o)))
+    c.support.push_back({l.name, l.p_max, l.stiffness, 1e3 * l.max_displacement(), l.note});
   c.install_radial_mm = s.install_radial_mm;
   c.install_alpha = s.install_alpha;
   c.end_radial_mm = s.end_radial_mm;

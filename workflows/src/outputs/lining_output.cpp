@@ -4,30 +4,13 @@
 #include <cmath>
 #include <cstdio>
 
+#include "outputs/lining_extremes.hpp"
 #include "record/output_dir.hpp"
 #include "rockfdem/coupling/atomic_file.hpp"
 #include "rockfdem/coupling/lining_cracks.hpp"
 
 namespace rockfdem::workflows {
 namespace {
-
-// Index of the segment where `value` of the forces is largest.
-template <class F>
-std::size_t arg_max(const std::vector<SectionForces>& f, F value) {
-  std::size_t best = 0;
-  for (std::size_t i = 1; i < f.size(); ++i)
-    if (value(f[i]) > value(f[best])) best = i;
-  return best;
-}
-
-// The segments of the largest thrust and of the largest |moment|: the
-// summary's extremes and history.csv's lining columns.
-std::size_t max_thrust(const std::vector<SectionForces>& f) {
-  return arg_max(f, [](const SectionForces& s) { return s.thrust; });
-}
-std::size_t max_abs_moment(const std::vector<SectionForces>& f) {
-  return arg_max(f, [](const SectionForces& s) { return std::abs(s.moment); });
-}
 
 // Of the segments in the floor part (`invert`) or out of it; 0 where none.
 double median_thickness(const LiningGeometry& g, const std::vector<char>& in_invert, bool invert) {
@@ -136,8 +119,10 @@ std::vector<std::string> LiningOutput::history_columns() const {
 std::array<double, 3> LiningOutput::history_values(const std::vector<SectionForces>& f) const {
   const double nan = std::nan("");
   if (f.empty()) return {nan, nan, nan};
-  const double n = f[max_thrust(f)].thrust / 1e3;
-  const double m = std::abs(f[max_abs_moment(f)].moment) / 1e3;
+  // The sections' extremes: a corner's are no beam section's.
+  const ForceExtremes x = lining_extremes(geometry_, f).sections;
+  const double n = x.max_thrust.value / 1e3;
+  const double m = x.max_abs_moment.value / 1e3;
   double fs = nan;
   if (sections_) {
     const std::vector<double> all = safety_factors(f);
@@ -169,12 +154,11 @@ LiningForceFigures LiningOutput::finish(const fdem::Engine& e, const std::string
 LiningForceFigures LiningOutput::figures(const fdem::Engine& e, const std::string& dir) {
   last_ = forces(e);
   coupling::atomic_write_text(output_path(dir, "lining.csv"), csv(e.step_count(), last_));
-  const auto angle = [&](std::size_t i) { return geometry_.segments[i].angle_deg; };
-  const std::size_t n_max = max_thrust(last_);
-  const std::size_t n_min = arg_max(last_, [](const SectionForces& f) { return -f.thrust; });
-  const std::size_t m_max = max_abs_moment(last_);
-  const std::size_t v_max =
-      arg_max(last_, [](const SectionForces& f) { return std::abs(f.shear); });
+  const auto angle = [&](const SegmentExtreme& x) {
+    return geometry_.segments[x.segment].angle_deg;
+  };
+  const LiningExtremes x = lining_extremes(geometry_, last_);
+  const ForceExtremes& s = x.sections;
   LiningForceFigures f;
   f.step = e.step_count();
   f.segments = long(geometry_.segments.size());
@@ -182,15 +166,23 @@ LiningForceFigures LiningOutput::figures(const fdem::Engine& e, const std::strin
   if (std::count(segment_invert_.begin(), segment_invert_.end(), 1))
     f.invert_thickness_m = median_thickness(geometry_, segment_invert_, true);
   f.corner_segments = std::count_if(geometry_.segments.begin(), geometry_.segments.end(),
-                                    [](const LiningSegment& s) { return s.corner; });
-  f.max_thrust_kN_per_m = last_[n_max].thrust / 1e3;
-  f.max_thrust_angle_deg = angle(n_max);
-  f.min_thrust_kN_per_m = last_[n_min].thrust / 1e3;
-  f.min_thrust_angle_deg = angle(n_min);
-  f.max_abs_moment_kNm_per_m = std::abs(last_[m_max].moment) / 1e3;
-  f.max_abs_moment_angle_deg = angle(m_max);
-  f.max_abs_shear_kN_per_m = std::abs(last_[v_max].shear) / 1e3;
-  f.max_abs_shear_angle_deg = angle(v_max);
+                                    [](const LiningSegment& g) { return g.corner; });
+  f.max_thrust_kN_per_m = s.max_thrust.value / 1e3;
+  f.max_thrust_angle_deg = angle(s.max_thrust);
+  f.max_thrust_x_m = geometry_.segments[s.max_thrust.segment].x;
+  f.max_thrust_y_m = geometry_.segments[s.max_thrust.segment].y;
+  f.max_thrust_in_invert = segment_invert_[s.max_thrust.segment];
+  f.min_thrust_kN_per_m = s.min_thrust.value / 1e3;
+  f.min_thrust_angle_deg = angle(s.min_thrust);
+  f.max_abs_moment_kNm_per_m = s.max_abs_moment.value / 1e3;
+  f.max_abs_moment_angle_deg = angle(s.max_abs_moment);
+  f.max_abs_shear_kN_per_m = s.max_abs_shear.value / 1e3;
+  f.max_abs_shear_angle_deg = angle(s.max_abs_shear);
+  if (const std::optional<ForceExtremes>& c = x.corners)
+    f.corners = LiningCornerFigures{f.corner_segments,        c->max_thrust.value / 1e3,
+                                    angle(c->max_thrust),     c->min_thrust.value / 1e3,
+                                    angle(c->min_thrust),     c->max_abs_moment.value / 1e3,
+                                    angle(c->max_abs_moment), x.corners_exceed};
   check_capacity(f);
   return f;
 }

@@ -52,8 +52,10 @@ class LiningOutput : public OutputStepObserver {
   /// DIR/lining_<step>.csv, once installed and every lining triangle is
   /// active, and the ring's extremes (history_values) into the row.
   void at_output_step(const OutputStep& step, std::vector<double>& row) override;
-  /// history_columns()' values for forces `f`: the largest thrust [kN/m],
-  /// the largest |moment| [kNm/m] and the smallest safety factor (NaN
+  /// history_columns()' values for forces `f`: the largest thrust [kN/m]
+  /// and the largest |moment| [kNm/m] of the segments that are beam
+  /// sections (lining_extremes.hpp: the corners' apart), and the smallest
+  /// safety factor of all segments, corners too (NaN
   /// without a capacity check or when unloaded); all NaN for no forces
   /// (the ring not installed).
   std::array<double, 3> history_values(const std::vector<SectionForces>& f) const;

@@ -1,5 +1,6 @@
 #include "outputs/run_report.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <optional>
@@ -313,11 +314,27 @@ void capacity_rows(std::ostream& md, const LiningForceFigures& f, const LiningCa
              value_text(c.segments_below_1) + " of " + value_text(f.segments));
 }
 
+// The corners' extremes, where they pass the sections': stress
+// concentrations at the kinks, not design figures.
+void corner_rows(std::ostream& md, const LiningCornerFigures& c) {
+  const std::string where = "at a corner (a kink, no beam section), ";
+  figure_row(md, "corners: largest thrust", force(c.max_thrust_kN_per_m) + " kN/m",
+             where + at_angle(c.max_thrust_angle_deg));
+  figure_row(
+      md, "corners: smallest thrust", force(c.min_thrust_kN_per_m) + " kN/m",
+      where + at_angle(c.min_thrust_angle_deg) + (c.min_thrust_kN_per_m < 0 ? " (tension)" : ""));
+  figure_row(md, "corners: largest moment (magnitude)",
+             force(c.max_abs_moment_kNm_per_m) + " kNm/m",
+             where + at_angle(c.max_abs_moment_angle_deg));
+}
+
 void lining(std::ostream& md, const LiningRecord& r) {
   if (r.empty()) return;
   md << "\n## Lining (end of run)\n\nSection forces per metre of tunnel; thrust "
         "compression positive; angles about the opening's centroid from +x, counter-clockwise (90 "
-        "crown, 270 invert); figures per segment in lining.csv.\n\n"
+        "crown, 270 invert); figures per segment in lining.csv. The extremes are those of the "
+        "beam sections; the ring's corners (where it turns sharply, at the floor) are given "
+        "apart where theirs are larger.\n\n"
         "| figure | value | where |\n|---|---|---|\n";
   if (const auto& f = r.forces) {
     figure_row(md, "section",
@@ -328,7 +345,9 @@ void lining(std::ostream& md, const LiningRecord& r) {
     figure_row(md, "capacity check", f->capacity);
     if (f->check) capacity_rows(md, *f, *f->check);
     figure_row(md, "largest thrust", force(f->max_thrust_kN_per_m) + " kN/m",
-               at_angle(f->max_thrust_angle_deg));
+               std::string(f->max_thrust_in_invert ? "in the floor part, " : "") +
+                   at_angle(f->max_thrust_angle_deg) + " (x " + fixed(f->max_thrust_x_m, 2) +
+                   " m, y " + fixed(f->max_thrust_y_m, 2) + " m)");
     figure_row(
         md, "smallest thrust", force(f->min_thrust_kN_per_m) + " kN/m",
         at_angle(f->min_thrust_angle_deg) + (f->min_thrust_kN_per_m < 0 ? " (tension)" : ""));
@@ -339,6 +358,7 @@ void lining(std::ostream& md, const LiningRecord& r) {
     figure_row(md, "segments",
                value_text(f->segments) + " (" + value_text(f->corner_segments) + " at corners)",
                "lining.csv, step " + value_text(f->step));
+    if (f->corners && f->corners->exceed_sections) corner_rows(md, *f->corners);
   }
   if (r.interface)
     figure_row(md, "lining-rock bond",
@@ -467,7 +487,12 @@ void convergence_confinement(std::ostream& md, const RunRecord& r) {
       ground_curve(r.ground_reaction_curve, r.continuum_comparison);
   md << "\n## Convergence-confinement\n\nThe support lines on the equivalent circle (R = "
      << fixed(c.radius_m, 2) << " m";
-  if (c.lining_thickness_m > 0) md << ", ring " << fixed(c.lining_thickness_m, 2) << " m thick";
+  const bool parts = std::any_of(c.support.begin(), c.support.end(),
+                                 [](const SupportLineFigures& s) { return !s.note.empty(); });
+  if (parts)
+    md << ", the ring taken in its parts, below";
+  else if (c.lining_thickness_m > 0)
+    md << ", ring " << fixed(c.lining_thickness_m, 2) << " m thick";
   md << "), installed at the key points' mean radial displacement of "
      << fixed(c.install_radial_mm, 1) << " mm from the in-situ state (core at alpha "
      << sig(c.install_alpha) << ")";
@@ -494,12 +519,14 @@ void convergence_confinement(std::ostream& md, const RunRecord& r) {
        << (e.found ? sig(e.pressure_Pa / 1e6) : "-") << " | "
        << (e.factor_of_safety ? fixed(*e.factor_of_safety, 2) : "-") << " | " << e.note << " |\n";
   }
+  for (const SupportLineFigures& s : c.support)
+    if (!s.note.empty()) md << "\nThe " << s.name << ": " << s.note << ".\n";
   md << "\nThe run ended at " << fixed(c.end_radial_mm, 1) << " mm";
   if (c.end_pressure_Pa) {
     md << " with the ring's pressure (its mean thrust over R) at " << sig(*c.end_pressure_Pa / 1e6)
        << " MPa";
     for (const SupportLineFigures& s : c.support)
-      if (s.name == "shotcrete" && s.p_max_Pa > 0)
+      if ((s.name == "shotcrete" || s.name == "lining ring") && s.p_max_Pa > 0)
         md << ", " << fixed(*c.end_pressure_Pa / s.p_max_Pa, 2) << " times the ring's p_max";
   }
   md << ": what differs from the equilibria above is what the continuum curve leaves out "

@@ -6,6 +6,7 @@
 
 #include "outputs/broken_zone.hpp"
 #include "rockfdem/fdem/bolt_sections.hpp"
+#include "rockfdem/mesh/outline.hpp"
 
 namespace rockfdem::workflows {
 namespace {
@@ -73,6 +74,97 @@ std::string label_extreme(const std::vector<DiagramPoint>& p, double scale, cons
   char text[96];
   std::snprintf(text, sizeof text, "%s %.0f %s", what.c_str(), at->value, unit.c_str());
   return text;
+}
+
+// `head` and `items` joined by "; " into lines of at most kNoteWidth
+// characters where the items allow (an item is never split): the notes
+// box ends where the scale bar begins.
+constexpr std::size_t kNoteWidth = 90;
+std::vector<std::string> wrapped(const std::string& head, const std::vector<std::string>& items) {
+  std::vector<std::string> lines;
+  std::string line = head;
+  for (std::size_t i = 0; i < items.size(); ++i) {
+    const std::string piece = items[i] + (i + 1 < items.size() ? ";" : "");
+    if (line.size() > head.size() && line.size() + 1 + piece.size() > kNoteWidth) {
+      lines.push_back(line);
+      line = "  ";
+    }
+    line += (line.size() > 2 && line != head ? " " : "") + piece;
+  }
+  if (!items.empty()) lines.push_back(line);
+  return lines;
+}
+
+// The ring's runs (between its corners) grouped into the parts an
+// engineer scales apart: a horseshoe's floor part (its runs' mean height
+// below the inner walls' feet) carries many times the arch's thrust and
+// would flatten it at one scale. One part, "ring", without a floor part.
+struct RingPartRuns {
+  std::string name;
+  std::vector<std::vector<DiagramPoint>> n, m;
+  std::vector<DiagramPoint> all_n, all_m;
+};
+
+std::vector<RingPartRuns> ring_part_runs(const Scene& scene,
+                                         const std::vector<std::vector<DiagramPoint>>& n,
+                                         const std::vector<std::vector<DiagramPoint>>& m) {
+  const double top = scene.mesh.kind == mesh::ModelKind::kTunnel
+                         ? mesh::invert_part_top(scene.mesh.tunnel)
+                         : -INFINITY;
+  std::vector<RingPartRuns> parts{{"arch and walls", {}, {}, {}, {}}, {"invert", {}, {}, {}, {}}};
+  for (std::size_t r = 0; r < n.size() && r < m.size(); ++r) {
+    double y = 0;
+    for (const DiagramPoint& p : n[r]) y += p.y / double(n[r].size());
+    RingPartRuns& part = parts[y < top];
+    part.n.push_back(n[r]);
+    part.m.push_back(m[r]);
+    part.all_n.insert(part.all_n.end(), n[r].begin(), n[r].end());
+    part.all_m.insert(part.all_m.end(), m[r].begin(), m[r].end());
+  }
+  if (parts[1].n.empty()) parts.pop_back();
+  if (parts[0].n.empty()) parts.erase(parts.begin());
+  if (parts.size() == 1) parts[0].name = "ring";
+  return parts;
+}
+
+// The lines of the ring's diagrams, each part at its own scales (an item
+// of `scales` per part), its extremes marked and worded (an item of
+// `extremes` per part).
+void ring_diagrams(const Scene& scene, const LiningGeometry& ring,
+                   const std::vector<SectionForces>& forces, double span, plots::PictureLines& base,
+                   std::vector<plots::PictureLines>& diagrams, std::vector<std::string>& scales,
+                   std::vector<std::string>& extremes, plots::MeshOverlay& labels) {
+  const bool corners = std::any_of(ring.segments.begin(), ring.segments.end(),
+                                   [](const LiningSegment& s) { return s.corner; });
+  const bool closed = !corners && closed_ring(ring);
+  plots::PictureLines comp{"ring N, compression", kCompression, 2, {}};
+  plots::PictureLines tens{"ring N, tension", kTension, 2, {}};
+  plots::PictureLines mom{"ring M, tension side", kMoment, 2, {}};
+  const std::vector<RingPartRuns> parts = ring_part_runs(scene, lining_diagram(ring, forces, false),
+                                                         lining_diagram(ring, forces, true));
+  for (std::size_t i = 0; i < parts.size(); ++i) {
+    const RingPartRuns& p = parts[i];
+    const double sn = diagram_scale(max_abs(p.all_n), kThrustLength * span);
+    const double sm = diagram_scale(max_abs(p.all_m), kMomentLength * span);
+    for (const auto& run : p.n) {
+      diagram_lines(run, sn, closed, comp, tens);
+      add_baseline(run, closed, base);
+    }
+    for (const auto& run : p.m) diagram_lines(run, sm, closed, mom, mom);
+    const std::string what = parts.size() > 1 ? p.name + " " : "";
+    scales.push_back(what + "N " + number(sn) + " kN/m, M " + number(sm) + " kNm/m");
+    std::string words;
+    for (const std::string& e : {label_extreme(p.all_n, sn, "N", "kN/m", labels),
+                                 label_extreme(p.all_m, sm, "M", "kNm/m", labels)})
+      if (!e.empty()) words += (words.empty() ? what : ", ") + e;
+    if (!words.empty()) extremes.push_back(words);
+  }
+  for (plots::PictureLines* l : {&comp, &tens, &mom})
+    if (!l->segments.empty()) diagrams.push_back(*l);
+  if (parts.size() > 1)
+    labels.notes.push_back("The ring's parts are drawn at their own scales (above)");
+  if (corners)
+    labels.notes.push_back("The ring's corner segments (no beam section there) are not drawn");
 }
 
 }  // namespace
@@ -158,35 +250,9 @@ plots::MeshPicture support_forces_picture(const PictureContext& c, const LiningG
   if (bolts_shown) p.categories.push_back({2, "bolt, grout"});
   plots::PictureLines base{"", {0.3, 0.3, 0.3}, 1, {}};
   std::vector<plots::PictureLines> diagrams;
-  std::string scales = "Diagram scales, 1 m drawn:";
-  std::vector<std::string> extremes;
-  if (ring && forces && !forces->empty()) {
-    const std::vector<std::vector<DiagramPoint>> n = lining_diagram(*ring, *forces, false);
-    const std::vector<std::vector<DiagramPoint>> m = lining_diagram(*ring, *forces, true);
-    const bool corners = std::any_of(ring->segments.begin(), ring->segments.end(),
-                                     [](const LiningSegment& s) { return s.corner; });
-    const bool closed = !corners && closed_ring(*ring);
-    std::vector<DiagramPoint> all_n, all_m;
-    for (const auto& run : n) all_n.insert(all_n.end(), run.begin(), run.end());
-    for (const auto& run : m) all_m.insert(all_m.end(), run.begin(), run.end());
-    const double sn = diagram_scale(max_abs(all_n), kThrustLength * span);
-    const double sm = diagram_scale(max_abs(all_m), kMomentLength * span);
-    plots::PictureLines comp{"ring N, compression", kCompression, 2, {}};
-    plots::PictureLines tens{"ring N, tension", kTension, 2, {}};
-    plots::PictureLines mom{"ring M, tension side", kMoment, 2, {}};
-    for (const auto& run : n) {
-      diagram_lines(run, sn, closed, comp, tens);
-      add_baseline(run, closed, base);
-    }
-    for (const auto& run : m) diagram_lines(run, sm, closed, mom, mom);
-    for (plots::PictureLines* l : {&comp, &tens, &mom})
-      if (!l->segments.empty()) diagrams.push_back(*l);
-    extremes.push_back(label_extreme(all_n, sn, "N", "kN/m", labels));
-    extremes.push_back(label_extreme(all_m, sm, "M", "kNm/m", labels));
-    scales += " ring N " + number(sn) + " kN/m, M " + number(sm) + " kNm/m";
-    if (corners)
-      labels.notes.push_back("The ring's corner segments (no beam section there) are not drawn");
-  }
+  std::vector<std::string> scales, extremes;
+  if (ring && forces && !forces->empty())
+    ring_diagrams(c.scene, *ring, *forces, span, base, diagrams, scales, extremes, labels);
   if (c.bolts) {
     std::vector<std::vector<DiagramPoint>> bars;
     double largest = 0;
@@ -208,15 +274,11 @@ plots::MeshPicture support_forces_picture(const PictureContext& c, const LiningG
     for (plots::PictureLines* l : {&tens, &comp})
       if (!l->segments.empty()) diagrams.push_back(*l);
     if (peak) extremes.push_back(label_extreme({*peak}, sb, "bolt", "kN per bar", labels));
-    if (!bars.empty())
-      scales += std::string(ring && forces && !forces->empty() ? ";" : "") + " bolts " +
-                number(sb) + " kN per bar";
+    if (!bars.empty()) scales.push_back("bolts " + number(sb) + " kN per bar");
   }
-  std::string largest;
-  for (const std::string& e : extremes)
-    if (!e.empty()) largest += (largest.empty() ? "Largest (marked): " : ", ") + e;
-  labels.notes.insert(labels.notes.begin(), scales);
-  if (!largest.empty()) labels.notes.insert(labels.notes.begin() + 1, largest);
+  std::vector<std::string> head = wrapped("Diagram scales, 1 m drawn: ", scales);
+  for (const std::string& line : wrapped("Largest (marked): ", extremes)) head.push_back(line);
+  labels.notes.insert(labels.notes.begin(), head.begin(), head.end());
   p.lines.push_back(std::move(base));
   for (plots::PictureLines& l : diagrams) p.lines.push_back(std::move(l));
   p.overlay = &labels;

@@ -206,6 +206,7 @@ struct MonitorRecord {
 struct SupportLineFigures {
   std::string name;
   double p_max_Pa = 0, stiffness_Pa_per_m = 0, max_displacement_mm = 0;
+  std::string note;  ///< a ring of parts: which part's p_max, how K is taken
 };
 
 /// "convergence_confinement": the support's lines on the equivalent

@@ -273,11 +273,13 @@ void add_equilibria(nlohmann::json& j, const ConvergenceConfinementFigures& c,
 
 nlohmann::json convergence_confinement_json(const ConvergenceConfinementFigures& c) {
   nlohmann::json support = nlohmann::json::array();
-  for (const SupportLineFigures& s : c.support)
+  for (const SupportLineFigures& s : c.support) {
     support.push_back({{"name", s.name},
                        {"p_max_Pa", s.p_max_Pa},
                        {"stiffness_Pa_per_m", s.stiffness_Pa_per_m},
                        {"max_displacement_mm", s.max_displacement_mm}});
+    if (!s.note.empty()) support.back()["note"] = s.note;
+  }
   nlohmann::json install = {{"radial_mm", c.install_radial_mm}, {"alpha", c.install_alpha}};
   if (c.face)
     install["face"] = {{"face_distance_m", c.face->face_distance_m},
@@ -347,6 +349,17 @@ void add_capacity(nlohmann::json& j, const LiningCapacityFigures& c) {
   j["segments_below_1"] = c.segments_below_1;
 }
 
+nlohmann::json corners_json(const LiningCornerFigures& c) {
+  return {{"segments", c.segments},
+          {"max_thrust_kN_per_m", c.max_thrust_kN_per_m},
+          {"max_thrust_angle_deg", c.max_thrust_angle_deg},
+          {"min_thrust_kN_per_m", c.min_thrust_kN_per_m},
+          {"min_thrust_angle_deg", c.min_thrust_angle_deg},
+          {"max_abs_moment_kNm_per_m", c.max_abs_moment_kNm_per_m},
+          {"max_abs_moment_angle_deg", c.max_abs_moment_angle_deg},
+          {"exceed_sections", c.exceed_sections}};
+}
+
 void add_lining_forces(nlohmann::json& j, const LiningForceFigures& f) {
   j["file"] = "lining.csv";
   j["step"] = f.step;
@@ -356,12 +369,16 @@ void add_lining_forces(nlohmann::json& j, const LiningForceFigures& f) {
   j["corner_segments"] = f.corner_segments;
   j["max_thrust_kN_per_m"] = f.max_thrust_kN_per_m;
   j["max_thrust_angle_deg"] = f.max_thrust_angle_deg;
+  j["max_thrust_x_m"] = f.max_thrust_x_m;
+  j["max_thrust_y_m"] = f.max_thrust_y_m;
+  j["max_thrust_in_invert"] = f.max_thrust_in_invert;
   j["min_thrust_kN_per_m"] = f.min_thrust_kN_per_m;
   j["min_thrust_angle_deg"] = f.min_thrust_angle_deg;
   j["max_abs_moment_kNm_per_m"] = f.max_abs_moment_kNm_per_m;
   j["max_abs_moment_angle_deg"] = f.max_abs_moment_angle_deg;
   j["max_abs_shear_kN_per_m"] = f.max_abs_shear_kN_per_m;
   j["max_abs_shear_angle_deg"] = f.max_abs_shear_angle_deg;
+  if (f.corners) j["corners"] = corners_json(*f.corners);
   j["capacity"] = f.capacity;
   if (f.check) add_capacity(j, *f.check);
 }

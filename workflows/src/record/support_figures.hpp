@@ -62,16 +62,30 @@ struct LiningCapacityFigures {
   long segments_below_1 = 0;
 };
 
-/// The lining's section force extremes [kN/m, kNm/m] at the end's step.
+/// The extremes at the ring's corner segments (no beam section there).
+struct LiningCornerFigures {
+  long segments = 0;
+  double max_thrust_kN_per_m = 0, max_thrust_angle_deg = 0;
+  double min_thrust_kN_per_m = 0, min_thrust_angle_deg = 0;
+  double max_abs_moment_kNm_per_m = 0, max_abs_moment_angle_deg = 0;
+  /// Their largest thrust, largest |moment| or tension passes the sections'.
+  bool exceed_sections = false;
+};
+
+/// The lining's section force extremes [kN/m, kNm/m] at the end's step, of
+/// the segments that are beam sections (the corners' apart).
 struct LiningForceFigures {
   long step = 0;
   long segments = 0, corner_segments = 0;
   double thickness_m = 0;  ///< the median segment's (out of the floor part, with one)
   std::optional<double> invert_thickness_m;  ///< the floor part's median, with [materials.invert]
   double max_thrust_kN_per_m = 0, max_thrust_angle_deg = 0;
+  double max_thrust_x_m = 0, max_thrust_y_m = 0;
+  bool max_thrust_in_invert = false;
   double min_thrust_kN_per_m = 0, min_thrust_angle_deg = 0;
   double max_abs_moment_kNm_per_m = 0, max_abs_moment_angle_deg = 0;
   double max_abs_shear_kN_per_m = 0, max_abs_shear_angle_deg = 0;
+  std::optional<LiningCornerFigures> corners;  ///< with corner segments
   std::string capacity;                        ///< what the check is, or why none
   std::optional<LiningCapacityFigures> check;  ///< with a compressive strength
 };

@@ -1,0 +1,45 @@
+// check's run time from its probe (commands/run_time_estimate.hpp) on a
+// constructed case; no wall time is measured or asserted here.
+#include "commands/run_time_estimate.hpp"
+
+#include <gtest/gtest.h>
+
+using namespace rockfdem::workflows;
+
+// 10 s of fixed costs, 2 ms a step, 50,000 steps at the caps and 25,000
+// expected, 60% of the triangles in the fracture zone: the estimate raises
+// the expected steps' 50 s by
+// 1 + 0.6 (c_expected - 1), the bound the caps' 100 s by 1 + 0.6 (4 - 1)
+// = 2.8 with the margin on the whole; the least is the fixed costs (every stage ended
+// at once by its criterion).
+TEST(RunTimeEstimate, estimate_lies_between_the_fixed_costs_and_the_bound) {
+  const RunTimeFigures t = run_time({10.0, 2e-3, 50000, 25000, 0.6, false});
+  const double expected = 1 + 0.6 * (kExpectedFractureCost - 1);
+  EXPECT_DOUBLE_EQ(t.expected_step_factor, expected);
+  EXPECT_DOUBLE_EQ(t.worst_step_factor, 2.8);
+  EXPECT_DOUBLE_EQ(t.estimate, 10 + 50 * expected);  // the 25,000 steps expected
+  EXPECT_DOUBLE_EQ(t.bound, kRunTimeMargin * (10 + 100 * 2.8));
+  EXPECT_DOUBLE_EQ(t.least, 10);
+  EXPECT_LT(t.least, t.estimate);
+  EXPECT_LT(t.estimate, t.bound);
+}
+
+// A model that cannot fracture runs at the probe's cost: estimate and
+// bound differ by the margin alone.
+TEST(RunTimeEstimate, intact_model_is_estimated_at_the_probes_cost) {
+  const RunTimeFigures t = run_time({3.0, 1e-3, 12000, 12000, 0.0, false});
+  EXPECT_DOUBLE_EQ(t.estimate, 15.0);
+  EXPECT_DOUBLE_EQ(t.bound, kRunTimeMargin * 15.0);
+}
+
+// Joints multiply a step's cost on top of fracture: the same model with
+// joints has its steps' share of the estimate and of the bound raised by
+// the joints' expected and worst costs, its fixed costs unchanged.
+TEST(RunTimeEstimate, joints_raise_the_steps_not_the_fixed_costs) {
+  const RunTimeFigures plain = run_time({4.0, 0.5e-3, 12000, 6000, 0.5, false});
+  const RunTimeFigures jointed = run_time({4.0, 0.5e-3, 12000, 6000, 0.5, true});
+  EXPECT_DOUBLE_EQ(jointed.estimate - 4.0, (plain.estimate - 4.0) * kExpectedJointCost);
+  EXPECT_DOUBLE_EQ(jointed.bound / kRunTimeMargin - 4.0,
+                   (plain.bound / kRunTimeMargin - 4.0) * kWorstJointCost);
+  EXPECT_DOUBLE_EQ(jointed.least, plain.least);
+}
