@@ -268,9 +268,16 @@ void add_joints(std::vector<KeySpec>& s) {
   s.push_back(positive("joints.fracture_energy_I", "J/m^2", "10",
                        "Mode I fracture energy of the joints (used with a tensile strength)."));
   s.push_back(positive("joints.fracture_energy_II", "J/m^2", "50",
-                       "Mode II energy: the slip past the peak over which the strength falls "
-                       "from the peak to the residual is fracture_energy_II / (0.386 (c + "
-                       "sigma tan(phi)))."));
+                       "Mode II energy: sets the slip past the peak over which the shear "
+                       "strength softens from the peak fp to the residual sigma_n "
+                       "tan(residual_friction_angle), fracture_energy_II / (0.386 fp) (0.386: "
+                       "the softening curve's integral). fp is the peak at the element's normal "
+                       "stress sigma_n, as joints.shear_strength gives it: c + sigma_n "
+                       "tan(friction_angle), or with barton_bandis c + sigma_n tan(phi_r + JRC "
+                       "log10(JCS / sigma_n)), so there a rougher joint or a lower sigma_n "
+                       "softens over a shorter slip. Either way the softening dissipates "
+                       "fracture_energy_II per unit area (energy.fracture); the residual "
+                       "friction gained meanwhile does work booked as energy.joint_friction."));
   s.push_back(number("joints.penalty_factor", "-", "materials.rock.penalty_factor", 1, false, 1000,
                      false,
                      "Normal and shear penalty (stiffness) of the joints as a multiple of the "
