@@ -431,6 +431,17 @@ void add_mesh(std::vector<KeySpec>& s) {
   s.push_back(edges);
   s.push_back(text("msh.fracture_group", "\"\"",
                    "2D physical group where crack elements are allowed; empty: all rock."));
+  KeySpec joints;
+  joints.path = "msh.joints";
+  joints.type = KeyType::kStringArray;
+  joints.unit = "-";
+  joints.default_text = "[]";
+  joints.description =
+      "1D physical groups whose lines are joints, e.g. [\"Fault\", \"Bedding\"]: each curve of "
+      "them is a joint trace, and the crack elements on its lines take the [joints] material "
+      "(crack elements exist in msh.fracture_group only). Every line must be an interior edge "
+      "of the triangles (the curve embedded in the surface).";
+  s.push_back(joints);
   // [mesh]
   KeySpec near = positive("mesh.size_near", "m", "0.5",
                           "Element size at the tunnel boundary and in the fracture zone "
@@ -885,6 +896,8 @@ std::string describe_allowed(const KeySpec& k) {
       return "true or false";
     case KeyType::kString:
       return "a string";
+    case KeyType::kStringArray:
+      return "an array of strings";
     case KeyType::kChoice:
     case KeyType::kStringMap: {
       out << (k.type == KeyType::kStringMap ? "a table of strings, each one of " : "one of ");
