@@ -161,6 +161,22 @@ TEST(JointScene, a_run_counts_joint_elements_apart_with_the_same_bits_on_1_and_2
   EXPECT_EQ(long(std::count(csv.begin(), csv.end(), '\n')), j["traces"]["meshed"].get<long>() + 1);
   const std::string profile = text_of(one / "joint_profile.csv");
   EXPECT_EQ(long(std::count(profile.begin(), profile.end(), '\n')), j["elements"].get<long>() + 1);
+  // At each stage's end the same rows (the run ends with its last stage,
+  // so that one's are the end's); the first stage's state is another.
+  const nlohmann::json& stages = s["fdem"]["stages"];
+  ASSERT_GE(stages.size(), 2u);
+  std::vector<std::string> at_stage;
+  for (const nlohmann::json& st : stages) {
+    const fs::path file =
+        one / ("joint_profile_stage_" + std::to_string(st["stage"].get<int>()) + ".csv");
+    ASSERT_TRUE(fs::exists(file)) << file;
+    at_stage.push_back(text_of(file));
+    EXPECT_EQ(at_stage.back().substr(0, profile.find('\n')), profile.substr(0, profile.find('\n')));
+    EXPECT_EQ(long(std::count(at_stage.back().begin(), at_stage.back().end(), '\n')),
+              j["elements"].get<long>() + 1);
+  }
+  EXPECT_EQ(at_stage.back(), profile);
+  EXPECT_NE(at_stage.front(), profile);
   EXPECT_TRUE(has(text_of(one / "fdem_0001.vtu"), "Name=\"joint\""));
   EXPECT_TRUE(has(text_of(one / "report.md"), "joint crack elements"));
   fs::remove_all(one);
@@ -192,6 +208,13 @@ TEST(JointScene, a_jointed_run_restarts_bit_for_bit) {
   EXPECT_GT(a["energy"]["joint_friction"].get<double>(), 0.0);
   EXPECT_EQ(b["energy"], a["energy"]);
   EXPECT_EQ(text_of(again / "joint_profile.csv"), text_of(ref / "joint_profile.csv"));
+  // Every stage's profile, those ended before the checkpoint carried over.
+  for (const nlohmann::json& st : a["fdem"]["stages"]) {
+    const std::string name =
+        "joint_profile_stage_" + std::to_string(st["stage"].get<int>()) + ".csv";
+    ASSERT_TRUE(fs::exists(again / name)) << name;
+    EXPECT_EQ(text_of(again / name), text_of(ref / name)) << name;
+  }
   fs::remove_all(ref);
   fs::remove_all(again);
 }
