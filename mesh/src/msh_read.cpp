@@ -370,15 +370,19 @@ void read_edges(const Reader& r, const TagIndex& index, Mesh& m) {
 // curve the surface mesh does not follow (not embedded) or on the outer
 // boundary would act nowhere, without a word. Refused.
 void read_joint_edges(const Reader& r, const TagIndex& index, Mesh& m) {
-  if (r.spec.joint_groups.empty()) return;
+  const auto present = r.groups(1);
+  std::vector<std::string> names = r.spec.joint_groups;
+  const bool unnamed = r.spec.zone_groups.empty() && r.spec.edge_groups.empty();
+  if (names.empty() && unnamed && present.count(detail::kJointGroup))
+    names.push_back(detail::kJointGroup);  // write_msh's
+  if (names.empty()) return;
   std::map<std::pair<int, int>, int> sides;  // triangle edge -> triangles
   for (const auto& t : m.triangles)
     for (int k = 0; k < 3; ++k) ++sides[std::minmax(t[k], t[(k + 1) % 3])];
-  const auto present = r.groups(1);
   std::set<int> curves;
   std::set<std::pair<int, int>> seen;
   int trace = 0;
-  for (const std::string& name : r.spec.joint_groups) {
+  for (const std::string& name : names) {
     std::size_t lines = 0;
     for (int c : r.entities(1, name, present, "joint")) {
       if (!curves.insert(c).second) continue;

@@ -35,7 +35,9 @@ TEST(MshRoundTrip, written_tunnel_reads_back_identical) {
   s.tunnel.fracture_zone = 1;
   s.domain = {30, 30, 0, 0};
   s.size.size_near = 0.4, s.size.size_far = 3;
+  s.joints = {{-10, 4, 10, 6}, {-8, -10, -2, 10}};  // crossing; one across the opening
   Mesh m = build_mesh(s);
+  ASSERT_GT(m.joint_edges.size(), 20u);
   m.edges.push_back({m.triangles[0][0], m.triangles[0][1], 101});  // a user tag
   const std::string path = temp_path("rockfdem_roundtrip.msh");
   write_msh(m, path);
@@ -54,6 +56,11 @@ TEST(MshRoundTrip, written_tunnel_reads_back_identical) {
   for (const TaggedEdge& e : m.edges) a.insert({e.a, e.b, e.tag});
   for (const TaggedEdge& e : r.edges) b.insert({e.a, e.b, e.tag});
   EXPECT_EQ(a, b);
+  // The joints: each trace a curve of "joints", read back with its number.
+  std::multiset<std::tuple<int, int, int>> ja, jb;
+  for (const JointEdge& e : m.joint_edges) ja.insert({e.a, e.b, e.trace});
+  for (const JointEdge& e : r.joint_edges) jb.insert({e.a, e.b, e.trace});
+  EXPECT_EQ(ja, jb);
 }
 
 // The same tunnel written by gmsh as MSH 2.2 (Mesh.SaveAll = 0, as gmsh 2.x

@@ -1,8 +1,9 @@
 // gmsh .msh files in and out. Written files carry physical groups named
-// for the zones ("rock", "core", "lining", "fracture") and edge tags
+// for the zones ("rock", "core", "lining", "fracture"), edge tags
 // ("bottom", "right", "top", "left", "excavation", "lining_inner", "rim",
-// "load_top", "load_bottom", "edge_<tag>" for user tags), so read_msh with
-// empty group maps reads back exactly what write_msh wrote.
+// "load_top", "load_bottom", "edge_<tag>" for user tags) and joints
+// ("joints", a curve per trace), so read_msh with empty group maps reads
+// back exactly what write_msh wrote.
 #pragma once
 
 #include <string>
@@ -21,10 +22,10 @@ void write_msh(const Mesh& m, const std::string& path);
 /// Reads a user's .msh (any version gmsh reads). 2D physical groups named in
 /// `spec.zone_groups` become zones, 1D groups in `spec.edge_groups` edge
 /// tags; with both maps empty the names write_msh uses are taken. The lines
-/// of the 1D groups in `spec.joint_groups` become Mesh::joint_edges, each
-/// curve one trace (traces_of_joint_edges in joints.hpp gives their ends).
-/// Triangles
-/// in `spec.fracture_group` (all rock triangles when "") get fracture = 1.
+/// of the 1D groups in `spec.joint_groups` (with all three empty,
+/// write_msh's "joints") become Mesh::joint_edges, each curve one trace
+/// (traces_of_joint_edges in joints.hpp gives their ends). Triangles in
+/// `spec.fracture_group` (all rock triangles when "") get fracture = 1.
 /// Clockwise triangles are turned counter-clockwise.
 /// Throws rockfdem::InputError naming the file and the group, node or
 /// element at fault for: a missing or unreadable file, a missing physical
