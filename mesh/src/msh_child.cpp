@@ -217,6 +217,12 @@ RecordReceiver::Answer RecordReceiver::finish() {
           "a mesh whose edge " + count_text(e) + " names a vertex beyond its " + count_text(nv);
       return a;
     }
+    // A trace has a line at least: its number is below the edges' count.
+    if (edge.tag < 0 && std::uint64_t(-1 - std::int64_t(edge.tag)) >= ne) {
+      a.problem = "a mesh whose joint edge " + count_text(e) + " names trace " +
+                  std::to_string(-1 - std::int64_t(edge.tag)) + " of at most " + count_text(ne);
+      return a;
+    }
     if (edge.tag >= 0)
       m.edges.push_back(edge);
     else

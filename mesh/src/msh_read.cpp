@@ -389,6 +389,7 @@ void read_joint_edges(const Reader& r, const TagIndex& index, Mesh& m) {
       std::vector<std::size_t> tags, nodes;
       gmsh::model::mesh::getElementsByType(1, tags, nodes, c);
       lines += tags.size();
+      const std::size_t before = m.joint_edges.size();
       for (std::size_t e = 0; e < tags.size(); ++e) {
         const int a = index(nodes[2 * e]), b = index(nodes[2 * e + 1]);
         const auto side = sides.find(std::minmax(a, b));
@@ -401,7 +402,7 @@ void read_joint_edges(const Reader& r, const TagIndex& index, Mesh& m) {
                  "Curve{...} In Surface{...}, or fragment it with the surface)");
         if (seen.insert(std::minmax(a, b)).second) m.joint_edges.push_back({a, b, trace});
       }
-      if (!tags.empty()) ++trace;
+      if (m.joint_edges.size() > before) ++trace;  // a curve of lines read before: none
     }
     if (lines == 0)
       r.fail("joint physical group '" + name +

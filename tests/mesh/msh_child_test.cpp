@@ -62,6 +62,12 @@ void expect_same(const Mesh& a, const Mesh& b) {
     EXPECT_EQ(a.edges[e].b, b.edges[e].b) << "edge " << e;
     EXPECT_EQ(a.edges[e].tag, b.edges[e].tag) << "edge " << e;
   }
+  ASSERT_EQ(a.joint_edges.size(), b.joint_edges.size());
+  for (std::size_t e = 0; e < a.joint_edges.size(); ++e) {
+    EXPECT_EQ(a.joint_edges[e].a, b.joint_edges[e].a) << "joint edge " << e;
+    EXPECT_EQ(a.joint_edges[e].b, b.joint_edges[e].b) << "joint edge " << e;
+    EXPECT_EQ(a.joint_edges[e].trace, b.joint_edges[e].trace) << "joint edge " << e;
+  }
 }
 
 // A lined circular tunnel with a fracture zone, as `rockfdem mesh` writes
@@ -234,6 +240,7 @@ TEST(MshRecord, a_record_cut_short_or_out_of_bounds_is_refused) {
   m.x = {0, 1, 1, 0}, m.y = {0, 0, 1, 1};
   m.triangles = {{0, 1, 2}, {0, 2, 3}}, m.zone = {kRock, kCore}, m.fracture = {1, 0};
   m.edges = {{0, 1, kBottom}, {2, 3, 101}};
+  m.joint_edges = {{0, 2, 0}};  // sent among the edges, tag -1 - trace
   const std::string record = detail::encode_mesh(m);
   const detail::RecordLimits limits = detail::record_limits(100, {kRock, kCore});
   for (std::size_t n = 0; n < record.size(); ++n) {
@@ -278,6 +285,9 @@ TEST(MshRecord, a_record_cut_short_or_out_of_bounds_is_refused) {
   EXPECT_NE(answer(with(body + 24 + 8, std::uint8_t(7)), limits).find("fracture flag 7"),
             std::string::npos);
   EXPECT_NE(answer(with(body + 24 + 8 + 2 + 12, std::int32_t(-1)), limits).find("edge 1 names"),
+            std::string::npos);
+  EXPECT_NE(answer(with(body + 24 + 8 + 2 + 24 + 8, std::int32_t(-4)), limits)
+                .find("joint edge 2 names trace 3 of at most 3"),
             std::string::npos);
   EXPECT_NE(answer(with(36, std::numeric_limits<double>::quiet_NaN()), limits)
                 .find("vertex 0 not at a finite position"),
