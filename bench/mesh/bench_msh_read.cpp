@@ -81,7 +81,7 @@ int main(int argc, char** argv) {
   const auto measure = [&](const std::string& file, const std::string& label) {
     struct stat st {};
     ::stat(file.c_str(), &st);
-    const rockfdem::mesh::MshFileSpec spec{file, {}, {}, ""};
+    const rockfdem::mesh::MshFileSpec spec{file, {}, {}, "", {}};
     std::vector<double> here, child;
     Mesh a, b;
     using Clock = std::chrono::steady_clock;

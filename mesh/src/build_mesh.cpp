@@ -95,6 +95,7 @@ Mesh build_mesh(const MeshSpec& spec, MeshReport* report) {
   std::vector<JointTrace> traces;
   if (spec.kind == ModelKind::kMshFile) {
     m = read_msh(spec.msh);
+    traces = traces_of_joint_edges(m, &joints);
   } else {
     check_sizes(spec);
     if (spec.kind == ModelKind::kTunnel && !spec.joints.empty())

@@ -35,9 +35,9 @@ namespace rockfdem::mesh::detail {
 namespace {
 
 constexpr std::uint32_t kMagic = 0x434d4652;  // "RFMC" in little-endian bytes
-constexpr std::uint32_t kVersion = 1;
-constexpr std::size_t kHeadBytes = 12;       // magic, version, kind
-constexpr std::size_t kMeshCountBytes = 24;  // vertices, triangles, edges
+constexpr std::uint32_t kVersion = 2;         // 2: joint edges among the edges
+constexpr std::size_t kHeadBytes = 12;        // magic, version, kind
+constexpr std::size_t kMeshCountBytes = 24;   // vertices, triangles, edges
 
 template <class T>
 void put(std::string& out, const T& v) {
@@ -78,7 +78,8 @@ RecordLimits record_limits(std::uint64_t file_bytes, std::set<int> zones) {
 
 std::string encode_mesh(const Mesh& m) {
   std::string out = head(0);
-  const std::uint64_t nv = m.x.size(), nt = m.triangles.size(), ne = m.edges.size();
+  const std::uint64_t nv = m.x.size(), nt = m.triangles.size();
+  const std::uint64_t ne = m.edges.size() + m.joint_edges.size();
   put(out, nv), put(out, nt), put(out, ne);
   out.reserve(out.size() + mesh_body_bytes(nv, nt, ne));
   out.append(reinterpret_cast<const char*>(m.x.data()), nv * sizeof(double));
@@ -89,6 +90,8 @@ std::string encode_mesh(const Mesh& m) {
   out.append(reinterpret_cast<const char*>(m.fracture.data()), nt);
   for (const TaggedEdge& e : m.edges)
     put(out, std::int32_t(e.a)), put(out, std::int32_t(e.b)), put(out, std::int32_t(e.tag));
+  for (const JointEdge& j : m.joint_edges)
+    put(out, std::int32_t(j.a)), put(out, std::int32_t(j.b)), put(out, std::int32_t(-1 - j.trace));
   return out;
 }
 
@@ -205,16 +208,25 @@ RecordReceiver::Answer RecordReceiver::finish() {
                   std::to_string(m.fracture[t]) + " (0 or 1)";
       return a;
     }
-  m.edges.resize(ne);
+  m.edges.reserve(ne);
   for (std::uint64_t e = 0; e < ne; ++e, at += 12) {
-    TaggedEdge& edge = m.edges[e];
-    edge = {get<std::int32_t>(buffer_, at), get<std::int32_t>(buffer_, at + 4),
-            get<std::int32_t>(buffer_, at + 8)};
+    const TaggedEdge edge{get<std::int32_t>(buffer_, at), get<std::int32_t>(buffer_, at + 4),
+                          get<std::int32_t>(buffer_, at + 8)};
     if (!vertex(edge.a) || !vertex(edge.b)) {
       a.problem =
           "a mesh whose edge " + count_text(e) + " names a vertex beyond its " + count_text(nv);
       return a;
     }
+    // A trace has a line at least: its number is below the edges' count.
+    if (edge.tag < 0 && std::uint64_t(-1 - std::int64_t(edge.tag)) >= ne) {
+      a.problem = "a mesh whose joint edge " + count_text(e) + " names trace " +
+                  std::to_string(-1 - std::int64_t(edge.tag)) + " of at most " + count_text(ne);
+      return a;
+    }
+    if (edge.tag >= 0)
+      m.edges.push_back(edge);
+    else
+      m.joint_edges.push_back({edge.a, edge.b, -1 - edge.tag});
   }
   std::string().swap(buffer_);
   return a;

@@ -12,7 +12,8 @@
 //   kind 0 (a mesh): u64 vertices, u64 triangles, u64 edges, then
 //     f64 x[vertices], f64 y[vertices], i32 triangles[3 * triangles],
 //     i32 zone[triangles], u8 fracture[triangles], i32 edges[3 * edges]
-//     (a, b, tag)
+//     (a, b, tag): the tagged edges, then the joint edges with tag
+//     -1 - trace (edge tags are never negative)
 //   other kinds (an error: 1 InputError, 2 runtime_error, 3 logic_error,
 //     4 bad_alloc, 5 any other exception): u64 length, then the message
 //   and nothing after the last field.

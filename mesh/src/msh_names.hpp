@@ -11,6 +11,8 @@
 namespace rockfdem::mesh::detail {
 
 inline const char* const kFractureGroup = "fracture";
+/// The 1D group of joint edges, one curve per trace.
+inline const char* const kJointGroup = "joints";
 
 /// "rock" -> kRock, "core" -> kCore, "lining" -> kLining.
 std::map<std::string, int> default_zone_groups();

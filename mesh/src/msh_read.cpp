@@ -15,12 +15,14 @@
 #include <cstdint>
 #include <cstdio>
 #include <fstream>
+#include <map>
 #include <new>
 #include <numeric>
 #include <set>
 #include <stdexcept>
 #include <string>
 #include <tuple>
+#include <utility>
 
 #include "gmsh_model.hpp"
 #include "gmsh_session.hpp"
@@ -361,6 +363,53 @@ void read_edges(const Reader& r, const TagIndex& index, Mesh& m) {
   m.edges.swap(kept);
 }
 
+// Each curve of the joint groups is one trace, numbered in the groups'
+// order (a group's curves by tag; a curve in two groups is the first's).
+// A joint acts through the crack element between the triangles on either
+// side of it, so every joint line must be an edge of two triangles: a
+// curve the surface mesh does not follow (not embedded) or on the outer
+// boundary would act nowhere, without a word. Refused.
+void read_joint_edges(const Reader& r, const TagIndex& index, Mesh& m) {
+  const auto present = r.groups(1);
+  std::vector<std::string> names = r.spec.joint_groups;
+  const bool unnamed = r.spec.zone_groups.empty() && r.spec.edge_groups.empty();
+  if (names.empty() && unnamed && present.count(detail::kJointGroup))
+    names.push_back(detail::kJointGroup);  // write_msh's
+  if (names.empty()) return;
+  std::map<std::pair<int, int>, int> sides;  // triangle edge -> triangles
+  for (const auto& t : m.triangles)
+    for (int k = 0; k < 3; ++k) ++sides[std::minmax(t[k], t[(k + 1) % 3])];
+  std::set<int> curves;
+  std::set<std::pair<int, int>> seen;
+  int trace = 0;
+  for (const std::string& name : names) {
+    std::size_t lines = 0;
+    for (int c : r.entities(1, name, present, "joint")) {
+      if (!curves.insert(c).second) continue;
+      std::vector<std::size_t> tags, nodes;
+      gmsh::model::mesh::getElementsByType(1, tags, nodes, c);
+      lines += tags.size();
+      const std::size_t before = m.joint_edges.size();
+      for (std::size_t e = 0; e < tags.size(); ++e) {
+        const int a = index(nodes[2 * e]), b = index(nodes[2 * e + 1]);
+        const auto side = sides.find(std::minmax(a, b));
+        if (a < 0 || b < 0 || side == sides.end() || side->second != 2)
+          r.fail("joint physical group '" + name + "': line " + std::to_string(tags[e]) +
+                 " (nodes " + std::to_string(nodes[2 * e]) + ", " +
+                 std::to_string(nodes[2 * e + 1]) +
+                 ") is not an edge between two triangles; a joint's lines must be interior "
+                 "edges of the triangle mesh (in gmsh: embed the curve in the surface, "
+                 "Curve{...} In Surface{...}, or fragment it with the surface)");
+        if (seen.insert(std::minmax(a, b)).second) m.joint_edges.push_back({a, b, trace});
+      }
+      if (m.joint_edges.size() > before) ++trace;  // a curve of lines read before: none
+    }
+    if (lines == 0)
+      r.fail("joint physical group '" + name +
+             "' holds no 2-node lines; a joint group must hold the meshed lines of its traces");
+  }
+}
+
 // Zero-area triangles cannot carry stress; clockwise ones are only
 // numbered the other way round and are turned.
 void check_areas(const Reader& r, const std::vector<std::size_t>& element_tags,
@@ -433,6 +482,7 @@ Mesh read_with_gmsh(const MshFileSpec& spec) {
     const TagIndex index(node_tags);
     const std::vector<std::size_t> triangle_tags = read_triangles(r, index, m);
     read_edges(r, index, m);
+    read_joint_edges(r, index, m);
     check_areas(r, triangle_tags, node_tags, m);
     check_folds(r, triangle_tags, node_tags, m);
   });

@@ -1,9 +1,10 @@
 // write_msh: a discrete gmsh model built from the record and saved by gmsh's
 // own writer, so the file is whatever gmsh itself would write. Triangles are
 // grouped into one discrete surface per (zone, fracture) pair, edges into one
-// discrete curve per tag; physical groups name them. Element tags are the
-// record's indices + 1 (triangles first, then edges) and node tags the vertex
-// indices + 1, so read_msh can restore the exact order.
+// discrete curve per tag, joint edges into one per trace; physical groups
+// name them. Element tags are the record's indices + 1 (triangles first,
+// then edges, then joint edges) and node tags the vertex indices + 1, so
+// read_msh can restore the exact order.
 #include <gmsh.h>
 #include <unistd.h>
 
@@ -12,6 +13,7 @@
 #include <map>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include "gmsh_session.hpp"
 #include "msh_names.hpp"
@@ -77,6 +79,25 @@ void add_edges(const Mesh& m) {
   }
 }
 
+// One discrete curve per joint trace, in trace order (so read_msh numbers
+// them back the same), all in the group "joints".
+void add_joint_edges(const Mesh& m) {
+  std::map<int, Block> blocks;
+  for (std::size_t j = 0; j < m.joint_edges.size(); ++j) {
+    Block& b = blocks[m.joint_edges[j].trace];
+    b.element_tags.push_back(m.n_triangles() + m.edges.size() + j + 1);
+    b.node_tags.push_back(m.joint_edges[j].a + 1);
+    b.node_tags.push_back(m.joint_edges[j].b + 1);
+  }
+  std::vector<int> curves;
+  for (const auto& [trace, block] : blocks) {
+    curves.push_back(gmsh::model::addDiscreteEntity(1));
+    gmsh::model::mesh::addElementsByType(curves.back(), 1, block.element_tags, block.node_tags);
+  }
+  if (!curves.empty())
+    gmsh::model::setPhysicalName(1, gmsh::model::addPhysicalGroup(1, curves), detail::kJointGroup);
+}
+
 // gmsh picks the format from the extension, so the temporary name ends in .msh.
 std::string temporary_path(const std::string& path) {
   const std::size_t slash = path.find_last_of('/');
@@ -95,6 +116,7 @@ void write_msh(const Mesh& m, const std::string& path) {
       gmsh::model::add("rockfdem");
       add_triangles(m);
       add_edges(m);
+      add_joint_edges(m);
       gmsh::option::setNumber("Mesh.MshFileVersion", 4.1);
       gmsh::option::setNumber("Mesh.Binary", 0);
       gmsh::option::setNumber("Mesh.SaveAll", 0);

@@ -60,10 +60,10 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     out.write(reinterpret_cast<const char*>(data), static_cast<std::streamsize>(size));
   }
   using rockfdem::mesh::MshFileSpec;
-  read_one(MshFileSpec{temp_path(), {}, {}, ""});
+  read_one(MshFileSpec{temp_path(), {}, {}, "", {}});
   // The groups of the hand-written square in tests/mesh/msh_io_test.cpp,
   // plus a fracture group.
   using namespace rockfdem::mesh;
-  read_one(MshFileSpec{temp_path(), {{"granite", kRock}}, {{"base", kBottom}}, "granite"});
+  read_one(MshFileSpec{temp_path(), {{"granite", kRock}}, {{"base", kBottom}}, "granite", {}});
   return 0;
 }

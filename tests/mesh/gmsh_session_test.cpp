@@ -46,7 +46,7 @@ TEST_F(OpenMpThreads, writing_and_reading_restore_the_thread_count) {
   const std::string path = ::testing::TempDir() + "rockfdem_threads.msh";
   write_msh(m, path);
   EXPECT_EQ(omp_get_max_threads(), 4);
-  read_msh({path, {}, {}, ""});
+  read_msh({path, {}, {}, "", {}});
   EXPECT_EQ(omp_get_max_threads(), 4);
 }
 

@@ -177,7 +177,7 @@ Mesh moved_circle(bool keep_core) {
   const std::string path = ::testing::TempDir() + "key_points_" + std::to_string(::getpid()) +
                            (keep_core ? "_core" : "_hole") + ".msh";
   write_msh(m, path);
-  Mesh r = read_msh({path, {}, {}, ""});
+  Mesh r = read_msh({path, {}, {}, "", {}});
   std::remove(path.c_str());
   return r;
 }

@@ -62,6 +62,12 @@ void expect_same(const Mesh& a, const Mesh& b) {
     EXPECT_EQ(a.edges[e].b, b.edges[e].b) << "edge " << e;
     EXPECT_EQ(a.edges[e].tag, b.edges[e].tag) << "edge " << e;
   }
+  ASSERT_EQ(a.joint_edges.size(), b.joint_edges.size());
+  for (std::size_t e = 0; e < a.joint_edges.size(); ++e) {
+    EXPECT_EQ(a.joint_edges[e].a, b.joint_edges[e].a) << "joint edge " << e;
+    EXPECT_EQ(a.joint_edges[e].b, b.joint_edges[e].b) << "joint edge " << e;
+    EXPECT_EQ(a.joint_edges[e].trace, b.joint_edges[e].trace) << "joint edge " << e;
+  }
 }
 
 // A lined circular tunnel with a fracture zone, as `rockfdem mesh` writes
@@ -94,8 +100,8 @@ TEST(MshChild, gmsh_crashes_are_refused_naming_the_file_and_the_signal) {
                            "gmsh48_msh41_binary_tag_beyond_int.msh"}) {
     const std::string path = std::string(ROCKFDEM_FUZZ_REFUSED_DIR) + "/" + name;
     for (const MshFileSpec& spec :
-         {MshFileSpec{path, {}, {}, ""},
-          MshFileSpec{path, {{"granite", kRock}}, {{"base", kBottom}}, "granite"}}) {
+         {MshFileSpec{path, {}, {}, "", {}},
+          MshFileSpec{path, {{"granite", kRock}}, {{"base", kBottom}}, "granite", {}}}) {
       const std::string what = refusal(spec);
       EXPECT_EQ(what.rfind(path + ": gmsh crashed reading it (signal 11, SIGSEGV)", 0), 0u) << what;
       EXPECT_NE(what.find("allowed: a well-formed .msh file as gmsh writes it"), std::string::npos)
@@ -104,7 +110,7 @@ TEST(MshChild, gmsh_crashes_are_refused_naming_the_file_and_the_signal) {
     // Still a crash in this process (a sanitizer build's handler may turn
     // the signal into an exit status): the net is needed.
     EXPECT_EXIT(
-        detail::read_msh_in_process({path, {}, {}, ""}),
+        detail::read_msh_in_process({path, {}, {}, "", {}}),
         [](int status) { return !WIFEXITED(status) || WEXITSTATUS(status) != 0; }, "")
         << name;
   }
@@ -118,17 +124,18 @@ TEST(MshChild, valid_files_read_as_a_read_in_this_process_gives) {
   const Files& f = tunnel_files();
   for (const std::string& path : {f.v41, f.v22, f.bin41}) {
     SCOPED_TRACE(path);
-    const MshFileSpec spec{path, {}, {}, ""};
+    const MshFileSpec spec{path, {}, {}, "", {}};
     const Mesh a = read_msh(spec), b = detail::read_msh_in_process(spec);
     ASSERT_GT(a.n_triangles(), 100u);
     expect_same(a, b);
     const MshFileSpec named{path,
                             {{"rock", kRock}, {"core", kCore}, {"lining", kLining}},
                             {{"excavation", kExcavation}, {"top", kTop}},
-                            "fracture"};
+                            "fracture",
+                            {}};
     expect_same(read_msh(named), detail::read_msh_in_process(named));
   }
-  const MshFileSpec missing{f.v41, {{"granite", kRock}}, {}, ""};
+  const MshFileSpec missing{f.v41, {{"granite", kRock}}, {}, "", {}};
   std::string here;
   try {
     detail::read_msh_in_process(missing);
@@ -151,17 +158,19 @@ TEST(MshChild, the_parents_gmsh_and_openmp_state_are_untouched) {
 #pragma omp parallel num_threads(2) reduction(+ : seen)
   seen += 1;
   EXPECT_GE(seen, 1);
-  const Mesh a = read_msh({f.v41, {}, {}, ""});
-  EXPECT_FALSE(
-      refusal(
-          {std::string(ROCKFDEM_FUZZ_REFUSED_DIR) + "/gmsh48_set_physical_name.msh", {}, {}, ""})
-          .empty());
+  const Mesh a = read_msh({f.v41, {}, {}, "", {}});
+  EXPECT_FALSE(refusal({std::string(ROCKFDEM_FUZZ_REFUSED_DIR) + "/gmsh48_set_physical_name.msh",
+                        {},
+                        {},
+                        "",
+                        {}})
+                   .empty());
   EXPECT_EQ(omp_get_max_threads(), 3);
   MeshSpec s;
   s.kind = ModelKind::kUcs;
   s.size.size_near = 0.01;
   EXPECT_GT(build_mesh(s).n_triangles(), 10u);
-  expect_same(read_msh({f.v41, {}, {}, ""}), a);
+  expect_same(read_msh({f.v41, {}, {}, "", {}}), a);
   omp_set_num_threads(saved);
 }
 
@@ -173,7 +182,7 @@ class MshChildHook : public ::testing::Test {
   void TearDown() override { ::unsetenv("ROCKFDEM_TEST_MSH_CHILD"); }
   static std::string with_hook(const char* hook) {
     ::setenv("ROCKFDEM_TEST_MSH_CHILD", hook, 1);
-    const std::string what = refusal({tunnel_files().v41, {}, {}, ""});
+    const std::string what = refusal({tunnel_files().v41, {}, {}, "", {}});
     ::unsetenv("ROCKFDEM_TEST_MSH_CHILD");
     return what;
   }
@@ -231,6 +240,7 @@ TEST(MshRecord, a_record_cut_short_or_out_of_bounds_is_refused) {
   m.x = {0, 1, 1, 0}, m.y = {0, 0, 1, 1};
   m.triangles = {{0, 1, 2}, {0, 2, 3}}, m.zone = {kRock, kCore}, m.fracture = {1, 0};
   m.edges = {{0, 1, kBottom}, {2, 3, 101}};
+  m.joint_edges = {{0, 2, 0}};  // sent among the edges, tag -1 - trace
   const std::string record = detail::encode_mesh(m);
   const detail::RecordLimits limits = detail::record_limits(100, {kRock, kCore});
   for (std::size_t n = 0; n < record.size(); ++n) {
@@ -276,6 +286,9 @@ TEST(MshRecord, a_record_cut_short_or_out_of_bounds_is_refused) {
             std::string::npos);
   EXPECT_NE(answer(with(body + 24 + 8 + 2 + 12, std::int32_t(-1)), limits).find("edge 1 names"),
             std::string::npos);
+  EXPECT_NE(answer(with(body + 24 + 8 + 2 + 24 + 8, std::int32_t(-4)), limits)
+                .find("joint edge 2 names trace 3 of at most 3"),
+            std::string::npos);
   EXPECT_NE(answer(with(36, std::numeric_limits<double>::quiet_NaN()), limits)
                 .find("vertex 0 not at a finite position"),
             std::string::npos);
@@ -309,7 +322,7 @@ TEST(MshChild, binary_msh41_with_20_flipped_bits_reads_or_is_refused) {
     for (int k = 0; k < 20; ++k) bytes[at(rng)] ^= char(1u << (rng() % 8));
     std::ofstream(path, std::ios::binary | std::ios::trunc) << bytes;
     try {
-      read_msh({path, {}, {}, ""});
+      read_msh({path, {}, {}, "", {}});
       ++read;
     } catch (const InputError& e) {
       const std::string what = e.what();

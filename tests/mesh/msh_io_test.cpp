@@ -35,11 +35,13 @@ TEST(MshRoundTrip, written_tunnel_reads_back_identical) {
   s.tunnel.fracture_zone = 1;
   s.domain = {30, 30, 0, 0};
   s.size.size_near = 0.4, s.size.size_far = 3;
+  s.joints = {{-10, 4, 10, 6}, {-8, -10, -2, 10}};  // crossing; one across the opening
   Mesh m = build_mesh(s);
+  ASSERT_GT(m.joint_edges.size(), 20u);
   m.edges.push_back({m.triangles[0][0], m.triangles[0][1], 101});  // a user tag
   const std::string path = temp_path("rockfdem_roundtrip.msh");
   write_msh(m, path);
-  const Mesh r = read_msh({path, {}, {}, ""});
+  const Mesh r = read_msh({path, {}, {}, "", {}});
   // gmsh writes coordinates with 16 significant digits: equal to rounding.
   ASSERT_EQ(r.n_vertices(), m.n_vertices());
   for (std::size_t v = 0; v < m.n_vertices(); ++v) {
@@ -54,6 +56,11 @@ TEST(MshRoundTrip, written_tunnel_reads_back_identical) {
   for (const TaggedEdge& e : m.edges) a.insert({e.a, e.b, e.tag});
   for (const TaggedEdge& e : r.edges) b.insert({e.a, e.b, e.tag});
   EXPECT_EQ(a, b);
+  // The joints: each trace a curve of "joints", read back with its number.
+  std::multiset<std::tuple<int, int, int>> ja, jb;
+  for (const JointEdge& e : m.joint_edges) ja.insert({e.a, e.b, e.trace});
+  for (const JointEdge& e : r.joint_edges) jb.insert({e.a, e.b, e.trace});
+  EXPECT_EQ(ja, jb);
 }
 
 // The same tunnel written by gmsh as MSH 2.2 (Mesh.SaveAll = 0, as gmsh 2.x
@@ -69,7 +76,7 @@ TEST(MshRoundTrip, gmsh_msh22_with_a_triangle_per_physical_group_reads_as_msh41)
   std::string line;
   std::getline(in, line), std::getline(in, line);
   ASSERT_EQ(line, "2.2 0 8");
-  const Mesh a = read_msh({v41, {}, {}, ""}), b = read_msh({v22, {}, {}, ""});
+  const Mesh a = read_msh({v41, {}, {}, "", {}}), b = read_msh({v22, {}, {}, "", {}});
   ASSERT_GT(std::count(a.fracture.begin(), a.fracture.end(), 1), 0);
   EXPECT_EQ(b.x, a.x);
   EXPECT_EQ(b.y, a.y);
@@ -107,7 +114,7 @@ TEST(MshRoundTrip, named_groups_choose_zones_and_edges) {
   const Mesh m = build_mesh(s);
   const std::string path = temp_path("rockfdem_named.msh");
   write_msh(m, path);
-  const Mesh r = read_msh({path, {{"rock", kCore}}, {{"top", 42}}, ""});
+  const Mesh r = read_msh({path, {{"rock", kCore}}, {{"top", 42}}, "", {}});
   EXPECT_EQ(r.n_triangles(), m.n_triangles());
   for (int z : r.zone) EXPECT_EQ(z, kCore);
   EXPECT_FALSE(r.edges.empty());
@@ -124,7 +131,7 @@ std::string square_msh(const std::string& nodes, const std::string& elements) {
 }
 const std::string kNodes = "4\n1 0 0 0\n2 1 0 0\n3 1 1 0\n4 0 1 0\n";
 const std::string kElements = "3\n1 1 2 1 1 1 2\n2 2 2 7 1 1 2 3\n3 2 2 7 1 1 3 4\n";
-const MshFileSpec kGroups{"", {{"granite", kRock}}, {{"base", kBottom}}, ""};
+const MshFileSpec kGroups{"", {{"granite", kRock}}, {{"base", kBottom}}, "", {}};
 
 Mesh read_text(const std::string& name, const std::string& text) {
   MshFileSpec spec = kGroups;
@@ -167,7 +174,8 @@ TEST(MshUserFile, triangle_written_once_per_physical_group_reads_once) {
   MshFileSpec spec{temp_path("rockfdem_per_group.msh"),
                    {{"granite", kRock}},
                    {{"base", kBottom}, {"ground", kTop}},
-                   "fracture"};
+                   "fracture",
+                   {}};
   write_text(spec.path, text);
   const Mesh m = read_msh(spec);
   EXPECT_EQ(m.n_triangles(), 2u);

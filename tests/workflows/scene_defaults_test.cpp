@@ -297,7 +297,7 @@ std::map<std::string, Text> text_fields() {
 // Keys whose default another scene shows (a horseshoe tunnel, a .msh model).
 const std::set<std::string> kElsewhere = {
     "tunnel.shape", "tunnel.span", "tunnel.height", "tunnel.lining_thickness", "tunnel.invert_rise",
-    "msh.zones", "msh.edges", "msh.fracture_group",
+    "msh.zones", "msh.edges", "msh.fracture_group", "msh.joints",
     // A ring's floor part of its own: a_floor_part_takes_the_rings_values.
     "tunnel.invert_thickness", "materials.invert.density", "materials.invert.young",
     "materials.invert.poisson", "materials.invert.friction_angle",
@@ -416,6 +416,8 @@ TEST(SceneDefaults, a_horseshoe_and_a_msh_model_hold_their_defaults) {
   EXPECT_TRUE(m.mesh.msh.edge_groups.empty());
   EXPECT_EQ(spec_of("msh.edges").default_text, "{}");
   EXPECT_EQ("\"" + m.mesh.msh.fracture_group + "\"", spec_of("msh.fracture_group").default_text);
+  EXPECT_TRUE(m.mesh.msh.joint_groups.empty());
+  EXPECT_EQ(spec_of("msh.joints").default_text, "[]");
 }
 
 // A ring's floor part given no values of its own is the ring's: its

@@ -36,7 +36,18 @@ std::string detail_number(double v) {
 
 }  // namespace
 
-void RunOutputs::stage_done(StageChanges& done) {
+// The joints' slip and opening at each stage's end (the run's end is
+// joint_profile.csv), so that a stage's share of a joint's slip shows.
+void RunOutputs::stage_done(const fdem::Engine& e, const mesh::Mesh& m, const StageTag& stage,
+                            StageChanges& done) {
+  if (!m.joint_edges.empty()) {
+    const std::vector<mesh::JointTrace> none;
+    const std::string name = "joint_profile_stage_" + std::to_string(stage.number) + ".csv";
+    coupling::atomic_write_text(
+        output_path(ctx_.output_dir, name),
+        joint_profile_csv(e, m, summary_.mesh ? summary_.mesh->joint_traces : none));
+    stage_joint_profiles_.push_back(name);
+  }
   if (!done.rejoined) return;  // not a grout stage that fired
   std::string csv = "crack,x,y\n";
   for (const StageChanges::Grouted& g : done.grouted)
@@ -210,6 +221,7 @@ nlohmann::json RunOutputs::state() const {
           {"stages", stage_names_},
           {"frames", frames_->state()},
           {"handoff_dt", handoff_dt_},
+          {"joint_profiles", stage_joint_profiles_},
           {"max_rotation_deg", max_rotation_deg_},
           {"bolts", bolt_results_ ? bolt_results_->state() : nlohmann::json()},
           {"instruments", instruments_ ? instruments_->state() : nlohmann::json()}};
@@ -229,7 +241,9 @@ void RunOutputs::restore(const nlohmann::json& s, const std::string& from_dir) {
   const bool same_dir = fs::equivalent(from_dir, ctx_.output_dir, same_ec);
   // Files an earlier stage wrote once, which the summary names, and the
   // lining's forces at the earlier outputs.
+  stage_joint_profiles_ = s.value("joint_profiles", std::vector<std::string>{});
   std::vector<std::string> earlier{"grouted_cracks.csv"};
+  earlier.insert(earlier.end(), stage_joint_profiles_.begin(), stage_joint_profiles_.end());
   for (const std::vector<double>& row : history_->rows()) {
     char name[40];
     std::snprintf(name, sizeof name, "lining_%06ld.csv", long(row.at(1)));

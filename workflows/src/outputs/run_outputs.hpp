@@ -66,8 +66,10 @@ class RunOutputs : public StepOutputs {
   /// before the run's checks of the step, so that a failing step has its row.
   void record_rows(const fdem::Engine& e, const mesh::Mesh& m, const StageTag& stage,
                    double support_ratio, const fdem::EnergyBalance& energy) override;
-  /// A grout stage's re-joined cracks: grouted_cracks.csv (crack, x, y).
-  void stage_done(StageChanges& done) override;
+  /// A grout stage's re-joined cracks: grouted_cracks.csv (crack, x, y);
+  /// a jointed model's joint_profile_stage_<N>.csv.
+  void stage_done(const fdem::Engine& e, const mesh::Mesh& m, const StageTag& stage,
+                  StageChanges& done) override;
   /// The outer boundary's rigid rotation [rad], its largest kept for the summary.
   double outer_rotation(const fdem::Engine& e) override;
   /// The output step once the run's checks passed: the ParaView frame (if
@@ -154,7 +156,8 @@ class RunOutputs : public StepOutputs {
   const KeyPoints* key_points_ = nullptr;  ///< the run's, from begin
   double max_rotation_deg_ = 0;            ///< largest |rotation| of the outer boundary so far
   std::vector<std::string> stage_names_;
-  std::vector<std::string> pictures_;  ///< PNG files rendered, for report.md
+  std::vector<std::string> stage_joint_profiles_;  ///< joint_profile_stage_<N>.csv written
+  std::vector<std::string> pictures_;              ///< PNG files rendered, for report.md
   double handoff_dt_ = 0;  ///< dt of the hand-off step (0: not taken by this run's record)
   LastGoodState last_good_;
   double fdem_seconds_at_start_ = 0;

@@ -42,9 +42,10 @@ class StepOutputs {
   virtual double outer_rotation(const fdem::Engine&) { return 0; }
   /// Whether the lining ring is installed as lining (tunnels).
   virtual void set_lining_installed(bool) {}
-  /// A stage ended, having done `done` (its record's changes, which the
-  /// outputs complete with the files they wrote from it).
-  virtual void stage_done(StageChanges&) {}
+  /// Stage `stage` ended, having done `done` (its record's changes, which
+  /// the outputs complete with the files they wrote from it), leaving the
+  /// model as `e` holds it.
+  virtual void stage_done(const fdem::Engine&, const mesh::Mesh&, const StageTag&, StageChanges&) {}
   /// A `lining` or `bolts` stage installed its support (tunnels).
   virtual void support_installed(const fdem::Engine&) {}
 };

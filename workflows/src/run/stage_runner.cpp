@@ -249,7 +249,7 @@ void StageRunner::run(const StageSpec& stage) {
   StageChanges done = cursor_.changes;
   last_settle_ = -1;  // no output interval yet
   const bool converged = kind.step(*this, stage, done);
-  out_.stage_done(done);
+  out_.stage_done(engine_, model_.mesh, StageTag{stage.kind, number()}, done);
   report_.push_back(report_entry(stage, done, converged));
 }
 

@@ -73,6 +73,12 @@ class Reader {
       for (auto&& v : *n->as_array()) out.push_back(as_number(v));
     return out;
   }
+  std::vector<std::string> strings(const std::string& path) const {
+    std::vector<std::string> out;
+    if (const toml::node* n = node(path))
+      for (auto&& v : *n->as_array()) out.push_back(v.as_string()->get());
+    return out;
+  }
   std::map<std::string, std::string> string_map(const std::string& path) const {
     std::map<std::string, std::string> out;
     if (const toml::node* n = node(path))
@@ -347,6 +353,7 @@ void read_msh(const Reader& r, const std::string& base_dir, mesh::MeshSpec& m) {
     throw InputError(r.source() + ": missing key 'msh.zones' (model.kind is \"msh\"); allowed: " +
                      describe_allowed(*find_key("msh.zones")));
   m.msh.fracture_group = r.text("msh.fracture_group");
+  m.msh.joint_groups = r.strings("msh.joints");
 }
 
 // The keys of each kind of section with steel; a part's own table giving
@@ -896,9 +903,26 @@ mesh::JointSetSpec read_joint_set(const Reader& r, const Scene& s, const std::st
   return j;
 }
 
+// A user's .msh brings its joints as lines (msh.joints): rockfdem does not
+// remesh it, so sets and a DFN, which need traces meshed in, are refused,
+// and so is a joint material with no joint lines to take it.
+void check_msh_joints(const Reader& r, const Scene& s) {
+  const std::string why =
+      " (model.kind = \"msh\": rockfdem does not remesh a user's .msh, so generated or "
+      "listed traces cannot be meshed in); allowed: none, with the joints drawn in the .msh "
+      "as 1D physical groups named in msh.joints";
+  if (r.has("joint_set")) r.fail("joint_set", "joint sets need a generated tunnel" + why);
+  for (const char* key : {"joints.dfn_file", "joints.seed", "joints.margin"})
+    if (r.has(key)) r.fail(key, "applies to joint sets and DFN files only" + why);
+  if (r.has("joints") && s.mesh.msh.joint_groups.empty())
+    r.fail("joints",
+           "a joint material but no joint lines to take it; allowed: [joints] with msh.joints "
+           "naming the .msh's 1D physical groups that are joints");
+}
+
 // [joints], [[joint_set]] and the DFN file: the joint material and the
 // traces (generated in the opening's box grown by joints.margin, within
-// the domain), into s.mesh.joints. Tunnels only.
+// the domain), into s.mesh.joints. Tunnels; a .msh brings its own lines.
 void read_joints(const Reader& r, const std::string& base_dir, Scene& s) {
   JointSettings& j = s.joints;
   j.tensile_strength = r.number("joints.tensile_strength");
@@ -930,9 +954,12 @@ void read_joints(const Reader& r, const std::string& base_dir, Scene& s) {
     r.fail(r.given_at("joints.residual_friction_angle"),
            "above joints.friction_angle = " + num(j.friction_angle) +
                " deg; allowed: at most the peak friction angle");
-  if ((r.has("joint_set") || r.has("joints")) && s.mesh.kind != mesh::ModelKind::kTunnel)
+  if (s.mesh.kind == mesh::ModelKind::kMshFile)
+    check_msh_joints(r, s);
+  else if ((r.has("joint_set") || r.has("joints")) && s.mesh.kind != mesh::ModelKind::kTunnel)
     r.fail(r.has("joint_set") ? "joint_set" : "joints",
-           "joints need a generated tunnel (model.kind = \"tunnel\"); allowed: none here");
+           "joints need a tunnel or a .msh model (model.kind = \"tunnel\" or \"msh\"); "
+           "allowed: none here");
   const toml::node* list = r.node("joint_set");
   for (std::size_t i = 0; list && i < list->as_array()->size(); ++i)
     j.sets.push_back(read_joint_set(r, s, "joint_set[" + std::to_string(i) + "]"));

@@ -315,6 +315,12 @@ void check_value(const RawScene& s, const KeySpec& k, const std::string& path,
           fail_key(s, path + "." + std::string(name.str()), &v,
                    "not one of the choices; allowed: " + choice_list(k));
       return;
+    case KeyType::kStringArray:
+      if (!n.is_array()) fail_key(s, path, &n, "wrong type");
+      for (auto&& v : *n.as_array())
+        if (!v.is_string() || v.as_string()->get().empty())
+          fail_key(s, path, &n, "element " + node_text(v) + " is not a non-empty string");
+      return;
     case KeyType::kNumberArray:
       if (!n.is_array() || n.as_array()->empty()) fail_key(s, path, &n, "wrong type");
       for (auto&& v : *n.as_array())

@@ -268,9 +268,16 @@ void add_joints(std::vector<KeySpec>& s) {
   s.push_back(positive("joints.fracture_energy_I", "J/m^2", "10",
                        "Mode I fracture energy of the joints (used with a tensile strength)."));
   s.push_back(positive("joints.fracture_energy_II", "J/m^2", "50",
-                       "Mode II energy: the slip past the peak over which the strength falls "
-                       "from the peak to the residual is fracture_energy_II / (0.386 (c + "
-                       "sigma tan(phi)))."));
+                       "Mode II energy: sets the slip past the peak over which the shear "
+                       "strength softens from the peak fp to the residual sigma_n "
+                       "tan(residual_friction_angle), fracture_energy_II / (0.386 fp) (0.386: "
+                       "the softening curve's integral). fp is the peak at the element's normal "
+                       "stress sigma_n, as joints.shear_strength gives it: c + sigma_n "
+                       "tan(friction_angle), or with barton_bandis c + sigma_n tan(phi_r + JRC "
+                       "log10(JCS / sigma_n)), so there a rougher joint or a lower sigma_n "
+                       "softens over a shorter slip. Either way the softening dissipates "
+                       "fracture_energy_II per unit area (energy.fracture); the residual "
+                       "friction gained meanwhile does work booked as energy.joint_friction."));
   s.push_back(number("joints.penalty_factor", "-", "materials.rock.penalty_factor", 1, false, 1000,
                      false,
                      "Normal and shear penalty (stiffness) of the joints as a multiple of the "
@@ -424,6 +431,17 @@ void add_mesh(std::vector<KeySpec>& s) {
   s.push_back(edges);
   s.push_back(text("msh.fracture_group", "\"\"",
                    "2D physical group where crack elements are allowed; empty: all rock."));
+  KeySpec joints;
+  joints.path = "msh.joints";
+  joints.type = KeyType::kStringArray;
+  joints.unit = "-";
+  joints.default_text = "[]";
+  joints.description =
+      "1D physical groups whose lines are joints, e.g. [\"Fault\", \"Bedding\"]: each curve of "
+      "them is a joint trace, and the crack elements on its lines take the [joints] material "
+      "(crack elements exist in msh.fracture_group only). Every line must be an interior edge "
+      "of the triangles (the curve embedded in the surface).";
+  s.push_back(joints);
   // [mesh]
   KeySpec near = positive("mesh.size_near", "m", "0.5",
                           "Element size at the tunnel boundary and in the fracture zone "
@@ -878,6 +896,8 @@ std::string describe_allowed(const KeySpec& k) {
       return "true or false";
     case KeyType::kString:
       return "a string";
+    case KeyType::kStringArray:
+      return "an array of strings";
     case KeyType::kChoice:
     case KeyType::kStringMap: {
       out << (k.type == KeyType::kStringMap ? "a table of strings, each one of " : "one of ");

@@ -18,7 +18,7 @@ struct MeshReport {
   double min_angle_deg = 0;  ///< [deg]
   double seconds = 0;        ///< wall time of build_mesh, gmsh start to Mesh record
   int gmsh_threads = 0;      ///< General.NumThreads given to gmsh
-  JointTraceReport joints;   ///< what became of MeshSpec::joints (tunnels)
+  JointTraceReport joints;   ///< what became of MeshSpec::joints (a .msh: its joint curves)
   /// The traces meshed (Mesh::joint_edges index them).
   std::vector<JointTrace> joint_traces;
 };

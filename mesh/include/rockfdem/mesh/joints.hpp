@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "rockfdem/mesh/mesh.hpp"
 #include "rockfdem/mesh/mesh_spec.hpp"
 
 namespace rockfdem::mesh {
@@ -62,6 +63,13 @@ struct JointTraceReport {
 std::vector<JointTrace> prepare_joint_traces(const MeshSpec& spec,
                                              const std::vector<JointTrace>& traces,
                                              JointTraceReport* report = nullptr);
+
+/// The traces of a mesh whose joint edges came from a user's .msh (its
+/// joint groups' curves, msh_io.hpp): trace k runs between the two ends of
+/// its edges' path, the lower vertex index first (a closed curve: its first
+/// edge's first vertex and last edge's second). The report counts them as
+/// given and kept, with the length of their chords.
+std::vector<JointTrace> traces_of_joint_edges(const Mesh& m, JointTraceReport* report = nullptr);
 
 /// Length of a trace [m].
 double trace_length(const JointTrace& t);

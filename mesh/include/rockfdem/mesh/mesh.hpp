@@ -53,7 +53,7 @@ struct Mesh {
   std::vector<int> zone;                      ///< per triangle: a Zone
   std::vector<std::uint8_t> fracture;         ///< per triangle: 1 where crack elements are allowed
   std::vector<TaggedEdge> edges;              ///< tagged boundary and interface edges
-  std::vector<JointEdge> joint_edges;         ///< edges on joint traces (tunnels with joints)
+  std::vector<JointEdge> joint_edges;         ///< edges on joint traces
 
   std::size_t n_vertices() const { return x.size(); }
   std::size_t n_triangles() const { return triangles.size(); }

@@ -47,6 +47,10 @@ struct MshFileSpec {
   std::map<std::string, int> zone_groups;  ///< 2D physical group name -> Zone
   std::map<std::string, int> edge_groups;  ///< 1D physical group name -> EdgeTag
   std::string fracture_group;  ///< 2D physical group where cracks are allowed ("" = all rock)
+  /// 1D physical groups whose lines are joints: each curve of them one
+  /// trace (Mesh::joint_edges), numbered in this order, a group's curves
+  /// by tag.
+  std::vector<std::string> joint_groups;
 };
 
 struct MeshSizeSpec {

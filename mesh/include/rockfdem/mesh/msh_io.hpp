@@ -1,8 +1,9 @@
 // gmsh .msh files in and out. Written files carry physical groups named
-// for the zones ("rock", "core", "lining", "fracture") and edge tags
+// for the zones ("rock", "core", "lining", "fracture"), edge tags
 // ("bottom", "right", "top", "left", "excavation", "lining_inner", "rim",
-// "load_top", "load_bottom", "edge_<tag>" for user tags), so read_msh with
-// empty group maps reads back exactly what write_msh wrote.
+// "load_top", "load_bottom", "edge_<tag>" for user tags) and joints
+// ("joints", a curve per trace), so read_msh with empty group maps reads
+// back exactly what write_msh wrote.
 #pragma once
 
 #include <string>
@@ -20,14 +21,18 @@ void write_msh(const Mesh& m, const std::string& path);
 
 /// Reads a user's .msh (any version gmsh reads). 2D physical groups named in
 /// `spec.zone_groups` become zones, 1D groups in `spec.edge_groups` edge
-/// tags; with both maps empty the names write_msh uses are taken. Triangles
-/// in `spec.fracture_group` (all rock triangles when "") get fracture = 1.
+/// tags; with both maps empty the names write_msh uses are taken. The lines
+/// of the 1D groups in `spec.joint_groups` (with all three empty,
+/// write_msh's "joints") become Mesh::joint_edges, each curve one trace
+/// (traces_of_joint_edges in joints.hpp gives their ends). Triangles in
+/// `spec.fracture_group` (all rock triangles when "") get fracture = 1.
 /// Clockwise triangles are turned counter-clockwise.
 /// Throws rockfdem::InputError naming the file and the group, node or
 /// element at fault for: a missing or unreadable file, a missing physical
 /// group, an element type other than 3-node triangles and 2-node lines,
 /// NaN or infinite coordinates, two nodes at one position, a zero-area
-/// triangle, a triangle in no zone group.
+/// triangle, a triangle in no zone group, a joint group without lines or
+/// with a line that is not an edge between two triangles.
 /// gmsh reads the file in a forked child process (the checks before gmsh
 /// run in this one): a crash of gmsh's reader (a signal), a read longer
 /// than 60 s + 4 s per MiB, or a record from the child that is cut short or

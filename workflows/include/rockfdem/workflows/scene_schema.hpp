@@ -11,7 +11,16 @@
 
 namespace rockfdem::workflows {
 
-enum class KeyType { kNumber, kInteger, kBool, kString, kChoice, kNumberArray, kStringMap };
+enum class KeyType {
+  kNumber,
+  kInteger,
+  kBool,
+  kString,
+  kChoice,
+  kNumberArray,
+  kStringMap,
+  kStringArray
+};
 
 struct KeySpec {
   std::string path;  ///< dotted path; "[]" marks an array of tables, e.g. "stages[].kind"
