@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 #include <omp.h>
 #include <sys/wait.h>
+#include <unistd.h>
 
 #include <cerrno>
 #include <chrono>
@@ -31,7 +32,11 @@
 namespace rockfdem::mesh {
 namespace {
 
-std::string temp_path(const std::string& name) { return ::testing::TempDir() + name; }
+// Per process: ctest runs the tests of this file in parallel processes,
+// which must not write the same file at once.
+std::string temp_path(const std::string& name) {
+  return ::testing::TempDir() + std::to_string(getpid()) + "_" + name;
+}
 
 std::string read_file(const std::string& path) {
   std::ifstream in(path, std::ios::binary);

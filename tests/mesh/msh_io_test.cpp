@@ -24,7 +24,11 @@
 namespace rockfdem::mesh {
 namespace {
 
-std::string temp_path(const std::string& name) { return ::testing::TempDir() + name; }
+// Per process: ctest runs the tests of this file in parallel processes,
+// which must not write the same file at once.
+std::string temp_path(const std::string& name) {
+  return ::testing::TempDir() + std::to_string(getpid()) + "_" + name;
+}
 
 void write_text(const std::string& path, const std::string& text) { std::ofstream(path) << text; }
 
