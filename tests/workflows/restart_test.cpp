@@ -474,12 +474,12 @@ TEST(CheckpointRead, directories_and_devices_are_refused_before_reading) {
   ASSERT_NE(msg.find("is a directory, not a regular file"), std::string::npos) << msg;
   for (const std::string device : {"/dev/urandom", "/dev/zero"}) {
     if (!fs::exists(device)) continue;
-    const auto start = std::chrono::steady_clock::now();
+    // A reader that read the device would never end: the test's timeout
+    // catches that; the refusal is decided from the file's type alone.
     const std::string m = refusal(device);
     EXPECT_NE(m.find("checkpoint " + device + ": is a character device, not a regular file"),
               std::string::npos)
         << m;
-    EXPECT_LT(std::chrono::steady_clock::now() - start, std::chrono::seconds(2));
   }
   fs::remove_all(dir);
 }
