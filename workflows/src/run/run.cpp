@@ -22,11 +22,11 @@
 #include "rockfdem/error.hpp"
 #include "rockfdem/mesh/msh_io.hpp"
 #include "run/continuum_solve.hpp"
+#include "run/engine_setup.hpp"
 #include "run/handoff_choice.hpp"
 #include "run/implicit_check.hpp"
 #include "run/interrupt.hpp"
 #include "scene/scene_reader.hpp"
-#include "stages/stage_inputs.hpp"
 
 namespace rockfdem::workflows {
 namespace {

@@ -19,11 +19,11 @@
 #include "rockfdem/fdem/engine.hpp"
 #include "rockfdem/mesh/msh_io.hpp"
 #include "run/checkpoint.hpp"
+#include "run/engine_setup.hpp"
 #include "run/interrupt.hpp"
 #include "run/run.hpp"
 #include "run/staged_run.hpp"
 #include "stages/platen_load.hpp"
-#include "stages/stage_inputs.hpp"
 
 namespace rockfdem::workflows {
 namespace {
