@@ -233,7 +233,7 @@ void Run::take_handoff_step() {
 
 void Run::begin_stages() {
   stages_.emplace(engine(), mesh_, handoff(), scene_, ctx_, out_, key_points_, bolts_, support_);
-  resume_or_record({"handoff", 0});
+  resume_or_record(*stages_, {"handoff", 0});
 }
 
 void Run::run_stages() {
