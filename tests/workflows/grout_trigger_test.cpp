@@ -135,7 +135,7 @@ TEST(GroutTrigger, no_trigger_key_grouts_at_once_on_the_default) {
       rockfdem::workflows::find_key("stages[].trigger_broken");
   ASSERT_NE(key, nullptr);
   ASSERT_EQ(key->default_text, "0");
-  const Run r = run_with("no-trigger", "");
+  const auto r = run_with("no-trigger", "");
   const nlohmann::json& c = r.grout.at("changes");
   EXPECT_TRUE(c.at("triggered").get<bool>()) << c;
   EXPECT_EQ(c.at("trigger"), "trigger_broken");
