@@ -127,6 +127,22 @@ TEST(GroutTrigger, steps_fire_at_the_stages_kth_step) {
   EXPECT_EQ(s, 150);
 }
 
+// Without a trigger key the stage takes trigger_broken at the schema's
+// default, 0: N >= 0 holds at the stage's start, so it grouts at once,
+// before any step.
+TEST(GroutTrigger, no_trigger_key_grouts_at_once_on_the_default) {
+  const rockfdem::workflows::KeySpec* key =
+      rockfdem::workflows::find_key("stages[].trigger_broken");
+  ASSERT_NE(key, nullptr);
+  ASSERT_EQ(key->default_text, "0");
+  const auto r = run_with("no-trigger", "");
+  const nlohmann::json& c = r.grout.at("changes");
+  EXPECT_TRUE(c.at("triggered").get<bool>()) << c;
+  EXPECT_EQ(c.at("trigger"), "trigger_broken");
+  EXPECT_EQ(c.at("trigger_value").get<double>(), 0.0);
+  EXPECT_EQ(r.grout.at("steps").get<long>(), 0);
+}
+
 // One trigger per stage, named; a since-support trigger needs a support
 // stage before it; a step trigger beyond the stage's cap is refused.
 TEST(GroutTrigger, two_triggers_or_a_trigger_that_cannot_fire_are_refused) {

@@ -14,7 +14,7 @@
 #include "rockfdem/mesh/build.hpp"
 #include "rockfdem/mesh/outline.hpp"
 #include "rockfdem/workflows/scene.hpp"
-#include "stages/stage_inputs.hpp"
+#include "run/engine_setup.hpp"
 
 namespace fs = std::filesystem;
 namespace rt = rockfdem::test;

@@ -16,7 +16,7 @@
 #include "rockfdem/insitu/insitu.hpp"
 #include "rockfdem/mesh/build.hpp"
 #include "rockfdem/workflows/scene.hpp"
-#include "stages/stage_inputs.hpp"
+#include "run/engine_setup.hpp"
 
 namespace fs = std::filesystem;
 using namespace rockfdem;

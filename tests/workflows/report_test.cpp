@@ -421,3 +421,37 @@ TEST(Report, the_support_verdict_is_stated_once) {
   EXPECT_EQ(md.find("- warning: support overstressed"), std::string::npos) << md;
   EXPECT_NE(md.find("- warning: another warning"), std::string::npos) << md;
 }
+
+// report.md and summary.json read the support equilibria the record found
+// once (record_convergence_confinement), not a computation of their own:
+// the record holds the hand-solved meeting (elastic curve through
+// (0 mm, 10 MPa) and (10 mm, 5 MPa), a line installed at 10 mm with
+// K = 0.5 MPa/mm: 15 mm, as SupportEquilibrium solves it), and a figure
+// changed in the record afterwards shows in both files.
+TEST(Report, support_equilibria_are_found_once_and_read_by_both_files) {
+  using namespace rockfdem::workflows;
+  const Scene scene = load_scene(kTestDir + "/support_pair_supported.toml");
+  RunRecord r(scene, 1);
+  r.status = "completed";
+  for (const auto& [u_mm, p_Pa] : {std::pair{0.0, 10e6}, std::pair{10.0, 5e6}}) {
+    GroundReactionPoint g;
+    g.key_points["vault"] = {u_mm, p_Pa, 1e7};
+    r.ground_reaction_curve.push_back(g);
+  }
+  ConvergenceConfinementFigures c;
+  c.install_radial_mm = 10;
+  c.support.push_back({"shotcrete", 4e6, 0.5e9, 8, {}});
+  r.record_convergence_confinement(c);
+  ASSERT_TRUE(r.support_equilibria.has_value());
+  ASSERT_EQ(r.support_equilibria->lines.size(), 1u);
+  ASSERT_TRUE(r.support_equilibria->lines[0].found);
+  EXPECT_NEAR(r.support_equilibria->lines[0].radial_mm, 15.0, 1e-9);
+
+  r.support_equilibria->lines[0].radial_mm = 123.4;
+  const nlohmann::json j = r.to_json();
+  EXPECT_EQ(j.at("convergence_confinement").at("equilibrium").at(0).at("radial_mm"), 123.4);
+  const std::string md = report_markdown(scene, r, ReportExtras{});
+  const auto cells = row_of(md, "shotcrete");
+  ASSERT_EQ(cells.size(), 8u) << md;
+  EXPECT_EQ(cells[4], "123.4") << md;
+}

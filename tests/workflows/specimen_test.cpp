@@ -18,8 +18,8 @@
 #include "rockfdem/mesh/build.hpp"
 #include "rockfdem/workflows/scene.hpp"
 #include "run/checkpoint.hpp"
+#include "run/engine_setup.hpp"
 #include "stages/platen_load.hpp"
-#include "stages/stage_inputs.hpp"
 
 namespace fs = std::filesystem;
 using namespace rockfdem::test;

@@ -9,8 +9,8 @@
 #include "commands/commands.hpp"
 #include "rockfdem/fdem/engine.hpp"
 #include "rockfdem/mesh/build.hpp"
+#include "run/engine_setup.hpp"
 #include "stages/platen_load.hpp"
-#include "stages/stage_inputs.hpp"
 
 namespace rockfdem::workflows {
 namespace {

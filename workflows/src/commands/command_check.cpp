@@ -22,7 +22,7 @@
 #include "rockfdem/mesh/build.hpp"
 #include "rockfdem/mesh/msh_io.hpp"
 #include "rockfdem/mesh/outline.hpp"
-#include "stages/stage_inputs.hpp"
+#include "run/engine_setup.hpp"
 
 namespace rockfdem::workflows {
 namespace {

@@ -19,8 +19,8 @@
 #include "rockfdem/error.hpp"
 #include "rockfdem/mesh/build.hpp"
 #include "rockfdem/mesh/msh_io.hpp"
+#include "run/engine_setup.hpp"
 #include "run/implicit_check.hpp"
-#include "stages/stage_inputs.hpp"
 
 namespace rockfdem::workflows {
 namespace {

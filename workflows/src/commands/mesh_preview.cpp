@@ -13,6 +13,7 @@
 #include "rockfdem/mesh/opening.hpp"
 #include "rockfdem/plots/plot.hpp"
 #include "rockfdem/workflows/scene.hpp"
+#include "scene/stage_kind.hpp"
 
 namespace rockfdem::workflows {
 namespace {
@@ -79,8 +80,8 @@ void add_instruments(const Scene& scene, const std::vector<mesh::KeyPoint>& key_
 // A stage as the notes list it: its number, kind and what bounds it.
 std::string stage_note(int number, const StageSpec& st) {
   std::string t = std::to_string(number) + " " + st.kind;
-  if (st.kind == "soften") t += " to alpha " + num(st.alpha);
-  if (!st.triggers.empty()) t += " (" + st.triggers.front() + " " + num(st.trigger_value) + ")";
+  const std::string own = stage_kind(st.kind).note(st);
+  if (!own.empty()) t += " " + own;
   if (st.max_steps > 0) t += " (at most " + std::to_string(st.max_steps) + " steps)";
   return t;
 }

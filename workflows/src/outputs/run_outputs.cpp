@@ -375,7 +375,7 @@ void RunOutputs::record_convergence_confinement(const fdem::Engine& e, const mes
     c.face = ConvergenceConfinementFigures::FaceDistance{
         face_->face_distance_m, face_->plastic_radius_m, face_->x_star,
         face_->r_star,          face_->u_star,           face_->alpha};
-  summary_.convergence_confinement = c;
+  summary_.record_convergence_confinement(std::move(c));
 }
 
 void RunOutputs::record_joints(const fdem::Engine& e, const mesh::Mesh& m) {

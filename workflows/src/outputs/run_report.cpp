@@ -483,8 +483,7 @@ void continuum(std::ostream& md, const RunRecord& r) {
 void convergence_confinement(std::ostream& md, const RunRecord& r) {
   if (!r.convergence_confinement || r.convergence_confinement->support.empty()) return;
   const ConvergenceConfinementFigures& c = *r.convergence_confinement;
-  const std::optional<GroundCurve> g =
-      ground_curve(r.ground_reaction_curve, r.continuum_comparison);
+  const std::optional<SupportEquilibria>& eq = r.support_equilibria;
   md << "\n## Convergence-confinement\n\nThe support lines on the equivalent circle (R = "
      << fixed(c.radius_m, 2) << " m";
   const bool parts = std::any_of(c.support.begin(), c.support.end(),
@@ -496,23 +495,22 @@ void convergence_confinement(std::ostream& md, const RunRecord& r) {
   md << "), installed at the key points' mean radial displacement of "
      << fixed(c.install_radial_mm, 1) << " mm from the in-situ state (core at alpha "
      << sig(c.install_alpha) << ")";
-  if (!g) {
+  if (!eq) {
     md << "; no ground reaction curve to meet (fewer than two implicit solves).\n";
     return;
   }
   md << ", against the ground's curve: "
-     << (g->source == "mohr_coulomb"
+     << (eq->ground.source == "mohr_coulomb"
              ? "the Mohr-Coulomb counterpart's unsupported release"
              : std::string("the implicit (elastic) stage's") +
-                   (g->extended_to_zero ? ", carried on straight to p = 0" : ""))
+                   (eq->ground.extended_to_zero ? ", carried on straight to p = 0" : ""))
      << " (key points' mean). Where a line meets it is the method's equilibrium; p_max over "
         "the pressure there is the support's factor of safety.\n\n| support | p_max [MPa] | "
         "K [MPa/m] | p_max after [mm] | meets the ground at [mm] | pressure [MPa] | factor "
         "of safety | |\n|---|---|---|---|---|---|---|---|\n";
-  const std::vector<SupportEquilibrium> eq = support_equilibria(c, *g);
-  for (std::size_t i = 0; i < eq.size(); ++i) {
+  for (std::size_t i = 0; i < eq->lines.size(); ++i) {
     const SupportLineFigures& s = c.support[i];
-    const SupportEquilibrium& e = eq[i];
+    const SupportEquilibrium& e = eq->lines[i];
     md << "| " << s.name << " | " << sig(s.p_max_Pa / 1e6) << " | "
        << sig(s.stiffness_Pa_per_m / 1e6) << " | " << fixed(s.max_displacement_mm, 1) << " | "
        << (e.found ? fixed(e.radial_mm, 1) : "-") << " | "

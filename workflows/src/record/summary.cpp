@@ -255,14 +255,12 @@ nlohmann::json ground_reaction_json(const std::vector<GroundReactionPoint>& curv
 }
 
 // Where each support line meets the ground's curve (support_equilibrium.hpp).
-void add_equilibria(nlohmann::json& j, const ConvergenceConfinementFigures& c,
-                    const std::vector<GroundReactionPoint>& implicit,
-                    const std::optional<CounterpartComparison>& counterpart) {
-  const std::optional<GroundCurve> g = ground_curve(implicit, counterpart);
-  if (!g) return;
-  j["ground_curve"] = {{"source", g->source}, {"extended_to_zero", g->extended_to_zero}};
+void add_equilibria(nlohmann::json& j, const std::optional<SupportEquilibria>& eq) {
+  if (!eq) return;
+  const GroundCurve& g = eq->ground;
+  j["ground_curve"] = {{"source", g.source}, {"extended_to_zero", g.extended_to_zero}};
   j["equilibrium"] = nlohmann::json::array();
-  for (const SupportEquilibrium& e : support_equilibria(c, *g))
+  for (const SupportEquilibrium& e : eq->lines)
     j["equilibrium"].push_back({{"name", e.name},
                                 {"found", e.found},
                                 {"radial_mm", e.found ? nlohmann::json(e.radial_mm) : nullptr},
@@ -688,6 +686,11 @@ void RunRecord::record_insitu(const std::vector<insitu::InsituField>& fields) {
   state.state_hash = fdem::bits_hash(interleave(fields.back().ux, fields.back().uy));
 }
 
+void RunRecord::record_convergence_confinement(ConvergenceConfinementFigures c) {
+  support_equilibria = meet_ground_curve(c, ground_reaction_curve, continuum_comparison);
+  convergence_confinement = std::move(c);
+}
+
 void RunRecord::set_timings(const PhaseTimer& timer) {
   for (const std::string& phase : timer.order()) {
     timings_[snake_case(phase)] = timer.seconds(phase);
@@ -728,8 +731,7 @@ nlohmann::json RunRecord::to_json() const {
     j["ground_reaction_curve"] = ground_reaction_json(ground_reaction_curve);
   if (convergence_confinement) {
     j["convergence_confinement"] = convergence_confinement_json(*convergence_confinement);
-    add_equilibria(j["convergence_confinement"], *convergence_confinement, ground_reaction_curve,
-                   continuum_comparison);
+    add_equilibria(j["convergence_confinement"], support_equilibria);
   }
   if (history_stages) j["history_stages"] = *history_stages;
   add_support(j, *this);

@@ -16,6 +16,7 @@
 #include "record/continuum_figures.hpp"
 #include "record/phase_timer.hpp"
 #include "record/run_figures.hpp"
+#include "record/support_equilibrium.hpp"
 #include "record/support_figures.hpp"
 #include "record/support_verdict.hpp"
 #include "rockfdem/workflows/scene.hpp"
@@ -71,6 +72,10 @@ class RunRecord {
   MonitorRecord monitors;
   std::vector<GroundReactionPoint> ground_reaction_curve;  ///< empty: not drawn (no key)
   std::optional<ConvergenceConfinementFigures> convergence_confinement;
+  /// Where the support lines meet the ground's curve, found once from the
+  /// three figures it rests on (record_convergence_confinement); none: no
+  /// curve to meet (fewer than two points) or no convergence_confinement.
+  std::optional<SupportEquilibria> support_equilibria;
   /// The stages' kinds by number ("insitu" first): history.csv's stage
   /// column and fdem.stages[].stage index it.
   std::optional<std::vector<std::string>> history_stages;
@@ -105,6 +110,10 @@ class RunRecord {
   /// last: the bits of its displacement field (ux, uy per vertex), which
   /// the coordinates' bits would blur.
   void record_insitu(const std::vector<insitu::InsituField>& fields);
+  /// convergence_confinement, and where its support lines meet the ground's
+  /// curve (support_equilibria): after ground_reaction_curve and
+  /// continuum_comparison, the curves it meets.
+  void record_convergence_confinement(ConvergenceConfinementFigures c);
   void set_timings(const PhaseTimer& timer);
 
   /// summary.json's content.

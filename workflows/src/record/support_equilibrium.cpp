@@ -127,4 +127,13 @@ std::vector<SupportEquilibrium> support_equilibria(const ConvergenceConfinementF
   return out;
 }
 
+std::optional<SupportEquilibria> meet_ground_curve(
+    const ConvergenceConfinementFigures& c, const std::vector<GroundReactionPoint>& implicit,
+    const std::optional<CounterpartComparison>& counterpart) {
+  std::optional<GroundCurve> g = ground_curve(implicit, counterpart);
+  if (!g) return std::nullopt;
+  std::vector<SupportEquilibrium> lines = support_equilibria(c, *g);
+  return SupportEquilibria{std::move(*g), std::move(lines)};
+}
+
 }  // namespace rockfdem::workflows

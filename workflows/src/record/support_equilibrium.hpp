@@ -46,4 +46,17 @@ struct SupportEquilibrium {
 std::vector<SupportEquilibrium> support_equilibria(const ConvergenceConfinementFigures& c,
                                                    const GroundCurve& g);
 
+/// The ground's curve and each support line's meeting with it
+/// (RunRecord::support_equilibria): found once, when the run records its
+/// convergence-confinement figures, and read by report.md and summary.json.
+struct SupportEquilibria {
+  GroundCurve ground;
+  std::vector<SupportEquilibrium> lines;  ///< one per c.support, in its order
+};
+
+/// ground_curve, then support_equilibria on it; none without a curve.
+std::optional<SupportEquilibria> meet_ground_curve(
+    const ConvergenceConfinementFigures& c, const std::vector<GroundReactionPoint>& implicit,
+    const std::optional<CounterpartComparison>& counterpart);
+
 }  // namespace rockfdem::workflows

@@ -2,7 +2,7 @@
 
 #include "outputs/ground_reaction.hpp"
 #include "rockfdem/insitu/plastic.hpp"
-#include "stages/stage_inputs.hpp"
+#include "run/engine_setup.hpp"
 
 namespace rockfdem::workflows {
 

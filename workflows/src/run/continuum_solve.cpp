@@ -6,9 +6,9 @@
 #include "rockfdem/error.hpp"
 #include "rockfdem/insitu/plastic.hpp"
 #include "run/continuum_ground_reaction.hpp"
+#include "run/engine_setup.hpp"
 #include "stages/registry.hpp"
 #include "stages/stage.hpp"
-#include "stages/stage_inputs.hpp"
 
 namespace rockfdem::workflows {
 namespace {

@@ -5,7 +5,7 @@
 #include <map>
 #include <utility>
 
-#include "stages/stage_inputs.hpp"
+#include "run/engine_setup.hpp"
 
 namespace rockfdem::workflows {
 namespace {

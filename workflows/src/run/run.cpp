@@ -22,11 +22,11 @@
 #include "rockfdem/error.hpp"
 #include "rockfdem/mesh/msh_io.hpp"
 #include "run/continuum_solve.hpp"
+#include "run/engine_setup.hpp"
 #include "run/handoff_choice.hpp"
 #include "run/implicit_check.hpp"
 #include "run/interrupt.hpp"
 #include "scene/scene_reader.hpp"
-#include "stages/stage_inputs.hpp"
 
 namespace rockfdem::workflows {
 namespace {
@@ -233,7 +233,7 @@ void Run::take_handoff_step() {
 
 void Run::begin_stages() {
   stages_.emplace(engine(), mesh_, handoff(), scene_, ctx_, out_, key_points_, bolts_, support_);
-  resume_or_record({"handoff", 0});
+  resume_or_record(*stages_, {"handoff", 0});
 }
 
 void Run::run_stages() {

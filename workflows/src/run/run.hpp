@@ -3,6 +3,7 @@
 // phases in order (run.cpp says what each does and why in that order).
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -14,6 +15,7 @@
 #include "rockfdem/insitu/insitu.hpp"
 #include "rockfdem/mesh/mesh.hpp"
 #include "rockfdem/workflows/scene.hpp"
+#include "run/stage_runner.hpp"
 #include "run/staged_run.hpp"
 
 namespace rockfdem::workflows {
@@ -21,9 +23,6 @@ namespace rockfdem::workflows {
 class Run : StagedRun<RunOutputs> {
  public:
   Run(const Scene& scene, const RunContext& ctx);
-  /// The stage loop refers to this run's key points, hand-off and bolts:
-  /// it goes before them.
-  ~Run() override { stages_.reset(); }
   /// Runs the phases; returns the exit code. Throws InputError (nothing
   /// written when the scene or checkpoint is refused before the engine
   /// accepts it), NumericalError or Interrupted (both after the summary).
@@ -64,6 +63,10 @@ class Run : StagedRun<RunOutputs> {
   fdem::BoltPlan bolts_;                 ///< marks bolt triangles and allows fracture there
   KeyPoints key_points_;                 ///< the tunnel's key points and the scene's monitors
   double start_ratio_ = 0;               ///< the hand-off step's unbalanced-force ratio
+  /// The stage loop, declared last so that it is destroyed first: it refers
+  /// to the key points, hand-off field and bolts above (and to the base's
+  /// engine, mesh and outputs, which outlive every member here).
+  std::optional<StageRunner> stages_;
 };
 
 /// `rockfdem run` of a tunnel: Run(scene, ctx).run().

@@ -11,6 +11,7 @@
 // it the step count, time and so the platen's travel), the stage loop's
 // cursor and the outputs' rows, frames, peak and post-peak stop, so that
 // `--restart` continues to the uninterrupted run's state and history.
+#include <optional>
 #include <sstream>
 
 #include "outputs/specimen_outputs.hpp"
@@ -19,11 +20,11 @@
 #include "rockfdem/fdem/engine.hpp"
 #include "rockfdem/mesh/msh_io.hpp"
 #include "run/checkpoint.hpp"
+#include "run/engine_setup.hpp"
 #include "run/interrupt.hpp"
 #include "run/run.hpp"
 #include "run/staged_run.hpp"
 #include "stages/platen_load.hpp"
-#include "stages/stage_inputs.hpp"
 
 namespace rockfdem::workflows {
 namespace {
@@ -32,8 +33,6 @@ namespace {
 class SpecimenRun : StagedRun<SpecimenOutputs> {
  public:
   SpecimenRun(const Scene& scene, const RunContext& ctx) : StagedRun(scene, ctx) {}
-  // The stage loop refers to the members below: it goes before them.
-  ~SpecimenRun() override { stages_.reset(); }
 
   int run() {
     make_mesh();
@@ -83,7 +82,7 @@ class SpecimenRun : StagedRun<SpecimenOutputs> {
     stages_.emplace(engine(), mesh_, stress_free_, scene_, ctx_, out_, no_key_points_, no_bolts_,
                     SupportMaterials{});
     stages_->model().platens = &out_.load();
-    resume_or_record({scene_.stages.front().kind, 0});
+    resume_or_record(*stages_, {scene_.stages.front().kind, 0});
   }
 
   void run_stages() {
@@ -104,6 +103,10 @@ class SpecimenRun : StagedRun<SpecimenOutputs> {
   }();
   KeyPoints no_key_points_;
   fdem::BoltPlan no_bolts_;
+  /// The stage loop, declared last so that it is destroyed first: it refers
+  /// to the three members above (and to the base's engine, mesh and
+  /// outputs, which outlive every member here).
+  std::optional<StageRunner> stages_;
 };
 
 }  // namespace

@@ -30,19 +30,19 @@ void StagedRun<Outputs>::make_mesh() {
 }
 
 template <class Outputs>
-void StagedRun<Outputs>::resume_or_record(const StageTag& first) {
+void StagedRun<Outputs>::resume_or_record(StageRunner& stages, const StageTag& first) {
   if (restart_) {
     try {
       out_.restore(resume_.run.at("outputs"), run_dir_of(ctx_.restart));
-      stages_->restore(resume_.run.at("stages"));
+      stages.restore(resume_.run.at("stages"));
     } catch (const InputError& e) {
       throw InputError(ctx_.restart + ": " + e.what());
     }
     summary_.restarted_from = CheckpointMark{ctx_.restart, engine().step_count()};
   } else {
-    reporting_failure([&] { stages_->record_output(first, timer_); });
+    reporting_failure([&] { stages.record_output(first, timer_); });
   }
-  stages_->set_checkpoint(checkpoint_every_, [this] { save_checkpoint(); });
+  stages.set_checkpoint(checkpoint_every_, [this, &stages] { save_checkpoint(stages); });
 }
 
 template <class Outputs>
@@ -83,9 +83,9 @@ void StagedRun<Outputs>::output_failed(const OutputError& e) {
 }
 
 template <class Outputs>
-void StagedRun<Outputs>::save_checkpoint() {
+void StagedRun<Outputs>::save_checkpoint(const StageRunner& stages) {
   Checkpoint c;
-  c.run = {{"stages", stages_->state()}, {"outputs", out_.state()}};
+  c.run = {{"stages", stages.state()}, {"outputs", out_.state()}};
   add_run_state(c.run);
   std::ostringstream bytes;
   engine().save_state(bytes);

@@ -1,7 +1,10 @@
 // What a tunnel run (Run) and a specimen run share: the scene, a restart's
-// checkpoint, the record, the outputs, the mesh, the engine and the stage
-// loop, and the phases that treat them alike. `Outputs` is RunOutputs or
-// SpecimenOutputs (both instantiated in staged_run.cpp).
+// checkpoint, the record, the outputs, the mesh and the engine, and the
+// phases that treat them alike. `Outputs` is RunOutputs or SpecimenOutputs
+// (both instantiated in staged_run.cpp). The stage loop is not here: it
+// refers to the run's own members (a tunnel's key points, hand-off and
+// bolts) as well as to these, so each run declares it as its last member,
+// destroyed before everything it refers to.
 #pragma once
 
 #include <functional>
@@ -34,10 +37,10 @@ class StagedRun {
   StagedRun(const Scene& scene, const RunContext& ctx);
 
   void make_mesh();
-  /// With stages_ made: a restart takes its checkpoint's outputs and stage
-  /// cursor, a fresh run records its first output step (stage `first`);
-  /// then the checkpoints are armed.
-  void resume_or_record(const StageTag& first);
+  /// With the run's stage loop made: a restart takes its checkpoint's
+  /// outputs and stage cursor, a fresh run records its first output step
+  /// (stage `first`); then the checkpoints are armed.
+  void resume_or_record(StageRunner& stages, const StageTag& first);
   /// Runs `f`; a NumericalError in it is reported (fail).
   void reporting_failure(const std::function<void()>& f);
   /// summary.json of a run a NumericalError stopped, then the error again
@@ -66,10 +69,9 @@ class StagedRun {
   Outputs out_;
   mesh::Mesh mesh_;
   std::optional<fdem::Engine> engine_;
-  std::optional<StageRunner> stages_;
 
  private:
-  void save_checkpoint();
+  void save_checkpoint(const StageRunner& stages);
 };
 
 }  // namespace rockfdem::workflows

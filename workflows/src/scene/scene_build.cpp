@@ -1026,7 +1026,7 @@ StageSpec read_stage(const Reader& r, const std::string& p, const std::string& k
                         "\": remove it from this entry");
     }
   }
-  stage_kind(kind).read(EntryKeys(r, p), st);
+  st.own = stage_kind(kind).read(EntryKeys(r, p));
   return st;
 }
 

@@ -5,6 +5,8 @@
 // lookups declared here, so scene/ never includes stages/.
 #pragma once
 
+#include <memory>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -61,8 +63,12 @@ class StageKind {
   /// ("stages[].alpha"), listed in the schema after the keys every entry
   /// has; an entry of another kind that gives one is refused.
   virtual std::vector<KeySpec> entry_keys() const { return {}; }
-  /// Reads the entry's own keys (entry_keys) into `spec`.
-  virtual void read(const StageEntry&, StageSpec&) const {}
+  /// Reads the entry's own keys (entry_keys) into the kind's own values
+  /// (StageSpec::own); none by default.
+  virtual std::shared_ptr<const StageValues> read(const StageEntry&) const { return nullptr; }
+  /// The entry's own values in a few words, for the notes that list the
+  /// stages (the mesh preview): "to alpha 0.3"; none by default.
+  virtual std::string note(const StageSpec&) const { return ""; }
   /// Refuses an entry the stages before it (or the scene) do not allow,
   /// and notes in check.order what it changes; allows any by default.
   virtual void check(StageCheck&) const {}
@@ -70,6 +76,16 @@ class StageKind {
   /// origin of what the support measures.
   virtual bool installs_support() const { return false; }
 };
+
+/// An entry's own values as its kind's read made them; `Values` is that
+/// kind's type, so asking for another's is a programming error
+/// (std::logic_error).
+template <class Values>
+const Values& own_values(const StageSpec& spec) {
+  const auto* v = dynamic_cast<const Values*>(spec.own.get());
+  if (!v) throw std::logic_error("stage '" + spec.kind + "' holds no values of the type asked for");
+  return *v;
+}
 
 /// The kind registered as `kind`; std::logic_error when none is (a
 /// validated scene names only registered kinds).

@@ -3,39 +3,9 @@
 #include <algorithm>
 #include <cmath>
 
-#include "rockfdem/coupling/fdem_model.hpp"
 #include "rockfdem/mesh/mesh.hpp"
-#include "stages/stage_inputs.hpp"
 
 namespace rockfdem::workflows {
-
-std::vector<fdem::BoundaryCondition> specimen_platens(const Scene& s) {
-  const bool disc = s.mesh.kind == mesh::ModelKind::kBrazilian;
-  const double v = s.engine.platen_velocity;
-  fdem::BoundaryCondition lower, upper;
-  lower.tag = disc ? mesh::kLoadBottom : mesh::kBottom;
-  upper.tag = disc ? mesh::kLoadTop : mesh::kTop;
-  if (s.engine.rough_platens) lower.x = upper.x = fdem::Constraint::kFixed;
-  lower.y = upper.y = fdem::Constraint::kVelocity;
-  lower.vy = v;
-  upper.vy = -v;
-  return {lower, upper};
-}
-
-fdem::ModelInput specimen_model_input(const Scene& scene, const mesh::Mesh& m, int threads) {
-  fdem::ModelInput in = coupling::model_input(
-      m, engine_materials(scene), scene.plane_stress ? fdem::Plane::kStress : fdem::Plane::kStrain);
-  in.boundary_conditions = specimen_platens(scene);
-  in.dt = scene.engine.dt;  // checked by make_engine
-  in.dt_safety = scene.engine.dt_safety;
-  in.damping.local = std::max(scene.engine.local_damping, 0.0);  // -1: not given, none
-  in.damping.mass_proportional = scene.engine.mass_damping;
-  in.gravity_y = -scene.engine.gravity;
-  in.threads = threads;
-  in.mass_scaling = {scene.engine.mass_scaling, scene.engine.mass_scaling_dt};
-  in.contact = contact_settings(scene);
-  return in;
-}
 
 PlatenLoad::PlatenLoad(const Scene& s)
     : disc_(s.mesh.kind == mesh::ModelKind::kBrazilian),

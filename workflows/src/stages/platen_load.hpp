@@ -9,21 +9,10 @@
 
 #include "record/run_figures.hpp"
 #include "rockfdem/fdem/engine.hpp"
-#include "rockfdem/fdem/model_input.hpp"
 #include "rockfdem/mesh/mesh.hpp"
 #include "rockfdem/workflows/scene.hpp"
 
 namespace rockfdem::workflows {
-
-/// The specimen's platens: the loaded edges (UCS: bottom and top; disc:
-/// the loading arcs) move towards each other at loading.platen_velocity.
-/// Rough platens (loading.platen_friction) also hold the ends laterally;
-/// frictionless ones leave the lateral motion free (rollers).
-std::vector<fdem::BoundaryCondition> specimen_platens(const Scene& scene);
-
-/// The engine's input for a specimen: the mesh, the rock, the platens, the
-/// scene's time step, damping, mass scaling and contact settings.
-fdem::ModelInput specimen_model_input(const Scene& scene, const mesh::Mesh& m, int threads);
 
 struct PlatenReading {
   double force = 0;   ///< upper platen's reaction per unit thickness [N/m], compression positive

@@ -37,6 +37,15 @@ void grout_broken(StageModel& m, StageChanges& done) {
     done.grouted.push_back({std::size_t(g.cracks[i]), g.midpoints[i][0], g.midpoints[i][1]});
 }
 
+// The entry's own values, read and used here alone.
+struct GroutValues final : StageValues {
+  long trigger_broken = 0;  ///< broken crack elements that trigger grouting
+  /// The trigger keys the entry gives ("trigger_steps", ...), in the
+  /// schema's order; check allows one (none: trigger_broken's default, at once).
+  std::vector<std::string> triggers;
+  double trigger_value = 0;  ///< the first given trigger's value
+};
+
 enum class TriggerKind { kBroken, kSinceSupport, kGrowth, kSteps };
 
 struct Trigger {
@@ -59,14 +68,14 @@ struct Trigger {
 };
 
 /// The entry's trigger without N0: the one key given, else trigger_broken.
-Trigger given_trigger(const StageSpec& spec) {
+Trigger given_trigger(const GroutValues& given) {
   Trigger t;
-  if (spec.triggers.empty()) {
-    t.value = double(spec.trigger_broken);
+  if (given.triggers.empty()) {
+    t.value = double(given.trigger_broken);
     return t;
   }
-  t.key = spec.triggers.front();
-  t.value = spec.trigger_value;
+  t.key = given.triggers.front();
+  t.value = given.trigger_value;
   if (t.key == "trigger_broken_since_support") t.kind = TriggerKind::kSinceSupport;
   if (t.key == "trigger_broken_growth") t.kind = TriggerKind::kGrowth;
   if (t.key == "trigger_steps") t.kind = TriggerKind::kSteps;
@@ -130,22 +139,33 @@ class Grout : public Stage {
   }
 
   // trigger_broken with its default; the triggers given, in the schema's order.
-  void read(const StageEntry& e, StageSpec& spec) const override {
-    spec.trigger_broken = long(e.number(".trigger_broken"));
+  std::shared_ptr<const StageValues> read(const StageEntry& e) const override {
+    auto v = std::make_shared<GroutValues>();
+    v->trigger_broken = long(e.number(".trigger_broken"));
     for (const char* key : {"trigger_broken", "trigger_broken_since_support",
                             "trigger_broken_growth", "trigger_steps"})
       if (e.has(std::string(".") + key)) {
-        if (spec.triggers.empty()) spec.trigger_value = e.number(std::string(".") + key);
-        spec.triggers.push_back(key);
+        if (v->triggers.empty()) v->trigger_value = e.number(std::string(".") + key);
+        v->triggers.push_back(key);
       }
+    return v;
+  }
+
+  // The trigger given, as the mesh preview notes it; none: fires at once.
+  std::string note(const StageSpec& spec) const override {
+    const GroutValues& v = own_values<GroutValues>(spec);
+    if (v.triggers.empty()) return "";
+    char text[32];
+    std::snprintf(text, sizeof text, "%g", v.trigger_value);
+    return "(" + v.triggers.front() + " " + text + ")";
   }
 
   void check(StageCheck& c) const override {
-    const std::vector<std::string>& given = c.spec.triggers;
+    const std::vector<std::string>& given = own_values<GroutValues>(c.spec).triggers;
     if (given.size() > 1)
       c.refuse("." + given[1], "one trigger per grout stage; " + given[0] + " and " + given[1] +
                                    " are both given: keep one");
-    const Trigger t = given_trigger(c.spec);
+    const Trigger t = given_trigger(own_values<GroutValues>(c.spec));
     if (t.from_support() && !c.order.lined && !c.order.bolted)
       c.refuse("." + t.key,
                "counts from the support's installation: needs a `lining` or `bolts` stage "
@@ -157,7 +177,7 @@ class Grout : public Stage {
 
   bool step(StageDriver& runner, const StageSpec& spec, StageChanges& changes) const override {
     StageModel& m = runner.model();
-    Trigger t = given_trigger(spec);
+    Trigger t = given_trigger(own_values<GroutValues>(spec));
     if (t.from_support()) t.n0 = broken_at_support(runner);
     const auto reached = [&] { return t.reached(runner, m.engine); };
     std::string fired = t.key;

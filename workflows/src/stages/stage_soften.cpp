@@ -1,12 +1,21 @@
 // soften: the core (and a ring not yet installed, still ground) down to the
 // stage's stiffness factor alpha, the explicit continuation of the
 // implicit stage's core softening.
+#include <cstdio>
+
 #include "scene/scene_reader.hpp"
 #include "scene/schema_keys.hpp"
 #include "stages/stage.hpp"
 
 namespace rockfdem::workflows {
 namespace {
+
+// The entry's own value, read and used here alone.
+struct SoftenValues final : StageValues {
+  double alpha = 0;  ///< target core stiffness factor (0: not given)
+};
+
+double target(const StageSpec& spec) { return own_values<SoftenValues>(spec).alpha; }
 
 class Soften : public Stage {
  public:
@@ -19,23 +28,33 @@ class Soften : public Stage {
   }
 
   // Required (check): 0 until then.
-  void read(const StageEntry& e, StageSpec& spec) const override {
-    spec.alpha = e.has(".alpha") ? e.number(".alpha") : 0;
+  std::shared_ptr<const StageValues> read(const StageEntry& e) const override {
+    auto v = std::make_shared<SoftenValues>();
+    v->alpha = e.has(".alpha") ? e.number(".alpha") : 0;
+    return v;
+  }
+
+  std::string note(const StageSpec& spec) const override {
+    char text[32];
+    std::snprintf(text, sizeof text, "%g", target(spec));
+    return std::string("to alpha ") + text;
   }
 
   // Softening only goes down, and only while the core is there.
   void check(StageCheck& c) const override {
     c.require(".alpha", "a soften stage needs its target alpha");
     if (!(c.order.alpha > 0)) c.refuse(".kind", "the core is already removed (or alpha = 0)");
-    if (!(c.spec.alpha < c.order.alpha))
+    const double alpha = target(c.spec);
+    if (!(alpha < c.order.alpha))
       c.refuse(".alpha", "softening must go down from " + detail::number_text(c.order.alpha));
-    c.order.alpha = c.spec.alpha;
+    c.order.alpha = alpha;
   }
 
   StageChanges apply(StageModel& m, const StageSpec& spec) const override {
     // A hand-off found at run time (insitu.handoff = "first_crack") may
     // already be at or below this alpha: nothing to soften.
-    if (!(spec.alpha < m.alpha)) {
+    const double alpha = target(spec);
+    if (!(alpha < m.alpha)) {
       StageChanges skipped;
       skipped.skipped = true;
       return skipped;
@@ -43,8 +62,8 @@ class Soften : public Stage {
     // The engine's core already has alpha_h E and stress: scale relative to it.
     for (std::size_t t = 0; t < m.mesh.n_triangles(); ++t)
       if (m.mesh.zone[t] == mesh::kCore || (!m.lining_installed && m.mesh.zone[t] == mesh::kLining))
-        m.engine.set_stiffness_factor(t, spec.alpha / m.handoff_alpha);
-    m.alpha = spec.alpha;
+        m.engine.set_stiffness_factor(t, alpha / m.handoff_alpha);
+    m.alpha = alpha;
     return {};
   }
 

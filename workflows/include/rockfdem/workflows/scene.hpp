@@ -13,6 +13,7 @@
 #include <array>
 #include <cstdint>
 #include <map>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -107,20 +108,21 @@ struct EngineSettings {
   bool contact_friction{};
 };
 
+/// A stage kind's own values of its [[stages]] entry (soften's alpha,
+/// grout's trigger). The kind's stage file defines them, its read fills
+/// them and only its stage reads them: a new kind with a key of its own
+/// changes nothing here.
+struct StageValues {
+  virtual ~StageValues() = default;
+};
+
 /// One construction stage of a tunnel run (scene [[stages]]).
 struct StageSpec {
   std::string kind;  ///< soften, lining, remove_core, equilibrium
-  double alpha{};    ///< soften: target core stiffness factor (0: not given, other kinds)
   long max_steps{};  ///< explicit steps at most
   double ratio{};    ///< stop when the unbalanced-force ratio is below
   double time{};     ///< stop after this simulated time [s]; 0: no limit
   int every_steps{};
-  long trigger_broken{};  ///< grout: broken crack elements that trigger grouting
-  /// grout: the trigger keys the entry gives ("trigger_steps", ...), in the
-  /// schema's order; the grout stage allows one (none: trigger_broken's
-  /// default, at once).
-  std::vector<std::string> triggers;
-  double trigger_value{};  ///< grout: the first given trigger's value
   /// With the ratio, equilibrium needs the monitors settled: the largest
   /// monitor displacement change over one output interval, per 1000 steps,
   /// at most this fraction of the largest monitor displacement; 0: the
@@ -134,6 +136,8 @@ struct StageSpec {
   /// Whether finding the opening unstable ends the run there; false runs
   /// on to the cap, the status stays unstable with the first finding.
   bool stop_when_unstable{};
+  /// The kind's own values (its StageKind::read); null for a kind with none.
+  std::shared_ptr<const StageValues> own;
 };
 
 /// The steel of one kind of bolt (seed sec. 2.2).

@@ -1,4 +1,6 @@
-// Private: from the validated scene to each stage's own input record.
+// Private: the run's set-up from the validated scene: the implicit stage's
+// input, the engine's materials, bolts and contact, and the engine itself
+// at a tunnel's hand-off or a specimen's start.
 #pragma once
 
 #include <map>
@@ -58,6 +60,16 @@ struct EngineSetup {
 /// scene's keys, before anything is written; nothing when `force_dt`).
 EngineSetup setup_engine(const Scene& scene, const mesh::Mesh& m,
                          const insitu::InsituField& handoff, int threads, bool force_dt);
+
+/// The specimen's platens: the loaded edges (UCS: bottom and top; disc:
+/// the loading arcs) move towards each other at loading.platen_velocity.
+/// Rough platens (loading.platen_friction) also hold the ends laterally;
+/// frictionless ones leave the lateral motion free (rollers).
+std::vector<fdem::BoundaryCondition> specimen_platens(const Scene& scene);
+
+/// The engine's input for a specimen: the mesh, the rock, the platens, the
+/// scene's time step, damping, mass scaling and contact settings.
+fdem::ModelInput specimen_model_input(const Scene& scene, const mesh::Mesh& m, int threads);
 
 /// Throws the scene's InputError for an explicit engine.dt above `limit`
 /// (the stability limit of `model`, in words); nothing when dt <= limit.
