@@ -12,6 +12,7 @@
 #include "rockfdem/fdem/model_input.hpp"
 #include "rockfdem/mesh/mesh.hpp"
 #include "rockfdem/workflows/scene.hpp"
+#include "stages/prepeak_curve.hpp"
 
 namespace rockfdem::workflows {
 
@@ -54,6 +55,7 @@ class PlatenLoad {
   long peak_step_ = 0;
   bool stopped_ = false;
   long stop_step_ = 0;
+  PrePeakCurve curve_;  ///< UCS: for the pre-peak modulus
 };
 
 }  // namespace rockfdem::workflows
