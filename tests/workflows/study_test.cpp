@@ -404,6 +404,36 @@ TEST(Study, calibrate_recovers_tensile_strength_of_a_fracturing_disc) {
   fs::remove_all(out);
 }
 
+// The UCS's pre-peak modulus as a target (what a lab calibration fits
+// beside the peaks): the small UCS at E = 33 GPa makes the target, the
+// search starts at the scene's 30 GPa within 20-40 GPa. The modulus (the
+// slope over 0.2-0.6 of the peak) follows E with elasticity about 1.1
+// (dt and the readings move with E), so a search stopping at steps of
+// 1e-6 of the range (20 kPa) must land within 1e-3 of E; one that stops
+// short, or a modulus that did not follow E, fails.
+TEST(Study, calibrate_recovers_young_modulus_from_a_ucs_pre_peak_modulus) {
+  const std::string scene = kTestDir + "/ucs_small.toml --set output.vtk=false";
+  const fs::path truth = scratch("ucs-modulus-truth"), out = scratch("ucs-modulus-calibrate");
+  ASSERT_EQ(
+      run("run " + scene + " --set materials.rock.young=33e9 -j 1 -q -o " + truth.string()).code,
+      0);
+  const auto specimen = read_json(truth / "summary.json")["specimen"];
+  ASSERT_TRUE(specimen["modulus"].is_number()) << specimen.dump();
+  std::ostringstream target;
+  target.precision(17);
+  target << " --target modulus=" << specimen["modulus"].get<double>() / 1e9;
+  const Result r =
+      run("calibrate " + scene + target.str() +
+          " --free materials.rock.young=20e9:40e9 --max-evals 40 -j 1 -o " + out.string());
+  ASSERT_EQ(r.code, 0) << r.output;
+  const auto s = read_json(out / "calibration_summary.json");
+  EXPECT_NEAR(s["parameters"][0]["fitted"].get<double>(), 33e9, 1e-3 * 33e9) << r.output;
+  EXPECT_EQ(s["targets"][0]["unit"], "GPa");
+  EXPECT_GT(s["sensitivity"][0]["elasticity"].get<double>(), 0.5);
+  fs::remove_all(truth);
+  fs::remove_all(out);
+}
+
 // Latin hypercube: 7 samples over two ranges. Each range is cut into 7
 // equal bins and each bin of each key holds exactly one sample, within the
 // bounds; a second invocation draws the same points (it finds every variant
