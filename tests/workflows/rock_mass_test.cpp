@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 
 #include "cli_runner.hpp"
 #include "rockfdem/error.hpp"
@@ -108,6 +109,28 @@ TEST(RockMass, a_scene_with_gsi_runs_on_the_rock_mass) {
   EXPECT_EQ(d.rock_mass->disturbance, 0.0);
   EXPECT_DOUBLE_EQ(d.materials.at(rockfdem::mesh::kRock).young,
                    rock_mass(d.rock_mass->intact, 45, 0, lab.insitu.sigma_v).young);
+}
+
+// `rockfdem check` shows the rock mass the run would use, with the figures
+// rock_mass() gives (printed to 3 significant digits), before any run.
+TEST(RockMass, check_prints_the_derived_rock_mass) {
+  const Scene lab = load_scene(kScene);
+  const MaterialSpec& l = lab.materials.at(rockfdem::mesh::kRock);
+  const RockMassFigures m = rock_mass({l.young, mohr_coulomb_ucs(l.cohesion, l.friction_angle), 10},
+                                      45, 0.3, lab.insitu.sigma_v);
+  const rockfdem::test::Result r =
+      rockfdem::test::run("check " + kScene +
+                          " --set materials.rock.gsi=45 --set materials.rock.hoek_brown_mi=10"
+                          " --set materials.rock.disturbance=0.3");
+  ASSERT_EQ(r.code, 0) << r.output;
+  char line[200];
+  std::snprintf(line, sizeof line, "rock mass (GSI 45, mi 10, D 0.3): E %.3g GPa, c %.3g MPa",
+                m.young / 1e9, m.cohesion / 1e6);
+  EXPECT_NE(r.output.find(line), std::string::npos) << line << " in\n" << r.output;
+  std::snprintf(line, sizeof line, "ft %.3g MPa", m.tensile_strength / 1e6);
+  EXPECT_NE(r.output.find(line), std::string::npos) << line << " in\n" << r.output;
+  // Without gsi the model's rock is the section itself: no such line.
+  EXPECT_EQ(rockfdem::test::run("check " + kScene).output.find("rock mass ("), std::string::npos);
 }
 
 // gsi where it has no meaning, or without what it needs: exit-2 errors

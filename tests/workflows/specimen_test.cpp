@@ -203,6 +203,19 @@ TEST(SpecimenPeak, is_the_largest_platen_stress_of_every_step_and_stops_after_it
   EXPECT_EQ(peak["peak_step"].get<double>(), t.at(top, "step"));
   EXPECT_NEAR(peak["peak_strain"].get<double>(), t.at(top, "axial_strain"),
               1e-9 * t.at(top, "axial_strain"));
+  // The pre-peak modulus: the least-squares slope of every step's stress
+  // against its strain up to the peak, over 0.2-0.6 of the peak (all steps
+  // are kept below 2048: no decimation).
+  double n = 0, sx = 0, sy = 0, sxx = 0, sxy = 0;
+  const double p = t.at(top, "axial_stress");
+  for (std::size_t i = 0; i <= top; ++i) {
+    const double x = t.at(i, "axial_strain"), y = t.at(i, "axial_stress");
+    if (y < 0.2 * p || y > 0.6 * p) continue;
+    n += 1, sx += x, sy += y, sxx += x * x, sxy += x * y;
+  }
+  ASSERT_GE(n, 5);
+  const double slope = (n * sxy - sx * sy) / (n * sxx - sx * sx);
+  EXPECT_NEAR(peak["modulus"].get<double>(), slope, 1e-6 * slope);
   // The stop: the first step after which the stress is at most 0.7 of the
   // peak so far with a crack element broken; the run's last row.
   const std::size_t last = t.rows.size() - 1;

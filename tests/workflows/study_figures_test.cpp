@@ -61,7 +61,8 @@ TEST(StudyFigures, calibrate_help_lists_every_target_name) {
   std::string help;
   for (const char c : r.output)
     if (c != '\n' && c != ' ') help.push_back(c);
-  for (const char* scene : {"/scenes/tunnel-seed.toml", "/scenes/brazilian-disc.toml"}) {
+  for (const char* scene :
+       {"/scenes/tunnel-seed.toml", "/scenes/brazilian-disc.toml", "/scenes/ucs-33k.toml"}) {
     const rockfdem::workflows::Scene s =
         rockfdem::workflows::load_scene(std::string(ROCKFDEM_SOURCE_DIR) + scene);
     for (const study::TargetName& t : study::target_names(s)) {

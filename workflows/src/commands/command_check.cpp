@@ -406,6 +406,20 @@ void print_plausibility(const RockPlausibilityFigures& p, std::vector<std::strin
   for (const std::string& line : plausibility_warnings(p, false)) warn(said, line);
 }
 
+// With materials.rock.gsi: the rock mass the run will use, derived from the
+// laboratory set (rock_mass.hpp), so that the step is seen before a run.
+void print_rock_mass(const Scene& scene) {
+  if (!scene.rock_mass) return;
+  const RockMassSpec& r = *scene.rock_mass;
+  const RockMassFigures& m = r.mass;
+  std::printf(
+      "  rock mass (GSI %g, mi %g, D %g): E %.3g GPa, c %.3g MPa, phi %.3g deg, ft %.3g MPa, "
+      "UCS %.3g MPa (Mohr-Coulomb), sigma_cm %.3g MPa; from the lab's E %.3g GPa, UCS %.3g MPa\n",
+      r.gsi, r.mi, r.disturbance, m.young / 1e9, m.cohesion / 1e6, m.friction_angle,
+      m.tensile_strength / 1e6, mohr_coulomb_ucs(m.cohesion, m.friction_angle) / 1e6,
+      m.sigma_cm / 1e6, r.intact.young / 1e9, r.intact.ucs / 1e6);
+}
+
 // The last line: valid, or valid with what the warnings said.
 void print_verdict(const std::vector<std::string>& said) {
   if (said.empty()) {
@@ -423,6 +437,7 @@ int command_check(const Scene& scene, const RunContext& ctx) {
   const double cp = p_wave_speed(scene.materials.at(mesh::kRock), scene.plane_stress);
   std::printf("scene %s: valid\n", scene.source.c_str());
   std::vector<std::string> said(scene.warnings);  // the input warnings, said on reading
+  print_rock_mass(scene);
   if (e.exact) std::printf("  mesh from %s\n", scene.mesh.msh.path.c_str());
   // Crack elements: about 1.5 interior edges per triangle.
   std::printf("  crack elements (estimate):  %.0f\n", 1.5 * e.fracture_triangles);

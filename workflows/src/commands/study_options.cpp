@@ -40,7 +40,8 @@ po::options_description study_options() {
       "right_shoulder, left_wall, right_wall, invert (radial from the in-situ state), each "
       "with _since_support (since the support's installation), shoulders and walls (a pair's "
       "mean), vault_settlement, wall_chord_convergence, shoulder_chord_convergence. "
-      "Specimens [MPa]: peak_stress (UCS, Brazilian), tensile_strength (Brazilian)")(
+      "Specimens: peak_stress [MPa] (UCS, Brazilian), tensile_strength [MPa] (Brazilian), "
+      "modulus [GPa] (UCS: the pre-peak modulus, the slope over 0.2-0.6 of the peak)")(
       "weight", po::value<Strings>()->composing(), "calibrate: NAME=W, a target's weight (1)")(
       "free", po::value<Strings>()->composing(),
       "calibrate: KEY=LO:HI, a scene number to fit within its bounds (repeatable)")(

@@ -98,6 +98,9 @@ struct SpecimenRecord {
   double strain_rate = 0;      ///< nominal axial strain rate 2 v / L [1/s]
   double stop_after_peak = 0;  ///< loading.stop_after_peak [-]
   std::optional<long> stopped_after_peak_at_step;  ///< none: not stopped after the peak
+  /// UCS: the pre-peak modulus, the slope of stress against nominal strain
+  /// over 0.2-0.6 of the peak (prepeak_curve.hpp) [Pa]; none for a disc.
+  std::optional<double> modulus;
 };
 
 /// One implicit solve ("insitu"."stages"[i], `rockfdem insitu` only).

@@ -174,7 +174,8 @@ nlohmann::json specimen_json(const SpecimenRecord& s) {
           {"peak_strain", s.peak_strain},
           {"strain_rate", s.strain_rate},
           {"stop_after_peak", s.stop_after_peak},
-          {"stopped_after_peak_at_step", or_null(s.stopped_after_peak_at_step)}};
+          {"stopped_after_peak_at_step", or_null(s.stopped_after_peak_at_step)},
+          {"modulus", or_null(s.modulus)}};
 }
 
 nlohmann::json energy_json(const fdem::EnergyBalance& en) {

@@ -27,6 +27,7 @@ PlatenReading PlatenLoad::read(const fdem::Engine& e) const {
 bool PlatenLoad::after_step(const fdem::Engine& e) {
   if (stopped_) return true;
   const PlatenReading r = read(e);
+  if (!disc_) curve_.add(r.strain, r.stress);
   if (r.stress > peak_.stress) {
     peak_ = r;
     peak_step_ = e.step_count();
@@ -43,8 +44,11 @@ bool PlatenLoad::after_step(const fdem::Engine& e) {
 }
 
 nlohmann::json PlatenLoad::state() const {
-  return {{"peak_stress", peak_.stress}, {"peak_strain", peak_.strain}, {"peak_force", peak_.force},
-          {"peak_step", peak_step_},     {"stopped", stopped_},         {"stop_step", stop_step_}};
+  nlohmann::json s = {{"peak_stress", peak_.stress}, {"peak_strain", peak_.strain},
+                      {"peak_force", peak_.force},   {"peak_step", peak_step_},
+                      {"stopped", stopped_},         {"stop_step", stop_step_}};
+  if (!disc_) s["curve"] = curve_.state();
+  return s;
 }
 
 void PlatenLoad::restore(const nlohmann::json& s) {
@@ -54,6 +58,9 @@ void PlatenLoad::restore(const nlohmann::json& s) {
   peak_step_ = s.at("peak_step").get<long>();
   stopped_ = s.at("stopped").get<bool>();
   stop_step_ = s.value("stop_step", 0L);
+  // A checkpoint written before the curve was kept restores without it:
+  // the modulus is then read from the steps after the restart alone.
+  if (!disc_ && s.contains("curve")) curve_.restore(s.at("curve"));
 }
 
 SpecimenRecord PlatenLoad::record() const {
@@ -65,6 +72,7 @@ SpecimenRecord PlatenLoad::record() const {
   r.peak_strain = peak_.strain;
   r.strain_rate = 2 * velocity_ / length_;
   r.stop_after_peak = stop_fraction_;
+  if (!disc_) r.modulus = curve_.modulus(peak_.stress, peak_.strain);
   if (stopped_) r.stopped_after_peak_at_step = stop_step_;
   return r;
 }

@@ -11,6 +11,7 @@
 #include "rockfdem/fdem/engine.hpp"
 #include "rockfdem/mesh/mesh.hpp"
 #include "rockfdem/workflows/scene.hpp"
+#include "stages/prepeak_curve.hpp"
 
 namespace rockfdem::workflows {
 
@@ -43,6 +44,7 @@ class PlatenLoad {
   long peak_step_ = 0;
   bool stopped_ = false;
   long stop_step_ = 0;
+  PrePeakCurve curve_;  ///< UCS: for the pre-peak modulus
 };
 
 }  // namespace rockfdem::workflows

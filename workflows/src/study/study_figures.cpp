@@ -70,6 +70,7 @@ std::vector<std::string> figure_columns(const Scene& scene) {
   std::vector<std::string> c;
   if (is_specimen(scene)) {
     c.push_back("peak_stress_MPa");
+    if (scene.mesh.kind == mesh::ModelKind::kUcs) c.push_back("modulus_GPa");
   } else {
     for (const std::string& p : key_point_names()) c.push_back(p + "_radial_mm");
     for (const Pair& pair : kPairs) c.push_back(pair.column);
@@ -97,6 +98,7 @@ nlohmann::json key_figures(const nlohmann::json& summary) {
     take_support(summary, f);
   }
   take(summary, "specimen", "peak_stress", "peak_stress_MPa", 1e-6, f);
+  take(summary, "specimen", "modulus", "modulus_GPa", 1e-9, f);
   take(summary, "broken", "mode_I", "broken_I", 1, f);
   take(summary, "broken", "mode_II", "broken_II", 1, f);
   take(summary, "broken", "mixed", "broken_mixed", 1, f);
@@ -110,7 +112,8 @@ std::vector<TargetName> target_names(const Scene& scene) {
   if (scene.mesh.kind == mesh::ModelKind::kBrazilian)
     return {{"peak_stress", "peak_stress_MPa", "MPa"},
             {"tensile_strength", "peak_stress_MPa", "MPa"}};
-  if (scene.mesh.kind == mesh::ModelKind::kUcs) return {{"peak_stress", "peak_stress_MPa", "MPa"}};
+  if (scene.mesh.kind == mesh::ModelKind::kUcs)
+    return {{"peak_stress", "peak_stress_MPa", "MPa"}, {"modulus", "modulus_GPa", "GPa"}};
   for (const std::string& p : key_point_names()) names.push_back({p, p + "_radial_mm", "mm"});
   for (const Pair& pair : kPairs) names.push_back({pair.target, pair.column, "mm"});
   for (const char* c : kChords) {
@@ -133,7 +136,7 @@ std::string describe(const std::vector<TargetName>& names) {
   for (std::size_t i = 0; i < names.size(); ++i) s += (i ? ", " : "") + names[i].name;
   return s + (names.front().unit == "mm"
                   ? " (key points: radial displacement towards the opening; chords: closure; mm)"
-                  : " (the specimen's peak stress, MPa)");
+                  : " (the specimen's peak stress, MPa; UCS modulus: its pre-peak modulus, GPa)");
 }
 
 }  // namespace rockfdem::workflows::study
