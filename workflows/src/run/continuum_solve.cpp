@@ -65,6 +65,7 @@ insitu::InsituField field_of(const insitu::PlasticField& p) {
 void solve_elastic(const Scene& scene, const mesh::Mesh& m, ContinuumStates& c) {
   insitu::InsituSpec spec = insitu_spec(scene);
   spec.alphas = c.alphas;
+  spec.keep_fields = {scene.insitu.alpha.back(), c.alphas.back()};  // the hand-off's, the end's
   if (c.lining_alpha > 0 && !scene.insitu.lining_active) {
     // In the next stage, on the ground as this alpha left it (the engine's
     // lining stage installs on the state it finds).
