@@ -292,7 +292,7 @@ void print_runs(const std::vector<Run>& runs) {
 // The run's phases in the order a tunnel run passes them, then any others.
 std::vector<std::string> phase_order(const Run& r) {
   std::vector<std::string> order;
-  for (const char* p : {"mesh", "insitu", "fdem_setup", "fdem", "continuum_counterpart", "output"})
+  for (const char* p : {"mesh", "insitu", "continuum_counterpart", "fdem_setup", "fdem", "output"})
     if (r.seconds.count(p)) order.push_back(p);
   for (const auto& entry : r.seconds)
     if (entry.first != "total" && std::find(order.begin(), order.end(), entry.first) == order.end())

@@ -84,9 +84,9 @@ struct Cracks {
                                     ///< empty while every factor is 1
                                     ///< (strength_heterogeneity.hpp)
   std::vector<int> joints;          ///< the elements with the joint law, ascending
-  std::vector<double> joint_force;  ///< 4 per element: the last step's residual friction
-                                    ///< forces on nodes 0, 1 (joint_friction.hpp); empty
-                                    ///< without a joint-law material
+  std::vector<double> joint_force;  ///< 4 per element of `joints`, in its order: the last
+                                    ///< step's residual friction forces on nodes 0, 1
+                                    ///< (joint_friction.hpp)
   std::size_t size() const { return material.size(); }
 };
 

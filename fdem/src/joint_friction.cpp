@@ -70,28 +70,36 @@ double power(const EngineData& d, std::size_t c, const double* f) {
          f[2] * (v[2 * nd[1]] - v[2 * nd[2]]) + f[3] * (v[2 * nd[1] + 1] - v[2 * nd[2] + 1]);
 }
 
+bool any_joint_law(const EngineData& d) {
+  return std::any_of(d.crack_laws.begin(), d.crack_laws.end(),
+                     [](const CrackConstants& k) { return k.law == CrackLaw::kJoint; });
+}
+
 }  // namespace
 
 void init_joint_friction(EngineData& d) {
   auto& cr = d.cracks;
   cr.joints.clear();
-  const bool any = std::any_of(d.crack_laws.begin(), d.crack_laws.end(),
-                               [](const CrackConstants& k) { return k.law == CrackLaw::kJoint; });
-  cr.joint_force.assign(any ? 4 * cr.size() : 0, 0.0);
-  if (!any) return;
-  for (std::size_t c = 0; c < cr.size(); ++c)
-    if (is_joint(d, c)) cr.joints.push_back(static_cast<int>(c));
+  if (any_joint_law(d))
+    for (std::size_t c = 0; c < cr.size(); ++c)
+      if (is_joint(d, c)) cr.joints.push_back(static_cast<int>(c));
+  cr.joint_force.assign(4 * cr.joints.size(), 0.0);
 }
 
 void update_joint_list(EngineData& d, std::size_t c) {
   auto& list = d.cracks.joints;
-  if (d.cracks.joint_force.empty()) return;  // no joint-law material
+  if (!any_joint_law(d)) return;
   const auto it = std::lower_bound(list.begin(), list.end(), static_cast<int>(c));
   const bool listed = it != list.end() && *it == static_cast<int>(c);
-  if (is_joint(d, c) && !listed) list.insert(it, static_cast<int>(c));
+  // The kept forces follow the list: an element listed anew starts from none.
+  auto kept = d.cracks.joint_force.begin() + 4 * (it - list.begin());
+  if (is_joint(d, c) && !listed) {
+    d.cracks.joint_force.insert(kept, 4, 0.0);
+    list.insert(it, static_cast<int>(c));
+  }
   if (!is_joint(d, c) && listed) {
+    d.cracks.joint_force.erase(kept, kept + 4);
     list.erase(it);
-    for (int i = 0; i < 4; ++i) d.cracks.joint_force[4 * c + i] = 0.0;
   }
 }
 
@@ -104,7 +112,7 @@ void book_joint_friction(EngineData& d) {
     const std::size_t c = static_cast<std::size_t>(list[i]);
     double f[4];
     residual_friction_force(d, c, f);
-    double* old = kept + 4 * c;
+    double* old = kept + 4 * i;
     const double w = power(d, c, old) * half_prev + power(d, c, f) * half;
     for (int k = 0; k < 4; ++k) old[k] = f[k];
     return w;
@@ -118,7 +126,7 @@ double joint_friction_pending(const EngineData& d) {
   const double half = 0.5 * d.energy.last_dt;
   return -half * block_sum(static_cast<long>(list.size()), d.threads, [&](long i) {
     const std::size_t c = static_cast<std::size_t>(list[i]);
-    return power(d, c, &d.cracks.joint_force[4 * c]);
+    return power(d, c, &d.cracks.joint_force[4 * i]);
   });
 }
 

@@ -16,8 +16,9 @@
 //
 // The joint elements are listed once (Cracks::joints, sorted), so the step
 // loops over them only; each writes its own kept force, and the sum is a
-// fixed-block sum over the list: the same bits for any thread count. A
-// model without a joint-law material keeps nothing and does nothing.
+// fixed-block sum over the list: the same bits for any thread count. Only
+// the listed elements keep forces; a model without a joint-law material
+// keeps nothing and does nothing.
 #pragma once
 
 #include <cstddef>
@@ -26,8 +27,8 @@ namespace rockfdem::fdem::detail {
 
 struct EngineData;
 
-/// Sizes the kept forces (4 per crack element, only when some material
-/// has the joint law) and lists the joint elements: at construction.
+/// Lists the joint elements and sizes their kept forces (4 per listed
+/// element, in the list's order): at construction.
 void init_joint_friction(EngineData& d);
 
 /// Keeps Cracks::joints in step with element c's law after its material

@@ -308,6 +308,19 @@ InsituProblem::InsituProblem(const mesh::Mesh& mesh, const InsituSpec& spec)
   outer_edges_ = grid::outer_edges(mesh);
 }
 
+// A field InsituSpec::keep_fields does not name keeps its report only.
+bool keeps_field(const InsituSpec& spec, double alpha) {
+  const auto& k = spec.keep_fields;
+  return k.empty() || std::find(k.begin(), k.end(), alpha) != k.end();
+}
+
+void drop_arrays(InsituField& f) {
+  std::vector<Stress>().swap(f.stress);
+  std::vector<std::uint8_t>().swap(f.active);
+  std::vector<double>().swap(f.ux);
+  std::vector<double>().swap(f.uy);
+}
+
 // ---------------------------------------------------------------------------
 // run(): the staged loop of step-18, one elastic solve per alpha.
 // ---------------------------------------------------------------------------
@@ -347,6 +360,7 @@ std::vector<InsituField> InsituProblem::run() {
     field.postprocess_seconds = timer.wall_time();
     field.total_seconds = field.setup_seconds + field.assembly_seconds + field.solve_seconds +
                           field.postprocess_seconds;
+    if (!keeps_field(spec_, alpha)) drop_arrays(field);
     fields.push_back(std::move(field));
   }
   return fields;

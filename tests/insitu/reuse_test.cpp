@@ -77,6 +77,39 @@ TEST(InsituReuse, every_alpha_of_a_sequence_equals_a_fresh_solve_of_that_alpha) 
   }
 }
 
+// keep_fields drops the arrays of the fields it does not name, after they
+// are solved: the kept ones have the bits of a sequence that keeps all
+// (the solves are the same), the others their reports and no arrays.
+TEST(InsituReuse, fields_not_kept_have_no_arrays_and_the_kept_the_same_bits) {
+  const mesh::Mesh m = polar_box_mesh({1.0, 20.0, 32, true, 0.1});
+  InsituSpec spec = lined_spec(LinearSolver::kAmgCg);
+  spec.alphas = {1.0, 0.5, 0.2, 0.0};
+  const auto all = solve_insitu(m, spec);
+  spec.keep_fields = {0.5, 0.0};
+  const auto kept = solve_insitu(m, spec);
+  ASSERT_EQ(kept.size(), all.size());
+  for (std::size_t i = 0; i < all.size(); ++i) {
+    EXPECT_EQ(kept[i].alpha, all[i].alpha);
+    EXPECT_EQ(kept[i].iterations, all[i].iterations);
+    const bool keep = all[i].alpha == 0.5 || all[i].alpha == 0.0;
+    if (!keep) {
+      EXPECT_TRUE(kept[i].stress.empty() && kept[i].active.empty() && kept[i].ux.empty() &&
+                  kept[i].uy.empty())
+          << "alpha " << all[i].alpha;
+      continue;
+    }
+    ASSERT_EQ(kept[i].stress.size(), all[i].stress.size());
+    for (std::size_t t = 0; t < all[i].stress.size(); ++t) {
+      EXPECT_EQ(kept[i].stress[t].sxx, all[i].stress[t].sxx);
+      EXPECT_EQ(kept[i].stress[t].syy, all[i].stress[t].syy);
+      EXPECT_EQ(kept[i].stress[t].sxy, all[i].stress[t].sxy);
+    }
+    EXPECT_EQ(kept[i].active, all[i].active);
+    EXPECT_EQ(kept[i].ux, all[i].ux);
+    EXPECT_EQ(kept[i].uy, all[i].uy);
+  }
+}
+
 // The kept hierarchy must keep CG fast: every solve that used it needs at
 // most twice the iterations of a fresh hierarchy for the same matrix (the
 // rebuild rule allows 1.5 times the first solve after a build), and it must

@@ -265,15 +265,12 @@ constexpr double kPicturesSecondsPerTriangle = 0.03e-3;
 constexpr double kProbeMemoryMargin = 1.25;
 // What a tunnel run holds above the probe: the implicit solves (the sparse
 // factor grows faster than the mesh), the fields the outputs keep, the
-// continuum counterpart and the frames. Peak RSS above the probe measured
-// on tunnel-seed.toml (2 threads, 300 explicit steps): 72 MiB at 16,892
-// triangles, 88 at 30,074, 138 at 53,426 (1.1-1.25 kB per triangle once
-// the margin is applied); 900 B per triangle let the 53k mesh's peak pass
-// its bound by 2%. 1800 B left today's 16,284-triangle mesh 4.7% below
-// its bound, and 4.2% once the engine shrank (a lower probe, about the
-// same peak); 2000 B keeps it 5.6% below, 420k triangles 32% below
-// (docs/benchmarks.md).
-constexpr double kImplicitBytesPerTriangle = 2000;
+// continuum counterpart (solved before the engine is built, so its solve
+// and the engine are not held at once) and the frames. Peak RSS on
+// tunnel-seed.toml (2 threads, 300 explicit steps, docs/benchmarks.md):
+// 258 MiB at 16,284 triangles over a probe of 196 MiB; 1500 B per
+// triangle keeps it 8% below its bound, 28,936 triangles 22% below.
+constexpr double kImplicitBytesPerTriangle = 1500;
 
 // Output steps at most: each stage's (and its last), or the specimen's.
 double output_steps(const Scene& s) {

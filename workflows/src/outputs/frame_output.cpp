@@ -10,10 +10,8 @@
 
 namespace rockfdem::workflows {
 
-FrameOutput::FrameOutput(std::string dir, const std::vector<insitu::InsituField>& fields,
-                         const fdem::BoltPlan* bolts, BoltResults* bolt_results)
+FrameOutput::FrameOutput(std::string dir, const fdem::BoltPlan* bolts, BoltResults* bolt_results)
     : dir_(std::move(dir)),
-      fields_(fields),
       bolts_(bolts),
       bolt_results_(bolt_results),
       pvd_(output_path(dir_, "fdem.pvd")) {}
@@ -31,7 +29,7 @@ void FrameOutput::at_output_step(const OutputStep& s, std::vector<double>&) {
 }
 
 coupling::VtkGrid FrameOutput::grid(const fdem::Engine& e, const mesh::Mesh& m) const {
-  coupling::VtkGrid g = coupling::fdem_grid(e, m, fields_.empty() ? nullptr : &fields_.back());
+  coupling::VtkGrid g = coupling::fdem_grid(e, m, implicit_);
   if (!bolts_ || bolts_->specs.empty()) return g;
   std::vector<double> stress(e.n_triangles(), std::nan(""));
   for (std::size_t b = 0; b < bolts_->specs.size(); ++b) {

@@ -19,11 +19,13 @@ namespace rockfdem::workflows {
 
 class FrameOutput : public OutputStepObserver {
  public:
-  /// Frames in `dir`, of the engine plus the implicit part of the
-  /// displacement (`fields`' last) and, with bolts, their axial stress and
-  /// profiles (`bolts`, `bolt_results`: null without bolts); all outlive it.
-  FrameOutput(std::string dir, const std::vector<insitu::InsituField>& fields,
-              const fdem::BoltPlan* bolts, BoltResults* bolt_results);
+  /// Frames in `dir`, of the engine plus, with bolts, their axial stress
+  /// and profiles (`bolts`, `bolt_results`: null without bolts); both
+  /// outlive it.
+  FrameOutput(std::string dir, const fdem::BoltPlan* bolts, BoltResults* bolt_results);
+  /// The implicit part of the displacement the frames add (the hand-off
+  /// field); it outlives the frames.
+  void set_implicit(const insitu::InsituField& handoff) { implicit_ = &handoff; }
   /// fdem_NNNN.vtu (and bolts_NNNN.vtp), listed in the .pvd files.
   void at_output_step(const OutputStep& step, std::vector<double>& row) override;
   /// The frames written, for a checkpoint.
@@ -37,7 +39,7 @@ class FrameOutput : public OutputStepObserver {
   /// stress along the axis per bolt triangle, NaN elsewhere).
   coupling::VtkGrid grid(const fdem::Engine& e, const mesh::Mesh& m) const;
   std::string dir_;
-  const std::vector<insitu::InsituField>& fields_;
+  const insitu::InsituField* implicit_ = nullptr;
   const fdem::BoltPlan* bolts_;
   BoltResults* bolt_results_;
   coupling::PvdCollection pvd_;

@@ -83,7 +83,8 @@ RunOutputs::RunOutputs(const Scene& scene, const RunContext& ctx, RunRecord& sum
 
 void RunOutputs::record_insitu(const mesh::Mesh& m,
                                const std::vector<insitu::InsituField>& fields) {
-  fields_ = fields;
+  fields_ = &fields;
+  if (frames_) frames_->set_implicit(fields.back());
   summary_.record_insitu(fields);
   if (vtk_)
     coupling::write_vtu(coupling::insitu_grid(m, fields.back()),
@@ -126,7 +127,8 @@ void RunOutputs::begin(const mesh::Mesh& m, const KeyPoints& key_points,
     if (!lining_->has_ring()) lining_.reset();
     if (lining_) lining_->set_installed(lining_installed_);
   }
-  frames_ = std::make_unique<FrameOutput>(ctx_.output_dir, fields_, bolts_, bolt_results_.get());
+  frames_ = std::make_unique<FrameOutput>(ctx_.output_dir, bolts_, bolt_results_.get());
+  if (fields_) frames_->set_implicit(fields_->back());
   history_ = std::make_unique<History>(output_path(ctx_.output_dir, "history.csv"),
                                        history_columns(key_points.monitors()));
 }
@@ -327,7 +329,7 @@ void RunOutputs::record_ground_reaction(const fdem::Engine& e, const mesh::Mesh&
   const int vault_vertex = e.node_vertex()[key_points_->find(KeyRole::kVault).node];
   std::vector<GroundReactionPoint>& grc = summary_.ground_reaction_curve;
   grc.clear();
-  for (const insitu::InsituField& f : curve_fields_.empty() ? fields_ : curve_fields_) {
+  for (const insitu::InsituField& f : curve_fields_.empty() ? *fields_ : curve_fields_) {
     grc.push_back({f.alpha,
                    -mm(f.uy[vault_vertex]),
                    "implicit stage, alpha = " + detail_number(f.alpha),

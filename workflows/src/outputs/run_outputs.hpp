@@ -34,7 +34,9 @@ namespace rockfdem::workflows {
 class RunOutputs : public StepOutputs {
  public:
   RunOutputs(const Scene& scene, const RunContext& ctx, RunRecord& summary);
-  /// summary.json's insitu keys and the implicit part of the ground reaction curve.
+  /// summary.json's insitu keys and the implicit part of the ground
+  /// reaction curve. `fields` are the caller's, kept until the outputs
+  /// finish (a copy would hold every alpha's field twice through the run).
   void record_insitu(const mesh::Mesh& m, const std::vector<insitu::InsituField>& fields);
   /// insitu.install_at_face_distance: where it put the support, and the
   /// implicit fields down to alpha = 0 it was read from, which the ground
@@ -143,8 +145,8 @@ class RunOutputs : public StepOutputs {
   std::vector<std::uint8_t> is_cable_;        ///< per bolt segment
   std::optional<RingSections> sections_;      ///< materials.lining's (and .invert's) sections
   double invert_top_;  ///< the ring's floor part lies below [m]; -infinity: no part of its own
-  std::vector<insitu::InsituField> fields_;
-  std::optional<FaceDistanceFigures> face_;        ///< insitu.install_at_face_distance's
+  const std::vector<insitu::InsituField>* fields_ = nullptr;  ///< record_insitu's
+  std::optional<FaceDistanceFigures> face_;                   ///< insitu.install_at_face_distance's
   std::vector<insitu::InsituField> curve_fields_;  ///< with face_: the curve to alpha = 0
   std::unique_ptr<History> history_;
   std::unique_ptr<Instruments> instruments_;

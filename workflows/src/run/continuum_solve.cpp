@@ -1,5 +1,6 @@
 #include "run/continuum_solve.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 
@@ -64,6 +65,7 @@ insitu::InsituField field_of(const insitu::PlasticField& p) {
 void solve_elastic(const Scene& scene, const mesh::Mesh& m, ContinuumStates& c) {
   insitu::InsituSpec spec = insitu_spec(scene);
   spec.alphas = c.alphas;
+  spec.keep_fields = {scene.insitu.alpha.back(), c.alphas.back()};  // the hand-off's, the end's
   if (c.lining_alpha > 0 && !scene.insitu.lining_active) {
     // In the next stage, on the ground as this alpha left it (the engine's
     // lining stage installs on the state it finds).
@@ -132,6 +134,11 @@ void add_ground_reaction(const Scene& scene, const RunContext& ctx, const mesh::
   }
 }
 
+std::string skip_text(const Scene& scene, const std::runtime_error& err) {
+  return std::string("continuum comparison (insitu.continuum = ") + scene.insitu.continuum +
+         "): " + err.what();
+}
+
 }  // namespace
 
 ContinuumStates solve_continuum_counterpart(const Scene& scene, const mesh::Mesh& m) {
@@ -183,32 +190,64 @@ PostPeakCounterpart solve_post_peak_counterpart(const Scene& scene, const mesh::
   return out;
 }
 
-void compare_with_continuum_counterpart(const Scene& scene, const RunContext& ctx,
-                                        const mesh::Mesh& m, const fdem::Engine& e,
-                                        const insitu::InsituField& fdem_handoff,
-                                        const std::vector<Monitor>& monitors, RunRecord& summary) {
+namespace {
+
+bool removes_core(const Scene& scene) {
+  return std::any_of(scene.stages.begin(), scene.stages.end(),
+                     [](const StageSpec& st) { return st.kind == "remove_core"; });
+}
+
+// The open excavation as a continuum: the scenes without a ring compare
+// their relaxed state with it.
+insitu::InsituField solve_open_hole(const Scene& scene, const RunContext& ctx,
+                                    const mesh::Mesh& m) {
+  insitu::InsituSpec open = insitu_spec(scene);
+  open.alphas = {0.0};
+  open.lining.active = false;
+  return keeping_threads(ctx, [&] { return insitu::solve_insitu(m, open).back(); });
+}
+
+}  // namespace
+
+ContinuumReferences solve_continuum_references(const Scene& scene, const RunContext& ctx,
+                                               const mesh::Mesh& m) {
+  ContinuumReferences r;
+  if (!removes_core(scene)) return r;
+  if (!scene.lining_ring) r.open_hole = solve_open_hole(scene, ctx, m);
   // A counterpart that cannot be solved leaves the run's own results standing.
-  const auto skip = [&](const std::runtime_error& err) {
-    summary.skipped.push_back(std::string("continuum comparison (insitu.continuum = ") +
-                              scene.insitu.continuum + "): " + err.what());
-  };
   try {
-    const ContinuumStates c =
-        keeping_threads(ctx, [&] { return solve_continuum_counterpart(scene, m); });
-    summary.continuum_comparison = compare_with_counterpart(scene, m, e, fdem_handoff, c, monitors,
-                                                            ctx.output_dir, summary, ctx.quiet);
-    if (c.model == "mohr_coulomb") add_ground_reaction(scene, ctx, m, e, monitors, summary);
+    r.counterpart = keeping_threads(ctx, [&] { return solve_continuum_counterpart(scene, m); });
     if (scene.insitu.continuum_post_peak) {
       const auto start = std::chrono::steady_clock::now();
-      summary.continuum_post_peak =
-          keeping_threads(ctx, [&] { return solve_post_peak_counterpart(scene, m); });
-      summary.continuum_post_peak->seconds =
+      r.post_peak = keeping_threads(ctx, [&] { return solve_post_peak_counterpart(scene, m); });
+      r.post_peak->seconds =
           std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     }
   } catch (const InputError& err) {
-    skip(err);
+    r.skipped.push_back(skip_text(scene, err));
   } catch (const NumericalError& err) {
-    skip(err);
+    r.skipped.push_back(skip_text(scene, err));
+  }
+  return r;
+}
+
+void compare_with_continuum_counterpart(const Scene& scene, const RunContext& ctx,
+                                        const mesh::Mesh& m, const fdem::Engine& e,
+                                        const insitu::InsituField& fdem_handoff,
+                                        const ContinuumReferences& solved,
+                                        const std::vector<Monitor>& monitors, RunRecord& summary) {
+  for (const std::string& s : solved.skipped) summary.skipped.push_back(s);
+  if (!solved.counterpart) return;
+  const ContinuumStates& c = *solved.counterpart;
+  try {
+    summary.continuum_comparison = compare_with_counterpart(scene, m, e, fdem_handoff, c, monitors,
+                                                            ctx.output_dir, summary, ctx.quiet);
+    if (c.model == "mohr_coulomb") add_ground_reaction(scene, ctx, m, e, monitors, summary);
+    summary.continuum_post_peak = solved.post_peak;
+  } catch (const InputError& err) {
+    summary.skipped.push_back(skip_text(scene, err));
+  } catch (const NumericalError& err) {
+    summary.skipped.push_back(skip_text(scene, err));
   }
 }
 

@@ -1,9 +1,14 @@
 // The continuum counterpart's solves: the scene's construction sequence
 // solved by deal.II, elastic or Mohr-Coulomb (insitu.continuum), and with
-// the post-peak strength; the run calls them once its stages are done and
-// the outputs compare and write (outputs/continuum_counterpart.hpp).
+// the post-peak strength. The run solves them before it builds the engine
+// and compares once its stages are done (outputs/continuum_counterpart.hpp):
+// the solves' matrices and preconditioners then reuse the memory the
+// engine takes later, and the run's peak is the larger of the two, not
+// their sum.
 #pragma once
 
+#include <optional>
+#include <string>
 #include <vector>
 
 #include "outputs/continuum_counterpart.hpp"
@@ -28,13 +33,29 @@ ContinuumStates solve_continuum_counterpart(const Scene& scene, const mesh::Mesh
 /// of a 3 m tunnel, over 10 min at 0.15 m).
 PostPeakCounterpart solve_post_peak_counterpart(const Scene& scene, const mesh::Mesh& m);
 
-/// The counterpart solved and compared (compare_with_counterpart) for a
+/// The continuum solves a tunnel run compares its end state with; a member
+/// left empty was not asked for or could not be solved.
+struct ContinuumReferences {
+  std::optional<insitu::InsituField> open_hole;  ///< alpha = 0, no lining (scenes without a ring)
+  std::optional<ContinuumStates> counterpart;
+  std::optional<PostPeakCounterpart> post_peak;
+  std::vector<std::string> skipped;  ///< why a solve failed, for summary "skipped"
+};
+
+/// The solves compare_with_continuum_counterpart and the open-hole
+/// comparison need, for a scene whose stages remove the core (none
+/// otherwise: nothing would be compared). `scene` has the alphas solved.
+ContinuumReferences solve_continuum_references(const Scene& scene, const RunContext& ctx,
+                                               const mesh::Mesh& m);
+
+/// The counterpart `solved` compared (compare_with_counterpart) for a
 /// finished tunnel run, into summary
 /// "continuum_comparison"; a counterpart that cannot be solved (e.g. the
 /// Mohr-Coulomb ground collapses) is noted in "skipped" and the run goes on.
 void compare_with_continuum_counterpart(const Scene& scene, const RunContext& ctx,
                                         const mesh::Mesh& m, const fdem::Engine& e,
                                         const insitu::InsituField& fdem_handoff,
+                                        const ContinuumReferences& solved,
                                         const std::vector<Monitor>& monitors, RunRecord& summary);
 
 }  // namespace rockfdem::workflows

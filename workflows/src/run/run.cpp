@@ -2,9 +2,12 @@
 //
 //   1. mesh (gmsh)
 //   2. in-situ and core softening, implicit (deal.II), one solve per alpha
-//   3. hand-off: the last alpha's field becomes the engine's initial state
+//   3. the continuum solves the end state is compared with (before the
+//      engine exists, so that their memory and the engine's are not held
+//      at once: the run's peak is the larger of the two)
+//   4. hand-off: the last alpha's field becomes the engine's initial state
 //      (the core keeps alpha_h E, so a later factor alpha is alpha / alpha_h)
-//   4. the scene's explicit stages in order (soften, lining, remove_core,
+//   5. the scene's explicit stages in order (soften, lining, remove_core,
 //      equilibrium), each to its own stop criterion
 //
 // Nothing is written until the engine has accepted the scene (engine.dt
@@ -118,6 +121,7 @@ int Run::run() {
   solve_insitu();
   try {
     if (scene_.stages.empty()) return write_implicit_results_only();
+    solve_references();
     build_engine();
     place_instruments();
     write_first_outputs();
@@ -256,25 +260,30 @@ void Run::run_stages() {
   }
 }
 
-// With the core removed: the continuum reference of the relaxed state, the
-// open excavation.
-void Run::compare_with_references() {
-  if (stages_->core_present()) return;
-  insitu::InsituSpec open = insitu_spec(scene_);
-  open.alphas = {0.0};
-  open.lining.active = false;
-  if (!scene_.lining_ring) {
-    const insitu::InsituField reference =
-        keeping_threads(ctx_, [&] { return insitu::solve_insitu(mesh_, open).back(); });
-    summary_.comparison = compare_with_continuum(
-        scene_, mesh_, engine(), reference, output_path(ctx_.output_dir, "fdem_vs_continuum.csv"));
-  }
-  // The counterpart follows the sequence solved: the face distance moved
-  // the hand-off, and the support with it.
+// The sequence the counterpart solves: the face distance moved the
+// hand-off, and the support with it.
+Scene Run::solved_sequence() const {
   Scene solved = scene_;
   if (scene_.insitu.install_at_face_distance) solved.insitu.alpha = handoff_figures_.alphas;
-  compare_with_continuum_counterpart(solved, ctx_, mesh_, engine(), handoff(),
-                                     key_points_.monitors(), summary_);
+  return solved;
+}
+
+void Run::solve_references() {
+  references_ = solve_continuum_references(solved_sequence(), ctx_, mesh_);
+  timer_.stamp("continuum counterpart");
+  stop_if_interrupted("the continuum counterpart");
+}
+
+// With the core removed: the relaxed state against the continuum's open
+// excavation and the counterpart solved before the engine was built.
+void Run::compare_with_references() {
+  if (stages_->core_present()) return;
+  if (references_.open_hole)
+    summary_.comparison =
+        compare_with_continuum(scene_, mesh_, engine(), *references_.open_hole,
+                               output_path(ctx_.output_dir, "fdem_vs_continuum.csv"));
+  compare_with_continuum_counterpart(solved_sequence(), ctx_, mesh_, engine(), handoff(),
+                                     references_, key_points_.monitors(), summary_);
   timer_.stamp("continuum counterpart");
 }
 

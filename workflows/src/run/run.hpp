@@ -15,6 +15,7 @@
 #include "rockfdem/insitu/insitu.hpp"
 #include "rockfdem/mesh/mesh.hpp"
 #include "rockfdem/workflows/scene.hpp"
+#include "run/continuum_solve.hpp"
 #include "run/stage_runner.hpp"
 #include "run/staged_run.hpp"
 
@@ -34,6 +35,7 @@ class Run : StagedRun<RunOutputs> {
   void install_at_face_distance();
   void choose_handoff_field();
   int write_implicit_results_only();
+  void solve_references();
   void build_engine();
   void place_instruments();
   void write_first_outputs();
@@ -46,6 +48,7 @@ class Run : StagedRun<RunOutputs> {
 
   // What the phases share.
   const insitu::InsituField& handoff() const { return fields_.back(); }
+  Scene solved_sequence() const;
   void stop_if_interrupted(const char* after);
   /// The bolts and the hand-off's ratio, beyond the stages' and outputs'.
   void add_run_state(nlohmann::json& run) const override;
@@ -58,6 +61,7 @@ class Run : StagedRun<RunOutputs> {
 
   std::vector<insitu::InsituField> fields_;  ///< up to the one handed over
   HandoffFigures handoff_figures_;           ///< the hand-off rule over all solved fields
+  ContinuumReferences references_;           ///< what the end state is compared with
   SupportMaterials support_;
   fdem::DampingSettings stage_damping_;  ///< the stages' (after the hand-off step)
   fdem::BoltPlan bolts_;                 ///< marks bolt triangles and allows fracture there

@@ -138,6 +138,11 @@ struct InsituSpec {
   /// Core softening factors, strictly decreasing, each in [0, 1]. alpha
   /// scales the core's whole stress (reference section 5); 0 removes it.
   std::vector<double> alphas{1.0};
+  /// The alphas whose fields keep their arrays (stress, active, ux, uy);
+  /// the others come back with their solver report only, so that a
+  /// caller that needs two fields of a long sequence does not hold them
+  /// all. Empty: every alpha's.
+  std::vector<double> keep_fields;
   SolverSpec solver;
 };
 
