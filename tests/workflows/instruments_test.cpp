@@ -6,6 +6,7 @@
 // fdem/ only (no deal.II).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <map>
 #include <string>
@@ -92,6 +93,32 @@ void shift_block(fdem::Engine& e, const mesh::Mesh& m, In in, double sx, double 
   }
 }
 
+// The blocks below pushed and one step taken (cracks along their edges
+// broken), with the key points' rays.
+struct BrokenBlocks {
+  mesh::MeshSpec spec = circular(3);
+  mesh::Mesh m = mesh::build_mesh(spec);
+  fdem::Engine e = weak_engine(m);
+  std::vector<Ray> rays;
+  std::map<std::string, int> index;
+  explicit BrokenBlocks(bool off_ray_block) {
+    const double d = 0.01;
+    shift_block(
+        e, m, [](double x, double y) { return x > 0 && x < 1 && y > 3 && y < 4.5; }, d, 0);
+    shift_block(
+        e, m, [](double x, double y) { return y > 0 && y < 1 && x > 3 && x < 5.5; }, 0, d);
+    // Farther up than the crown's block, but 1.8 m off its ray.
+    if (off_ray_block)
+      shift_block(
+          e, m, [](double x, double y) { return x > 1.8 && x < 2.6 && y > 3.8 && y < 5.2; }, d, 0);
+    e.step();
+    for (const Monitor& k : tunnel_monitors(spec, m, e)) {
+      index[k.name] = int(rays.size());
+      rays.push_back({k.x, k.y, -k.inward_x, -k.inward_y});
+    }
+  }
+};
+
 // Above the crown, a block right of the vertical ray x = 0 is pushed 10 mm
 // sideways up to 1.5 m above the opening: the cracks along the ray and
 // across its top break out to 1.5 m. Right of the right wall, a block up to
@@ -100,25 +127,13 @@ void shift_block(fdem::Engine& e, const mesh::Mesh& m, In in, double sx, double 
 // the third block's 2.2 m), the right wall's to 2.5 m, the other key
 // points' none.
 TEST(BrokenDepth, each_key_points_ray_reaches_the_radius_broken_along_it) {
-  const mesh::MeshSpec s = circular(3);
-  const mesh::Mesh m = mesh::build_mesh(s);
-  fdem::Engine e = weak_engine(m);
-  const double d = 0.01;
-  shift_block(
-      e, m, [](double x, double y) { return x > 0 && x < 1 && y > 3 && y < 4.5; }, d, 0);
-  shift_block(
-      e, m, [](double x, double y) { return y > 0 && y < 1 && x > 3 && x < 5.5; }, 0, d);
-  // Farther up than the crown's block, but 1.8 m off its ray.
-  shift_block(
-      e, m, [](double x, double y) { return x > 1.8 && x < 2.6 && y > 3.8 && y < 5.2; }, d, 0);
-  e.step();
+  BrokenBlocks b(true);
+  const mesh::MeshSpec& s = b.spec;
+  const mesh::Mesh& m = b.m;
+  fdem::Engine& e = b.e;
+  const std::vector<Ray>& rays = b.rays;
+  const std::map<std::string, int>& index = b.index;
   ASSERT_GT(e.broken_counts().total(), 20);
-  std::vector<Ray> rays;
-  std::map<std::string, int> index;
-  for (const Monitor& k : tunnel_monitors(s, m, e)) {
-    index[k.name] = int(rays.size());
-    rays.push_back({k.x, k.y, -k.inward_x, -k.inward_y});
-  }
   // Resolved to one element: the farthest element within half an element
   // of the ray has its midpoint up to an element short of the block's edge.
   const double h = s.size.size_near;
@@ -133,6 +148,37 @@ TEST(BrokenDepth, each_key_points_ray_reaches_the_radius_broken_along_it) {
   // Over the whole boundary the third block's far corner is the deepest.
   const BrokenZone z = broken_zone(e, m, h, {});
   EXPECT_NEAR(z.depth, std::hypot(2.6, 5.2) - 3, h);
+}
+
+// Grouting re-joins the broken cracks of the right wall's block: the
+// broken depth along its ray drops to 0 while the depth of the zone broken
+// at some time, grouted since, stays at the block's 2.5 m; elsewhere
+// (crown) the two agree.
+TEST(BrokenDepth, grouted_cracks_count_in_the_zone_broken_at_some_time) {
+  BrokenBlocks b(false);
+  const mesh::Mesh& m = b.m;
+  fdem::Engine& e = b.e;
+  std::vector<char> grouted(e.n_cracks(), 0);
+  const std::vector<int>& vertex = e.node_vertex();
+  for (std::size_t c = 0; c < e.n_cracks(); ++c) {
+    const auto n = e.crack_nodes(c);
+    const bool right = m.x[vertex[n[0]]] > 2.9 && m.y[vertex[n[0]]] < 1.5;
+    if (right && e.crack_state(c) == fdem::CrackState::kBroken) {
+      e.rejoin_crack(c, 0);
+      grouted[c] = 1;
+    }
+  }
+  ASSERT_GT(std::count(grouted.begin(), grouted.end(), 1), 10);
+  const std::vector<Ray>& rays = b.rays;
+  const std::map<std::string, int>& index = b.index;
+  const double h = b.spec.size.size_near;
+  const std::vector<double> now = broken_depth_along_rays(e, m, rays, h / 2, {});
+  const std::vector<double> ever = broken_depth_along_rays(e, m, rays, h / 2, {}, grouted);
+  EXPECT_EQ(now[index.at("right_wall")], 0.0);
+  EXPECT_NEAR(ever[index.at("right_wall")], 2.5, h);
+  EXPECT_NEAR(now[index.at("vault")], 1.5, h);
+  EXPECT_EQ(ever[index.at("vault")], now[index.at("vault")]);
+  EXPECT_EQ(ever[index.at("invert")], 0.0);
 }
 
 }  // namespace

@@ -41,9 +41,11 @@ std::vector<Segment> excavation_boundary(const mesh::Mesh& m) {
 
 // The broken crack elements between two rock triangles of the fracture
 // zone, no bolt on either side (bolts carry crack elements of their own,
-// beyond the zone too), as segments of the reference configuration.
+// beyond the zone too), as segments of the reference configuration; with
+// `grouted` (per crack element, or empty) also those flagged there.
 std::vector<Segment> broken_rock_cracks(const fdem::Engine& e, const mesh::Mesh& m,
-                                        const std::vector<char>& bolt_triangle) {
+                                        const std::vector<char>& bolt_triangle,
+                                        const std::vector<char>& grouted = {}) {
   const auto in_zone = [&](int tri) {
     return m.zone[tri] == mesh::kRock && m.fracture[tri] &&
            (bolt_triangle.empty() || !bolt_triangle[tri]);
@@ -51,7 +53,8 @@ std::vector<Segment> broken_rock_cracks(const fdem::Engine& e, const mesh::Mesh&
   const std::vector<int>& vertex = e.node_vertex();
   std::vector<Segment> out;
   for (std::size_t c = 0; c < e.n_cracks(); ++c) {
-    if (e.crack_state(c) != fdem::CrackState::kBroken) continue;
+    const bool was_grouted = c < grouted.size() && grouted[c];
+    if (!was_grouted && e.crack_state(c) != fdem::CrackState::kBroken) continue;
     const auto t = e.crack_triangles(c);
     if (!in_zone(t[0]) || !in_zone(t[1])) continue;
     const auto nodes = e.crack_nodes(c);
@@ -151,9 +154,10 @@ std::vector<char> bolt_triangles(const fdem::BoltPlan* bolts, std::size_t n_tria
 
 std::vector<double> broken_depth_along_rays(const fdem::Engine& e, const mesh::Mesh& m,
                                             const std::vector<Ray>& rays, double half_width,
-                                            const std::vector<char>& bolt_triangle) {
+                                            const std::vector<char>& bolt_triangle,
+                                            const std::vector<char>& grouted) {
   std::vector<double> depth(rays.size(), 0.0);
-  for (const Segment& s : broken_rock_cracks(e, m, bolt_triangle))
+  for (const Segment& s : broken_rock_cracks(e, m, bolt_triangle, grouted))
     for (std::size_t i = 0; i < rays.size(); ++i)
       if (distance_to_ray(s, rays[i]) <= half_width) {
         const double t = ((s[0] + s[2]) / 2 - rays[i].x) * rays[i].dx +

@@ -76,9 +76,12 @@ struct Ray {
 /// crack elements broken_zone counts (rock on both sides, fracture zone, no
 /// bolt) that the ray crosses or passes within `half_width` of, the largest
 /// distance along the ray to an element's midpoint, (c - o) . d; 0 when the
-/// ray meets none.
+/// ray meets none. With `grouted` (1 per crack element re-joined by a
+/// grout stage; empty: none) those count too, broken or not now: the
+/// depth of the zone that has broken at some time, grouted since.
 std::vector<double> broken_depth_along_rays(const fdem::Engine& e, const mesh::Mesh& m,
                                             const std::vector<Ray>& rays, double half_width,
-                                            const std::vector<char>& bolt_triangle);
+                                            const std::vector<char>& bolt_triangle,
+                                            const std::vector<char>& grouted = {});
 
 }  // namespace rockfdem::workflows

@@ -165,21 +165,45 @@ void Instruments::finish(RunRecord& summary, const fdem::Engine& e, const mesh::
   BrokenZoneRecord& zone =
       summary.broken_zone ? *summary.broken_zone : summary.broken_zone.emplace();
   const std::vector<double> depth = broken_depth_along_rays(e, m, rays_, half_width_, bolted_);
-  for (std::size_t i = 0; i < rays_.size(); ++i)
-    zone.rays[ray_names_[i]] = {depth[i], {rays_[i].x, rays_[i].y}, {rays_[i].dx, rays_[i].dy}};
+  std::vector<double> damaged;
+  if (!grouted_.empty())
+    damaged = broken_depth_along_rays(e, m, rays_, half_width_, bolted_, grouted_);
+  for (std::size_t i = 0; i < rays_.size(); ++i) {
+    RayFigures& r = zone.rays[ray_names_[i]];
+    r = {depth[i], std::nullopt, {rays_[i].x, rays_[i].y}, {rays_[i].dx, rays_[i].dy}};
+    if (!damaged.empty()) r.damaged_depth_m = damaged[i];
+  }
   zone.ray_half_width_m = half_width_;
 }
 
+void Instruments::cracks_grouted(const std::vector<StageChanges::Grouted>& grouted,
+                                 std::size_t n_cracks) {
+  grouted_.resize(n_cracks, 0);
+  for (const StageChanges::Grouted& g : grouted) grouted_.at(g.crack) = 1;
+}
+
 nlohmann::json Instruments::state() const {
+  std::vector<std::size_t> grouted;
+  for (std::size_t c = 0; c < grouted_.size(); ++c)
+    if (grouted_[c]) grouted.push_back(c);
   return {{"support_installed", installed_},
           {"support_u", support_u_},
-          {"support_axial", support_axial_}};
+          {"support_axial", support_axial_},
+          {"grouted_cracks", grouted},
+          {"cracks", grouted_.size()}};
 }
 
 void Instruments::restore(const nlohmann::json& s) {
   installed_ = s.value("support_installed", false);
   support_u_ = s.value("support_u", std::vector<double>{});
   support_axial_ = s.value("support_axial", std::vector<double>{});
+  grouted_.assign(s.value("cracks", std::size_t{0}), 0);
+  for (std::size_t c : s.value("grouted_cracks", std::vector<std::size_t>{})) {
+    if (c >= grouted_.size())
+      throw InputError("corrupt run state: the instruments' grouted crack " + std::to_string(c) +
+                       " is beyond the " + std::to_string(grouted_.size()) + " crack elements");
+    grouted_[c] = 1;
+  }
   // Only a relative extensometer reads it (a state of an earlier version has none).
   std::size_t points = 0;
   bool relative = false;

@@ -54,7 +54,10 @@ class Instruments : public OutputStepObserver {
   /// summary.json's "extensometers" and "broken_zone"."along_rays".
   void finish(RunRecord& summary, const fdem::Engine& e, const mesh::Mesh& m,
               const NodeDisplacement& u) const;
-  /// The support reference, for a restart.
+  /// A grout stage re-joined these crack elements: from now on the rays
+  /// also read the depth of the zone broken at some time, grouted since.
+  void cracks_grouted(const std::vector<StageChanges::Grouted>& grouted, std::size_t n_cracks);
+  /// The support reference and the grouted cracks, for a restart.
   nlohmann::json state() const;
   void restore(const nlohmann::json& state);
 
@@ -77,6 +80,7 @@ class Instruments : public OutputStepObserver {
   std::vector<Ray> rays_;
   double half_width_ = 0;              ///< half the fracture zone's element size [m]
   std::vector<char> bolted_;           ///< bolt triangles, left out of the broken zone
+  std::vector<char> grouted_;          ///< per crack element, once a grout stage fired
   bool installed_ = false;             ///< whether the first support stage has begun
   std::vector<double> support_u_;      ///< (ux, uy) per monitor at the support
   std::vector<double> support_axial_;  ///< axial() per extensometer point at the support

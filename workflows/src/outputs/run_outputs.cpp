@@ -12,6 +12,7 @@
 #include "outputs/engine_report.hpp"
 #include "outputs/ground_reaction.hpp"
 #include "outputs/joint_results.hpp"
+#include "outputs/loading_frame.hpp"
 #include "outputs/rock_plausibility.hpp"
 #include "outputs/run_report.hpp"
 #include "outputs/support_diagrams.hpp"
@@ -49,6 +50,7 @@ void RunOutputs::stage_done(const fdem::Engine& e, const mesh::Mesh& m, const St
     stage_joint_profiles_.push_back(name);
   }
   if (!done.rejoined) return;  // not a grout stage that fired
+  if (instruments_) instruments_->cracks_grouted(done.grouted, e.n_cracks());
   std::string csv = "crack,x,y\n";
   for (const StageChanges::Grouted& g : done.grouted)
     csv += std::to_string(g.crack) + ',' + std::to_string(g.x) + ',' + std::to_string(g.y) + '\n';
@@ -181,8 +183,9 @@ MonitorRecord RunOutputs::monitor_figures(const fdem::Engine& e) const {
   MonitorRecord r;
   for (const Monitor& mon : key_points_->monitors()) {
     const auto k = key_points_->figures(e, mon);
-    r.key_points[mon.name] = {k[0],       k[1],         k[2],         k[3],         mon.node_x,
-                              mon.node_y, mon.inward_x, mon.inward_y, std::nullopt, std::nullopt};
+    r.key_points[mon.name] = {k[0],         k[1],         k[2],         k[3],
+                              mon.node_x,   mon.node_y,   mon.inward_x, mon.inward_y,
+                              std::nullopt, std::nullopt, std::nullopt};
   }
   // Per point (as field convergence points are read) and, apart, the
   // change of length of two chords between points.
@@ -279,6 +282,7 @@ void RunOutputs::finish(const fdem::Engine& e, const mesh::Mesh& m, PhaseTimer& 
   summary_.monitors = monitor_figures(e);
   add_since_support(summary_.monitors);
   add_at_handoff(summary_.monitors);
+  add_from_unloaded(summary_.monitors);
   const RigidFit fit = key_points_->boundary_fit(e);
   summary_.outer_boundary = OuterBoundaryFigures{fit.rotation * 180 / M_PI,
                                                  max_rotation_deg_,
@@ -484,6 +488,16 @@ void RunOutputs::add_at_handoff(MonitorRecord& monitors) const {
     const auto k = monitors.key_points.find(m.name);
     if (k != monitors.key_points.end() && !monitors.points.count(m.name))
       k->second.radial_at_handoff_mm = history_->column(m.name + "_radial_mm").front();
+  }
+}
+
+void RunOutputs::add_from_unloaded(MonitorRecord& monitors) const {
+  const std::optional<LoadingStrain> strain = loading_strain(scene_);
+  if (!strain) return;
+  for (auto& [name, k] : monitors.key_points) {
+    if (monitors.points.count(name)) continue;
+    const std::array<double, 2> load = loading_displacement(*strain, k.x, k.y);
+    k.from_unloaded_mm = std::array<double, 2>{k.ux_mm + mm(load[0]), k.uy_mm + mm(load[1])};
   }
 }
 

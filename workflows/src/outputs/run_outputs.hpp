@@ -124,6 +124,8 @@ class RunOutputs : public StepOutputs {
   void add_since_support(MonitorRecord& monitors) const;
   /// Adds each key point's `radial_at_handoff_mm` (history's first row).
   void add_at_handoff(MonitorRecord& monitors) const;
+  /// Adds each key point's displacement as read from the unloaded mesh.
+  void add_from_unloaded(MonitorRecord& monitors) const;
   /// report.md from the record as it stands.
   void write_report() const;
   /// summary "resolution" (h / l_ch) and "broken_zone" (depth, clearance to

@@ -182,6 +182,26 @@ void point_row(std::ostream& md, const std::string& name, double total, const Re
 constexpr const char* kKeyPointOrder[] = {"vault",     "left_shoulder", "right_shoulder",
                                           "left_wall", "right_wall",    "invert"};
 
+// The key points as a model loaded from zero stress on a fixed base reads
+// them, for comparison with figures reported that way.
+void from_unloaded(std::ostream& md, const MonitorRecord& mon) {
+  std::ostringstream rows;
+  for (const char* p : kKeyPointOrder) {
+    const auto k = mon.key_points.find(p);
+    if (k == mon.key_points.end() || mon.points.count(p) || !k->second.from_unloaded_mm) continue;
+    const auto [ux, uy] = *k->second.from_unloaded_mm;
+    rows << "| " << p << " | " << fixed(ux, 1) << " | " << fixed(uy, 1) << " | "
+         << fixed(std::hypot(ux, uy), 1) << " |\n";
+  }
+  if (rows.str().empty()) return;
+  md << "\nThe same points as a model loaded from zero stress reads them (its outer boundary "
+        "loaded with the in-situ stresses, its base held, displacement from the unloaded mesh): "
+        "the above plus the intact box's own elastic compression under the in-situ stress. For "
+        "comparison with figures reported that way only; the excavation's effect is the table "
+        "above.\n\n| point | ux [mm] | uy [mm] | magnitude [mm] |\n|---|---|---|---|\n"
+     << rows.str();
+}
+
 void key_points(std::ostream& md, const Scene& s, const MonitorRecord& mon, const ReportExtras& x) {
   const ReferenceSettings& ref = s.references;
   md << "\n## Key points and chords (end of run)\n\nRadial displacement: towards the opening "
@@ -201,10 +221,12 @@ void key_points(std::ostream& md, const Scene& s, const MonitorRecord& mon, cons
     if (k != mon.key_points.end() && !mon.points.count(p))
       point_row(md, p, k->second.radial_mm, x, ref, k->second.radial_at_handoff_mm);
   }
-  if (!mon.chords) return;
-  point_row(md, "wall_chord", mon.chords->wall_chord_convergence_mm, x, ref);
-  point_row(md, "shoulder_chord", mon.chords->shoulder_chord_convergence_mm, x, ref);
-  md << "\nVault settlement (-uy): " << fixed(mon.chords->vault_settlement_mm, 2) << " mm.\n";
+  if (mon.chords) {
+    point_row(md, "wall_chord", mon.chords->wall_chord_convergence_mm, x, ref);
+    point_row(md, "shoulder_chord", mon.chords->shoulder_chord_convergence_mm, x, ref);
+    md << "\nVault settlement (-uy): " << fixed(mon.chords->vault_settlement_mm, 2) << " mm.\n";
+  }
+  from_unloaded(md, mon);
 }
 
 std::string value_text(bool v) { return v ? "yes" : "no"; }
@@ -401,9 +423,14 @@ void broken_zone(std::ostream& md, const fdem::BrokenCounts& b,
              z->clearance_m ? fixed(*z->clearance_m, 2) + " m" : std::string("- (none broken)"),
              z->capped ? "capped: the zone limits the damage" : "not capped");
   if (z->rays.empty()) return;
-  md << "\n| ray from | broken depth [m] |\n|---|---|\n";
-  for (const auto& [name, r] : z->rays)
-    md << "| " << name << " | " << value_text(r.depth_m) << " |\n";
+  const bool grouted = z->rays.begin()->second.damaged_depth_m.has_value();
+  md << "\n| ray from | broken depth [m] |" << (grouted ? " broken or grouted [m] |" : "")
+     << "\n|---|---|" << (grouted ? "---|" : "") << "\n";
+  for (const auto& [name, r] : z->rays) {
+    md << "| " << name << " | " << value_text(r.depth_m) << " |";
+    if (r.damaged_depth_m) md << " " << value_text(*r.damaged_depth_m) << " |";
+    md << "\n";
+  }
   if (z->ray_half_width_m)
     md << "\nRays take broken elements within " << fixed(*z->ray_half_width_m, 3)
        << " m of them.\n";

@@ -181,6 +181,9 @@ struct KeyPointFigures {
   std::optional<double> radial_since_support_mm;
   /// At the hand-off (history's first row): what the implicit stage gave.
   std::optional<double> radial_at_handoff_mm;
+  /// (ux, uy) as a model loaded from zero stress on a fixed base reads it
+  /// (outputs/loading_frame.hpp); none where the loading is not uniform.
+  std::optional<std::array<double, 2>> from_unloaded_mm;
 };
 
 /// A scene's [[monitors]] point ("monitors".NAME) [mm, m].

@@ -222,6 +222,10 @@ nlohmann::json key_point_json(const KeyPointFigures& k) {
     if (k.radial_mm != 0)
       j["explicit_share"] = (k.radial_mm - *k.radial_at_handoff_mm) / k.radial_mm;
   }
+  if (k.from_unloaded_mm) {
+    const auto [ux, uy] = *k.from_unloaded_mm;
+    j["from_unloaded_base_fixed"] = {{"ux_mm", ux}, {"uy_mm", uy}, {"u_mm", std::hypot(ux, uy)}};
+  }
   return j;
 }
 
@@ -398,8 +402,10 @@ nlohmann::json broken_zone_json(const BrokenZoneRecord& z) {
                       {"capped", z.capped}};
   if (!z.ray_half_width_m) return j;
   nlohmann::json rays = nlohmann::json::object();
-  for (const auto& [name, r] : z.rays)
+  for (const auto& [name, r] : z.rays) {
     rays[name] = {{"depth_m", r.depth_m}, {"origin", r.origin}, {"direction", r.direction}};
+    if (r.damaged_depth_m) rays[name]["broken_or_grouted_depth_m"] = *r.damaged_depth_m;
+  }
   j["along_rays"] = rays;
   j["ray_half_width_m"] = *z.ray_half_width_m;
   return j;

@@ -154,6 +154,9 @@ struct RockPlausibilityFigures {
 /// The broken depth along one ray from the opening.
 struct RayFigures {
   double depth_m = 0;
+  /// With a grout stage that re-joined cracks: the depth of the zone broken
+  /// at some time, the grouted cracks counted as well as the broken ones.
+  std::optional<double> damaged_depth_m;
   std::array<double, 2> origin{}, direction{};
 };
 
