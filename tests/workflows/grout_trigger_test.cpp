@@ -13,6 +13,7 @@
 // fired and N then, in summary.json and in report.md's stage table.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <functional>
@@ -72,6 +73,15 @@ long check_moment(const std::string& key, const std::string& value,
     EXPECT_EQ(c.at("broken_at_support").get<long>(), n0);
   }
   EXPECT_TRUE(holds(broken(fired), n0, s)) << key << " at step " << s << ": N = " << broken(fired);
+  // The rays read the zone broken at some time as well as what is broken
+  // now: grouting re-joined cracks, so it reaches at least as deep.
+  double deepest = 0;
+  for (const auto& [ray, r] : fired.summary.at("broken_zone").at("along_rays").items()) {
+    const double ever = r.at("broken_or_grouted_depth_m").get<double>();
+    EXPECT_GE(ever, r.at("depth_m").get<double>()) << ray;
+    deepest = std::max(deepest, ever);
+  }
+  EXPECT_GT(deepest, 0.0) << "the grouted cracks lie along no ray";
   // The moment: step and time at the stage's end (the trigger ends it), the
   // run's step count (hand-off step 1 plus every stage's steps).
   long step = 1;
