@@ -32,16 +32,16 @@ struct MarkValues final : StageValues {
 
 // Records what the model looked like when it started and its label; stops
 // at once. Only after the core's removal, which it checks itself.
-class Mark : public Stage {
+class Mark : public StageWithValues<MarkValues> {
  public:
   const char* description() const override { return "test only"; }
   std::vector<KeySpec> entry_keys() const override {
     return {schema::number("stages[].mark_label", "-", "", 0, false, 100, false,
                            "mark: a number the stage writes to its changes.")};
   }
-  std::shared_ptr<const StageValues> read(const StageEntry& e) const override {
-    auto v = std::make_shared<MarkValues>();
-    if (e.has(".mark_label")) v->label = e.number(".mark_label");
+  MarkValues read_values(const StageEntry& e) const override {
+    MarkValues v;
+    if (e.has(".mark_label")) v.label = e.number(".mark_label");
     return v;
   }
   void check(StageCheck& c) const override {
@@ -51,7 +51,7 @@ class Mark : public Stage {
     ++applied;
     StageChanges done;
     done.other["core_present"] = m.core_present;
-    done.other["label"] = own_values<MarkValues>(spec).label;
+    done.other["label"] = values(spec).label;
     return done;
   }
   bool step(StageDriver&, const StageSpec&, StageChanges& changes) const override {

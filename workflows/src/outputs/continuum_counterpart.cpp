@@ -1,7 +1,6 @@
 #include "outputs/continuum_counterpart.hpp"
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <sstream>
 
@@ -13,7 +12,6 @@
 #include "rockfdem/coupling/insitu_grid.hpp"
 #include "rockfdem/coupling/mesh_grid.hpp"
 #include "rockfdem/coupling/vtk_writer.hpp"
-#include "rockfdem/error.hpp"
 #include "rockfdem/insitu/plastic.hpp"
 #include "rockfdem/mesh/outline.hpp"
 

@@ -120,7 +120,7 @@ int Run::run() {
   stop_if_interrupted("meshing");
   solve_insitu();
   try {
-    if (scene_.stages.empty()) return write_implicit_results_only();
+    if (scene().stages.empty()) return write_implicit_results_only();
     solve_references();
     build_engine();
     place_instruments();
@@ -137,11 +137,12 @@ int Run::run() {
 }
 
 void Run::solve_insitu() {
-  fields_ = keeping_threads(ctx_, [&] { return insitu::solve_insitu(mesh_, insitu_spec(scene_)); });
-  if (scene_.insitu.install_at_face_distance) install_at_face_distance();
-  check_implicit_field(scene_, mesh_, fields_);
+  fields_ =
+      keeping_threads(ctx(), [&] { return insitu::solve_insitu(mesh(), insitu_spec(scene())); });
+  if (scene().insitu.install_at_face_distance) install_at_face_distance();
+  check_implicit_field(scene(), mesh(), fields_);
   choose_handoff_field();
-  timer_.stamp("insitu");
+  timer().stamp("insitu");
   stop_if_interrupted("the implicit stage");
 }
 
@@ -153,26 +154,26 @@ void Run::solve_insitu() {
 // carries load in the implicit stage here), so the fields above are those
 // a list ending at that alpha gives.
 void Run::install_at_face_distance() {
-  insitu::InsituSpec spec = insitu_spec(scene_);
+  insitu::InsituSpec spec = insitu_spec(scene());
   std::vector<insitu::InsituField> curve = fields_;
   if (curve.back().alpha > 0) {
     spec.alphas = {0.0};
-    curve.push_back(keeping_threads(ctx_, [&] { return insitu::solve_insitu(mesh_, spec); })[0]);
+    curve.push_back(keeping_threads(ctx(), [&] { return insitu::solve_insitu(mesh(), spec); })[0]);
   }
-  const FaceDistanceFigures f = face_distance_installation(scene_, mesh_, curve);
+  const FaceDistanceFigures f = face_distance_installation(scene(), mesh(), curve);
   fields_.erase(std::remove_if(fields_.begin(), fields_.end(),
                                [&](const insitu::InsituField& x) { return x.alpha <= f.alpha; }),
                 fields_.end());
   spec.alphas = {f.alpha};
-  fields_.push_back(keeping_threads(ctx_, [&] { return insitu::solve_insitu(mesh_, spec); })[0]);
-  out_.record_face_distance(f, std::move(curve));
+  fields_.push_back(keeping_threads(ctx(), [&] { return insitu::solve_insitu(mesh(), spec); })[0]);
+  outputs().record_face_distance(f, std::move(curve));
 }
 
 // The field handed over (insitu.handoff): the fields after it were solved to
 // find it and are not part of the run.
 void Run::choose_handoff_field() {
-  const HandoffChoice c = choose_handoff(scene_, mesh_, fields_);
-  handoff_figures_.rule = scene_.insitu.handoff_first_crack ? "first_crack" : "last";
+  const HandoffChoice c = choose_handoff(scene(), mesh(), fields_);
+  handoff_figures_.rule = scene().insitu.handoff_first_crack ? "first_crack" : "last";
   for (const insitu::InsituField& f : fields_) handoff_figures_.alphas.push_back(f.alpha);
   handoff_figures_.strength_ratio = c.strength_ratio;
   fields_.erase(fields_.begin() + long(c.index) + 1, fields_.end());
@@ -182,80 +183,79 @@ void Run::choose_handoff_field() {
 // results alone.
 int Run::write_implicit_results_only() {
   write_first_outputs();
-  summary_.skipped.push_back("fdem: the scene's only stage is the implicit in-situ stage");
-  summary_.status = "completed";
-  summary_.set_timings(timer_);
-  summary_.write(output_path(ctx_.output_dir, "summary.json"));
+  record().skipped.push_back("fdem: the scene's only stage is the implicit in-situ stage");
+  write_summary("completed");
   return 0;
 }
 
 void Run::build_engine() {
-  EngineSetup setup = setup_engine(scene_, mesh_, handoff(), ctx_.threads, ctx_.force_dt);
+  EngineSetup setup = setup_engine(scene(), mesh(), handoff(), ctx().threads, ctx().force_dt);
   support_ = setup.support;
   stage_damping_ = setup.stage_damping;
   bolts_ = std::move(setup.bolts);
-  engine_.emplace(std::move(setup.engine));
+  set_engine(std::move(setup.engine));
 }
 
 // Key points, instruments and the outputs observing them before anything
 // is written: a point in no triangle or in the core is refused first, as
 // is a restart's run state that does not fit them.
 void Run::place_instruments() {
-  key_points_ =
-      KeyPoints(tunnel_monitors(scene_.mesh, mesh_, engine()), mesh_, handoff().ux, handoff().uy);
+  key_points_ = KeyPoints(tunnel_monitors(scene().mesh, mesh(), engine()), mesh(), handoff().ux,
+                          handoff().uy);
   const std::vector<Monitor>& monitors = key_points_.monitors();
-  out_.begin(mesh_, key_points_, bolts_,
-             std::make_unique<Instruments>(scene_, mesh_, engine(), monitors, bolts_));
-  if (restart_)
-    start_ratio_ =
-        restore_before_writing(resume_, ctx_.restart, scene_, monitors, out_, engine(), bolts_);
-  timer_.stamp("fdem setup");
+  outputs().begin(mesh(), key_points_, bolts_,
+                  std::make_unique<Instruments>(scene(), mesh(), engine(), monitors, bolts_));
+  if (resumed())
+    start_ratio_ = restore_before_writing(*resumed(), ctx().restart, scene(), monitors, outputs(),
+                                          engine(), bolts_);
+  timer().stamp("fdem setup");
 }
 
 // The scene is accepted: make (or claim) OUTDIR and write what the mesh and
 // the implicit stage give.
 void Run::write_first_outputs() {
-  claim_output_dir(scene_, ctx_, true);
-  mesh::write_msh(mesh_, output_path(ctx_.output_dir, "mesh.msh"));
-  out_.record_insitu(mesh_, fields_);
-  timer_.stamp("output");
+  claim_output_dir(scene(), ctx(), true);
+  mesh::write_msh(mesh(), output_path(ctx().output_dir, "mesh.msh"));
+  outputs().record_insitu(mesh(), fields_);
+  timer().stamp("output");
 }
 
 // The first explicit step, with the hand-off's damping: its unbalanced
 // force ratio is the start's. A restart has it from its checkpoint.
 void Run::take_handoff_step() {
-  if (!restart_) {
-    for (std::size_t t = 0; t < mesh_.n_triangles(); ++t)
+  if (!resumed()) {
+    for (std::size_t t = 0; t < mesh().n_triangles(); ++t)
       if (!handoff().active[t]) engine().set_active(t, false);
-    out_.keep_start(engine());
+    outputs().keep_start(engine());
     reporting_failure([&] { engine().step(); });
     start_ratio_ = engine().unbalanced_force_ratio();
     engine().set_damping(stage_damping_);
   }
-  timer_.stamp("fdem setup");
+  timer().stamp("fdem setup");
 }
 
 void Run::begin_stages() {
-  stages_.emplace(engine(), mesh_, handoff(), scene_, ctx_, out_, key_points_, bolts_, support_);
+  stages_.emplace(engine(), mesh(), handoff(), scene(), ctx(), outputs(), key_points_, bolts_,
+                  support_);
   resume_or_record(*stages_, {"handoff", 0});
 }
 
 void Run::run_stages() {
   try {
-    stages_->run_all(timer_);
+    stages_->run_all(timer());
   } catch (const Interrupted&) {
-    summary_.status = "interrupted";
-    summary_.fdem = stages_only(*stages_);
+    record().status = "interrupted";
+    record().fdem = stages_only(*stages_);
     finish_outputs();
     throw;
   } catch (const NumericalError& e) {
     // The frames and history rows written so far are the last good output.
-    summary_.fdem = stages_only(*stages_);
+    record().fdem = stages_only(*stages_);
     fail(e.what());
   } catch (const InputError& e) {
     const std::string why = stage_input_error(e);
-    summary_.fdem = stages_only(*stages_);
-    out_.report_failure(engine(), timer_, why);
+    record().fdem = stages_only(*stages_);
+    outputs().report_failure(engine(), timer(), why);
     throw InputError(why);
   }
 }
@@ -263,14 +263,14 @@ void Run::run_stages() {
 // The sequence the counterpart solves: the face distance moved the
 // hand-off, and the support with it.
 Scene Run::solved_sequence() const {
-  Scene solved = scene_;
-  if (scene_.insitu.install_at_face_distance) solved.insitu.alpha = handoff_figures_.alphas;
+  Scene solved = scene();
+  if (scene().insitu.install_at_face_distance) solved.insitu.alpha = handoff_figures_.alphas;
   return solved;
 }
 
 void Run::solve_references() {
-  references_ = solve_continuum_references(solved_sequence(), ctx_, mesh_);
-  timer_.stamp("continuum counterpart");
+  references_ = solve_continuum_references(solved_sequence(), ctx(), mesh());
+  timer().stamp("continuum counterpart");
   stop_if_interrupted("the continuum counterpart");
 }
 
@@ -279,44 +279,44 @@ void Run::solve_references() {
 void Run::compare_with_references() {
   if (stages_->core_present()) return;
   if (references_.open_hole)
-    summary_.comparison =
-        compare_with_continuum(scene_, mesh_, engine(), *references_.open_hole,
-                               output_path(ctx_.output_dir, "fdem_vs_continuum.csv"));
-  compare_with_continuum_counterpart(solved_sequence(), ctx_, mesh_, engine(), handoff(),
-                                     references_, key_points_.monitors(), summary_);
-  timer_.stamp("continuum counterpart");
+    record().comparison =
+        compare_with_continuum(scene(), mesh(), engine(), *references_.open_hole,
+                               output_path(ctx().output_dir, "fdem_vs_continuum.csv"));
+  compare_with_continuum_counterpart(solved_sequence(), ctx(), mesh(), engine(), handoff(),
+                                     references_, key_points_.monitors(), record());
+  timer().stamp("continuum counterpart");
 }
 
 // The run's closing checks, then the outputs' last files: the energy
 // warning is the run's judgement, the outputs only write it down.
 void Run::finish_outputs() {
-  stages_->energy_check().warn_if_unbalanced(engine(), ctx_.quiet, summary_);
-  out_.finish(engine(), mesh_, timer_, bolts_);
+  stages_->energy_check().warn_if_unbalanced(engine(), ctx().quiet, record());
+  outputs().finish(engine(), mesh(), timer(), bolts_);
 }
 
 // The verdict of the stages, the run's figures and the last outputs.
 void Run::finish() {
   const RunVerdict verdict = stages_->verdict();
-  summary_.status = verdict.status;
+  record().status = verdict.status;
   if (!verdict.message.empty()) {
-    summary_.status_reason = verdict.message;
-    summary_.warnings.push_back(verdict.status + ": " + verdict.message);
+    record().status_reason = verdict.message;
+    record().warnings.push_back(verdict.status + ": " + verdict.message);
     std::cerr << "warning: " << verdict.status << ": " << verdict.message << '\n';
   }
-  summary_.damping = DampingFigures{stage_damping_.local, stage_damping_.mass_proportional,
-                                    stage_damping_.kinetic, scene_.engine.local_damping >= 0};
-  summary_.fdem = stages_only(*stages_);
-  summary_.fdem->unbalanced_ratio_at_start = start_ratio_;
-  summary_.fdem->unbalanced_ratio_at_end = engine().unbalanced_force_ratio();
-  summary_.fdem->handoff_alpha = handoff().alpha;
+  record().damping = DampingFigures{stage_damping_.local, stage_damping_.mass_proportional,
+                                    stage_damping_.kinetic, scene().engine.local_damping >= 0};
+  record().fdem = stages_only(*stages_);
+  record().fdem->unbalanced_ratio_at_start = start_ratio_;
+  record().fdem->unbalanced_ratio_at_end = engine().unbalanced_force_ratio();
+  record().fdem->handoff_alpha = handoff().alpha;
   handoff_figures_.crack_points_over_strength = engine().crack_prestress_clipped();
-  summary_.fdem->handoff = handoff_figures_;
+  record().fdem->handoff = handoff_figures_;
   finish_outputs();
-  if (!ctx_.quiet)
+  if (!ctx().quiet)
     std::cout << "status: " << verdict.status
               << (verdict.message.empty() ? " (every stage met its criteria)"
                                           : " (" + verdict.message + ")")
-              << (summary_.support ? "; " + summary_.support->line() : "") << '\n';
+              << (record().support ? "; " + record().support->line() : "") << '\n';
 }
 
 // A signal between the implicit phases: nothing to checkpoint yet. The
@@ -324,10 +324,8 @@ void Run::finish() {
 void Run::stop_if_interrupted(const char* after) {
   const int sig = interrupt_requested();
   if (!sig) return;
-  claim_output_dir(scene_, ctx_, false);
-  summary_.status = "interrupted";
-  summary_.set_timings(timer_);
-  summary_.write(output_path(ctx_.output_dir, "summary.json"));
+  claim_output_dir(scene(), ctx(), false);
+  write_summary("interrupted");
   throw Interrupted(sig, "interrupted by " + signal_text(sig) + " after " + after +
                              "; summary.json is written (no explicit step yet, so no checkpoint)");
 }
@@ -338,15 +336,15 @@ void Run::add_run_state(nlohmann::json& run) const {
 }
 
 std::string Run::failure_message(const std::string& what) const {
-  return with_likely_cause(scene_, what);
+  return with_likely_cause(scene(), what);
 }
 
 // An explicit dt above the limit a later stage brings (lining, bolts, grout
 // stiffen the model) is found only there, after outputs exist.
 std::string Run::stage_input_error(const InputError& e) {
-  const bool dt = scene_.engine.dt > 0 && engine().critical_dt() < scene_.engine.dt;
-  if (!dt) return scene_.source + ": " + e.what();
-  return scene_.source + ": key 'engine.dt' = " + detail::number_text(scene_.engine.dt) +
+  const bool dt = scene().engine.dt > 0 && engine().critical_dt() < scene().engine.dt;
+  if (!dt) return scene().source + ": " + e.what();
+  return scene().source + ": key 'engine.dt' = " + detail::number_text(scene().engine.dt) +
          " s: " + e.what() + " (engine.dt = 0 follows the limit through every stage)";
 }
 

@@ -41,8 +41,8 @@ class SpecimenRun : StagedRun<SpecimenOutputs> {
       write_first_outputs();
       begin_stages();
       run_stages();
-      stages_->energy_check().warn_if_unbalanced(engine(), ctx_.quiet, summary_);
-      out_.finish(engine(), timer_);
+      stages_->energy_check().warn_if_unbalanced(engine(), ctx().quiet, record());
+      outputs().finish(engine(), timer());
     } catch (const OutputError& e) {
       output_failed(e);
     }
@@ -53,43 +53,43 @@ class SpecimenRun : StagedRun<SpecimenOutputs> {
   // A restart's engine state and outputs are checked against the scene
   // here, before the output folder is claimed.
   void build_engine() {
-    engine_.emplace(
-        make_engine(specimen_model_input(scene_, mesh_, ctx_.threads), scene_, ctx_.force_dt));
-    if (restart_) {
+    set_engine(
+        make_engine(specimen_model_input(scene(), mesh(), ctx().threads), scene(), ctx().force_dt));
+    if (resumed()) {
       try {
-        std::istringstream state(resume_.engine_state);
+        std::istringstream state(resumed()->engine_state);
         engine().load_state(state);
-        out_.check_fits(resume_.run.at("outputs"));
+        outputs().check_fits(resumed()->run.at("outputs"));
       } catch (const InputError& e) {
-        throw InputError("checkpoint " + ctx_.restart + ": " + e.what());
+        throw InputError("checkpoint " + ctx().restart + ": " + e.what());
       }
-      check_run_state_against_engine(ctx_.restart, resume_.run, scene_, engine().step_count(),
+      check_run_state_against_engine(ctx().restart, resumed()->run, scene(), engine().step_count(),
                                      engine().time());
     }
-    timer_.stamp("fdem setup");
+    timer().stamp("fdem setup");
   }
 
   // Only now, with engine.dt and the checkpoint accepted, is anything written.
   void write_first_outputs() {
-    claim_output_dir(scene_, ctx_, true);
-    mesh::write_msh(mesh_, output_path(ctx_.output_dir, "mesh.msh"));
-    timer_.stamp("output");
+    claim_output_dir(scene(), ctx(), true);
+    mesh::write_msh(mesh(), output_path(ctx().output_dir, "mesh.msh"));
+    timer().stamp("output");
   }
 
   // A fresh run records step 0; a restart takes its checkpoint's rows,
   // frames, peak and stage cursor instead.
   void begin_stages() {
-    stages_.emplace(engine(), mesh_, stress_free_, scene_, ctx_, out_, no_key_points_, no_bolts_,
-                    SupportMaterials{});
-    stages_->model().platens = &out_.load();
-    resume_or_record(*stages_, {scene_.stages.front().kind, 0});
+    stages_.emplace(engine(), mesh(), stress_free_, scene(), ctx(), outputs(), no_key_points_,
+                    no_bolts_, SupportMaterials{});
+    stages_->model().platens = &outputs().load();
+    resume_or_record(*stages_, {scene().stages.front().kind, 0});
   }
 
   void run_stages() {
     try {
-      reporting_failure([&] { stages_->run_all(timer_); });
+      reporting_failure([&] { stages_->run_all(timer()); });
     } catch (const Interrupted& e) {
-      out_.report_interrupted(engine(), timer_, e.what());
+      outputs().report_interrupted(engine(), timer(), e.what());
       throw;
     }
   }

@@ -1,6 +1,7 @@
 #include "run/staged_run.hpp"
 
 #include <sstream>
+#include <stdexcept>
 
 #include "outputs/run_outputs.hpp"
 #include "outputs/specimen_outputs.hpp"
@@ -18,15 +19,28 @@ StagedRun<Outputs>::StagedRun(const Scene& scene, const RunContext& ctx)
       resume_(restart_ ? read_checkpoint(ctx.restart, scene) : Checkpoint{}),
       checkpoint_every_(ctx.checkpoint_every >= 0 ? ctx.checkpoint_every
                                                   : scene.output.checkpoint_every),
-      summary_(scene, ctx.threads),
-      out_(scene, ctx, summary_) {}
+      record_(scene, ctx.threads),
+      out_(scene, ctx, record_) {}
 
 template <class Outputs>
 void StagedRun<Outputs>::make_mesh() {
   mesh::MeshReport report;
   mesh_ = keeping_threads(ctx_, [&] { return mesh::build_mesh(scene_.mesh, &report); });
-  summary_.record_mesh(mesh_, report);
+  record_.record_mesh(mesh_, report);
   timer_.stamp("mesh");
+}
+
+template <class Outputs>
+void StagedRun<Outputs>::set_engine(fdem::Engine&& engine) {
+  if (engine_) throw std::logic_error("the run's engine is given once");
+  engine_.emplace(std::move(engine));
+}
+
+template <class Outputs>
+void StagedRun<Outputs>::write_summary(const std::string& status) {
+  record_.status = status;
+  record_.set_timings(timer_);
+  record_.write(output_path(ctx_.output_dir, "summary.json"));
 }
 
 template <class Outputs>
@@ -38,7 +52,7 @@ void StagedRun<Outputs>::resume_or_record(StageRunner& stages, const StageTag& f
     } catch (const InputError& e) {
       throw InputError(ctx_.restart + ": " + e.what());
     }
-    summary_.restarted_from = CheckpointMark{ctx_.restart, engine().step_count()};
+    record_.restarted_from = CheckpointMark{ctx_.restart, engine().step_count()};
   } else {
     reporting_failure([&] { stages.record_output(first, timer_); });
   }
@@ -71,10 +85,8 @@ void StagedRun<Outputs>::output_failed(const OutputError& e) {
   } catch (const std::exception& first) {
     // The summary alone, small, where the full report did not fit.
     try {
-      summary_.status = "failed";
-      summary_.failure = e.what();
-      summary_.set_timings(timer_);
-      summary_.write(summary);
+      record_.failure = e.what();
+      write_summary("failed");
     } catch (const std::exception& again) {
       note = "; " + summary + " could not be written either (" + again.what() + ")";
     }
@@ -91,7 +103,7 @@ void StagedRun<Outputs>::save_checkpoint(const StageRunner& stages) {
   engine().save_state(bytes);
   c.engine_state = bytes.str();
   const std::string path = write_checkpoint(ctx_.output_dir, engine().step_count(), scene_, c);
-  summary_.checkpoint = CheckpointMark{path, engine().step_count()};
+  record_.checkpoint = CheckpointMark{path, engine().step_count()};
 }
 
 template class StagedRun<RunOutputs>;

@@ -36,11 +36,28 @@ class StagedRun {
   /// is written.
   StagedRun(const Scene& scene, const RunContext& ctx);
 
+  // What a run reads and fills; the base keeps them and their lifetimes.
+  const Scene& scene() const { return scene_; }
+  const RunContext& ctx() const { return ctx_; }
+  const mesh::Mesh& mesh() const { return mesh_; }
+  PhaseTimer& timer() { return timer_; }
+  RunRecord& record() { return record_; }
+  Outputs& outputs() { return out_; }
+  /// The engine, once set_engine has given it.
+  fdem::Engine& engine() { return *engine_; }
+  /// A restart's checkpoint; null for a fresh run.
+  const Checkpoint* resumed() const { return restart_ ? &resume_ : nullptr; }
+
   void make_mesh();
+  /// The run's engine, built from the scene and mesh; given once.
+  void set_engine(fdem::Engine&& engine);
   /// With the run's stage loop made: a restart takes its checkpoint's
   /// outputs and stage cursor, a fresh run records its first output step
   /// (stage `first`); then the checkpoints are armed.
   void resume_or_record(StageRunner& stages, const StageTag& first);
+  /// summary.json alone, with `status` and the timings so far: a run
+  /// that ends before its outputs' own summary (or writes none).
+  void write_summary(const std::string& status);
   /// Runs `f`; a NumericalError in it is reported (fail).
   void reporting_failure(const std::function<void()>& f);
   /// summary.json of a run a NumericalError stopped, then the error again
@@ -52,12 +69,13 @@ class StagedRun {
   /// its message saying that summary.json records the failure or why it
   /// could not be written either.
   [[noreturn]] void output_failed(const OutputError& e);
-  fdem::Engine& engine() { return *engine_; }
 
+ private:
   /// The run state a restart needs beyond the stages' and outputs'.
   virtual void add_run_state(nlohmann::json& /*run*/) const {}
   /// The message of a NumericalError as the run reports it.
   virtual std::string failure_message(const std::string& what) const { return what; }
+  void save_checkpoint(const StageRunner& stages);
 
   const Scene& scene_;
   const RunContext& ctx_;
@@ -65,13 +83,10 @@ class StagedRun {
   const bool restart_;
   const Checkpoint resume_;      ///< a restart's checkpoint
   const long checkpoint_every_;  ///< steps between checkpoints (0: none)
-  RunRecord summary_;
+  RunRecord record_;
   Outputs out_;
   mesh::Mesh mesh_;
   std::optional<fdem::Engine> engine_;
-
- private:
-  void save_checkpoint(const StageRunner& stages);
 };
 
 }  // namespace rockfdem::workflows

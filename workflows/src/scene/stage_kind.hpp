@@ -6,7 +6,6 @@
 #pragma once
 
 #include <memory>
-#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -64,7 +63,8 @@ class StageKind {
   /// has; an entry of another kind that gives one is refused.
   virtual std::vector<KeySpec> entry_keys() const { return {}; }
   /// Reads the entry's own keys (entry_keys) into the kind's own values
-  /// (StageSpec::own); none by default.
+  /// (StageSpec::own); none by default. A kind with values of its own
+  /// derives from StageWithValues (stages/stage.hpp), which reads them back.
   virtual std::shared_ptr<const StageValues> read(const StageEntry&) const { return nullptr; }
   /// The entry's own values in a few words, for the notes that list the
   /// stages (the mesh preview): "to alpha 0.3"; none by default.
@@ -76,16 +76,6 @@ class StageKind {
   /// origin of what the support measures.
   virtual bool installs_support() const { return false; }
 };
-
-/// An entry's own values as its kind's read made them; `Values` is that
-/// kind's type, so asking for another's is a programming error
-/// (std::logic_error).
-template <class Values>
-const Values& own_values(const StageSpec& spec) {
-  const auto* v = dynamic_cast<const Values*>(spec.own.get());
-  if (!v) throw std::logic_error("stage '" + spec.kind + "' holds no values of the type asked for");
-  return *v;
-}
 
 /// The kind registered as `kind`; std::logic_error when none is (a
 /// validated scene names only registered kinds).

@@ -8,8 +8,11 @@
 // when it stops, and knows nothing of the run above it.
 #pragma once
 
+#include <cassert>
 #include <functional>
+#include <memory>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 #include "record/run_context.hpp"
@@ -98,6 +101,31 @@ class Stage : public StageKind {
   /// converged, stopped before its criteria, or for a stage that took no
   /// step what it did (installed, core removed; by default applied).
   virtual std::string outcome(const StageRecord& record) const;
+};
+
+/// A stage kind with entry keys of its own, read into `Values` (a struct of
+/// its stage file's, derived from StageValues): read_values fills them and
+/// values(spec) gives them back. The type is settled where the scene is
+/// read: each entry's `own` is its own kind's read (read_stage in
+/// scene_build.cpp), and a kind is only ever handed entries of its kind
+/// (the registry finds it by StageSpec::kind), so no later use tests it.
+template <class Values>
+class StageWithValues : public Stage {
+  static_assert(std::is_base_of_v<StageValues, Values>, "a kind's values are StageValues");
+
+ public:
+  std::shared_ptr<const StageValues> read(const StageEntry& e) const final {
+    return std::make_shared<const Values>(read_values(e));
+  }
+
+ protected:
+  /// The entry's own keys (entry_keys) as the kind's values.
+  virtual Values read_values(const StageEntry& e) const = 0;
+  /// The values read_values made of `spec`, an entry of this kind.
+  static const Values& values(const StageSpec& spec) {
+    assert(spec.own);
+    return static_cast<const Values&>(*spec.own);
+  }
 };
 
 }  // namespace rockfdem::workflows

@@ -100,7 +100,7 @@ std::string number(double v) {
   return s;
 }
 
-class Grout : public Stage {
+class Grout : public StageWithValues<GroutValues> {
  public:
   const char* description() const override {
     return "re-join broken cracks with grout once its trigger fires: trigger_broken, "
@@ -139,21 +139,21 @@ class Grout : public Stage {
   }
 
   // trigger_broken with its default; the triggers given, in the schema's order.
-  std::shared_ptr<const StageValues> read(const StageEntry& e) const override {
-    auto v = std::make_shared<GroutValues>();
-    v->trigger_broken = long(e.number(".trigger_broken"));
+  GroutValues read_values(const StageEntry& e) const override {
+    GroutValues v;
+    v.trigger_broken = long(e.number(".trigger_broken"));
     for (const char* key : {"trigger_broken", "trigger_broken_since_support",
                             "trigger_broken_growth", "trigger_steps"})
       if (e.has(std::string(".") + key)) {
-        if (v->triggers.empty()) v->trigger_value = e.number(std::string(".") + key);
-        v->triggers.push_back(key);
+        if (v.triggers.empty()) v.trigger_value = e.number(std::string(".") + key);
+        v.triggers.push_back(key);
       }
     return v;
   }
 
   // The trigger given, as the mesh preview notes it; none: fires at once.
   std::string note(const StageSpec& spec) const override {
-    const GroutValues& v = own_values<GroutValues>(spec);
+    const GroutValues& v = values(spec);
     if (v.triggers.empty()) return "";
     char text[32];
     std::snprintf(text, sizeof text, "%g", v.trigger_value);
@@ -161,11 +161,11 @@ class Grout : public Stage {
   }
 
   void check(StageCheck& c) const override {
-    const std::vector<std::string>& given = own_values<GroutValues>(c.spec).triggers;
+    const std::vector<std::string>& given = values(c.spec).triggers;
     if (given.size() > 1)
       c.refuse("." + given[1], "one trigger per grout stage; " + given[0] + " and " + given[1] +
                                    " are both given: keep one");
-    const Trigger t = given_trigger(own_values<GroutValues>(c.spec));
+    const Trigger t = given_trigger(values(c.spec));
     if (t.from_support() && !c.order.lined && !c.order.bolted)
       c.refuse("." + t.key,
                "counts from the support's installation: needs a `lining` or `bolts` stage "
@@ -177,7 +177,7 @@ class Grout : public Stage {
 
   bool step(StageDriver& runner, const StageSpec& spec, StageChanges& changes) const override {
     StageModel& m = runner.model();
-    Trigger t = given_trigger(own_values<GroutValues>(spec));
+    Trigger t = given_trigger(values(spec));
     if (t.from_support()) t.n0 = broken_at_support(runner);
     const auto reached = [&] { return t.reached(runner, m.engine); };
     std::string fired = t.key;

@@ -15,9 +15,7 @@ struct SoftenValues final : StageValues {
   double alpha = 0;  ///< target core stiffness factor (0: not given)
 };
 
-double target(const StageSpec& spec) { return own_values<SoftenValues>(spec).alpha; }
-
-class Soften : public Stage {
+class Soften : public StageWithValues<SoftenValues> {
  public:
   const char* description() const override { return "core to alpha, explicit"; }
 
@@ -28,15 +26,15 @@ class Soften : public Stage {
   }
 
   // Required (check): 0 until then.
-  std::shared_ptr<const StageValues> read(const StageEntry& e) const override {
-    auto v = std::make_shared<SoftenValues>();
-    v->alpha = e.has(".alpha") ? e.number(".alpha") : 0;
+  SoftenValues read_values(const StageEntry& e) const override {
+    SoftenValues v;
+    v.alpha = e.has(".alpha") ? e.number(".alpha") : 0;
     return v;
   }
 
   std::string note(const StageSpec& spec) const override {
     char text[32];
-    std::snprintf(text, sizeof text, "%g", target(spec));
+    std::snprintf(text, sizeof text, "%g", values(spec).alpha);
     return std::string("to alpha ") + text;
   }
 
@@ -44,7 +42,7 @@ class Soften : public Stage {
   void check(StageCheck& c) const override {
     c.require(".alpha", "a soften stage needs its target alpha");
     if (!(c.order.alpha > 0)) c.refuse(".kind", "the core is already removed (or alpha = 0)");
-    const double alpha = target(c.spec);
+    const double alpha = values(c.spec).alpha;
     if (!(alpha < c.order.alpha))
       c.refuse(".alpha", "softening must go down from " + detail::number_text(c.order.alpha));
     c.order.alpha = alpha;
@@ -53,7 +51,7 @@ class Soften : public Stage {
   StageChanges apply(StageModel& m, const StageSpec& spec) const override {
     // A hand-off found at run time (insitu.handoff = "first_crack") may
     // already be at or below this alpha: nothing to soften.
-    const double alpha = target(spec);
+    const double alpha = values(spec).alpha;
     if (!(alpha < m.alpha)) {
       StageChanges skipped;
       skipped.skipped = true;

@@ -136,7 +136,8 @@ struct StageSpec {
   /// Whether finding the opening unstable ends the run there; false runs
   /// on to the cap, the status stays unstable with the first finding.
   bool stop_when_unstable{};
-  /// The kind's own values (its StageKind::read); null for a kind with none.
+  /// The kind's own values, made by the read of the kind named above as
+  /// the scene is read (so of that kind's type); null for a kind with none.
   std::shared_ptr<const StageValues> own;
 };
 
