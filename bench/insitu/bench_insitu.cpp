@@ -2,7 +2,7 @@
 //
 //   bench_insitu [--levels N] [--tunnel-size H]... [--skip-direct]
 //
-// 1. The default tunnel (scenes/tunnel-seed.toml: horseshoe 11.3 x 8.8 m,
+// 1. The seed tunnel (scenes/tunnel-seed-oneshot.toml: horseshoe 11.3 x 8.8 m,
 //    200 mm lining, 80 m box, wall size H = 0.35 m (the scene's) and 0.1 m
 //    unless --tunnel-size is given (repeatable), E = 3 GPa, lining
 //    installed at alpha = 0.01), alpha = 1, 0.5, 0.2, 0.1, 0.05, 0.01 with

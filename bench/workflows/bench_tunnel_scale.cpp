@@ -4,7 +4,7 @@
 // count in the same run, so that the tunnel's explicit throughput is compared
 // like for like with the bench's.
 //
-//   build/bench/workflows/bench_tunnel_scale [--scene scenes/tunnel-seed.toml]
+//   build/bench/workflows/bench_tunnel_scale [--scene scenes/tunnel-seed-oneshot.toml]
 //       [--sizes 0.35,0.06] [--threads 1,2] [--steps 10000] [--ucs-steps N]
 //       [--out /tmp/rockfdem-scale] [--rockfdem PATH] [--bench-ucs PATH]
 //       [--set section.key=value ...]
@@ -15,7 +15,7 @@
 //       --set mesh.size_near=<size> --set output.vtk=false --set output.plots=false
 //       --set stages[5].max_steps=<steps> --set stages[5].ratio=1e-9 [--set ...]
 //
-// (stages[5] is the seed scene's equilibrium stage: the tiny ratio keeps it
+// (stages[5] is the one-shot seed scene's equilibrium stage: the tiny ratio keeps it
 // stepping to its cap, so every size runs about the same number of explicit
 // steps: those of the grout stage before it, which ends when its trigger
 // fires, plus <steps>; the table gives the steps taken). Then
@@ -62,7 +62,7 @@ const char* const kUsage =
     "                          [--bench-ucs PATH] [--set KEY=VALUE ...]\n";
 
 struct Options {
-  std::string scene = std::string(ROCKFDEM_SOURCE_DIR) + "/scenes/tunnel-seed.toml";
+  std::string scene = std::string(ROCKFDEM_SOURCE_DIR) + "/scenes/tunnel-seed-oneshot.toml";
   std::vector<double> sizes{0.35, 0.06};
   std::vector<int> threads{1, 2};
   long steps = 10000;

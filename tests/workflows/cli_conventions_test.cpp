@@ -30,7 +30,7 @@ using rockfdem::test::scratch;
 
 namespace {
 
-const std::string& kSeed = rockfdem::test::kSeedScene;
+const std::string& kOneShot = rockfdem::test::kOneShotScene;
 
 // OMP_NUM_THREADS set to `value` (unset for nullopt) for the test's scope.
 class ThreadsVariable {
@@ -165,27 +165,29 @@ TEST(CliConventions, a_scene_of_dash_is_read_from_stdin) {
 
 TEST(CliConventions, set_errors_are_blamed_on_the_set) {
   // A value refused by the schema or a check of its own key.
-  std::string msg = error_of([] { workflows::load_scene(kSeed, {"insitu.alpha=[0.5,0.7]"}); });
+  std::string msg = error_of([] { workflows::load_scene(kOneShot, {"insitu.alpha=[0.5,0.7]"}); });
   EXPECT_EQ(msg.find("--set insitu.alpha=[0.5,0.7]: must be strictly decreasing"), 0u) << msg;
   // A check of another key, in the file, that fails only with the override:
-  // alpha ending at 0 removes the core the seed's stages[3] removes.
-  msg = error_of([] { workflows::load_scene(kSeed, {"insitu.alpha=[1.0, 0.0]"}); });
+  // alpha ending at 0 removes the core the one-shot scene's stages[3]
+  // removes (the default hands over at its first crack, known only when
+  // it runs, so there the scene cannot tell).
+  msg = error_of([] { workflows::load_scene(kOneShot, {"insitu.alpha=[1.0, 0.0]"}); });
   EXPECT_EQ(msg.find("--set insitu.alpha=[1.0, 0.0]: makes the scene invalid: "), 0u) << msg;
   EXPECT_TRUE(has(msg, "key 'stages[3].kind' = \"remove_core\": the core is already removed"))
       << msg;
   // Of several, the one that breaks the scene is named.
   msg = error_of([] {
-    workflows::load_scene(kSeed,
+    workflows::load_scene(kOneShot,
                           {"engine.steps=100", "insitu.alpha=[1.0, 0.0]", "output.every_steps=10"});
   });
   EXPECT_EQ(msg.find("--set insitu.alpha=[1.0, 0.0]: "), 0u) << msg;
   // A fault of the file stays the file's, whatever --set is given.
-  std::string text = read_text(kSeed);
+  std::string text = read_text(kOneShot);
   text.replace(text.find("alpha = [1.0,"), 13, "alpha = [0.0,");
   msg = error_of([&] { workflows::parse_scene(text, "file.toml", ".", {"engine.steps=100"}); });
   EXPECT_EQ(msg.find("file.toml:"), 0u) << msg;
   // On the command line: exit 2, the --set first.
-  const Result r = run("check " + kSeed + " --set 'insitu.alpha=[1.0, 0.0]'");
+  const Result r = run("check " + kOneShot + " --set 'insitu.alpha=[1.0, 0.0]'");
   EXPECT_EQ(r.code, 2);
   EXPECT_EQ(r.output.find("rockfdem: error: --set insitu.alpha=[1.0, 0.0]: "), 0u) << r.output;
 }

@@ -90,6 +90,11 @@ inline std::vector<std::vector<double>> numeric_rows(const std::string& csv) {
 const std::string kTestDir = ROCKFDEM_TEST_DIR;
 /// The seed tunnel, the shipped scene most tests vary with --set.
 const std::string kSeedScene = std::string(ROCKFDEM_SOURCE_DIR) + "/scenes/tunnel-seed.toml";
+/// The seed tunnel handed over in one shot at alpha 0.01 (the former
+/// default): its grout fires within the first steps, so short runs reach
+/// every stage.
+const std::string kOneShotScene =
+    std::string(ROCKFDEM_SOURCE_DIR) + "/scenes/tunnel-seed-oneshot.toml";
 
 /// A user's .msh scene: `dir`/mesh/mesh.msh meshed from restart_support.toml
 /// (a circular tunnel with a lining ring and a fracture zone, 1.7k

@@ -548,10 +548,10 @@ TEST(Cli, set_value_with_a_line_break_is_refused) {
 TEST(Cli, set_with_a_bad_array_index_exits_two_naming_it) {
   const std::string seed = rockfdem::test::kSeedScene;
   const std::pair<const char*, const char*> cases[] = {
-      {"stages[x].max_steps=1", "allowed: stages[0] to stages[5]"},
-      {"stages[].max_steps=1", "allowed: stages[0] to stages[5]"},
-      {"stages[99999999999999999999].max_steps=1", "allowed: stages[0] to stages[5]"},
-      {"stages[-1].max_steps=1", "allowed: stages[0] to stages[5]"},
+      {"stages[x].max_steps=1", "allowed: stages[0] to stages[9]"},
+      {"stages[].max_steps=1", "allowed: stages[0] to stages[9]"},
+      {"stages[99999999999999999999].max_steps=1", "allowed: stages[0] to stages[9]"},
+      {"stages[-1].max_steps=1", "allowed: stages[0] to stages[9]"},
       {"bolt_fan[a].count=1", "allowed: bolt_fan[0] to bolt_fan[1]"},
       {"bolt[0].kind=cable", "the scene has no [[bolt]]"}};
   for (const auto& [set, allowed] : cases) {

@@ -20,6 +20,7 @@ using namespace rockfdem::test;
 namespace {
 
 const std::string& kSeed = rockfdem::test::kSeedScene;
+const std::string& kOneShot = rockfdem::test::kOneShotScene;
 
 // history.csv's last row, by column name.
 // The history row at `step`, or the last one when `step` < 0.
@@ -101,14 +102,14 @@ class Outputs : public ::testing::Test {
   void TearDown() override { fs::remove_all(out); }
 };
 
-// A forced dt of 2 ms diverges in the grout stage after the hand-off
-// frame (step 1); it is found at step 4, where the broken count reaches
+// A forced dt of 2 ms diverges in the one-shot scene's grout stage after
+// the hand-off frame (step 1); it is found at step 4, where the broken count reaches
 // the grout trigger (checked after every step) and a row is written. The summary keeps what is
 // known: the model's counts (the seed tunnel with its invert arch: 16284 triangles, 13 bolts and
 // cables) and the last good state, the one the last frame shows: its steps, dt, time, monitors and
 // state hash; status and diagnostic say why it stopped.
 TEST_F(Outputs, failed_tunnel_run_reports_counts_and_the_last_good_state) {
-  const nlohmann::json j = failed_summary(kSeed +
+  const nlohmann::json j = failed_summary(kOneShot +
                                               " --set engine.dt=0.002 --set "
                                               "'stages[5].max_steps=3000'",
                                           out, "step 4");
@@ -154,9 +155,11 @@ TEST_F(Outputs, failed_specimen_run_reports_the_last_frame_state) {
 
 // A failure in the hand-off step itself (here its energy check, at a
 // forced dt far above the limit) still writes summary.json, with the
-// hand-off state before any explicit step as the last good one.
+// hand-off state before any explicit step as the last good one. The
+// one-shot scene releases the whole excavation load in that step; the
+// default, handing over at its first crack, fails only at step 2.
 TEST_F(Outputs, failure_in_the_handoff_step_reports_the_start_state) {
-  const nlohmann::json j = failed_summary(kSeed + " --set engine.dt=1", out, "step 1");
+  const nlohmann::json j = failed_summary(kOneShot + " --set engine.dt=1", out, "step 1");
   EXPECT_EQ(j["counts"]["triangles"].get<long>(), 16284);
   EXPECT_EQ(j["steps"].get<long>(), 0);
   // The failed step is no good state: no hand-off step, no null stage list.
@@ -217,9 +220,10 @@ TEST_F(Outputs, unbalanced_energy_at_the_end_is_a_warning) {
 // stages (grouting re-joins cracks with another material): `dt` is the
 // last step's, dt_min and dt_max the range, and each stage (and the
 // hand-off step, which belongs to no stage) reports its own, so that
-// steps and simulated time add up exactly.
+// steps and simulated time add up exactly. The one-shot scene grouts at
+// step 14, so 1000 steps see the dt change.
 TEST_F(Outputs, dt_figures_account_for_steps_and_simulated_time) {
-  const nlohmann::json j = summary_of("run " + kSeed +
+  const nlohmann::json j = summary_of("run " + kOneShot +
                                           " -j 2 --set 'stages[5].max_steps=1000' --set "
                                           "output.plots=false --set output.vtk=false",
                                       out);

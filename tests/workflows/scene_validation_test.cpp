@@ -142,11 +142,11 @@ TEST(Scene, every_schema_key_has_unit_and_description) {
 // the scene does not have is an error, not a silently ignored key.
 TEST(Scene, override_reaches_array_of_tables) {
   const std::string seed = rockfdem::test::kSeedScene;
-  const Scene s = load_scene(seed, {"stages[5].max_steps=123"});
+  const Scene s = load_scene(seed, {"stages[9].max_steps=123"});
   EXPECT_EQ(s.stages.back().kind, "equilibrium");
   EXPECT_EQ(s.stages.back().max_steps, 123);
-  const std::string msg = error_of([&] { load_scene(seed, {"stages[9].max_steps=5"}); });
-  EXPECT_NE(msg.find("stages[9]"), std::string::npos) << msg;
+  const std::string msg = error_of([&] { load_scene(seed, {"stages[10].max_steps=5"}); });
+  EXPECT_NE(msg.find("stages[10]"), std::string::npos) << msg;
 }
 
 // A --set value is cited as the command-line override, never as a line of

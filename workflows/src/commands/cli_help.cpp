@@ -23,7 +23,7 @@ const CommandHelp kCommands[] = {
      "(summary.json, history.csv, ParaView frames, plots, scene.toml as run) in OUTDIR.\n"
      "Without a scene it runs the built-in default, the seed's horseshoe tunnel.",
      {"output", "threads", "set", "quiet", "force", "checkpoint-every", "restart", "force-dt"},
-     "rockfdem run scenes/tunnel-seed.toml -o out/tunnel -j 2 --set stages[5].max_steps=2000"},
+     "rockfdem run scenes/tunnel-seed.toml -o out/tunnel -j 2 --set stages[9].max_steps=2000"},
     {"check",
      "rockfdem check SCENE.toml | - [options]",
      "Validates the scene and prints derived figures (element counts, memory, time step,\n"

@@ -267,7 +267,7 @@ constexpr double kProbeMemoryMargin = 1.25;
 // factor grows faster than the mesh), the fields the outputs keep, the
 // continuum counterpart (solved before the engine is built, so its solve
 // and the engine are not held at once) and the frames. Peak RSS on
-// tunnel-seed.toml (2 threads, 300 explicit steps, docs/benchmarks.md):
+// tunnel-seed-oneshot.toml (2 threads, 300 explicit steps, docs/benchmarks.md):
 // 258 MiB at 16,284 triangles over a probe of 196 MiB; 1500 B per
 // triangle keeps it 8% below its bound, 28,936 triangles 22% below.
 constexpr double kImplicitBytesPerTriangle = 1500;
