@@ -343,8 +343,12 @@ void print_probe(const Scene& scene, const Probe& p) {
       kRunTimeMargin);
   std::printf("  stable time step:           %.4g s on true masses (this mesh, its penalties)\n",
               scene.engine.dt_safety * p.critical_true);
-  std::printf("  time step at the start:     %.8g s%s\n", p.dt_start,
-              scene.engine.mass_scaling ? " (mass-scaled, quasi-static pseudo-time)" : "");
+  std::printf("  time step at the start:     %.8g s%s%s\n", p.dt_start,
+              scene.engine.mass_scaling ? " (mass-scaled, quasi-static pseudo-time)" : "",
+              scene.insitu.handoff_first_crack
+                  ? "; at the last alpha: the first-crack hand-off's alpha is known only "
+                    "once the implicit stage has run, and its step differs by about 0.2%"
+                  : "");
   if (staged(scene))
     std::printf(
         "  time step in the stages:    %.8g s at most (with their damping; a lining, bolts or "
