@@ -130,8 +130,9 @@ void add_parts(std::vector<MemoryPart>& parts, const char* record, const char* n
 std::vector<MemoryPart> memory_parts(const detail::EngineData& d) {
   std::vector<MemoryPart> p;
   const auto& n = d.nodes;
-  add_parts(p, "nodes", "pos vel vertex_pos mass fext bc vertex slot_start slot_index", n.pos,
-            n.vel, n.vertex_pos, n.mass, n.fext, n.bc, n.vertex, n.slot_start, n.slot_index);
+  add_parts(p, "nodes", "pos vel vertex_pos mass fext_node fext bc vertex slot_start slot_index",
+            n.pos, n.vel, n.vertex_pos, n.mass, n.fext.node, n.fext.force, n.bc, n.vertex,
+            n.slot_start, n.slot_index);
   const auto& t = d.tris;
   add_parts(p, "tris",
             "nodes ref_inv area0 eta alpha sigma0 viscous_stress mass_scale material active",

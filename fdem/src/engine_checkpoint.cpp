@@ -51,6 +51,11 @@ void fields(Ar& ar, NodalLoad& l) {
 }
 
 template <class Ar>
+void fields(Ar& ar, DeadLoads& l) {
+  each_member(ar, l, l.dense, l.node, l.force, l.none_x, l.none_y);
+}
+
+template <class Ar>
 void fields(Ar& ar, TagNodes& t) {
   each_member(ar, t, t.tag, t.nodes);
 }

@@ -12,6 +12,7 @@
 // the thread count.
 #pragma once
 
+#include <algorithm>
 #include <array>
 #include <cstdint>
 #include <vector>
@@ -36,12 +37,30 @@ struct SolidConstants {
   bool plane_strain = true;  ///< sigma_zz follows from J (plane strain) or is 0 (plane stress)
 };
 
+/// Constant nodal forces (gravity + tractions [N/m]). With gravity every
+/// node carries its weight and `force` holds 2 per node; without, only the
+/// few nodes of loaded boundaries carry one: `node` lists them ascending
+/// and `force` holds 2 per entry. Both empty without any load.
+struct DeadLoads {
+  bool dense = false;             ///< `force` is per node (gravity)
+  std::vector<int> node;          ///< the loaded nodes, ascending (not dense)
+  std::vector<double> force;      ///< interleaved x, y
+  double none_x = 0, none_y = 0;  ///< the force of an unlisted node: 0 times gravity (its
+                                  ///< zero's sign as a per-node array would hold it)
+  /// Index of node i's force in `force` / 2, or -1 without one.
+  long find(long i) const {
+    if (dense) return force.empty() ? -1 : i;
+    const auto it = std::lower_bound(node.begin(), node.end(), int(i));
+    return it != node.end() && *it == i ? long(it - node.begin()) : -1;
+  }
+};
+
 struct Nodes {
   std::vector<double> pos, vel;    ///< interleaved x, y
   std::vector<double> vertex_pos;  ///< per mesh vertex, interleaved: the displacement origin
                                    ///< (nodes of one vertex share it: mesh_position())
   std::vector<double> mass;        ///< lumped; 0: no active triangle (frozen)
-  std::vector<double> fext;        ///< interleaved: gravity + tractions [N/m]; empty without any
+  DeadLoads fext;                  ///< gravity + tractions (dead loads)
   std::vector<int> bc;             ///< -1 or index into BoundaryRecords
   std::vector<int> vertex;         ///< mesh vertex of each node
   std::vector<int> slot_start;     ///< CSR over force slots, n + 1 entries
