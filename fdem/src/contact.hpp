@@ -60,11 +60,8 @@ struct ContactData {
   double penalty = 0, buffer = 0;
   std::vector<double> mu;  ///< per material: tan(residual friction angle)
   // Static topology (setup): per triangle edge k (corners k -> k+1).
-  std::vector<int> edge_nbr;                          ///< neighbouring triangle or -1
-  std::vector<int> edge_crack;                        ///< crack element on the edge or -1
-  std::vector<int> vertex_tri_start, vertex_tri;      ///< CSR mesh vertex -> its triangles
-  std::vector<int> vertex_crack_start, vertex_crack;  ///< CSR mesh vertex -> crack elements
-                                                      ///< with an end there
+  std::vector<int> edge;  ///< the crack element on the edge (>= 0), else -2 - the
+                          ///< neighbouring triangle, or -1 on the outline
   // Detection results.
   std::vector<int> candidates;     ///< free-surface triangles, ascending
   std::vector<int> component;      ///< per node: intact-crack component at its vertex

@@ -43,58 +43,50 @@ void build_edge_neighbours(EngineData& d) {
   std::sort(uses.begin(), uses.end(), [](const Use& p, const Use& q) {
     return p.key != q.key ? p.key < q.key : p.tri < q.tri;
   });
-  ContactData& c = d.contact;
-  c.edge_nbr.assign(3 * nt, -1);
-  c.edge_crack.assign(3 * nt, -1);
+  std::vector<int>& edge = d.contact.edge;
+  edge.assign(3 * nt, -1);
   for (std::size_t i = 0; i + 1 < uses.size(); ++i)
     if (uses[i].key == uses[i + 1].key) {
-      c.edge_nbr[3 * uses[i].tri + uses[i].local] = uses[i + 1].tri;
-      c.edge_nbr[3 * uses[i + 1].tri + uses[i + 1].local] = uses[i].tri;
+      edge[3 * uses[i].tri + uses[i].local] = -2 - uses[i + 1].tri;
+      edge[3 * uses[i + 1].tri + uses[i + 1].local] = -2 - uses[i].tri;
     }
   for (std::size_t e = 0; e < d.cracks.size(); ++e)
     for (int side = 0; side < 2; ++side) {
       const int t = d.cracks.tri[2 * e + side], other = d.cracks.tri[2 * e + 1 - side];
       for (int k = 0; k < 3; ++k)
-        if (c.edge_nbr[3 * t + k] == other) c.edge_crack[3 * t + k] = static_cast<int>(e);
+        if (edge[3 * t + k] == -2 - other) edge[3 * t + k] = static_cast<int>(e);
     }
 }
 
-/// Fills a CSR (start, items) over n_rows rows from (row, item) uses given
-/// in item order, so every row lists its items ascending.
-template <class Uses>
-void fill_csr(int n_rows, Uses uses, std::vector<int>& start, std::vector<int>& items) {
-  start.assign(n_rows + 1, 0);
-  uses([&](int row, int) { ++start[row + 1]; });
-  for (int r = 0; r < n_rows; ++r) start[r + 1] += start[r];
-  items.resize(start[n_rows]);
-  std::vector<int> next(start.begin(), start.end() - 1);
-  uses([&](int row, int item) { items[next[row]++] = item; });
+/// The crack element on edge k of triangle t, or -1.
+int edge_crack(const EngineData& d, int t, int k) {
+  return std::max(d.contact.edge[3 * t + k], -1);
 }
 
-/// Triangles and crack elements per mesh vertex: what a breakage touches.
-void build_vertex_lists(EngineData& d) {
-  ContactData& c = d.contact;
-  const int nv = static_cast<int>(d.vertex_node_start.size()) - 1;
-  fill_csr(
-      nv,
-      [&](auto use) {
-        for (int t = 0; t < static_cast<int>(d.tris.size()); ++t)
-          for (int k = 0; k < 3; ++k) use(vertex_of(d, t, k), t);
-      },
-      c.vertex_tri_start, c.vertex_tri);
-  fill_csr(
-      nv,
-      [&](auto use) {
-        for (int e = 0; e < static_cast<int>(d.cracks.size()); ++e)
-          for (int end = 0; end < 2; ++end) use(d.nodes.vertex[d.cracks.nodes[4 * e + end]], e);
-      },
-      c.vertex_crack_start, c.vertex_crack);
+/// The triangle across edge k of triangle t, or -1.
+int edge_nbr(const EngineData& d, int t, int k) {
+  const int e = d.contact.edge[3 * t + k];
+  if (e >= 0) return d.cracks.tri[2 * e] == t ? d.cracks.tri[2 * e + 1] : d.cracks.tri[2 * e];
+  return e == -1 ? -1 : -2 - e;
+}
+
+/// Calls f(slot) for each force slot of the nodes at mesh vertex v: the
+/// triangles and crack elements with a corner or an end there, from the
+/// node incidence the gather uses (no lists of their own).
+template <class F>
+void each_slot_at(const EngineData& d, int v, F f) {
+  const Nodes& n = d.nodes;
+  for (int i = d.vertex_node_start[v]; i < d.vertex_node_start[v + 1]; ++i) {
+    const int node = d.vertex_nodes[i];
+    for (int k = n.slot_start[node]; k < n.slot_start[node + 1]; ++k)
+      f(entry_slot(n.slot_index[k]));
+  }
 }
 
 bool free_edge(const EngineData& d, int t, int k) {
-  const int nbr = d.contact.edge_nbr[3 * t + k];
+  const int nbr = edge_nbr(d, t, k);
   if (nbr < 0 || !d.tris.active[nbr]) return true;
-  const int crack = d.contact.edge_crack[3 * t + k];
+  const int crack = edge_crack(d, t, k);
   return crack >= 0 && d.cracks.state[crack] == std::uint8_t(CrackState::kBroken);
 }
 
@@ -180,8 +172,8 @@ bool may_touch(const void* context, int i, int j) {
     }
   if (shared >= 2) {  // an edge: a pair only once its crack element broke
     for (int k = 0; k < 3; ++k)
-      if (d.contact.edge_nbr[3 * a + k] == b) {
-        const int crack = d.contact.edge_crack[3 * a + k];
+      if (edge_nbr(d, a, k) == b) {
+        const int crack = edge_crack(d, a, k);
         return crack >= 0 && d.cracks.state[crack] == std::uint8_t(CrackState::kBroken);
       }
     return false;
@@ -282,14 +274,18 @@ void rebuild_components_at(EngineData& d, int v) {
     while (parent[i] != i) i = parent[i] = parent[parent[i]];
     return i;
   };
-  for (int k = c.vertex_crack_start[v]; k < c.vertex_crack_start[v + 1]; ++k) {
-    const int e = c.vertex_crack[k];
-    if (!d.cracks.active[e] || d.cracks.state[e] == std::uint8_t(CrackState::kBroken)) continue;
+  // Each element with an end at v comes once per face: the second union
+  // changes nothing, and the labels do not depend on the order.
+  const int slot0 = static_cast<int>(d.crack_slot0());
+  each_slot_at(d, v, [&](int slot) {
+    if (slot < slot0) return;
+    const int e = (slot - slot0) / 2;
+    if (!d.cracks.active[e] || d.cracks.state[e] == std::uint8_t(CrackState::kBroken)) return;
     const int* nd = &d.cracks.nodes[4 * e];
     const int end = d.nodes.vertex[nd[0]] == v ? 0 : 1;
     const int a = find(nd[end]), b = find(nd[3 - end]);
     if (a != b) parent[std::max(a, b)] = std::min(a, b);
-  }
+  });
   for (int i = n0; i < n1; ++i) parent[d.vertex_nodes[i]] = find(d.vertex_nodes[i]);
 }
 
@@ -350,9 +346,15 @@ void trial_pairs(EngineData& d) {
       if (boxes_overlap(box, &c.boxes[4 * j])) add(t, c.candidates[j]);
   }
   for (int e : s.cracks) add(d.cracks.tri[2 * e], d.cracks.tri[2 * e + 1]);
-  for (int v : s.vertices)
-    for (int i = c.vertex_tri_start[v]; i < c.vertex_tri_start[v + 1]; ++i)
-      for (int j = i + 1; j < c.vertex_tri_start[v + 1]; ++j) add(c.vertex_tri[i], c.vertex_tri[j]);
+  const int slot0 = static_cast<int>(d.crack_slot0());
+  for (int v : s.vertices) {
+    s.ints.clear();  // the triangles with a corner at v, each once
+    each_slot_at(d, v, [&](int slot) {
+      if (slot < slot0) s.ints.push_back(slot / 3);
+    });
+    for (std::size_t i = 0; i < s.ints.size(); ++i)
+      for (std::size_t j = i + 1; j < s.ints.size(); ++j) add(s.ints[i], s.ints[j]);
+  }
   std::sort(s.trial.begin(), s.trial.end());
   s.trial.erase(std::unique(s.trial.begin(), s.trial.end()), s.trial.end());
 }
@@ -415,7 +417,6 @@ void contact_setup(EngineData& d) {
   // (pairs mostly neighbours when pressed; fewer far pairs when flying apart,
   // at a few detections per 1000 steps).
   c.buffer = c.settings.buffer > 0 ? c.settings.buffer : 0.125 * mean_edge;
-  build_vertex_lists(d);
   c.dirty = c.topology_dirty = true;
 }
 

@@ -140,18 +140,13 @@ void fields(Ar& ar, Cracks& c) {
 
 template <class Ar>
 void fields(Ar& ar, ContactData& c) {
-  ROCKFDEM_CHECKPOINT_MEMBERS(ContactData, 34);
+  ROCKFDEM_CHECKPOINT_MEMBERS(ContactData, 29);
   ar.tag("CONT");
   ar.state(c.settings);
   ar.state(c.penalty);  // set_contact may come after construction: all of it is state
   ar.state(c.buffer);
   ar.state(c.mu);
-  ar.state(c.edge_nbr);
-  ar.state(c.edge_crack);
-  ar.state(c.vertex_tri_start);
-  ar.state(c.vertex_tri);
-  ar.state(c.vertex_crack_start);
-  ar.state(c.vertex_crack);
+  ar.state(c.edge);
   ar.state(c.candidates);
   ar.state(c.component);
   ar.state(c.boxes);
