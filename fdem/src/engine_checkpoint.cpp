@@ -98,7 +98,7 @@ void fields(Ar& ar, Nodes& n) {
   ar.model(n.vertex_pos);
   ar.state(n.mass);  // rebuilt only when masses_dirty: saved as they are
   ar.state(n.fext);
-  ar.state(n.bc);
+  ar.state(n.bc_node);
   ar.model(n.vertex);
   ar.model(n.slot_start);
   ar.model(n.slot_index);

@@ -12,13 +12,13 @@
 // the thread count.
 #pragma once
 
-#include <algorithm>
 #include <array>
 #include <cstdint>
 #include <vector>
 
 #include "contact.hpp"
 #include "energy.hpp"
+#include "node_list.hpp"
 #include "rockfdem/fdem/crack_law.hpp"
 #include "rockfdem/fdem/model_input.hpp"
 
@@ -50,8 +50,7 @@ struct DeadLoads {
   /// Index of node i's force in `force` / 2, or -1 without one.
   long find(long i) const {
     if (dense) return force.empty() ? -1 : i;
-    const auto it = std::lower_bound(node.begin(), node.end(), int(i));
-    return it != node.end() && *it == i ? long(it - node.begin()) : -1;
+    return index_in(node, i);
   }
 };
 
@@ -61,11 +60,15 @@ struct Nodes {
                                    ///< (nodes of one vertex share it: mesh_position())
   std::vector<double> mass;        ///< lumped; 0: no active triangle (frozen)
   DeadLoads fext;                  ///< gravity + tractions (dead loads)
-  std::vector<int> bc;             ///< -1 or index into BoundaryRecords
+  std::vector<int> bc_node;        ///< nodes with a boundary record, ascending; the
+                                   ///< k-th one's record is bc_records[k]
   std::vector<int> vertex;         ///< mesh vertex of each node
   std::vector<int> slot_start;     ///< CSR over force slots, n + 1 entries
   std::vector<int> slot_index;     ///< 2 slot + 1 where the node takes the slot's negative
   std::size_t size() const { return mass.size(); }
+  /// Node i's index into the boundary records, or -1 (a search: the node
+  /// loop walks bc_node with a NodeListCursor).
+  long bc(long i) const { return index_in(bc_node, i); }
   /// Coordinate `axis` of node i's mesh vertex.
   double mesh_position(std::size_t i, int axis) const { return vertex_pos[2 * vertex[i] + axis]; }
 };

@@ -217,6 +217,7 @@ long node_loop(EngineData& d) {
     NodeSums sum;
     const long end = std::min(nn, (blk + 1) * kNodeBlock);
     DeadLoadCursor loads(n.fext, blk * kNodeBlock);
+    NodeListCursor records(n.bc_node, blk * kNodeBlock);
     for (long i = blk * kNodeBlock; i < end; ++i) {
       // 1/m here rather than stored: the same bits, 8 B per node less.
       if (!(n.mass[i] > 0.0)) continue;  // no active triangle: frozen
@@ -226,7 +227,7 @@ long node_loop(EngineData& d) {
       double fx, fy;
       node_force(d, i, gx, gy, fx, fy);
       const double vx0 = n.vel[2 * i], vy0 = n.vel[2 * i + 1];
-      const int b = n.bc[i];
+      const long b = records.at(i);
       double cx = 0, cy = 0;  // dashpot
       if (b >= 0) {
         cx = rec[b].cxx * vx0 + rec[b].cxy * vy0;

@@ -3,8 +3,6 @@
 // slots followed by the central-difference update.
 #pragma once
 
-#include <algorithm>
-
 #include "engine_data.hpp"
 
 namespace rockfdem::fdem::detail {
@@ -31,30 +29,20 @@ inline double dead_load(const Nodes& n, std::size_t i, int axis) {
   return k >= 0 ? n.fext.force[2 * k + axis] : (axis == 0 ? n.fext.none_x : n.fext.none_y);
 }
 
-/// The dead loads of ascending nodes from `first` on: one search, then a
-/// step per node.
+/// The dead loads of ascending nodes from `first` on (NodeListCursor).
 class DeadLoadCursor {
  public:
-  DeadLoadCursor(const DeadLoads& l, long first) : l_(l) {
-    if (!l.dense) k_ = std::lower_bound(l.node.begin(), l.node.end(), int(first)) - l.node.begin();
-  }
+  DeadLoadCursor(const DeadLoads& l, long first) : l_(l), nodes_(l.node, first) {}
   /// The load on node i, i not below the last node asked for.
   void at(long i, double& gx, double& gy) {
-    if (l_.dense) {
-      gx = l_.force[2 * i];
-      gy = l_.force[2 * i + 1];
-      return;
-    }
-    const long n = static_cast<long>(l_.node.size());
-    while (k_ < n && l_.node[k_] < i) ++k_;
-    const bool on = k_ < n && l_.node[k_] == i;
-    gx = on ? l_.force[2 * k_] : l_.none_x;
-    gy = on ? l_.force[2 * k_ + 1] : l_.none_y;
+    const long k = l_.dense ? i : nodes_.at(i);
+    gx = k >= 0 ? l_.force[2 * k] : l_.none_x;
+    gy = k >= 0 ? l_.force[2 * k + 1] : l_.none_y;
   }
 
  private:
   const DeadLoads& l_;
-  long k_ = 0;
+  NodeListCursor nodes_;
 };
 
 /// Net force on node i from its slots, starting from the dead load gx, gy.
