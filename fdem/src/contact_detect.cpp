@@ -23,51 +23,34 @@
 namespace rockfdem::fdem::detail {
 namespace {
 
-int vertex_of(const EngineData& d, int t, int k) { return d.nodes.vertex[d.tris.nodes[3 * t + k]]; }
+/// What lies across a triangle edge: its crack element and the other
+/// triangle, each -1 where there is none.
+struct Across {
+  int crack = -1, tri = -1;
+};
 
-/// Neighbour across each triangle edge, from the mesh vertices of its nodes.
-void build_edge_neighbours(EngineData& d) {
-  const int nt = static_cast<int>(d.tris.size());
-  struct Use {
-    std::uint64_t key;
-    int tri, local;
-  };
-  std::vector<Use> uses;
-  uses.reserve(3 * nt);
-  for (int t = 0; t < nt; ++t)
-    for (int k = 0; k < 3; ++k) {
-      const auto a = static_cast<std::uint64_t>(vertex_of(d, t, k));
-      const auto b = static_cast<std::uint64_t>(vertex_of(d, t, (k + 1) % 3));
-      uses.push_back({(std::max(a, b) << 32) | std::min(a, b), t, k});
+/// Across edge k of triangle t (corners k -> k+1), from the force slots of
+/// its first corner's node a, b the second's: a crack element on the edge
+/// has a as its node 0 (t its first triangle, b its node 1) or as its
+/// node 2 (t its second, b its node 3); without one (no fracture on either
+/// side) the neighbour shares both nodes.
+Across across_edge(const EngineData& d, int t, int k) {
+  const int a = d.tris.nodes[3 * t + k], b = d.tris.nodes[3 * t + (k + 1) % 3];
+  const Nodes& n = d.nodes;
+  const Cracks& c = d.cracks;
+  const int slot0 = static_cast<int>(d.crack_slot0());
+  for (int q = n.slot_start[a]; q < n.slot_start[a + 1]; ++q) {
+    const int entry = n.slot_index[q], s = entry_slot(entry);
+    if (s < slot0) {
+      const int u = s / 3, *nu = &d.tris.nodes[3 * u];
+      if (u != t && (nu[0] == b || nu[1] == b || nu[2] == b)) return {-1, u};
+      continue;
     }
-  std::sort(uses.begin(), uses.end(), [](const Use& p, const Use& q) {
-    return p.key != q.key ? p.key < q.key : p.tri < q.tri;
-  });
-  std::vector<int>& edge = d.contact.edge;
-  edge.assign(3 * nt, -1);
-  for (std::size_t i = 0; i + 1 < uses.size(); ++i)
-    if (uses[i].key == uses[i + 1].key) {
-      edge[3 * uses[i].tri + uses[i].local] = -2 - uses[i + 1].tri;
-      edge[3 * uses[i + 1].tri + uses[i + 1].local] = -2 - uses[i].tri;
-    }
-  for (std::size_t e = 0; e < d.cracks.size(); ++e)
-    for (int side = 0; side < 2; ++side) {
-      const int t = d.cracks.tri[2 * e + side], other = d.cracks.tri[2 * e + 1 - side];
-      for (int k = 0; k < 3; ++k)
-        if (edge[3 * t + k] == -2 - other) edge[3 * t + k] = static_cast<int>(e);
-    }
-}
-
-/// The crack element on edge k of triangle t, or -1.
-int edge_crack(const EngineData& d, int t, int k) {
-  return std::max(d.contact.edge[3 * t + k], -1);
-}
-
-/// The triangle across edge k of triangle t, or -1.
-int edge_nbr(const EngineData& d, int t, int k) {
-  const int e = d.contact.edge[3 * t + k];
-  if (e >= 0) return d.cracks.tri[2 * e] == t ? d.cracks.tri[2 * e + 1] : d.cracks.tri[2 * e];
-  return e == -1 ? -1 : -2 - e;
+    const int e = (s - slot0) / 2, j = (s - slot0) % 2, side = entry & 1;
+    if (j == side && c.tri[2 * e + side] == t && c.nodes[4 * e + 1 + 2 * side] == b)
+      return {e, c.tri[2 * e + 1 - side]};
+  }
+  return {};
 }
 
 /// Calls f(slot) for each force slot of the nodes at mesh vertex v: the
@@ -84,32 +67,45 @@ void each_slot_at(const EngineData& d, int v, F f) {
 }
 
 bool free_edge(const EngineData& d, int t, int k) {
-  const int nbr = edge_nbr(d, t, k);
-  if (nbr < 0 || !d.tris.active[nbr]) return true;
-  const int crack = edge_crack(d, t, k);
-  return crack >= 0 && d.cracks.state[crack] == std::uint8_t(CrackState::kBroken);
+  const Across x = across_edge(d, t, k);
+  if (x.tri < 0 || !d.tris.active[x.tri]) return true;
+  return x.crack >= 0 && d.cracks.state[x.crack] == std::uint8_t(CrackState::kBroken);
 }
 
-/// Per node, a label shared by the nodes its vertex's intact crack elements
-/// join (union-find, serial and in element order: deterministic).
-void build_components(EngineData& d) {
-  std::vector<int>& parent = d.contact.component;
-  const int nn = static_cast<int>(d.nodes.size());
-  parent.resize(nn);
-  for (int i = 0; i < nn; ++i) parent[i] = i;
+/// Whether nodes x and y of one mesh vertex are joined by a chain of
+/// intact crack elements around it: a union-find over that vertex's nodes
+/// and the crack ends there (from the nodes' force slots), run when asked;
+/// a vertex has a few nodes.
+bool joined_at_vertex(const EngineData& d, int x, int y) {
+  if (x == y) return true;
+  const int v = d.nodes.vertex[x];
+  const int n0 = d.vertex_node_start[v], k = d.vertex_node_start[v + 1] - n0;
+  const int* at = &d.vertex_nodes[n0];
+  constexpr int kSmall = 64;
+  int small[kSmall];
+  thread_local std::vector<int> large;  // grown once for a vertex of many nodes
+  if (k > kSmall) large.resize(k);
+  int* parent = k > kSmall ? large.data() : small;
+  for (int i = 0; i < k; ++i) parent[i] = i;
+  auto local = [&](int node) { return int(std::find(at, at + k, node) - at); };
   auto find = [&](int i) {
     while (parent[i] != i) i = parent[i] = parent[parent[i]];
     return i;
   };
-  for (std::size_t e = 0; e < d.cracks.size(); ++e) {
-    if (!d.cracks.active[e] || d.cracks.state[e] == std::uint8_t(CrackState::kBroken)) continue;
-    const int* nd = &d.cracks.nodes[4 * e];
-    for (int end = 0; end < 2; ++end) {
-      const int a = find(nd[end]), b = find(nd[3 - end]);
+  const Nodes& n = d.nodes;
+  const int slot0 = static_cast<int>(d.crack_slot0());
+  for (int i = 0; i < k; ++i)
+    for (int q = n.slot_start[at[i]]; q < n.slot_start[at[i] + 1]; ++q) {
+      const int s = entry_slot(n.slot_index[q]);
+      if (s < slot0) continue;
+      const int e = (s - slot0) / 2;
+      if (!d.cracks.active[e] || d.cracks.state[e] == std::uint8_t(CrackState::kBroken)) continue;
+      const int* nd = &d.cracks.nodes[4 * e];
+      const int end = n.vertex[nd[0]] == v ? 0 : 1;  // joins nd[end] and nd[3 - end]
+      const int a = find(i), b = find(local(nd[end] == at[i] ? nd[3 - end] : nd[end]));
       if (a != b) parent[std::max(a, b)] = std::min(a, b);
     }
-  }
-  for (int i = 0; i < nn; ++i) parent[i] = find(i);
+  return find(local(x)) == find(local(y));
 }
 
 void build_candidates(EngineData& d) {
@@ -119,7 +115,6 @@ void build_candidates(EngineData& d) {
     if (!d.tris.active[t]) continue;
     if (free_edge(d, t, 0) || free_edge(d, t, 1) || free_edge(d, t, 2)) c.candidates.push_back(t);
   }
-  build_components(d);
   // Nodes whose displacement decides when to detect again.
   c.watch_nodes.clear();
   for (int t : c.candidates)
@@ -172,13 +167,13 @@ bool may_touch(const void* context, int i, int j) {
     }
   if (shared >= 2) {  // an edge: a pair only once its crack element broke
     for (int k = 0; k < 3; ++k)
-      if (edge_nbr(d, a, k) == b) {
-        const int crack = edge_crack(d, a, k);
+      if (const Across x = across_edge(d, a, k); x.tri == b) {
+        const int crack = x.crack;
         return crack >= 0 && d.cracks.state[crack] == std::uint8_t(CrackState::kBroken);
       }
     return false;
   }
-  if (shared == 1 && d.contact.component[na[ka]] == d.contact.component[nb[kb]]) return false;
+  if (shared == 1 && joined_at_vertex(d, na[ka], nb[kb])) return false;
   return !separated(d, a, b, d.contact.buffer);
 }
 
@@ -259,34 +254,6 @@ void build_gather(EngineData& d) {
     for (int side = 0; side < 2; ++side)
       c.gather_entry[c.grid.offset[index[c.pairs[p][side]]]++] = static_cast<int>(2 * p + side);
   for (int t : c.gather_tri) index[t] = -1;
-}
-
-/// Component labels of the nodes at mesh vertex v from scratch: the same
-/// union-find as build_components, restricted to the crack elements with an
-/// end at v (they join nodes of v only). Every label is the smallest node id
-/// of its component, as after a full build.
-void rebuild_components_at(EngineData& d, int v) {
-  ContactData& c = d.contact;
-  std::vector<int>& parent = c.component;
-  const int n0 = d.vertex_node_start[v], n1 = d.vertex_node_start[v + 1];
-  for (int i = n0; i < n1; ++i) parent[d.vertex_nodes[i]] = d.vertex_nodes[i];
-  auto find = [&](int i) {
-    while (parent[i] != i) i = parent[i] = parent[parent[i]];
-    return i;
-  };
-  // Each element with an end at v comes once per face: the second union
-  // changes nothing, and the labels do not depend on the order.
-  const int slot0 = static_cast<int>(d.crack_slot0());
-  each_slot_at(d, v, [&](int slot) {
-    if (slot < slot0) return;
-    const int e = (slot - slot0) / 2;
-    if (!d.cracks.active[e] || d.cracks.state[e] == std::uint8_t(CrackState::kBroken)) return;
-    const int* nd = &d.cracks.nodes[4 * e];
-    const int end = d.nodes.vertex[nd[0]] == v ? 0 : 1;
-    const int a = find(nd[end]), b = find(nd[3 - end]);
-    if (a != b) parent[std::max(a, b)] = std::min(a, b);
-  });
-  for (int i = n0; i < n1; ++i) parent[d.vertex_nodes[i]] = find(d.vertex_nodes[i]);
 }
 
 /// Index of triangle t in the (ascending) candidates, or -1.
@@ -396,7 +363,6 @@ double insert_pairs(EngineData& d) {
 
 void contact_setup(EngineData& d) {
   ContactData& c = d.contact;
-  build_edge_neighbours(d);
   double e_max = 0;
   c.mu.clear();
   for (const Material& m : d.materials) {
@@ -491,7 +457,6 @@ void contact_breaks(EngineData& d) {
     c.dirty = c.topology_dirty = true;
     return;
   }
-  for (int v : s.vertices) rebuild_components_at(d, v);
   insert_candidates(d);
   trial_pairs(d);
   s.found.clear();

@@ -140,15 +140,13 @@ void fields(Ar& ar, Cracks& c) {
 
 template <class Ar>
 void fields(Ar& ar, ContactData& c) {
-  ROCKFDEM_CHECKPOINT_MEMBERS(ContactData, 29);
+  ROCKFDEM_CHECKPOINT_MEMBERS(ContactData, 27);
   ar.tag("CONT");
   ar.state(c.settings);
   ar.state(c.penalty);  // set_contact may come after construction: all of it is state
   ar.state(c.buffer);
   ar.state(c.mu);
-  ar.state(c.edge);
   ar.state(c.candidates);
-  ar.state(c.component);
   ar.state(c.boxes);
   ar.state(c.watch_nodes);
   ar.state(c.detect_pos);  // boxes of later candidates and the drift check start here
