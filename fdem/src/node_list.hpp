@@ -4,6 +4,7 @@
 #pragma once
 
 #include <algorithm>
+#include <limits>
 #include <vector>
 
 namespace rockfdem::fdem::detail {
@@ -15,21 +16,27 @@ inline long index_in(const std::vector<int>& list, long i) {
 }
 
 /// Walks an ascending node list along ascending nodes from `first` on: one
-/// search, then a step per node.
+/// search, then, per node, one comparison with the next listed node (the
+/// node loop asks for every node, nearly all of them unlisted).
 class NodeListCursor {
  public:
   NodeListCursor(const std::vector<int>& list, long first)
-      : list_(list), k_(std::lower_bound(list.begin(), list.end(), int(first)) - list.begin()) {}
+      : list_(list.data()),
+        size_(static_cast<long>(list.size())),
+        k_(std::lower_bound(list.begin(), list.end(), int(first)) - list.begin()),
+        next_(listed(k_)) {}
   /// Position of node i in the list, or -1; i not below the last node asked for.
   long at(long i) {
-    const long n = static_cast<long>(list_.size());
-    while (k_ < n && list_[k_] < i) ++k_;
-    return k_ < n && list_[k_] == i ? k_ : -1;
+    if (i < next_) return -1;
+    while (next_ < i) next_ = listed(++k_);
+    return next_ == i ? k_ : -1;
   }
 
  private:
-  const std::vector<int>& list_;
-  long k_;
+  /// The k-th listed node, or past every node when the list ends there.
+  long listed(long k) const { return k < size_ ? list_[k] : std::numeric_limits<long>::max(); }
+  const int* list_;
+  long size_, k_, next_;
 };
 
 }  // namespace rockfdem::fdem::detail

@@ -32,16 +32,19 @@ inline double dead_load(const Nodes& n, std::size_t i, int axis) {
 /// The dead loads of ascending nodes from `first` on (NodeListCursor).
 class DeadLoadCursor {
  public:
-  DeadLoadCursor(const DeadLoads& l, long first) : l_(l), nodes_(l.node, first) {}
+  DeadLoadCursor(const DeadLoads& l, long first)
+      : force_(l.force.data()), dense_(l.dense), none_{l.none_x, l.none_y}, nodes_(l.node, first) {}
   /// The load on node i, i not below the last node asked for.
   void at(long i, double& gx, double& gy) {
-    const long k = l_.dense ? i : nodes_.at(i);
-    gx = k >= 0 ? l_.force[2 * k] : l_.none_x;
-    gy = k >= 0 ? l_.force[2 * k + 1] : l_.none_y;
+    const long k = dense_ ? i : nodes_.at(i);
+    gx = k >= 0 ? force_[2 * k] : none_[0];
+    gy = k >= 0 ? force_[2 * k + 1] : none_[1];
   }
 
  private:
-  const DeadLoads& l_;
+  const double* force_;
+  bool dense_;
+  double none_[2];
   NodeListCursor nodes_;
 };
 
