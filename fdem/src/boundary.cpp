@@ -144,10 +144,13 @@ void apply_boundary_conditions(const std::vector<BoundaryCondition>& bcs, Engine
     if (kinematic) d.tag_nodes.push_back(std::move(tagged));
   }
   d.bc_records.clear();
-  for (std::size_t i = 0; i < nn; ++i) {
-    d.nodes.bc[i] = has[i] ? static_cast<int>(d.bc_records.size()) : -1;
-    if (has[i]) d.bc_records.push_back(rec[i]);
-  }
+  d.nodes.bc_node.clear();
+  for (std::size_t i = 0; i < nn; ++i)
+    if (has[i]) {
+      d.nodes.bc_node.push_back(static_cast<int>(i));
+      d.bc_records.push_back(rec[i]);
+    }
+  d.nodes.bc_node.shrink_to_fit();
   d.masses_dirty = true;  // external forces are rebuilt with the masses
 }
 

@@ -31,11 +31,16 @@ namespace rockfdem::fdem::detail {
 
 /// Bump when a saved member is added, removed or reordered: older files are
 /// then refused with a clear message instead of being misread.
-constexpr std::uint32_t kCheckpointVersion = 8;  // 2: energy ledger; 3: contact updates;
-                                                 // 4: mass scaling; 5: strength factors,
-                                                 // kinetic damping; 6: joint friction;
-                                                 // 7: compact engine arrays; 8: joint
-                                                 // friction per joint element
+constexpr std::uint32_t kCheckpointVersion = 13;  // 2: energy ledger; 3: contact updates;
+                                                  // 4: mass scaling; 5: strength factors,
+                                                  // kinetic damping; 6: joint friction;
+                                                  // 7: compact engine arrays; 8: joint
+                                                  // friction per joint element; 9: dead
+                                                  // loads of the loaded nodes only; 10:
+                                                  // contact topology from the slots;
+                                                  // 11: boundary records' nodes listed;
+                                                  // 12: no edge list in contact;
+                                                  // 13: no component labels
 constexpr std::size_t kCheckpointHeaderBytes = 32;
 constexpr std::size_t kCheckpointChecksumBytes = 8;
 

@@ -59,15 +59,8 @@ struct ContactData {
   ContactSettings settings;
   double penalty = 0, buffer = 0;
   std::vector<double> mu;  ///< per material: tan(residual friction angle)
-  // Static topology (setup): per triangle edge k (corners k -> k+1).
-  std::vector<int> edge_nbr;                          ///< neighbouring triangle or -1
-  std::vector<int> edge_crack;                        ///< crack element on the edge or -1
-  std::vector<int> vertex_tri_start, vertex_tri;      ///< CSR mesh vertex -> its triangles
-  std::vector<int> vertex_crack_start, vertex_crack;  ///< CSR mesh vertex -> crack elements
-                                                      ///< with an end there
   // Detection results.
   std::vector<int> candidates;     ///< free-surface triangles, ascending
-  std::vector<int> component;      ///< per node: intact-crack component at its vertex
   std::vector<double> boxes;       ///< 4 per candidate, grown by buffer / 2
   std::vector<int> watch_nodes;    ///< nodes of the candidates (displacement check)
   std::vector<double> detect_pos;  ///< per node: position at the last detection
@@ -80,7 +73,7 @@ struct ContactData {
   BreakScratch breaks;
   NarrowScratch narrow;
   bool dirty = true;           ///< re-detect before the next contact pass
-  bool topology_dirty = true;  ///< candidates and components must be rebuilt
+  bool topology_dirty = true;  ///< candidates must be rebuilt
   long detections = 0, steps_with_pairs = 0, steps_skipped = 0, touching = 0;
   long updates = 0;  ///< local updates after breakage (contact_breaks)
 };
@@ -95,8 +88,8 @@ void contact_setup(EngineData& d);
 void contact_detect(EngineData& d);
 
 /// After crack elements broke in this step (broken_step == step): their
-/// triangles become candidates, the components at their end vertices are
-/// rebuilt, and the pairs that the breakage allows are inserted, tested at
+/// triangles become candidates, and the pairs that the breakage allows
+/// (the components at their end vertices may split) are inserted, tested at
 /// the positions of the last detection. The result equals a full detection
 /// at those positions (contact_detect.cpp explains why that is safe). Falls
 /// back to a full detection when many triangles change at once.

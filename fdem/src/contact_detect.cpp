@@ -23,101 +23,89 @@
 namespace rockfdem::fdem::detail {
 namespace {
 
-int vertex_of(const EngineData& d, int t, int k) { return d.nodes.vertex[d.tris.nodes[3 * t + k]]; }
+/// What lies across a triangle edge: its crack element and the other
+/// triangle, each -1 where there is none.
+struct Across {
+  int crack = -1, tri = -1;
+};
 
-/// Neighbour across each triangle edge, from the mesh vertices of its nodes.
-void build_edge_neighbours(EngineData& d) {
-  const int nt = static_cast<int>(d.tris.size());
-  struct Use {
-    std::uint64_t key;
-    int tri, local;
-  };
-  std::vector<Use> uses;
-  uses.reserve(3 * nt);
-  for (int t = 0; t < nt; ++t)
-    for (int k = 0; k < 3; ++k) {
-      const auto a = static_cast<std::uint64_t>(vertex_of(d, t, k));
-      const auto b = static_cast<std::uint64_t>(vertex_of(d, t, (k + 1) % 3));
-      uses.push_back({(std::max(a, b) << 32) | std::min(a, b), t, k});
+/// Across edge k of triangle t (corners k -> k+1), from the force slots of
+/// its first corner's node a, b the second's: a crack element on the edge
+/// has a as its node 0 (t its first triangle, b its node 1) or as its
+/// node 2 (t its second, b its node 3); without one (no fracture on either
+/// side) the neighbour shares both nodes.
+Across across_edge(const EngineData& d, int t, int k) {
+  const int a = d.tris.nodes[3 * t + k], b = d.tris.nodes[3 * t + (k + 1) % 3];
+  const Nodes& n = d.nodes;
+  const Cracks& c = d.cracks;
+  const int slot0 = static_cast<int>(d.crack_slot0());
+  for (int q = n.slot_start[a]; q < n.slot_start[a + 1]; ++q) {
+    const int entry = n.slot_index[q], s = entry_slot(entry);
+    if (s < slot0) {
+      const int u = s / 3, *nu = &d.tris.nodes[3 * u];
+      if (u != t && (nu[0] == b || nu[1] == b || nu[2] == b)) return {-1, u};
+      continue;
     }
-  std::sort(uses.begin(), uses.end(), [](const Use& p, const Use& q) {
-    return p.key != q.key ? p.key < q.key : p.tri < q.tri;
-  });
-  ContactData& c = d.contact;
-  c.edge_nbr.assign(3 * nt, -1);
-  c.edge_crack.assign(3 * nt, -1);
-  for (std::size_t i = 0; i + 1 < uses.size(); ++i)
-    if (uses[i].key == uses[i + 1].key) {
-      c.edge_nbr[3 * uses[i].tri + uses[i].local] = uses[i + 1].tri;
-      c.edge_nbr[3 * uses[i + 1].tri + uses[i + 1].local] = uses[i].tri;
-    }
-  for (std::size_t e = 0; e < d.cracks.size(); ++e)
-    for (int side = 0; side < 2; ++side) {
-      const int t = d.cracks.tri[2 * e + side], other = d.cracks.tri[2 * e + 1 - side];
-      for (int k = 0; k < 3; ++k)
-        if (c.edge_nbr[3 * t + k] == other) c.edge_crack[3 * t + k] = static_cast<int>(e);
-    }
+    const int e = (s - slot0) / 2, j = (s - slot0) % 2, side = entry & 1;
+    if (j == side && c.tri[2 * e + side] == t && c.nodes[4 * e + 1 + 2 * side] == b)
+      return {e, c.tri[2 * e + 1 - side]};
+  }
+  return {};
 }
 
-/// Fills a CSR (start, items) over n_rows rows from (row, item) uses given
-/// in item order, so every row lists its items ascending.
-template <class Uses>
-void fill_csr(int n_rows, Uses uses, std::vector<int>& start, std::vector<int>& items) {
-  start.assign(n_rows + 1, 0);
-  uses([&](int row, int) { ++start[row + 1]; });
-  for (int r = 0; r < n_rows; ++r) start[r + 1] += start[r];
-  items.resize(start[n_rows]);
-  std::vector<int> next(start.begin(), start.end() - 1);
-  uses([&](int row, int item) { items[next[row]++] = item; });
-}
-
-/// Triangles and crack elements per mesh vertex: what a breakage touches.
-void build_vertex_lists(EngineData& d) {
-  ContactData& c = d.contact;
-  const int nv = static_cast<int>(d.vertex_node_start.size()) - 1;
-  fill_csr(
-      nv,
-      [&](auto use) {
-        for (int t = 0; t < static_cast<int>(d.tris.size()); ++t)
-          for (int k = 0; k < 3; ++k) use(vertex_of(d, t, k), t);
-      },
-      c.vertex_tri_start, c.vertex_tri);
-  fill_csr(
-      nv,
-      [&](auto use) {
-        for (int e = 0; e < static_cast<int>(d.cracks.size()); ++e)
-          for (int end = 0; end < 2; ++end) use(d.nodes.vertex[d.cracks.nodes[4 * e + end]], e);
-      },
-      c.vertex_crack_start, c.vertex_crack);
+/// Calls f(slot) for each force slot of the nodes at mesh vertex v: the
+/// triangles and crack elements with a corner or an end there, from the
+/// node incidence the gather uses (no lists of their own).
+template <class F>
+void each_slot_at(const EngineData& d, int v, F f) {
+  const Nodes& n = d.nodes;
+  for (int i = d.vertex_node_start[v]; i < d.vertex_node_start[v + 1]; ++i) {
+    const int node = d.vertex_nodes[i];
+    for (int k = n.slot_start[node]; k < n.slot_start[node + 1]; ++k)
+      f(entry_slot(n.slot_index[k]));
+  }
 }
 
 bool free_edge(const EngineData& d, int t, int k) {
-  const int nbr = d.contact.edge_nbr[3 * t + k];
-  if (nbr < 0 || !d.tris.active[nbr]) return true;
-  const int crack = d.contact.edge_crack[3 * t + k];
-  return crack >= 0 && d.cracks.state[crack] == std::uint8_t(CrackState::kBroken);
+  const Across x = across_edge(d, t, k);
+  if (x.tri < 0 || !d.tris.active[x.tri]) return true;
+  return x.crack >= 0 && d.cracks.state[x.crack] == std::uint8_t(CrackState::kBroken);
 }
 
-/// Per node, a label shared by the nodes its vertex's intact crack elements
-/// join (union-find, serial and in element order: deterministic).
-void build_components(EngineData& d) {
-  std::vector<int>& parent = d.contact.component;
-  const int nn = static_cast<int>(d.nodes.size());
-  parent.resize(nn);
-  for (int i = 0; i < nn; ++i) parent[i] = i;
+/// Whether nodes x and y of one mesh vertex are joined by a chain of
+/// intact crack elements around it: a union-find over that vertex's nodes
+/// and the crack ends there (from the nodes' force slots), run when asked;
+/// a vertex has a few nodes.
+bool joined_at_vertex(const EngineData& d, int x, int y) {
+  if (x == y) return true;
+  const int v = d.nodes.vertex[x];
+  const int n0 = d.vertex_node_start[v], k = d.vertex_node_start[v + 1] - n0;
+  const int* at = &d.vertex_nodes[n0];
+  constexpr int kSmall = 64;
+  int small[kSmall];
+  thread_local std::vector<int> large;  // grown once for a vertex of many nodes
+  if (k > kSmall) large.resize(k);
+  int* parent = k > kSmall ? large.data() : small;
+  for (int i = 0; i < k; ++i) parent[i] = i;
+  auto local = [&](int node) { return int(std::find(at, at + k, node) - at); };
   auto find = [&](int i) {
     while (parent[i] != i) i = parent[i] = parent[parent[i]];
     return i;
   };
-  for (std::size_t e = 0; e < d.cracks.size(); ++e) {
-    if (!d.cracks.active[e] || d.cracks.state[e] == std::uint8_t(CrackState::kBroken)) continue;
-    const int* nd = &d.cracks.nodes[4 * e];
-    for (int end = 0; end < 2; ++end) {
-      const int a = find(nd[end]), b = find(nd[3 - end]);
+  const Nodes& n = d.nodes;
+  const int slot0 = static_cast<int>(d.crack_slot0());
+  for (int i = 0; i < k; ++i)
+    for (int q = n.slot_start[at[i]]; q < n.slot_start[at[i] + 1]; ++q) {
+      const int s = entry_slot(n.slot_index[q]);
+      if (s < slot0) continue;
+      const int e = (s - slot0) / 2;
+      if (!d.cracks.active[e] || d.cracks.state[e] == std::uint8_t(CrackState::kBroken)) continue;
+      const int* nd = &d.cracks.nodes[4 * e];
+      const int end = n.vertex[nd[0]] == v ? 0 : 1;  // joins nd[end] and nd[3 - end]
+      const int a = find(i), b = find(local(nd[end] == at[i] ? nd[3 - end] : nd[end]));
       if (a != b) parent[std::max(a, b)] = std::min(a, b);
     }
-  }
-  for (int i = 0; i < nn; ++i) parent[i] = find(i);
+  return find(local(x)) == find(local(y));
 }
 
 void build_candidates(EngineData& d) {
@@ -127,7 +115,6 @@ void build_candidates(EngineData& d) {
     if (!d.tris.active[t]) continue;
     if (free_edge(d, t, 0) || free_edge(d, t, 1) || free_edge(d, t, 2)) c.candidates.push_back(t);
   }
-  build_components(d);
   // Nodes whose displacement decides when to detect again.
   c.watch_nodes.clear();
   for (int t : c.candidates)
@@ -180,13 +167,13 @@ bool may_touch(const void* context, int i, int j) {
     }
   if (shared >= 2) {  // an edge: a pair only once its crack element broke
     for (int k = 0; k < 3; ++k)
-      if (d.contact.edge_nbr[3 * a + k] == b) {
-        const int crack = d.contact.edge_crack[3 * a + k];
+      if (const Across x = across_edge(d, a, k); x.tri == b) {
+        const int crack = x.crack;
         return crack >= 0 && d.cracks.state[crack] == std::uint8_t(CrackState::kBroken);
       }
     return false;
   }
-  if (shared == 1 && d.contact.component[na[ka]] == d.contact.component[nb[kb]]) return false;
+  if (shared == 1 && joined_at_vertex(d, na[ka], nb[kb])) return false;
   return !separated(d, a, b, d.contact.buffer);
 }
 
@@ -269,30 +256,6 @@ void build_gather(EngineData& d) {
   for (int t : c.gather_tri) index[t] = -1;
 }
 
-/// Component labels of the nodes at mesh vertex v from scratch: the same
-/// union-find as build_components, restricted to the crack elements with an
-/// end at v (they join nodes of v only). Every label is the smallest node id
-/// of its component, as after a full build.
-void rebuild_components_at(EngineData& d, int v) {
-  ContactData& c = d.contact;
-  std::vector<int>& parent = c.component;
-  const int n0 = d.vertex_node_start[v], n1 = d.vertex_node_start[v + 1];
-  for (int i = n0; i < n1; ++i) parent[d.vertex_nodes[i]] = d.vertex_nodes[i];
-  auto find = [&](int i) {
-    while (parent[i] != i) i = parent[i] = parent[parent[i]];
-    return i;
-  };
-  for (int k = c.vertex_crack_start[v]; k < c.vertex_crack_start[v + 1]; ++k) {
-    const int e = c.vertex_crack[k];
-    if (!d.cracks.active[e] || d.cracks.state[e] == std::uint8_t(CrackState::kBroken)) continue;
-    const int* nd = &d.cracks.nodes[4 * e];
-    const int end = d.nodes.vertex[nd[0]] == v ? 0 : 1;
-    const int a = find(nd[end]), b = find(nd[3 - end]);
-    if (a != b) parent[std::max(a, b)] = std::min(a, b);
-  }
-  for (int i = n0; i < n1; ++i) parent[d.vertex_nodes[i]] = find(d.vertex_nodes[i]);
-}
-
 /// Index of triangle t in the (ascending) candidates, or -1.
 int candidate_index(const ContactData& c, int t) {
   const auto it = std::lower_bound(c.candidates.begin(), c.candidates.end(), t);
@@ -350,9 +313,15 @@ void trial_pairs(EngineData& d) {
       if (boxes_overlap(box, &c.boxes[4 * j])) add(t, c.candidates[j]);
   }
   for (int e : s.cracks) add(d.cracks.tri[2 * e], d.cracks.tri[2 * e + 1]);
-  for (int v : s.vertices)
-    for (int i = c.vertex_tri_start[v]; i < c.vertex_tri_start[v + 1]; ++i)
-      for (int j = i + 1; j < c.vertex_tri_start[v + 1]; ++j) add(c.vertex_tri[i], c.vertex_tri[j]);
+  const int slot0 = static_cast<int>(d.crack_slot0());
+  for (int v : s.vertices) {
+    s.ints.clear();  // the triangles with a corner at v, each once
+    each_slot_at(d, v, [&](int slot) {
+      if (slot < slot0) s.ints.push_back(slot / 3);
+    });
+    for (std::size_t i = 0; i < s.ints.size(); ++i)
+      for (std::size_t j = i + 1; j < s.ints.size(); ++j) add(s.ints[i], s.ints[j]);
+  }
   std::sort(s.trial.begin(), s.trial.end());
   s.trial.erase(std::unique(s.trial.begin(), s.trial.end()), s.trial.end());
 }
@@ -394,7 +363,6 @@ double insert_pairs(EngineData& d) {
 
 void contact_setup(EngineData& d) {
   ContactData& c = d.contact;
-  build_edge_neighbours(d);
   double e_max = 0;
   c.mu.clear();
   for (const Material& m : d.materials) {
@@ -415,7 +383,6 @@ void contact_setup(EngineData& d) {
   // (pairs mostly neighbours when pressed; fewer far pairs when flying apart,
   // at a few detections per 1000 steps).
   c.buffer = c.settings.buffer > 0 ? c.settings.buffer : 0.125 * mean_edge;
-  build_vertex_lists(d);
   c.dirty = c.topology_dirty = true;
 }
 
@@ -490,7 +457,6 @@ void contact_breaks(EngineData& d) {
     c.dirty = c.topology_dirty = true;
     return;
   }
-  for (int v : s.vertices) rebuild_components_at(d, v);
   insert_candidates(d);
   trial_pairs(d);
   s.found.clear();

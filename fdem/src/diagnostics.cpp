@@ -39,21 +39,21 @@ double Engine::unbalanced_force_ratio() const {
   const auto& d = impl_->d;
   const long nn = static_cast<long>(d.nodes.size());
   // A component counts only when free: a constrained one carries a reaction.
-  auto free_x = [&](long i) {
-    const int b = d.nodes.bc[i];
-    return d.nodes.mass[i] > 0 && (b < 0 || d.bc_records[b].x == Constraint::kFree);
-  };
-  auto free_y = [&](long i) {
-    const int b = d.nodes.bc[i];
-    return d.nodes.mass[i] > 0 && (b < 0 || d.bc_records[b].y == Constraint::kFree);
+  auto free = [&](long i, bool& x, bool& y) {
+    const long b = d.nodes.bc(i);
+    x = d.nodes.mass[i] > 0 && (b < 0 || d.bc_records[b].x == Constraint::kFree);
+    y = d.nodes.mass[i] > 0 && (b < 0 || d.bc_records[b].y == Constraint::kFree);
   };
   const double net = detail::block_sum(nn, d.threads, [&](long i) {
+    bool fx_on, fy_on;
+    free(i, fx_on, fy_on);
     double fx, fy;
     detail::node_force(d, i, fx, fy);
-    return (free_x(i) ? std::fabs(fx) : 0.0) + (free_y(i) ? std::fabs(fy) : 0.0);
+    return (fx_on ? std::fabs(fx) : 0.0) + (fy_on ? std::fabs(fy) : 0.0);
   });
   const double gross = detail::block_sum(nn, d.threads, [&](long i) {
-    const bool fx_on = free_x(i), fy_on = free_y(i);
+    bool fx_on, fy_on;
+    free(i, fx_on, fy_on);
     double s = (fx_on ? std::fabs(detail::dead_load(d.nodes, i, 0)) : 0.0) +
                (fy_on ? std::fabs(detail::dead_load(d.nodes, i, 1)) : 0.0);
     for (int k = d.nodes.slot_start[i]; k < d.nodes.slot_start[i + 1]; ++k) {
@@ -96,7 +96,7 @@ std::array<double, 2> Engine::boundary_force(int tag) const {
       // force on it: f_bc = -(f_internal + f_external), per constrained component.
       double fx, fy;
       detail::node_force(d, i, fx, fy);
-      const auto& r = d.bc_records[d.nodes.bc[i]];
+      const auto& r = d.bc_records[d.nodes.bc(i)];
       if (r.x != Constraint::kFree) sx -= fx;
       if (r.y != Constraint::kFree) sy -= fy;
     }
@@ -130,8 +130,10 @@ void add_parts(std::vector<MemoryPart>& parts, const char* record, const char* n
 std::vector<MemoryPart> memory_parts(const detail::EngineData& d) {
   std::vector<MemoryPart> p;
   const auto& n = d.nodes;
-  add_parts(p, "nodes", "pos vel vertex_pos mass fext bc vertex slot_start slot_index", n.pos,
-            n.vel, n.vertex_pos, n.mass, n.fext, n.bc, n.vertex, n.slot_start, n.slot_index);
+  add_parts(p, "nodes",
+            "pos vel vertex_pos mass fext_node fext bc_node vertex slot_start slot_index", n.pos,
+            n.vel, n.vertex_pos, n.mass, n.fext.node, n.fext.force, n.bc_node, n.vertex,
+            n.slot_start, n.slot_index);
   const auto& t = d.tris;
   add_parts(p, "tris",
             "nodes ref_inv area0 eta alpha sigma0 viscous_stress mass_scale material active",
@@ -147,13 +149,11 @@ std::vector<MemoryPart> memory_parts(const detail::EngineData& d) {
             d.slots, d.block_partial, d.energy_partial, d.vertex_nodes, d.vertex_node_start);
   const auto& k = d.contact;
   add_parts(p, "contact",
-            "edge_nbr edge_crack vertex_tri_start vertex_tri vertex_crack_start vertex_crack "
-            "component candidates boxes watch_nodes detect_pos pairs old_pairs friction "
+            "candidates boxes watch_nodes detect_pos pairs old_pairs friction "
             "old_friction pair_force gather_tri gather_start gather_entry energy_partial",
-            k.edge_nbr, k.edge_crack, k.vertex_tri_start, k.vertex_tri, k.vertex_crack_start,
-            k.vertex_crack, k.component, k.candidates, k.boxes, k.watch_nodes, k.detect_pos,
-            k.pairs, k.old_pairs, k.friction, k.old_friction, k.pair_force, k.gather_tri,
-            k.gather_start, k.gather_entry, k.energy_partial);
+            k.candidates, k.boxes, k.watch_nodes, k.detect_pos, k.pairs, k.old_pairs, k.friction,
+            k.old_friction, k.pair_force, k.gather_tri, k.gather_start, k.gather_entry,
+            k.energy_partial);
   const auto& g = k.grid;
   add_parts(p, "contact.grid", "cell cell_start items count offset found", g.cell, g.cell_start,
             g.items, g.count, g.offset, g.found);

@@ -51,6 +51,11 @@ void fields(Ar& ar, NodalLoad& l) {
 }
 
 template <class Ar>
+void fields(Ar& ar, DeadLoads& l) {
+  each_member(ar, l, l.dense, l.node, l.force, l.none_x, l.none_y);
+}
+
+template <class Ar>
 void fields(Ar& ar, TagNodes& t) {
   each_member(ar, t, t.tag, t.nodes);
 }
@@ -93,7 +98,7 @@ void fields(Ar& ar, Nodes& n) {
   ar.model(n.vertex_pos);
   ar.state(n.mass);  // rebuilt only when masses_dirty: saved as they are
   ar.state(n.fext);
-  ar.state(n.bc);
+  ar.state(n.bc_node);
   ar.model(n.vertex);
   ar.model(n.slot_start);
   ar.model(n.slot_index);
@@ -135,20 +140,13 @@ void fields(Ar& ar, Cracks& c) {
 
 template <class Ar>
 void fields(Ar& ar, ContactData& c) {
-  ROCKFDEM_CHECKPOINT_MEMBERS(ContactData, 34);
+  ROCKFDEM_CHECKPOINT_MEMBERS(ContactData, 27);
   ar.tag("CONT");
   ar.state(c.settings);
   ar.state(c.penalty);  // set_contact may come after construction: all of it is state
   ar.state(c.buffer);
   ar.state(c.mu);
-  ar.state(c.edge_nbr);
-  ar.state(c.edge_crack);
-  ar.state(c.vertex_tri_start);
-  ar.state(c.vertex_tri);
-  ar.state(c.vertex_crack_start);
-  ar.state(c.vertex_crack);
   ar.state(c.candidates);
-  ar.state(c.component);
   ar.state(c.boxes);
   ar.state(c.watch_nodes);
   ar.state(c.detect_pos);  // boxes of later candidates and the drift check start here

@@ -18,6 +18,7 @@
 
 #include "contact.hpp"
 #include "energy.hpp"
+#include "node_list.hpp"
 #include "rockfdem/fdem/crack_law.hpp"
 #include "rockfdem/fdem/model_input.hpp"
 
@@ -36,17 +37,38 @@ struct SolidConstants {
   bool plane_strain = true;  ///< sigma_zz follows from J (plane strain) or is 0 (plane stress)
 };
 
+/// Constant nodal forces (gravity + tractions [N/m]). With gravity every
+/// node carries its weight and `force` holds 2 per node; without, only the
+/// few nodes of loaded boundaries carry one: `node` lists them ascending
+/// and `force` holds 2 per entry. Both empty without any load.
+struct DeadLoads {
+  bool dense = false;             ///< `force` is per node (gravity)
+  std::vector<int> node;          ///< the loaded nodes, ascending (not dense)
+  std::vector<double> force;      ///< interleaved x, y
+  double none_x = 0, none_y = 0;  ///< the force of an unlisted node: 0 times gravity (its
+                                  ///< zero's sign as a per-node array would hold it)
+  /// Index of node i's force in `force` / 2, or -1 without one.
+  long find(long i) const {
+    if (dense) return force.empty() ? -1 : i;
+    return index_in(node, i);
+  }
+};
+
 struct Nodes {
   std::vector<double> pos, vel;    ///< interleaved x, y
   std::vector<double> vertex_pos;  ///< per mesh vertex, interleaved: the displacement origin
                                    ///< (nodes of one vertex share it: mesh_position())
   std::vector<double> mass;        ///< lumped; 0: no active triangle (frozen)
-  std::vector<double> fext;        ///< interleaved: gravity + tractions [N/m]; empty without any
-  std::vector<int> bc;             ///< -1 or index into BoundaryRecords
+  DeadLoads fext;                  ///< gravity + tractions (dead loads)
+  std::vector<int> bc_node;        ///< nodes with a boundary record, ascending; the
+                                   ///< k-th one's record is bc_records[k]
   std::vector<int> vertex;         ///< mesh vertex of each node
   std::vector<int> slot_start;     ///< CSR over force slots, n + 1 entries
   std::vector<int> slot_index;     ///< 2 slot + 1 where the node takes the slot's negative
   std::size_t size() const { return mass.size(); }
+  /// Node i's index into the boundary records, or -1 (a search: the node
+  /// loop walks bc_node with a NodeListCursor).
+  long bc(long i) const { return index_in(bc_node, i); }
   /// Coordinate `axis` of node i's mesh vertex.
   double mesh_position(std::size_t i, int axis) const { return vertex_pos[2 * vertex[i] + axis]; }
 };

@@ -15,8 +15,9 @@ namespace {
 void settle_free_components(EngineData& d) {
   Nodes& n = d.nodes;
   const double back = 0.5 * d.energy.last_dt;
+  NodeListCursor records(n.bc_node, 0);
   for (std::size_t i = 0; i < n.size(); ++i) {
-    const int b = n.bc[i];
+    const long b = records.at(long(i));
     const bool free[2] = {b < 0 || d.bc_records[b].x == Constraint::kFree,
                           b < 0 || d.bc_records[b].y == Constraint::kFree};
     for (int k = 0; k < 2; ++k) {

@@ -68,24 +68,39 @@ void keep_momentum(EngineData& d, const std::vector<double>& old_scale) {
 }
 
 /// Gravity acts on the true masses, whatever the scaling of the inertia,
-/// times the softening of each triangle (weight_mass).
+/// times the softening of each triangle (weight_mass): a force on every
+/// node. Without gravity only the nodes of loaded boundaries carry one.
 void refresh_external_forces(EngineData& d) {
-  Nodes& n = d.nodes;
+  DeadLoads& f = d.nodes.fext;
   const bool gravity = d.gravity[0] != 0.0 || d.gravity[1] != 0.0;
   d.dead_loads = gravity || !d.loads.empty();
-  if (!d.dead_loads) {  // no array of zeros: node_force reads an empty fext as zero
-    std::vector<double>().swap(n.fext);
-    return;
+  f = DeadLoads{};  // no arrays of zeros: an empty `force` reads as zero
+  if (!d.dead_loads) return;
+  f.dense = gravity;
+  if (gravity) {
+    f.force.resize(2 * d.nodes.size());
+    for (std::size_t i = 0; i < d.nodes.size(); ++i) {
+      const double m = weight_mass(d, long(i));
+      f.force[2 * i] = m * d.gravity[0];
+      f.force[2 * i + 1] = m * d.gravity[1];
+    }
+  } else {
+    for (const NodalLoad& l : d.loads) f.node.push_back(l.node);
+    std::sort(f.node.begin(), f.node.end());
+    f.node.erase(std::unique(f.node.begin(), f.node.end()), f.node.end());
+    f.node.shrink_to_fit();
+    f.none_x = 0.0 * d.gravity[0];
+    f.none_y = 0.0 * d.gravity[1];
+    f.force.resize(2 * f.node.size());
+    for (std::size_t k = 0; k < f.node.size(); ++k) {
+      f.force[2 * k] = f.none_x;
+      f.force[2 * k + 1] = f.none_y;
+    }
   }
-  n.fext.assign(2 * n.size(), 0.0);
-  for (std::size_t i = 0; i < n.size(); ++i) {
-    const double m = gravity ? weight_mass(d, long(i)) : 0.0;
-    n.fext[2 * i] = m * d.gravity[0];
-    n.fext[2 * i + 1] = m * d.gravity[1];
-  }
-  for (const NodalLoad& l : d.loads) {
-    n.fext[2 * l.node] += l.fx;
-    n.fext[2 * l.node + 1] += l.fy;
+  for (const NodalLoad& l : d.loads) {  // in their order, as they always were added
+    const long k = f.find(l.node);
+    f.force[2 * k] += l.fx;
+    f.force[2 * k + 1] += l.fy;
   }
 }
 
@@ -159,13 +174,14 @@ struct NodeSums {
 /// dead load's is inside it), and the damping and dashpot it overrode did
 /// nothing; a free component books its dead load, dashpot and damping.
 [[gnu::noinline]] void boundary_node_work(const EngineData& d, long i, double vx0, double vy0,
-                                          double vx, double vy, bool free_x, bool free_y, double cx,
-                                          double cy, double lx, double ly, NodeSums& sum) {
+                                          double vx, double vy, bool free_x, bool free_y, double gx,
+                                          double gy, double cx, double cy, double lx, double ly,
+                                          NodeSums& sum) {
   const double half_dt = 0.5 * d.dt;
   const double hx = (vx0 + vx) * half_dt, hy = (vy0 + vy) * half_dt;
-  const double m = d.nodes.mass[i], gx = dead_load(d.nodes, i, 0), gy = dead_load(d.nodes, i, 1);
+  const double m = d.nodes.mass[i];
   double ex, ey;
-  node_force(d, i, ex, ey);  // element forces + dead load
+  node_force(d, i, gx, gy, ex, ey);  // element forces + dead load
   sum.external += free_x ? gx * hx : m * (vx - vx0) * 0.5 * (vx + vx0) - (ex - gx) * hx;
   sum.external += free_y ? gy * hy : m * (vy - vy0) * 0.5 * (vy + vy0) - (ey - gy) * hy;
   sum.absorbing += (free_x ? cx * hx : 0.0) + (free_y ? cy * hy : 0.0);
@@ -200,14 +216,18 @@ long node_loop(EngineData& d) {
   for (long blk = 0; blk < n_blocks; ++blk) {
     NodeSums sum;
     const long end = std::min(nn, (blk + 1) * kNodeBlock);
+    DeadLoadCursor loads(n.fext, blk * kNodeBlock);
+    NodeListCursor records(n.bc_node, blk * kNodeBlock);
     for (long i = blk * kNodeBlock; i < end; ++i) {
       // 1/m here rather than stored: the same bits, 8 B per node less.
       if (!(n.mass[i] > 0.0)) continue;  // no active triangle: frozen
       const double inv_m = 1.0 / n.mass[i];
+      double gx = 0.0, gy = 0.0;  // dead load
+      if (kLoaded) loads.at(i, gx, gy);
       double fx, fy;
-      node_force(d, i, fx, fy);
+      node_force(d, i, gx, gy, fx, fy);
       const double vx0 = n.vel[2 * i], vy0 = n.vel[2 * i + 1];
-      const int b = n.bc[i];
+      const long b = records.at(i);
       double cx = 0, cy = 0;  // dashpot
       if (b >= 0) {
         cx = rec[b].cxx * vx0 + rec[b].cxy * vy0;
@@ -237,7 +257,7 @@ long node_loop(EngineData& d) {
         bool free_x = true, free_y = true;
         if (rec[b].x != Constraint::kFree) vx = rec[b].vx, free_x = false;
         if (rec[b].y != Constraint::kFree) vy = rec[b].vy, free_y = false;
-        boundary_node_work(d, i, vx0, vy0, vx, vy, free_x, free_y, cx, cy, lx, ly, sum);
+        boundary_node_work(d, i, vx0, vy0, vx, vy, free_x, free_y, gx, gy, cx, cy, lx, ly, sum);
         if (!std::isfinite(vx + vy)) first_bad = i < first_bad ? i : first_bad;
       } else {  // unweighted: the unstable mode's sign flip shows without masses
         // A non-finite vx or vy makes this product, and the block's sum,
@@ -245,8 +265,7 @@ long node_loop(EngineData& d) {
         sum.dot += vx0 * vx + vy0 * vy;
         sum.kin += vx0 * vx0 + vy0 * vy0;
         if (kDamped) sum.damping += (lx * (vx0 + vx) + ly * (vy0 + vy)) * half_dt;
-        if (kLoaded)
-          sum.external += (n.fext[2 * i] * (vx0 + vx) + n.fext[2 * i + 1] * (vy0 + vy)) * half_dt;
+        if (kLoaded) sum.external += (gx * (vx0 + vx) + gy * (vy0 + vy)) * half_dt;
       }
       n.vel[2 * i] = vx;
       n.vel[2 * i + 1] = vy;

@@ -21,15 +21,38 @@ void refresh_masses(EngineData& d);
 /// Returns the lowest node whose new velocity is not finite, or -1.
 long node_update(EngineData& d);
 
-/// Dead load on node i: fext, or zero when no node has one (fext empty).
+/// Dead load on node i (a search: not for the node loop, which walks the
+/// loaded nodes with a DeadLoadCursor); zero when no node has one.
 inline double dead_load(const Nodes& n, std::size_t i, int axis) {
-  return n.fext.empty() ? 0.0 : n.fext[2 * i + axis];
+  if (n.fext.force.empty()) return 0.0;
+  const long k = n.fext.find(long(i));
+  return k >= 0 ? n.fext.force[2 * k + axis] : (axis == 0 ? n.fext.none_x : n.fext.none_y);
 }
 
-/// Net force on node i from its slots and external load (no damping).
-inline void node_force(const EngineData& d, std::size_t i, double& fx, double& fy) {
-  fx = dead_load(d.nodes, i, 0);
-  fy = dead_load(d.nodes, i, 1);
+/// The dead loads of ascending nodes from `first` on (NodeListCursor).
+class DeadLoadCursor {
+ public:
+  DeadLoadCursor(const DeadLoads& l, long first)
+      : force_(l.force.data()), dense_(l.dense), none_{l.none_x, l.none_y}, nodes_(l.node, first) {}
+  /// The load on node i, i not below the last node asked for.
+  void at(long i, double& gx, double& gy) {
+    const long k = dense_ ? i : nodes_.at(i);
+    gx = k >= 0 ? force_[2 * k] : none_[0];
+    gy = k >= 0 ? force_[2 * k + 1] : none_[1];
+  }
+
+ private:
+  const double* force_;
+  bool dense_;
+  double none_[2];
+  NodeListCursor nodes_;
+};
+
+/// Net force on node i from its slots, starting from the dead load gx, gy.
+inline void node_force(const EngineData& d, std::size_t i, double gx, double gy, double& fx,
+                       double& fy) {
+  fx = gx;
+  fy = gy;
   const double* slots = d.slots.data();
   for (int k = d.nodes.slot_start[i]; k < d.nodes.slot_start[i + 1]; ++k) {
     // The sign is +-1: x + (-1 y) has the bits of x + (-y), the negative
@@ -39,6 +62,11 @@ inline void node_force(const EngineData& d, std::size_t i, double& fx, double& f
     fx += sign * slots[2 * s];
     fy += sign * slots[2 * s + 1];
   }
+}
+
+/// Net force on node i from its slots and external load (no damping).
+inline void node_force(const EngineData& d, std::size_t i, double& fx, double& fy) {
+  node_force(d, i, dead_load(d.nodes, i, 0), dead_load(d.nodes, i, 1), fx, fy);
 }
 
 }  // namespace rockfdem::fdem::detail

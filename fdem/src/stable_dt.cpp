@@ -110,7 +110,7 @@ double contact_omega2(const EngineData& d) {
 }
 
 double dashpot_max(const EngineData& d, std::size_t n) {
-  const int b = d.nodes.bc[n];
+  const long b = d.nodes.bc(long(n));
   if (b < 0) return 0.0;
   const BoundaryRecord& r = d.bc_records[b];
   const double mean = 0.5 * (r.cxx + r.cyy), half = 0.5 * (r.cxx - r.cyy);

@@ -50,7 +50,6 @@ void build_nodes(const ModelInput& in, EngineData& d) {
   n.pos.resize(2 * nn);
   n.vel.assign(2 * nn, 0.0);
   n.mass.assign(nn, 0.0);
-  n.bc.assign(nn, -1);
   n.vertex_pos.resize(2 * nv);
   for (std::size_t v = 0; v < nv; ++v) {
     n.vertex_pos[2 * v] = in.x[v];

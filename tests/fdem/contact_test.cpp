@@ -270,7 +270,6 @@ TEST(Contact, local_update_after_breakage_equals_a_full_detection) {
     detail::contact_detect(full);
     const detail::ContactData &a = d.contact, &b = full.contact;
     EXPECT_EQ(a.candidates, b.candidates) << "round " << round;
-    EXPECT_EQ(a.component, b.component) << "round " << round;
     EXPECT_EQ(a.boxes, b.boxes) << "round " << round;
     EXPECT_EQ(a.watch_nodes, b.watch_nodes) << "round " << round;
     EXPECT_EQ(a.pairs, b.pairs) << "round " << round;
