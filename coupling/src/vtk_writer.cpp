@@ -1,5 +1,6 @@
 // VtkGrid -> vtkUnstructuredGrid -> .vtu (appended, raw binary, zlib).
-// The only translation unit of the writers that includes VTK headers.
+// The file writers' VTK code (vtk_messages.cpp routes VTK's messages; the
+// plots under coupling/plots/ include VTK on their own).
 #include "rockfdem/coupling/vtk_writer.hpp"
 
 #include <vtkCellArray.h>
