@@ -18,7 +18,12 @@ nlohmann::json tunnel_summary() {
   bolts.push_back({{"max_tension_kN_per_bar", 80.8}, {"broken", true}});
   bolts.push_back({{"max_tension_kN_per_bar", 12.0}, {"broken", true}});
   return {{"monitors", {{"vault", {{"radial_mm", 48.6}, {"explicit_share", 0.57}}}}},
-          {"broken_zone", {{"depth_m", 5.99}}},
+          {"broken_zone",
+           {{"depth_m", 5.99},
+            {"along_rays",
+             {{"vault", {{"depth_m", 0.5}, {"broken_or_grouted_depth_m", 3.1}}},
+              {"left_wall", {{"depth_m", 0.0}, {"broken_or_grouted_depth_m", 0.84}}},
+              {"invert", {{"depth_m", 3.5}, {"broken_or_grouted_depth_m", 4.4}}}}}}},
           {"lining", {{"min_safety_factor", 0.56}}},
           {"bolts", {{"each", bolts}}},
           {"support", {{"verdict", "overstressed"}}},
@@ -33,6 +38,8 @@ TEST(StudyFigures, a_tunnel_runs_support_and_damage_become_columns) {
   const nlohmann::json f = study::key_figures(tunnel_summary());
   EXPECT_DOUBLE_EQ(f.at("vault_explicit_share").get<double>(), 0.57);
   EXPECT_DOUBLE_EQ(f.at("broken_depth_m").get<double>(), 5.99);
+  // The least ray's zone broken at some time, not its depth broken now.
+  EXPECT_DOUBLE_EQ(f.at("damaged_depth_least_ray_m").get<double>(), 0.84);
   EXPECT_DOUBLE_EQ(f.at("lining_min_safety_factor").get<double>(), 0.56);
   EXPECT_DOUBLE_EQ(f.at("max_bolt_tension_kN_per_bar").get<double>(), 80.8);
   EXPECT_EQ(f.at("bolts_with_broken_steel").get<long>(), 2);

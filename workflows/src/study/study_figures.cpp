@@ -1,6 +1,7 @@
 #include "study/study_figures.hpp"
 
 #include <algorithm>
+#include <optional>
 
 namespace rockfdem::workflows::study {
 namespace {
@@ -34,15 +35,33 @@ void take(const nlohmann::json& summary, const char* section, const std::string&
 
 // What a tunnel run says of its support and damage (summary.json's
 // support, lining, bolts, broken_zone), beside the displacements.
-const char* const kSupportColumns[] = {"vault_explicit_share",     "broken_depth_m",
-                                       "lining_min_safety_factor", "max_bolt_tension_kN_per_bar",
-                                       "bolts_with_broken_steel",  "support_verdict"};
+const char* const kSupportColumns[] = {"vault_explicit_share",
+                                       "broken_depth_m",
+                                       "damaged_depth_least_ray_m",
+                                       "lining_min_safety_factor",
+                                       "max_bolt_tension_kN_per_bar",
+                                       "bolts_with_broken_steel",
+                                       "support_verdict"};
+
+// The shallowest of the key points' rays: the zone broken at some time
+// (grouted since, where a grout stage fired), else broken now.
+void take_least_ray(const nlohmann::json& summary, nlohmann::json& f) {
+  const auto z = summary.find("broken_zone");
+  if (z == summary.end() || !z->contains("along_rays")) return;
+  std::optional<double> least;
+  for (const auto& [name, ray] : (*z)["along_rays"].items()) {
+    const double d = ray.value("broken_or_grouted_depth_m", ray.value("depth_m", 0.0));
+    least = std::min(least.value_or(d), d);
+  }
+  if (least) f["damaged_depth_least_ray_m"] = *least;
+}
 
 // The support columns of kSupportColumns from a tunnel's summary.
 void take_support(const nlohmann::json& summary, nlohmann::json& f) {
   if (const auto m = summary.find("monitors"); m != summary.end() && m->contains("vault"))
     take((*m), "vault", "explicit_share", "vault_explicit_share", 1, f);
   take(summary, "broken_zone", "depth_m", "broken_depth_m", 1, f);
+  take_least_ray(summary, f);
   take(summary, "lining", "min_safety_factor", "lining_min_safety_factor", 1, f);
   if (const auto b = summary.find("bolts"); b != summary.end() && b->contains("each")) {
     double most = 0;
