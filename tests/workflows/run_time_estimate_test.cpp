@@ -1,8 +1,11 @@
 // check's run time from its probe (commands/run_time_estimate.hpp) on a
-// constructed case; no wall time is measured or asserted here.
+// constructed case, and its note on a busy machine; no wall time is
+// measured or asserted here.
 #include "commands/run_time_estimate.hpp"
 
 #include <gtest/gtest.h>
+
+#include "commands/check_probe.hpp"
 
 using namespace rockfdem::workflows;
 
@@ -42,4 +45,19 @@ TEST(RunTimeEstimate, joints_raise_the_steps_not_the_fixed_costs) {
   EXPECT_DOUBLE_EQ(jointed.bound / kRunTimeMargin - 4.0,
                    (plain.bound / kRunTimeMargin - 4.0) * kWorstJointCost);
   EXPECT_DOUBLE_EQ(jointed.least, plain.least);
+}
+
+// The probe's CPU share below one half (its threads descheduled by other
+// work) adds a note naming the share and the threads; at or above, none.
+TEST(RunTimeEstimate, a_busy_machine_is_named_beside_the_figures) {
+  Probe p;
+  p.threads = 2;
+  p.cpu_share = 0.5;
+  EXPECT_EQ(busy_machine_note(p), "");
+  p.cpu_share = 0.28;
+  const std::string note = busy_machine_note(p);
+  EXPECT_NE(note.find("28% of 2 threads' time"), std::string::npos) << note;
+  EXPECT_NE(note.find("read high"), std::string::npos) << note;
+  p.threads = 1;
+  EXPECT_NE(busy_machine_note(p).find("of 1 thread's time"), std::string::npos);
 }

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <array>
 #include <chrono>
+#include <cstdio>
 
 #include "commands/commands.hpp"
 #include "rockfdem/fdem/engine.hpp"
@@ -19,6 +20,13 @@ using Clock = std::chrono::steady_clock;
 
 double seconds_since(Clock::time_point t0) {
   return std::chrono::duration<double>(Clock::now() - t0).count();
+}
+
+double cpu_seconds() {
+  rusage u{};
+  getrusage(RUSAGE_SELF, &u);
+  return double(u.ru_utime.tv_sec + u.ru_stime.tv_sec) +
+         1e-6 * double(u.ru_utime.tv_usec + u.ru_stime.tv_usec);
 }
 
 double peak_rss_bytes() {
@@ -101,12 +109,26 @@ Probe probe_scene(const Scene& scene, const RunContext& ctx) {
 
   for (int k = 0; k < 5; ++k) engine.step();  // first-touch of the step's buffers, untimed
   p.steps = probe_steps(p.triangles);
+  const double cpu0 = cpu_seconds();
+  const Clock::time_point t0_steps = Clock::now();
   p.seconds_per_step = median_step_seconds(engine, p.steps);
+  const double wall = seconds_since(t0_steps) * std::max(1, p.threads);
+  if (wall > 0) p.cpu_share = (cpu_seconds() - cpu0) / wall;
 
   engine.set_mass_scaling({false, 0.0});
   engine.set_damping(start_damping);
   p.critical_true = engine.critical_dt();
   return p;
+}
+
+std::string busy_machine_note(const Probe& p) {
+  if (p.cpu_share >= 0.5) return "";
+  char text[256];
+  std::snprintf(text, sizeof text,
+                "  note: the probe's steps got %.0f%% of %d %s time: other work shares this "
+                "machine, so the run-time figures read high for a quieter one\n",
+                100 * p.cpu_share, p.threads, p.threads == 1 ? "thread's" : "threads'");
+  return text;
 }
 
 }  // namespace rockfdem::workflows

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <cstddef>
+#include <string>
 
 #include "record/run_context.hpp"
 #include "rockfdem/mesh/mesh.hpp"
@@ -24,7 +25,15 @@ struct Probe {
   double seconds_per_step = 0;  ///< wall time per step of this model [s]
   double rss_bytes = 0;         ///< peak resident memory after building mesh and engine [B]
   int threads = 1;
+  /// CPU time over wall time x threads while the steps were timed: near 1
+  /// on a machine to itself, well below when other work shares its cores.
+  double cpu_share = 1;
 };
+
+/// The note check prints beside its run-time figures when the probe got
+/// less than half of its threads' time (a busy machine reads slow steps);
+/// empty otherwise.
+std::string busy_machine_note(const Probe& p);
 
 /// Most triangles (by check's estimate) for which the probe runs: above,
 /// meshing and engine alone take tens of seconds and gigabytes, and check

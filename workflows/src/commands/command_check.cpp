@@ -341,6 +341,7 @@ void print_probe(const Scene& scene, const Probe& p) {
       scene.mesh.joints.empty() ? "" : " and joints", p.mesh_seconds, stage_changes(scene),
       stage_seconds(scene, double(p.triangles)) / std::max(1.0, stage_changes(scene)),
       kRunTimeMargin);
+  std::fputs(busy_machine_note(p).c_str(), stdout);
   std::printf("  stable time step:           %.4g s on true masses (this mesh, its penalties)\n",
               scene.engine.dt_safety * p.critical_true);
   std::printf("  time step at the start:     %.8g s%s%s\n", p.dt_start,
