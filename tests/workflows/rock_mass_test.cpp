@@ -158,3 +158,30 @@ TEST(RockMass, gsi_without_mi_on_a_specimen_or_mi_alone_is_refused) {
                 .find("in [10, 100]"),
             std::string::npos);
 }
+
+// materials.rock.mass_ft_over_ucs: the mass's ft is that fraction of the
+// mass's own Mohr-Coulomb UCS (the rock's and the core's), c and phi as
+// without it; refused without gsi.
+TEST(RockMass, mass_ft_over_ucs_sets_the_mass_tensile_strength) {
+  const std::vector<std::string> gsi = {"materials.rock.gsi=45", "materials.rock.hoek_brown_mi=4"};
+  const Scene hb = load_scene(kScene, gsi);
+  std::vector<std::string> with = gsi;
+  with.push_back("materials.rock.mass_ft_over_ucs=0.1");
+  const Scene s = load_scene(kScene, with);
+  const MaterialSpec& h = hb.materials.at(rockfdem::mesh::kRock);
+  const double ucs = mohr_coulomb_ucs(h.cohesion, h.friction_angle);
+  for (auto zone : {rockfdem::mesh::kRock, rockfdem::mesh::kCore}) {
+    const MaterialSpec& r = s.materials.at(zone);
+    EXPECT_NEAR(r.tensile_strength, 0.1 * ucs, 1e-9 * ucs);
+    EXPECT_DOUBLE_EQ(r.cohesion, h.cohesion);
+    EXPECT_DOUBLE_EQ(r.young, h.young);
+  }
+  // Hoek-Brown's own ft here is below a tenth of the UCS: the key changes it.
+  EXPECT_LT(h.tensile_strength, 0.05 * ucs);
+  try {
+    load_scene(kScene, {"materials.rock.mass_ft_over_ucs=0.1"});
+    ADD_FAILURE() << "accepted without gsi";
+  } catch (const rockfdem::InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("applies with materials.rock.gsi"), std::string::npos);
+  }
+}

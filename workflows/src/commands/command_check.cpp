@@ -420,6 +420,11 @@ void print_rock_mass(const Scene& scene) {
       r.gsi, r.mi, r.disturbance, m.young / 1e9, m.cohesion / 1e6, m.friction_angle,
       m.tensile_strength / 1e6, mohr_coulomb_ucs(m.cohesion, m.friction_angle) / 1e6,
       m.sigma_cm / 1e6, r.intact.young / 1e9, r.intact.ucs / 1e6);
+  if (r.ft_over_ucs > 0)
+    std::printf(
+        "  rock mass's ft:             %g of its UCS (materials.rock.mass_ft_over_ucs; "
+        "Hoek-Brown's s sigma_ci / mb: %.3g MPa)\n",
+        r.ft_over_ucs, r.mass.s * r.intact.ucs / r.mass.mb / 1e6);
 }
 
 // The last line: valid, or valid with what the warnings said.

@@ -546,10 +546,14 @@ nlohmann::json rock_mass_json(const RockMassSpec& m) {
           {"overburden_stress_Pa", m.gamma_h},
           {"laboratory", strength_json(l.young, l.cohesion, l.friction_angle, l.tensile_strength)},
           {"rock_mass", strength_json(f.young, f.cohesion, f.friction_angle, f.tensile_strength)},
-          {"sources",
-           "E: Hoek and Diederichs (2006); c, phi: Mohr-Coulomb fit of the generalised "
-           "Hoek-Brown criterion for tunnels, ft = s sigma_ci / mb (Hoek, Carranza-Torres and "
-           "Corkum 2002)"}};
+          {"sources", m.ft_over_ucs > 0
+                          ? "E: Hoek and Diederichs (2006); c, phi: Mohr-Coulomb fit of the "
+                            "generalised Hoek-Brown criterion for tunnels (Hoek, Carranza-Torres "
+                            "and Corkum 2002); ft = materials.rock.mass_ft_over_ucs x the mass's "
+                            "Mohr-Coulomb UCS"
+                          : "E: Hoek and Diederichs (2006); c, phi: Mohr-Coulomb fit of the "
+                            "generalised Hoek-Brown criterion for tunnels, ft = s sigma_ci / mb "
+                            "(Hoek, Carranza-Torres and Corkum 2002)"}};
 }
 
 nlohmann::json joints_json(const JointRecord& r) {

@@ -531,7 +531,8 @@ void read_materials(const Reader& r, Scene& s) {
 void read_rock_mass(const Reader& r, Scene& s) {
   const char* const mi_key = "materials.rock.hoek_brown_mi";
   if (!r.has("materials.rock.gsi")) {
-    for (const char* key : {mi_key, "materials.rock.disturbance"})
+    for (const char* key :
+         {mi_key, "materials.rock.disturbance", "materials.rock.mass_ft_over_ucs"})
       if (r.has(key)) r.fail(key, "applies with materials.rock.gsi (the rock mass's GSI)");
     return;
   }
@@ -549,6 +550,11 @@ void read_rock_mass(const Reader& r, Scene& s) {
   m.lab = rock;
   m.intact = {rock.young, mohr_coulomb_ucs(rock.cohesion, rock.friction_angle), m.mi};
   m.mass = rock_mass(m.intact, m.gsi, m.disturbance, m.gamma_h);
+  if (r.has("materials.rock.mass_ft_over_ucs")) {
+    m.ft_over_ucs = r.number("materials.rock.mass_ft_over_ucs");
+    m.mass.tensile_strength =
+        m.ft_over_ucs * mohr_coulomb_ucs(m.mass.cohesion, m.mass.friction_angle);
+  }
   // The rock takes every figure of the mass; the core each it does not give.
   const auto reduce = [&](MaterialSpec& x, const std::function<bool(const char*)>& given) {
     if (!given("young")) x.young = m.mass.young;

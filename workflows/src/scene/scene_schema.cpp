@@ -795,6 +795,15 @@ void add_rock_mass(std::vector<KeySpec>& s) {
                      "Hoek-Brown constant mi of the intact rock (with gsi, required): about 4 "
                      "for claystone, 7 for shale, 10 for marl and siltstone, 17 for sandstone, "
                      "32 for granite (Hoek's table)."));
+  KeySpec ratio =
+      number("materials.rock.mass_ft_over_ucs", "-", "", 0, true, 0.5, false,
+             "The rock mass's tensile strength as a fraction of its Mohr-Coulomb UCS (with gsi), "
+             "instead of Hoek-Brown's s sigma_ci / mb, which falls below any intact rock's ratio "
+             "as GSI falls (at GSI 45: UCS / 24 for mi 4, UCS / 94 for mi 10): e.g. the lab's "
+             "measured ft / UCS, so that the mass keeps the intact rock's ratio while both "
+             "strengths fall with GSI.");
+  ratio.default_doc = "none: ft = s sigma_ci / mb";
+  s.push_back(ratio);
 }
 
 std::vector<KeySpec> build_schema() {

@@ -210,6 +210,9 @@ struct ReferenceSettings {
 /// the laboratory figures the section gives (rock_mass.hpp).
 struct RockMassSpec {
   double gsi = 0, disturbance = 0, mi = 0;
+  /// materials.rock.mass_ft_over_ucs: the mass's ft as this fraction of
+  /// its Mohr-Coulomb UCS; 0: Hoek-Brown's s sigma_ci / mb.
+  double ft_over_ucs = 0;
   double gamma_h = 0;  ///< the in-situ stress the fit is for [Pa]: insitu.sigma_v
   MaterialSpec lab;    ///< [materials.rock] as given: the intact rock
   IntactRock intact;   ///< E_i and sigma_ci (the lab set's Mohr-Coulomb UCS)
