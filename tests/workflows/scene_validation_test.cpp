@@ -222,22 +222,23 @@ TEST(Scene, cross_key_errors_name_the_changed_key_with_short_numbers) {
 // and the sides need their rollers.
 TEST(Scene, gravity_takes_the_in_situ_gradient_from_the_rock_density) {
   const std::string seed = rockfdem::test::kSeedScene;
-  const Scene s = load_scene(seed, {"engine.gravity=9.81"});
+  // A round density for round figures in the messages.
+  const std::string rho = "materials.rock.density=2500", g = "engine.gravity=9.81";
+  const Scene s = load_scene(seed, {rho, g});
   EXPECT_DOUBLE_EQ(s.insitu.unit_weight, 2500.0 * 9.81);
   EXPECT_EQ(load_scene(seed, {}).insitu.unit_weight, 0.0);
-  EXPECT_DOUBLE_EQ(
-      load_scene(seed, {"engine.gravity=9.81", "insitu.unit_weight=24525"}).insitu.unit_weight,
-      24525.0);
+  EXPECT_DOUBLE_EQ(load_scene(seed, {rho, g, "insitu.unit_weight=24525"}).insitu.unit_weight,
+                   24525.0);
   expect_contains(error_of([&] {
-                    load_scene(seed, {"engine.gravity=9.81", "insitu.unit_weight=27000"});
+                    load_scene(seed, {rho, g, "insitu.unit_weight=27000"});
                   }),
                   {"--set insitu.unit_weight=27000: ", "= 24525 N/m^3"});
   expect_contains(error_of([&] {
-                    load_scene(seed, {"engine.gravity=9.81", "insitu.rollers=false"});
+                    load_scene(seed, {rho, g, "insitu.rollers=false"});
                   }),
                   {"--set insitu.rollers=false: ", "gravity needs the rollers"});
   expect_contains(error_of([&] {
-                    load_scene(seed, {"engine.gravity=9.81", "insitu.angle=10"});
+                    load_scene(seed, {rho, g, "insitu.angle=10"});
                   }),
                   {"--set insitu.angle=10: ", "angle 0"});
 }
