@@ -14,8 +14,7 @@
 //   least    = fixed: stages that end at a criterion (equilibrium, a grout
 //              trigger) may end long before their caps.
 // Runs that reach equilibrium stop short of their caps: the expected
-// steps take a stage that ends at a criterion at half its cap
-// (command_check.cpp).
+// steps count the model's wave transits (expected_steps.hpp).
 #pragma once
 
 namespace rockfdem::workflows {
@@ -36,14 +35,15 @@ struct RunTimeFigures {
 };
 
 /// A step's cost after fracture over the probe's intact one, on the share
-/// that may fracture: expected (measured over whole runs, twice each on
-/// the shared 2-core machine: the default tunnel 1.53 and 1.58 at a share
-/// of 0.62, the Brazilian disc 1.92 and 2.08 at 1) and at worst (a
-/// confined specimen fell to 0.24 of its intact throughput). With joints,
-/// the jointed tunnel's steps cost 2.7 and 10 times the probe's (its
-/// joints loaded in contact, the probe's not; the second under a load
-/// that rose while it ran). The bound's margin on the whole.
-inline constexpr double kExpectedFractureCost = 2.0;
+/// that may fracture: expected (whole runs' fdem time per step over the
+/// probe's just before them, on the shared 2-core machine: the tunnels
+/// 0.7-2.6 as their fracture and the load varied, geometric mean 1.41 at a
+/// share of 0.62; docs/benchmarks.md) and at worst (a confined specimen
+/// fell to 0.24 of its intact throughput). With joints, the jointed
+/// tunnel's steps cost 2.7 and 10 times the probe's (its joints loaded in
+/// contact, the probe's not; the second under a load that rose while it
+/// ran). The bound's margin on the whole.
+inline constexpr double kExpectedFractureCost = 1.66;
 inline constexpr double kWorstFractureCost = 4.0;
 inline constexpr double kExpectedJointCost = 3.5;
 inline constexpr double kWorstJointCost = 12.0;
