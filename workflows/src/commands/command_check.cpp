@@ -250,8 +250,10 @@ RunTimeFigures probe_run_time(const Scene& s, const Probe& p, double expected) {
   const double implicit =
       staged(s) ? 90e-6 * tri + kAlphaSecondsPerTriangle * tri * double(s.insitu.alpha.size())
                 : 0.0;
+  // Without output.vtk no frame is written, only the history row.
+  const double frame = s.output.vtk ? kOutputSecondsPerTriangle * tri : 0;
   const double outputs =
-      output_steps(s) * (kOutputSeconds + kOutputSecondsPerTriangle * tri) +
+      output_steps(s) * (kOutputSeconds + frame) +
       (s.output.plots ? kPicturesSeconds + kPicturesSecondsPerTriangle * tri : 0);
   RunTimeInputs in;
   in.fixed_seconds = kStartSeconds + p.mesh_seconds + implicit + outputs + stage_seconds(s, tri);
