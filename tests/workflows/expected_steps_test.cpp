@@ -35,27 +35,58 @@ Scene tunnel(std::vector<StageSpec> stages) {
 
 }  // namespace
 
-// On a transit of 100 steps an equilibrium stage of an elastic model at the
-// default ratio takes kElasticTransits transits, one of a model that
-// fractures (a fracture zone) kFractureTransits, rounded up to its outputs
-// (1000 steps);
-// a ratio of 1e-6 doubles the transits (ln 1e6 / ln 1e3 = 2); a cap below
-// either is kept; a stage applied without steps adds none; the hand-off
-// adds one step.
+// On a transit of 100 steps an equilibrium stage at the default ratio
+// settles in kSettleTransits transits, rounded up to its outputs (1000
+// steps); a ratio of 1e-6 doubles the transits (ln 1e6 / ln 1e3 = 2); a
+// cap below either is kept; a stage applied without steps adds none; the
+// hand-off adds one step; a grout stage fires after kGroutTransits.
 TEST(ExpectedSteps, a_ratio_stage_takes_its_transits_rounded_to_outputs_within_its_cap) {
   const double transit = 100;
-  const double n = std::ceil(kElasticTransits * transit / 1000) * 1000;
+  const double n = std::ceil(kSettleTransits * transit / 1000) * 1000;
   EXPECT_DOUBLE_EQ(
       expected_steps(tunnel({stage("lining", 0), stage("equilibrium", 60000)}), transit), 1 + n);
-  Scene fracturing = tunnel({stage("equilibrium", 60000)});
-  fracturing.mesh.tunnel.fracture_zone = 4;
-  EXPECT_DOUBLE_EQ(expected_steps(fracturing, transit),
-                   1 + std::ceil(kFractureTransits * transit / 1000) * 1000);
-  const double n6 = std::ceil(2 * kElasticTransits * transit / 1000) * 1000;
+  const double n6 = std::ceil(2 * kSettleTransits * transit / 1000) * 1000;
   EXPECT_DOUBLE_EQ(expected_steps(tunnel({stage("equilibrium", 60000, 1e-6)}), transit), 1 + n6);
   EXPECT_DOUBLE_EQ(expected_steps(tunnel({stage("equilibrium", 1500)}), transit), 1 + 1500);
   EXPECT_DOUBLE_EQ(expected_steps(tunnel({stage("grout", 60000)}), transit),
                    1 + kGroutTransits * transit);
+}
+
+// The seed's rock (c 3 MPa, phi 30: UCS 10.4 MPa) under 18.2 / 11.4 MPa
+// has a wall stress of 3 x 18.2 - 11.4 = 43.2 MPa: it fails at the
+// opening, and its failure's kFailureTransits are spent by the stages in
+// order. Four soften stages of 4,000 steps on a transit of 364 steps stop
+// at their caps (11 transits each, 44 spent), a grout stage fires after
+// kGroutTransits (12 more), and the equilibrium stage settles in
+// kSettleTransits plus what is left (65 - 44 - 12 = 9), rounded up to its
+// outputs. With c 30 MPa (UCS 104 MPa) the rock holds: the equilibrium
+// stage settles alone. Without a soften stage it fails at once.
+TEST(ExpectedSteps, a_failing_rocks_transits_are_spent_by_the_stages_in_order) {
+  std::vector<StageSpec> stages(4, stage("soften", 4000));
+  stages.push_back(stage("grout", 20000));
+  stages.push_back(stage("equilibrium", 60000));
+  Scene s = tunnel(stages);
+  s.mesh.tunnel.fracture_zone = 8;
+  s.insitu.sigma_h = 18.2e6;
+  s.insitu.sigma_v = 11.4e6;
+  MaterialSpec rock;
+  rock.cohesion = 3e6;
+  rock.friction_angle = 30;
+  s.materials[rockfdem::mesh::kRock] = rock;
+  const double transit = 364;
+  ASSERT_TRUE(rock_fails_at_opening(s));
+  EXPECT_FALSE(fails_at_once(s));
+  const double grout = kGroutTransits * transit;
+  const double left = kFailureTransits - 4 * 4000 / transit - kGroutTransits;
+  const double settle = std::ceil((kSettleTransits + left) * transit / 1000) * 1000;
+  EXPECT_DOUBLE_EQ(expected_steps(s, transit), 1 + 16000 + grout + settle);
+  s.materials[rockfdem::mesh::kRock].cohesion = 30e6;
+  EXPECT_FALSE(rock_fails_at_opening(s));
+  EXPECT_DOUBLE_EQ(expected_steps(s, transit),
+                   1 + 16000 + grout + std::ceil(kSettleTransits * transit / 1000) * 1000);
+  s.materials[rockfdem::mesh::kRock].cohesion = 3e6;
+  s.stages.erase(s.stages.begin(), s.stages.begin() + 4);
+  EXPECT_TRUE(fails_at_once(s));
 }
 
 // No stage ends before `hold` outputs have met its criterion: on a transit
@@ -93,9 +124,9 @@ TEST(ExpectedSteps, the_transit_grows_with_the_box_and_with_a_shorter_step) {
 
 // The count check prints against runs: the elastic circular tunnel (its
 // equilibrium stage at a ratio of 1e-5, 20,000 steps at most; one of the
-// two elastic runs kElasticTransits was fitted on) and a variant the fit
-// never saw (a 60 m box, a ratio of 1e-4) each take between half and
-// twice the steps check expects.
+// runs kSettleTransits was fitted on) and a variant the fit never saw (a
+// 60 m box, a ratio of 1e-4) each take between half and twice the steps
+// check expects.
 TEST(ExpectedSteps, a_small_tunnels_run_takes_within_twice_the_steps_check_expects) {
   const std::string scene = kTestDir + "/elastic_circular.toml";
   for (const std::string sets :

@@ -262,6 +262,7 @@ RunTimeFigures probe_run_time(const Scene& s, const Probe& p, double expected) {
   in.expected_steps = expected;
   in.fracture_share = double(p.fracture_triangles) / double(std::max<std::size_t>(p.triangles, 1));
   in.joints = !s.mesh.joints.empty();
+  in.fails_at_once = fails_at_once(s);
   return run_time(in);
 }
 
@@ -280,15 +281,20 @@ void print_step_counts(const Scene& scene) {
 // The expected steps and what they come from: the wave transit where
 // check knows the mesh's grading (expected_steps.hpp), else half the caps.
 void print_expected_steps(const Scene& scene, double transit, double expected) {
-  if (transit > 0)
+  if (transit > 0) {
+    char failure[160] = "";
+    if (rock_fails_at_opening(scene))
+      std::snprintf(failure, sizeof failure,
+                    ", and the rock's failure at the opening %g more, spent by the stages in "
+                    "order%s",
+                    kFailureTransits,
+                    fails_at_once(scene) ? " (all at once: no soften stage)" : "");
     std::printf(
         "  explicit steps (expected):  %.0f (a P-wave crosses from the opening to the box's side "
-        "in %.0f steps; a stage ends at a ratio of 1e-3 after %g transits%s, a grout trigger "
-        "after %g)\n",
-        expected, transit,
-        scene.mesh.tunnel.fracture_zone > 0 ? kFractureTransits : kElasticTransits,
-        scene.mesh.tunnel.fracture_zone > 0 ? " (fracturing)" : " (elastic)", kGroutTransits);
-  else if (staged(scene))
+        "in %.0f steps; a stage settles at a ratio of 1e-3 in %g transits%s; a grout trigger "
+        "fires after %g)\n",
+        expected, transit, kSettleTransits, failure, kGroutTransits);
+  } else if (staged(scene))
     std::printf(
         "  explicit steps (expected):  %.0f (a stage that ends at its criterion, equilibrium "
         "or a grout trigger, at half its cap)\n",

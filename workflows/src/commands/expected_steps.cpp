@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "rockfdem/mesh/outline.hpp"
+#include "rockfdem/workflows/rock_mass.hpp"
 
 namespace rockfdem::workflows {
 
@@ -54,29 +55,43 @@ double transit_seconds(const Scene& s, double cp) {
   return total / 4;
 }
 
-// Steps to an unbalanced-force ratio `ratio` from `transits` at 1e-3,
-// no fewer than `hold` outputs, rounded up to an output, at most the cap.
-double criterion_steps(const StageSpec& st, double transits, double transit) {
+// Transits to settle at the stage's ratio: an exponentially damped
+// residual falls by a fixed factor per transit.
+double settle_transits(const StageSpec& st) {
   const double ratio = st.ratio > 0 ? st.ratio : 1e-3;
-  double n = transits * transit * std::log(1 / ratio) / std::log(1e3);
-  const double every = std::max(1, st.every_steps);
-  n = std::max(n, double(std::max(1, st.hold)) * every);
-  return std::min(double(st.max_steps), std::ceil(n / every) * every);
+  return kSettleTransits * std::log(1 / ratio) / std::log(1e3);
 }
 
-// A stage's expected steps; without a transit, a criterion stage at half
-// its cap (the shipped tunnels stopped at 0.17-0.63 of their caps).
-double stage_steps(const StageSpec& st, double transit, bool fractures) {
+// A stage's expected steps, given the failure transits not yet spent;
+// without a transit, a criterion stage at half its cap (the shipped
+// tunnels stopped at 0.17-0.63 of their caps).
+double stage_steps(const StageSpec& st, double transit, double failure) {
   const bool ratio_stage = (st.kind == "equilibrium" || st.kind == "soften") && st.ratio > 0;
-  if (st.kind == "grout" || ratio_stage) {
-    if (transit <= 0) return 0.5 * double(st.max_steps);
-    if (st.kind == "grout") return std::min(double(st.max_steps), kGroutTransits * transit);
-    return criterion_steps(st, fractures ? kFractureTransits : kElasticTransits, transit);
-  }
-  return double(st.max_steps);
+  const double cap = double(st.max_steps);
+  if (st.kind != "grout" && !ratio_stage) return cap;
+  if (transit <= 0) return 0.5 * cap;
+  if (st.kind == "grout") return std::min(cap, kGroutTransits * transit);
+  const double every = std::max(1, st.every_steps);
+  const double n =
+      std::max((settle_transits(st) + failure) * transit, double(std::max(1, st.hold)) * every);
+  return std::min(cap, std::ceil(n / every) * every);
 }
 
 }  // namespace
+
+bool rock_fails_at_opening(const Scene& s) {
+  if (!(s.mesh.tunnel.fracture_zone > 0)) return false;
+  const MaterialSpec& rock = s.materials.at(mesh::kRock);
+  const double high = std::max(s.insitu.sigma_h, s.insitu.sigma_v);
+  const double low = std::min(s.insitu.sigma_h, s.insitu.sigma_v);
+  return 3 * high - low > mohr_coulomb_ucs(rock.cohesion, rock.friction_angle);
+}
+
+bool fails_at_once(const Scene& s) {
+  return rock_fails_at_opening(s) &&
+         std::none_of(s.stages.begin(), s.stages.end(),
+                      [](const StageSpec& st) { return st.kind == "soften"; });
+}
 
 double transit_steps(const Scene& s, double dt, double cp) {
   if (s.mesh.kind != mesh::ModelKind::kTunnel || !(dt > 0) || !(cp > 0)) return 0;
@@ -87,8 +102,13 @@ double expected_steps(const Scene& s, double transit) {
   if (!staged(s))
     return double(s.engine.steps) * (s.engine.stop_after_peak > 0 ? kSpecimenShare : 1.0);
   double n = s.stages.empty() ? 0 : 1;
-  const bool fractures = s.mesh.tunnel.fracture_zone > 0;
-  for (const StageSpec& st : s.stages) n += stage_steps(st, transit, fractures);
+  // The failure goes on through the stages, each spending what it takes.
+  double failure = rock_fails_at_opening(s) ? kFailureTransits : 0;
+  for (const StageSpec& st : s.stages) {
+    const double steps = stage_steps(st, transit, failure);
+    if (transit > 0) failure = std::max(0.0, failure - steps / transit);
+    n += steps;
+  }
   return n;
 }
 

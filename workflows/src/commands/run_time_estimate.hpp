@@ -10,6 +10,8 @@
 //           fracture on the share f of triangles that may fracture and,
 //           with joints, for the joints the run loads in contact:
 //   estimate = fixed + n_expected t_step (1 + (c_expected - 1) f) j_expected
+//              (c_expected: kFailsAtOnceCost where the rock fails at
+//              once, without joints: theirs counts its blocks in contact)
 //   bound    = margin (fixed + n_caps t_step (1 + (c_worst - 1) f) j_worst)
 //   least    = fixed: stages that end at a criterion (equilibrium, a grout
 //              trigger) may end long before their caps.
@@ -26,6 +28,7 @@ struct RunTimeInputs {
   double expected_steps = 0;    ///< those the run is expected to take
   double fracture_share = 0;    ///< triangles that may fracture, of all
   bool joints = false;          ///< the mesh has joint traces
+  bool fails_at_once = false;   ///< the rock fails at once (expected_steps.hpp)
 };
 
 struct RunTimeFigures {
@@ -36,14 +39,17 @@ struct RunTimeFigures {
 
 /// A step's cost after fracture over the probe's intact one, on the share
 /// that may fracture: expected (whole runs' fdem time per step over the
-/// probe's just before them, on the shared 2-core machine: the tunnels
-/// 0.7-2.6 as their fracture and the load varied, geometric mean 1.41 at a
-/// share of 0.62; docs/benchmarks.md) and at worst (a confined specimen
-/// fell to 0.24 of its intact throughput). With joints, the jointed
-/// tunnel's steps cost 2.7 and 10 times the probe's (its joints loaded in
-/// contact, the probe's not; the second under a load that rose while it
-/// ran). The bound's margin on the whole.
-inline constexpr double kExpectedFractureCost = 1.66;
+/// probe's just before them, on the shared 2-core machine, two rounds,
+/// docs/benchmarks.md: 0.43-1.51 for the specimens and the tunnels whose
+/// rock breaks crack by crack, geometric mean 0.95; 1.75-2.39 at a share
+/// of 0.62 for those that fail at once, whose broken blocks stay in
+/// contact: 2.1) and at worst (a confined specimen fell to 0.24 of its
+/// intact throughput). With joints, the jointed tunnel's steps cost 2.7
+/// and 10 times the probe's (its joints loaded in contact, the probe's
+/// not; the second under a load that rose while it ran). The bound's
+/// margin on the whole.
+inline constexpr double kExpectedFractureCost = 1.0;
+inline constexpr double kFailsAtOnceCost = 2.8;
 inline constexpr double kWorstFractureCost = 4.0;
 inline constexpr double kExpectedJointCost = 3.5;
 inline constexpr double kWorstJointCost = 12.0;
