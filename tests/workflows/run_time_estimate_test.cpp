@@ -47,6 +47,26 @@ TEST(RunTimeEstimate, joints_raise_the_steps_not_the_fixed_costs) {
   EXPECT_DOUBLE_EQ(jointed.least, plain.least);
 }
 
+// A rock that fails at once (expected_steps.hpp) is expected to cost
+// kFailsAtOnceCost per fracturing step, not kExpectedFractureCost: on a
+// share of 0.5 the steps' part of the estimate is 1 + 0.5 (c - 1) times
+// theirs; the bound and the fixed costs do not change. With joints, the
+// joints' cost alone.
+TEST(RunTimeEstimate, a_rock_that_fails_at_once_costs_more_per_step) {
+  RunTimeInputs in{4.0, 0.5e-3, 12000, 6000, 0.5, false};
+  const RunTimeFigures crack_by_crack = run_time(in);
+  in.fails_at_once = true;
+  const RunTimeFigures at_once = run_time(in);
+  EXPECT_DOUBLE_EQ(at_once.expected_step_factor, 1 + 0.5 * (kFailsAtOnceCost - 1));
+  EXPECT_DOUBLE_EQ(at_once.estimate - 4.0, 3.0 * at_once.expected_step_factor);
+  EXPECT_DOUBLE_EQ(crack_by_crack.estimate - 4.0, 3.0 * (1 + 0.5 * (kExpectedFractureCost - 1)));
+  EXPECT_DOUBLE_EQ(at_once.bound, crack_by_crack.bound);
+  // With joints their cost, measured on such a rock, stands alone.
+  in.joints = true;
+  EXPECT_DOUBLE_EQ(run_time(in).expected_step_factor,
+                   (1 + 0.5 * (kExpectedFractureCost - 1)) * kExpectedJointCost);
+}
+
 // The probe's CPU share below one half (its threads descheduled by other
 // work) adds a note naming the share and the threads; at or above, none.
 TEST(RunTimeEstimate, a_busy_machine_is_named_beside_the_figures) {

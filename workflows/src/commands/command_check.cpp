@@ -15,6 +15,7 @@
 
 #include "commands/check_probe.hpp"
 #include "commands/commands.hpp"
+#include "commands/expected_steps.hpp"
 #include "commands/run_time_estimate.hpp"
 #include "outputs/broken_zone.hpp"
 #include "outputs/rock_plausibility.hpp"
@@ -43,9 +44,6 @@ double triangle_area(double h) { return std::sqrt(3.0) / 4 * h * h; }
 Estimate estimate_tunnel(const Scene& s) {
   const mesh::MeshSpec& m = s.mesh;
   const mesh::Outline outline = mesh::tunnel_outline(m.tunnel);
-  const double grading = m.size.grading_distance > 0
-                             ? m.size.grading_distance
-                             : 0.5 * std::min(m.domain.width, m.domain.height);
   const int n = 400;
   const double dx = m.domain.width / n, dy = m.domain.height / n;
   Estimate e;
@@ -58,9 +56,7 @@ Estimate estimate_tunnel(const Scene& s) {
         continue;
       }
       const double d = mesh::distance_to_outline(outline, x, y);
-      const double beyond = std::max(0.0, d - m.tunnel.fracture_zone);
-      const double h =
-          m.size.size_near + (m.size.size_far - m.size.size_near) * std::min(1.0, beyond / grading);
+      const double h = local_size(m, d);
       const double count = dx * dy / triangle_area(h);
       e.triangles += count;
       if (d <= m.tunnel.fracture_zone) e.fracture_triangles += count;
@@ -136,37 +132,6 @@ double peak_bytes(const Scene& s, const Estimate& e) {
 }
 
 double machine_bytes() { return double(sysconf(_SC_PHYS_PAGES)) * double(sysconf(_SC_PAGE_SIZE)); }
-
-// Explicit steps at most: the step caps of the stages (tunnels) or the
-// specimen's step count.
-bool staged(const Scene& s) {
-  return s.mesh.kind == mesh::ModelKind::kTunnel || s.mesh.kind == mesh::ModelKind::kMshFile;
-}
-
-double explicit_steps(const Scene& s) {
-  if (!staged(s)) return double(s.engine.steps);
-  double n = s.stages.empty() ? 0 : 1;  // the hand-off step
-  for (const StageSpec& st : s.stages) n += double(st.max_steps);
-  return n;
-}
-
-// The steps a run is expected to take: a stage that ends at a criterion
-// (an equilibrium stage's ratio, a grout stage's trigger) at half its cap
-// (the shipped tunnels stopped at 0.25-1.0 of their caps, half on average,
-// docs/benchmarks.md, "check's bounds against runs"), the others at
-// theirs; a specimen's steps as given (its runs ended at 0.55-0.79 of them
-// after the peak, too close to the cap to halve).
-constexpr double kCriterionShare = 0.5;
-
-double expected_steps(const Scene& s) {
-  if (!staged(s)) return double(s.engine.steps);
-  double n = s.stages.empty() ? 0 : 1;
-  for (const StageSpec& st : s.stages) {
-    const bool criterion = (st.kind == "equilibrium" && st.ratio > 0) || st.kind == "grout";
-    n += (criterion ? kCriterionShare : 1.0) * double(st.max_steps);
-  }
-  return n;
-}
 
 // Serial engine throughput measured on the 2-core development machine
 // (docs/benchmarks.md, "A vector kernel for the narrow phase"): 11 M
@@ -280,21 +245,24 @@ double output_steps(const Scene& s) {
   return n;
 }
 
-RunTimeFigures probe_run_time(const Scene& s, const Probe& p) {
+RunTimeFigures probe_run_time(const Scene& s, const Probe& p, double expected) {
   const double tri = double(p.triangles);
   const double implicit =
       staged(s) ? 90e-6 * tri + kAlphaSecondsPerTriangle * tri * double(s.insitu.alpha.size())
                 : 0.0;
+  // Without output.vtk no frame is written, only the history row.
+  const double frame = s.output.vtk ? kOutputSecondsPerTriangle * tri : 0;
   const double outputs =
-      output_steps(s) * (kOutputSeconds + kOutputSecondsPerTriangle * tri) +
+      output_steps(s) * (kOutputSeconds + frame) +
       (s.output.plots ? kPicturesSeconds + kPicturesSecondsPerTriangle * tri : 0);
   RunTimeInputs in;
   in.fixed_seconds = kStartSeconds + p.mesh_seconds + implicit + outputs + stage_seconds(s, tri);
   in.seconds_per_step = p.seconds_per_step;
   in.steps = explicit_steps(s);
-  in.expected_steps = expected_steps(s);
+  in.expected_steps = expected;
   in.fracture_share = double(p.fracture_triangles) / double(std::max<std::size_t>(p.triangles, 1));
   in.joints = !s.mesh.joints.empty();
+  in.fails_at_once = fails_at_once(s);
   return run_time(in);
 }
 
@@ -310,7 +278,33 @@ void print_step_counts(const Scene& scene) {
   std::printf("  explicit steps (at most):   %.0f\n", explicit_steps(scene));
 }
 
-void print_probe(const Scene& scene, const Probe& p) {
+// The expected steps and what they come from: the wave transit where
+// check knows the mesh's grading (expected_steps.hpp), else half the caps.
+void print_expected_steps(const Scene& scene, double transit, double expected) {
+  if (transit > 0) {
+    char failure[160] = "";
+    if (rock_fails_at_opening(scene))
+      std::snprintf(failure, sizeof failure,
+                    ", and the rock's failure at the opening %g more, spent by the stages in "
+                    "order%s",
+                    kFailureTransits,
+                    fails_at_once(scene) ? " (all at once: no soften stage)" : "");
+    std::printf(
+        "  explicit steps (expected):  %.0f (a P-wave crosses from the opening to the box's side "
+        "in %.0f steps; a stage settles at a ratio of 1e-3 in %g transits%s; a grout trigger "
+        "fires after %g)\n",
+        expected, transit, kSettleTransits, failure, kGroutTransits);
+  } else if (staged(scene))
+    std::printf(
+        "  explicit steps (expected):  %.0f (a stage that ends at its criterion, equilibrium "
+        "or a grout trigger, at half its cap)\n",
+        expected);
+  else
+    std::printf("  explicit steps (expected):  %.0f (%s)\n", expected,
+                scene.engine.stop_after_peak > 0 ? "a specimen stops after its peak" : "as given");
+}
+
+void print_probe(const Scene& scene, const Probe& p, double cp) {
   std::printf("  triangles (meshed):         %zu\n", p.triangles);
   std::printf("  smallest altitude:          %.3g m\n", p.min_altitude);
   std::printf(
@@ -321,17 +315,18 @@ void print_probe(const Scene& scene, const Probe& p) {
       p.rss_bytes / 1048576.0, kImplicitBytesPerTriangle, kBytesPerAlphaTriangle,
       kProbeMemoryMargin);
   print_step_counts(scene);
-  const RunTimeFigures t = probe_run_time(scene, p);
+  const double transit = transit_steps(scene, p.dt_stages, cp);
+  const double expected = expected_steps(scene, transit);
+  print_expected_steps(scene, transit, expected);
+  const RunTimeFigures t = probe_run_time(scene, p, expected);
   const char* plural = p.threads == 1 ? "" : "s";
   std::printf(
       "  run time (estimate):        about %.0f s on %d thread%s, between %.0f s and the bound "
       "(%.3g ms per step measured here over %ld steps, x %.2f for the fracture%s expected, x "
-      "%.0f steps expected, a stage that ends at its criterion, equilibrium or a grout "
-      "trigger, at half its cap, + %.1f s for meshing, the implicit stage, start-up, outputs, "
+      "%.0f steps expected, + %.1f s for meshing, the implicit stage, start-up, outputs, "
       "pictures and stage changes)\n",
       t.estimate, p.threads, plural, t.least, 1e3 * p.seconds_per_step, p.steps,
-      t.expected_step_factor, scene.mesh.joints.empty() ? "" : " and joints", expected_steps(scene),
-      t.least);
+      t.expected_step_factor, scene.mesh.joints.empty() ? "" : " and joints", expected, t.least);
   std::printf(
       "  run time (bound):           %.0f s at most on %d thread%s (bound: %.3g ms per step "
       "measured here over %ld steps, x %.2f for fracture%s, x the steps, + meshing %.2f s + the "
@@ -466,7 +461,7 @@ int command_check(const Scene& scene, const RunContext& ctx) {
     print_plausibility(rock_plausibility(scene, r.ratio), said);
   }
   if (e.triangles <= kProbeTriangleLimit)
-    print_probe(scene, probe_scene(scene, ctx));
+    print_probe(scene, probe_scene(scene, ctx), cp);
   else
     print_constants(scene, e, cp, ctx.threads);
   std::printf("  P-wave speed of rock:       %.1f m/s\n", cp);

@@ -10,12 +10,13 @@
 //           fracture on the share f of triangles that may fracture and,
 //           with joints, for the joints the run loads in contact:
 //   estimate = fixed + n_expected t_step (1 + (c_expected - 1) f) j_expected
+//              (c_expected: kFailsAtOnceCost where the rock fails at
+//              once, without joints: theirs counts its blocks in contact)
 //   bound    = margin (fixed + n_caps t_step (1 + (c_worst - 1) f) j_worst)
 //   least    = fixed: stages that end at a criterion (equilibrium, a grout
 //              trigger) may end long before their caps.
 // Runs that reach equilibrium stop short of their caps: the expected
-// steps take a stage that ends at a criterion at half its cap
-// (command_check.cpp).
+// steps count the model's wave transits (expected_steps.hpp).
 #pragma once
 
 namespace rockfdem::workflows {
@@ -27,6 +28,7 @@ struct RunTimeInputs {
   double expected_steps = 0;    ///< those the run is expected to take
   double fracture_share = 0;    ///< triangles that may fracture, of all
   bool joints = false;          ///< the mesh has joint traces
+  bool fails_at_once = false;   ///< the rock fails at once (expected_steps.hpp)
 };
 
 struct RunTimeFigures {
@@ -36,14 +38,18 @@ struct RunTimeFigures {
 };
 
 /// A step's cost after fracture over the probe's intact one, on the share
-/// that may fracture: expected (measured over whole runs, twice each on
-/// the shared 2-core machine: the default tunnel 1.53 and 1.58 at a share
-/// of 0.62, the Brazilian disc 1.92 and 2.08 at 1) and at worst (a
-/// confined specimen fell to 0.24 of its intact throughput). With joints,
-/// the jointed tunnel's steps cost 2.7 and 10 times the probe's (its
-/// joints loaded in contact, the probe's not; the second under a load
-/// that rose while it ran). The bound's margin on the whole.
-inline constexpr double kExpectedFractureCost = 2.0;
+/// that may fracture: expected (whole runs' fdem time per step over the
+/// probe's just before them, on the shared 2-core machine, two rounds,
+/// docs/benchmarks.md: 0.43-1.51 for the specimens and the tunnels whose
+/// rock breaks crack by crack, geometric mean 0.95; 1.75-2.39 at a share
+/// of 0.62 for those that fail at once, whose broken blocks stay in
+/// contact: 2.1) and at worst (a confined specimen fell to 0.24 of its
+/// intact throughput). With joints, the jointed tunnel's steps cost 2.7
+/// and 10 times the probe's (its joints loaded in contact, the probe's
+/// not; the second under a load that rose while it ran). The bound's
+/// margin on the whole.
+inline constexpr double kExpectedFractureCost = 1.0;
+inline constexpr double kFailsAtOnceCost = 2.8;
 inline constexpr double kWorstFractureCost = 4.0;
 inline constexpr double kExpectedJointCost = 3.5;
 inline constexpr double kWorstJointCost = 12.0;
