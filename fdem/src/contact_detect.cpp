@@ -47,8 +47,7 @@ Across across_edge(const EngineData& d, int t, int k) {
       continue;
     }
     const int e = (s - slot0) / 2, j = (s - slot0) % 2, side = entry & 1;
-    if (j == side && c.tri[2 * e + side] == t && c.nodes[4 * e + 1 + 2 * side] == b)
-      return {e, c.tri[2 * e + 1 - side]};
+    if (j == side && c.nodes[4 * e + 1 + 2 * side] == b) return {e, d.crack_triangle(e, 1 - side)};
   }
   return {};
 }
@@ -312,7 +311,7 @@ void trial_pairs(EngineData& d) {
     for (int j = 0; j < nc; ++j)
       if (boxes_overlap(box, &c.boxes[4 * j])) add(t, c.candidates[j]);
   }
-  for (int e : s.cracks) add(d.cracks.tri[2 * e], d.cracks.tri[2 * e + 1]);
+  for (int e : s.cracks) add(d.crack_triangle(e, 0), d.crack_triangle(e, 1));
   const int slot0 = static_cast<int>(d.crack_slot0());
   for (int v : s.vertices) {
     s.ints.clear();  // the triangles with a corner at v, each once
@@ -442,7 +441,7 @@ void contact_breaks(EngineData& d) {
       continue;
     s.cracks.push_back(e);
     for (int side = 0; side < 2; ++side) {
-      const int t = d.cracks.tri[2 * e + side];
+      const int t = d.crack_triangle(e, side);
       if (d.tris.active[t] && candidate_index(c, t) < 0) s.tris.push_back(t);
       s.vertices.push_back(d.nodes.vertex[d.cracks.nodes[4 * e + side]]);
     }

@@ -122,10 +122,9 @@ void fields(Ar& ar, Triangles& t) {
 
 template <class Ar>
 void fields(Ar& ar, Cracks& c) {
-  ROCKFDEM_CHECKPOINT_MEMBERS(Cracks, 12);
+  ROCKFDEM_CHECKPOINT_MEMBERS(Cracks, 11);
   ar.tag("CRAK");
   ar.model(c.nodes);
-  ar.model(c.tri);
   ar.state(c.damage);
   ar.state(c.material);
   ar.state(c.state);
