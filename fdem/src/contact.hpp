@@ -30,7 +30,6 @@ struct EngineData;
 /// run allocates nothing.
 struct BreakScratch {
   std::vector<int> cracks, tris, vertices, ints, merged;
-  std::vector<double> boxes;
   std::vector<std::array<int, 2>> trial, found;
   std::vector<int> gather_index;  ///< per candidate: its gather row, -1 between uses
 };

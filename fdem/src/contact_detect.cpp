@@ -273,26 +273,25 @@ void build_gather(EngineData& d) {
 
 /// Inserts the (ascending, new) triangles s.tris into the candidates with
 /// their boxes, and their nodes into the watched nodes: one merge each.
+/// The candidates and boxes merge in place from the back (every old entry
+/// moves up or stays), so no second array of boxes is kept.
 void insert_candidates(EngineData& d) {
   ContactData& c = d.contact;
   BreakScratch& s = c.breaks;
-  const std::size_t n = c.candidates.size() + s.tris.size();
-  s.merged.resize(n);
-  s.boxes.resize(4 * n);
-  std::size_t i = 0, j = 0;
-  for (std::size_t k = 0; k < n; ++k) {
-    double* box = &s.boxes[4 * k];
-    if (j == s.tris.size() || (i < c.candidates.size() && c.candidates[i] < s.tris[j])) {
-      s.merged[k] = c.candidates[i];
-      std::copy_n(&c.boxes[4 * i], 4, box);
-      ++i;
+  std::size_t i = c.candidates.size(), j = s.tris.size();
+  const std::size_t n = i + j;
+  c.candidates.resize(n);
+  c.boxes.resize(4 * n);
+  for (std::size_t k = n; j > 0; --k) {  // once the new ones are placed, the rest stays
+    if (i > 0 && c.candidates[i - 1] > s.tris[j - 1]) {
+      --i;
+      c.candidates[k - 1] = c.candidates[i];
+      std::copy_n(&c.boxes[4 * i], 4, &c.boxes[4 * (k - 1)]);
     } else {
-      s.merged[k] = s.tris[j++];
-      triangle_box(d, s.merged[k], box);
+      c.candidates[k - 1] = s.tris[--j];
+      triangle_box(d, c.candidates[k - 1], &c.boxes[4 * (k - 1)]);
     }
   }
-  std::swap(c.candidates, s.merged);
-  std::swap(c.boxes, s.boxes);
   s.ints.clear();
   for (int t : s.tris)
     for (int k = 0; k < 3; ++k) s.ints.push_back(d.tris.nodes[3 * t + k]);

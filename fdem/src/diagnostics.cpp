@@ -158,9 +158,8 @@ std::vector<MemoryPart> memory_parts(const detail::EngineData& d) {
   add_parts(p, "contact.grid", "cell cell_start items count offset found", g.cell, g.cell_start,
             g.items, g.count, g.offset, g.found);
   const auto& b = k.breaks;
-  add_parts(p, "contact.breaks", "cracks tris vertices ints merged boxes trial found gather_index",
-            b.cracks, b.tris, b.vertices, b.ints, b.merged, b.boxes, b.trial, b.found,
-            b.gather_index);
+  add_parts(p, "contact.breaks", "cracks tris vertices ints merged trial found gather_index",
+            b.cracks, b.tris, b.vertices, b.ints, b.merged, b.trial, b.found, b.gather_index);
   add_parts(p, "contact.narrow", "tris rows", k.narrow.tris, k.narrow.rows);
   return p;
 }
