@@ -7,9 +7,11 @@
 // consistent split for a constant traction on a linear edge).
 #include "boundary.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 
+#include "node_list.hpp"
 #include "rockfdem/error.hpp"
 
 namespace rockfdem::fdem::detail {
@@ -89,6 +91,74 @@ void edge_geometry(const EngineData& d, const EdgeRef& e, double& len, double& n
   ny = -dx / len;
 }
 
+bool is_kinematic(const BoundaryCondition& bc) {
+  return bc.x != Constraint::kFree || bc.y != Constraint::kFree;
+}
+
+/// Calls f(node) for every engine node at mesh vertex v.
+template <class F>
+void for_vertex_nodes(const EngineData& d, int v, F&& f) {
+  for (int i = d.vertex_node_start[v]; i < d.vertex_node_start[v + 1]; ++i) f(d.vertex_nodes[i]);
+}
+
+/// The nodes that get a boundary record, ascending: the two nodes of each
+/// absorbing edge, and every node at a kinematic edge's two vertices.
+std::vector<int> record_nodes(const std::vector<BoundaryCondition>& bcs, const EngineData& d) {
+  std::vector<int> nodes;
+  for (const BoundaryCondition& bc : bcs) {
+    if (!is_kinematic(bc) && !bc.absorbing) continue;
+    for (const EdgeRef& e : d.edges) {
+      if (e.tag != bc.tag) continue;
+      for (int k : {e.ka, e.kb}) {
+        const int node = d.tris.nodes[3 * e.tri + k];
+        if (bc.absorbing) nodes.push_back(node);
+        if (is_kinematic(bc))
+          for_vertex_nodes(d, d.nodes.vertex[node], [&](int n) { nodes.push_back(n); });
+      }
+    }
+  }
+  std::sort(nodes.begin(), nodes.end());
+  nodes.erase(std::unique(nodes.begin(), nodes.end()), nodes.end());
+  return nodes;
+}
+
+/// The records of the listed nodes as they are built, and which of them
+/// the current condition's tag already holds.
+struct BoundaryBuild {
+  std::vector<int> nodes;  ///< ascending (record_nodes)
+  std::vector<BoundaryRecord> records;
+  std::vector<std::uint8_t> in_tag;
+};
+
+/// One condition's loads, dashpots, constraints and tagged nodes, in the
+/// order of the edges (the dashpots' sums and the tag's node order follow it).
+void apply_condition(const BoundaryCondition& bc, EngineData& d, BoundaryBuild& b) {
+  const bool kinematic = is_kinematic(bc);
+  TagNodes tagged{bc.tag, {}};
+  b.in_tag.assign(b.nodes.size(), 0);
+  for (const EdgeRef& e : d.edges) {
+    if (e.tag != bc.tag) continue;
+    double len, nx, ny;
+    edge_geometry(d, e, len, nx, ny);
+    const SolidConstants& m = d.solids[d.tris.material[e.tri]];
+    for (int k : {e.ka, e.kb}) {
+      const int node = d.tris.nodes[3 * e.tri + k];
+      const double fx = 0.5 * len * (bc.tx - bc.pressure * nx);
+      const double fy = 0.5 * len * (bc.ty - bc.pressure * ny);
+      if (fx != 0.0 || fy != 0.0) d.loads.push_back({node, fx, fy});
+      if (bc.absorbing) add_dashpot(b.records[index_in(b.nodes, node)], m, nx, ny, 0.5 * len);
+      if (!kinematic) continue;
+      for_vertex_nodes(d, d.nodes.vertex[node], [&](int n) {
+        const long r = index_in(b.nodes, n);
+        constrain(b.records[r], bc);
+        if (!b.in_tag[r]) tagged.nodes.push_back(n);
+        b.in_tag[r] = 1;
+      });
+    }
+  }
+  if (kinematic) d.tag_nodes.push_back(std::move(tagged));
+}
+
 }  // namespace
 
 void resolve_edges(const ModelInput& in, EngineData& d) {
@@ -107,50 +177,16 @@ void resolve_edges(const ModelInput& in, EngineData& d) {
 }
 
 void apply_boundary_conditions(const std::vector<BoundaryCondition>& bcs, EngineData& d) {
-  const std::size_t nn = d.nodes.size();
-  std::vector<BoundaryRecord> rec(nn);
-  std::vector<std::uint8_t> has(nn, 0);
+  // Records for the listed nodes only, not a record per node: the engine
+  // may be at its full size when a stage changes its conditions.
+  BoundaryBuild b{record_nodes(bcs, d), {}, {}};
+  b.records.resize(b.nodes.size());
   d.loads.clear();
   d.tag_nodes.clear();
-  for (const BoundaryCondition& bc : bcs) {
-    const bool kinematic = bc.x != Constraint::kFree || bc.y != Constraint::kFree;
-    TagNodes tagged{bc.tag, {}};
-    std::vector<std::uint8_t> in_tag(kinematic ? nn : 0, 0);
-    for (const EdgeRef& e : d.edges) {
-      if (e.tag != bc.tag) continue;
-      double len, nx, ny;
-      edge_geometry(d, e, len, nx, ny);
-      const SolidConstants& m = d.solids[d.tris.material[e.tri]];
-      for (int k : {e.ka, e.kb}) {
-        const int node = d.tris.nodes[3 * e.tri + k];
-        const double fx = 0.5 * len * (bc.tx - bc.pressure * nx);
-        const double fy = 0.5 * len * (bc.ty - bc.pressure * ny);
-        if (fx != 0.0 || fy != 0.0) d.loads.push_back({node, fx, fy});
-        if (bc.absorbing) {
-          add_dashpot(rec[node], m, nx, ny, 0.5 * len);
-          has[node] = 1;
-        }
-        if (!kinematic) continue;
-        const int v = d.nodes.vertex[node];
-        for (int i = d.vertex_node_start[v]; i < d.vertex_node_start[v + 1]; ++i) {
-          const int n = d.vertex_nodes[i];
-          constrain(rec[n], bc);
-          has[n] = 1;
-          if (!in_tag[n]) tagged.nodes.push_back(n);
-          in_tag[n] = 1;
-        }
-      }
-    }
-    if (kinematic) d.tag_nodes.push_back(std::move(tagged));
-  }
-  d.bc_records.clear();
-  d.nodes.bc_node.clear();
-  for (std::size_t i = 0; i < nn; ++i)
-    if (has[i]) {
-      d.nodes.bc_node.push_back(static_cast<int>(i));
-      d.bc_records.push_back(rec[i]);
-    }
+  for (const BoundaryCondition& bc : bcs) apply_condition(bc, d, b);
+  d.nodes.bc_node = std::move(b.nodes);
   d.nodes.bc_node.shrink_to_fit();
+  d.bc_records = std::move(b.records);
   d.masses_dirty = true;  // external forces are rebuilt with the masses
 }
 

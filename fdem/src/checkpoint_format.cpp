@@ -51,13 +51,13 @@ bool append(std::istream& in, std::size_t n, std::string& file) {
 
 }  // namespace
 
-void CheckpointReader::raw(void* p, std::size_t n) {
+void ReadCursor::raw(void* p, std::size_t n) {
   if (n > end_ - pos_) truncated(end_, " (a member needs " + std::to_string(n) + " bytes there)");
-  std::memcpy(p, file_.data() + pos_, n);
+  if (p != nullptr) std::memcpy(p, file_.data() + pos_, n);
   pos_ += n;
 }
 
-void CheckpointReader::count(std::uint64_t& n, std::size_t min_element_bytes) {
+void ReadCursor::count(std::uint64_t& n, std::size_t min_element_bytes) {
   const std::size_t at = pos_;
   raw(&n, sizeof n);
   if (n > (end_ - pos_) / min_element_bytes)
@@ -65,7 +65,7 @@ void CheckpointReader::count(std::uint64_t& n, std::size_t min_element_bytes) {
             " exceeds the rest of the file");
 }
 
-void CheckpointReader::tag(const char (&t)[5]) {
+void ReadCursor::tag(const char (&t)[5]) {
   const std::size_t at = pos_;
   char got[4];
   raw(got, 4);
@@ -74,28 +74,32 @@ void CheckpointReader::tag(const char (&t)[5]) {
             ", found '" + std::string(got, 4) + "'");
 }
 
-void CheckpointReader::finish() const {
+void ReadCursor::finish() const {
   if (pos_ != end_)
     corrupt(std::to_string(end_ - pos_) + " unread bytes after the last section at byte " +
             std::to_string(pos_));
 }
 
-void write_checkpoint(std::ostream& out, std::uint64_t fingerprint, const std::string& payload) {
-  const std::uint64_t total = kCheckpointHeaderBytes + payload.size() + kCheckpointChecksumBytes;
-  std::string header(kMagic, sizeof kMagic);
-  auto put = [&](const auto& v) { header.append(reinterpret_cast<const char*>(&v), sizeof v); };
-  put(kByteOrderMark);
-  put(kCheckpointVersion);
-  put(total);
-  put(fingerprint);
-  Fnv1a sum;
-  sum.add(header.data(), header.size());
-  sum.add(payload.data(), payload.size());
-  const std::uint64_t checksum = sum.value();
-  out.write(header.data(), static_cast<std::streamsize>(header.size()));
-  out.write(payload.data(), static_cast<std::streamsize>(payload.size()));
-  out.write(reinterpret_cast<const char*>(&checksum), sizeof checksum);
-  if (!out) throw InputError("fdem: writing the checkpoint failed (disk full or stream closed?)");
+CheckpointWriter::CheckpointWriter(std::ostream& out, std::uint64_t fingerprint,
+                                   std::uint64_t payload_bytes)
+    : out_(out) {
+  const std::uint64_t total = kCheckpointHeaderBytes + payload_bytes + kCheckpointChecksumBytes;
+  raw(kMagic, sizeof kMagic);
+  raw(&kByteOrderMark, sizeof kByteOrderMark);
+  raw(&kCheckpointVersion, sizeof kCheckpointVersion);
+  raw(&total, sizeof total);
+  raw(&fingerprint, sizeof fingerprint);
+}
+
+void CheckpointWriter::raw(const void* p, std::size_t n) {
+  sum_.add(p, n);
+  out_.write(static_cast<const char*>(p), static_cast<std::streamsize>(n));
+}
+
+void CheckpointWriter::finish() {
+  const std::uint64_t checksum = sum_.value();
+  out_.write(reinterpret_cast<const char*>(&checksum), sizeof checksum);
+  if (!out_) throw InputError("fdem: writing the checkpoint failed (disk full or stream closed?)");
 }
 
 std::string read_checkpoint(std::istream& in) {

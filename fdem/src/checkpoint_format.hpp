@@ -31,7 +31,7 @@ namespace rockfdem::fdem::detail {
 
 /// Bump when a saved member is added, removed or reordered: older files are
 /// then refused with a clear message instead of being misread.
-constexpr std::uint32_t kCheckpointVersion = 13;  // 2: energy ledger; 3: contact updates;
+constexpr std::uint32_t kCheckpointVersion = 14;  // 2: energy ledger; 3: contact updates;
                                                   // 4: mass scaling; 5: strength factors,
                                                   // kinetic damping; 6: joint friction;
                                                   // 7: compact engine arrays; 8: joint
@@ -40,7 +40,8 @@ constexpr std::uint32_t kCheckpointVersion = 13;  // 2: energy ledger; 3: contac
                                                   // contact topology from the slots;
                                                   // 11: boundary records' nodes listed;
                                                   // 12: no edge list in contact;
-                                                  // 13: no component labels
+                                                  // 13: no component labels;
+                                                  // 14: crack triangles from the slots
 constexpr std::size_t kCheckpointHeaderBytes = 32;
 constexpr std::size_t kCheckpointChecksumBytes = 8;
 
@@ -134,26 +135,45 @@ class Channels {
   Archive& self() { return static_cast<Archive&>(*this); }
 };
 
-/// Appends the state members to bytes().
-class CheckpointWriter : public Channels<CheckpointWriter, true> {
+/// Counts the bytes of the state members: the header's length field, so
+/// that the writer can stream the payload without holding it.
+class CheckpointSizer : public Channels<CheckpointSizer, true> {
  public:
-  static constexpr bool kReading = false;
-  void raw(const void* p, std::size_t n) { bytes_.append(static_cast<const char*>(p), n); }
+  static constexpr bool kReading = false, kChecking = false;
+  void raw(const void*, std::size_t n) { bytes_ += n; }
   void count(std::uint64_t& n, std::size_t) { raw(&n, sizeof n); }
-  void tag(const char (&t)[5]) { raw(t, 4); }
-  const std::string& bytes() const { return bytes_; }
+  void tag(const char (&)[5]) { bytes_ += 4; }
+  std::uint64_t bytes() const { return bytes_; }
 
  private:
-  std::string bytes_;
+  std::uint64_t bytes_ = 0;
 };
 
-/// Reads the state members back from a file checked by read_checkpoint;
-/// throws InputError naming the byte where something does not fit.
-class CheckpointReader : public Channels<CheckpointReader, true> {
+/// Writes header, state members and checksum straight to a stream (a copy
+/// of the payload would be as large as the engine's state).
+class CheckpointWriter : public Channels<CheckpointWriter, true> {
  public:
-  static constexpr bool kReading = true;
-  CheckpointReader(const std::string& file, std::size_t begin, std::size_t end)
+  static constexpr bool kReading = false, kChecking = false;
+  /// Writes the header; `payload_bytes` from a CheckpointSizer.
+  CheckpointWriter(std::ostream& out, std::uint64_t fingerprint, std::uint64_t payload_bytes);
+  void raw(const void* p, std::size_t n);
+  void count(std::uint64_t& n, std::size_t) { raw(&n, sizeof n); }
+  void tag(const char (&t)[5]) { raw(t, 4); }
+  /// Writes the checksum; throws InputError if the stream failed.
+  void finish();
+
+ private:
+  std::ostream& out_;
+  Fnv1a sum_;
+};
+
+/// Where a reader stands in a file checked by read_checkpoint; throws
+/// InputError naming the byte where something does not fit.
+class ReadCursor {
+ public:
+  ReadCursor(const std::string& file, std::size_t begin, std::size_t end)
       : file_(file), pos_(begin), end_(end) {}
+  /// Copies the next n bytes to p (nowhere when p is null).
   void raw(void* p, std::size_t n);
   /// Reads a vector length; refuses one that cannot fit in what is left.
   void count(std::uint64_t& n, std::size_t min_element_bytes);
@@ -166,10 +186,27 @@ class CheckpointReader : public Channels<CheckpointReader, true> {
   std::size_t pos_, end_;
 };
 
+/// Reads the state members back into the engine's own arrays.
+class CheckpointReader : public Channels<CheckpointReader, true>, public ReadCursor {
+ public:
+  static constexpr bool kReading = true, kChecking = false;
+  using ReadCursor::ReadCursor;
+};
+
+/// Walks the state members through the file without storing anything: run
+/// before the reader, it finds every fault the reader could meet, so that
+/// the reader can write into the engine in place and never stop halfway.
+class CheckpointChecker : public Channels<CheckpointChecker, true>, public ReadCursor {
+ public:
+  static constexpr bool kReading = false, kChecking = true;
+  using ReadCursor::ReadCursor;
+  void raw(const void*, std::size_t n) { ReadCursor::raw(nullptr, n); }
+};
+
 /// Hashes the model members (the fingerprint).
 class ModelHasher : public Channels<ModelHasher, false> {
  public:
-  static constexpr bool kReading = false;
+  static constexpr bool kReading = false, kChecking = false;
   void raw(const void* p, std::size_t n) { fnv_.add(p, n); }
   void count(std::uint64_t& n, std::size_t) { raw(&n, sizeof n); }
   void tag(const char (&)[5]) {}
@@ -197,6 +234,17 @@ template <class Ar, class T>
 void io(Ar& ar, std::vector<T>& v) {
   std::uint64_t n = v.size();
   ar.count(n, kRawBytes<T> ? sizeof(T) : 1);
+  if constexpr (Ar::kChecking) {  // the elements' bytes, v left alone
+    if constexpr (kRawBytes<T>) {
+      ar.raw(nullptr, n * sizeof(T));  // count() bounded n by the bytes left
+    } else {
+      for (std::uint64_t i = 0; i < n; ++i) {
+        T e{};
+        io(ar, e);
+      }
+    }
+    return;
+  }
   if constexpr (Ar::kReading) v.resize(n);
   if constexpr (kRawBytes<T>) {
     if (n > 0) ar.raw(v.data(), n * sizeof(T));
@@ -206,9 +254,6 @@ void io(Ar& ar, std::vector<T>& v) {
 }
 
 // --- Framing ------------------------------------------------------------------------
-
-/// Writes header, payload and checksum; throws InputError if the stream fails.
-void write_checkpoint(std::ostream& out, std::uint64_t fingerprint, const std::string& payload);
 
 /// Reads one checkpoint (exactly its bytes) from `in` and checks magic, byte
 /// order, version, length and checksum, in that order, throwing InputError

@@ -47,8 +47,7 @@ Across across_edge(const EngineData& d, int t, int k) {
       continue;
     }
     const int e = (s - slot0) / 2, j = (s - slot0) % 2, side = entry & 1;
-    if (j == side && c.tri[2 * e + side] == t && c.nodes[4 * e + 1 + 2 * side] == b)
-      return {e, c.tri[2 * e + 1 - side]};
+    if (j == side && c.nodes[4 * e + 1 + 2 * side] == b) return {e, d.crack_triangle(e, 1 - side)};
   }
   return {};
 }
@@ -228,62 +227,71 @@ double carry_friction(EngineData& d) {
   return change;
 }
 
-/// CSR contact triangle -> (2 pair + side), in ascending pair order. Linear
-/// in pairs and candidates (the pairs' triangles are candidates): it runs at
-/// every local update as well as at every detection.
-void build_gather(EngineData& d) {
-  ContactData& c = d.contact;
-  std::vector<int>& index = c.breaks.gather_index;  // -1 between calls
-  index.resize(d.tris.size(), -1);
-  for (const auto& p : c.pairs) index[p[0]] = index[p[1]] = 0;
-  c.gather_tri.clear();
-  for (int t : c.candidates)
-    if (index[t] == 0) {
-      index[t] = static_cast<int>(c.gather_tri.size());
-      c.gather_tri.push_back(t);
-    }
-  c.gather_start.assign(c.gather_tri.size() + 1, 0);
-  for (const auto& p : c.pairs) {
-    ++c.gather_start[index[p[0]] + 1];
-    ++c.gather_start[index[p[1]] + 1];
-  }
-  for (std::size_t g = 0; g < c.gather_tri.size(); ++g) c.gather_start[g + 1] += c.gather_start[g];
-  c.gather_entry.resize(2 * c.pairs.size());
-  c.grid.offset.assign(c.gather_start.begin(), c.gather_start.end() - 1);
-  for (std::size_t p = 0; p < c.pairs.size(); ++p)
-    for (int side = 0; side < 2; ++side)
-      c.gather_entry[c.grid.offset[index[c.pairs[p][side]]]++] = static_cast<int>(2 * p + side);
-  for (int t : c.gather_tri) index[t] = -1;
-}
-
 /// Index of triangle t in the (ascending) candidates, or -1.
 int candidate_index(const ContactData& c, int t) {
   const auto it = std::lower_bound(c.candidates.begin(), c.candidates.end(), t);
   return it != c.candidates.end() && *it == t ? static_cast<int>(it - c.candidates.begin()) : -1;
 }
 
+/// CSR contact triangle -> (2 pair + side), in ascending pair order. Linear
+/// in pairs and candidates (the pairs' triangles are candidates) but for
+/// one search per pair: it runs at every local update as well as at every
+/// detection.
+void build_gather(EngineData& d) {
+  ContactData& c = d.contact;
+  const std::size_t np = c.pairs.size();
+  // Each pair side's candidate position: the first sides ascend with the
+  // canonical order (one walk), the second are searched. Kept in the
+  // narrow phase's per-entry rows, which the next contact pass rewrites.
+  std::vector<int>& at = c.narrow.rows;
+  at.resize(2 * np);
+  for (std::size_t q = 0, i = 0; q < np; ++q) {
+    while (c.candidates[i] < c.pairs[q][0]) ++i;
+    at[2 * q] = static_cast<int>(i);
+    at[2 * q + 1] = candidate_index(c, c.pairs[q][1]);
+  }
+  // Gather row per candidate, not per triangle (most triangles are none);
+  // -1 between calls.
+  std::vector<int>& row = c.breaks.gather_index;
+  row.resize(c.candidates.size(), -1);
+  for (int k : at) row[k] = 0;
+  c.gather_tri.clear();
+  for (std::size_t i = 0; i < c.candidates.size(); ++i)
+    if (row[i] == 0) {
+      row[i] = static_cast<int>(c.gather_tri.size());
+      c.gather_tri.push_back(c.candidates[i]);
+    }
+  c.gather_start.assign(c.gather_tri.size() + 1, 0);
+  for (int k : at) ++c.gather_start[row[k] + 1];
+  for (std::size_t g = 0; g < c.gather_tri.size(); ++g) c.gather_start[g + 1] += c.gather_start[g];
+  c.gather_entry.resize(2 * np);
+  c.grid.offset.assign(c.gather_start.begin(), c.gather_start.end() - 1);
+  for (std::size_t e = 0; e < 2 * np; ++e)
+    c.gather_entry[c.grid.offset[row[at[e]]]++] = static_cast<int>(e);
+  for (int k : at) row[k] = -1;
+}
+
 /// Inserts the (ascending, new) triangles s.tris into the candidates with
 /// their boxes, and their nodes into the watched nodes: one merge each.
+/// The candidates and boxes merge in place from the back (every old entry
+/// moves up or stays), so no second array of boxes is kept.
 void insert_candidates(EngineData& d) {
   ContactData& c = d.contact;
   BreakScratch& s = c.breaks;
-  const std::size_t n = c.candidates.size() + s.tris.size();
-  s.merged.resize(n);
-  s.boxes.resize(4 * n);
-  std::size_t i = 0, j = 0;
-  for (std::size_t k = 0; k < n; ++k) {
-    double* box = &s.boxes[4 * k];
-    if (j == s.tris.size() || (i < c.candidates.size() && c.candidates[i] < s.tris[j])) {
-      s.merged[k] = c.candidates[i];
-      std::copy_n(&c.boxes[4 * i], 4, box);
-      ++i;
+  std::size_t i = c.candidates.size(), j = s.tris.size();
+  const std::size_t n = i + j;
+  c.candidates.resize(n);
+  c.boxes.resize(4 * n);
+  for (std::size_t k = n; j > 0; --k) {  // once the new ones are placed, the rest stays
+    if (i > 0 && c.candidates[i - 1] > s.tris[j - 1]) {
+      --i;
+      c.candidates[k - 1] = c.candidates[i];
+      std::copy_n(&c.boxes[4 * i], 4, &c.boxes[4 * (k - 1)]);
     } else {
-      s.merged[k] = s.tris[j++];
-      triangle_box(d, s.merged[k], box);
+      c.candidates[k - 1] = s.tris[--j];
+      triangle_box(d, c.candidates[k - 1], &c.boxes[4 * (k - 1)]);
     }
   }
-  std::swap(c.candidates, s.merged);
-  std::swap(c.boxes, s.boxes);
   s.ints.clear();
   for (int t : s.tris)
     for (int k = 0; k < 3; ++k) s.ints.push_back(d.tris.nodes[3 * t + k]);
@@ -312,7 +320,7 @@ void trial_pairs(EngineData& d) {
     for (int j = 0; j < nc; ++j)
       if (boxes_overlap(box, &c.boxes[4 * j])) add(t, c.candidates[j]);
   }
-  for (int e : s.cracks) add(d.cracks.tri[2 * e], d.cracks.tri[2 * e + 1]);
+  for (int e : s.cracks) add(d.crack_triangle(e, 0), d.crack_triangle(e, 1));
   const int slot0 = static_cast<int>(d.crack_slot0());
   for (int v : s.vertices) {
     s.ints.clear();  // the triangles with a corner at v, each once
@@ -442,7 +450,7 @@ void contact_breaks(EngineData& d) {
       continue;
     s.cracks.push_back(e);
     for (int side = 0; side < 2; ++side) {
-      const int t = d.cracks.tri[2 * e + side];
+      const int t = d.crack_triangle(e, side);
       if (d.tris.active[t] && candidate_index(c, t) < 0) s.tris.push_back(t);
       s.vertices.push_back(d.nodes.vertex[d.cracks.nodes[4 * e + side]]);
     }

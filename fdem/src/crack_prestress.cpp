@@ -49,8 +49,8 @@ double crack_frame(const EngineData& d, std::size_t c, double e[2], double n[2])
 
 /// Mean of the initial stresses of the element's two triangles, times n.
 void mean_traction(const EngineData& d, std::size_t c, const double n[2], double t[2]) {
-  const double* a = &d.tris.sigma0[3 * d.cracks.tri[2 * c]];
-  const double* b = &d.tris.sigma0[3 * d.cracks.tri[2 * c + 1]];
+  const double* a = &d.tris.sigma0[3 * d.crack_triangle(c, 0)];
+  const double* b = &d.tris.sigma0[3 * d.crack_triangle(c, 1)];
   const double sxx = 0.5 * (a[0] + b[0]), syy = 0.5 * (a[1] + b[1]), sxy = 0.5 * (a[2] + b[2]);
   t[0] = sxx * n[0] + sxy * n[1];
   t[1] = sxy * n[0] + syy * n[1];

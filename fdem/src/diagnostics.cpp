@@ -141,10 +141,10 @@ std::vector<MemoryPart> memory_parts(const detail::EngineData& d) {
             t.material, t.active);
   const auto& c = d.cracks;
   add_parts(p, "cracks",
-            "nodes tri damage material state mode active broken_step offset strength joints "
+            "nodes damage material state mode active broken_step offset strength joints "
             "joint_force",
-            c.nodes, c.tri, c.damage, c.material, c.state, c.mode, c.active, c.broken_step,
-            c.offset, c.strength, c.joints, c.joint_force);
+            c.nodes, c.damage, c.material, c.state, c.mode, c.active, c.broken_step, c.offset,
+            c.strength, c.joints, c.joint_force);
   add_parts(p, "engine", "slots block_partial energy_partial vertex_nodes vertex_node_start",
             d.slots, d.block_partial, d.energy_partial, d.vertex_nodes, d.vertex_node_start);
   const auto& k = d.contact;
@@ -158,9 +158,8 @@ std::vector<MemoryPart> memory_parts(const detail::EngineData& d) {
   add_parts(p, "contact.grid", "cell cell_start items count offset found", g.cell, g.cell_start,
             g.items, g.count, g.offset, g.found);
   const auto& b = k.breaks;
-  add_parts(p, "contact.breaks", "cracks tris vertices ints merged boxes trial found gather_index",
-            b.cracks, b.tris, b.vertices, b.ints, b.merged, b.boxes, b.trial, b.found,
-            b.gather_index);
+  add_parts(p, "contact.breaks", "cracks tris vertices ints merged trial found gather_index",
+            b.cracks, b.tris, b.vertices, b.ints, b.merged, b.trial, b.found, b.gather_index);
   add_parts(p, "contact.narrow", "tris rows", k.narrow.tris, k.narrow.rows);
   return p;
 }

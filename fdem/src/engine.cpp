@@ -188,7 +188,7 @@ std::array<int, 4> Engine::crack_nodes(std::size_t c) const {
 
 std::array<int, 2> Engine::crack_triangles(std::size_t c) const {
   check_index(c, n_cracks(), "crack element");
-  return {impl_->d.cracks.tri[2 * c], impl_->d.cracks.tri[2 * c + 1]};
+  return {impl_->d.crack_triangle(c, 0), impl_->d.crack_triangle(c, 1)};
 }
 
 // --- Time step -----------------------------------------------------------------

@@ -122,10 +122,9 @@ void fields(Ar& ar, Triangles& t) {
 
 template <class Ar>
 void fields(Ar& ar, Cracks& c) {
-  ROCKFDEM_CHECKPOINT_MEMBERS(Cracks, 12);
+  ROCKFDEM_CHECKPOINT_MEMBERS(Cracks, 11);
   ar.tag("CRAK");
   ar.model(c.nodes);
-  ar.model(c.tri);
   ar.state(c.damage);
   ar.state(c.material);
   ar.state(c.state);
@@ -237,9 +236,11 @@ std::uint64_t Engine::model_fingerprint() const {
 }
 
 void Engine::save_state(std::ostream& out) const {
-  detail::CheckpointWriter w;
-  detail::impl_fields(w, *impl_);  // the writer only reads
-  detail::write_checkpoint(out, model_fingerprint(), w.bytes());
+  detail::CheckpointSizer size;
+  detail::impl_fields(size, *impl_);  // the archives only read the engine
+  detail::CheckpointWriter w(out, model_fingerprint(), size.bytes());
+  detail::impl_fields(w, *impl_);
+  w.finish();
 }
 
 void Engine::load_state(std::istream& in) {
@@ -249,14 +250,19 @@ void Engine::load_state(std::istream& in) {
     throw InputError("fdem: checkpoint belongs to another model (fingerprint " +
                      detail::hex64(theirs) + ", this engine's is " + detail::hex64(ours) +
                      "); load it into an Engine built from the same ModelInput");
-  // Read into a copy: the model members and the thread count stay this
-  // engine's, and a failure leaves the engine as it was.
-  Impl next = *impl_;
-  detail::CheckpointReader r(file, detail::kCheckpointHeaderBytes,
-                             file.size() - detail::kCheckpointChecksumBytes);
-  detail::impl_fields(r, next);
+  // Read in place, not into a copy of the engine (which would double the
+  // memory at a restart): the checker first walks the same members through
+  // the same bytes without storing them, so every fault is found before
+  // the reader changes anything. The model members and the thread count
+  // stay this engine's.
+  const std::size_t begin = detail::kCheckpointHeaderBytes,
+                    end = file.size() - detail::kCheckpointChecksumBytes;
+  detail::CheckpointChecker check(file, begin, end);
+  detail::impl_fields(check, *impl_);
+  check.finish();
+  detail::CheckpointReader r(file, begin, end);
+  detail::impl_fields(r, *impl_);
   r.finish();
-  *impl_ = std::move(next);
 }
 
 }  // namespace rockfdem::fdem

@@ -92,7 +92,6 @@ struct Triangles {
 
 struct Cracks {
   std::vector<int> nodes;      ///< 4 per element: 0,1 first face; 3 faces 0, 2 faces 1
-  std::vector<int> tri;        ///< 2 per element
   std::vector<double> damage;  ///< 3 per element (end 0, midpoint, end 1)
   std::vector<std::uint16_t> material;
   std::vector<std::uint8_t> state;   ///< CrackState
@@ -179,6 +178,21 @@ struct EngineData {
   /// element takes the scalar loop (the reference the tests compare with).
   bool crack_batch = true;
   std::size_t crack_slot0() const { return 3 * tris.size(); }
+  /// Crack element e's triangle on `side` (0: its nodes 0, 1; 1: its nodes
+  /// 3, 2), from the slots of the side's first node: the one triangle there
+  /// that has the side's second node too. Not stored (8 B per element):
+  /// asked for at stage changes and detections, never per step.
+  int crack_triangle(std::size_t e, int side) const {
+    const int a = cracks.nodes[4 * e + 3 * side], b = cracks.nodes[4 * e + 1 + side];
+    const int slot0 = static_cast<int>(crack_slot0());
+    for (int q = nodes.slot_start[a]; q < nodes.slot_start[a + 1]; ++q) {
+      const int s = entry_slot(nodes.slot_index[q]);
+      if (s >= slot0) break;  // a node's triangle slots come before its crack slots
+      const int* tn = &tris.nodes[3 * (s / 3)];
+      if (tn[0] == b || tn[1] == b || tn[2] == b) return s / 3;
+    }
+    return -1;  // unreachable: both of a side's nodes are corners of its triangle
+  }
 };
 
 }  // namespace rockfdem::fdem::detail

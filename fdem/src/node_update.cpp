@@ -110,7 +110,7 @@ void refresh_crack_activity(EngineData& d) {
   Cracks& c = d.cracks;
   const std::size_t slot0 = d.crack_slot0();
   for (std::size_t e = 0; e < c.size(); ++e) {
-    const bool on = d.tris.active[c.tri[2 * e]] && d.tris.active[c.tri[2 * e + 1]];
+    const bool on = d.tris.active[d.crack_triangle(e, 0)] && d.tris.active[d.crack_triangle(e, 1)];
     c.active[e] = on;
     if (!on)
       for (int k = 0; k < 4; ++k) d.slots[2 * (slot0 + 2 * e) + k] = 0.0;

@@ -113,8 +113,6 @@ void add_crack(const ModelInput& in, EngineData& d, int t1, int k1, int t2) {
   c.nodes.push_back(tn[3 * t1 + (k1 + 1) % 3]);
   c.nodes.push_back(tn[3 * t2 + corner_of(in, t2, b)]);
   c.nodes.push_back(tn[3 * t2 + corner_of(in, t2, a)]);
-  c.tri.push_back(t1);
-  c.tri.push_back(t2);
   const Material& m1 = in.materials[in.material[t1]];
   const Material& m2 = in.materials[in.material[t2]];
   // Between two materials the weaker (lower tensile strength) governs.
@@ -154,7 +152,6 @@ void build_cracks(const ModelInput& in, EngineData& d) {
   std::sort(pairs.begin(), pairs.end());
   for (const auto& p : pairs) add_crack(in, d, p[0], p[1], p[2]);
   d.cracks.nodes.shrink_to_fit();  // grown by push_back: up to half of it unused
-  d.cracks.tri.shrink_to_fit();
   d.cracks.material.shrink_to_fit();
   const std::size_t nc = d.cracks.size();
   d.cracks.damage.assign(3 * nc, 0.0);

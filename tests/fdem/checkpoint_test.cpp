@@ -385,6 +385,22 @@ TEST(Checkpoint, save_load_save_gives_identical_bytes) {
   EXPECT_TRUE(save(e) == second);
 }
 
+// A restart reads into the engine's own arrays rather than into a copy of
+// the engine (which would double the memory at a restart): the node arrays,
+// of the same length before and after, keep their storage, and the state
+// is the saved one.
+TEST(Checkpoint, load_reads_in_place_into_the_engines_arrays) {
+  Engine e(scenario(2));
+  e.run(20);
+  const double* pos = e.positions().data();
+  const double* vel = e.velocities().data();
+  load(e, saved_at_kSave());
+  EXPECT_EQ(e.positions().data(), pos) << "the positions were read into another array";
+  EXPECT_EQ(e.velocities().data(), vel) << "the velocities were read into another array";
+  EXPECT_EQ(e.step_count(), kSave);
+  EXPECT_TRUE(save(e) == saved_at_kSave()) << "the state read in place saves other bytes";
+}
+
 // Equal for engines of the same input, whatever the thread count; different
 // for another mesh or another material constant.
 TEST(Checkpoint, fingerprint_tracks_mesh_and_materials_not_threads) {

@@ -8,16 +8,21 @@
 namespace rockfdem::fdem {
 namespace {
 
+/// A rock rectangle of nx by ny unit cells.
+ModelInput rock_rectangle(int nx, int ny) {
+  RectangleSpec spec;
+  spec.width = nx;
+  spec.height = ny;
+  spec.nx = nx;
+  spec.ny = ny;
+  return structured_rectangle(spec, test::rock());
+}
+
 // Two cells: the left one without fracture (its two triangles share nodes),
 // the right one with fracture (own nodes per triangle). Crack elements: the
 // middle edge and the right cell's diagonal, not the left cell's diagonal.
 TEST(Topology, nodes_split_only_where_fracture_is_allowed) {
-  RectangleSpec spec;
-  spec.width = 2;
-  spec.height = 1;
-  spec.nx = 2;
-  spec.ny = 1;
-  ModelInput in = structured_rectangle(spec, test::rock());
+  ModelInput in = rock_rectangle(2, 1);
   in.fracture = {0, 0, 1, 1};
   Engine e(in);
   EXPECT_EQ(e.n_nodes(), 4u + 6u);
@@ -33,6 +38,35 @@ TEST(Topology, nodes_split_only_where_fracture_is_allowed) {
     // Facing nodes sit at the same mesh vertex (0 faces 3, 1 faces 2).
     EXPECT_EQ(e.node_vertex()[n[0]], e.node_vertex()[n[3]]);
     EXPECT_EQ(e.node_vertex()[n[1]], e.node_vertex()[n[2]]);
+  }
+}
+
+// The triangles a crack element joins are derived from the node incidence,
+// not stored: on a mesh with a shared-node zone beside a fracture zone (so
+// that one face's nodes are shared by several triangles), each face's
+// triangle holds that face's two nodes, and the two differ. The middle
+// column's triangles without fracture, the rest with.
+TEST(Topology, crack_triangles_hold_their_faces_nodes) {
+  ModelInput in = rock_rectangle(3, 2);
+  in.fracture.assign(in.triangles.size(), 1);
+  for (std::size_t t = 0; t < in.triangles.size(); ++t) {
+    double cx = 0;
+    for (int v : in.triangles[t]) cx += in.x[v] / 3;
+    if (cx > 1 && cx < 2) in.fracture[t] = 0;
+  }
+  Engine e(in);
+  ASSERT_GT(e.n_cracks(), 0u);
+  auto holds = [&](int t, int a, int b) {
+    const auto n = e.triangle_nodes(std::size_t(t));
+    auto has = [&](int x) { return n[0] == x || n[1] == x || n[2] == x; };
+    return has(a) && has(b);
+  };
+  for (std::size_t c = 0; c < e.n_cracks(); ++c) {
+    const auto n = e.crack_nodes(c);
+    const auto t = e.crack_triangles(c);
+    EXPECT_NE(t[0], t[1]) << "crack " << c;
+    EXPECT_TRUE(holds(t[0], n[0], n[1])) << "crack " << c << ": first face";
+    EXPECT_TRUE(holds(t[1], n[3], n[2])) << "crack " << c << ": second face";
   }
 }
 

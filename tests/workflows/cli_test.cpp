@@ -348,6 +348,13 @@ TEST(Cli, mass_scaling_changes_the_steps_not_the_elastic_answer) {
     EXPECT_EQ(j["mass_scaling"]["enabled"].get<bool>(), k == 1);
     if (k == 1) {
       EXPECT_GT(j["mass_scaling"]["max_factor"].get<double>(), 10.0);
+      // The engine's arrays one by one add up to its total, exactly; the
+      // density factors of mass scaling are among them.
+      long parts = 0;
+      for (const auto& [name, bytes] : j["memory_breakdown_bytes"].items())
+        parts += bytes.get<long>();
+      EXPECT_EQ(parts, j["memory_bytes"].get<long>());
+      EXPECT_GT(j["memory_breakdown_bytes"].value("tris.mass_scale", 0L), 0L);
     }
     fs::remove_all(out);
   }

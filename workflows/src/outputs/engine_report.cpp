@@ -36,9 +36,12 @@ void report_engine(const fdem::Engine& e, const PhaseTimer& timer, RunRecord& su
   const double fdem = timer.seconds("fdem");
   summary.triangle_steps_per_second =
       fdem > 0 ? double(e.n_triangles()) * double(e.step_count()) / fdem : 0.0;
-  summary.engine =
-      EngineFigures{e.phase_times(), e.contact_counters(), e.mass_scaling_report(),
-                    long(e.memory_bytes()), double(e.memory_bytes()) / double(e.n_triangles())};
+  summary.engine = EngineFigures{e.phase_times(),
+                                 e.contact_counters(),
+                                 e.mass_scaling_report(),
+                                 long(e.memory_bytes()),
+                                 double(e.memory_bytes()) / double(e.n_triangles()),
+                                 e.memory_breakdown()};
   note_skipped(e, summary);
 }
 

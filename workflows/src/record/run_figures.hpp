@@ -163,13 +163,17 @@ struct ModelCounts {
 };
 
 /// The engine's own figures at the end ("fdem_modules", "contact",
-/// "mass_scaling", "memory_bytes", "memory_bytes_per_triangle").
+/// "mass_scaling", "memory_bytes", "memory_bytes_per_triangle",
+/// "memory_breakdown_bytes").
 struct EngineFigures {
   fdem::PhaseTimes modules;  ///< [s] per phase of the step
   fdem::ContactCounters contact;
   fdem::MassScalingReport mass_scaling;
   long memory_bytes = 0;
   double memory_bytes_per_triangle = 0;
+  /// The engine's arrays one by one (Engine::memory_breakdown()): which of
+  /// them a mesh size or a scene makes large, read from any run.
+  std::vector<fdem::MemoryPart> memory_parts;
 };
 
 /// One key point of the opening ("monitors".NAME) [mm, m].

@@ -440,6 +440,10 @@ void add_engine(nlohmann::json& j, const EngineFigures& f) {
   j["mass_scaling"] = mass_scaling_json(f.mass_scaling);
   j["memory_bytes"] = f.memory_bytes;
   j["memory_bytes_per_triangle"] = f.memory_bytes_per_triangle;
+  nlohmann::json parts = nlohmann::json::object();
+  for (const fdem::MemoryPart& p : f.memory_parts)
+    if (p.bytes > 0) parts[p.name] = p.bytes;  // the empty arrays would only lengthen the file
+  j["memory_breakdown_bytes"] = parts;
 }
 
 nlohmann::json insitu_json(const InsituRecord& r) {

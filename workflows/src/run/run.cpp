@@ -17,7 +17,6 @@
 
 #include <algorithm>
 #include <iostream>
-#include <sstream>
 
 #include "outputs/continuum_comparison.hpp"
 #include "outputs/face_distance.hpp"
@@ -72,19 +71,13 @@ void check_key_point_fields(const nlohmann::json& run, const std::vector<Monitor
                         file + ": ");
 }
 
-/// A restart's engine state and bolts put back, and the run state checked
-/// against the scene and mesh, before the output folder is claimed: a
-/// checkpoint that does not fit leaves OUTDIR as it found it. Returns the
+/// A restart's bolts put back, and the run state checked against the
+/// scene, mesh and the loaded engine, before the output folder is claimed:
+/// a checkpoint that does not fit leaves OUTDIR as it found it. Returns the
 /// hand-off's unbalanced-force ratio.
 double restore_before_writing(const Checkpoint& resume, const std::string& file, const Scene& scene,
                               const std::vector<Monitor>& monitors, const RunOutputs& out,
-                              fdem::Engine& engine, fdem::BoltPlan& bolts) {
-  try {
-    std::istringstream state(resume.engine_state);
-    engine.load_state(state);
-  } catch (const InputError& e) {
-    throw InputError("checkpoint " + file + ": its engine state: " + e.what());
-  }
+                              const fdem::Engine& engine, fdem::BoltPlan& bolts) {
   check_run_state_against_engine(file, resume.run, scene, engine.step_count(), engine.time());
   restore_bolts(resume.run.at("bolts"), bolts, file);
   check_key_point_fields(resume.run, monitors, out, file);
@@ -205,9 +198,15 @@ void Run::place_instruments() {
   const std::vector<Monitor>& monitors = key_points_.monitors();
   outputs().begin(mesh(), key_points_, bolts_,
                   std::make_unique<Instruments>(scene(), mesh(), engine(), monitors, bolts_));
-  if (resumed())
+  if (resumed()) {
+    try {
+      load_resumed_engine();
+    } catch (const InputError& e) {
+      throw InputError("checkpoint " + ctx().restart + ": its engine state: " + e.what());
+    }
     start_ratio_ = restore_before_writing(*resumed(), ctx().restart, scene(), monitors, outputs(),
                                           engine(), bolts_);
+  }
   timer().stamp("fdem setup");
 }
 

@@ -12,7 +12,6 @@
 // cursor and the outputs' rows, frames, peak and post-peak stop, so that
 // `--restart` continues to the uninterrupted run's state and history.
 #include <optional>
-#include <sstream>
 
 #include "outputs/specimen_outputs.hpp"
 #include "record/output_dir.hpp"
@@ -57,8 +56,7 @@ class SpecimenRun : StagedRun<SpecimenOutputs> {
         make_engine(specimen_model_input(scene(), mesh(), ctx().threads), scene(), ctx().force_dt));
     if (resumed()) {
       try {
-        std::istringstream state(resumed()->engine_state);
-        engine().load_state(state);
+        load_resumed_engine();
         outputs().check_fits(resumed()->run.at("outputs"));
       } catch (const InputError& e) {
         throw InputError("checkpoint " + ctx().restart + ": " + e.what());

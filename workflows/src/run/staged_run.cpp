@@ -1,7 +1,9 @@
 #include "run/staged_run.hpp"
 
+#include <istream>
 #include <sstream>
 #include <stdexcept>
+#include <streambuf>
 
 #include "outputs/run_outputs.hpp"
 #include "outputs/specimen_outputs.hpp"
@@ -10,6 +12,16 @@
 #include "rockfdem/mesh/build.hpp"
 
 namespace rockfdem::workflows {
+namespace {
+
+/// A stream over a string's bytes where they are (an istringstream would
+/// copy them).
+class BytesInPlace : public std::streambuf {
+ public:
+  explicit BytesInPlace(std::string& s) { setg(s.data(), s.data(), s.data() + s.size()); }
+};
+
+}  // namespace
 
 template <class Outputs>
 StagedRun<Outputs>::StagedRun(const Scene& scene, const RunContext& ctx)
@@ -34,6 +46,14 @@ template <class Outputs>
 void StagedRun<Outputs>::set_engine(fdem::Engine&& engine) {
   if (engine_) throw std::logic_error("the run's engine is given once");
   engine_.emplace(std::move(engine));
+}
+
+template <class Outputs>
+void StagedRun<Outputs>::load_resumed_engine() {
+  BytesInPlace bytes(resume_.engine_state);
+  std::istream in(&bytes);
+  engine_->load_state(in);
+  std::string().swap(resume_.engine_state);
 }
 
 template <class Outputs>

@@ -45,8 +45,13 @@ class StagedRun {
   Outputs& outputs() { return out_; }
   /// The engine, once set_engine has given it.
   fdem::Engine& engine() { return *engine_; }
-  /// A restart's checkpoint; null for a fresh run.
+  /// A restart's checkpoint; null for a fresh run. Its engine state is
+  /// empty once load_resumed_engine has read it.
   const Checkpoint* resumed() const { return restart_ ? &resume_ : nullptr; }
+  /// Reads a restart's engine state into the engine (throws InputError as
+  /// Engine::load_state does), then lets its bytes go: kept, they would
+  /// hold most of the engine's size again until the run ends.
+  void load_resumed_engine();
 
   void make_mesh();
   /// The run's engine, built from the scene and mesh; given once.
@@ -81,7 +86,7 @@ class StagedRun {
   const RunContext& ctx_;
   PhaseTimer timer_;
   const bool restart_;
-  const Checkpoint resume_;      ///< a restart's checkpoint
+  Checkpoint resume_;            ///< a restart's checkpoint
   const long checkpoint_every_;  ///< steps between checkpoints (0: none)
   RunRecord record_;
   Outputs out_;
