@@ -37,7 +37,8 @@ TEST(RockPlausibility, mohr_coulomb_ucs_is_the_closed_form) {
   EXPECT_NEAR(mohr_coulomb_ucs(1e6, 40), 2e6 * std::tan((45 + 20) * M_PI / 180), 1e-6);
 }
 
-// The default's soft rock: UCS 10.4 MPa, UCS/E 0.0035, ft/UCS 0.096, h/l_ch 0.58.
+// The generic soft rock (scenes/tunnel-seed-generic-rock.toml): UCS 10.4 MPa, UCS/E 0.0035,
+// ft/UCS 0.096, h/l_ch 0.58.
 TEST(RockPlausibility, a_soft_rock_within_every_range_gives_no_warning) {
   const RockPlausibilityFigures p = rock_plausibility(rock(3e9, 1e6, 3e6, 30), 0.58);
   ASSERT_TRUE(p.ucs_Pa);
