@@ -201,8 +201,11 @@ TEST(InputChecks, mesh_writes_a_preview_or_says_why_not) {
 // one that does not exist), with exit 2 and nothing written.
 TEST(InputChecks, a_tunnel_run_refuses_a_gradient_without_gravity_before_its_checkpoint) {
   const fs::path out = scratch("gravity");
-  const Result r = run("run " + kSeed + " --set insitu.unit_weight=27000 --restart " +
-                       (out / "none" / "checkpoint_000100.bin").string() + " -o " + out.string());
+  // A round density for a round figure in the message.
+  const Result r =
+      run("run " + kSeed +
+          " --set materials.rock.density=2500 --set insitu.unit_weight=27000 --restart " +
+          (out / "none" / "checkpoint_000100.bin").string() + " -o " + out.string());
   EXPECT_EQ(r.code, 2) << r.output;
   EXPECT_TRUE(has(r.output,
                   "key 'insitu.unit_weight' = 27000: the explicit stages need the weight this "

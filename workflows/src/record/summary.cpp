@@ -440,9 +440,14 @@ void add_engine(nlohmann::json& j, const EngineFigures& f) {
   j["mass_scaling"] = mass_scaling_json(f.mass_scaling);
   j["memory_bytes"] = f.memory_bytes;
   j["memory_bytes_per_triangle"] = f.memory_bytes_per_triangle;
+  // Nested by the name's dotted parts ("contact.grid.cell"), every key
+  // snake_case; the empty arrays would only lengthen the file.
   nlohmann::json parts = nlohmann::json::object();
-  for (const fdem::MemoryPart& p : f.memory_parts)
-    if (p.bytes > 0) parts[p.name] = p.bytes;  // the empty arrays would only lengthen the file
+  for (const fdem::MemoryPart& p : f.memory_parts) {
+    std::string path = "/" + p.name;
+    std::replace(path.begin(), path.end(), '.', '/');
+    if (p.bytes > 0) parts[nlohmann::json::json_pointer(path)] = p.bytes;
+  }
   j["memory_breakdown_bytes"] = parts;
 }
 
