@@ -419,7 +419,7 @@ void print_rock_mass(const Scene& scene) {
     std::printf(
         "  rock mass's ft:             %g of its UCS (materials.rock.mass_ft_over_ucs; "
         "Hoek-Brown's s sigma_ci / mb: %.3g MPa)\n",
-        r.ft_over_ucs, r.mass.s * r.intact.ucs / r.mass.mb / 1e6);
+        r.ft_over_ucs, hoek_brown_tensile_strength(r.mass, r.intact.ucs) / 1e6);
 }
 
 // The last line: valid, or valid with what the warnings said.

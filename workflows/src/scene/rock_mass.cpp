@@ -36,6 +36,10 @@ std::pair<double, double> mohr_coulomb_fit(const RockMassFigures& f, double sigm
   return {c, phi};
 }
 
+double hoek_brown_tensile_strength(const RockMassFigures& f, double sigma_ci) {
+  return f.s * sigma_ci / f.mb;
+}
+
 RockMassFigures rock_mass(const IntactRock& intact, double gsi, double disturbance,
                           double gamma_h) {
   RockMassFigures f = hoek_brown_constants(intact.mi, gsi, disturbance);
@@ -44,7 +48,7 @@ RockMassFigures rock_mass(const IntactRock& intact, double gsi, double disturban
       ci * (mb + 4 * s - a * (mb - 8 * s)) * std::pow(mb / 4 + s, a - 1) / (2 * (1 + a) * (2 + a));
   f.sigma_3max = f.sigma_cm * 0.47 * std::pow(f.sigma_cm / gamma_h, -0.94);
   std::tie(f.cohesion, f.friction_angle) = mohr_coulomb_fit(f, ci, f.sigma_3max);
-  f.tensile_strength = s * ci / mb;
+  f.tensile_strength = hoek_brown_tensile_strength(f, ci);
   f.young = intact.young *
             (0.02 + (1 - disturbance / 2) / (1 + std::exp((60 + 15 * disturbance - gsi) / 11)));
   return f;

@@ -52,6 +52,9 @@ RockMassFigures hoek_brown_constants(double mi, double gsi, double disturbance);
 std::pair<double, double> mohr_coulomb_fit(const RockMassFigures& f, double sigma_ci,
                                            double sigma_3max);
 
+/// Hoek-Brown's rock-mass tensile strength s sigma_ci / mb [Pa] of `f`.
+double hoek_brown_tensile_strength(const RockMassFigures& f, double sigma_ci);
+
 /// The rock mass of `intact` at `gsi` and `disturbance`, its Mohr-Coulomb
 /// fit for a tunnel under the in-situ stress `gamma_h` [Pa].
 RockMassFigures rock_mass(const IntactRock& intact, double gsi, double disturbance, double gamma_h);
