@@ -129,6 +129,7 @@ class PlasticProblem {
   SparseMatrix<double> system_matrix_;
   Vector<double> solution_, step_start_, system_rhs_;
   int failed_steps_ = 0;      ///< failed Newton steps over the whole release (max_failed_steps)
+  double reached_ = 0;        ///< the last lambda whose step converged
   Vector<double> box_load_;   ///< F0 - W_rock: the far-field traction (and the weight)
   Vector<double> wall_load_;  ///< W on the present wall
   double force_scale_ = 1;    ///< ||F0||
@@ -200,16 +201,24 @@ std::vector<PlasticField> PlasticProblem::run() {
   for (const double target : plastic_.release) {
     PlasticField field;
     Timer timer;
+    const auto keep = [&](const double at) {
+      output(at, field);
+      field.seconds = timer.wall_time();
+      fields.push_back(std::move(field));
+    };
+    // A step failed under stop_at_failure: what was reached, and maybe where.
+    const auto stopped = [&] {
+      if (plastic_.output_at_failure && reached_ > lambda) keep(reached_);
+      return std::move(fields);
+    };
     if (!lining_installed_ && install < target) {
-      if (install > lambda && !advance(lambda, install, field)) break;
+      if (install > lambda && !advance(lambda, install, field)) return stopped();
       lambda = std::max(lambda, install);
       install_lining();
     }
-    if (!advance(lambda, target, field)) break;  // stop_at_failure: what was reached
+    if (!advance(lambda, target, field)) return stopped();
     lambda = target;
-    output(lambda, field);
-    field.seconds = timer.wall_time();
-    fields.push_back(std::move(field));
+    keep(lambda);
   }
   return fields;
 }
@@ -458,10 +467,12 @@ double PlasticProblem::assemble(const double lambda) {
   return system_rhs_.l2_norm() / force_scale_;
 }
 
-// With softening the tangent of an iterate far from the answer can be
-// singular (seen with gamma_res = 1e-2 at the 5th iterate of a 0.05 step):
-// that step failed, and is halved like one that does not converge. Without
-// softening the error stands, as it always did.
+// A tangent with plastic flow in it can be singular: with softening at an
+// iterate far from the answer (seen with gamma_res = 1e-2 at the 5th iterate
+// of a 0.05 step), without it where the flowing cells form a mechanism
+// (ground at its limit load). That step failed, and is halved like one that
+// does not converge, so the release ends in the collapse verdict. A singular
+// elastic tangent (nothing flowing) is the input's fault: the error stands.
 bool PlasticProblem::newton(const double lambda, int& iterations) {
   Vector<double> du(dof_handler_.n_dofs());
   for (int it = 0; it <= plastic_.max_newton; ++it) {
@@ -472,7 +483,7 @@ bool PlasticProblem::newton(const double lambda, int& iterations) {
     try {
       grid::solve_direct(system_matrix_, du, system_rhs_);
     } catch (const InputError&) {  // solve_direct's "singular"
-      if (!rock_.softens()) throw;
+      if (!rock_.softens() && std::count(flowing_.begin(), flowing_.end(), 1) == 0) throw;
       return false;
     }
     constraints_.distribute(du);
@@ -494,7 +505,7 @@ bool PlasticProblem::advance(const double from, const double to, PlasticField& f
     step_start_ = solution_;
     if (newton(next, field.newton_iterations)) {
       commit();
-      lambda = next;
+      lambda = reached_ = next;
       ++field.steps;
       halvings = 0;
       step = std::min(plastic_.max_increment, 2 * step);

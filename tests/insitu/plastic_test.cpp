@@ -18,6 +18,7 @@
 
 #include "fixtures.hpp"
 #include "plastic_measures.hpp"
+#include "rockfdem/error.hpp"
 #include "rockfdem/insitu/constants.hpp"
 #include "rockfdem/mesh/build.hpp"
 
@@ -31,21 +32,31 @@ struct RingCase {
 
 class PlasticRing : public ::testing::TestWithParam<RingCase> {};
 
-TEST_P(PlasticRing, plastic_radius_and_wall_displacement_within_3pct_of_closed_form) {
-  const double a = 1.0, p0 = 10 * kMPa;
+// A circular opening of radius a in a 40 a box, graded from h_near to h_far.
+mesh::Mesh ring_mesh(double a, double h_near, double h_far, double grading) {
   mesh::MeshSpec s;
   s.kind = mesh::ModelKind::kTunnel;
   s.tunnel.shape = mesh::TunnelShape::kCircular;
   s.tunnel.radius = a;
   s.domain.width = s.domain.height = 40 * a;
-  s.size.size_near = 0.05 * a;
-  s.size.size_far = 2 * a;
-  s.size.grading_distance = 30 * a;
-  const mesh::Mesh m = mesh::build_mesh(s);
+  s.size.size_near = h_near;
+  s.size.size_far = h_far;
+  s.size.grading_distance = grading;
+  return mesh::build_mesh(s);
+}
 
+// The seed's test rock around it, hydrostatic p0.
+InsituSpec ring_spec(double p0) {
   InsituSpec spec = seed_spec(p0, p0);
   spec.materials.rock = ElasticMaterial{3e9, 0.25};
   spec.materials.core = spec.materials.rock;
+  return spec;
+}
+
+TEST_P(PlasticRing, plastic_radius_and_wall_displacement_within_3pct_of_closed_form) {
+  const double a = 1.0, p0 = 10 * kMPa;
+  const mesh::Mesh m = ring_mesh(a, 0.05 * a, 2 * a, 30 * a);
+  const InsituSpec spec = ring_spec(p0);
   PlasticSpec plastic;
   plastic.rock = MohrCoulombStrength{1 * kMPa, 30, GetParam().dilation_deg};
   plastic.release = {0.5, 1.0};
@@ -151,6 +162,38 @@ TEST(PlasticRingClosedForm, reduces_to_lame_at_the_critical_pressure) {
   const PlasticRingSolution s = plastic_ring(c);
   EXPECT_NEAR(s.plastic_radius / c.a, 1, 1e-8);
   EXPECT_NEAR(s.wall_displacement / lame, 1, 1e-7);
+}
+
+// Ground too weak to stand unsupported in its box: c 0.05 MPa, phi 20 deg
+// under p0 = 10 MPa. Salencon's plastic radius at p_i = 0 is 42 a, beyond
+// the box's 20 a, so the release to lambda = 1 has no equilibrium: the
+// flowing cells form a mechanism and the tangent turns singular on the way.
+// That is a collapse (NumericalError, or under stop_at_failure the last
+// state reached, whose lambda says where), never an input error.
+TEST(PlasticCollapse, weak_unsupported_ground_reports_where_it_gave_way) {
+  const double a = 1.0, p0 = 10 * kMPa;
+  const mesh::Mesh m = ring_mesh(a, 0.15 * a, 4 * a, 20 * a);
+  const InsituSpec spec = ring_spec(p0);
+  PlasticSpec plastic;
+  plastic.rock = MohrCoulombStrength{0.05 * kMPa, 20, 0};
+  plastic.release = {0.5, 1.0};
+  plastic.max_halvings = 4;
+  plastic.max_failed_steps = 20;
+  EXPECT_THROW(solve_mohr_coulomb(m, spec, plastic), NumericalError);
+
+  plastic.stop_at_failure = true;
+  plastic.output_at_failure = true;
+  const auto fields = solve_mohr_coulomb(m, spec, plastic);
+  ASSERT_FALSE(fields.empty());
+  const PlasticField& f = fields.back();
+  std::printf("  gave way beyond lambda %.4f, %zu of %zu triangles yielded\n", f.lambda,
+              f.n_yielded, m.n_triangles());
+  // Where the plastic zone (Salencon, perfectly plastic) reaches the box's
+  // edge, 20 a: p_i = 0.159 MPa, lambda 0.984; not before the zone passes
+  // 5 a (p_i = 1.11 MPa, lambda 0.889).
+  EXPECT_GT(f.lambda, 0.889);
+  EXPECT_LT(f.lambda, 1.0);
+  EXPECT_LT(f.unbalanced_ratio, plastic.tolerance);
 }
 
 }  // namespace

@@ -4,6 +4,7 @@
 #include <chrono>
 #include <cmath>
 
+#include "record/number_text.hpp"
 #include "rockfdem/error.hpp"
 #include "rockfdem/insitu/plastic.hpp"
 #include "run/continuum_ground_reaction.hpp"
@@ -172,6 +173,10 @@ PostPeakCounterpart solve_post_peak_counterpart(const Scene& scene, const mesh::
   // as long as the release lasts (over 15 min on the unlined test scene in
   // one element order, 62 s in another): 40 failed steps is a verdict.
   p.max_failed_steps = 40;
+  // Where the release gives way is part of the verdict: the last state
+  // reached comes back instead of an error.
+  p.stop_at_failure = true;
+  p.output_at_failure = true;
   insitu::validate(p);  // InputError: the strengths cannot be posed this way
   std::vector<insitu::PlasticField> fields;
   try {
@@ -180,9 +185,22 @@ PostPeakCounterpart solve_post_peak_counterpart(const Scene& scene, const mesh::
     out.reason = e.what();
     return out;
   }
+  if (fields.empty()) {
+    out.reason = "the first release step failed: the ground cannot stand at the hand-off";
+    return out;
+  }
   const insitu::PlasticField& f = fields.back();
   out.alpha = 1 - f.lambda;
   out.n_yielded = f.n_yielded;
+  if (f.lambda < p.release.back() - 1e-12) {
+    out.reason = "the release stops at alpha = " + fixed(out.alpha, 4) + " (" +
+                 std::to_string(f.n_yielded) + " triangles yielded)";
+    if (c.lining_alpha > 0)
+      out.reason += std::string(": the ground gives way ") +
+                    (out.alpha > c.lining_alpha ? "before" : "after") +
+                    " the support goes in at alpha = " + fixed(c.lining_alpha, 4);
+    return out;
+  }
   out.equilibrium = !yield_reaches_boundary(m, f.yielded);
   if (!out.equilibrium)
     out.reason = "the plastic zone reaches the model's outer boundary (" +

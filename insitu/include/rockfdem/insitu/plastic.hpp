@@ -59,6 +59,10 @@ struct PlasticSpec {
   /// lambdas reached are returned (a ground reaction curve up to the
   /// ground's collapse) instead of a NumericalError.
   bool stop_at_failure = false;
+  /// With stop_at_failure: the last state reached is returned too when it
+  /// lies between two lambdas of the release (its field's lambda then says
+  /// where the ground gave way; a verdict needs that, a curve does not).
+  bool output_at_failure = false;
 };
 
 struct PlasticField {
