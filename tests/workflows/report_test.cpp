@@ -455,3 +455,50 @@ TEST(Report, support_equilibria_are_found_once_and_read_by_both_files) {
   ASSERT_EQ(cells.size(), 8u) << md;
   EXPECT_EQ(cells[4], "123.4") << md;
 }
+
+// References read as monitoring reads them (references.reading = "survey"):
+// a shoulder on its 45 deg ray that moved (ux, uy) = (216, -134) mm reads
+// 216 mm of horizontal convergence, not its 254 mm radial figure; the vault
+// reads its settlement. The difference is against the survey figure, from
+// the in-situ state or, with from = "support", since the support's
+// installation (the report's extras carry those).
+TEST(Report, survey_references_compare_the_component_monitoring_reads) {
+  using namespace rockfdem::workflows;
+  Scene scene = load_scene(kTestDir + "/support_pair_supported.toml");
+  scene.references.survey = true;
+  scene.references.mm = {{"left_shoulder", 200.0}, {"vault", 220.0}};
+  RunRecord r(scene, 1);
+  r.status = "completed";
+  const double s = std::sqrt(0.5);
+  r.monitors.key_points["left_shoulder"] = {216.0,
+                                            -134.0,
+                                            std::hypot(216.0, 134.0),
+                                            (216.0 + 134.0) * s,
+                                            -4.0,
+                                            2.7,
+                                            s,
+                                            -s,
+                                            std::nullopt,
+                                            std::nullopt,
+                                            std::nullopt,
+                                            std::nullopt};
+  r.monitors.key_points["vault"] = {0.5,          -219.0,       219.0,        219.0,
+                                    0.0,          4.4,          0.0,          -1.0,
+                                    std::nullopt, std::nullopt, std::nullopt, std::nullopt};
+  ReportExtras x;
+  std::string md = report_markdown(scene, r, x);
+  auto shoulder = row_of(md, "left_shoulder");
+  ASSERT_EQ(shoulder.size(), 7u) << md;
+  EXPECT_EQ(shoulder[1], "247.49");
+  EXPECT_EQ(shoulder[4], "216.00 (horizontal)");
+  EXPECT_EQ(shoulder[6], "16.00 (8.0%)");
+  EXPECT_EQ(row_of(md, "vault")[4], "219.00 (vertical)");
+  EXPECT_EQ(row_of(md, "vault")[6], "-1.00 (-0.5%)");
+
+  scene.references.from_support = true;
+  x.survey_since_support_mm = {{"left_shoulder", 40.0}};
+  x.since_support_mm = {{"left_shoulder", 45.0}};
+  md = report_markdown(scene, r, x);
+  shoulder = row_of(md, "left_shoulder");
+  EXPECT_EQ(shoulder[6], "-160.00 (-80.0%)") << md;
+}

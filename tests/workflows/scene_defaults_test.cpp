@@ -278,6 +278,9 @@ std::map<std::string, Text> text_fields() {
   f["references.from"] = [](const Scene& s) {
     return s.references.from_support ? "support" : "start";
   };
+  f["references.reading"] = [](const Scene& s) {
+    return s.references.survey ? "survey" : "radial";
+  };
   f["references.source"] = [](const Scene& s) { return "\"" + s.references.source + "\""; };
   f["joints.dfn_file"] = [](const Scene& s) { return "\"" + s.joints.dfn_file + "\""; };
   f["joints.shear_strength"] = [](const Scene& s) {

@@ -86,3 +86,16 @@ TEST(StudyFigures, calibrate_help_lists_every_target_name) {
             std::string::npos)
       << r.output;
 }
+
+// The shoulders as monitoring reads them: each one's survey_mm (horizontal
+// convergence) becomes its column, and their mean the pair's.
+TEST(StudyFigures, the_shoulders_horizontal_convergence_becomes_columns) {
+  nlohmann::json s = tunnel_summary();
+  s["monitors"]["left_shoulder"] = {{"radial_mm", 247.0}, {"survey_mm", 215.9}};
+  s["monitors"]["right_shoulder"] = {{"radial_mm", 234.1}, {"survey_mm", 193.1}};
+  const nlohmann::json f = study::key_figures(s);
+  EXPECT_DOUBLE_EQ(f.at("left_shoulder_horizontal_mm").get<double>(), 215.9);
+  EXPECT_DOUBLE_EQ(f.at("right_shoulder_horizontal_mm").get<double>(), 193.1);
+  EXPECT_DOUBLE_EQ(f.at("shoulders_horizontal_mm").get<double>(), (215.9 + 193.1) / 2);
+  EXPECT_DOUBLE_EQ(f.at("shoulders_radial_mm").get<double>(), (247.0 + 234.1) / 2);
+}

@@ -39,7 +39,9 @@ po::options_description study_options() {
       "calibrate: NAME=VALUE (repeatable). Tunnels [mm]: vault, left_shoulder, "
       "right_shoulder, left_wall, right_wall, invert (radial from the in-situ state), each "
       "with _since_support (since the support's installation), shoulders and walls (a pair's "
-      "mean), vault_settlement, wall_chord_convergence, shoulder_chord_convergence. "
+      "mean), left_shoulder_horizontal, right_shoulder_horizontal and their mean "
+      "shoulders_horizontal (horizontal convergence, as monitoring reads it), "
+      "vault_settlement, wall_chord_convergence, shoulder_chord_convergence. "
       "Specimens: peak_stress [MPa] (UCS, Brazilian), tensile_strength [MPa] (Brazilian), "
       "modulus [GPa] (UCS: the pre-peak modulus, the slope over 0.2-0.6 of the peak)")(
       "weight", po::value<Strings>()->composing(), "calibrate: NAME=W, a target's weight (1)")(

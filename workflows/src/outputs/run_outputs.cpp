@@ -17,6 +17,7 @@
 #include "outputs/run_report.hpp"
 #include "outputs/support_diagrams.hpp"
 #include "record/output_dir.hpp"
+#include "record/survey_reading.hpp"
 #include "rockfdem/coupling/atomic_file.hpp"
 #include "rockfdem/coupling/fdem_model.hpp"
 #include "rockfdem/coupling/insitu_grid.hpp"
@@ -185,7 +186,7 @@ MonitorRecord RunOutputs::monitor_figures(const fdem::Engine& e) const {
     const auto k = key_points_->figures(e, mon);
     r.key_points[mon.name] = {k[0],         k[1],         k[2],         k[3],
                               mon.node_x,   mon.node_y,   mon.inward_x, mon.inward_y,
-                              std::nullopt, std::nullopt, std::nullopt};
+                              std::nullopt, std::nullopt, std::nullopt, std::nullopt};
   }
   // Per point (as field convergence points are read) and, apart, the
   // change of length of two chords between points.
@@ -471,6 +472,20 @@ std::map<std::string, double> RunOutputs::since_support() const {
   return out;
 }
 
+std::map<std::string, double> RunOutputs::survey_since_support() const {
+  const std::optional<std::size_t> row = support_row();
+  const MonitorRecord& mon = summary_.monitors;
+  std::map<std::string, double> out;
+  if (!row) return out;
+  for (const auto& [name, k] : mon.key_points) {
+    if (mon.points.count(name)) continue;
+    const double ux = k.ux_mm - history_->column(name + "_ux_mm")[*row];
+    const double uy = k.uy_mm - history_->column(name + "_uy_mm")[*row];
+    out[name] = survey_reading(name, ux, uy, k.inward_x, k.inward_y);
+  }
+  return out;
+}
+
 // What monitoring installed with the support reads (field convergence
 // data): a run without a lining or bolts stage adds nothing.
 void RunOutputs::add_since_support(MonitorRecord& monitors) const {
@@ -479,6 +494,8 @@ void RunOutputs::add_since_support(MonitorRecord& monitors) const {
     if (k != monitors.key_points.end() && !monitors.points.count(name))
       k->second.radial_since_support_mm = mm;
   }
+  for (const auto& [name, mm] : survey_since_support())
+    monitors.key_points[name].survey_since_support_mm = mm;
 }
 
 // History's first row is the hand-off step: the implicit stage's displacement.
@@ -504,6 +521,7 @@ void RunOutputs::add_from_unloaded(MonitorRecord& monitors) const {
 void RunOutputs::write_report() const {
   ReportExtras extras;
   extras.since_support_mm = since_support();
+  extras.survey_since_support_mm = survey_since_support();
   extras.pictures = pictures_;
   workflows::write_report(ctx_.output_dir, scene_, summary_, extras);
 }

@@ -120,6 +120,8 @@ class RunOutputs : public StepOutputs {
   /// Key points' radial displacement and the chords' closure [mm] since
   /// the support's installation (the record's figures less the history's then).
   std::map<std::string, double> since_support() const;
+  /// The key points' survey readings (record/survey_reading.hpp) since then.
+  std::map<std::string, double> survey_since_support() const;
   /// Adds each key point's `radial_since_support_mm` to the record's monitors.
   void add_since_support(MonitorRecord& monitors) const;
   /// Adds each key point's `radial_at_handoff_mm` (history's first row).

@@ -9,6 +9,7 @@
 #include "record/number_text.hpp"
 #include "record/output_dir.hpp"
 #include "record/support_equilibrium.hpp"
+#include "record/survey_reading.hpp"
 #include "rockfdem/coupling/atomic_file.hpp"
 #include "rockfdem/mesh/msh_io.hpp"
 #include "rockfdem/printable.hpp"
@@ -158,20 +159,34 @@ void status(std::ostream& md, const RunRecord& r) {
     if (!r.support || w != r.support->line()) md << "- warning: " << w << '\n';
 }
 
+std::optional<double> find_in(const std::map<std::string, double>& m, const std::string& name) {
+  const auto i = m.find(name);
+  return i == m.end() ? std::nullopt : std::optional<double>(i->second);
+}
+
 // A row of the key-point table: the figure, since support, the reference.
+// `survey`: the key point as monitoring reads it (none for a chord).
 void point_row(std::ostream& md, const std::string& name, double total, const ReportExtras& x,
-               const ReferenceSettings& ref, const std::optional<double>& at_handoff = {}) {
+               const ReferenceSettings& ref, const std::optional<double>& at_handoff = {},
+               const std::optional<double>& survey = {}) {
   md << "| " << name << " | " << fixed(total, 2) << " | "
      << (at_handoff ? fixed(*at_handoff, 2) : std::string("-")) << " | ";
-  const auto since = x.since_support_mm.find(name);
-  md << (since == x.since_support_mm.end() ? "-" : fixed(since->second, 2)) << " | ";
+  const std::optional<double> since = find_in(x.since_support_mm, name);
+  md << (since ? fixed(*since, 2) : std::string("-")) << " | ";
+  const std::optional<double> survey_since = find_in(x.survey_since_support_mm, name);
+  if (ref.survey)
+    md << (survey ? fixed(*survey, 2) + " (" + survey_direction(name) + ")" : std::string("-"))
+       << " | ";
   const auto r = ref.mm.find(name);
   if (r == ref.mm.end()) {
     md << "- | - |\n";
     return;
   }
+  // Like for like: the reading and the origin the references state.
+  const bool read_survey = ref.survey && survey;
+  const std::optional<double> from_support = read_survey ? survey_since : since;
   const double computed =
-      ref.from_support && since != x.since_support_mm.end() ? since->second : total;
+      ref.from_support && from_support ? *from_support : (read_survey ? *survey : total);
   md << fixed(r->second, 2) << " | " << fixed(computed - r->second, 2) << " ("
      << (r->second != 0 ? fixed(100 * (computed - r->second) / std::abs(r->second), 1) + "%"
                         : std::string("-"))
@@ -212,14 +227,21 @@ void key_points(std::ostream& md, const Scene& s, const MonitorRecord& mon, cons
     md << " References" << (ref.source.empty() ? "" : " (" + ref.source + ")")
        << " are measured from "
        << (ref.from_support ? "the support's installation" : "the in-situ state")
+       << (ref.survey ? " and read as monitoring reads them (the vault's settlement and the "
+                        "invert's heave vertical, the shoulders' and walls' convergence "
+                        "horizontal: the survey column)"
+                      : "")
        << "; difference = computed - reference.";
-  md << "\n\n| point | radial [mm] | at hand-off [mm] | since support [mm] | reference [mm] | "
-        "difference [mm] |\n|---|---|---|---|---|---|\n";
+  md << "\n\n| point | radial [mm] | at hand-off [mm] | since support [mm] | "
+     << (ref.survey ? "survey [mm] | " : "") << "reference [mm] | difference [mm] |\n"
+     << (ref.survey ? "|---|---|---|---|---|---|---|\n" : "|---|---|---|---|---|---|\n");
   for (const char* p : kKeyPointOrder) {
     const auto k = mon.key_points.find(p);
     // A scene monitor of the same name stands in the summary instead.
     if (k != mon.key_points.end() && !mon.points.count(p))
-      point_row(md, p, k->second.radial_mm, x, ref, k->second.radial_at_handoff_mm);
+      point_row(md, p, k->second.radial_mm, x, ref, k->second.radial_at_handoff_mm,
+                survey_reading(p, k->second.ux_mm, k->second.uy_mm, k->second.inward_x,
+                               k->second.inward_y));
   }
   if (mon.chords) {
     point_row(md, "wall_chord", mon.chords->wall_chord_convergence_mm, x, ref);

@@ -183,6 +183,8 @@ struct KeyPointFigures {
   double x = 0, y = 0;   ///< its node
   double inward_x = 0, inward_y = 0;
   std::optional<double> radial_since_support_mm;
+  /// As monitoring reads it (record/survey_reading.hpp), since the support.
+  std::optional<double> survey_since_support_mm;
   /// At the hand-off (history's first row): what the implicit stage gave.
   std::optional<double> radial_at_handoff_mm;
   /// (ux, uy) as a model loaded from zero stress on a fixed base reads it

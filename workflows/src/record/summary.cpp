@@ -4,6 +4,7 @@
 #include <variant>
 
 #include "record/support_equilibrium.hpp"
+#include "record/survey_reading.hpp"
 #include "rockfdem/coupling/atomic_file.hpp"
 #include "rockfdem/fdem/bits_hash.hpp"
 #include "rockfdem/insitu/insitu.hpp"
@@ -207,15 +208,18 @@ void add_state(nlohmann::json& j, const EngineState& s) {
   j["state_hash"] = s.state_hash;
 }
 
-nlohmann::json key_point_json(const KeyPointFigures& k) {
+nlohmann::json key_point_json(const std::string& name, const KeyPointFigures& k) {
   nlohmann::json j = {{"ux_mm", k.ux_mm},
                       {"uy_mm", k.uy_mm},
                       {"u_mm", k.u_mm},
                       {"radial_mm", k.radial_mm},
+                      {"survey_mm", survey_reading(name, k.ux_mm, k.uy_mm, k.inward_x, k.inward_y)},
+                      {"survey_direction", survey_direction(name)},
                       {"x", k.x},
                       {"y", k.y},
                       {"inward", {k.inward_x, k.inward_y}}};
   if (k.radial_since_support_mm) j["radial_since_support_mm"] = *k.radial_since_support_mm;
+  if (k.survey_since_support_mm) j["survey_since_support_mm"] = *k.survey_since_support_mm;
   if (k.radial_at_handoff_mm) {
     j["radial_at_handoff_mm"] = *k.radial_at_handoff_mm;
     // The share the explicit (fracturing) stages add; none for a point that did not move.
@@ -232,7 +236,7 @@ nlohmann::json key_point_json(const KeyPointFigures& k) {
 // Key points, chords, then the scene's monitors (a name of both: the monitor's).
 nlohmann::json monitors_json(const MonitorRecord& m) {
   nlohmann::json j = nlohmann::json::object();
-  for (const auto& [name, k] : m.key_points) j[name] = key_point_json(k);
+  for (const auto& [name, k] : m.key_points) j[name] = key_point_json(name, k);
   if (m.chords) {
     j["vault_settlement_mm"] = m.chords->vault_settlement_mm;
     j["wall_chord_convergence_mm"] = m.chords->wall_chord_convergence_mm;

@@ -138,6 +138,7 @@ void read_references(const Reader& r, ReferenceSettings& ref) {
     if (r.has(std::string("references.") + name))
       ref.mm[name] = r.number(std::string("references.") + name);
   ref.from_support = r.text("references.from") == "support";
+  ref.survey = r.text("references.reading") == "survey";
   ref.source = r.text("references.source");
 }
 

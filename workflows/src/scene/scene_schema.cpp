@@ -345,15 +345,21 @@ void add_references(std::vector<KeySpec>& s) {
   };
   for (const char* point :
        {"vault", "left_shoulder", "right_shoulder", "left_wall", "right_wall", "invert"})
-    figure(point, std::string("Reference radial displacement of the key point ") + point +
-                      " (towards the opening positive), compared with the run's figure in "
-                      "report.md.");
+    figure(point, std::string("Reference displacement of the key point ") + point +
+                      " (towards the opening positive; read as references.reading says), "
+                      "compared with the run's figure in report.md.");
   figure("wall_chord", "Reference closure of the chord between the walls.");
   figure("shoulder_chord", "Reference closure of the chord between the shoulders.");
   s.push_back(choice("references.from", "start", {"start", "support"},
                      "What the references are measured from: the in-situ state (`start`), or "
                      "the first `lining` or `bolts` stage (`support`, as points installed "
                      "with the support read)."));
+  s.push_back(choice(
+      "references.reading", "radial", {"radial", "survey"},
+      "How the key-point references read each point: `radial`, along its ray towards the "
+      "opening; `survey`, as convergence monitoring reads it: the vault's settlement and the "
+      "invert's heave (vertical), the shoulders' and walls' horizontal convergence (each "
+      "point's own, half a symmetric chord's closure). Chords are closures either way."));
   s.push_back(
       text("references.source", "\"\"", "Where the references come from (shown in report.md)."));
 }

@@ -18,11 +18,18 @@ const char* const kChords[] = {"vault_settlement_mm", "wall_chord_convergence_mm
 struct Pair {
   const char* target;  ///< the --target name
   const char* column;  ///< sweep.csv's column
-  const char* left;
+  const char* left;    ///< the columns it averages
   const char* right;
 };
-const Pair kPairs[] = {{"shoulders", "shoulders_radial_mm", "left_shoulder", "right_shoulder"},
-                       {"walls", "walls_radial_mm", "left_wall", "right_wall"}};
+const Pair kPairs[] = {
+    {"shoulders", "shoulders_radial_mm", "left_shoulder_radial_mm", "right_shoulder_radial_mm"},
+    {"walls", "walls_radial_mm", "left_wall_radial_mm", "right_wall_radial_mm"},
+    {"shoulders_horizontal", "shoulders_horizontal_mm", "left_shoulder_horizontal_mm",
+     "right_shoulder_horizontal_mm"}};
+
+// The shoulders as convergence monitoring reads them (horizontal, each
+// point's own: record/survey_reading.hpp), where their rays are oblique.
+const char* const kShoulders[] = {"left_shoulder", "right_shoulder"};
 
 // Copies summary[section][key] (a number) into figures[column] when present.
 void take(const nlohmann::json& summary, const char* section, const std::string& key,
@@ -92,6 +99,7 @@ std::vector<std::string> figure_columns(const Scene& scene) {
     if (scene.mesh.kind == mesh::ModelKind::kUcs) c.push_back("modulus_GPa");
   } else {
     for (const std::string& p : key_point_names()) c.push_back(p + "_radial_mm");
+    for (const char* p : kShoulders) c.push_back(std::string(p) + "_horizontal_mm");
     for (const Pair& pair : kPairs) c.push_back(pair.column);
     c.insert(c.end(), std::begin(kChords), std::end(kChords));
     for (const std::string& p : key_point_names()) c.push_back(p + "_since_support_mm");
@@ -109,10 +117,10 @@ nlohmann::json key_figures(const nlohmann::json& summary) {
         take(*m, p.c_str(), "radial_mm", p + "_radial_mm", 1, f);
         take(*m, p.c_str(), "radial_since_support_mm", p + "_since_support_mm", 1, f);
       }
-    for (const auto& [target, column, left, right] : kPairs) {
-      const std::string l = std::string(left) + "_radial_mm", r = std::string(right) + "_radial_mm";
+    for (const char* p : kShoulders)
+      if (m->contains(p)) take(*m, p, "survey_mm", std::string(p) + "_horizontal_mm", 1, f);
+    for (const auto& [target, column, l, r] : kPairs)
       if (f.contains(l) && f.contains(r)) f[column] = (f[l].get<double>() + f[r].get<double>()) / 2;
-    }
     for (const char* c : kChords) take(summary, "monitors", c, c, 1, f);
     take_support(summary, f);
   }
@@ -134,6 +142,8 @@ std::vector<TargetName> target_names(const Scene& scene) {
   if (scene.mesh.kind == mesh::ModelKind::kUcs)
     return {{"peak_stress", "peak_stress_MPa", "MPa"}, {"modulus", "modulus_GPa", "GPa"}};
   for (const std::string& p : key_point_names()) names.push_back({p, p + "_radial_mm", "mm"});
+  for (const char* p : kShoulders)
+    names.push_back({std::string(p) + "_horizontal", std::string(p) + "_horizontal_mm", "mm"});
   for (const Pair& pair : kPairs) names.push_back({pair.target, pair.column, "mm"});
   for (const char* c : kChords) {
     const std::string column = c;
@@ -154,7 +164,9 @@ std::string describe(const std::vector<TargetName>& names) {
   std::string s = "allowed for this scene's model: ";
   for (std::size_t i = 0; i < names.size(); ++i) s += (i ? ", " : "") + names[i].name;
   return s + (names.front().unit == "mm"
-                  ? " (key points: radial displacement towards the opening; chords: closure; mm)"
+                  ? " (key points: radial displacement towards the opening; *_horizontal: the "
+                    "shoulders' horizontal convergence, as monitoring reads it; chords: "
+                    "closure; mm)"
                   : " (the specimen's peak stress, MPa; UCS modulus: its pre-peak modulus, GPa)");
 }
 

@@ -203,7 +203,9 @@ struct ReferenceSettings {
   /// "wall_chord", "shoulder_chord" (closure); only those given.
   std::map<std::string, double> mm;
   bool from_support{};  ///< measured from the support's installation
-  std::string source;   ///< where they come from
+  /// Key points read as monitoring does (record/survey_reading.hpp), not radially.
+  bool survey{};
+  std::string source;  ///< where they come from
 };
 
 /// [materials.rock] gsi: the model's rock is the rock mass derived from
