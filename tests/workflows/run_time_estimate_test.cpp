@@ -81,3 +81,21 @@ TEST(RunTimeEstimate, a_busy_machine_is_named_beside_the_figures) {
   p.threads = 1;
   EXPECT_NE(busy_machine_note(p).find("of 1 thread's time"), std::string::npos);
 }
+
+// Threads that spin while they wait keep the CPU share near 1 on a busy
+// machine (a probe read 25 ms per step against 1.3 ms a minute later, at
+// a share above one half): other work beyond half the cores, by the load
+// average less the probe's own threads, is named too.
+TEST(RunTimeEstimate, other_work_in_the_load_average_is_named) {
+  Probe p;
+  p.threads = 2;
+  p.cores = 2;
+  p.cpu_share = 0.95;
+  p.load_average = 3.7;  // 1.7 beyond the probe's 2 threads: above 1 core
+  const std::string note = busy_machine_note(p);
+  EXPECT_NE(note.find("load average was 3.7 on 2 cores"), std::string::npos) << note;
+  p.load_average = 2.9;  // 0.9 beyond: under half the cores
+  EXPECT_EQ(busy_machine_note(p), "");
+  p.load_average = -1;  // unknown
+  EXPECT_EQ(busy_machine_note(p), "");
+}

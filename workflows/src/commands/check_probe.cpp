@@ -6,6 +6,8 @@
 #include <array>
 #include <chrono>
 #include <cstdio>
+#include <fstream>
+#include <thread>
 
 #include "commands/commands.hpp"
 #include "rockfdem/fdem/engine.hpp"
@@ -27,6 +29,13 @@ double cpu_seconds() {
   getrusage(RUSAGE_SELF, &u);
   return double(u.ru_utime.tv_sec + u.ru_stime.tv_sec) +
          1e-6 * double(u.ru_utime.tv_usec + u.ru_stime.tv_usec);
+}
+
+// The 1-minute load average (Linux's /proc/loadavg); -1 where unknown.
+double load_average() {
+  std::ifstream f("/proc/loadavg");
+  double load = -1;
+  return f >> load ? load : -1;
 }
 
 double peak_rss_bytes() {
@@ -114,6 +123,8 @@ Probe probe_scene(const Scene& scene, const RunContext& ctx) {
   p.seconds_per_step = median_step_seconds(engine, p.steps);
   const double wall = seconds_since(t0_steps) * std::max(1, p.threads);
   if (wall > 0) p.cpu_share = (cpu_seconds() - cpu0) / wall;
+  p.load_average = load_average();
+  p.cores = int(std::thread::hardware_concurrency());
 
   engine.set_mass_scaling({false, 0.0});
   engine.set_damping(start_damping);
@@ -122,12 +133,19 @@ Probe probe_scene(const Scene& scene, const RunContext& ctx) {
 }
 
 std::string busy_machine_note(const Probe& p) {
-  if (p.cpu_share >= 0.5) return "";
   char text[256];
+  if (p.cpu_share < 0.5) {
+    std::snprintf(text, sizeof text,
+                  "  note: the probe's steps got %.0f%% of %d %s time: other work shares this "
+                  "machine, so the run-time figures read high for a quieter one\n",
+                  100 * p.cpu_share, p.threads, p.threads == 1 ? "thread's" : "threads'");
+    return text;
+  }
+  if (p.load_average < 0 || p.cores <= 0 || p.load_average - p.threads <= 0.5 * p.cores) return "";
   std::snprintf(text, sizeof text,
-                "  note: the probe's steps got %.0f%% of %d %s time: other work shares this "
-                "machine, so the run-time figures read high for a quieter one\n",
-                100 * p.cpu_share, p.threads, p.threads == 1 ? "thread's" : "threads'");
+                "  note: the machine's load average was %.1f on %d cores while the probe ran: "
+                "other work shares it, so the run-time figures may read high for a quieter one\n",
+                p.load_average, p.cores);
   return text;
 }
 

@@ -28,11 +28,17 @@ struct Probe {
   /// CPU time over wall time x threads while the steps were timed: near 1
   /// on a machine to itself, well below when other work shares its cores.
   double cpu_share = 1;
+  /// The machine's 1-minute load average after the probe (-1: unknown) and
+  /// its cores: threads that spin while waiting keep cpu_share near 1 on a
+  /// busy machine, the load average still names the other work.
+  double load_average = -1;
+  int cores = 0;
 };
 
 /// The note check prints beside its run-time figures when the probe got
-/// less than half of its threads' time (a busy machine reads slow steps);
-/// empty otherwise.
+/// less than half of its threads' time, or other work kept more than half
+/// the machine's cores busy (the load average less the probe's threads):
+/// a busy machine reads slow steps. Empty otherwise.
 std::string busy_machine_note(const Probe& p);
 
 /// Most triangles (by check's estimate) for which the probe runs: above,
