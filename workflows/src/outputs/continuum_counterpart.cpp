@@ -28,14 +28,19 @@ double dot_sym(const std::array<double, 3>& s, double ax, double ay, double bx, 
 
 std::array<double, 3> as_array(const insitu::Stress& s) { return {s.sxx, s.syy, s.sxy}; }
 
+bool is_bolted(const std::vector<char>& bolted, std::size_t t) {
+  return !bolted.empty() && bolted[t];
+}
+
 /// Relative L2 of `a` against `b` over the rock triangles active in both
-/// within `reach` of the centre.
+/// within `reach` of the centre, bolt strips left out.
 template <class StressA>
 double stress_rel_l2(const mesh::Mesh& m, const StressA& a, const insitu::InsituField& b,
-                     const std::vector<std::uint8_t>& active_a, double reach) {
+                     const std::vector<std::uint8_t>& active_a, const std::vector<char>& bolted,
+                     double reach) {
   StressL2 l2;
   for (std::size_t t = 0; t < m.n_triangles(); ++t) {
-    if (m.zone[t] != mesh::kRock || !active_a[t] || !b.active[t]) continue;
+    if (m.zone[t] != mesh::kRock || !active_a[t] || !b.active[t] || is_bolted(bolted, t)) continue;
     const auto& tri = m.triangles[t];
     const double x = (m.x[tri[0]] + m.x[tri[1]] + m.x[tri[2]]) / 3;
     const double y = (m.y[tri[0]] + m.y[tri[1]] + m.y[tri[2]]) / 3;
@@ -66,17 +71,35 @@ struct Profile {
   double yielded_depth = 0;                                   // [m]
 };
 
+/// The rock triangle at (x, y), or where that is a bolt strip the nearest
+/// rock beside it across the ray (direction (tx, ty)), half a strip's
+/// width at a time up to three widths: -1 if none.
+int rock_beside_bolts(const mesh::Mesh& m, const std::vector<char>& bolted, double x, double y,
+                      double tx, double ty) {
+  const int t = rock_triangle_at(m, x, y);
+  if (t < 0 || !is_bolted(bolted, std::size_t(t))) return t;
+  const double width = std::sqrt(2 * std::abs(mesh::signed_area(m, std::size_t(t))));
+  for (int k = 1; k <= 6; ++k)
+    for (const double side : {1.0, -1.0}) {
+      const double s = side * k * 0.5 * width;
+      const int u = rock_triangle_at(m, x + s * tx, y + s * ty);
+      if (u >= 0 && !is_bolted(bolted, std::size_t(u))) return u;
+    }
+  return -1;
+}
+
 /// Radial and tangential stress along the ray from the centre through a key
-/// point, from the wall out to `reach`.
+/// point, from the wall out to `reach`. A bolt on the ray (as at the vault)
+/// would read the strip's scaled steel stress: the rock beside it is read.
 Profile ray_profile(const mesh::Mesh& m, const fdem::Engine& e, const ContinuumStates& c,
-                    const Monitor& mon, double reach) {
+                    const Monitor& mon, const std::vector<char>& bolted, double reach) {
   Profile p;
   p.ray = mon.name;
   const double r0 = std::hypot(mon.x, mon.y), nx = mon.x / r0, ny = mon.y / r0;
   const int n = 60;
   for (int i = 0; i < n; ++i) {
     const double d = (i + 0.5) * reach / n;
-    const int t = rock_triangle_at(m, mon.x + d * nx, mon.y + d * ny);
+    const int t = rock_beside_bolts(m, bolted, mon.x + d * nx, mon.y + d * ny, -ny, nx);
     if (t < 0 || !e.active(t) || !c.end.active[t]) continue;
     const auto sf = e.triangle_stress(t);
     const auto sc = as_array(c.end.stress[t]);
@@ -171,7 +194,8 @@ std::map<std::string, CounterpartKeyPoint> key_points(const fdem::Engine& e,
 CounterpartComparison compare_with_counterpart(
     const Scene& scene, const mesh::Mesh& m, const fdem::Engine& e,
     const insitu::InsituField& fdem_handoff, const ContinuumStates& c,
-    const std::vector<Monitor>& monitors, const std::string& dir, RunRecord& summary, bool quiet) {
+    const std::vector<Monitor>& monitors, const std::vector<char>& bolted, const std::string& dir,
+    RunRecord& summary, bool quiet) {
   const mesh::HalfExtent h = mesh::opening_half_extent(scene.mesh.tunnel);
   const double span = std::max(h.hx, h.hy), reach = 5 * span;
   std::vector<std::uint8_t> engine_active(m.n_triangles());
@@ -185,12 +209,14 @@ CounterpartComparison compare_with_counterpart(
   out.sequence_alpha = c.alphas;
   out.solve_seconds = c.seconds;
   if (c.lining_alpha >= 0) out.lining_alpha = c.lining_alpha;
-  out.stress_rel_l2_end = stress_rel_l2(m, fdem_end, c.end, engine_active, reach);
+  out.stress_rel_l2_end = stress_rel_l2(m, fdem_end, c.end, engine_active, bolted, reach);
   if (c.handoff.alpha >= 0)
-    out.stress_rel_l2_handoff = stress_rel_l2(m, fdem_start, c.handoff, fdem_handoff.active, reach);
+    out.stress_rel_l2_handoff =
+        stress_rel_l2(m, fdem_start, c.handoff, fdem_handoff.active, bolted, reach);
   out.key_points = key_points(e, fdem_handoff, c, monitors);
   std::vector<Profile> profiles;
-  for (const Monitor& mon : monitors) profiles.push_back(ray_profile(m, e, c, mon, 2 * span));
+  for (const Monitor& mon : monitors)
+    profiles.push_back(ray_profile(m, e, c, mon, bolted, 2 * span));
   write_profiles(profiles, output_path(dir, "continuum_profiles.csv"));
   if (scene.output.vtk) write_continuum_grid(m, c, output_path(dir, "continuum.vtu"));
   if (scene.output.plots) plot_profiles(profiles, c, m, dir, summary, quiet);

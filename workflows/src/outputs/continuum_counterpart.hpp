@@ -42,10 +42,14 @@ struct ContinuumStates {
 /// and at the end, the key points' displacements, and radial and tangential
 /// stress along rays from the opening through the key points
 /// (continuum_profiles.csv, and continuum_profiles.png when `plots`).
-/// Returns the figures of summary "continuum_comparison".
+/// Rock only: the triangles of bolt strips (`bolted`, per triangle; empty
+/// where there are none) carry the steel's scaled stress, which the
+/// continuum has no counterpart of. Returns the figures of summary
+/// "continuum_comparison".
 CounterpartComparison compare_with_counterpart(
     const Scene& scene, const mesh::Mesh& m, const fdem::Engine& e,
     const insitu::InsituField& fdem_handoff, const ContinuumStates& c,
-    const std::vector<Monitor>& monitors, const std::string& dir, RunRecord& summary, bool quiet);
+    const std::vector<Monitor>& monitors, const std::vector<char>& bolted, const std::string& dir,
+    RunRecord& summary, bool quiet);
 
 }  // namespace rockfdem::workflows

@@ -253,13 +253,14 @@ void compare_with_continuum_counterpart(const Scene& scene, const RunContext& ct
                                         const mesh::Mesh& m, const fdem::Engine& e,
                                         const insitu::InsituField& fdem_handoff,
                                         const ContinuumReferences& solved,
-                                        const std::vector<Monitor>& monitors, RunRecord& summary) {
+                                        const std::vector<Monitor>& monitors,
+                                        const std::vector<char>& bolted, RunRecord& summary) {
   for (const std::string& s : solved.skipped) summary.skipped.push_back(s);
   if (!solved.counterpart) return;
   const ContinuumStates& c = *solved.counterpart;
   try {
-    summary.continuum_comparison = compare_with_counterpart(scene, m, e, fdem_handoff, c, monitors,
-                                                            ctx.output_dir, summary, ctx.quiet);
+    summary.continuum_comparison = compare_with_counterpart(
+        scene, m, e, fdem_handoff, c, monitors, bolted, ctx.output_dir, summary, ctx.quiet);
     if (c.model == "mohr_coulomb") add_ground_reaction(scene, ctx, m, e, monitors, summary);
     summary.continuum_post_peak = solved.post_peak;
   } catch (const InputError& err) {

@@ -56,6 +56,7 @@ void compare_with_continuum_counterpart(const Scene& scene, const RunContext& ct
                                         const mesh::Mesh& m, const fdem::Engine& e,
                                         const insitu::InsituField& fdem_handoff,
                                         const ContinuumReferences& solved,
-                                        const std::vector<Monitor>& monitors, RunRecord& summary);
+                                        const std::vector<Monitor>& monitors,
+                                        const std::vector<char>& bolted, RunRecord& summary);
 
 }  // namespace rockfdem::workflows

@@ -18,6 +18,7 @@
 #include <algorithm>
 #include <iostream>
 
+#include "outputs/broken_zone.hpp"
 #include "outputs/continuum_comparison.hpp"
 #include "outputs/face_distance.hpp"
 #include "record/output_dir.hpp"
@@ -282,7 +283,8 @@ void Run::compare_with_references() {
         compare_with_continuum(scene(), mesh(), engine(), *references_.open_hole,
                                output_path(ctx().output_dir, "fdem_vs_continuum.csv"));
   compare_with_continuum_counterpart(solved_sequence(), ctx(), mesh(), engine(), handoff(),
-                                     references_, key_points_.monitors(), record());
+                                     references_, key_points_.monitors(),
+                                     bolt_triangles(&bolts_, mesh().n_triangles()), record());
   timer().stamp("continuum counterpart");
 }
 
