@@ -114,6 +114,7 @@
 #include <deal.II/lac/trilinos_precondition.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/vector.h>
+#include <malloc.h>
 
 #include <Teuchos_ParameterList.hpp>
 #include <algorithm>
@@ -183,6 +184,7 @@ class InsituProblem {
   void assign_roles(double alpha);
   void make_grid();
   void setup_system();
+  void release_system();
   void balance_removed_weight(double alpha);
   void assemble_system(double alpha);
   // The stage a matrix (and the right-hand side assembled with it) holds:
@@ -281,8 +283,9 @@ class InsituProblem {
   // Materials and the staged state.
   SymmetricTensor<4, 2> C_rock_, C_core_, C_lining_;
   bool lining_installed_ = false;
-  std::vector<SymmetricTensor<2, 2>> eps_previous_;  ///< per mesh triangle, end of last stage
-  std::vector<SymmetricTensor<2, 2>> eps_install_;   ///< per mesh triangle, at lining install
+  // Per mesh triangle, held only when a lining goes in (48 B per triangle):
+  std::vector<SymmetricTensor<2, 2>> eps_previous_;  ///< end of the last stage
+  std::vector<SymmetricTensor<2, 2>> eps_install_;   ///< at the lining's install
 };
 
 // ---------------------------------------------------------------------------
@@ -296,8 +299,8 @@ InsituProblem::InsituProblem(const mesh::Mesh& mesh, const InsituSpec& spec)
       mapping_(FE_SimplexP<2>(1)),
       quadrature_(1),
       face_quadrature_(3),
-      eps_previous_(mesh.n_triangles()),
-      eps_install_(mesh.n_triangles()) {
+      eps_previous_(spec.lining.active ? mesh.n_triangles() : 0),
+      eps_install_(spec.lining.active ? mesh.n_triangles() : 0) {
   // validate() has made sure every material a stage needs is present.
   if (spec.materials.rock) C_rock_ = elasticity_tensor(*spec.materials.rock);
   if (spec.materials.core) C_core_ = elasticity_tensor(*spec.materials.core);
@@ -395,6 +398,9 @@ void InsituProblem::make_grid() {
   for (std::size_t t = 0; t < mesh_.n_triangles(); ++t) removed[t] = role_[t] == Role::kRemoved;
   if (have_grid_ && removed == grid_removed_) return;
 
+  // The old grid's system goes first, so that the new grid is built in the
+  // space the matrix and ML's hierarchy gave back, not above them.
+  release_system();
   fe_values_.reset();
   fe_face_values_.reset();
   dof_handler_.clear();
@@ -410,14 +416,18 @@ void InsituProblem::make_grid() {
 // setup_system(): dofs, the three rigid-motion constraints, the sparsity.
 // ---------------------------------------------------------------------------
 
-void InsituProblem::setup_system() {
-  if (have_system_) return;
+void InsituProblem::release_system() {
+  amg_.reset();            // ML reads the matrix: the hierarchy goes first
   system_matrix_.clear();  // it holds a pointer to the pattern we replace
   cg_matrix_.reset();
-  amg_.reset();
   earlier_solutions_.clear();
   direct_held_ = HeldStage();
   cg_held_ = HeldStage();
+}
+
+void InsituProblem::setup_system() {
+  if (have_system_) return;
+  release_system();
   dof_handler_.reinit(triangulation_);
   dof_handler_.distribute_dofs(fe_);
 
@@ -850,6 +860,12 @@ void InsituProblem::build_amg() {
   parameters.set("null space: dimension", 3);
   parameters.set("null space: vectors", null_space_.data());
 
+  // The old hierarchy goes, and the heap it and the earlier solves freed
+  // goes back to the system before ML's products claim about 300 MB at 420k
+  // triangles for a moment: freed but fragmented, it would stay resident
+  // and the build would add to it.
+  amg_.reset();
+  malloc_trim(0);
   amg_ = std::make_unique<TrilinosWrappers::PreconditionAMG>();
   amg_->initialize(*cg_matrix_, parameters);
   amg_reference_iterations_ = 0;
@@ -905,7 +921,7 @@ void InsituProblem::output_results(const double alpha, InsituField& field) {
         break;
     }
     field.active[t] = 1;
-    eps_previous_[t] = eps_q[0];
+    if (!eps_previous_.empty()) eps_previous_[t] = eps_q[0];
 
     cell_residual = 0;
     for (const unsigned int i : fe_values.dof_indices())
@@ -1236,8 +1252,9 @@ BaseMoments base_moments(const dealii::Triangulation<2>& triangulation, const st
 std::vector<InsituField> solve_insitu(const mesh::Mesh& mesh, const InsituSpec& spec) {
   validate(mesh, spec);
   try {
-    InsituProblem problem(mesh, spec);
-    return problem.run();
+    std::vector<InsituField> fields = InsituProblem(mesh, spec).run();
+    malloc_trim(0);  // the grid, matrix and hierarchy, given back (see build_amg)
+    return fields;
   } catch (const ExceptionBase& e) {
     // deal.II's checks that are always on (AssertThrow): report them once,
     // as the numerical failure they are.
