@@ -3,18 +3,22 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <memory>
 #include <utility>
 
 #include "run/engine_setup.hpp"
 
 namespace rockfdem::workflows {
-namespace {
 
-struct Face {
+struct StrengthRatio::Face {
   int t1, t2;     ///< the two triangles
   double nx, ny;  ///< unit normal
   double tx, ty;  ///< unit tangent
 };
+
+namespace {
+
+using Face = StrengthRatio::Face;
 
 // Interior edges with a fracture triangle on either side, in a fixed order
 // (by their vertex pair): the engine's crack elements (fdem topology).
@@ -59,17 +63,21 @@ double worst_ratio(const std::vector<Face>& faces,
 
 }  // namespace
 
-HandoffChoice choose_handoff(const Scene& scene, const mesh::Mesh& m,
-                             const std::vector<insitu::InsituField>& fields) {
-  const std::vector<Face> faces = crack_faces(m);
-  const std::map<mesh::Zone, fdem::Material> materials = engine_materials(scene);
+StrengthRatio::StrengthRatio(const Scene& scene, const mesh::Mesh& m)
+    : mesh_(&m), materials_(engine_materials(scene)) {}
+
+double StrengthRatio::operator()(const insitu::InsituField& f) {
+  if (!faces_) faces_ = std::make_shared<const std::vector<Face>>(crack_faces(*mesh_));
+  return worst_ratio(*faces_, materials_, *mesh_, f);
+}
+
+HandoffChoice choose_handoff(const Scene& scene, std::vector<double> strength_ratio) {
   HandoffChoice c;
-  for (const insitu::InsituField& f : fields)
-    c.strength_ratio.push_back(worst_ratio(faces, materials, m, f));
-  c.index = fields.size() - 1;
+  c.strength_ratio = std::move(strength_ratio);
+  c.index = c.strength_ratio.size() - 1;
   if (!scene.insitu.handoff_first_crack) return c;
   c.index = 0;
-  while (c.index + 1 < fields.size() && c.strength_ratio[c.index + 1] <= 1.0) ++c.index;
+  while (c.index + 1 < c.strength_ratio.size() && c.strength_ratio[c.index + 1] <= 1.0) ++c.index;
   return c;
 }
 
