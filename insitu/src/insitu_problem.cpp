@@ -363,6 +363,7 @@ std::vector<InsituField> InsituProblem::run() {
     field.postprocess_seconds = timer.wall_time();
     field.total_seconds = field.setup_seconds + field.assembly_seconds + field.solve_seconds +
                           field.postprocess_seconds;
+    if (spec_.on_field) spec_.on_field(field);
     if (!keeps_field(spec_, alpha)) drop_arrays(field);
     fields.push_back(std::move(field));
   }

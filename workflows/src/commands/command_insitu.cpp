@@ -98,7 +98,8 @@ int command_insitu(const Scene& scene, const RunContext& ctx) {
   timer.stamp("mesh");
   const std::vector<insitu::InsituField> fields =
       keeping_threads(ctx, [&] { return insitu::solve_insitu(m, spec); });
-  check_implicit_field(scene, m, fields);
+  for (const insitu::InsituField& f : fields)
+    check_implicit_field(scene, m, f.alpha, inverted_triangles(m, f));
   timer.stamp("insitu");
 
   mesh::write_msh(m, output_path(ctx.output_dir, "mesh.msh"));

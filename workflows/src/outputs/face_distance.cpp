@@ -54,8 +54,13 @@ double mean_wall_displacement(const mesh::Mesh& m, const insitu::InsituField& f,
   return n ? sum / n : 0.0;
 }
 
+double wall_displacement(const mesh::Mesh& m, const insitu::InsituField& f) {
+  const EquivalentOpening o = equivalent_opening(m);
+  return mean_wall_displacement(m, f, o.cx, o.cy);
+}
+
 FaceDistanceFigures face_distance_installation(const Scene& scene, const mesh::Mesh& m,
-                                               const std::vector<insitu::InsituField>& curve) {
+                                               const std::vector<ImplicitSample>& curve) {
   const EquivalentOpening o = equivalent_opening(m);
   FaceDistanceFigures f;
   f.face_distance_m = *scene.insitu.install_at_face_distance;
@@ -65,9 +70,9 @@ FaceDistanceFigures face_distance_installation(const Scene& scene, const mesh::M
   f.r_star = f.plastic_radius_m / o.radius;
   f.u_star = ldp_displacement_fraction(f.x_star, f.r_star);
   std::vector<double> alphas, u;
-  for (const insitu::InsituField& field : curve) {
+  for (const ImplicitSample& field : curve) {
     alphas.push_back(field.alpha);
-    u.push_back(mean_wall_displacement(m, field, o.cx, o.cy));
+    u.push_back(field.wall_displacement);
   }
   f.alpha = alpha_at_fraction(alphas, u, f.u_star);
   return f;

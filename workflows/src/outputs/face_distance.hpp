@@ -16,6 +16,7 @@
 
 #include <vector>
 
+#include "outputs/implicit_sample.hpp"
 #include "rockfdem/insitu/insitu.hpp"
 #include "rockfdem/mesh/mesh.hpp"
 #include "rockfdem/workflows/scene.hpp"
@@ -49,9 +50,12 @@ struct FaceDistanceFigures {
   double alpha = 0;  ///< the core's alpha where the support goes in
 };
 
+/// mean_wall_displacement about the centre of `m`'s equivalent opening.
+double wall_displacement(const mesh::Mesh& m, const insitu::InsituField& f);
+
 /// The scene's installation (insitu.install_at_face_distance): `curve` the
-/// implicit fields at alphas decreasing to 0.
+/// implicit fields' samples at alphas decreasing to 0.
 FaceDistanceFigures face_distance_installation(const Scene& scene, const mesh::Mesh& m,
-                                               const std::vector<insitu::InsituField>& curve);
+                                               const std::vector<ImplicitSample>& curve);
 
 }  // namespace rockfdem::workflows

@@ -24,17 +24,49 @@ mesh::OpeningBoundary require_opening(const mesh::Mesh& m, const std::string& so
   return *b;
 }
 
-// Each key point is tied to the nearest vertex of the boundary (ties: the
-// lower vertex id) and there to the lowest-numbered node of a rock
-// triangle: the core goes, the lining is support.
-std::vector<Monitor> tie_to_nodes(const std::vector<mesh::KeyPoint>& points,
-                                  const mesh::OpeningBoundary& b, const mesh::Mesh& m,
-                                  const fdem::Engine& e) {
+// The opening's vertices (each edge's first), sorted.
+std::vector<int> opening_vertices(const mesh::OpeningBoundary& b) {
   std::vector<int> on_boundary;
   for (const auto& edge : b.edges) on_boundary.push_back(edge[0]);
   std::sort(on_boundary.begin(), on_boundary.end());
   on_boundary.erase(std::unique(on_boundary.begin(), on_boundary.end()), on_boundary.end());
+  return on_boundary;
+}
 
+// Each key point's nearest vertex of the boundary (ties: the lower vertex id).
+std::vector<int> nearest_vertices(const std::vector<mesh::KeyPoint>& points,
+                                  const mesh::OpeningBoundary& b, const mesh::Mesh& m) {
+  const std::vector<int> on_boundary = opening_vertices(b);
+  std::vector<int> out;
+  for (const mesh::KeyPoint& p : points) {
+    int nearest = on_boundary.front();
+    double best = std::numeric_limits<double>::max();
+    for (int v : on_boundary) {
+      const double d = std::hypot(m.x[v] - p.x, m.y[v] - p.y);
+      if (d < best) best = d, nearest = v;
+    }
+    out.push_back(nearest);
+  }
+  return out;
+}
+
+std::vector<mesh::KeyPoint> key_points_of(const mesh::MeshSpec& spec, const mesh::Mesh& m,
+                                          const mesh::OpeningBoundary& b) {
+  const bool generated = spec.kind == mesh::ModelKind::kTunnel;
+  return mesh::opening_key_points(m, b, generated ? &spec.tunnel : nullptr);
+}
+
+mesh::OpeningBoundary require_opening(const mesh::MeshSpec& spec, const mesh::Mesh& m) {
+  const bool generated = spec.kind == mesh::ModelKind::kTunnel;
+  return require_opening(m, generated ? "the tunnel mesh" : spec.msh.path);
+}
+
+// Each key point is tied to its nearest boundary vertex and there to the
+// lowest-numbered node of a rock triangle: the core goes, the lining is
+// support.
+std::vector<Monitor> tie_to_nodes(const std::vector<mesh::KeyPoint>& points,
+                                  const mesh::OpeningBoundary& b, const mesh::Mesh& m,
+                                  const fdem::Engine& e) {
   std::vector<int> node_of_vertex(m.n_vertices(), -1);
   const std::vector<int>& vertex = e.node_vertex();
   for (std::size_t tri = 0; tri < e.n_triangles(); ++tri) {
@@ -51,20 +83,16 @@ std::vector<Monitor> tie_to_nodes(const std::vector<mesh::KeyPoint>& points,
   if (points.size() != std::size(kRoles))
     throw std::logic_error("opening_key_points gave " + std::to_string(points.size()) +
                            " key points, not 6");
+  const std::vector<int> nearest = nearest_vertices(points, b, m);
   std::vector<Monitor> monitors;
-  for (const mesh::KeyPoint& p : points) {
-    int nearest = on_boundary.front();
-    double best = std::numeric_limits<double>::max();
-    for (int v : on_boundary) {
-      const double d = std::hypot(m.x[v] - p.x, m.y[v] - p.y);
-      if (d < best) best = d, nearest = v;
-    }
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    const mesh::KeyPoint& p = points[i];
     Monitor mon;
     mon.name = p.name;
-    mon.role = kRoles[monitors.size()];
+    mon.role = kRoles[i];
     mon.x = p.x, mon.y = p.y;
-    mon.node = node_of_vertex[nearest];
-    mon.node_x = m.x[nearest], mon.node_y = m.y[nearest];
+    mon.node = node_of_vertex[nearest[i]];
+    mon.node_x = m.x[nearest[i]], mon.node_y = m.y[nearest[i]];
     mon.inward_x = p.inward_x, mon.inward_y = p.inward_y;
     monitors.push_back(mon);
   }
@@ -75,9 +103,19 @@ std::vector<Monitor> tie_to_nodes(const std::vector<mesh::KeyPoint>& points,
 
 std::vector<Monitor> tunnel_monitors(const mesh::MeshSpec& spec, const mesh::Mesh& m,
                                      const fdem::Engine& e) {
-  const bool generated = spec.kind == mesh::ModelKind::kTunnel;
-  const mesh::OpeningBoundary b = require_opening(m, generated ? "the tunnel mesh" : spec.msh.path);
-  return tie_to_nodes(mesh::opening_key_points(m, b, generated ? &spec.tunnel : nullptr), b, m, e);
+  const mesh::OpeningBoundary b = require_opening(spec, m);
+  return tie_to_nodes(key_points_of(spec, m, b), b, m, e);
+}
+
+std::vector<KeyPointVertex> key_point_vertices(const mesh::MeshSpec& spec, const mesh::Mesh& m) {
+  const std::optional<mesh::OpeningBoundary> b = mesh::find_opening(m);
+  if (!b) return {};
+  const std::vector<mesh::KeyPoint> points = key_points_of(spec, m, *b);
+  const std::vector<int> nearest = nearest_vertices(points, *b, m);
+  std::vector<KeyPointVertex> out;
+  for (std::size_t i = 0; i < points.size(); ++i)
+    out.push_back({nearest[i], points[i].inward_x, points[i].inward_y});
+  return out;
 }
 
 double radial_convergence(const Monitor& mon, const std::array<double, 2>& u) {

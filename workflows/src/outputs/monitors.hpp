@@ -42,6 +42,17 @@ struct Monitor {
 std::vector<Monitor> tunnel_monitors(const mesh::MeshSpec& spec, const mesh::Mesh& m,
                                      const fdem::Engine& e);
 
+/// A key point as the mesh alone places it: its nearest vertex of the
+/// opening (the vertex of tunnel_monitors' node) and its inward normal.
+struct KeyPointVertex {
+  int vertex = -1;
+  double inward_x = 0, inward_y = 0;
+};
+
+/// tunnel_monitors' key points, in its order, before there is an engine;
+/// none when the mesh has no opening (tunnel_monitors then refuses it).
+std::vector<KeyPointVertex> key_point_vertices(const mesh::MeshSpec& spec, const mesh::Mesh& m);
+
 /// Radial convergence of a displacement at a monitor: u . inward [m].
 double radial_convergence(const Monitor& mon, const std::array<double, 2>& u);
 

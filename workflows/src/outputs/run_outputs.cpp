@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
+#include <stdexcept>
 
 #include "outputs/broken_zone.hpp"
 #include "outputs/continuum_comparison.hpp"
@@ -84,9 +85,10 @@ RunOutputs::RunOutputs(const Scene& scene, const RunContext& ctx, RunRecord& sum
   for (const StageSpec& st : scene.stages) stage_names_.push_back(st.kind);
 }
 
-void RunOutputs::record_insitu(const mesh::Mesh& m,
-                               const std::vector<insitu::InsituField>& fields) {
+void RunOutputs::record_insitu(const mesh::Mesh& m, const std::vector<insitu::InsituField>& fields,
+                               std::vector<ImplicitSample> samples) {
   fields_ = &fields;
+  samples_ = std::move(samples);
   if (frames_) frames_->set_implicit(fields.back());
   summary_.record_insitu(fields);
   if (vtk_)
@@ -98,9 +100,9 @@ void RunOutputs::record_insitu(const mesh::Mesh& m,
 }
 
 void RunOutputs::record_face_distance(const FaceDistanceFigures& f,
-                                      std::vector<insitu::InsituField> curve) {
+                                      std::vector<ImplicitSample> curve) {
   face_ = f;
-  curve_fields_ = std::move(curve);
+  curve_samples_ = std::move(curve);
 }
 
 std::vector<std::string> RunOutputs::history_columns(const std::vector<Monitor>& monitors) const {
@@ -290,7 +292,7 @@ void RunOutputs::finish(const fdem::Engine& e, const mesh::Mesh& m, PhaseTimer& 
                                                  kRigidRotationLimitDeg,
                                                  {mm(fit.tx), mm(fit.ty)},
                                                  scene_.insitu.rollers ? "rollers" : "tractions"};
-  record_ground_reaction(e, m);
+  record_ground_reaction();
   record_convergence_confinement(e, m);
   const bool lining_forces = lining_outputs(e, m);
   damage_outputs(e, m);
@@ -330,20 +332,24 @@ void RunOutputs::finish(const fdem::Engine& e, const mesh::Mesh& m, PhaseTimer& 
 
 // Ground reaction curve, implicit part: the core's share of the in-situ
 // stress (alpha) against the vault settlement it allows.
-void RunOutputs::record_ground_reaction(const fdem::Engine& e, const mesh::Mesh& m) {
-  const int vault_vertex = e.node_vertex()[key_points_->find(KeyRole::kVault).node];
+void RunOutputs::record_ground_reaction() {
+  const std::vector<Monitor>& monitors = key_points_->monitors();
+  std::size_t vault = 0;
+  while (monitors[vault].role != KeyRole::kVault) ++vault;
   std::vector<GroundReactionPoint>& grc = summary_.ground_reaction_curve;
   grc.clear();
-  for (const insitu::InsituField& f : curve_fields_.empty() ? *fields_ : curve_fields_) {
+  for (const ImplicitSample& f : curve_samples_.empty() ? samples_ : curve_samples_) {
+    if (f.key_points.size() != monitors.size())
+      throw std::logic_error("an implicit field's sample lacks the key points");
     grc.push_back({f.alpha,
-                   -mm(f.uy[vault_vertex]),
+                   -mm(f.key_points[vault].uy),
                    "implicit stage, alpha = " + detail_number(f.alpha),
                    {}});
     // In pressure: the core's traction on the opening (0 once removed).
-    for (const Monitor& k : key_points_->monitors()) {
-      const int v = e.node_vertex()[k.node];
-      grc.back().key_points[k.name] = {mm(f.ux[v] * k.inward_x + f.uy[v] * k.inward_y),
-                                       core_pressure(m, f, v, k.inward_x, k.inward_y).value_or(0.0),
+    for (std::size_t i = 0; i < monitors.size(); ++i) {
+      const Monitor& k = monitors[i];
+      const KeyPointSample& p = f.key_points[i];
+      grc.back().key_points[k.name] = {mm(p.ux * k.inward_x + p.uy * k.inward_y), p.core_pressure,
                                        insitu_normal_stress(insitu_, k.inward_x, k.inward_y)};
     }
   }

@@ -13,6 +13,7 @@
 #include "outputs/face_distance.hpp"
 #include "outputs/frame_output.hpp"
 #include "outputs/history.hpp"
+#include "outputs/implicit_sample.hpp"
 #include "outputs/instruments.hpp"
 #include "outputs/last_good.hpp"
 #include "outputs/lining_output.hpp"
@@ -35,13 +36,15 @@ class RunOutputs : public StepOutputs {
  public:
   RunOutputs(const Scene& scene, const RunContext& ctx, RunRecord& summary);
   /// summary.json's insitu keys and the implicit part of the ground
-  /// reaction curve. `fields` are the caller's, kept until the outputs
-  /// finish (a copy would hold every alpha's field twice through the run).
-  void record_insitu(const mesh::Mesh& m, const std::vector<insitu::InsituField>& fields);
+  /// reaction curve (from `samples`, one per field). `fields` are the
+  /// caller's, kept until the outputs finish; the last, the hand-off's, is
+  /// read whole (insitu.vtu, the frames), the others for their reports.
+  void record_insitu(const mesh::Mesh& m, const std::vector<insitu::InsituField>& fields,
+                     std::vector<ImplicitSample> samples);
   /// insitu.install_at_face_distance: where it put the support, and the
-  /// implicit fields down to alpha = 0 it was read from, which the ground
-  /// reaction curve then shows (beyond the hand-off).
-  void record_face_distance(const FaceDistanceFigures& f, std::vector<insitu::InsituField> curve);
+  /// implicit fields' samples down to alpha = 0 it was read from, which
+  /// the ground reaction curve then shows (beyond the hand-off).
+  void record_face_distance(const FaceDistanceFigures& f, std::vector<ImplicitSample> curve);
   /// The outputs that observe the output steps, made before anything is
   /// written (a restart's run state is checked against history_columns()
   /// next): the key points, displaced from `handoff` and with `m`'s outer
@@ -106,7 +109,7 @@ class RunOutputs : public StepOutputs {
   void report_dt();
   /// The record's ground reaction curve: the implicit stage's points and
   /// the end of the run (after the monitors).
-  void record_ground_reaction(const fdem::Engine& e, const mesh::Mesh& m);
+  void record_ground_reaction();
   /// summary "convergence_confinement" (after the monitors and the curve).
   void record_convergence_confinement(const fdem::Engine& e, const mesh::Mesh& m);
   /// With plots asked for and a display: the writer, after the run's
@@ -151,7 +154,8 @@ class RunOutputs : public StepOutputs {
   double invert_top_;  ///< the ring's floor part lies below [m]; -infinity: no part of its own
   const std::vector<insitu::InsituField>* fields_ = nullptr;  ///< record_insitu's
   std::optional<FaceDistanceFigures> face_;                   ///< insitu.install_at_face_distance's
-  std::vector<insitu::InsituField> curve_fields_;  ///< with face_: the curve to alpha = 0
+  std::vector<ImplicitSample> samples_;                       ///< record_insitu's
+  std::vector<ImplicitSample> curve_samples_;  ///< with face_: the curve to alpha = 0
   std::unique_ptr<History> history_;
   std::unique_ptr<Instruments> instruments_;
   std::unique_ptr<FrameOutput> frames_;  ///< from begin

@@ -3,18 +3,23 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <memory>
 #include <utility>
 
 #include "run/engine_setup.hpp"
 
 namespace rockfdem::workflows {
+
+// The normal and tangent are computed from the edge when a field is read:
+// 16 bytes a face held through the implicit stage's solves, not 40.
+struct StrengthRatio::Face {
+  int t1, t2;  ///< the two triangles
+  int a, b;    ///< the edge's vertices as the second triangle runs it
+};
+
 namespace {
 
-struct Face {
-  int t1, t2;     ///< the two triangles
-  double nx, ny;  ///< unit normal
-  double tx, ty;  ///< unit tangent
-};
+using Face = StrengthRatio::Face;
 
 // Interior edges with a fracture triangle on either side, in a fixed order
 // (by their vertex pair): the engine's crack elements (fdem topology).
@@ -29,8 +34,7 @@ std::vector<Face> crack_faces(const mesh::Mesh& m) {
       if (fresh) continue;
       const int u = it->second;
       if (!m.fracture[t] && !m.fracture[u]) continue;
-      const double dx = m.x[b] - m.x[a], dy = m.y[b] - m.y[a], len = std::hypot(dx, dy);
-      faces.push_back({u, int(t), dy / len, -dx / len, dx / len, dy / len});
+      faces.push_back({u, int(t), a, b});
     }
   return faces;
 }
@@ -48,8 +52,10 @@ double worst_ratio(const std::vector<Face>& faces,
     const insitu::Stress& a = field.stress[f.t1];
     const insitu::Stress& b = field.stress[f.t2];
     const double sxx = (a.sxx + b.sxx) / 2, syy = (a.syy + b.syy) / 2, sxy = (a.sxy + b.sxy) / 2;
-    const double tr_x = sxx * f.nx + sxy * f.ny, tr_y = sxy * f.nx + syy * f.ny;
-    const double sn = tr_x * f.nx + tr_y * f.ny, tau = tr_x * f.tx + tr_y * f.ty;  // tension +
+    const double dx = m.x[f.b] - m.x[f.a], dy = m.y[f.b] - m.y[f.a], len = std::hypot(dx, dy);
+    const double nx = dy / len, ny = -dx / len, tx = dx / len, ty = dy / len;
+    const double tr_x = sxx * nx + sxy * ny, tr_y = sxy * nx + syy * ny;
+    const double sn = tr_x * nx + tr_y * ny, tau = tr_x * tx + tr_y * ty;  // tension +
     const double fs =
         sn < 0 ? mat.cohesion - sn * std::tan(mat.friction_deg * M_PI / 180) : mat.cohesion;
     worst = std::max({worst, sn / mat.tensile_strength, std::fabs(tau) / fs});
@@ -59,17 +65,21 @@ double worst_ratio(const std::vector<Face>& faces,
 
 }  // namespace
 
-HandoffChoice choose_handoff(const Scene& scene, const mesh::Mesh& m,
-                             const std::vector<insitu::InsituField>& fields) {
-  const std::vector<Face> faces = crack_faces(m);
-  const std::map<mesh::Zone, fdem::Material> materials = engine_materials(scene);
+StrengthRatio::StrengthRatio(const Scene& scene, const mesh::Mesh& m)
+    : mesh_(&m), materials_(engine_materials(scene)) {}
+
+double StrengthRatio::operator()(const insitu::InsituField& f) {
+  if (!faces_) faces_ = std::make_shared<const std::vector<Face>>(crack_faces(*mesh_));
+  return worst_ratio(*faces_, materials_, *mesh_, f);
+}
+
+HandoffChoice choose_handoff(const Scene& scene, std::vector<double> strength_ratio) {
   HandoffChoice c;
-  for (const insitu::InsituField& f : fields)
-    c.strength_ratio.push_back(worst_ratio(faces, materials, m, f));
-  c.index = fields.size() - 1;
+  c.strength_ratio = std::move(strength_ratio);
+  c.index = c.strength_ratio.size() - 1;
   if (!scene.insitu.handoff_first_crack) return c;
   c.index = 0;
-  while (c.index + 1 < fields.size() && c.strength_ratio[c.index + 1] <= 1.0) ++c.index;
+  while (c.index + 1 < c.strength_ratio.size() && c.strength_ratio[c.index + 1] <= 1.0) ++c.index;
   return c;
 }
 

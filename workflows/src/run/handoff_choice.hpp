@@ -7,8 +7,11 @@
 #pragma once
 
 #include <cstddef>
+#include <map>
+#include <memory>
 #include <vector>
 
+#include "rockfdem/fdem/model_input.hpp"
 #include "rockfdem/insitu/insitu.hpp"
 #include "rockfdem/mesh/mesh.hpp"
 #include "rockfdem/workflows/scene.hpp"
@@ -27,10 +30,23 @@ struct HandoffChoice {
   std::size_t index = 0;  ///< the field handed over
 };
 
-/// The scene's rule over the solved fields (alphas decreasing): "last"
-/// takes the last; "first_crack" the last of those before the first with a
-/// ratio above 1 (the first field if it is itself above 1).
-HandoffChoice choose_handoff(const Scene& scene, const mesh::Mesh& m,
-                             const std::vector<insitu::InsituField>& fields);
+/// The largest ratio of HandoffChoice::strength_ratio in one field; the
+/// crack elements' faces are found at the first field and kept for the next.
+class StrengthRatio {
+ public:
+  struct Face;  ///< a crack element's triangles, normal and tangent
+  StrengthRatio(const Scene& scene, const mesh::Mesh& m);
+  double operator()(const insitu::InsituField& f);
+
+ private:
+  const mesh::Mesh* mesh_;
+  std::map<mesh::Zone, fdem::Material> materials_;
+  std::shared_ptr<const std::vector<Face>> faces_;
+};
+
+/// The scene's rule over the solved fields' ratios (alphas decreasing):
+/// "last" takes the last; "first_crack" the last of those before the first
+/// with a ratio above 1 (the first field if it is itself above 1).
+HandoffChoice choose_handoff(const Scene& scene, std::vector<double> strength_ratio);
 
 }  // namespace rockfdem::workflows

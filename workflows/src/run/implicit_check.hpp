@@ -17,10 +17,17 @@ namespace rockfdem::workflows {
 
 struct Scene;
 
-/// Throws rockfdem::InputError when a field inverts (or flattens) any of
-/// its active triangles: J = det(F) <= 0 with x = X + u.
-void check_implicit_field(const Scene& scene, const mesh::Mesh& m,
-                          const std::vector<insitu::InsituField>& fields);
+/// The active triangles a field inverts (or flattens): J = det(F) <= 0
+/// with x = X + u; none for a field without its arrays.
+struct Inversion {
+  long count = 0;
+  std::size_t first = 0;  ///< the first such triangle
+};
+Inversion inverted_triangles(const mesh::Mesh& m, const insitu::InsituField& f);
+
+/// Throws rockfdem::InputError when the field of `alpha` inverted triangles.
+void check_implicit_field(const Scene& scene, const mesh::Mesh& m, double alpha,
+                          const Inversion& inv);
 
 /// In-situ stress over the rock's Young's modulus above which an explicit
 /// stage's failure is put down to the stress rather than the time step:

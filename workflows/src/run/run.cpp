@@ -17,6 +17,7 @@
 
 #include <algorithm>
 #include <iostream>
+#include <stdexcept>
 
 #include "outputs/broken_zone.hpp"
 #include "outputs/continuum_comparison.hpp"
@@ -131,10 +132,16 @@ int Run::run() {
 }
 
 void Run::solve_insitu() {
-  fields_ =
-      keeping_threads(ctx(), [&] { return insitu::solve_insitu(mesh(), insitu_spec(scene())); });
-  if (scene().insitu.install_at_face_distance) install_at_face_distance();
-  check_implicit_field(scene(), mesh(), fields_);
+  FieldSampler sampler(scene(), mesh());
+  // The face distance reads the whole list's fields again: all are held.
+  const bool face = scene().insitu.install_at_face_distance.has_value();
+  const insitu::InsituSpec spec = sampler.attach(
+      insitu_spec(scene()), face ? FieldSampler::Hold::kAll : FieldSampler::Hold::kHandoff);
+  fields_ = keeping_threads(ctx(), [&] { return insitu::solve_insitu(mesh(), spec); });
+  samples_ = sampler.take(fields_);
+  if (face) install_at_face_distance(sampler);
+  for (const ImplicitSample& s : samples_)
+    check_implicit_field(scene(), mesh(), s.alpha, {s.inverted, s.first_inverted});
   choose_handoff_field();
   timer().stamp("insitu");
   stop_if_interrupted("the implicit stage");
@@ -147,30 +154,48 @@ void Run::solve_insitu() {
 // stages install on it. Each elastic alpha is a solve of its own (no ring
 // carries load in the implicit stage here), so the fields above are those
 // a list ending at that alpha gives.
-void Run::install_at_face_distance() {
+void Run::install_at_face_distance(FieldSampler& sampler) {
   insitu::InsituSpec spec = insitu_spec(scene());
-  std::vector<insitu::InsituField> curve = fields_;
+  std::vector<ImplicitSample> curve = samples_;
   if (curve.back().alpha > 0) {
     spec.alphas = {0.0};
-    curve.push_back(keeping_threads(ctx(), [&] { return insitu::solve_insitu(mesh(), spec); })[0]);
+    std::vector<insitu::InsituField> open = keeping_threads(ctx(), [&] {
+      return insitu::solve_insitu(mesh(), sampler.attach(spec, FieldSampler::Hold::kNone));
+    });
+    curve.push_back(sampler.take(open)[0]);
   }
   const FaceDistanceFigures f = face_distance_installation(scene(), mesh(), curve);
+  const auto below = [&](double alpha) { return alpha <= f.alpha; };
   fields_.erase(std::remove_if(fields_.begin(), fields_.end(),
-                               [&](const insitu::InsituField& x) { return x.alpha <= f.alpha; }),
+                               [&](const insitu::InsituField& x) { return below(x.alpha); }),
                 fields_.end());
+  samples_.erase(std::remove_if(samples_.begin(), samples_.end(),
+                                [&](const ImplicitSample& x) { return below(x.alpha); }),
+                 samples_.end());
   spec.alphas = {f.alpha};
-  fields_.push_back(keeping_threads(ctx(), [&] { return insitu::solve_insitu(mesh(), spec); })[0]);
+  std::vector<insitu::InsituField> at = keeping_threads(ctx(), [&] {
+    return insitu::solve_insitu(mesh(), sampler.attach(spec, FieldSampler::Hold::kAll));
+  });
+  samples_.push_back(sampler.take(at)[0]);
+  fields_.push_back(std::move(at[0]));
   outputs().record_face_distance(f, std::move(curve));
 }
 
 // The field handed over (insitu.handoff): the fields after it were solved to
-// find it and are not part of the run.
+// find it and are not part of the run; those before it are read through
+// their samples alone, so their arrays go.
 void Run::choose_handoff_field() {
-  const HandoffChoice c = choose_handoff(scene(), mesh(), fields_);
+  std::vector<double> ratios;
+  for (const ImplicitSample& s : samples_) ratios.push_back(s.strength_ratio);
+  const HandoffChoice c = choose_handoff(scene(), std::move(ratios));
   handoff_figures_.rule = scene().insitu.handoff_first_crack ? "first_crack" : "last";
   for (const insitu::InsituField& f : fields_) handoff_figures_.alphas.push_back(f.alpha);
   handoff_figures_.strength_ratio = c.strength_ratio;
   fields_.erase(fields_.begin() + long(c.index) + 1, fields_.end());
+  samples_.erase(samples_.begin() + long(c.index) + 1, samples_.end());
+  for (std::size_t i = 0; i + 1 < fields_.size(); ++i) release_arrays(fields_[i]);
+  if (handoff().ux.size() != mesh().n_vertices())
+    throw std::logic_error("the hand-off field was not held whole");
 }
 
 // [[stages]] holds only "insitu": the scene asks for the elastic implicit
@@ -216,7 +241,7 @@ void Run::place_instruments() {
 void Run::write_first_outputs() {
   claim_output_dir(scene(), ctx(), true);
   mesh::write_msh(mesh(), output_path(ctx().output_dir, "mesh.msh"));
-  outputs().record_insitu(mesh(), fields_);
+  outputs().record_insitu(mesh(), fields_, samples_);
   timer().stamp("output");
 }
 

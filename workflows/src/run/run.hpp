@@ -16,6 +16,7 @@
 #include "rockfdem/mesh/mesh.hpp"
 #include "rockfdem/workflows/scene.hpp"
 #include "run/continuum_solve.hpp"
+#include "run/field_sampler.hpp"
 #include "run/stage_runner.hpp"
 #include "run/staged_run.hpp"
 
@@ -32,7 +33,7 @@ class Run : StagedRun<RunOutputs> {
  private:
   // The phases, in the order run() calls them.
   void solve_insitu();
-  void install_at_face_distance();
+  void install_at_face_distance(FieldSampler& sampler);
   void choose_handoff_field();
   int write_implicit_results_only();
   void solve_references();
@@ -59,9 +60,11 @@ class Run : StagedRun<RunOutputs> {
   /// a later stage's stability limit is below it.
   std::string stage_input_error(const InputError& e);
 
-  std::vector<insitu::InsituField> fields_;  ///< up to the one handed over
-  HandoffFigures handoff_figures_;           ///< the hand-off rule over all solved fields
-  ContinuumReferences references_;           ///< what the end state is compared with
+  /// Up to the one handed over, which alone keeps its arrays.
+  std::vector<insitu::InsituField> fields_;
+  std::vector<ImplicitSample> samples_;  ///< fields_'s samples
+  HandoffFigures handoff_figures_;       ///< the hand-off rule over all solved fields
+  ContinuumReferences references_;       ///< what the end state is compared with
   SupportMaterials support_;
   fdem::DampingSettings stage_damping_;  ///< the stages' (after the hand-off step)
   fdem::BoltPlan bolts_;                 ///< marks bolt triangles and allows fracture there

@@ -25,6 +25,7 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
@@ -128,6 +129,8 @@ struct SolverSpec {
   std::size_t direct_below_dofs = 20000;
 };
 
+struct InsituField;
+
 struct InsituSpec {
   FarField far_field;
   Gravity gravity;
@@ -144,6 +147,11 @@ struct InsituSpec {
   /// all. Empty: every alpha's.
   std::vector<double> keep_fields;
   SolverSpec solver;
+  /// Called with each field once solved, before the next alpha's solve and
+  /// before keep_fields applies: a caller that reads a few figures of most
+  /// fields takes them here, and may move the arrays out to keep only the
+  /// fields it needs whole (the field is not read again).
+  std::function<void(InsituField&)> on_field;
 };
 
 // ---------------------------------------------------------------------------
