@@ -494,6 +494,11 @@ TEST(Report, survey_references_compare_the_component_monitoring_reads) {
   EXPECT_EQ(shoulder[6], "16.00 (8.0%)");
   EXPECT_EQ(row_of(md, "vault")[4], "219.00 (vertical)");
   EXPECT_EQ(row_of(md, "vault")[6], "-1.00 (-0.5%)");
+  // Nothing broke: no caveat that the figures are one mesh's; with cracks
+  // broken, the caveat and the way to the spread.
+  EXPECT_EQ(md.find("These figures are this mesh's"), std::string::npos) << md;
+  r.state.broken.mode_II = 10;
+  EXPECT_NE(report_markdown(scene, r, x).find("--vary mesh.size_near"), std::string::npos);
 
   scene.references.from_support = true;
   x.survey_since_support_mm = {{"left_shoulder", 40.0}};

@@ -217,7 +217,18 @@ void from_unloaded(std::ostream& md, const MonitorRecord& mon) {
      << rows.str();
 }
 
-void key_points(std::ostream& md, const Scene& s, const MonitorRecord& mon, const ReportExtras& x) {
+// A fracturing run compared with references: its figures are one mesh's.
+void mesh_caveat(std::ostream& md, const ReferenceSettings& ref, const fdem::BrokenCounts& b) {
+  if (ref.mm.empty() || b.total() == 0) return;
+  md << "\nThese figures are this mesh's: crack paths follow its edges, and meshes of "
+        "nearly the same element size read a fracturing tunnel's key points differently (on "
+        "the default tunnel the vault by about 10%, one standard deviation, far more than a "
+        "strength scatter on one mesh). For the answer with its spread, sweep nearby element "
+        "sizes (`rockfdem sweep SCENE --vary mesh.size_near=...`, docs/studies.md).\n";
+}
+
+void key_points(std::ostream& md, const Scene& s, const MonitorRecord& mon, const ReportExtras& x,
+                const fdem::BrokenCounts& broken) {
   const ReferenceSettings& ref = s.references;
   md << "\n## Key points and chords (end of run)\n\nRadial displacement: towards the opening "
         "positive, from the in-situ state (the implicit deconfinement included), at the "
@@ -248,6 +259,7 @@ void key_points(std::ostream& md, const Scene& s, const MonitorRecord& mon, cons
     point_row(md, "shoulder_chord", mon.chords->shoulder_chord_convergence_mm, x, ref);
     md << "\nVault settlement (-uy): " << fixed(mon.chords->vault_settlement_mm, 2) << " mm.\n";
   }
+  mesh_caveat(md, ref, broken);
   from_unloaded(md, mon);
 }
 
@@ -616,7 +628,7 @@ std::string report_markdown(const Scene& scene, const RunRecord& record,
   inputs(md, scene, record);
   stages(md, record);
   status(md, record);
-  key_points(md, scene, record.monitors, extras);
+  key_points(md, scene, record.monitors, extras, record.state.broken);
   answer_origin(md, record, extras);
   bolts(md, record.bolts);
   lining(md, record.lining);
