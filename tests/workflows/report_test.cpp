@@ -501,7 +501,7 @@ TEST(Report, survey_references_compare_the_component_monitoring_reads) {
   EXPECT_NE(report_markdown(scene, r, x).find("--vary mesh.size_near"), std::string::npos);
 
   scene.references.from_support = true;
-  x.survey_since_support_mm = {{"left_shoulder", 40.0}};
+  r.monitors.key_points["left_shoulder"].survey_since_support_mm = 40.0;
   x.since_support_mm = {{"left_shoulder", 45.0}};
   md = report_markdown(scene, r, x);
   shoulder = row_of(md, "left_shoulder");

@@ -334,8 +334,7 @@ void RunOutputs::finish(const fdem::Engine& e, const mesh::Mesh& m, PhaseTimer& 
 // stress (alpha) against the vault settlement it allows.
 void RunOutputs::record_ground_reaction() {
   const std::vector<Monitor>& monitors = key_points_->monitors();
-  std::size_t vault = 0;
-  while (monitors[vault].role != KeyRole::kVault) ++vault;
+  const std::size_t vault = std::size_t(&key_points_->find(KeyRole::kVault) - monitors.data());
   std::vector<GroundReactionPoint>& grc = summary_.ground_reaction_curve;
   grc.clear();
   for (const ImplicitSample& f : curve_samples_.empty() ? samples_ : curve_samples_) {
@@ -527,7 +526,6 @@ void RunOutputs::add_from_unloaded(MonitorRecord& monitors) const {
 void RunOutputs::write_report() const {
   ReportExtras extras;
   extras.since_support_mm = since_support();
-  extras.survey_since_support_mm = survey_since_support();
   extras.pictures = pictures_;
   workflows::write_report(ctx_.output_dir, scene_, summary_, extras);
 }

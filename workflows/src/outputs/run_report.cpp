@@ -164,16 +164,25 @@ std::optional<double> find_in(const std::map<std::string, double>& m, const std:
   return i == m.end() ? std::nullopt : std::optional<double>(i->second);
 }
 
+// A key point's figures beside its radial one; a chord has none.
+struct PointFigures {
+  std::optional<double> at_handoff;    ///< what the implicit stage gave
+  std::optional<double> survey;        ///< as monitoring reads it
+  std::optional<double> survey_since;  ///< that since the support's installation
+};
+
+PointFigures point_figures(const std::string& name, const KeyPointFigures& k) {
+  return {k.radial_at_handoff_mm, survey_reading(name, k), k.survey_since_support_mm};
+}
+
 // A row of the key-point table: the figure, since support, the reference.
-// `survey`: the key point as monitoring reads it (none for a chord).
 void point_row(std::ostream& md, const std::string& name, double total, const ReportExtras& x,
-               const ReferenceSettings& ref, const std::optional<double>& at_handoff = {},
-               const std::optional<double>& survey = {}) {
+               const ReferenceSettings& ref, const PointFigures& p = {}) {
+  const auto& [at_handoff, survey, survey_since] = p;
   md << "| " << name << " | " << fixed(total, 2) << " | "
      << (at_handoff ? fixed(*at_handoff, 2) : std::string("-")) << " | ";
   const std::optional<double> since = find_in(x.since_support_mm, name);
   md << (since ? fixed(*since, 2) : std::string("-")) << " | ";
-  const std::optional<double> survey_since = find_in(x.survey_since_support_mm, name);
   if (ref.survey)
     md << (survey ? fixed(*survey, 2) + " (" + survey_direction(name) + ")" : std::string("-"))
        << " | ";
@@ -250,9 +259,7 @@ void key_points(std::ostream& md, const Scene& s, const MonitorRecord& mon, cons
     const auto k = mon.key_points.find(p);
     // A scene monitor of the same name stands in the summary instead.
     if (k != mon.key_points.end() && !mon.points.count(p))
-      point_row(md, p, k->second.radial_mm, x, ref, k->second.radial_at_handoff_mm,
-                survey_reading(p, k->second.ux_mm, k->second.uy_mm, k->second.inward_x,
-                               k->second.inward_y));
+      point_row(md, p, k->second.radial_mm, x, ref, point_figures(p, k->second));
   }
   if (mon.chords) {
     point_row(md, "wall_chord", mon.chords->wall_chord_convergence_mm, x, ref);

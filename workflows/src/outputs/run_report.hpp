@@ -18,8 +18,6 @@ struct ReportExtras {
   /// Key points (radial) and chords ("wall_chord", "shoulder_chord") [mm]
   /// measured from the support's installation; empty when the run has none.
   std::map<std::string, double> since_support_mm;
-  /// Key points as monitoring reads them (record/survey_reading.hpp), since then.
-  std::map<std::string, double> survey_since_support_mm;
   std::vector<std::string> pictures;  ///< PNG files rendered, linked in order
 };
 

@@ -213,7 +213,7 @@ nlohmann::json key_point_json(const std::string& name, const KeyPointFigures& k)
                       {"uy_mm", k.uy_mm},
                       {"u_mm", k.u_mm},
                       {"radial_mm", k.radial_mm},
-                      {"survey_mm", survey_reading(name, k.ux_mm, k.uy_mm, k.inward_x, k.inward_y)},
+                      {"survey_mm", survey_reading(name, k)},
                       {"survey_direction", survey_direction(name)},
                       {"x", k.x},
                       {"y", k.y},

@@ -7,6 +7,8 @@
 
 #include <string>
 
+#include "record/run_figures.hpp"
+
 namespace rockfdem::workflows {
 
 /// "vertical" for the vault and the invert, "horizontal" for the others.
@@ -20,6 +22,11 @@ inline double survey_reading(const std::string& key_point, double ux, double uy,
                              double inward_y) {
   if (survey_direction(key_point)[0] == 'v') return inward_y < 0 ? -uy : uy;
   return inward_x < 0 ? -ux : ux;
+}
+
+/// A key point's reading at the end [mm].
+inline double survey_reading(const std::string& key_point, const KeyPointFigures& k) {
+  return survey_reading(key_point, k.ux_mm, k.uy_mm, k.inward_x, k.inward_y);
 }
 
 }  // namespace rockfdem::workflows
