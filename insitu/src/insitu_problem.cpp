@@ -80,18 +80,21 @@
 // ## Solvers
 //
 // Small systems go to UMFPACK. Larger ones to conjugate gradients with
-// Trilinos ML smoothed-aggregation AMG, given the three rigid-body modes as
-// its near-null space (two translations and the rotation): with only the two
-// translations ML coarsens elasticity poorly. If CG does not converge the
+// PETSc's smoothed-aggregation AMG (GAMG), given the three rigid-body modes
+// as its near-null space (two translations and the rotation): with only the
+// two translations aggregation coarsens elasticity poorly. GAMG rather than
+// Trilinos ML, which deal.II also offers: on the 420k-triangle tunnel both
+// need 18-19 iterations at the same cost per iteration, but ML's Galerkin
+// products claim 350 MB for a moment where GAMG's claim 140 MB, and ML keeps
+// 155 MB of hierarchy where GAMG keeps 113 MB. If CG does not converge the
 // direct solver takes over and the record says so.
 //
 // The alphas of one grid share what does not change (update_system,
 // solve_amg_cg): the dofs and sparsity, the host rock's part of the matrix
 // and loads (only cells whose law changed are assembled again, as the
-// difference of their laws), ML's hierarchy while CG stays fast with it, and
+// difference of their laws), GAMG's hierarchy while CG stays fast with it, and
 // CG's start, projected from the earlier solutions. None of it changes the
 // answer: CG stops on the residual.
-#include <Epetra_MultiVector.h>
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/base/symmetric_tensor.h>
@@ -106,17 +109,15 @@
 #include <deal.II/lac/affine_constraints.h>
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 #include <deal.II/lac/full_matrix.h>
+#include <deal.II/lac/petsc_sparse_matrix.h>
 #include <deal.II/lac/solver_cg.h>
 #include <deal.II/lac/solver_control.h>
 #include <deal.II/lac/sparse_direct.h>
 #include <deal.II/lac/sparse_matrix.h>
 #include <deal.II/lac/sparsity_pattern.h>
-#include <deal.II/lac/trilinos_precondition.h>
-#include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/vector.h>
 #include <malloc.h>
 
-#include <Teuchos_ParameterList.hpp>
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -131,6 +132,7 @@
 #include <vector>
 
 #include "dealii_grid.hpp"
+#include "gamg_preconditioner.hpp"
 #include "rockfdem/error.hpp"
 #include "rockfdem/insitu/constants.hpp"
 #include "rockfdem/insitu/insitu.hpp"
@@ -173,6 +175,15 @@ SymmetricTensor<4, 2> elasticity_tensor(const ElasticMaterial& m) {
 }
 
 double lame_lambda(const ElasticMaterial& m) { return m.E * m.nu / ((1 + m.nu) * (1 - 2 * m.nu)); }
+
+/// The stiffness product and GAMG's cycle as deal.II's solvers call them.
+template <class OnArrays>
+struct OnVectors {
+  const OnArrays& op;
+  void vmult(Vector<double>& dst, const Vector<double>& src) const {
+    op.apply(src.data(), dst.data());
+  }
+};
 
 /// The in-situ stage: one elastic solve per softening factor.
 class InsituProblem {
@@ -253,20 +264,18 @@ class InsituProblem {
   AffineConstraints<double> constraints_;
   std::vector<types::global_dof_index> pinned_dofs_;
   SparsityPattern sparsity_pattern_;
-  // The stiffness lives in one matrix: deal.II's for UMFPACK, Trilinos' for
-  // AMG-CG (ML reads it, CG multiplies with it). Between alphas only the
-  // cells whose law changed are added again (update_system), and ML's
+  // The stiffness lives in one matrix: deal.II's for UMFPACK, PETSc's for
+  // AMG-CG (GAMG reads it, CG multiplies with it). Between alphas only the
+  // cells whose law changed are added again (update_system), and GAMG's
   // hierarchy is kept while it still serves (solve_amg_cg). The right-hand
   // side goes along with the matrix: only the changed cells' loads change.
   bool use_cg_ = false;
   SparseMatrix<double> system_matrix_;
   HeldStage direct_held_;
-  // Built only with the MPI runtime: even an empty Trilinos matrix asks MPI
-  // for its communicator.
-  std::unique_ptr<TrilinosWrappers::SparseMatrix> cg_matrix_;
+  // Built only with the MPI runtime, which starts PETSc.
+  std::unique_ptr<PETScWrappers::SparseMatrix> cg_matrix_;
   HeldStage cg_held_;
-  std::unique_ptr<TrilinosWrappers::PreconditionAMG> amg_;
-  std::vector<double> null_space_;    ///< ML keeps a pointer to it: lives with amg_
+  std::unique_ptr<GamgPreconditioner> amg_;
   int amg_reference_iterations_ = 0;  ///< first solve after the last build
   int last_iterations_ = 0;
   Vector<double> solution_;
@@ -400,7 +409,7 @@ void InsituProblem::make_grid() {
   if (have_grid_ && removed == grid_removed_) return;
 
   // The old grid's system goes first, so that the new grid is built in the
-  // space the matrix and ML's hierarchy gave back, not above them.
+  // space the matrix and GAMG's hierarchy gave back, not above them.
   release_system();
   fe_values_.reset();
   fe_face_values_.reset();
@@ -418,7 +427,7 @@ void InsituProblem::make_grid() {
 // ---------------------------------------------------------------------------
 
 void InsituProblem::release_system() {
-  amg_.reset();            // ML reads the matrix: the hierarchy goes first
+  amg_.reset();            // GAMG reads the matrix: the hierarchy goes first
   system_matrix_.clear();  // it holds a pointer to the pattern we replace
   cg_matrix_.reset();
   earlier_solutions_.clear();
@@ -437,7 +446,7 @@ void InsituProblem::setup_system() {
   for (const auto dof : pinned_dofs_) constraints_.add_line(dof);
   constraints_.close();
 
-  // The matrix the solver needs, and only that one (Trilinos keeps its own
+  // The matrix the solver needs, and only that one (PETSc keeps its own
   // copy of the pattern: deal.II's is made only for UMFPACK).
   const SolverSpec& s = spec_.solver;
   const bool small = dof_handler_.n_dofs() < s.direct_below_dofs;
@@ -447,8 +456,7 @@ void InsituProblem::setup_system() {
   if (use_cg_) {
     DynamicSparsityPattern dsp(dof_handler_.n_dofs(), dof_handler_.n_dofs());
     DoFTools::make_sparsity_pattern(dof_handler_, dsp, constraints_, false);
-    cg_matrix_ = std::make_unique<TrilinosWrappers::SparseMatrix>();
-    cg_matrix_->reinit(dsp);
+    cg_matrix_ = std::make_unique<PETScWrappers::SparseMatrix>(dsp);
   } else {
     make_direct_matrix();
   }
@@ -682,7 +690,7 @@ void InsituProblem::update_system(const double alpha, Matrix& matrix, HeldStage&
                                             system_rhs_);
     if (empty) insitu_forces_.add(local_dof_indices, cell_insitu);
   }
-  if constexpr (std::is_same_v<Matrix, TrilinosWrappers::SparseMatrix>)
+  if constexpr (std::is_same_v<Matrix, PETScWrappers::SparseMatrix>)
     matrix.compress(VectorOperation::add);
   held.role = role_;
   held.alpha = alpha;
@@ -741,14 +749,14 @@ void InsituProblem::make_direct_matrix() {
 
 void InsituProblem::solve_direct() { grid::solve_direct(system_matrix_, solution_, system_rhs_); }
 
-// ML's hierarchy is built on the first matrix of a grid and kept for the
+// GAMG's hierarchy is built on the first matrix of a grid and kept for the
 // alphas after it: the preconditioner only sets how fast CG converges, never
 // what it converges to, and the matrices of neighbouring alphas differ in the
 // core only. It is built again when CG has slowed down to more than
 // kRebuildGrowth times the iterations it needed right after the last build,
-// or when a solve with the kept hierarchy does not converge. ML reads the
-// matrix through a pointer: the kept hierarchy's finest level multiplies with
-// this alpha's matrix, its smoother and coarse levels are the build's.
+// or when a solve with the kept hierarchy does not converge. The kept
+// hierarchy's finest level works with this alpha's matrix (the same PETSc
+// object, its values changed), its coarse levels are the build's.
 int InsituProblem::solve_amg_cg(const double target_residual, InsituField& field) {
   constexpr double kRebuildGrowth = 1.5;
   const bool slowed = amg_reference_iterations_ > 0 &&
@@ -757,8 +765,10 @@ int InsituProblem::solve_amg_cg(const double target_residual, InsituField& field
 
   // Nothing to solve (alpha = 1: the right-hand side is round-off): no
   // hierarchy is built for it.
+  const PetscProduct product(*cg_matrix_);
+  const OnVectors<PetscProduct> stiffness{product};
   Vector<double> residual(solution_.size());
-  cg_matrix_->vmult(residual, solution_);
+  stiffness.vmult(residual, solution_);
   residual.sadd(-1.0, 1.0, system_rhs_);
   if (residual.l2_norm() <= target_residual) return 0;
 
@@ -768,7 +778,7 @@ int InsituProblem::solve_amg_cg(const double target_residual, InsituField& field
   const auto run_cg = [&] {
     SolverControl control(spec_.solver.max_iterations, target_residual, false, false);
     SolverCG<Vector<double>> cg(control);
-    cg.solve(*cg_matrix_, solution_, system_rhs_, *amg_);
+    cg.solve(stiffness, solution_, system_rhs_, OnVectors<GamgPreconditioner>{*amg_});
     return static_cast<int>(control.last_step());
   };
   int iterations = 0;
@@ -798,8 +808,9 @@ void InsituProblem::start_from_earlier_solutions() {
   if (m == 0) return;
   FullMatrix<double> G(m, m);
   Vector<double> g(m), K_w(solution_.size());
+  const PetscProduct stiffness(*cg_matrix_);
   for (std::size_t i = 0; i < m; ++i) {
-    cg_matrix_->vmult(K_w, earlier_solutions_[i]);
+    stiffness.apply(earlier_solutions_[i].data(), K_w.data());
     for (std::size_t j = 0; j < m; ++j) G(j, i) = earlier_solutions_[j] * K_w;
     g(i) = earlier_solutions_[i] * system_rhs_;
   }
@@ -828,9 +839,10 @@ void InsituProblem::remember_solution() {
 
 void InsituProblem::build_amg() {
   // The near-null space: the rigid motions of the plate, evaluated at every
-  // vertex dof. ML wants them as columns of one array in dof order.
+  // vertex dof, in dof order.
   const std::size_t n = dof_handler_.n_dofs();
-  null_space_.assign(3 * n, 0.0);
+  std::array<std::vector<double>, 3> modes;
+  for (auto& mode : modes) mode.assign(n, 0.0);
   Point<2> center;
   double extent = 0;
   for (const auto& v : triangulation_.get_vertices()) center += v / triangulation_.n_vertices();
@@ -841,34 +853,22 @@ void InsituProblem::build_amg() {
     for (const unsigned int v : cell->vertex_indices()) {
       const auto dx = cell->vertex_dof_index(v, 0), dy = cell->vertex_dof_index(v, 1);
       const Tensor<1, 2> p = (cell->vertex(v) - center) / extent;
-      null_space_[0 * n + dx] = 1;
-      null_space_[1 * n + dy] = 1;
-      null_space_[2 * n + dx] = -p[1];
-      null_space_[2 * n + dy] = p[0];
+      modes[0][dx] = 1;
+      modes[1][dy] = 1;
+      modes[2][dx] = -p[1];
+      modes[2][dy] = p[0];
       node_blocks = node_blocks && dx % 2 == 0 && dy == dx + 1;
     }
-
-  TrilinosWrappers::PreconditionAMG::AdditionalData data;
-  data.elliptic = true;
-  data.higher_order_elements = false;
-  data.smoother_sweeps = 2;
-  data.aggregation_threshold = 1e-3;
-  Teuchos::ParameterList parameters;
-  std::unique_ptr<Epetra_MultiVector> distributed_modes;
-  data.set_parameters(parameters, distributed_modes, *cg_matrix_);
-  parameters.set("PDE equations", node_blocks ? 2 : 1);
-  parameters.set("null space: type", "pre-computed");
-  parameters.set("null space: dimension", 3);
-  parameters.set("null space: vectors", null_space_.data());
+  // GAMG aggregates vertices (blocks of two dofs): P1's dofs come so.
+  AssertThrow(node_blocks, ExcMessage("insitu: the dofs of a vertex are not consecutive"));
 
   // The old hierarchy goes, and the heap it and the earlier solves freed
-  // goes back to the system before ML's products claim about 300 MB at 420k
-  // triangles for a moment: freed but fragmented, it would stay resident
-  // and the build would add to it.
+  // goes back to the system before GAMG's products claim about 140 MB at
+  // 420k triangles for a moment: freed but fragmented, it would stay
+  // resident and the build would add to it.
   amg_.reset();
   malloc_trim(0);
-  amg_ = std::make_unique<TrilinosWrappers::PreconditionAMG>();
-  amg_->initialize(*cg_matrix_, parameters);
+  amg_ = std::make_unique<GamgPreconditioner>(*cg_matrix_, modes);
   amg_reference_iterations_ = 0;
   last_iterations_ = 0;
 }

@@ -1,7 +1,7 @@
-// The process-wide runtime the AMG preconditioner needs. Trilinos ML works on
-// Epetra objects, which need an MPI communicator even in a serial program;
-// deal.II's MPI_InitFinalize starts MPI (and Kokkos/PETSc/SLEPc where they
-// are configured) and stops it at the end of main().
+// The process-wide runtime the AMG preconditioner needs. PETSc's GAMG works
+// on PETSc objects, which need PETSc (and MPI under it) started even in a
+// serial program; deal.II's MPI_InitFinalize starts MPI (and Kokkos/PETSc/
+// SLEPc where they are configured) and stops it at the end of main().
 //
 // Two side effects matter to the rest of rockfdem:
 //   * max_num_threads = 1 limits deal.II's TBB pool: the implicit stage runs

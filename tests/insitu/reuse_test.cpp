@@ -1,5 +1,5 @@
 // What the in-situ stage keeps from one alpha to the next (the host rock's
-// stiffness, ML's hierarchy, the previous solution as CG's start) changes
+// stiffness, GAMG's hierarchy, the previous solution as CG's start) changes
 // how fast a stage is solved, never what it solves: each field of a
 // sequence must equal the field of a fresh solve of that alpha alone.
 //

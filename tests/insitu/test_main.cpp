@@ -1,4 +1,4 @@
-// The in-situ tests need the MPI runtime for Trilinos AMG, created once per
+// The in-situ tests need the MPI runtime for PETSc's AMG, created once per
 // process before any test runs: hence a main of our own.
 #include <gtest/gtest.h>
 

@@ -40,7 +40,7 @@ namespace rockfdem::insitu {
 // ---------------------------------------------------------------------------
 
 /// Creates the MPI runtime (and limits deal.II's TBB pool to one thread) for
-/// the lifetime of the object. Trilinos' algebraic multigrid needs it: create
+/// the lifetime of the object. PETSc's algebraic multigrid needs it: create
 /// exactly one at the top of main(), before any solve_insitu() call. The
 /// OpenMP thread count in force before construction is restored afterwards,
 /// so the explicit engine keeps all its threads. Without one, solve_insitu()
@@ -117,7 +117,7 @@ struct LiningStage {
 
 enum class LinearSolver {
   kAuto,    ///< direct below direct_below_dofs, else AMG-CG (direct if CG fails)
-  kAmgCg,   ///< Trilinos ML AMG (rigid-body near-null space) + CG
+  kAmgCg,   ///< PETSc GAMG (rigid-body near-null space) + CG
   kDirect,  ///< UMFPACK
 };
 
