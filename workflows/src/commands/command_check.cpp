@@ -242,9 +242,11 @@ constexpr double kProbeMemoryMargin = 1.25;
 // continuum counterpart (solved before the engine is built, so its solve
 // and the engine are not held at once) and the frames. Peak RSS on
 // tunnel-seed-oneshot.toml (2 threads, 300 explicit steps, docs/benchmarks.md):
-// 258 MiB at 16,284 triangles over a probe of 196 MiB; 1500 B per
-// triangle keeps it 8% below its bound, 28,936 triangles 22% below.
-constexpr double kImplicitBytesPerTriangle = 1500;
+// 169, 253 and 610 MiB at 16,284, 111,446 and 419,852 triangles over
+// probes of 169, 169 and 407 MiB (the start-up's high-water mark is the
+// floor of both); 400 B per triangle keeps 111k 8% below its bound and
+// puts 420k's bound 1.23 times above its peak.
+constexpr double kImplicitBytesPerTriangle = 400;
 
 // Output steps at most: each stage's (and its last), or the specimen's.
 double output_steps(const Scene& s) {
