@@ -391,6 +391,43 @@ TEST(Cli, equilibrium_waits_for_the_monitors_to_settle) {
   EXPECT_GT(steps[1], 500);
 }
 
+// Key points can settle while cracks still break away from them. With a
+// ratio every state meets and settle off, the unsupported weak-rock tunnel's
+// equilibrium stage stops after `hold` (2) outputs of 100 steps; with
+// broken_settle = 1e-3 it goes on while its broken count still grows by
+// more than 0.1% of itself per 1000 steps, and its report says how fast it
+// grew: at most the limit where it converged, else the status names it.
+TEST(Cli, equilibrium_can_wait_for_the_broken_count_to_settle) {
+  long steps[2];
+  const char* limit[2] = {"0", "1e-3"};
+  for (int k = 0; k < 2; ++k) {
+    const fs::path out = scratch(std::string("broken-settle") + std::to_string(k));
+    const Result r = run("run " + kTestDir +
+                         "/support_pair_unsupported.toml -q --set stages[2].ratio=1"
+                         " --set stages[2].settle=0 --set stages[2].every_steps=100"
+                         " --set stages[2].max_steps=2000 --set stages[2].broken_settle=" +
+                         limit[k] + " -o " + out.string());
+    ASSERT_EQ(r.code, 0) << r.output;
+    const nlohmann::json j = rockfdem::test::read_json(out / "summary.json");
+    const nlohmann::json& stage = j["fdem"]["stages"][1];
+    steps[k] = stage["steps"].get<long>();
+    EXPECT_EQ(stage["criteria"]["broken_settle"].get<double>(), std::stod(limit[k]));
+    ASSERT_TRUE(stage["broken_growth"].is_number()) << stage.dump();
+    const double growth = stage["broken_growth"].get<double>();
+    if (k == 0) {
+      EXPECT_GT(growth, 1e-3);
+    } else if (stage["converged"].get<bool>()) {
+      EXPECT_LE(growth, 1e-3);
+    } else {
+      const std::string why = j.value("status_reason", std::string());
+      EXPECT_NE(why.find("broken count growing"), std::string::npos) << why;
+    }
+    fs::remove_all(out);
+  }
+  EXPECT_EQ(steps[0], 200);
+  EXPECT_GT(steps[1], 400);
+}
+
 // A scene whose only stage is the implicit one: `run` skips the explicit
 // engine, says so, and still reports the Kirsch comparison (open hole).
 TEST(Cli, elastic_only_scene_skips_the_engine) {

@@ -209,6 +209,7 @@ std::map<std::string, Number> number_fields() {
   f["stages[0].max_steps"] = [](const Scene& s) { return double(last(s).max_steps); };
   f["stages[0].ratio"] = [](const Scene& s) { return last(s).ratio; };
   f["stages[0].settle"] = [](const Scene& s) { return last(s).settle; };
+  f["stages[0].broken_settle"] = [](const Scene& s) { return last(s).broken_settle; };
   f["stages[0].hold"] = [](const Scene& s) { return double(last(s).hold); };
   f["stages[0].unstable_fraction"] = [](const Scene& s) { return last(s).unstable_fraction; };
   f["stages[0].time"] = [](const Scene& s) { return last(s).time; };

@@ -72,15 +72,18 @@ struct StageRecord {
   int number = 0;        ///< the stage's number (outputs/step_outputs.hpp, StageTag)
   StageChanges changes;  ///< the stage's own report of its changes
   long steps = 0;
-  double simulated_time = 0;      ///< [s]
-  std::optional<double> dt;       ///< [s]; none when it took no step
-  double unbalanced_ratio = 0;    ///< at its end
-  std::optional<double> settle;   ///< of its last output interval; none before one
+  double simulated_time = 0;     ///< [s]
+  std::optional<double> dt;      ///< [s]; none when it took no step
+  double unbalanced_ratio = 0;   ///< at its end
+  std::optional<double> settle;  ///< of its last output interval; none before one
+  /// The broken count's growth then, per 1000 steps, of the count; none before one.
+  std::optional<double> broken_growth;
   std::optional<bool> converged;  ///< none when it took no step
   long max_steps = 0;
   // Its criteria ("criteria"): the scene's StageSpec values.
   double ratio = 0;
   double settle_limit = 0;
+  double broken_settle_limit = 0;  ///< 0: not a criterion
   int hold = 0;
   double unstable_fraction = 0;
   std::optional<MovingMost> moving_most;

@@ -102,11 +102,13 @@ nlohmann::json stage_json(const StageRecord& s) {
           {"dt", or_null(s.dt)},
           {"unbalanced_ratio", s.unbalanced_ratio},
           {"settle", or_null(s.settle)},
+          {"broken_growth", or_null(s.broken_growth)},
           {"converged", or_null(s.converged)},
           {"max_steps", s.max_steps},
           {"criteria",
            {{"ratio", s.ratio},
             {"settle", s.settle_limit},
+            {"broken_settle", s.broken_settle_limit},
             {"hold", s.hold},
             {"unstable_fraction", s.unstable_fraction}}},
           {"moving_most",
@@ -132,11 +134,13 @@ StageRecord stage_from_json(const nlohmann::json& j) {
   s.dt = optional_at<double>(j, "dt");
   s.unbalanced_ratio = j.at("unbalanced_ratio").get<double>();
   s.settle = optional_at<double>(j, "settle");
+  s.broken_growth = optional_at<double>(j, "broken_growth");
   s.converged = optional_at<bool>(j, "converged");
   s.max_steps = j.at("max_steps").get<long>();
   const nlohmann::json& c = j.at("criteria");
   s.ratio = c.at("ratio").get<double>();
   s.settle_limit = c.at("settle").get<double>();
+  s.broken_settle_limit = c.value("broken_settle", 0.0);
   s.hold = c.at("hold").get<int>();
   s.unstable_fraction = c.at("unstable_fraction").get<double>();
   const nlohmann::json& m = j.value("moving_most", nlohmann::json());

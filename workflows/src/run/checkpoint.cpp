@@ -407,6 +407,8 @@ class RunStateCheck {
         {"hold", "an integer"},
         {"unstable_fraction", "a number"},
         {"settle", "a number or null"},
+        {"broken_growth", "a number or null"},
+        {"broken_settle", "a number"},
         {"converged", "true, false or null"},
         {"moving_most", "an object or null"},
         {"key_point", "a string"},
@@ -487,6 +489,7 @@ class RunStateCheck {
     // Optional: checkpoints from before they were kept lack them.
     if (s.contains("stage_held")) integer(s["stage_held"], at + ".stage_held");
     if (s.contains("stage_rates")) numbers(s["stage_rates"], at + ".stage_rates");
+    if (s.contains("stage_broken")) integer(s["stage_broken"], at + ".stage_broken");
     if (s.contains("unstable")) string(s["unstable"], at + ".unstable");
     number(member(s, at, "alpha"), at + ".alpha");
     boolean(member(s, at, "core_present"), at + ".core_present");
@@ -512,6 +515,7 @@ class RunStateCheck {
     object(c, at);
     number(member(c, at, "ratio"), at + ".ratio");
     number(member(c, at, "settle"), at + ".settle");
+    if (c.contains("broken_settle")) number(c["broken_settle"], at + ".broken_settle");
     integer(member(c, at, "hold"), at + ".hold");
     number(member(c, at, "unstable_fraction"), at + ".unstable_fraction");
   }
@@ -534,6 +538,9 @@ class RunStateCheck {
       bad(at + ".converged", &converged, "true, false or null");
     const json& settle = member(r, at, "settle");
     if (!settle.is_number() && !settle.is_null()) bad(at + ".settle", &settle, "a number or null");
+    if (r.contains("broken_growth") && !r["broken_growth"].is_number() &&
+        !r["broken_growth"].is_null())
+      bad(at + ".broken_growth", &r["broken_growth"], "a number or null");
     number(member(r, at, "support_pressure_ratio"), at + ".support_pressure_ratio");
     criteria(member(r, at, "criteria"), at + ".criteria");
     const json& moving = member(r, at, "moving_most");

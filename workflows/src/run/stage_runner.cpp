@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <limits>
 
 #include "record/output_dir.hpp"
@@ -63,6 +64,14 @@ double StageRunner::settle_measure(long steps) {
   // Per 1000 steps, so that the tolerance does not depend on every_steps.
   last_rate_ = steps > 0 ? change * (1000.0 / double(steps)) : 0.0;
   return size > 0 && steps > 0 ? change / size * (1000.0 / double(steps)) : 0.0;
+}
+
+std::optional<double> StageRunner::broken_growth(long steps) {
+  const long now = long(engine_.broken_counts().total());
+  const long before = cursor_.broken;
+  cursor_.broken = now;
+  if (before < 0 || steps <= 0) return std::nullopt;
+  return now > 0 ? double(now - before) / double(now) * (1000.0 / double(steps)) : 0.0;
 }
 
 bool StageRunner::advance(long n, const StopTest& stop, bool* reached) {
@@ -185,8 +194,12 @@ bool StageRunner::criterion_met(const StageSpec& stage, bool tested, bool reache
   // with the walls still converging); the monitors must have settled
   // too, and both must hold at `hold` consecutive outputs, so that a
   // ratio met once on the way to a collapse does not count.
+  // Key points can settle while cracks still break away from them: where
+  // the scene asks, the broken count must have settled as well.
+  const bool cracks_settled = stage.broken_settle <= 0 ||
+                              (last_broken_growth_ && *last_broken_growth_ <= stage.broken_settle);
   const bool met = engine_.unbalanced_force_ratio() < stage.ratio &&
-                   (stage.settle <= 0 || last_settle_ <= stage.settle);
+                   (stage.settle <= 0 || last_settle_ <= stage.settle) && cracks_settled;
   cursor_.held = met ? cursor_.held + 1 : 0;
   return cursor_.held >= stage.hold;
 }
@@ -218,6 +231,7 @@ bool StageRunner::step_until(const StageSpec& stage, const StopTest& stop) {
     if (!whole) interrupted(stage);
     record_step(stage);
     last_settle_ = settle_measure(engine_.step_count() - before);
+    last_broken_growth_ = broken_growth(engine_.step_count() - before);
     done = criterion_met(stage, bool(stop), reached);
     progress.update(in_stage(), engine_.time() - t0);
     if (!done && unstable(stage, !stop) && stage.stop_when_unstable) {
@@ -244,10 +258,12 @@ void StageRunner::run(const StageSpec& stage) {
       cursor_.changes.broken_at_install = engine_.broken_counts().total();
     }
     cursor_.monitor_u = monitor_displacements();
+    cursor_.broken = long(engine_.broken_counts().total());
     cursor_.started = true;
   }
   StageChanges done = cursor_.changes;
   last_settle_ = -1;  // no output interval yet
+  last_broken_growth_.reset();
   const bool converged = kind.step(*this, stage, done);
   out_.stage_done(engine_, model_.mesh, StageTag{stage.kind, number()}, done);
   report_.push_back(report_entry(stage, done, converged));
@@ -270,6 +286,8 @@ StageRecord StageRunner::report_entry(const StageSpec& stage, const StageChanges
   if (r.steps > 0) r.dt = stage_dt_;
   r.unbalanced_ratio = engine_.unbalanced_force_ratio();
   if (last_settle_ >= 0) r.settle = last_settle_;
+  r.broken_growth = last_broken_growth_;
+  r.broken_settle_limit = stage.broken_settle;
   // A stage that took no step has no equilibrium to report.
   if (r.steps > 0) r.converged = converged;
   r.max_steps = stage.max_steps;
@@ -314,6 +332,12 @@ RunVerdict StageRunner::verdict() const {
                     r.kind.c_str(), r.steps, r.max_steps, r.unbalanced_ratio, r.ratio,
                     r.settle ? *r.settle : -1.0, r.settle_limit, m ? m->key_point.c_str() : "none",
                     m ? m->mm_per_1000_steps : 0.0);
+      if (r.broken_settle_limit > 0) {
+        const std::size_t n = std::strlen(msg);
+        std::snprintf(msg + n, sizeof msg - n,
+                      ", broken count growing %.3g of itself per 1000 steps (limit %g)",
+                      r.broken_growth ? *r.broken_growth : -1.0, r.broken_settle_limit);
+      }
     }
     return {"not_at_equilibrium", msg};
   }
@@ -335,6 +359,7 @@ nlohmann::json StageRunner::state() const {
           {"stage_monitor_u", cursor_.monitor_u},
           {"stage_held", cursor_.held},
           {"stage_rates", cursor_.rates},
+          {"stage_broken", cursor_.broken},
           {"unstable", unstable_.message},
           {"alpha", model_.alpha},
           {"core_present", model_.core_present},
@@ -363,6 +388,7 @@ void StageRunner::restore(const nlohmann::json& s) {
   check_stage_monitor_u(cursor_.monitor_u.size(), monitors().size(), "");
   cursor_.held = s.value("stage_held", 0);
   cursor_.rates = s.value("stage_rates", std::vector<double>{});
+  cursor_.broken = s.value("stage_broken", -1L);
   const std::string unstable = s.value("unstable", std::string());
   if (!unstable.empty()) unstable_ = {"unstable", unstable};
   model_.alpha = s.at("alpha").get<double>();

@@ -15,6 +15,7 @@
 
 #include <functional>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <vector>
 
 #include "outputs/monitors.hpp"
@@ -87,6 +88,7 @@ class StageRunner : public StageDriver {
     std::vector<double> monitor_u;  ///< monitors' (ux, uy) at the last output [m]
     int held = 0;                   ///< consecutive outputs meeting ratio and settle
     std::vector<double> rates;      ///< largest monitor move per 1000 steps, per output [m]
+    long broken = -1;               ///< broken crack elements at the last output; -1: none
   };
   /// Stops the run as unstable when a key point passed the stage's fraction
   /// of the span, has been accelerating, or (for a stage that stops on its
@@ -112,6 +114,9 @@ class StageRunner : public StageDriver {
   /// largest monitor displacement change per 1000 steps over the largest
   /// monitor displacement (0 when nothing moved); updates cursor_.monitor_u.
   double settle_measure(long steps);
+  /// The broken count's growth over the last `steps`, per 1000 steps, as a
+  /// fraction of the count now (0 with none broken); none before a first output.
+  std::optional<double> broken_growth(long steps);
   /// Steps `n` times unless a signal arrives (false) or the `stop` test
   /// holds after a step (*reached set).
   bool advance(long n, const StopTest& stop, bool* reached);
@@ -127,13 +132,14 @@ class StageRunner : public StageDriver {
   PhaseTimer* timer_ = nullptr;  ///< run_all()'s
   Cursor cursor_;
   long checkpoint_every_ = 0;
-  double last_settle_ = -1;   ///< settle_measure() of the stage's last interval; -1: none
-  double last_rate_ = 0;      ///< the largest monitor move per 1000 steps then [m]
-  std::string moving_most_;   ///< the monitor that moved most then
-  RunVerdict unstable_;       ///< the first finding that the opening is unstable
-  bool stopped_ = false;      ///< an unstable opening ended the stages
-  double stage_dt_ = 0;       ///< the dt of the stage's steps (one limit per stage)
-  long last_checkpoint_ = 0;  ///< step of the last checkpoint (or of the start)
+  double last_settle_ = -1;  ///< settle_measure() of the stage's last interval; -1: none
+  std::optional<double> last_broken_growth_;  ///< broken_growth() of that interval
+  double last_rate_ = 0;                      ///< the largest monitor move per 1000 steps then [m]
+  std::string moving_most_;                   ///< the monitor that moved most then
+  RunVerdict unstable_;                       ///< the first finding that the opening is unstable
+  bool stopped_ = false;                      ///< an unstable opening ended the stages
+  double stage_dt_ = 0;                       ///< the dt of the stage's steps (one limit per stage)
+  long last_checkpoint_ = 0;                  ///< step of the last checkpoint (or of the start)
   std::function<void()> save_checkpoint_;
   std::vector<StageRecord> report_;
   EnergyCheck energy_;

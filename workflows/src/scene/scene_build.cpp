@@ -1017,6 +1017,7 @@ StageSpec read_stage(const Reader& r, const std::string& p, const std::string& k
   for (auto [key, field] : {std::pair{".ratio", &StageSpec::ratio},
                             {".time", &StageSpec::time},
                             {".settle", &StageSpec::settle},
+                            {".broken_settle", &StageSpec::broken_settle},
                             {".unstable_fraction", &StageSpec::unstable_fraction}})
     st.*field = r.number(p + key);
   st.max_steps = long(r.number(p + ".max_steps"));

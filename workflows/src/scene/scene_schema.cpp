@@ -738,6 +738,11 @@ void add_stages(std::vector<KeySpec>& s) {
                      "displacement change over the last output interval, per 1000 steps, at "
                      "most this fraction of the largest monitor displacement; 0: the ratio "
                      "alone."));
+  s.push_back(number("stages[].broken_settle", "-", "0", 0, false, 1, false,
+                     "Equilibrium also needs the broken count settled: its growth over the "
+                     "last output interval, per 1000 steps, at most this fraction of the "
+                     "broken crack elements (all kinds); 0: not checked. Key points can "
+                     "settle while cracks still break away from them."));
   s.push_back(integer("stages[].hold", "2", 1, 1000,
                       "Equilibrium: ratio and settle must both hold at this many consecutive "
                       "outputs (a ratio met once on the way to a collapse is no equilibrium)."));

@@ -128,6 +128,10 @@ struct StageSpec {
   /// at most this fraction of the largest monitor displacement; 0: the
   /// ratio alone.
   double settle{};
+  /// Equilibrium also needs the broken count settled: its growth over one
+  /// output interval, per 1000 steps, at most this fraction of the count;
+  /// 0: not checked. Key points can settle while cracks keep breaking.
+  double broken_settle{};
   /// Consecutive outputs at which ratio and settle must both hold.
   int hold{};
   /// A monitor displaced by more than this fraction of the opening's span
