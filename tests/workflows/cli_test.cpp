@@ -596,7 +596,7 @@ TEST(Cli, set_with_a_bad_array_index_exits_two_naming_it) {
       {"stages[].max_steps=1", "allowed: stages[0] to stages[9]"},
       {"stages[99999999999999999999].max_steps=1", "allowed: stages[0] to stages[9]"},
       {"stages[-1].max_steps=1", "allowed: stages[0] to stages[9]"},
-      {"bolt_fan[a].count=1", "allowed: bolt_fan[0] to bolt_fan[1]"},
+      {"bolt_fan[a].count=1", "allowed: bolt_fan[0] to bolt_fan[2]"},
       {"bolt[0].kind=cable", "the scene has no [[bolt]]"}};
   for (const auto& [set, allowed] : cases) {
     const Result r = run("check " + seed + " --set '" + set + "'");

@@ -261,7 +261,8 @@ TEST_F(Outputs, dt_figures_account_for_steps_and_simulated_time) {
 // `mesh` and `insitu` leave a status and a state hash like `run`: the
 // mesh's vertex coordinates, the in-situ displacement field (so the two
 // differ); counts.bolts is the scene's bolts and cables (the mesh holds
-// their triangles), 13 in the seed tunnel.
+// their triangles), 18 in the seed tunnel (9 bolts and 4 cables on the
+// arch, 5 floor bolts).
 TEST_F(Outputs, mesh_and_insitu_summaries_have_status_hash_and_bolts) {
   std::string hashes[2];
   const char* commands[2] = {"mesh", "insitu"};
@@ -269,7 +270,7 @@ TEST_F(Outputs, mesh_and_insitu_summaries_have_status_hash_and_bolts) {
     const nlohmann::json j = summary_of(std::string(commands[k]) + " " + kSeed + " -j 1", out);
     EXPECT_EQ(j["status"], "completed") << commands[k];
     EXPECT_TRUE(is_hash(j["state_hash"])) << commands[k] << ": " << j["state_hash"];
-    EXPECT_EQ(j["counts"]["bolts"].get<long>(), 13) << commands[k];
+    EXPECT_EQ(j["counts"]["bolts"].get<long>(), 18) << commands[k];
     EXPECT_GT(j["mesh"]["triangles"].get<long>(), 0) << commands[k];
     hashes[k] = j["state_hash"].get<std::string>();
     fs::remove_all(out);
