@@ -253,12 +253,12 @@ void StageRunner::run(const StageSpec& stage) {
     cursor_.t0 = engine_.time();
     cursor_.changes = kind.apply(model_, stage);
     out_.set_lining_installed(model_.lining_installed);
+    cursor_.broken = long(engine_.broken_counts().total());
     if (kind.installs_support()) {
       out_.support_installed(engine_);
-      cursor_.changes.broken_at_install = engine_.broken_counts().total();
+      cursor_.changes.broken_at_install = cursor_.broken;
     }
     cursor_.monitor_u = monitor_displacements();
-    cursor_.broken = long(engine_.broken_counts().total());
     cursor_.started = true;
   }
   StageChanges done = cursor_.changes;

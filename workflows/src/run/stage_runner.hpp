@@ -86,7 +86,7 @@ class StageRunner : public StageDriver {
     double t0 = 0;          ///< the simulated time at its start
     StageChanges changes;
     std::vector<double> monitor_u;  ///< monitors' (ux, uy) at the last output [m]
-    int held = 0;                   ///< consecutive outputs meeting ratio and settle
+    int held = 0;                   ///< consecutive outputs meeting the stage's criteria
     std::vector<double> rates;      ///< largest monitor move per 1000 steps, per output [m]
     long broken = -1;               ///< broken crack elements at the last output; -1: none
   };
