@@ -255,6 +255,16 @@ void flush_cracks(CrackBatch& b, int n, const int* element, const CrackConstants
   }
 }
 
+/// How many elements ahead the batch's gather asks for node positions: a
+/// crack element's far face belongs to a triangle that the locality order
+/// may have put far away, and its positions are then a cache miss (measured
+/// at 420k triangles: half the crack loop's samples waited on that load).
+constexpr long kGatherAhead = 8;
+
+inline void prefetch_nodes(const double* pos, const int* nodes) {
+  for (int j = 0; j < 4; ++j) __builtin_prefetch(pos + 2 * nodes[j]);
+}
+
 /// The batch pass over elements [begin, end): marks in `scalar` the ones the
 /// scalar loop must evaluate (all others have their slots).
 void batch_pass(const EngineData& d, long begin, long end, CrackBatch& b, int* element,
@@ -270,8 +280,10 @@ void batch_pass(const EngineData& d, long begin, long end, CrackBatch& b, int* e
   const double* p = d.nodes.pos.data();
   const bool offsets = !d.cracks.offset.empty();
   const bool scaled = !d.cracks.strength.empty();
+  const long nc = static_cast<long>(d.cracks.size());
   int n = 0;
   for (long c = begin; c < end; ++c) {
+    if (c + kGatherAhead < nc) prefetch_nodes(p, &d.cracks.nodes[4 * (c + kGatherAhead)]);
     if (!batchable(d, c, material)) continue;
     scalar[c - begin] = 0;
     const int* nd = &d.cracks.nodes[4 * c];
