@@ -31,7 +31,7 @@ namespace rockfdem::fdem::detail {
 
 /// Bump when a saved member is added, removed or reordered: older files are
 /// then refused with a clear message instead of being misread.
-constexpr std::uint32_t kCheckpointVersion = 14;  // 2: energy ledger; 3: contact updates;
+constexpr std::uint32_t kCheckpointVersion = 15;  // 2: energy ledger; 3: contact updates;
                                                   // 4: mass scaling; 5: strength factors,
                                                   // kinetic damping; 6: joint friction;
                                                   // 7: compact engine arrays; 8: joint
@@ -41,7 +41,9 @@ constexpr std::uint32_t kCheckpointVersion = 14;  // 2: energy ledger; 3: contac
                                                   // 11: boundary records' nodes listed;
                                                   // 12: no edge list in contact;
                                                   // 13: no component labels;
-                                                  // 14: crack triangles from the slots
+                                                  // 14: crack triangles from the slots;
+                                                  // 15: node-loop sums hold the
+                                                  // kinetic energy
 constexpr std::size_t kCheckpointHeaderBytes = 32;
 constexpr std::size_t kCheckpointChecksumBytes = 8;
 

@@ -16,12 +16,23 @@
 namespace rockfdem::fdem {
 namespace detail {
 
+/// Summed over the node loop's blocks in block order, as the node loop sums
+/// it (EngineData::kinetic_after_step): the same bits either way.
 double kinetic_energy(const EngineData& d) {
   const auto& n = d.nodes;
-  return block_sum(static_cast<long>(n.size()), d.threads, [&](long i) {
-    const double vx = n.vel[2 * i], vy = n.vel[2 * i + 1];
-    return 0.5 * n.mass[i] * (vx * vx + vy * vy);
-  });
+  const long nn = static_cast<long>(n.size());
+  std::vector<double> partial((nn + kNodeBlock - 1) / kNodeBlock, 0.0);
+  const long n_blocks = static_cast<long>(partial.size());
+#pragma omp parallel for schedule(static) num_threads(thread_count(d.threads))
+  for (long b = 0; b < n_blocks; ++b) {
+    double s = 0;
+    for (long i = b * kNodeBlock; i < std::min(nn, (b + 1) * kNodeBlock); ++i)
+      s += kinetic_energy_term(n.mass[i], n.vel[2 * i], n.vel[2 * i + 1]);
+    partial[b] = s;
+  }
+  double total = 0;
+  for (const double p : partial) total += p;
+  return total;
 }
 
 namespace {

@@ -39,6 +39,11 @@ namespace rockfdem::fdem::detail {
 
 struct EngineData;
 
+/// One node's kinetic energy, m |v|^2 / 2.
+inline double kinetic_energy_term(double m, double vx, double vy) {
+  return 0.5 * m * (vx * vx + vy * vy);
+}
+
 /// Accumulated energy terms since the first step [J/m]. A plain struct of
 /// scalars (trivially copyable): checkpoints store it as one block. (For a
 /// bit-exact ledger across a restart the per-triangle

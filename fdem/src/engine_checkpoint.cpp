@@ -172,7 +172,7 @@ void fields(Ar& ar, ContactData& c) {
 
 template <class Ar>
 void fields(Ar& ar, EngineData& d) {
-  ROCKFDEM_CHECKPOINT_MEMBERS(EngineData, 33);  // reversal and gravity count twice
+  ROCKFDEM_CHECKPOINT_MEMBERS(EngineData, 34);  // reversal and gravity count twice
   fields(ar, d.nodes);
   fields(ar, d.tris);
   fields(ar, d.cracks);
@@ -192,6 +192,7 @@ void fields(Ar& ar, EngineData& d) {
   ar.state(d.slots);  // the last step's forces: node_force(), reactions, ratios
   ar.state(d.block_partial);
   ar.state(d.reversal);
+  ar.skip(d.kinetic_after_step);  // the next node loop sums it before it is read
   ar.state(d.damping);
   ar.state(d.kinetic_damping);  // the peak test continues across a restart
   ar.state(d.mass_scaling);     // set_mass_scaling may come after construction

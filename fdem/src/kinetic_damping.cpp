@@ -32,7 +32,7 @@ void settle_free_components(EngineData& d) {
 
 bool kinetic_damping(EngineData& d) {
   KineticDampingState& s = d.kinetic_damping;
-  const double ke = kinetic_energy(d);
+  const double ke = d.kinetic_after_step;  // the node loop's sum: no second pass
   if (!(s.rising && ke < s.previous)) {
     s.rising = ke > s.previous;
     s.previous = ke;
