@@ -166,10 +166,34 @@ double start_value(std::uint64_t i) {
   return double(z >> 11) / double(1ull << 52) - 1.0;
 }
 
+/// Unit direction (ex, ey) of each live crack element at the current
+/// geometry, 0 for an inactive or broken one: fixed during the iteration, so
+/// computed once rather than at every product (the same expressions, so the
+/// same bits as computing them in the loop).
+void crack_directions(const EngineData& d, std::vector<double>& dir) {
+  const long nc = static_cast<long>(d.cracks.size());
+  dir.assign(2 * nc, 0.0);
+#pragma omp parallel for schedule(static) num_threads(thread_count(d.threads))
+  for (long e = 0; e < nc; ++e) {
+    if (!d.cracks.active[e] || d.cracks.state[e] == std::uint8_t(CrackState::kBroken)) continue;
+    const int* nd = &d.cracks.nodes[4 * e];
+    const double* p = d.nodes.pos.data();
+    // Mid-line from the end 0-3 to the end 1-2, component k.
+    const auto span = [&](int k) {
+      return 0.5 * (p[2 * nd[1] + k] + p[2 * nd[2] + k] - p[2 * nd[0] + k] - p[2 * nd[3] + k]);
+    };
+    const double tx = span(0), ty = span(1), h = std::sqrt(tx * tx + ty * ty);
+    dir[2 * e] = tx / h;
+    dir[2 * e + 1] = ty / h;
+  }
+}
+
 /// Linearised stiffness times u, into the slots `s` (same layout as the
 /// force slots): small-strain CST at the reference configuration and the
-/// crack elements' initial penalty slopes pn/h, pt/h at the current geometry.
-void apply_stiffness(const EngineData& d, const std::vector<double>& u, std::vector<double>& s) {
+/// crack elements' initial penalty slopes pn/h, pt/h along `dir`
+/// (crack_directions).
+void apply_stiffness(const EngineData& d, const std::vector<double>& dir,
+                     const std::vector<double>& u, std::vector<double>& s) {
   const long nt = static_cast<long>(d.tris.size()), nc = static_cast<long>(d.cracks.size());
 #pragma omp parallel for schedule(static) num_threads(thread_count(d.threads))
   for (long t = 0; t < nt; ++t) {
@@ -204,11 +228,7 @@ void apply_stiffness(const EngineData& d, const std::vector<double>& u, std::vec
     for (int k = 0; k < 4; ++k) out[k] = 0.0;
     if (!d.cracks.active[e] || d.cracks.state[e] == std::uint8_t(CrackState::kBroken)) continue;
     const int* nd = &d.cracks.nodes[4 * e];
-    const double* p = d.nodes.pos.data();
-    const double tx = 0.5 * (p[2 * nd[1]] + p[2 * nd[2]] - p[2 * nd[0]] - p[2 * nd[3]]);
-    const double ty =
-        0.5 * (p[2 * nd[1] + 1] + p[2 * nd[2] + 1] - p[2 * nd[0] + 1] - p[2 * nd[3] + 1]);
-    const double h = std::sqrt(tx * tx + ty * ty), ex = tx / h, ey = ty / h;
+    const double ex = dir[2 * e], ey = dir[2 * e + 1];
     const CrackConstants& k = d.crack_laws[d.cracks.material[e]];
     double o[2], sl[2];
     for (int end = 0; end < 2; ++end) {
@@ -254,11 +274,13 @@ double power_critical_dt(const EngineData& d, int max_iterations) {
   const long nn = static_cast<long>(d.nodes.size());
   const long n_blocks = (nn + kSumBlock - 1) / kSumBlock;
   std::vector<double> u(2 * nn), next(2 * nn, 0.0), s(d.slots.size()), partial(2 * n_blocks);
+  std::vector<double> dir;
+  crack_directions(d, dir);
   const double* m = d.nodes.mass.data();
   for (long i = 0; i < 2 * nn; ++i) u[i] = m[i / 2] > 0 ? start_value(i) : 0.0;
   double lambda = 0;
   for (int it = 0; it < max_iterations; ++it) {
-    apply_stiffness(d, u, s);
+    apply_stiffness(d, dir, u, s);
     // next = M^-1 K u; block partials of u.K u and |next|_M^2 (fixed order).
 #pragma omp parallel for schedule(static) num_threads(thread_count(d.threads))
     for (long b = 0; b < n_blocks; ++b) {
@@ -285,16 +307,20 @@ double power_critical_dt(const EngineData& d, int max_iterations) {
     const double estimate = it == 0 ? 0.0 : uku;
     if (!(norm2 > 0)) break;
     const double inv = 1.0 / std::sqrt(norm2);
+#pragma omp parallel for schedule(static) num_threads(thread_count(d.threads))
     for (long i = 0; i < 2 * nn; ++i) u[i] = next[i] * inv;
     const bool settled = it > 20 && std::fabs(estimate - lambda) <= 1e-4 * estimate;
     lambda = estimate;
     if (settled) break;
   }
+  // A maximum is exact in any order: a parallel reduction keeps the bits.
+  const long nt = static_cast<long>(d.tris.size());
   double xi = 0;
-  for (std::size_t t = 0; t < d.tris.size(); ++t) {
+#pragma omp parallel for schedule(static) reduction(max : xi) num_threads(thread_count(d.threads))
+  for (long t = 0; t < nt; ++t) {
     if (!d.tris.active[t]) continue;
     double w2, x;
-    triangle_frequency(d, t, w2, x);
+    triangle_frequency(d, std::size_t(t), w2, x);
     xi = std::max(xi, x);
   }
   if (!(lambda > 0)) return std::numeric_limits<double>::infinity();
