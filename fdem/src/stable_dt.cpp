@@ -103,9 +103,11 @@ double contact_triangle_omega2(const EngineData& d, std::size_t t) {
 }
 
 double contact_omega2(const EngineData& d) {
+  const long nt = static_cast<long>(d.tris.size());
   double w2 = 0;
-  for (std::size_t t = 0; t < d.tris.size(); ++t)
-    if (d.tris.active[t]) w2 = std::max(w2, contact_triangle_omega2(d, t));
+#pragma omp parallel for schedule(static) reduction(max : w2) num_threads(thread_count(d.threads))
+  for (long t = 0; t < nt; ++t)
+    if (d.tris.active[t]) w2 = std::max(w2, contact_triangle_omega2(d, std::size_t(t)));
   return w2;
 }
 
@@ -120,18 +122,24 @@ double dashpot_max(const EngineData& d, std::size_t n) {
 void node_frequencies(const EngineData& d, bool with_contact, std::vector<double>& omega2,
                       std::vector<double>& xi) {
   const std::size_t nn = d.nodes.size();
-  std::vector<double> crack_w2(nn, 0.0);
+  const long nt = static_cast<long>(d.tris.size());
+  std::vector<double> crack_w2(nn, 0.0), tri_w2(nt, 0.0), tri_xi(nt, 0.0);
   omega2.assign(nn, 0.0);
   xi.assign(nn, 0.0);
-  for (std::size_t t = 0; t < d.tris.size(); ++t) {
+  // The triangles' eigenvalues in parallel, then their maxima per node in
+  // order (a maximum is exact in any order: the same bits either way).
+#pragma omp parallel for schedule(static) num_threads(thread_count(d.threads))
+  for (long t = 0; t < nt; ++t) {
     if (!d.tris.active[t]) continue;
-    double w2, x;
-    triangle_frequency(d, t, w2, x);
-    if (with_contact) w2 += contact_triangle_omega2(d, t);
+    triangle_frequency(d, std::size_t(t), tri_w2[t], tri_xi[t]);
+    if (with_contact) tri_w2[t] += contact_triangle_omega2(d, std::size_t(t));
+  }
+  for (long t = 0; t < nt; ++t) {
+    if (!d.tris.active[t]) continue;
     for (int k = 0; k < 3; ++k) {
       const int n = d.tris.nodes[3 * t + k];
-      omega2[n] = std::max(omega2[n], w2);
-      xi[n] = std::max(xi[n], x);
+      omega2[n] = std::max(omega2[n], tri_w2[t]);
+      xi[n] = std::max(xi[n], tri_xi[t]);
     }
   }
   add_crack_rows(d, crack_w2);
