@@ -199,9 +199,11 @@ void crack_directions(const EngineData& d, std::vector<double>& dir) {
 /// Linearised stiffness times u, into the slots `s` (same layout as the
 /// force slots): small-strain CST at the reference configuration and the
 /// crack elements' initial penalty slopes pn/h, pt/h along `dir`
-/// (crack_directions).
+/// (crack_directions). The vector is v * scale, each entry scaled as it is
+/// read (the same product, so the same bits, as a scaled copy).
 void apply_stiffness(const EngineData& d, const std::vector<double>& dir,
-                     const std::vector<double>& u, std::vector<double>& s) {
+                     const std::vector<double>& v, double scale, std::vector<double>& s) {
+  const auto u = [&](int j) { return v[j] * scale; };
   const long nt = static_cast<long>(d.tris.size()), nc = static_cast<long>(d.cracks.size());
 #pragma omp parallel for schedule(static) num_threads(thread_count(d.threads))
   for (long t = 0; t < nt; ++t) {
@@ -215,9 +217,10 @@ void apply_stiffness(const EngineData& d, const std::vector<double>& dir,
     const double b[3] = {-(g[0] + g[2]), g[0], g[2]}, c[3] = {-(g[1] + g[3]), g[1], g[3]};
     double exx = 0, eyy = 0, gxy = 0;
     for (int k = 0; k < 3; ++k) {
-      exx += b[k] * u[2 * nd[k]];
-      eyy += c[k] * u[2 * nd[k] + 1];
-      gxy += c[k] * u[2 * nd[k]] + b[k] * u[2 * nd[k] + 1];
+      const double ux = u(2 * nd[k]), uy = u(2 * nd[k] + 1);
+      exx += b[k] * ux;
+      eyy += c[k] * uy;
+      gxy += c[k] * ux + b[k] * uy;
     }
     const SolidConstants& m = d.solids[d.tris.material[t]];
     const double w = d.tris.alpha[t] * d.tris.area0[t];
@@ -241,7 +244,7 @@ void apply_stiffness(const EngineData& d, const std::vector<double>& dir,
     double o[2], sl[2];
     for (int end = 0; end < 2; ++end) {
       const int a = nd[end], f = nd[3 - end];
-      const double dx = u[2 * a] - u[2 * f], dy = u[2 * a + 1] - u[2 * f + 1];
+      const double dx = u(2 * a) - u(2 * f), dy = u(2 * a + 1) - u(2 * f + 1);
       o[end] = -dx * ey + dy * ex;
       sl[end] = dx * ex + dy * ey;
     }
@@ -281,14 +284,17 @@ double damping_stiffening(const EngineData& d, double omega, double xi_viscous) 
 double power_critical_dt(const EngineData& d, int max_iterations) {
   const long nn = static_cast<long>(d.nodes.size());
   const long n_blocks = (nn + kSumBlock - 1) / kSumBlock;
-  std::vector<double> u(2 * nn), next(2 * nn, 0.0), s(d.slots.size()), partial(2 * n_blocks);
+  // The iterate u is v * scale: the normalisation is applied as u is read,
+  // and the next v is the product itself (swapped in), so no pass over the
+  // vector is spent on scaling it. A massless node's entries stay 0 in both.
+  std::vector<double> v(2 * nn), next(2 * nn, 0.0), s(d.slots.size()), partial(2 * n_blocks);
   std::vector<double> dir;
   crack_directions(d, dir);
   const double* m = d.nodes.mass.data();
-  for (long i = 0; i < 2 * nn; ++i) u[i] = m[i / 2] > 0 ? start_value(i) : 0.0;
-  double lambda = 0;
+  for (long i = 0; i < 2 * nn; ++i) v[i] = m[i / 2] > 0 ? start_value(i) : 0.0;
+  double scale = 1.0, lambda = 0;
   for (int it = 0; it < max_iterations; ++it) {
-    apply_stiffness(d, dir, u, s);
+    apply_stiffness(d, dir, v, scale, s);
     // next = M^-1 K u; block partials of u.K u and |next|_M^2 (fixed order).
 #pragma omp parallel for schedule(static) num_threads(thread_count(d.threads))
     for (long b = 0; b < n_blocks; ++b) {
@@ -303,7 +309,7 @@ double power_critical_dt(const EngineData& d, int max_iterations) {
         }
         next[2 * i] = fx / m[i];
         next[2 * i + 1] = fy / m[i];
-        uku += u[2 * i] * fx + u[2 * i + 1] * fy;
+        uku += v[2 * i] * scale * fx + v[2 * i + 1] * scale * fy;
         nn2 += (fx * fx + fy * fy) / m[i];
       }
       partial[2 * b] = uku;
@@ -314,9 +320,8 @@ double power_critical_dt(const EngineData& d, int max_iterations) {
     // u is M-normalised, so the Rayleigh quotient is u.K u.
     const double estimate = it == 0 ? 0.0 : uku;
     if (!(norm2 > 0)) break;
-    const double inv = 1.0 / std::sqrt(norm2);
-#pragma omp parallel for schedule(static) num_threads(thread_count(d.threads))
-    for (long i = 0; i < 2 * nn; ++i) u[i] = next[i] * inv;
+    scale = 1.0 / std::sqrt(norm2);
+    v.swap(next);
     const bool settled = it > 20 && std::fabs(estimate - lambda) <= 1e-4 * estimate;
     lambda = estimate;
     if (settled) break;
