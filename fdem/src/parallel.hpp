@@ -24,10 +24,13 @@ constexpr long kNodeBlock = 512;
 template <class F>
 double block_sum(long n, int threads, F&& f) {
   const long n_blocks = (n + kSumBlock - 1) / kSumBlock;
-  double partial_stack[64];
+  // On the stack up to 4M items (8 KiB): kinetic_energy sums a million
+  // nodes at every step, and the time loop does not allocate.
+  constexpr long kStackBlocks = 1024;
+  double partial_stack[kStackBlocks];
   double* partial = partial_stack;
   std::vector<double> heap;
-  if (n_blocks > 64) {
+  if (n_blocks > kStackBlocks) {
     heap.assign(n_blocks, 0.0);
     partial = heap.data();
   }

@@ -103,9 +103,11 @@ double contact_triangle_omega2(const EngineData& d, std::size_t t) {
 }
 
 double contact_omega2(const EngineData& d) {
+  const long nt = static_cast<long>(d.tris.size());
   double w2 = 0;
-  for (std::size_t t = 0; t < d.tris.size(); ++t)
-    if (d.tris.active[t]) w2 = std::max(w2, contact_triangle_omega2(d, t));
+#pragma omp parallel for schedule(static) reduction(max : w2) num_threads(thread_count(d.threads))
+  for (long t = 0; t < nt; ++t)
+    if (d.tris.active[t]) w2 = std::max(w2, contact_triangle_omega2(d, std::size_t(t)));
   return w2;
 }
 
@@ -120,18 +122,24 @@ double dashpot_max(const EngineData& d, std::size_t n) {
 void node_frequencies(const EngineData& d, bool with_contact, std::vector<double>& omega2,
                       std::vector<double>& xi) {
   const std::size_t nn = d.nodes.size();
-  std::vector<double> crack_w2(nn, 0.0);
+  const long nt = static_cast<long>(d.tris.size());
+  std::vector<double> crack_w2(nn, 0.0), tri_w2(nt, 0.0), tri_xi(nt, 0.0);
   omega2.assign(nn, 0.0);
   xi.assign(nn, 0.0);
-  for (std::size_t t = 0; t < d.tris.size(); ++t) {
+  // The triangles' eigenvalues in parallel, then their maxima per node in
+  // order (a maximum is exact in any order: the same bits either way).
+#pragma omp parallel for schedule(static) num_threads(thread_count(d.threads))
+  for (long t = 0; t < nt; ++t) {
     if (!d.tris.active[t]) continue;
-    double w2, x;
-    triangle_frequency(d, t, w2, x);
-    if (with_contact) w2 += contact_triangle_omega2(d, t);
+    triangle_frequency(d, std::size_t(t), tri_w2[t], tri_xi[t]);
+    if (with_contact) tri_w2[t] += contact_triangle_omega2(d, std::size_t(t));
+  }
+  for (long t = 0; t < nt; ++t) {
+    if (!d.tris.active[t]) continue;
     for (int k = 0; k < 3; ++k) {
       const int n = d.tris.nodes[3 * t + k];
-      omega2[n] = std::max(omega2[n], w2);
-      xi[n] = std::max(xi[n], x);
+      omega2[n] = std::max(omega2[n], tri_w2[t]);
+      xi[n] = std::max(xi[n], tri_xi[t]);
     }
   }
   add_crack_rows(d, crack_w2);
@@ -166,10 +174,36 @@ double start_value(std::uint64_t i) {
   return double(z >> 11) / double(1ull << 52) - 1.0;
 }
 
+/// Unit direction (ex, ey) of each live crack element at the current
+/// geometry, 0 for an inactive or broken one: fixed during the iteration, so
+/// computed once rather than at every product (the same expressions, so the
+/// same bits as computing them in the loop).
+void crack_directions(const EngineData& d, std::vector<double>& dir) {
+  const long nc = static_cast<long>(d.cracks.size());
+  dir.assign(2 * nc, 0.0);
+#pragma omp parallel for schedule(static) num_threads(thread_count(d.threads))
+  for (long e = 0; e < nc; ++e) {
+    if (!d.cracks.active[e] || d.cracks.state[e] == std::uint8_t(CrackState::kBroken)) continue;
+    const int* nd = &d.cracks.nodes[4 * e];
+    const double* p = d.nodes.pos.data();
+    // Mid-line from the end 0-3 to the end 1-2, component k.
+    const auto span = [&](int k) {
+      return 0.5 * (p[2 * nd[1] + k] + p[2 * nd[2] + k] - p[2 * nd[0] + k] - p[2 * nd[3] + k]);
+    };
+    const double tx = span(0), ty = span(1), h = std::sqrt(tx * tx + ty * ty);
+    dir[2 * e] = tx / h;
+    dir[2 * e + 1] = ty / h;
+  }
+}
+
 /// Linearised stiffness times u, into the slots `s` (same layout as the
 /// force slots): small-strain CST at the reference configuration and the
-/// crack elements' initial penalty slopes pn/h, pt/h at the current geometry.
-void apply_stiffness(const EngineData& d, const std::vector<double>& u, std::vector<double>& s) {
+/// crack elements' initial penalty slopes pn/h, pt/h along `dir`
+/// (crack_directions). The vector is v * scale, each entry scaled as it is
+/// read (the same product, so the same bits, as a scaled copy).
+void apply_stiffness(const EngineData& d, const std::vector<double>& dir,
+                     const std::vector<double>& v, double scale, std::vector<double>& s) {
+  const auto u = [&](int j) { return v[j] * scale; };
   const long nt = static_cast<long>(d.tris.size()), nc = static_cast<long>(d.cracks.size());
 #pragma omp parallel for schedule(static) num_threads(thread_count(d.threads))
   for (long t = 0; t < nt; ++t) {
@@ -183,9 +217,10 @@ void apply_stiffness(const EngineData& d, const std::vector<double>& u, std::vec
     const double b[3] = {-(g[0] + g[2]), g[0], g[2]}, c[3] = {-(g[1] + g[3]), g[1], g[3]};
     double exx = 0, eyy = 0, gxy = 0;
     for (int k = 0; k < 3; ++k) {
-      exx += b[k] * u[2 * nd[k]];
-      eyy += c[k] * u[2 * nd[k] + 1];
-      gxy += c[k] * u[2 * nd[k]] + b[k] * u[2 * nd[k] + 1];
+      const double ux = u(2 * nd[k]), uy = u(2 * nd[k] + 1);
+      exx += b[k] * ux;
+      eyy += c[k] * uy;
+      gxy += c[k] * ux + b[k] * uy;
     }
     const SolidConstants& m = d.solids[d.tris.material[t]];
     const double w = d.tris.alpha[t] * d.tris.area0[t];
@@ -204,16 +239,12 @@ void apply_stiffness(const EngineData& d, const std::vector<double>& u, std::vec
     for (int k = 0; k < 4; ++k) out[k] = 0.0;
     if (!d.cracks.active[e] || d.cracks.state[e] == std::uint8_t(CrackState::kBroken)) continue;
     const int* nd = &d.cracks.nodes[4 * e];
-    const double* p = d.nodes.pos.data();
-    const double tx = 0.5 * (p[2 * nd[1]] + p[2 * nd[2]] - p[2 * nd[0]] - p[2 * nd[3]]);
-    const double ty =
-        0.5 * (p[2 * nd[1] + 1] + p[2 * nd[2] + 1] - p[2 * nd[0] + 1] - p[2 * nd[3] + 1]);
-    const double h = std::sqrt(tx * tx + ty * ty), ex = tx / h, ey = ty / h;
+    const double ex = dir[2 * e], ey = dir[2 * e + 1];
     const CrackConstants& k = d.crack_laws[d.cracks.material[e]];
     double o[2], sl[2];
     for (int end = 0; end < 2; ++end) {
       const int a = nd[end], f = nd[3 - end];
-      const double dx = u[2 * a] - u[2 * f], dy = u[2 * a + 1] - u[2 * f + 1];
+      const double dx = u(2 * a) - u(2 * f), dy = u(2 * a + 1) - u(2 * f + 1);
       o[end] = -dx * ey + dy * ex;
       sl[end] = dx * ex + dy * ey;
     }
@@ -253,12 +284,17 @@ double damping_stiffening(const EngineData& d, double omega, double xi_viscous) 
 double power_critical_dt(const EngineData& d, int max_iterations) {
   const long nn = static_cast<long>(d.nodes.size());
   const long n_blocks = (nn + kSumBlock - 1) / kSumBlock;
-  std::vector<double> u(2 * nn), next(2 * nn, 0.0), s(d.slots.size()), partial(2 * n_blocks);
+  // The iterate u is v * scale: the normalisation is applied as u is read,
+  // and the next v is the product itself (swapped in), so no pass over the
+  // vector is spent on scaling it. A massless node's entries stay 0 in both.
+  std::vector<double> v(2 * nn), next(2 * nn, 0.0), s(d.slots.size()), partial(2 * n_blocks);
+  std::vector<double> dir;
+  crack_directions(d, dir);
   const double* m = d.nodes.mass.data();
-  for (long i = 0; i < 2 * nn; ++i) u[i] = m[i / 2] > 0 ? start_value(i) : 0.0;
-  double lambda = 0;
+  for (long i = 0; i < 2 * nn; ++i) v[i] = m[i / 2] > 0 ? start_value(i) : 0.0;
+  double scale = 1.0, lambda = 0;
   for (int it = 0; it < max_iterations; ++it) {
-    apply_stiffness(d, u, s);
+    apply_stiffness(d, dir, v, scale, s);
     // next = M^-1 K u; block partials of u.K u and |next|_M^2 (fixed order).
 #pragma omp parallel for schedule(static) num_threads(thread_count(d.threads))
     for (long b = 0; b < n_blocks; ++b) {
@@ -273,7 +309,7 @@ double power_critical_dt(const EngineData& d, int max_iterations) {
         }
         next[2 * i] = fx / m[i];
         next[2 * i + 1] = fy / m[i];
-        uku += u[2 * i] * fx + u[2 * i + 1] * fy;
+        uku += v[2 * i] * scale * fx + v[2 * i + 1] * scale * fy;
         nn2 += (fx * fx + fy * fy) / m[i];
       }
       partial[2 * b] = uku;
@@ -284,17 +320,20 @@ double power_critical_dt(const EngineData& d, int max_iterations) {
     // u is M-normalised, so the Rayleigh quotient is u.K u.
     const double estimate = it == 0 ? 0.0 : uku;
     if (!(norm2 > 0)) break;
-    const double inv = 1.0 / std::sqrt(norm2);
-    for (long i = 0; i < 2 * nn; ++i) u[i] = next[i] * inv;
+    scale = 1.0 / std::sqrt(norm2);
+    v.swap(next);
     const bool settled = it > 20 && std::fabs(estimate - lambda) <= 1e-4 * estimate;
     lambda = estimate;
     if (settled) break;
   }
+  // A maximum is exact in any order: a parallel reduction keeps the bits.
+  const long nt = static_cast<long>(d.tris.size());
   double xi = 0;
-  for (std::size_t t = 0; t < d.tris.size(); ++t) {
+#pragma omp parallel for schedule(static) reduction(max : xi) num_threads(thread_count(d.threads))
+  for (long t = 0; t < nt; ++t) {
     if (!d.tris.active[t]) continue;
     double w2, x;
-    triangle_frequency(d, t, w2, x);
+    triangle_frequency(d, std::size_t(t), w2, x);
     xi = std::max(xi, x);
   }
   if (!(lambda > 0)) return std::numeric_limits<double>::infinity();

@@ -17,21 +17,26 @@ namespace {
 
 // Rock triangle edges, oriented as the counter-clockwise triangle runs them
 // (rock on the left), whose reverse no rock triangle has.
+// The undirected edges are counted in a sorted array (an edge of two rock
+// triangles appears twice), not a map: a 420k-triangle mesh has 630k edges,
+// and the monitors, the lining and the broken zone each ask.
 std::vector<std::array<int, 2>> rock_boundary_edges(const Mesh& m) {
-  std::map<std::pair<int, int>, int> count;  // undirected edge -> rock triangles
-  for (std::size_t t = 0; t < m.n_triangles(); ++t) {
-    if (m.zone[t] != kRock) continue;
-    for (int k = 0; k < 3; ++k) {
-      const int a = m.triangles[t][k], b = m.triangles[t][(k + 1) % 3];
-      ++count[{std::min(a, b), std::max(a, b)}];
-    }
-  }
+  const auto key = [&](std::size_t t, int k) {
+    const int a = m.triangles[t][k], b = m.triangles[t][(k + 1) % 3];
+    return std::pair<int, int>{std::min(a, b), std::max(a, b)};
+  };
+  std::vector<std::pair<int, int>> sorted;
+  for (std::size_t t = 0; t < m.n_triangles(); ++t)
+    if (m.zone[t] == kRock)
+      for (int k = 0; k < 3; ++k) sorted.push_back(key(t, k));
+  std::sort(sorted.begin(), sorted.end());
+  // In the triangles' order, as the boundary's edge order (and its sums) had it.
   std::vector<std::array<int, 2>> out;
   for (std::size_t t = 0; t < m.n_triangles(); ++t) {
     if (m.zone[t] != kRock) continue;
     for (int k = 0; k < 3; ++k) {
-      const int a = m.triangles[t][k], b = m.triangles[t][(k + 1) % 3];
-      if (count[{std::min(a, b), std::max(a, b)}] == 1) out.push_back({a, b});
+      const auto [first, last] = std::equal_range(sorted.begin(), sorted.end(), key(t, k));
+      if (last - first == 1) out.push_back({m.triangles[t][k], m.triangles[t][(k + 1) % 3]});
     }
   }
   return out;

@@ -6,6 +6,7 @@
 
 #include "outputs/continuum_comparison.hpp"
 #include "outputs/continuum_yield.hpp"
+#include "outputs/rock_locator.hpp"
 #include "outputs/run_plots.hpp"
 #include "record/output_dir.hpp"
 #include "rockfdem/coupling/atomic_file.hpp"
@@ -50,21 +51,6 @@ double stress_rel_l2(const mesh::Mesh& m, const StressA& a, const insitu::Insitu
   return l2.value();
 }
 
-/// The rock triangle containing (x, y), -1 if none.
-int rock_triangle_at(const mesh::Mesh& m, double x, double y) {
-  for (std::size_t t = 0; t < m.n_triangles(); ++t) {
-    if (m.zone[t] != mesh::kRock) continue;
-    const auto& tri = m.triangles[t];
-    bool inside = true;
-    for (int k = 0; k < 3 && inside; ++k) {
-      const int a = tri[k], b = tri[(k + 1) % 3];
-      inside = (m.x[b] - m.x[a]) * (y - m.y[a]) - (m.y[b] - m.y[a]) * (x - m.x[a]) >= 0;
-    }
-    if (inside) return static_cast<int>(t);
-  }
-  return -1;
-}
-
 struct Profile {
   std::string ray;
   std::vector<double> d, fdem_rr, fdem_tt, cont_rr, cont_tt;  // [m], [Pa]
@@ -74,15 +60,15 @@ struct Profile {
 /// The rock triangle at (x, y), or where that is a bolt strip the nearest
 /// rock beside it across the ray (direction (tx, ty)), half a strip's
 /// width at a time up to three widths: -1 if none.
-int rock_beside_bolts(const mesh::Mesh& m, const std::vector<char>& bolted, double x, double y,
-                      double tx, double ty) {
-  const int t = rock_triangle_at(m, x, y);
+int rock_beside_bolts(const mesh::Mesh& m, const RockLocator& rock, const std::vector<char>& bolted,
+                      double x, double y, double tx, double ty) {
+  const int t = rock.at(x, y);
   if (t < 0 || !is_bolted(bolted, std::size_t(t))) return t;
   const double width = std::sqrt(2 * std::abs(mesh::signed_area(m, std::size_t(t))));
   for (int k = 1; k <= 6; ++k)
     for (const double side : {1.0, -1.0}) {
       const double s = side * k * 0.5 * width;
-      const int u = rock_triangle_at(m, x + s * tx, y + s * ty);
+      const int u = rock.at(x + s * tx, y + s * ty);
       if (u >= 0 && !is_bolted(bolted, std::size_t(u))) return u;
     }
   return -1;
@@ -91,15 +77,16 @@ int rock_beside_bolts(const mesh::Mesh& m, const std::vector<char>& bolted, doub
 /// Radial and tangential stress along the ray from the centre through a key
 /// point, from the wall out to `reach`. A bolt on the ray (as at the vault)
 /// would read the strip's scaled steel stress: the rock beside it is read.
-Profile ray_profile(const mesh::Mesh& m, const fdem::Engine& e, const ContinuumStates& c,
-                    const Monitor& mon, const std::vector<char>& bolted, double reach) {
+Profile ray_profile(const mesh::Mesh& m, const RockLocator& rock, const fdem::Engine& e,
+                    const ContinuumStates& c, const Monitor& mon, const std::vector<char>& bolted,
+                    double reach) {
   Profile p;
   p.ray = mon.name;
   const double r0 = std::hypot(mon.x, mon.y), nx = mon.x / r0, ny = mon.y / r0;
   const int n = 60;
   for (int i = 0; i < n; ++i) {
     const double d = (i + 0.5) * reach / n;
-    const int t = rock_beside_bolts(m, bolted, mon.x + d * nx, mon.y + d * ny, -ny, nx);
+    const int t = rock_beside_bolts(m, rock, bolted, mon.x + d * nx, mon.y + d * ny, -ny, nx);
     if (t < 0 || !e.active(t) || !c.end.active[t]) continue;
     const auto sf = e.triangle_stress(t);
     const auto sc = as_array(c.end.stress[t]);
@@ -215,8 +202,9 @@ CounterpartComparison compare_with_counterpart(
         stress_rel_l2(m, fdem_start, c.handoff, fdem_handoff.active, bolted, reach);
   out.key_points = key_points(e, fdem_handoff, c, monitors);
   std::vector<Profile> profiles;
+  const RockLocator rock(m);
   for (const Monitor& mon : monitors)
-    profiles.push_back(ray_profile(m, e, c, mon, bolted, 2 * span));
+    profiles.push_back(ray_profile(m, rock, e, c, mon, bolted, 2 * span));
   write_profiles(profiles, output_path(dir, "continuum_profiles.csv"));
   if (scene.output.vtk) write_continuum_grid(m, c, output_path(dir, "continuum.vtu"));
   if (scene.output.plots) plot_profiles(profiles, c, m, dir, summary, quiet);
