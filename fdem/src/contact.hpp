@@ -31,7 +31,7 @@ struct EngineData;
 struct BreakScratch {
   std::vector<int> cracks, tris, vertices, ints, merged;
   std::vector<std::array<int, 2>> trial, found;
-  std::vector<int> gather_index;  ///< per candidate: its gather row, -1 between uses
+  std::vector<int> gather_index;  ///< per triangle: its gather row, -1 between uses
 };
 
 /// A contact triangle as the narrow phase reads it, packed once per step
