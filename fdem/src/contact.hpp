@@ -91,7 +91,8 @@ void contact_detect(EngineData& d);
 /// (the components at their end vertices may split) are inserted, tested at
 /// the positions of the last detection. The result equals a full detection
 /// at those positions (contact_detect.cpp explains why that is safe). Falls
-/// back to a full detection when many triangles change at once.
+/// back to a full detection (of pairs; the candidates are updated here)
+/// when many triangles change at once or one is due anyway.
 void contact_breaks(EngineData& d);
 
 /// One step of contact; see the header comment.

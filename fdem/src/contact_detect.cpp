@@ -194,8 +194,9 @@ void build_boxes(EngineData& d) {
     triangle_box(d, c.candidates[i], &c.boxes[4 * i]);
 }
 
+/// Without short-circuits, so that a loop of tests vectorises.
 inline bool boxes_overlap(const double* a, const double* b) {
-  return a[0] <= b[2] && b[0] <= a[2] && a[1] <= b[3] && b[1] <= a[3];
+  return (a[0] <= b[2]) & (b[0] <= a[2]) & (a[1] <= b[3]) & (b[1] <= a[3]);
 }
 
 /// Friction springs of pairs found again keep their state (both lists are
@@ -309,24 +310,22 @@ void trial_pairs(EngineData& d) {
   auto add = [&](int a, int b) {
     if (a != b) s.trial.push_back({std::min(a, b), std::max(a, b)});
   };
-  // One walk over the candidates for all new ones (a few): a box outside
-  // the hull of theirs overlaps none of them.
-  s.ints.clear();
-  double hull[4] = {1e300, 1e300, -1e300, -1e300};
-  for (int t : s.tris) {
-    const int i = candidate_index(c, t);
-    s.ints.push_back(i);
-    for (int k = 0; k < 2; ++k) {
-      hull[k] = std::min(hull[k], c.boxes[4 * i + k]);
-      hull[k + 2] = std::max(hull[k + 2], c.boxes[4 * i + k + 2]);
-    }
-  }
+  // Each new candidate (a few) against every candidate, a block at a time:
+  // the test whether any box of a block overlaps vectorises, and most
+  // blocks have none.
+  constexpr int kBoxBlock = 64;
   const int nc = static_cast<int>(c.candidates.size());
-  for (int j = 0; j < nc; ++j) {
-    const double* box = &c.boxes[4 * j];
-    if (!boxes_overlap(hull, box)) continue;
-    for (int i : s.ints)
-      if (boxes_overlap(&c.boxes[4 * i], box)) add(c.candidates[i], c.candidates[j]);
+  const double* boxes = c.boxes.data();
+  for (int t : s.tris) {
+    const double* box = &boxes[4 * candidate_index(c, t)];
+    for (int j0 = 0; j0 < nc; j0 += kBoxBlock) {
+      const int j1 = std::min(nc, j0 + kBoxBlock);
+      bool any = false;
+      for (int j = j0; j < j1; ++j) any |= boxes_overlap(box, &boxes[4 * j]);
+      if (!any) continue;
+      for (int j = j0; j < j1; ++j)
+        if (boxes_overlap(box, &boxes[4 * j])) add(t, c.candidates[j]);
+    }
   }
   for (int e : s.cracks) add(d.crack_triangle(e, 0), d.crack_triangle(e, 1));
   const int slot0 = static_cast<int>(d.crack_slot0());
@@ -477,23 +476,23 @@ void contact_detect(EngineData& d) {
 // pairs keep their friction springs.
 void contact_breaks(EngineData& d) {
   ContactData& c = d.contact;
-  if (c.dirty || c.topology_dirty) {  // a full detection is due this step anyway
-    c.dirty = c.topology_dirty = true;
-    return;
-  }
+  if (c.topology_dirty) return;  // the candidates are rebuilt at the next detection
   BreakScratch& s = c.breaks;
   collect_breaks(d);
   std::sort(s.tris.begin(), s.tris.end());
   s.tris.erase(std::unique(s.tris.begin(), s.tris.end()), s.tris.end());
   std::sort(s.vertices.begin(), s.vertices.end());
   s.vertices.erase(std::unique(s.vertices.begin(), s.vertices.end()), s.vertices.end());
-  // Each new candidate is tested against all candidates: beyond a few, the
-  // grid is cheaper.
-  if (s.tris.size() > c.candidates.size() / 16 + 16) {
-    c.dirty = c.topology_dirty = true;
+  // The candidates are kept up to date in any case (a merge, where
+  // rebuilding them visits every triangle's edges). Each new candidate is
+  // tested against all candidates: beyond a few, or when a detection is due
+  // anyway, the detection's grid finds the pairs.
+  const bool many = s.tris.size() > c.candidates.size() / 16 + 16;
+  insert_candidates(d);
+  if (c.dirty || many) {
+    c.dirty = true;
     return;
   }
-  insert_candidates(d);
   trial_pairs(d);
   s.found.clear();
   std::size_t o = 0;
