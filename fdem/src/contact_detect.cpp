@@ -194,9 +194,8 @@ void build_boxes(EngineData& d) {
     triangle_box(d, c.candidates[i], &c.boxes[4 * i]);
 }
 
-/// Without short-circuits, so that a loop of tests vectorises.
 inline bool boxes_overlap(const double* a, const double* b) {
-  return (a[0] <= b[2]) & (b[0] <= a[2]) & (a[1] <= b[3]) & (b[1] <= a[3]);
+  return a[0] <= b[2] && b[0] <= a[2] && a[1] <= b[3] && b[1] <= a[3];
 }
 
 /// Friction springs of pairs found again keep their state (both lists are
@@ -310,21 +309,29 @@ void trial_pairs(EngineData& d) {
   auto add = [&](int a, int b) {
     if (a != b) s.trial.push_back({std::min(a, b), std::max(a, b)});
   };
-  // Each new candidate (a few) against every candidate, a block at a time:
-  // the test whether any box of a block overlaps vectorises, and most
-  // blocks have none.
+  // The new candidates (a few, spread out) against every candidate's box, a
+  // block of consecutive candidates at a time: candidates ascend in the
+  // mesh's space-filling order, so a block covers a small region, and a
+  // new box outside the block's hull overlaps none of its boxes.
   constexpr int kBoxBlock = 64;
   const int nc = static_cast<int>(c.candidates.size());
   const double* boxes = c.boxes.data();
-  for (int t : s.tris) {
-    const double* box = &boxes[4 * candidate_index(c, t)];
-    for (int j0 = 0; j0 < nc; j0 += kBoxBlock) {
-      const int j1 = std::min(nc, j0 + kBoxBlock);
-      bool any = false;
-      for (int j = j0; j < j1; ++j) any |= boxes_overlap(box, &boxes[4 * j]);
-      if (!any) continue;
+  s.ints.clear();
+  for (int t : s.tris) s.ints.push_back(candidate_index(c, t));
+  for (int j0 = 0; j0 < nc; j0 += kBoxBlock) {
+    const int j1 = std::min(nc, j0 + kBoxBlock);
+    double hull[4] = {boxes[4 * j0], boxes[4 * j0 + 1], boxes[4 * j0 + 2], boxes[4 * j0 + 3]};
+    for (int j = j0 + 1; j < j1; ++j) {
+      hull[0] = std::min(hull[0], boxes[4 * j]);
+      hull[1] = std::min(hull[1], boxes[4 * j + 1]);
+      hull[2] = std::max(hull[2], boxes[4 * j + 2]);
+      hull[3] = std::max(hull[3], boxes[4 * j + 3]);
+    }
+    for (int i : s.ints) {
+      const double* box = &boxes[4 * i];
+      if (!boxes_overlap(box, hull)) continue;
       for (int j = j0; j < j1; ++j)
-        if (boxes_overlap(box, &boxes[4 * j])) add(t, c.candidates[j]);
+        if (boxes_overlap(box, &boxes[4 * j])) add(c.candidates[i], c.candidates[j]);
     }
   }
   for (int e : s.cracks) add(d.crack_triangle(e, 0), d.crack_triangle(e, 1));
