@@ -31,7 +31,7 @@ struct EngineData;
 struct BreakScratch {
   std::vector<int> cracks, tris, vertices, ints, merged;
   std::vector<std::array<int, 2>> trial, found;
-  std::vector<int> gather_index;  ///< per candidate: its gather row, -1 between uses
+  std::vector<int> gather_index;  ///< per triangle: its gather row, -1 between uses
 };
 
 /// A contact triangle as the narrow phase reads it, packed once per step
@@ -91,7 +91,8 @@ void contact_detect(EngineData& d);
 /// (the components at their end vertices may split) are inserted, tested at
 /// the positions of the last detection. The result equals a full detection
 /// at those positions (contact_detect.cpp explains why that is safe). Falls
-/// back to a full detection when many triangles change at once.
+/// back to a full detection (of pairs; the candidates are updated here)
+/// when many triangles change at once or one is due anyway.
 void contact_breaks(EngineData& d);
 
 /// One step of contact; see the header comment.

@@ -234,41 +234,36 @@ int candidate_index(const ContactData& c, int t) {
 }
 
 /// CSR contact triangle -> (2 pair + side), in ascending pair order. Linear
-/// in pairs and candidates (the pairs' triangles are candidates) but for
-/// one search per pair: it runs at every local update as well as at every
-/// detection.
+/// in pairs and candidates (the pairs' triangles are candidates): it runs
+/// at every local update as well as at every detection, so it looks the
+/// pairs' triangles up in a per-triangle row array instead of searching the
+/// candidates (a search per pair cost more than the rest of the update).
 void build_gather(EngineData& d) {
   ContactData& c = d.contact;
   const std::size_t np = c.pairs.size();
-  // Each pair side's candidate position: the first sides ascend with the
-  // canonical order (one walk), the second are searched. Kept in the
-  // narrow phase's per-entry rows, which the next contact pass rewrites.
-  std::vector<int>& at = c.narrow.rows;
-  at.resize(2 * np);
-  for (std::size_t q = 0, i = 0; q < np; ++q) {
-    while (c.candidates[i] < c.pairs[q][0]) ++i;
-    at[2 * q] = static_cast<int>(i);
-    at[2 * q + 1] = candidate_index(c, c.pairs[q][1]);
-  }
-  // Gather row per candidate, not per triangle (most triangles are none);
-  // -1 between calls.
+  // Gather row per triangle, -1 between calls; 0 first marks the triangles
+  // with pairs, which are numbered in ascending (candidate) order.
   std::vector<int>& row = c.breaks.gather_index;
-  row.resize(c.candidates.size(), -1);
-  for (int k : at) row[k] = 0;
+  row.resize(d.tris.size(), -1);
+  for (const auto& p : c.pairs) row[p[0]] = row[p[1]] = 0;
   c.gather_tri.clear();
-  for (std::size_t i = 0; i < c.candidates.size(); ++i)
-    if (row[i] == 0) {
-      row[i] = static_cast<int>(c.gather_tri.size());
-      c.gather_tri.push_back(c.candidates[i]);
+  for (int t : c.candidates)
+    if (row[t] == 0) {
+      row[t] = static_cast<int>(c.gather_tri.size());
+      c.gather_tri.push_back(t);
     }
   c.gather_start.assign(c.gather_tri.size() + 1, 0);
-  for (int k : at) ++c.gather_start[row[k] + 1];
+  for (const auto& p : c.pairs) {
+    ++c.gather_start[row[p[0]] + 1];
+    ++c.gather_start[row[p[1]] + 1];
+  }
   for (std::size_t g = 0; g < c.gather_tri.size(); ++g) c.gather_start[g + 1] += c.gather_start[g];
   c.gather_entry.resize(2 * np);
   c.grid.offset.assign(c.gather_start.begin(), c.gather_start.end() - 1);
-  for (std::size_t e = 0; e < 2 * np; ++e)
-    c.gather_entry[c.grid.offset[row[at[e]]]++] = static_cast<int>(e);
-  for (int k : at) row[k] = -1;
+  for (std::size_t q = 0; q < np; ++q)
+    for (int side = 0; side < 2; ++side)
+      c.gather_entry[c.grid.offset[row[c.pairs[q][side]]]++] = static_cast<int>(2 * q + side);
+  for (int t : c.gather_tri) row[t] = -1;
 }
 
 /// Inserts the (ascending, new) triangles s.tris into the candidates with
@@ -314,11 +309,30 @@ void trial_pairs(EngineData& d) {
   auto add = [&](int a, int b) {
     if (a != b) s.trial.push_back({std::min(a, b), std::max(a, b)});
   };
+  // The new candidates (a few, spread out) against every candidate's box, a
+  // block of consecutive candidates at a time: candidates ascend in the
+  // mesh's space-filling order, so a block covers a small region, and a
+  // new box outside the block's hull overlaps none of its boxes.
+  constexpr int kBoxBlock = 64;
   const int nc = static_cast<int>(c.candidates.size());
-  for (int t : s.tris) {
-    const double* box = &c.boxes[4 * candidate_index(c, t)];
-    for (int j = 0; j < nc; ++j)
-      if (boxes_overlap(box, &c.boxes[4 * j])) add(t, c.candidates[j]);
+  const double* boxes = c.boxes.data();
+  s.ints.clear();
+  for (int t : s.tris) s.ints.push_back(candidate_index(c, t));
+  for (int j0 = 0; j0 < nc; j0 += kBoxBlock) {
+    const int j1 = std::min(nc, j0 + kBoxBlock);
+    double hull[4] = {boxes[4 * j0], boxes[4 * j0 + 1], boxes[4 * j0 + 2], boxes[4 * j0 + 3]};
+    for (int j = j0 + 1; j < j1; ++j) {
+      hull[0] = std::min(hull[0], boxes[4 * j]);
+      hull[1] = std::min(hull[1], boxes[4 * j + 1]);
+      hull[2] = std::max(hull[2], boxes[4 * j + 2]);
+      hull[3] = std::max(hull[3], boxes[4 * j + 3]);
+    }
+    for (int i : s.ints) {
+      const double* box = &boxes[4 * i];
+      if (!boxes_overlap(box, hull)) continue;
+      for (int j = j0; j < j1; ++j)
+        if (boxes_overlap(box, &boxes[4 * j])) add(c.candidates[i], c.candidates[j]);
+    }
   }
   for (int e : s.cracks) add(d.crack_triangle(e, 0), d.crack_triangle(e, 1));
   const int slot0 = static_cast<int>(d.crack_slot0());
@@ -365,6 +379,38 @@ double insert_pairs(EngineData& d) {
       ++j;
     }
   return change;
+}
+
+/// The crack elements broken in this step, the triangles that become
+/// candidates and the vertices at their ends (unsorted). A few of many
+/// crack elements broke: blocks without one are passed over by a test that
+/// vectorises.
+void collect_breaks(EngineData& d) {
+  constexpr int kScanBlock = 256;
+  const ContactData& c = d.contact;
+  BreakScratch& s = d.contact.breaks;
+  s.cracks.clear();
+  s.tris.clear();
+  s.vertices.clear();
+  const int n_cracks = static_cast<int>(d.cracks.size());
+  const std::int32_t* broken_step = d.cracks.broken_step.data();
+  const auto step = static_cast<std::int32_t>(d.step);
+  for (int e0 = 0; e0 < n_cracks; e0 += kScanBlock) {
+    const int e1 = std::min(n_cracks, e0 + kScanBlock);
+    bool any = false;
+    for (int e = e0; e < e1; ++e) any |= broken_step[e] == step;
+    if (!any) continue;
+    for (int e = e0; e < e1; ++e) {
+      if (broken_step[e] != step || d.cracks.state[e] != std::uint8_t(CrackState::kBroken))
+        continue;
+      s.cracks.push_back(e);
+      for (int side = 0; side < 2; ++side) {
+        const int t = d.crack_triangle(e, side);
+        if (d.tris.active[t] && candidate_index(c, t) < 0) s.tris.push_back(t);
+        s.vertices.push_back(d.nodes.vertex[d.cracks.nodes[4 * e + side]]);
+      }
+    }
+  }
 }
 
 }  // namespace
@@ -437,35 +483,23 @@ void contact_detect(EngineData& d) {
 // pairs keep their friction springs.
 void contact_breaks(EngineData& d) {
   ContactData& c = d.contact;
-  if (c.dirty || c.topology_dirty) {  // a full detection is due this step anyway
-    c.dirty = c.topology_dirty = true;
-    return;
-  }
+  if (c.topology_dirty) return;  // the candidates are rebuilt at the next detection
   BreakScratch& s = c.breaks;
-  s.cracks.clear();
-  s.tris.clear();
-  s.vertices.clear();
-  for (int e = 0; e < static_cast<int>(d.cracks.size()); ++e) {
-    if (d.cracks.broken_step[e] != d.step || d.cracks.state[e] != std::uint8_t(CrackState::kBroken))
-      continue;
-    s.cracks.push_back(e);
-    for (int side = 0; side < 2; ++side) {
-      const int t = d.crack_triangle(e, side);
-      if (d.tris.active[t] && candidate_index(c, t) < 0) s.tris.push_back(t);
-      s.vertices.push_back(d.nodes.vertex[d.cracks.nodes[4 * e + side]]);
-    }
-  }
+  collect_breaks(d);
   std::sort(s.tris.begin(), s.tris.end());
   s.tris.erase(std::unique(s.tris.begin(), s.tris.end()), s.tris.end());
   std::sort(s.vertices.begin(), s.vertices.end());
   s.vertices.erase(std::unique(s.vertices.begin(), s.vertices.end()), s.vertices.end());
-  // Each new candidate is tested against all candidates: beyond a few, the
-  // grid is cheaper.
-  if (s.tris.size() > c.candidates.size() / 16 + 16) {
-    c.dirty = c.topology_dirty = true;
+  // The candidates are kept up to date in any case (a merge, where
+  // rebuilding them visits every triangle's edges). Each new candidate is
+  // tested against all candidates: beyond a few, or when a detection is due
+  // anyway, the detection's grid finds the pairs.
+  const bool many = s.tris.size() > c.candidates.size() / 16 + 16;
+  insert_candidates(d);
+  if (c.dirty || many) {
+    c.dirty = true;
     return;
   }
-  insert_candidates(d);
   trial_pairs(d);
   s.found.clear();
   std::size_t o = 0;
