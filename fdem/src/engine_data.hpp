@@ -161,7 +161,7 @@ struct EngineData {
   std::vector<double> block_partial;   ///< node loop: kNodeSums partial sums per node block
   std::vector<double> energy_partial;  ///< triangle and crack loops: one per kEnergyBlock
   double reversal[2] = {0, 0};         ///< sum m v_old.v_new, sum m v_old^2 (free nodes)
-  double kinetic_after_step = 0;       ///< kinetic_energy(*this) as the last node loop left it
+  double kinetic_after_step = 0;       ///< kinetic_energy() after the node loop (kinetic damping)
   DampingSettings damping;
   KineticDampingState kinetic_damping;
   MassScaling mass_scaling;

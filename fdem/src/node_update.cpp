@@ -191,17 +191,6 @@ struct NodeSums {
   sum.damping += (free_x ? lx * hx : 0.0) + (free_y ? ly * hy : 0.0);
 }
 
-/// How many nodes ahead the node loop asks for force slots: a node's crack
-/// slots belong to elements numbered apart from its triangle, often a cache
-/// miss at 420k triangles.
-constexpr long kGatherAhead = 32;
-
-inline void prefetch_slots(const EngineData& d, long i) {
-  const int* entry = d.nodes.slot_index.data();
-  for (int k = d.nodes.slot_start[i]; k < d.nodes.slot_start[i + 1]; ++k)
-    __builtin_prefetch(d.slots.data() + 2 * entry_slot(entry[k]));
-}
-
 /// First node in [begin, end) with a non-finite velocity, or -1 (a sum
 /// that overflowed from finite velocities).
 [[gnu::cold]] long first_non_finite(const Nodes& n, long begin, long end) {
@@ -221,6 +210,7 @@ long node_loop(EngineData& d) {
   Nodes& n = d.nodes;
   const double dt = d.dt, half_dt = 0.5 * d.dt;
   const double local = d.damping.local, cmass = d.damping.mass_proportional;
+  const bool kinetic = d.damping.kinetic;  // only kinetic damping reads the sum
   const BoundaryRecord* rec = d.bc_records.data();
   double* partial = d.block_partial.data();
   long first_bad = nn;
@@ -233,7 +223,6 @@ long node_loop(EngineData& d) {
     DeadLoadCursor loads(n.fext, blk * kNodeBlock);
     NodeListCursor records(n.bc_node, blk * kNodeBlock);
     for (long i = blk * kNodeBlock; i < end; ++i) {
-      if (i + kGatherAhead < nn) prefetch_slots(d, i + kGatherAhead);
       // 1/m here rather than stored: the same bits, 8 B per node less.
       if (!(n.mass[i] > 0.0)) continue;  // no active triangle: frozen
       const double inv_m = 1.0 / n.mass[i];
@@ -282,7 +271,7 @@ long node_loop(EngineData& d) {
         if (kDamped) sum.damping += (lx * (vx0 + vx) + ly * (vy0 + vy)) * half_dt;
         if (kLoaded) sum.external += (gx * (vx0 + vx) + gy * (vy0 + vy)) * half_dt;
       }
-      sum.energy += kinetic_energy_term(n.mass[i], vx, vy);
+      if (kinetic) sum.energy += kinetic_energy_term(n.mass[i], vx, vy);
       n.vel[2 * i] = vx;
       n.vel[2 * i + 1] = vy;
       n.pos[2 * i] += vx * dt;
