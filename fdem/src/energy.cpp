@@ -20,19 +20,10 @@ namespace detail {
 /// it (EngineData::kinetic_after_step): the same bits either way.
 double kinetic_energy(const EngineData& d) {
   const auto& n = d.nodes;
-  const long nn = static_cast<long>(n.size());
-  std::vector<double> partial((nn + kNodeBlock - 1) / kNodeBlock, 0.0);
-  const long n_blocks = static_cast<long>(partial.size());
-#pragma omp parallel for schedule(static) num_threads(thread_count(d.threads))
-  for (long b = 0; b < n_blocks; ++b) {
-    double s = 0;
-    for (long i = b * kNodeBlock; i < std::min(nn, (b + 1) * kNodeBlock); ++i)
-      s += kinetic_energy_term(n.mass[i], n.vel[2 * i], n.vel[2 * i + 1]);
-    partial[b] = s;
-  }
-  double total = 0;
-  for (const double p : partial) total += p;
-  return total;
+  return block_sum(
+      static_cast<long>(n.size()), d.threads,
+      [&](long i) { return kinetic_energy_term(n.mass[i], n.vel[2 * i], n.vel[2 * i + 1]); },
+      kNodeBlock);
 }
 
 namespace {

@@ -19,14 +19,15 @@ constexpr long kSumBlock = 4096;
 /// a 33k-triangle model.
 constexpr long kNodeBlock = 512;
 
-/// Deterministic parallel sum of f(i) over [0, n): the blocks are fixed, each
-/// block is summed serially, and the block sums are added in order.
+/// Deterministic parallel sum of f(i) over [0, n): the blocks of `block`
+/// items are fixed, each block is summed serially, and the block sums are
+/// added in order.
 template <class F>
-double block_sum(long n, int threads, F&& f) {
-  const long n_blocks = (n + kSumBlock - 1) / kSumBlock;
-  // On the stack up to 4M items (8 KiB): kinetic_energy sums a million
-  // nodes at every step, and the time loop does not allocate.
-  constexpr long kStackBlocks = 1024;
+double block_sum(long n, int threads, F&& f, long block = kSumBlock) {
+  const long n_blocks = (n + block - 1) / block;
+  // On the stack up to 4096 blocks (32 KiB): no allocation in the time
+  // loop below 16M items, 2M nodes in the node loop's blocks.
+  constexpr long kStackBlocks = 4096;
   double partial_stack[kStackBlocks];
   double* partial = partial_stack;
   std::vector<double> heap;
@@ -36,9 +37,9 @@ double block_sum(long n, int threads, F&& f) {
   }
 #pragma omp parallel for schedule(static) num_threads(thread_count(threads))
   for (long b = 0; b < n_blocks; ++b) {
-    const long end = b * kSumBlock + kSumBlock < n ? b * kSumBlock + kSumBlock : n;
+    const long end = b * block + block < n ? b * block + block : n;
     double s = 0;
-    for (long i = b * kSumBlock; i < end; ++i) s += f(i);
+    for (long i = b * block; i < end; ++i) s += f(i);
     partial[b] = s;
   }
   double total = 0;
