@@ -5,6 +5,7 @@
 
 #include "rockfdem/mesh/build.hpp"
 #include "rockfdem/mesh/msh_io.hpp"
+#include "scratch_dir.hpp"
 
 namespace rockfdem::mesh {
 namespace {
@@ -43,7 +44,7 @@ TEST_F(OpenMpThreads, explicit_gmsh_threads_do_not_leak_into_openmp) {
 TEST_F(OpenMpThreads, writing_and_reading_restore_the_thread_count) {
   omp_set_num_threads(4);
   const Mesh m = build_mesh(small_ucs(1));
-  const std::string path = ::testing::TempDir() + "rockfdem_threads.msh";
+  const std::string path = test::scratch_path("rockfdem_threads.msh");
   write_msh(m, path);
   EXPECT_EQ(omp_get_max_threads(), 4);
   read_msh({path, {}, {}, "", {}});

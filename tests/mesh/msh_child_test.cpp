@@ -28,15 +28,12 @@
 #include "rockfdem/error.hpp"
 #include "rockfdem/mesh/build.hpp"
 #include "rockfdem/mesh/msh_io.hpp"
+#include "scratch_dir.hpp"
 
 namespace rockfdem::mesh {
 namespace {
 
-// Per process: ctest runs the tests of this file in parallel processes,
-// which must not write the same file at once.
-std::string temp_path(const std::string& name) {
-  return ::testing::TempDir() + std::to_string(getpid()) + "_" + name;
-}
+std::string temp_path(const std::string& name) { return test::scratch_path(name); }
 
 std::string read_file(const std::string& path) {
   std::ifstream in(path, std::ios::binary);

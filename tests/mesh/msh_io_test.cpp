@@ -20,15 +20,12 @@
 #include "msh_test_files.hpp"
 #include "rockfdem/error.hpp"
 #include "rockfdem/mesh/build.hpp"
+#include "scratch_dir.hpp"
 
 namespace rockfdem::mesh {
 namespace {
 
-// Per process: ctest runs the tests of this file in parallel processes,
-// which must not write the same file at once.
-std::string temp_path(const std::string& name) {
-  return ::testing::TempDir() + std::to_string(getpid()) + "_" + name;
-}
+std::string temp_path(const std::string& name) { return test::scratch_path(name); }
 
 void write_text(const std::string& path, const std::string& text) { std::ofstream(path) << text; }
 
