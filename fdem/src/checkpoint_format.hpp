@@ -31,7 +31,7 @@ namespace rockfdem::fdem::detail {
 
 /// Bump when a saved member is added, removed or reordered: older files are
 /// then refused with a clear message instead of being misread.
-constexpr std::uint32_t kCheckpointVersion = 15;  // 2: energy ledger; 3: contact updates;
+constexpr std::uint32_t kCheckpointVersion = 16;  // 2: energy ledger; 3: contact updates;
                                                   // 4: mass scaling; 5: strength factors,
                                                   // kinetic damping; 6: joint friction;
                                                   // 7: compact engine arrays; 8: joint
@@ -43,7 +43,8 @@ constexpr std::uint32_t kCheckpointVersion = 15;  // 2: energy ledger; 3: contac
                                                   // 13: no component labels;
                                                   // 14: crack triangles from the slots;
                                                   // 15: node-loop sums hold the
-                                                  // kinetic energy
+                                                  // kinetic energy; 16: the last
+                                                  // viscous stress in single precision
 constexpr std::size_t kCheckpointHeaderBytes = 32;
 constexpr std::size_t kCheckpointChecksumBytes = 8;
 

@@ -59,7 +59,7 @@ void start_ledger(EngineData& d) {
   e.last_dt = d.dt;  // the first step's half step back
   e.initial = stored_energy(d);
   e.started = true;
-  std::fill(d.tris.viscous_stress.begin(), d.tris.viscous_stress.end(), 0.0);
+  std::fill(d.tris.viscous_stress.begin(), d.tris.viscous_stress.end(), 0.0f);
   std::fill(d.cracks.joint_force.begin(), d.cracks.joint_force.end(), 0.0);
 }
 

@@ -10,7 +10,8 @@
 //             reactions of prescribed velocities, m dv/dt - f_elements, times v(n) dt
 //   viscous   triangles' eta D stress: A sigma_v(n) : D(v(n)), the half with
 //             v(n+1/2) booked at the next step from w(n) = dt/2 A sigma_v(n)
-//             kept per triangle (Triangles::viscous_stress)
+//             kept per triangle (Triangles::viscous_stress, in single
+//             precision: the booking's last digits, never the state)
 //   nodal     local and mass-proportional damping f . v(n) dt (node loop)
 //   absorbing dashpots f . v(n) dt (node loop)
 //   kinetic_damping  what zeroing the velocities at a kinetic-energy peak

@@ -61,7 +61,7 @@ void set_viscous_damping(detail::EngineData& d) {
   // The energy ledger books each step's viscous force again with the next
   // step's velocities (energy.hpp).
   if (std::any_of(d.tris.eta.begin(), d.tris.eta.end(), [](double e) { return e > 0.0; }))
-    d.tris.viscous_stress.assign(3 * d.tris.size(), 0.0);
+    d.tris.viscous_stress.assign(3 * d.tris.size(), 0.0f);
 }
 
 std::string fmt(double v) {
@@ -362,7 +362,7 @@ void Engine::set_active(std::size_t t, bool on, ActivationReference ref) {
     }
     d.tris.active[t] = on ? 1 : 0;
     if (!d.tris.viscous_stress.empty())
-      for (int k = 0; k < 3; ++k) d.tris.viscous_stress[3 * t + k] = 0.0;
+      for (int k = 0; k < 3; ++k) d.tris.viscous_stress[3 * t + k] = 0.0f;
   });
   d.masses_dirty = true;
   d.contact.topology_dirty = d.contact.dirty = true;  // free surfaces change

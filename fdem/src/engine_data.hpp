@@ -74,16 +74,17 @@ struct Nodes {
 };
 
 struct Triangles {
-  std::vector<int> nodes;              ///< 3 per triangle
-  std::vector<double> ref_inv;         ///< F0^-1 row-major, 4 per triangle
-  std::vector<double> area0;           ///< reference area
-  std::vector<double> eta;             ///< viscous damping coefficient [Pa s]
-  std::vector<double> alpha;           ///< stiffness factor
-  std::vector<double> sigma0;          ///< initial stress (sxx, syy, sxy); empty if none
-  std::vector<double> viscous_stress;  ///< dt/2 A alpha eta D of the last step (3 per
-                                       ///< triangle; empty without viscous damping): the energy
-                                       ///< ledger books its work with the next velocities
-  std::vector<double> mass_scale;      ///< density factor >= 1 (mass_scaling.cpp); empty when off
+  std::vector<int> nodes;             ///< 3 per triangle
+  std::vector<double> ref_inv;        ///< F0^-1 row-major, 4 per triangle
+  std::vector<double> area0;          ///< reference area
+  std::vector<double> eta;            ///< viscous damping coefficient [Pa s]
+  std::vector<double> alpha;          ///< stiffness factor
+  std::vector<double> sigma0;         ///< initial stress (sxx, syy, sxy); empty if none
+  std::vector<float> viscous_stress;  ///< dt/2 A alpha eta D of the last step (3 per
+                                      ///< triangle; empty without viscous damping): the energy
+                                      ///< ledger books its work with the next velocities.
+                                      ///< Single precision: only the ledger reads it
+  std::vector<double> mass_scale;     ///< density factor >= 1 (mass_scaling.cpp); empty when off
   std::vector<std::uint16_t> material;
   std::vector<std::uint8_t> active;
   std::size_t size() const { return area0.size(); }

@@ -78,7 +78,7 @@ inline VelocityGradient velocity_gradient(const EngineData& d, std::size_t t,
 
 /// What the force loop needs to book the viscous stress's work (energy.hpp).
 struct ViscousWork {
-  double* last;       ///< w of the last step, 3 per triangle (Triangles::viscous_stress)
+  float* last;        ///< w of the last step, 3 per triangle (Triangles::viscous_stress)
   double quarter_dt;  ///< dt / 4: dt/2 times the area's 1/2 of the Jacobian determinant
 };
 
@@ -120,11 +120,11 @@ inline double stress(const EngineData& d, std::size_t t, const TriangleState& s,
       const double dxy = 0.5 * (l01 + l10);
       const double k = work->quarter_dt * g.det * (d.tris.alpha[t] * eta);
       const double w0 = k * l00, w1 = k * l11, w2 = k * dxy;
-      double* last = work->last + 3 * t;
+      float* last = work->last + 3 * t;
       booked = (w0 + last[0]) * l00 + (w1 + last[1]) * l11 + 2.0 * (w2 + last[2]) * dxy;
-      last[0] = w0;
-      last[1] = w1;
-      last[2] = w2;
+      last[0] = static_cast<float>(w0);
+      last[1] = static_cast<float>(w1);
+      last[2] = static_cast<float>(w2);
     }
   }
   const double alpha = d.tris.alpha[t];
@@ -257,7 +257,7 @@ double triangle_stored_energy(const EngineData& d, std::size_t t, const Placemen
 
 double triangle_viscous_pending(const EngineData& d, std::size_t t) {
   if (d.tris.viscous_stress.empty() || !d.tris.active[t]) return 0.0;
-  const double* last = &d.tris.viscous_stress[3 * t];
+  const float* last = &d.tris.viscous_stress[3 * t];
   if (last[0] == 0.0 && last[1] == 0.0 && last[2] == 0.0) return 0.0;
   TriangleState s;
   load_state(d, t, s);

@@ -28,8 +28,8 @@ TEST(EngineMemory, fracturing_ucs_holds_its_arrays_and_at_most_500_B_per_triangl
   // position 16 and the vertex -> nodes CSR (4 per node, 4 per vertex).
   const double nodes = nn * 48 + (3 * nt + 4 * nc) * 4 + nv * 20 + nn * 4;
   // Per triangle: nodes 12, F0^-1 32, area, eta, alpha 8 each, the last
-  // viscous stress 24, material 2, active 1.
-  const double tris = nt * 95;
+  // viscous stress 12 (single precision), material 2, active 1.
+  const double tris = nt * 83;
   // Per crack element: nodes 16, damages 24, material 2, state, mode,
   // active 1 each, broken step 4 (its triangles come from the slots).
   const double cracks = nc * 49;
