@@ -345,7 +345,7 @@ double model_critical_dt(const EngineData& d, int max_iterations) {
     }
     double alpha = 0;
     for (long b = 0; b < n_blocks; ++b) alpha += partial[b];
-    // prev <- prev - alpha q; block partials of its M norm.
+      // prev <- prev - alpha q; block partials of its M norm.
 #pragma omp parallel for schedule(static) num_threads(thread_count(d.threads))
     for (long b = 0; b < n_blocks; ++b) {
       double norm2 = 0;
