@@ -110,8 +110,8 @@ double exact_largest_eigenvalue(const Engine& e, const Material& m) {
   const std::vector<double>& x = e.positions();
   for (std::size_t t = 0; t < e.n_triangles(); ++t) {
     const std::array<int, 3> nd = e.triangle_nodes(t);
-    const double x0 = x[2 * nd[0]], y0 = x[2 * nd[0] + 1], x1 = x[2 * nd[1]],
-                 y1 = x[2 * nd[1] + 1], x2 = x[2 * nd[2]], y2 = x[2 * nd[2] + 1];
+    const double x0 = x[2 * nd[0]], y0 = x[2 * nd[0] + 1], x1 = x[2 * nd[1]], y1 = x[2 * nd[1] + 1],
+                 x2 = x[2 * nd[2]], y2 = x[2 * nd[2] + 1];
     const double two_a = (x1 - x0) * (y2 - y0) - (x2 - x0) * (y1 - y0);
     const double b[3] = {y1 - y2, y2 - y0, y0 - y1}, c[3] = {x2 - x1, x0 - x2, x1 - x0};
     Eigen::Matrix<double, 3, 6> B = Eigen::Matrix<double, 3, 6>::Zero();
@@ -141,12 +141,7 @@ double exact_largest_eigenvalue(const Engine& e, const Material& m) {
 // (0.2 of a cell), the element bound's cap of 1.5 times sets the limit.
 TEST(Stability, limit_matches_the_largest_eigenvalue_of_the_assembled_model) {
   for (double distortion : {0.0, 0.1}) {
-    RectangleSpec spec;
-    spec.width = 0.06;
-    spec.height = 0.04;
-    spec.nx = 12;
-    spec.ny = 8;
-    spec.fracture = false;
+    const RectangleSpec spec{0.06, 0.04, 12, 8, 0, 0, false};  // no crack elements
     ModelInput in = structured_rectangle(spec, test::rock());
     std::mt19937 rng(11);
     std::uniform_real_distribution<double> shift(-0.5, 0.5);
