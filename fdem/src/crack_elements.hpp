@@ -2,6 +2,8 @@
 // of the crack law along the element, damage history and breakage.
 #pragma once
 
+#include <cmath>
+
 #include "engine_data.hpp"
 #include "rockfdem/fdem/engine.hpp"
 
@@ -32,6 +34,23 @@ double crack_point_openings(const EngineData& d, std::size_t c, const Placement&
 /// of element c that its law gives at the current positions and damage
 /// (the damage history is not raised); zeros for a broken or inactive element.
 void crack_point_stresses(const EngineData& d, std::size_t c, double out[6]);
+
+/// Unit tangent e (mid-line from end 0-3 to end 1-2) and normal n of
+/// element c at the current positions, as the crack kernel sees it; returns
+/// the mid-line's length.
+inline double crack_frame(const EngineData& d, std::size_t c, double e[2], double n[2]) {
+  const int* nd = &d.cracks.nodes[4 * c];
+  const double* p = d.nodes.pos.data();
+  const double tx = 0.5 * (p[2 * nd[1]] + p[2 * nd[2]] - p[2 * nd[0]] - p[2 * nd[3]]);
+  const double ty =
+      0.5 * (p[2 * nd[1] + 1] + p[2 * nd[2] + 1] - p[2 * nd[0] + 1] - p[2 * nd[3] + 1]);
+  const double h = std::sqrt(tx * tx + ty * ty);
+  e[0] = tx / h;
+  e[1] = ty / h;
+  n[0] = -e[1];
+  n[1] = e[0];
+  return h;
+}
 
 /// Failure mode from the summed squared excursions at breakage: mode I when
 /// opening carries at least 90% of a^2 + b^2, mode II when slip does, else

@@ -32,21 +32,6 @@
 namespace rockfdem::fdem::detail {
 namespace {
 
-/// Unit tangent e and normal n of element c as the crack kernel sees it.
-double crack_frame(const EngineData& d, std::size_t c, double e[2], double n[2]) {
-  const int* nd = &d.cracks.nodes[4 * c];
-  const double* p = d.nodes.pos.data();
-  const double tx = 0.5 * (p[2 * nd[1]] + p[2 * nd[2]] - p[2 * nd[0]] - p[2 * nd[3]]);
-  const double ty =
-      0.5 * (p[2 * nd[1] + 1] + p[2 * nd[2] + 1] - p[2 * nd[0] + 1] - p[2 * nd[3] + 1]);
-  const double h = std::sqrt(tx * tx + ty * ty);
-  e[0] = tx / h;
-  e[1] = ty / h;
-  n[0] = -e[1];
-  n[1] = e[0];
-  return h;
-}
-
 /// Mean of the initial stresses of the element's two triangles, times n.
 void mean_traction(const EngineData& d, std::size_t c, const double n[2], double t[2]) {
   const double* a = &d.tris.sigma0[3 * d.crack_triangle(c, 0)];

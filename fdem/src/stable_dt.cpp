@@ -13,6 +13,7 @@
 #include <limits>
 
 #include "contact.hpp"
+#include "crack_elements.hpp"
 #include "parallel.hpp"
 #include "rockfdem/fdem/engine.hpp"
 #include "triangle_geometry.hpp"
@@ -176,23 +177,16 @@ double start_value(std::uint64_t i) {
 
 /// Unit direction (ex, ey) of each live crack element at the current
 /// geometry, 0 for an inactive or broken one: fixed during the iteration, so
-/// computed once rather than at every product (the same expressions, so the
-/// same bits as computing them in the loop).
+/// computed once rather than at every product (crack_frame, the expressions
+/// the loop had: the same bits).
 void crack_directions(const EngineData& d, std::vector<double>& dir) {
   const long nc = static_cast<long>(d.cracks.size());
   dir.assign(2 * nc, 0.0);
 #pragma omp parallel for schedule(static) num_threads(thread_count(d.threads))
   for (long e = 0; e < nc; ++e) {
     if (!d.cracks.active[e] || d.cracks.state[e] == std::uint8_t(CrackState::kBroken)) continue;
-    const int* nd = &d.cracks.nodes[4 * e];
-    const double* p = d.nodes.pos.data();
-    // Mid-line from the end 0-3 to the end 1-2, component k.
-    const auto span = [&](int k) {
-      return 0.5 * (p[2 * nd[1] + k] + p[2 * nd[2] + k] - p[2 * nd[0] + k] - p[2 * nd[3] + k]);
-    };
-    const double tx = span(0), ty = span(1), h = std::sqrt(tx * tx + ty * ty);
-    dir[2 * e] = tx / h;
-    dir[2 * e + 1] = ty / h;
+    double n[2];
+    crack_frame(d, std::size_t(e), &dir[2 * e], n);
   }
 }
 
