@@ -27,7 +27,12 @@ namespace rockfdem::fdem::detail {
 /// A node's slot entry (Nodes::slot_index): the slot, and the sign its
 /// force enters the node with.
 inline int entry_slot(int entry) { return entry >> 1; }
-inline double entry_sign(int entry) { return (entry & 1) ? -1.0 : 1.0; }
+/// A load, not a branch: a node's entries mix both signs in no pattern a
+/// branch predictor can follow.
+inline double entry_sign(int entry) {
+  static constexpr double kSign[2] = {1.0, -1.0};
+  return kSign[entry & 1];
+}
 
 /// Per-material constants the triangle kernel needs.
 struct SolidConstants {

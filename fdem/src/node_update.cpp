@@ -20,9 +20,13 @@ namespace {
 /// absorbing dashpots, kinetic energy at the new velocities.
 constexpr int kNodeSums = 6;
 
-/// Without a branch: a vibrating body's velocities change sign at random,
-/// which a branch predictor cannot follow. The same values as the ternary.
-inline double sign(double v) { return double(v > 0.0) - double(v < 0.0); }
+/// -1, 0 or +1 without a branch: a vibrating body's velocities change sign
+/// at random, which a branch predictor cannot follow (the compiler turned
+/// double(v > 0) - double(v < 0) into one). A NaN gives 0, as that did.
+inline double sign(double v) {
+  static constexpr double kSign[3] = {-1.0, 0.0, 1.0};
+  return kSign[1 + int(v > 0.0) - int(v < 0.0)];
+}
 
 /// Sum over node i's active triangles of rho f(t) A0 / 3.
 template <class Factor>
