@@ -48,20 +48,26 @@ class DeadLoadCursor {
   NodeListCursor nodes_;
 };
 
+/// Adds node i's entries of `slots` (a force per slot, laid out as
+/// EngineData::slots) to fx, fy in CSR order.
+inline void gather_slots(const Nodes& n, const double* slots, std::size_t i, double& fx,
+                         double& fy) {
+  for (int k = n.slot_start[i]; k < n.slot_start[i + 1]; ++k) {
+    // The sign is +-1: x + (-1 y) has the bits of x + (-y), the negative
+    // a crack element's nodes 3, 2 had in slots of their own.
+    const int e = n.slot_index[k], s = entry_slot(e);
+    const double sign = entry_sign(e);
+    fx += sign * slots[2 * s];
+    fy += sign * slots[2 * s + 1];
+  }
+}
+
 /// Net force on node i from its slots, starting from the dead load gx, gy.
 inline void node_force(const EngineData& d, std::size_t i, double gx, double gy, double& fx,
                        double& fy) {
   fx = gx;
   fy = gy;
-  const double* slots = d.slots.data();
-  for (int k = d.nodes.slot_start[i]; k < d.nodes.slot_start[i + 1]; ++k) {
-    // The sign is +-1: x + (-1 y) has the bits of x + (-y), the negative
-    // a crack element's nodes 3, 2 had in slots of their own.
-    const int e = d.nodes.slot_index[k], s = entry_slot(e);
-    const double sign = entry_sign(e);
-    fx += sign * slots[2 * s];
-    fy += sign * slots[2 * s + 1];
-  }
+  gather_slots(d.nodes, d.slots.data(), i, fx, fy);
 }
 
 /// Net force on node i from its slots and external load (no damping).

@@ -14,6 +14,7 @@
 
 #include "contact.hpp"
 #include "crack_elements.hpp"
+#include "node_update.hpp"
 #include "parallel.hpp"
 #include "rockfdem/fdem/engine.hpp"
 #include "triangle_geometry.hpp"
@@ -296,11 +297,7 @@ double power_critical_dt(const EngineData& d, int max_iterations) {
       for (long i = b * kSumBlock; i < std::min(nn, (b + 1) * kSumBlock); ++i) {
         if (m[i] <= 0) continue;
         double fx = 0, fy = 0;
-        for (int k = d.nodes.slot_start[i]; k < d.nodes.slot_start[i + 1]; ++k) {
-          const int e = d.nodes.slot_index[k], sl = entry_slot(e);
-          fx += entry_sign(e) * s[2 * sl];
-          fy += entry_sign(e) * s[2 * sl + 1];
-        }
+        gather_slots(d.nodes, s.data(), std::size_t(i), fx, fy);
         next[2 * i] = fx / m[i];
         next[2 * i + 1] = fy / m[i];
         uku += v[2 * i] * scale * fx + v[2 * i + 1] * scale * fy;
