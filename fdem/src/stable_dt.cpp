@@ -122,7 +122,7 @@ double dashpot_max(const EngineData& d, std::size_t n) {
 }
 
 void node_frequencies(const EngineData& d, bool with_contact, std::vector<double>& omega2,
-                      std::vector<double>& xi) {
+                      std::vector<double>& xi, double* triangle_xi_max) {
   const std::size_t nn = d.nodes.size();
   const long nt = static_cast<long>(d.tris.size());
   std::vector<double> crack_w2(nn, 0.0), tri_w2(nt, 0.0), tri_xi(nt, 0.0);
@@ -136,14 +136,17 @@ void node_frequencies(const EngineData& d, bool with_contact, std::vector<double
     triangle_frequency(d, std::size_t(t), tri_w2[t], tri_xi[t]);
     if (with_contact) tri_w2[t] += contact_triangle_omega2(d, std::size_t(t));
   }
+  double xi_max = 0;
   for (long t = 0; t < nt; ++t) {
     if (!d.tris.active[t]) continue;
+    xi_max = std::max(xi_max, tri_xi[t]);
     for (int k = 0; k < 3; ++k) {
       const int n = d.tris.nodes[3 * t + k];
       omega2[n] = std::max(omega2[n], tri_w2[t]);
       xi[n] = std::max(xi[n], tri_xi[t]);
     }
   }
+  if (triangle_xi_max) *triangle_xi_max = xi_max;
   add_crack_rows(d, crack_w2);
   for (std::size_t n = 0; n < nn; ++n) {
     omega2[n] += crack_w2[n];
@@ -154,9 +157,10 @@ void node_frequencies(const EngineData& d, bool with_contact, std::vector<double
   }
 }
 
-void node_limits(const EngineData& d, std::vector<double>& limit, bool with_contact) {
+void node_limits(const EngineData& d, std::vector<double>& limit, bool with_contact,
+                 double* triangle_xi_max) {
   std::vector<double> w2, xi;
-  node_frequencies(d, with_contact, w2, xi);
+  node_frequencies(d, with_contact, w2, xi, triangle_xi_max);
   limit.assign(w2.size(), std::numeric_limits<double>::infinity());
   for (std::size_t n = 0; n < w2.size(); ++n)
     if (w2[n] > 0) limit[n] = damped_limit(d, std::sqrt(w2[n]), xi[n]);
@@ -276,7 +280,7 @@ double damping_stiffening(const EngineData& d, double omega, double xi_viscous) 
   return std::sqrt(1.0 + d.damping.local) / (std::sqrt(1.0 + xi * xi) - xi);
 }
 
-double power_critical_dt(const EngineData& d, int max_iterations) {
+double power_critical_dt(const EngineData& d, int max_iterations, double xi_max) {
   const long nn = static_cast<long>(d.nodes.size());
   const long n_blocks = (nn + kSumBlock - 1) / kSumBlock;
   // The iterate u is v * scale: the normalisation is applied as u is read,
@@ -317,18 +321,8 @@ double power_critical_dt(const EngineData& d, int max_iterations) {
     lambda = estimate;
     if (settled) break;
   }
-  // A maximum is exact in any order: a parallel reduction keeps the bits.
-  const long nt = static_cast<long>(d.tris.size());
-  double xi = 0;
-#pragma omp parallel for schedule(static) reduction(max : xi) num_threads(thread_count(d.threads))
-  for (long t = 0; t < nt; ++t) {
-    if (!d.tris.active[t]) continue;
-    double w2, x;
-    triangle_frequency(d, std::size_t(t), w2, x);
-    xi = std::max(xi, x);
-  }
   if (!(lambda > 0)) return std::numeric_limits<double>::infinity();
-  return damped_limit(d, std::sqrt(lambda), xi);
+  return damped_limit(d, std::sqrt(lambda), xi_max);
 }
 
 double critical_dt(const EngineData& d) {
@@ -338,13 +332,14 @@ double critical_dt(const EngineData& d) {
   // the bound of a node with an absorbing dashpot (which the power iteration
   // does not see).
   std::vector<double> limit;
-  node_limits(d, limit, false);
+  double xi_max = 0;
+  node_limits(d, limit, false, &xi_max);
   double bound = std::numeric_limits<double>::infinity(), dashpots = bound;
   for (std::size_t n = 0; n < limit.size(); ++n) {
     bound = std::min(bound, limit[n]);
     if (dashpot_max(d, n) > 0) dashpots = std::min(dashpots, limit[n]);
   }
-  return std::min({power_critical_dt(d, 200), 1.5 * bound, dashpots});
+  return std::min({power_critical_dt(d, 200, xi_max), 1.5 * bound, dashpots});
 }
 
 }  // namespace rockfdem::fdem::detail

@@ -19,8 +19,9 @@ double damped_limit(const EngineData& d, double omega, double xi_viscous);
 /// up to rounding, and exactly 1 without damping.
 double damping_stiffening(const EngineData& d, double omega, double xi_viscous);
 
-/// Power-iteration estimate alone.
-double power_critical_dt(const EngineData& d, int max_iterations);
+/// Power-iteration estimate alone, reduced for damping with xi_max, the
+/// active triangles' largest viscous ratio (node_frequencies hands it back).
+double power_critical_dt(const EngineData& d, int max_iterations, double xi_max);
 
 /// Conservative element bound, per node: omega^2 = (largest exact linearised
 /// frequency^2 of its active triangles, lumped mass; with their contact term,
@@ -28,13 +29,15 @@ double power_critical_dt(const EngineData& d, int max_iterations);
 /// crack elements' penalty stiffness); xi = the triangles' viscous damping
 /// ratio in their stiffest mode plus an absorbing dashpot's c / (2 m omega).
 /// Exact for a lone triangle and for a lone crack between rigid faces; see
-/// docs/engine.md for how tight it is.
+/// docs/engine.md for how tight it is. `triangle_xi_max`, when given, gets
+/// the active triangles' largest viscous ratio (no dashpot in it).
 void node_frequencies(const EngineData& d, bool with_contact, std::vector<double>& omega2,
-                      std::vector<double>& xi);
+                      std::vector<double>& xi, double* triangle_xi_max = nullptr);
 
 /// The bound above per node, (2 / omega) (sqrt(1 + xi^2) - xi) reduced for
 /// the other damping (damped_limit); infinity for a node without stiffness.
-void node_limits(const EngineData& d, std::vector<double>& limit, bool with_contact);
+void node_limits(const EngineData& d, std::vector<double>& limit, bool with_contact,
+                 double* triangle_xi_max = nullptr);
 
 /// Largest eigenvalue of node n's absorbing dashpot matrix [N s/m^2]; 0: none.
 double dashpot_max(const EngineData& d, std::size_t n);
