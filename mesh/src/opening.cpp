@@ -25,20 +25,22 @@ std::vector<std::array<int, 2>> rock_boundary_edges(const Mesh& m) {
     const int a = m.triangles[t][k], b = m.triangles[t][(k + 1) % 3];
     return std::pair<int, int>{std::min(a, b), std::max(a, b)};
   };
-  std::vector<std::pair<int, int>> sorted;
+  // (edge, 3 t + k): one run of equal edges per undirected edge.
+  std::vector<std::pair<std::pair<int, int>, std::size_t>> sorted;
   for (std::size_t t = 0; t < m.n_triangles(); ++t)
     if (m.zone[t] == kRock)
-      for (int k = 0; k < 3; ++k) sorted.push_back(key(t, k));
+      for (int k = 0; k < 3; ++k) sorted.push_back({key(t, k), 3 * t + k});
   std::sort(sorted.begin(), sorted.end());
+  std::vector<char> lone(3 * m.n_triangles(), 0);
+  for (std::size_t i = 0, j = 0; i < sorted.size(); i = j) {
+    while (j < sorted.size() && sorted[j].first == sorted[i].first) ++j;
+    if (j - i == 1) lone[sorted[i].second] = 1;
+  }
   // In the triangles' order, as the boundary's edge order (and its sums) had it.
   std::vector<std::array<int, 2>> out;
-  for (std::size_t t = 0; t < m.n_triangles(); ++t) {
-    if (m.zone[t] != kRock) continue;
-    for (int k = 0; k < 3; ++k) {
-      const auto [first, last] = std::equal_range(sorted.begin(), sorted.end(), key(t, k));
-      if (last - first == 1) out.push_back({m.triangles[t][k], m.triangles[t][(k + 1) % 3]});
-    }
-  }
+  for (std::size_t t = 0; t < m.n_triangles(); ++t)
+    for (int k = 0; k < 3; ++k)
+      if (lone[3 * t + k]) out.push_back({m.triangles[t][k], m.triangles[t][(k + 1) % 3]});
   return out;
 }
 
