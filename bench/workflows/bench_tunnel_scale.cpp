@@ -6,7 +6,7 @@
 //
 //   build/bench/workflows/bench_tunnel_scale [--scene scenes/tunnel-seed-oneshot.toml]
 //       [--sizes 0.35,0.06] [--threads 1,2] [--steps 10000] [--ucs-steps N]
-//       [--out /tmp/rockfdem-scale] [--rockfdem PATH] [--bench-ucs PATH]
+//       [--ucs-repeats 3] [--out /tmp/rockfdem-scale] [--rockfdem PATH] [--bench-ucs PATH]
 //       [--set section.key=value ...]
 //
 // Each size and thread count is one run of the rockfdem binary
@@ -20,12 +20,16 @@
 // steps: those of the grout stage before it, which ends when its trigger
 // fires, plus <steps>; the table gives the steps taken). Then
 // `bench_ucs --triangles <the tunnel's>
-// --steps <ucs-steps> --threads T --contact 1`. Printed as Markdown:
+// --steps <ucs-steps> --threads T --contact 1`, <ucs-repeats> times in a row:
+// its median rate is the ratio's denominator, and its spread is printed
+// (a bench of a few seconds moves with the machine by tens of percent).
+// Printed as Markdown:
 //
 //   1. per run: triangles, steps, status, wall time of each phase of the run
 //      (summary.json "timings"), the process's peak resident memory and per
 //      triangle, the engine's own bytes per triangle, the tunnel's explicit
-//      triangle-steps/s, the bench's at the same size and their ratio;
+//      triangle-steps/s, the bench's median at the same size, its lowest
+//      and highest, and the ratio to the median;
 //   2. per run: the peak resident memory by the end of each phase
 //      (summary.json "peak_memory_mib"), which says which phase sets the peak;
 //   3. per size: whether every thread count gave the same state hash.
@@ -58,8 +62,8 @@ namespace {
 
 const char* const kUsage =
     "usage: bench_tunnel_scale [--scene PATH] [--sizes H1,H2,...] [--threads T1,T2,...]\n"
-    "                          [--steps N] [--ucs-steps N] [--out DIR] [--rockfdem PATH]\n"
-    "                          [--bench-ucs PATH] [--set KEY=VALUE ...]\n";
+    "                          [--steps N] [--ucs-steps N] [--ucs-repeats N] [--out DIR]\n"
+    "                          [--rockfdem PATH] [--bench-ucs PATH] [--set KEY=VALUE ...]\n";
 
 struct Options {
   std::string scene = std::string(ROCKFDEM_SOURCE_DIR) + "/scenes/tunnel-seed-oneshot.toml";
@@ -67,6 +71,7 @@ struct Options {
   std::vector<int> threads{1, 2};
   long steps = 10000;
   long ucs_steps = 0;  // 0: about 1.3e8 triangle-steps, at least 300 steps
+  long ucs_repeats = 3;
   std::string out = "/tmp/rockfdem-scale";
   std::string rockfdem = ROCKFDEM_BINARY;
   std::string bench_ucs = BENCH_UCS_BINARY;
@@ -128,6 +133,8 @@ Options parse_options(int argc, char** argv) {
       o.steps = parse_count(a, value());
     else if (a == "--ucs-steps")
       o.ucs_steps = parse_count(a, value());
+    else if (a == "--ucs-repeats")
+      o.ucs_repeats = parse_count(a, value());
     else if (a == "--out")
       o.out = value();
     else if (a == "--rockfdem")
@@ -159,7 +166,8 @@ struct Run {
   std::string status, state_hash;
   std::optional<double> triangles, steps, tunnel_rate, engine_bytes;
   std::map<std::string, double> seconds, peak_mib;  // by phase, from summary.json
-  std::optional<double> ucs_rate, ucs_bytes;
+  std::optional<double> ucs_rate, ucs_bytes;        // the median of the repeats
+  std::vector<double> ucs_rates;                    // each repeat's, ascending
   int ucs_exit = 0;
 };
 
@@ -223,12 +231,20 @@ void run_ucs(const Options& o, Run& r) {
                                          std::to_string(r.threads),
                                          "--contact",
                                          "1"};
-  const fs::path log = fs::path(o.out) / (run_name(r) + "_ucs.log");
-  std::cerr << run_name(r) << ": " << bench::join_quoted(args) << " > " << log.string() << '\n';
-  r.ucs_exit = bench::run_logged(args, log.string()).exit_code;
-  const std::string text = bench::read_text(log);
-  r.ucs_rate = number_after(text, "triangle-steps/s");
-  r.ucs_bytes = number_after(text, "memory");
+  for (long k = 1; k <= o.ucs_repeats; ++k) {
+    const fs::path log =
+        fs::path(o.out) / (run_name(r) + "_ucs" + (k > 1 ? std::to_string(k) : "") + ".log");
+    std::cerr << run_name(r) << ": " << bench::join_quoted(args) << " > " << log.string() << '\n';
+    const int exit_code = bench::run_logged(args, log.string()).exit_code;
+    if (exit_code != 0) r.ucs_exit = exit_code;
+    const std::string text = bench::read_text(log);
+    if (const auto rate = number_after(text, "triangle-steps/s")) r.ucs_rates.push_back(*rate);
+    r.ucs_bytes = number_after(text, "memory");
+  }
+  std::sort(r.ucs_rates.begin(), r.ucs_rates.end());
+  const std::size_t n = r.ucs_rates.size();
+  if (n > 0)
+    r.ucs_rate = n % 2 ? r.ucs_rates[n / 2] : 0.5 * (r.ucs_rates[n / 2 - 1] + r.ucs_rates[n / 2]);
 }
 
 Run run_one(const Options& o, double size, int threads) {
@@ -266,14 +282,16 @@ void print_header(const Options& o) {
             << m.date << ", " << m.host << ", " << m.cpus << " cores (nproc), load average "
             << fixed(m.load_1min, 2) << " at the start. Each run:\n\n    "
             << bench::join_quoted(each) << "\n\n(size and threads as in each row), then "
-            << "bench_ucs --contact 1 at the run's triangle count and threads.\n\n";
+            << "bench_ucs --contact 1 at the run's triangle count and threads, " << o.ucs_repeats
+            << " time(s); the ratio is to the bench's median.\n\n";
 }
 
 void print_runs(const std::vector<Run>& runs) {
   std::cout << "| size_near [m] | triangles | threads | explicit steps | status | mesh [s] | "
                "insitu [s] | total [s] | peak [MiB] | peak [B/tri] | engine [B/tri] | tunnel "
-               "tri-steps/s | UCS bench tri-steps/s | tunnel / UCS |\n"
-            << "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
+               "tri-steps/s | UCS bench tri-steps/s (median) | UCS lowest - highest | "
+               "tunnel / UCS |\n"
+            << "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
   for (const Run& r : runs) {
     const double tri = r.triangles.value_or(0);
     const bool both = r.tunnel_rate && r.ucs_rate && *r.ucs_rate > 0;
@@ -285,7 +303,10 @@ void print_runs(const std::vector<Run>& runs) {
               << " | " << (tri > 0 ? fixed(r.end.peak_rss_mib * 1048576.0 / tri, 0) : "-") << " | "
               << or_dash(r.engine_bytes, 0) << " | " << (r.tunnel_rate ? mega(*r.tunnel_rate) : "-")
               << " | " << (r.ucs_rate ? mega(*r.ucs_rate) : "-") << " | "
-              << (both ? fixed(*r.tunnel_rate / *r.ucs_rate, 2) : "-") << " |\n";
+              << (r.ucs_rates.empty()
+                      ? "-"
+                      : mega(r.ucs_rates.front()) + " - " + mega(r.ucs_rates.back()))
+              << " | " << (both ? fixed(*r.tunnel_rate / *r.ucs_rate, 2) : "-") << " |\n";
   }
 }
 
