@@ -1,6 +1,7 @@
 // Installing solid bolts through the public Engine API (bolt_install.hpp).
 #include "rockfdem/fdem/bolt_install.hpp"
 
+#include <array>
 #include <string>
 
 #include "rockfdem/error.hpp"
@@ -59,18 +60,36 @@ BoltPlan plan_bolts(ModelInput& in, const std::vector<BoltSpec>& specs) {
   return plan;
 }
 
-BoltCracks bolt_cracks(const Engine& engine, const BoltPlan& plan, int b) {
-  BoltCracks out;
-  const auto& owner = plan.marks.owner;
-  for (std::size_t c = 0; c < engine.n_cracks(); ++c) {
-    const auto tri = engine.crack_triangles(c);
-    const bool in0 = owner[tri[0]] == b, in1 = owner[tri[1]] == b;
-    if (in0 && in1)
-      out.steel.push_back(int(c));
-    else if (in0 || in1)
-      out.grout.push_back(int(c));
+namespace {
+
+/// Adds crack element c to the lists of the bolts owning its triangles
+/// (owner -1: none); `only` >= 0 keeps that bolt's alone.
+void sort_crack(std::vector<BoltCracks>& out, const std::vector<int>& owner, std::array<int, 2> tri,
+                int c, int only) {
+  const int b0 = owner[tri[0]], b1 = owner[tri[1]];
+  const auto wanted = [&](int b) { return b >= 0 && (only < 0 || b == only); };
+  if (b0 == b1) {
+    if (wanted(b0)) out[only < 0 ? b0 : 0].steel.push_back(c);
+    return;
   }
-  return out;
+  for (const int b : {b0, b1})
+    if (wanted(b)) out[only < 0 ? b : 0].grout.push_back(c);
+}
+
+}  // namespace
+
+void index_bolt_cracks(const Engine& engine, BoltPlan& plan) {
+  plan.cracks.assign(plan.specs.size(), BoltCracks{});
+  for (std::size_t c = 0; c < engine.n_cracks(); ++c)
+    sort_crack(plan.cracks, plan.marks.owner, engine.crack_triangles(c), int(c), -1);
+}
+
+BoltCracks bolt_cracks(const Engine& engine, const BoltPlan& plan, int b) {
+  if (plan.cracks.size() == plan.specs.size()) return plan.cracks[b];
+  std::vector<BoltCracks> out(1);
+  for (std::size_t c = 0; c < engine.n_cracks(); ++c)
+    sort_crack(out, plan.marks.owner, engine.crack_triangles(c), int(c), b);
+  return out[0];
 }
 
 BoltInstallReport install_bolt(Engine& engine, BoltPlan& plan, int b, BoltStart start) {
@@ -78,6 +97,7 @@ BoltInstallReport install_bolt(Engine& engine, BoltPlan& plan, int b, BoltStart 
     throw InputError("fdem bolts: no bolt " + std::to_string(b) + " in the plan (" +
                      std::to_string(plan.specs.size()) + " bolts)");
   BoltInstallReport report;
+  if (plan.cracks.size() != plan.specs.size()) index_bolt_cracks(engine, plan);
   for (std::size_t i = 0; i < plan.owned[b].size(); ++i) {
     const int t = plan.owned[b][i];
     const double alpha = plan.alpha[b][i];

@@ -82,6 +82,7 @@ double restore_before_writing(const Checkpoint& resume, const std::string& file,
                               const fdem::Engine& engine, fdem::BoltPlan& bolts) {
   check_run_state_against_engine(file, resume.run, scene, engine.step_count(), engine.time());
   restore_bolts(resume.run.at("bolts"), bolts, file);
+  fdem::index_bolt_cracks(engine, bolts);
   check_key_point_fields(resume.run, monitors, out, file);
   return resume.run.at("start_ratio").get<double>();
 }

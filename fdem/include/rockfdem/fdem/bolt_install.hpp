@@ -52,6 +52,12 @@ struct BoltSpec {
   Material grout;  ///< rock law: grout ft, c, phi, GfI, GfII, penalties (10 E by default)
 };
 
+/// A bolt's crack elements: inside its strip (steel) or between its strip
+/// and anything else (grout), in crack order.
+struct BoltCracks {
+  std::vector<int> steel, grout;
+};
+
 /// Everything install and output need, made before the Engine exists.
 struct BoltPlan {
   std::vector<BoltSpec> specs;
@@ -66,6 +72,9 @@ struct BoltPlan {
   /// (zero when stress-free), subtracted by the outputs.
   std::vector<std::vector<std::array<double, 3>>> installed_stress;
   std::vector<char> installed;  ///< per bolt
+  /// Per bolt, once indexed (index_bolt_cracks): the crack topology never
+  /// changes, and outputs ask at every history row.
+  std::vector<BoltCracks> cracks;
 };
 
 /// Marks the bolts, allows fracture in their triangles, appends the steel
@@ -97,10 +106,12 @@ BoltInstallReport install_bolts(Engine& engine, BoltPlan& plan,
                                 BoltStart start = BoltStart::kStressFree);
 
 /// Crack elements of bolt b: inside its strip (steel) or between its strip
-/// and anything else (grout), in crack order.
-struct BoltCracks {
-  std::vector<int> steel, grout;
-};
+/// and anything else (grout), in crack order: the plan's index when made,
+/// else a search of every crack element.
 BoltCracks bolt_cracks(const Engine& engine, const BoltPlan& plan, int b);
+
+/// Fills BoltPlan::cracks for every bolt in one pass over the crack
+/// elements (install_bolt does when it is empty; a restart after loading).
+void index_bolt_cracks(const Engine& engine, BoltPlan& plan);
 
 }  // namespace rockfdem::fdem
