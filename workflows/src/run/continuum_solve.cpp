@@ -9,6 +9,7 @@
 #include "rockfdem/insitu/plastic.hpp"
 #include "run/continuum_ground_reaction.hpp"
 #include "run/engine_setup.hpp"
+#include "run/field_sampler.hpp"
 #include "stages/registry.hpp"
 #include "stages/stage.hpp"
 
@@ -63,16 +64,24 @@ insitu::InsituField field_of(const insitu::PlasticField& p) {
   return f;
 }
 
-void solve_elastic(const Scene& scene, const mesh::Mesh& m, ContinuumStates& c) {
+/// The elastic counterpart's problem: the scene's in-situ problem over the
+/// whole construction sequence c.alphas, the lining joining where its stage
+/// puts it.
+insitu::InsituSpec elastic_spec(const Scene& scene, const ContinuumStates& c) {
   insitu::InsituSpec spec = insitu_spec(scene);
   spec.alphas = c.alphas;
-  spec.keep_fields = {scene.insitu.alpha.back(), c.alphas.back()};  // the hand-off's, the end's
   if (c.lining_alpha > 0 && !scene.insitu.lining_active) {
     // In the next stage, on the ground as this alpha left it (the engine's
     // lining stage installs on the state it finds).
     spec.lining.active = true;
     spec.lining.install_alpha = c.lining_alpha * (1 - 1e-9);
   }
+  return spec;
+}
+
+void solve_elastic(const Scene& scene, const mesh::Mesh& m, ContinuumStates& c) {
+  insitu::InsituSpec spec = elastic_spec(scene, c);
+  spec.keep_fields = {scene.insitu.alpha.back(), c.alphas.back()};  // the hand-off's, the end's
   const std::vector<insitu::InsituField> fields = insitu::solve_insitu(m, spec);
   for (const auto& f : fields)
     if (f.alpha == scene.insitu.alpha.back()) c.handoff = f;
@@ -140,7 +149,47 @@ std::string skip_text(const Scene& scene, const std::runtime_error& err) {
          "): " + err.what();
 }
 
+bool removes_core(const Scene& scene) {
+  return std::any_of(scene.stages.begin(), scene.stages.end(),
+                     [](const StageSpec& st) { return st.kind == "remove_core"; });
+}
+
 }  // namespace
+
+std::optional<CounterpartTail> counterpart_tail(const Scene& scene, insitu::InsituSpec& spec) {
+  if (!removes_core(scene) || scene.insitu.continuum == "mohr_coulomb") return std::nullopt;
+  CounterpartTail t;
+  ContinuumStates& c = t.states;
+  c.model = scene.insitu.continuum;
+  c.alphas = construction_alphas(scene, &c.lining_alpha);
+  const insitu::InsituSpec whole = elastic_spec(scene, c);
+  // The sequence must begin with the implicit stage's own problem: the
+  // lining (if it joins) only below the last alpha, nothing else changed.
+  const std::size_t n = spec.alphas.size();
+  if (whole.alphas.size() < n ||
+      !std::equal(spec.alphas.begin(), spec.alphas.end(), whole.alphas.begin()))
+    return std::nullopt;
+  if (whole.lining.active && !spec.lining.active &&
+      !(whole.lining.install_alpha < spec.alphas.back()))
+    return std::nullopt;
+  t.implicit_alphas = n;
+  spec.alphas = whole.alphas;
+  spec.lining = whole.lining;
+  return t;
+}
+
+void CounterpartTail::take(insitu::InsituField& f) {
+  const bool last = seen + 1 == states.alphas.size();
+  if (seen + 1 == implicit_alphas) {
+    states.handoff = f;  // a copy: the implicit stage's sampler may free these arrays
+    if (last) states.end = f;
+  } else if (seen >= implicit_alphas) {
+    states.seconds += f.total_seconds;
+    if (last) states.end = std::move(f);
+    release_arrays(f);  // the counterpart compares only its hand-off and its end
+  }
+  ++seen;
+}
 
 ContinuumStates solve_continuum_counterpart(const Scene& scene, const mesh::Mesh& m) {
   const auto start = std::chrono::steady_clock::now();
@@ -210,11 +259,6 @@ PostPeakCounterpart solve_post_peak_counterpart(const Scene& scene, const mesh::
 
 namespace {
 
-bool removes_core(const Scene& scene) {
-  return std::any_of(scene.stages.begin(), scene.stages.end(),
-                     [](const StageSpec& st) { return st.kind == "remove_core"; });
-}
-
 // The open excavation as a continuum: the scenes without a ring compare
 // their relaxed state with it.
 insitu::InsituField solve_open_hole(const Scene& scene, const RunContext& ctx,
@@ -228,13 +272,16 @@ insitu::InsituField solve_open_hole(const Scene& scene, const RunContext& ctx,
 }  // namespace
 
 ContinuumReferences solve_continuum_references(const Scene& scene, const RunContext& ctx,
-                                               const mesh::Mesh& m) {
+                                               const mesh::Mesh& m,
+                                               std::optional<ContinuumStates> counterpart) {
   ContinuumReferences r;
   if (!removes_core(scene)) return r;
   if (!scene.lining_ring) r.open_hole = solve_open_hole(scene, ctx, m);
   // A counterpart that cannot be solved leaves the run's own results standing.
   try {
-    r.counterpart = keeping_threads(ctx, [&] { return solve_continuum_counterpart(scene, m); });
+    r.counterpart =
+        counterpart ? std::move(counterpart)
+                    : keeping_threads(ctx, [&] { return solve_continuum_counterpart(scene, m); });
     if (scene.insitu.continuum_post_peak) {
       const auto start = std::chrono::steady_clock::now();
       r.post_peak = keeping_threads(ctx, [&] { return solve_post_peak_counterpart(scene, m); });

@@ -42,11 +42,33 @@ struct ContinuumReferences {
   std::vector<std::string> skipped;  ///< why a solve failed, for summary "skipped"
 };
 
+/// The elastic counterpart solved in the implicit stage's own solve: its
+/// construction sequence begins with the implicit stage's alphas and the
+/// same problem (the lining, where it joins, only below the last of them),
+/// so the implicit stage goes on to its end instead of the counterpart
+/// solving those alphas again. `take` is called with every field of that
+/// solve, in order, before the implicit stage's own sampling: it copies the
+/// counterpart's hand-off (the implicit stage's last alpha), keeps the
+/// end's arrays and frees the rest of the tail's.
+struct CounterpartTail {
+  ContinuumStates states;  ///< seconds: the tail's alone
+  std::size_t implicit_alphas = 0, seen = 0;
+  void take(insitu::InsituField& f);
+};
+
+/// The tail for the implicit stage's `spec` (its alphas and lining extended
+/// to the whole sequence), or none: no core removed (no counterpart), a
+/// Mohr-Coulomb counterpart, or a sequence that does not continue the
+/// implicit stage's.
+std::optional<CounterpartTail> counterpart_tail(const Scene& scene, insitu::InsituSpec& spec);
+
 /// The solves compare_with_continuum_counterpart and the open-hole
 /// comparison need, for a scene whose stages remove the core (none
-/// otherwise: nothing would be compared). `scene` has the alphas solved.
-ContinuumReferences solve_continuum_references(const Scene& scene, const RunContext& ctx,
-                                               const mesh::Mesh& m);
+/// otherwise: nothing would be compared). `scene` has the alphas solved;
+/// `counterpart`, when given, was solved already (CounterpartTail).
+ContinuumReferences solve_continuum_references(
+    const Scene& scene, const RunContext& ctx, const mesh::Mesh& m,
+    std::optional<ContinuumStates> counterpart = std::nullopt);
 
 /// The counterpart `solved` compared (compare_with_counterpart) for a
 /// finished tunnel run, into summary

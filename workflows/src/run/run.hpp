@@ -33,6 +33,8 @@ class Run : StagedRun<RunOutputs> {
  private:
   // The phases, in the order run() calls them.
   void solve_insitu();
+  std::optional<ContinuumStates> solve_with_counterpart(FieldSampler& sampler,
+                                                        FieldSampler::Hold hold);
   void install_at_face_distance(FieldSampler& sampler);
   void choose_handoff_field();
   int write_implicit_results_only();
@@ -62,9 +64,10 @@ class Run : StagedRun<RunOutputs> {
 
   /// Up to the one handed over, which alone keeps its arrays.
   std::vector<insitu::InsituField> fields_;
-  std::vector<ImplicitSample> samples_;  ///< fields_'s samples
-  HandoffFigures handoff_figures_;       ///< the hand-off rule over all solved fields
-  ContinuumReferences references_;       ///< what the end state is compared with
+  std::vector<ImplicitSample> samples_;         ///< fields_'s samples
+  HandoffFigures handoff_figures_;              ///< the hand-off rule over all solved fields
+  std::optional<ContinuumStates> counterpart_;  ///< solved with the implicit stage's fields
+  ContinuumReferences references_;              ///< what the end state is compared with
   SupportMaterials support_;
   fdem::DampingSettings stage_damping_;  ///< the stages' (after the hand-off step)
   fdem::BoltPlan bolts_;                 ///< marks bolt triangles and allows fracture there
