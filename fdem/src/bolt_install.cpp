@@ -80,6 +80,7 @@ void sort_crack(std::vector<BoltCracks>& out, const std::vector<int>& owner, std
 
 void index_bolt_cracks(const Engine& engine, BoltPlan& plan) {
   plan.cracks.assign(plan.specs.size(), BoltCracks{});
+  if (plan.specs.empty()) return;  // no marks either: a scene without bolts
   for (std::size_t c = 0; c < engine.n_cracks(); ++c)
     sort_crack(plan.cracks, plan.marks.owner, engine.crack_triangles(c), int(c), -1);
 }

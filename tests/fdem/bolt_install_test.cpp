@@ -148,5 +148,26 @@ TEST(BoltInstall, keeping_current_stress_changes_no_stress_and_no_force) {
       kept.engine->unbalanced_force_ratio(), freed.engine->unbalanced_force_ratio());
 }
 
+// The index made at installation lists each bolt's crack elements as the
+// search of every element does: steel inside the strip, grout across its
+// outline, in crack order. A plan without bolts indexes nothing.
+TEST(BoltInstall, crack_index_matches_the_search_of_every_element) {
+  const BoltStart free = BoltStart::kStressFree;
+  Installed r = loaded_and_installed(&free);
+  ASSERT_EQ(r.plan.cracks.size(), 1u);
+  const BoltCracks indexed = bolt_cracks(*r.engine, r.plan, 0);
+  BoltPlan unindexed = r.plan;
+  unindexed.cracks.clear();
+  const BoltCracks searched = bolt_cracks(*r.engine, unindexed, 0);
+  EXPECT_EQ(indexed.steel, searched.steel);
+  EXPECT_EQ(indexed.grout, searched.grout);
+  EXPECT_EQ(long(indexed.grout.size()), r.report.grout_cracks);
+  EXPECT_EQ(long(indexed.steel.size()), r.report.steel_cracks);
+  EXPECT_GT(indexed.steel.size(), 0u);
+  BoltPlan none;
+  index_bolt_cracks(*r.engine, none);
+  EXPECT_TRUE(none.cracks.empty());
+}
+
 }  // namespace
 }  // namespace rockfdem::fdem
