@@ -68,23 +68,29 @@ TEST(Contact, two_triangles_pressed_together_match_the_potential_closed_form) {
 
 double total_energy(const Engine& e) { return e.kinetic_energy() + e.strain_energy(); }
 
+struct Bounce {
+  double e0 = 0, e1 = 0, rebound = 0;  ///< energies before and after, upward velocity
+};
+
 // An elastic block thrown onto a fixed block at 1 m/s (no gravity, friction,
-// damping) bounces off; after separation the kinetic plus strain energy of
-// both blocks equals the initial kinetic energy within 2%.
-TEST(Contact, elastic_block_bounces_with_energy_conserved) {
+// damping), dt the given fraction of the stability limit: the blocks'
+// kinetic plus strain energy before and after the bounce, and the rebound.
+Bounce bounce(double dt_fraction) {
   Material m = test::rock();
   ModelInput in = test::two_blocks(1e-4, m);
   in.contact = contact_on();
   in.contact.friction = false;
   in.threads = 1;
   Engine e(in);
+  e.set_dt(dt_fraction * e.critical_dt());
   const std::size_t first_upper = e.n_triangles() / 3;  // lower block has 2/3 of the triangles
   std::vector<char> upper(e.n_nodes(), 0);
   for (std::size_t t = 2 * first_upper; t < e.n_triangles(); ++t)
     for (int n : e.triangle_nodes(t)) upper[n] = 1;
   for (std::size_t n = 0; n < e.n_nodes(); ++n)
     if (upper[n]) e.set_node_state(n, e.positions()[2 * n], e.positions()[2 * n + 1], 0, -1.0);
-  const double e0 = total_energy(e);
+  Bounce b;
+  b.e0 = total_energy(e);
   bool touched = false, separated = false;
   long steps = 0;
   for (; steps < 200000 && !separated; ++steps) {
@@ -94,7 +100,7 @@ TEST(Contact, elastic_block_bounces_with_energy_conserved) {
     else if (touched)
       separated = true;
   }
-  ASSERT_TRUE(separated) << "no bounce within " << steps << " steps";
+  EXPECT_TRUE(separated) << "no bounce within " << steps << " steps";
   e.run(200);
   double vy = 0, mass = 0;
   for (std::size_t n = 0; n < e.n_nodes(); ++n)
@@ -102,11 +108,29 @@ TEST(Contact, elastic_block_bounces_with_energy_conserved) {
       vy += e.node_mass()[n] * e.velocities()[2 * n + 1];
       mass += e.node_mass()[n];
     }
-  const double e1 = total_energy(e);
-  std::printf("bounce after %ld steps: energy %.6g -> %.6g (%.3g%%), rebound velocity %.4g m/s\n",
-              steps, e0, e1, 100 * (e1 - e0) / e0, vy / mass);
-  EXPECT_GT(vy / mass, 0.5);  // it did bounce back up
-  EXPECT_NEAR(e1, e0, 0.02 * e0);
+  b.e1 = total_energy(e);
+  b.rebound = vy / mass;
+  std::printf(
+      "dt %.2f of the limit: bounce after %ld steps, energy %.6g -> %.6g (%.3g%%), "
+      "rebound velocity %.4g m/s\n",
+      dt_fraction, steps, b.e0, b.e1, 100 * (b.e1 - b.e0) / b.e0, b.rebound);
+  return b;
+}
+
+// After separation the energy equals the initial kinetic energy. The
+// penalty's error depends on where within a step the contact starts and
+// ends, so it shrinks with dt but not smoothly: measured -0.14, +0.03,
+// +0.24, +0.80, +0.51, -1.70, +1.95, +2.72 and -3.89% at 0.4, 0.5, 0.6,
+// 0.7, 0.75, 0.8, 0.85, 0.9 and 0.95 of the limit. At half the limit it
+// must hold to 0.5%; at the default (0.8) to 3%, which a small change of
+// the limit (0.03% moves the bounce by 13 steps) does not overturn.
+TEST(Contact, elastic_block_bounces_with_energy_conserved) {
+  const Bounce fine = bounce(0.5);
+  EXPECT_GT(fine.rebound, 0.5);  // it did bounce back up
+  EXPECT_NEAR(fine.e1, fine.e0, 0.005 * fine.e0);
+  const Bounce coarse = bounce(0.8);
+  EXPECT_GT(coarse.rebound, 0.5);
+  EXPECT_NEAR(coarse.e1, coarse.e0, 0.03 * coarse.e0);
 }
 
 /// Places triangle 1 of the two-triangle model at offset (ux, uy) from its
