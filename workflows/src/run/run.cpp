@@ -28,6 +28,7 @@
 #include "rockfdem/mesh/msh_io.hpp"
 #include "run/continuum_solve.hpp"
 #include "run/engine_setup.hpp"
+#include "run/free_heap.hpp"
 #include "run/handoff_choice.hpp"
 #include "run/implicit_check.hpp"
 #include "run/interrupt.hpp"
@@ -291,6 +292,7 @@ void Run::take_handoff_step() {
       if (!handoff().active[t]) engine().set_active(t, false);
     outputs().keep_start(engine());
     reporting_failure([&] { engine().step(); });
+    release_free_heap();  // the set-up's scratch and the first stability limit's
     start_ratio_ = engine().unbalanced_force_ratio();
     engine().set_damping(stage_damping_);
   }

@@ -8,6 +8,7 @@
 #include "record/output_dir.hpp"
 #include "record/summary.hpp"
 #include "rockfdem/error.hpp"
+#include "run/free_heap.hpp"
 #include "run/interrupt.hpp"
 #include "run/progress.hpp"
 #include "run/rigid_rotation_guard.hpp"
@@ -227,6 +228,8 @@ bool StageRunner::step_until(const StageSpec& stage, const StopTest& stop) {
     const long before = engine_.step_count();
     bool reached = false;
     const bool whole = advance(chunk, stop, &reached);
+    // A stage's first step computes the stability limit its changes asked for.
+    if (before == first) release_free_heap();
     timer_->stamp("fdem");
     if (!whole) interrupted(stage);
     record_step(stage);
