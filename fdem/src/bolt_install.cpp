@@ -1,7 +1,6 @@
 // Installing solid bolts through the public Engine API (bolt_install.hpp).
 #include "rockfdem/fdem/bolt_install.hpp"
 
-#include <array>
 #include <string>
 
 #include "rockfdem/error.hpp"
@@ -62,35 +61,35 @@ BoltPlan plan_bolts(ModelInput& in, const std::vector<BoltSpec>& specs) {
 
 namespace {
 
-/// Adds crack element c to the lists of the bolts owning its triangles
-/// (owner -1: none); `only` >= 0 keeps that bolt's alone.
-void sort_crack(std::vector<BoltCracks>& out, const std::vector<int>& owner, std::array<int, 2> tri,
-                int c, int only) {
-  const int b0 = owner[tri[0]], b1 = owner[tri[1]];
-  const auto wanted = [&](int b) { return b >= 0 && (only < 0 || b == only); };
-  if (b0 == b1) {
-    if (wanted(b0)) out[only < 0 ? b0 : 0].steel.push_back(c);
-    return;
+/// Every bolt's crack elements in one pass: both triangles owned by the
+/// same bolt, its steel; owned by one bolt or by two different ones, grout
+/// of each owner (owner -1: rock).
+std::vector<BoltCracks> cracks_by_bolt(const Engine& engine, const BoltPlan& plan) {
+  std::vector<BoltCracks> out(plan.specs.size());
+  if (out.empty()) return out;  // no marks either: a scene without bolts
+  const std::vector<int>& owner = plan.marks.owner;
+  for (std::size_t c = 0; c < engine.n_cracks(); ++c) {
+    const auto tri = engine.crack_triangles(c);
+    const int b0 = owner[tri[0]], b1 = owner[tri[1]];
+    if (b0 == b1) {
+      if (b0 >= 0) out[b0].steel.push_back(int(c));
+      continue;
+    }
+    for (const int b : {b0, b1})
+      if (b >= 0) out[b].grout.push_back(int(c));
   }
-  for (const int b : {b0, b1})
-    if (wanted(b)) out[only < 0 ? b : 0].grout.push_back(c);
+  return out;
 }
 
 }  // namespace
 
 void index_bolt_cracks(const Engine& engine, BoltPlan& plan) {
-  plan.cracks.assign(plan.specs.size(), BoltCracks{});
-  if (plan.specs.empty()) return;  // no marks either: a scene without bolts
-  for (std::size_t c = 0; c < engine.n_cracks(); ++c)
-    sort_crack(plan.cracks, plan.marks.owner, engine.crack_triangles(c), int(c), -1);
+  plan.cracks = cracks_by_bolt(engine, plan);
 }
 
 BoltCracks bolt_cracks(const Engine& engine, const BoltPlan& plan, int b) {
   if (plan.cracks.size() == plan.specs.size()) return plan.cracks[b];
-  std::vector<BoltCracks> out(1);
-  for (std::size_t c = 0; c < engine.n_cracks(); ++c)
-    sort_crack(out, plan.marks.owner, engine.crack_triangles(c), int(c), b);
-  return out[0];
+  return cracks_by_bolt(engine, plan)[b];
 }
 
 BoltInstallReport install_bolt(Engine& engine, BoltPlan& plan, int b, BoltStart start) {

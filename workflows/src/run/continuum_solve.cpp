@@ -149,6 +149,14 @@ std::string skip_text(const Scene& scene, const std::runtime_error& err) {
          "): " + err.what();
 }
 
+/// The counterpart's model and sequence, nothing solved yet.
+ContinuumStates unsolved_states(const Scene& scene) {
+  ContinuumStates c;
+  c.model = scene.insitu.continuum;
+  c.alphas = construction_alphas(scene, &c.lining_alpha);
+  return c;
+}
+
 bool removes_core(const Scene& scene) {
   return std::any_of(scene.stages.begin(), scene.stages.end(),
                      [](const StageSpec& st) { return st.kind == "remove_core"; });
@@ -158,10 +166,8 @@ bool removes_core(const Scene& scene) {
 
 std::optional<CounterpartTail> counterpart_tail(const Scene& scene, insitu::InsituSpec& spec) {
   if (!removes_core(scene) || scene.insitu.continuum == "mohr_coulomb") return std::nullopt;
-  CounterpartTail t;
-  ContinuumStates& c = t.states;
-  c.model = scene.insitu.continuum;
-  c.alphas = construction_alphas(scene, &c.lining_alpha);
+  CounterpartTail t{unsolved_states(scene)};
+  const ContinuumStates& c = t.states;
   const insitu::InsituSpec whole = elastic_spec(scene, c);
   // The sequence must begin with the implicit stage's own problem: the
   // lining (if it joins) only below the last alpha, nothing else changed.
@@ -193,9 +199,7 @@ void CounterpartTail::take(insitu::InsituField& f) {
 
 ContinuumStates solve_continuum_counterpart(const Scene& scene, const mesh::Mesh& m) {
   const auto start = std::chrono::steady_clock::now();
-  ContinuumStates c;
-  c.model = scene.insitu.continuum;
-  c.alphas = construction_alphas(scene, &c.lining_alpha);
+  ContinuumStates c = unsolved_states(scene);
   if (c.model == "mohr_coulomb")
     solve_plastic(scene, m, c);
   else
