@@ -13,6 +13,7 @@
 #include "rockfdem/workflows/cli.hpp"
 #include "run/interrupt.hpp"
 #include "run/loader_pages.hpp"
+#include "run/process_memory.hpp"
 #include "study/register_study.hpp"
 
 int main(int argc, char** argv) {
@@ -27,6 +28,7 @@ int main(int argc, char** argv) {
   // What linking the libraries left resident (their symbol tables: 0.1 GB)
   // is not needed again: it would add to every run's peak.
   workflows::release_loader_pages();
+  workflows::restore_malloc_policy();
   try {
     const workflows::CommandLine cli = workflows::parse_command_line(argc, argv);
     const int code = workflows::run_command(cli);

@@ -28,10 +28,10 @@
 #include "rockfdem/mesh/msh_io.hpp"
 #include "run/continuum_solve.hpp"
 #include "run/engine_setup.hpp"
-#include "run/free_heap.hpp"
 #include "run/handoff_choice.hpp"
 #include "run/implicit_check.hpp"
 #include "run/interrupt.hpp"
+#include "run/process_memory.hpp"
 #include "scene/scene_reader.hpp"
 
 namespace rockfdem::workflows {
@@ -120,6 +120,7 @@ int Run::run() {
   try {
     if (scene().stages.empty()) return write_implicit_results_only();
     solve_references();
+    release_phase_memory();  // deal.II's and PETSc's: the engine is built into it
     build_engine();
     place_instruments();
     write_first_outputs();
@@ -154,7 +155,8 @@ void Run::solve_insitu() {
   if (!counterpart_) {
     sampler.emplace(scene(), mesh());
     const insitu::InsituSpec spec = sampler->attach(insitu_spec(scene()), hold);
-    fields_ = keeping_threads(ctx(), [&] { return insitu::solve_insitu(mesh(), spec); });
+    fields_ = keeping_threads(
+        ctx(), [&] { return insitu::solve_insitu(mesh(), returning_code_pages(spec)); });
   }
   samples_ = sampler->take(fields_);
   if (face) install_at_face_distance(*sampler);
@@ -181,7 +183,8 @@ std::optional<ContinuumStates> Run::solve_with_counterpart(FieldSampler& sampler
     t.take(f);
     if (implicit) own(f);
   };
-  fields_ = keeping_threads(ctx(), [&] { return insitu::solve_insitu(mesh(), spec); });
+  fields_ = keeping_threads(
+      ctx(), [&] { return insitu::solve_insitu(mesh(), returning_code_pages(spec)); });
   fields_.resize(tail->implicit_alphas);
   return std::move(tail->states);
 }
@@ -199,7 +202,8 @@ void Run::install_at_face_distance(FieldSampler& sampler) {
   if (curve.back().alpha > 0) {
     spec.alphas = {0.0};
     std::vector<insitu::InsituField> open = keeping_threads(ctx(), [&] {
-      return insitu::solve_insitu(mesh(), sampler.attach(spec, FieldSampler::Hold::kNone));
+      return insitu::solve_insitu(
+          mesh(), returning_code_pages(sampler.attach(spec, FieldSampler::Hold::kNone)));
     });
     curve.push_back(sampler.take(open)[0]);
   }
@@ -213,7 +217,8 @@ void Run::install_at_face_distance(FieldSampler& sampler) {
                  samples_.end());
   spec.alphas = {f.alpha};
   std::vector<insitu::InsituField> at = keeping_threads(ctx(), [&] {
-    return insitu::solve_insitu(mesh(), sampler.attach(spec, FieldSampler::Hold::kAll));
+    return insitu::solve_insitu(
+        mesh(), returning_code_pages(sampler.attach(spec, FieldSampler::Hold::kAll)));
   });
   samples_.push_back(sampler.take(at)[0]);
   fields_.push_back(std::move(at[0]));

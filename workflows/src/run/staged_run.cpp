@@ -10,6 +10,7 @@
 #include "record/output_dir.hpp"
 #include "rockfdem/error.hpp"
 #include "rockfdem/mesh/build.hpp"
+#include "run/process_memory.hpp"
 
 namespace rockfdem::workflows {
 namespace {
@@ -38,6 +39,7 @@ template <class Outputs>
 void StagedRun<Outputs>::make_mesh() {
   mesh::MeshReport report;
   mesh_ = keeping_threads(ctx_, [&] { return mesh::build_mesh(scene_.mesh, &report); });
+  release_phase_memory();  // gmsh's model and code
   record_.record_mesh(mesh_, report);
   timer_.stamp("mesh");
 }
