@@ -62,6 +62,26 @@ void apply_to_arrays(Vec in, Vec out, const double* src, double* dst, Mat matrix
   check(VecResetArray(out), "VecResetArray");
 }
 
+// What the set-up keeps for a numeric rebuild that never comes (a new
+// matrix gets a new hierarchy): the Galerkin and prolongator products'
+// intermediate data and the near-null space's three vectors.
+void drop_setup_data(PC pc, Mat matrix) {
+  PetscInt levels = 0;
+  check(PCMGGetLevels(pc, &levels), "PCMGGetLevels");
+  for (PetscInt l = 0; l < levels; ++l) {
+    KSP smoother = nullptr;
+    check(PCMGGetSmoother(pc, l, &smoother), "PCMGGetSmoother");
+    Mat op = nullptr;
+    check(KSPGetOperators(smoother, &op, nullptr), "KSPGetOperators");
+    check(MatProductClear(op), "MatProductClear");
+    if (l == 0) continue;  // no interpolation into the coarsest level
+    Mat interpolation = nullptr;
+    check(PCMGGetInterpolation(pc, l, &interpolation), "PCMGGetInterpolation");
+    check(MatProductClear(interpolation), "MatProductClear");
+  }
+  check(MatSetNearNullSpace(matrix, nullptr), "MatSetNearNullSpace");
+}
+
 }  // namespace
 
 PetscProduct::PetscProduct(Mat matrix) : matrix_(matrix) { make_headers(matrix, in_, out_); }
@@ -86,6 +106,7 @@ GamgPreconditioner::GamgPreconditioner(Mat matrix,
   check(PCGAMGSetAggressiveLevels(pc_, 1), "PCGAMGSetAggressiveLevels");
   check(PCSetOperators(pc_, matrix, matrix), "PCSetOperators");
   check(PCSetUp(pc_), "PCSetUp (GAMG's hierarchy)");
+  drop_setup_data(pc_, matrix);
   // PCApply would build anew once the matrix's values change: the caller
   // decides when a hierarchy is built (a new object).
   check(PCSetReusePreconditioner(pc_, PETSC_TRUE), "PCSetReusePreconditioner");

@@ -292,10 +292,27 @@ class InsituProblem {
   // Materials and the staged state.
   SymmetricTensor<4, 2> C_rock_, C_core_, C_lining_;
   bool lining_installed_ = false;
-  // Per mesh triangle, held only when a lining goes in (48 B per triangle):
+  // Held only when a lining goes in, and only for its triangles (the rest
+  // of the mesh never reads them: 48 B per triangle otherwise).
+  std::vector<int> lining_slot_;                     ///< per mesh triangle: its row below, or -1
   std::vector<SymmetricTensor<2, 2>> eps_previous_;  ///< end of the last stage
   std::vector<SymmetricTensor<2, 2>> eps_install_;   ///< at the lining's install
 };
+
+// Rows for the lining's triangles in mesh order; none without a lining.
+std::vector<int> lining_slots(const mesh::Mesh& mesh, bool lining) {
+  std::vector<int> slot(lining ? mesh.n_triangles() : 0, -1);
+  int rows = 0;
+  for (std::size_t t = 0; t < slot.size(); ++t)
+    if (mesh.zone[t] == mesh::kLining) slot[t] = rows++;
+  return slot;
+}
+
+std::size_t count_rows(const std::vector<int>& slot) {
+  std::size_t n = 0;
+  for (const int s : slot) n += s >= 0;
+  return n;
+}
 
 // ---------------------------------------------------------------------------
 // Construction: the materials and the outer boundary of the full mesh.
@@ -308,8 +325,9 @@ InsituProblem::InsituProblem(const mesh::Mesh& mesh, const InsituSpec& spec)
       mapping_(FE_SimplexP<2>(1)),
       quadrature_(1),
       face_quadrature_(3),
-      eps_previous_(spec.lining.active ? mesh.n_triangles() : 0),
-      eps_install_(spec.lining.active ? mesh.n_triangles() : 0) {
+      lining_slot_(lining_slots(mesh, spec.lining.active)),
+      eps_previous_(count_rows(lining_slot_)),
+      eps_install_(eps_previous_.size()) {
   // validate() has made sure every material a stage needs is present.
   if (spec.materials.rock) C_rock_ = elasticity_tensor(*spec.materials.rock);
   if (spec.materials.core) C_core_ = elasticity_tensor(*spec.materials.core);
@@ -348,8 +366,7 @@ std::vector<InsituField> InsituProblem::run() {
     // stress-free on the ground as the previous stage left it.
     if (spec_.lining.active && !lining_installed_ && alpha <= spec_.lining.install_alpha) {
       lining_installed_ = true;
-      for (std::size_t t = 0; t < mesh_.n_triangles(); ++t)
-        if (mesh_.zone[t] == mesh::kLining) eps_install_[t] = eps_previous_[t];
+      eps_install_ = eps_previous_;  // both hold the lining's triangles alone
     }
     field.lining_installed = lining_installed_;
 
@@ -511,7 +528,7 @@ InsituProblem::CellLaw InsituProblem::cell_law(const Role role, const int triang
       return {alpha * C_core_, alpha * initial_stress(x), alpha * gravity};
     case Role::kLining:
       // The lining's weight is not part of the in-situ stage.
-      return {C_lining_, -(C_lining_ * eps_install_[triangle]), Tensor<1, 2>()};
+      return {C_lining_, -(C_lining_ * eps_install_[lining_slot_[triangle]]), Tensor<1, 2>()};
     case Role::kRemoved:
       break;  // carries nothing (and holds nothing in a matrix not yet assembled)
   }
@@ -916,13 +933,14 @@ void InsituProblem::output_results(const double alpha, InsituField& field) {
         out.szz = alpha * (initial_szz(x) + lame_lambda(*spec_.materials.core) * trace(eps_q[0]));
         break;
       case Role::kLining:
-        out.szz = lame_lambda(*spec_.materials.lining) * trace(eps_q[0] - eps_install_[t]);
+        out.szz =
+            lame_lambda(*spec_.materials.lining) * trace(eps_q[0] - eps_install_[lining_slot_[t]]);
         break;
       case Role::kRemoved:
         break;
     }
     field.active[t] = 1;
-    if (!eps_previous_.empty()) eps_previous_[t] = eps_q[0];
+    if (!lining_slot_.empty() && lining_slot_[t] >= 0) eps_previous_[lining_slot_[t]] = eps_q[0];
 
     cell_residual = 0;
     for (const unsigned int i : fe_values.dof_indices())
