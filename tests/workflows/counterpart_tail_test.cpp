@@ -59,7 +59,11 @@ TEST(CounterpartTail, continues_the_implicit_stage_with_the_fields_of_both_solve
     const ContinuumStates& c = tail->states;
     EXPECT_EQ(c.alphas, apart.alphas);
     EXPECT_EQ(c.lining_alpha, apart.lining_alpha);
-    expect_same(c.handoff, apart.handoff, "counterpart hand-off");
+    // The "last" rule hands over the implicit stage's last field: the
+    // counterpart reads it there instead of holding a copy.
+    EXPECT_EQ(c.handoff_is_runs, !scene.insitu.handoff_first_crack);
+    EXPECT_EQ(c.handoff.alpha, apart.handoff.alpha);
+    expect_same(c.handoff_field(fields[alone.size() - 1]), apart.handoff, "counterpart hand-off");
     expect_same(c.end, apart.end, "counterpart end");
   }
 }

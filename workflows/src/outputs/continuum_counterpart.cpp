@@ -171,7 +171,8 @@ std::map<std::string, CounterpartKeyPoint> key_points(const fdem::Engine& e,
     CounterpartKeyPoint& k = out[mon.name];
     k = {mm(fdem_end[0], fdem_end[1]), mm(c.end.ux[v], c.end.uy[v]),
          mm(fdem_handoff.ux[v], fdem_handoff.uy[v]), std::nullopt};
-    if (c.handoff.alpha >= 0) k.continuum_handoff_mm = mm(c.handoff.ux[v], c.handoff.uy[v]);
+    const insitu::InsituField& h = c.handoff_field(fdem_handoff);
+    if (h.alpha >= 0) k.continuum_handoff_mm = mm(h.ux[v], h.uy[v]);
   }
   return out;
 }
@@ -198,8 +199,8 @@ CounterpartComparison compare_with_counterpart(
   if (c.lining_alpha >= 0) out.lining_alpha = c.lining_alpha;
   out.stress_rel_l2_end = stress_rel_l2(m, fdem_end, c.end, engine_active, bolted, reach);
   if (c.handoff.alpha >= 0)
-    out.stress_rel_l2_handoff =
-        stress_rel_l2(m, fdem_start, c.handoff, fdem_handoff.active, bolted, reach);
+    out.stress_rel_l2_handoff = stress_rel_l2(m, fdem_start, c.handoff_field(fdem_handoff),
+                                              fdem_handoff.active, bolted, reach);
   out.key_points = key_points(e, fdem_handoff, c, monitors);
   std::vector<Profile> profiles;
   const RockLocator rock(m);

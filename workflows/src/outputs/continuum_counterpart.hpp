@@ -27,14 +27,21 @@
 namespace rockfdem::workflows {
 
 struct ContinuumStates {
-  std::string model;                  ///< "elastic" or "mohr_coulomb"
-  insitu::InsituField handoff;        ///< at the implicit stage's last alpha
+  std::string model;            ///< "elastic" or "mohr_coulomb"
+  insitu::InsituField handoff;  ///< at the implicit stage's last alpha
+  /// The run hands over that very field ("last" rule) and holds it whole:
+  /// `handoff` then keeps its alpha alone, not a second copy of its arrays.
+  bool handoff_is_runs = false;
   insitu::InsituField end;            ///< core removed, support (lining) in
   std::vector<double> alphas;         ///< the sequence solved
   double lining_alpha = -1;           ///< alpha at which the lining joined; -1: none
   std::vector<std::uint8_t> yielded;  ///< Mohr-Coulomb: per triangle, ever flowed
   std::size_t n_yielded = 0;
   double seconds = 0;  ///< wall time of the solve
+  /// The hand-off's arrays: `handoff`'s, or `runs` (the run's hand-off field).
+  const insitu::InsituField& handoff_field(const insitu::InsituField& runs) const {
+    return handoff_is_runs ? runs : handoff;
+  }
 };
 
 /// FDEM (the hand-off field and the engine's final state) against the

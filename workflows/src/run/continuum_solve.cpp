@@ -179,6 +179,7 @@ std::optional<CounterpartTail> counterpart_tail(const Scene& scene, insitu::Insi
       !(whole.lining.install_alpha < spec.alphas.back()))
     return std::nullopt;
   t.implicit_alphas = n;
+  t.handoff_is_runs = !scene.insitu.handoff_first_crack;
   spec.alphas = whole.alphas;
   spec.lining = whole.lining;
   return t;
@@ -187,7 +188,12 @@ std::optional<CounterpartTail> counterpart_tail(const Scene& scene, insitu::Insi
 void CounterpartTail::take(insitu::InsituField& f) {
   const bool last = seen + 1 == states.alphas.size();
   if (seen + 1 == implicit_alphas) {
-    states.handoff = f;  // a copy: the implicit stage's sampler may free these arrays
+    if (handoff_is_runs) {  // the run holds it whole until the comparison
+      states.handoff.alpha = f.alpha;
+      states.handoff_is_runs = true;
+    } else {
+      states.handoff = f;  // a copy: the implicit stage's sampler may free these arrays
+    }
     if (last) states.end = f;
   } else if (seen >= implicit_alphas) {
     states.seconds += f.total_seconds;

@@ -48,11 +48,13 @@ struct ContinuumReferences {
 /// so the implicit stage goes on to its end instead of the counterpart
 /// solving those alphas again. `take` is called with every field of that
 /// solve, in order, before the implicit stage's own sampling: it copies the
-/// counterpart's hand-off (the implicit stage's last alpha), keeps the
-/// end's arrays and frees the rest of the tail's.
+/// counterpart's hand-off (the implicit stage's last alpha) unless the run
+/// hands over that field itself (`handoff_is_runs`), keeps the end's arrays
+/// and frees the rest of the tail's.
 struct CounterpartTail {
   ContinuumStates states;  ///< seconds: the tail's alone
   std::size_t implicit_alphas = 0, seen = 0;
+  bool handoff_is_runs = false;  ///< the scene's rule hands over the last alpha's field
   void take(insitu::InsituField& f);
 };
 
