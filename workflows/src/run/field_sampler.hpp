@@ -47,6 +47,7 @@ class FieldSampler {
   std::vector<KeyPointVertex> key_points_;
   StrengthRatio strength_ratio_;
   Hold hold_ = Hold::kAll;
+  std::size_t fields_in_solve_ = 0;  ///< the attached spec's alphas
   bool past_first_crack_ = false;
   std::vector<ImplicitSample> samples_;
   insitu::InsituField held_;  ///< Hold::kHandoff: the candidate's arrays
