@@ -128,12 +128,14 @@ constexpr double kBytesPerAlphaTriangle = 40;
 constexpr double kMemoryMargin = 1.5;
 
 // The implicit fields a run holds whole at once (run/field_sampler.hpp):
-// the hand-off's candidate and the field just solved; with
+// under insitu.handoff = "last" the last alpha's alone; under
+// "first_crack" the hand-off's candidate and the field just solved; with
 // insitu.install_at_face_distance every alpha's and the one being solved
 // (the open hole's, then the installation's).
 double fields_held(const Scene& s) {
   const double n = double(s.insitu.alpha.size());
-  return s.insitu.install_at_face_distance ? n + 1 : std::min(n, 2.0);
+  if (s.insitu.install_at_face_distance) return n + 1;
+  return s.insitu.handoff_first_crack ? std::min(n, 2.0) : std::min(n, 1.0);
 }
 
 double peak_bytes(const Scene& s, const Estimate& e) {
@@ -237,16 +239,17 @@ constexpr double kOutputSeconds = 0.005;
 constexpr double kPicturesSeconds = 4.0;
 constexpr double kPicturesSecondsPerTriangle = 0.03e-3;
 constexpr double kProbeMemoryMargin = 1.25;
-// What a tunnel run holds above the probe: the implicit solves (the sparse
-// factor grows faster than the mesh), the fields the outputs keep, the
-// continuum counterpart (solved before the engine is built, so its solve
-// and the engine are not held at once) and the frames. Peak RSS on
-// tunnel-seed-oneshot.toml (2 threads, 300 explicit steps, docs/benchmarks.md):
-// 169, 253 and 610 MiB at 16,284, 111,446 and 419,852 triangles over
-// probes of 169, 169 and 407 MiB (the start-up's high-water mark is the
-// floor of both); 400 B per triangle keeps 111k 8% below its bound and
-// puts 420k's bound 1.23 times above its peak.
-constexpr double kImplicitBytesPerTriangle = 400;
+// What a tunnel run holds above the probe: the implicit solves (deal.II's
+// grid and PETSc's matrix and hierarchy, freed before the engine is
+// built), the fields the outputs keep and the frames. Peak RSS on
+// tunnel-seed-oneshot.toml (2 threads, 300 explicit steps,
+// docs/benchmarks.md "check's bound after the run's peak fell"): 169.6,
+// 169.0 and 393.4 MiB at 16,284, 111,446 and 419,852 triangles over probes
+// of 169.5, 169.4 and 391.6 MiB (the start-up's high-water mark is the
+// floor of both); at 3,337,814 triangles the implicit stage peaked 78 MiB
+// (24 B per triangle) above the engine's set-up. 100 B per triangle keeps
+// every bound at least 26% above its run.
+constexpr double kImplicitBytesPerTriangle = 100;
 
 // Output steps at most: each stage's (and its last), or the specimen's.
 double output_steps(const Scene& s) {
