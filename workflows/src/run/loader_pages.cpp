@@ -6,7 +6,8 @@
 // by what the run never touches again. madvise(MADV_DONTNEED) on a private
 // file mapping re-reads untouched pages from the file, but would discard the
 // private copy of a written page: only mappings with no such copy
-// ("Anonymous: 0 kB" in smaps) and no write permission are dropped.
+// ("Anonymous: 0 kB" and "Swap: 0 kB" in smaps) and no write permission
+// are dropped.
 #include "run/loader_pages.hpp"
 
 #include <sys/mman.h>
@@ -68,7 +69,11 @@ std::size_t release_loader_pages() {
       dropped += drop(current);
       current = parse_header(line);
     } else if (line.rfind("Anonymous:", 0) == 0) {
-      current.written = std::stoull(line.substr(10)) != 0;
+      current.written = current.written || std::stoull(line.substr(10)) != 0;
+    } else if (line.rfind("Swap:", 0) == 0) {
+      // A written page swapped out is no longer "Anonymous": dropping it
+      // would read the file's unrelocated bytes back.
+      current.written = current.written || std::stoull(line.substr(5)) != 0;
     }
   }
   return dropped + drop(current);
