@@ -116,7 +116,8 @@ Estimate estimate(const Scene& s) {
 // Peak memory of a run: the libraries' baseline plus, per triangle, the
 // mesh and the implicit stage (measured 0.65 kB per triangle of peak RSS
 // growth between 107k and 390k triangles, `rockfdem insitu`) and the engine
-// (1100 B per triangle, below), with the implicit fields the outputs keep;
+// (1100 B per triangle, below), with the implicit fields the outputs keep
+// (and a direct counterpart's factor, kDirectCounterpartBytesPerTriangle);
 // and each implicit field held whole (stress, activity, displacements: 37 B
 // per triangle measured, 1000 alphas all held on the default tunnel's 8,798
 // triangles peaking at 582 MB). A 2M-triangle .msh peaked at 2,520 B per
@@ -128,7 +129,9 @@ constexpr double kBytesPerAlphaTriangle = 40;
 constexpr double kMemoryMargin = 1.5;
 
 // The implicit fields a run holds whole at once (run/field_sampler.hpp):
-// under insitu.handoff = "last" the last alpha's alone; under
+// under insitu.handoff = "last" the last alpha's alone (and, while the
+// counterpart's tail is solved after it, that tail's field: not where the
+// peak is); under
 // "first_crack" the hand-off's candidate and the field just solved; with
 // insitu.install_at_face_distance every alpha's and the one being solved
 // (the open hole's, then the installation's).
@@ -138,8 +141,22 @@ double fields_held(const Scene& s) {
   return s.insitu.handoff_first_crack ? std::min(n, 2.0) : std::min(n, 1.0);
 }
 
+// A Mohr-Coulomb or post-peak counterpart is factored by UMFPACK on the
+// whole mesh before the engine is built: 1.75 GiB of peak RSS for the 440k
+// factorisation (docs/benchmarks.md, "In-situ stage: bench_insitu and the
+// tests"), about 4.2 kB per triangle, and more than linear in the
+// mesh. The elastic counterpart is solved by AMG-CG like the implicit stage.
+constexpr double kDirectCounterpartBytesPerTriangle = 4200;
+
+double counterpart_bytes_per_triangle(const Scene& s) {
+  const bool direct = s.insitu.continuum == "mohr_coulomb" || s.insitu.continuum_post_peak;
+  return direct ? kDirectCounterpartBytesPerTriangle : 0.0;
+}
+
 double peak_bytes(const Scene& s, const Estimate& e) {
-  return kBaseBytes + (kBytesPerTriangle + kBytesPerAlphaTriangle * fields_held(s)) * e.triangles;
+  return kBaseBytes + (kBytesPerTriangle + kBytesPerAlphaTriangle * fields_held(s) +
+                       counterpart_bytes_per_triangle(s)) *
+                          e.triangles;
 }
 
 double machine_bytes() { return double(sysconf(_SC_PHYS_PAGES)) * double(sysconf(_SC_PAGE_SIZE)); }
@@ -281,7 +298,8 @@ RunTimeFigures probe_run_time(const Scene& s, const Probe& p, double expected) {
 }
 
 double probe_bytes(const Scene& s, const Probe& p) {
-  return p.rss_bytes + (kImplicitBytesPerTriangle + kBytesPerAlphaTriangle * fields_held(s)) *
+  return p.rss_bytes + (kImplicitBytesPerTriangle + kBytesPerAlphaTriangle * fields_held(s) +
+                        counterpart_bytes_per_triangle(s)) *
                            double(p.triangles);
 }
 
@@ -323,10 +341,11 @@ void print_probe(const Scene& scene, const Probe& p, double cp) {
   std::printf(
       "  peak memory (bound):        %.1f MiB at most, of %.1f MiB on this machine (bound: "
       "%.1f MiB measured after meshing and building the engine + %.0f B per triangle + %.0f "
-      "B per triangle per implicit field held, x %.2f margin)\n",
+      "B per triangle per implicit field held + %.0f B per triangle for a direct "
+      "counterpart's factor, x %.2f margin)\n",
       kProbeMemoryMargin * probe_bytes(scene, p) / 1048576.0, machine_bytes() / 1048576.0,
       p.rss_bytes / 1048576.0, kImplicitBytesPerTriangle, kBytesPerAlphaTriangle,
-      kProbeMemoryMargin);
+      counterpart_bytes_per_triangle(scene), kProbeMemoryMargin);
   print_step_counts(scene);
   const double transit = transit_steps(scene, p.dt_stages, cp);
   const double expected = expected_steps(scene, transit);
@@ -386,9 +405,11 @@ void print_constants(const Scene& scene, const Estimate& e, double cp, int threa
   }
   std::printf(
       "  peak memory (bound):        %.1f MiB at most, of %.1f MiB on this machine (256 MiB "
-      "+ %.0f B per triangle + %.0f B per triangle per implicit field held, x %.1f margin)\n",
+      "+ %.0f B per triangle + %.0f B per triangle per implicit field held + %.0f B per "
+      "triangle for a direct counterpart's factor, x %.1f margin)\n",
       kMemoryMargin * peak_bytes(scene, e) / 1048576.0, machine_bytes() / 1048576.0,
-      kBytesPerTriangle, kBytesPerAlphaTriangle, kMemoryMargin);
+      kBytesPerTriangle, kBytesPerAlphaTriangle, counterpart_bytes_per_triangle(scene),
+      kMemoryMargin);
   print_step_counts(scene);
   std::printf(
       "  run time (bound):           %.0f s at most on %d idle thread%s (measured throughput "
