@@ -62,8 +62,9 @@ void apply_to_arrays(Vec in, Vec out, const double* src, double* dst, Mat matrix
   check(VecResetArray(out), "VecResetArray");
 }
 
-// What the set-up keeps for a numeric rebuild that never comes (a new
-// matrix gets a new hierarchy): the Galerkin and prolongator products'
+// What the set-up keeps for a numeric rebuild that never comes
+// (PCSetReusePreconditioner keeps this hierarchy through changed values,
+// and a rebuild is a new object): the Galerkin and prolongator products'
 // intermediate data and the near-null space's three vectors.
 void drop_setup_data(PC pc, Mat matrix) {
   PetscInt levels = 0;
