@@ -29,7 +29,8 @@
 //      (summary.json "timings"), the process's peak resident memory and per
 //      triangle, the engine's own bytes per triangle, the tunnel's explicit
 //      triangle-steps/s, the bench's median at the same size, its lowest
-//      and highest, and the ratio to the median;
+//      and highest, and the ratio to the median; a line under the table
+//      where the repeats lie more than 20% apart (the ratio not settled);
 //   2. per run: the peak resident memory by the end of each phase
 //      (summary.json "peak_memory_mib"), which says which phase sets the peak;
 //   3. per size: whether every thread count gave the same state hash.
@@ -286,6 +287,24 @@ void print_header(const Options& o) {
             << " time(s); the ratio is to the bench's median.\n\n";
 }
 
+// The bench's repeats more than 20% apart: the machine's speed changed
+// between them (on the 2-core development VM both vCPUs stay fully busy
+// with no steal time, yet the bench runs at about 22 M or 31 M
+// triangle-steps/s, switching between runs), so one ratio is not settled.
+void warn_unsettled(const std::vector<Run>& runs) {
+  constexpr double kSpread = 1.2;
+  for (const Run& r : runs)
+    if (r.ucs_rates.size() > 1 && r.ucs_rates.back() > kSpread * r.ucs_rates.front())
+      std::cout << "\n"
+                << run_name(r) << ": the bench's repeats span " << mega(r.ucs_rates.front())
+                << " - " << mega(r.ucs_rates.back())
+                << ": this machine's speed changed during the measurement, and the ratio to "
+                   "the median is not settled (tunnel / highest "
+                << (r.tunnel_rate ? fixed(*r.tunnel_rate / r.ucs_rates.back(), 2) : "-")
+                << ", tunnel / lowest "
+                << (r.tunnel_rate ? fixed(*r.tunnel_rate / r.ucs_rates.front(), 2) : "-") << ").\n";
+}
+
 void print_runs(const std::vector<Run>& runs) {
   std::cout << "| size_near [m] | triangles | threads | explicit steps | status | mesh [s] | "
                "insitu [s] | total [s] | peak [MiB] | peak [B/tri] | engine [B/tri] | tunnel "
@@ -308,6 +327,7 @@ void print_runs(const std::vector<Run>& runs) {
                       : mega(r.ucs_rates.front()) + " - " + mega(r.ucs_rates.back()))
               << " | " << (both ? fixed(*r.tunnel_rate / *r.ucs_rate, 2) : "-") << " |\n";
   }
+  warn_unsettled(runs);
 }
 
 // The run's phases in the order a tunnel run passes them, then any others.
