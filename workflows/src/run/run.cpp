@@ -113,6 +113,11 @@ void refuse_unsupported(const Scene& scene) {
 
 Run::Run(const Scene& scene, const RunContext& ctx) : StagedRun(scene, ctx) {}
 
+std::vector<insitu::InsituField> Run::solve_fields(const insitu::InsituSpec& spec) {
+  return keeping_threads(ctx(),
+                         [&] { return insitu::solve_insitu(mesh(), returning_code_pages(spec)); });
+}
+
 int Run::run() {
   make_mesh();
   stop_if_interrupted("meshing");
@@ -155,8 +160,7 @@ void Run::solve_insitu() {
   if (!counterpart_) {
     sampler.emplace(scene(), mesh());
     const insitu::InsituSpec spec = sampler->attach(insitu_spec(scene()), hold);
-    fields_ = keeping_threads(
-        ctx(), [&] { return insitu::solve_insitu(mesh(), returning_code_pages(spec)); });
+    fields_ = solve_fields(spec);
   }
   samples_ = sampler->take(fields_);
   if (face) install_at_face_distance(*sampler);
@@ -183,8 +187,7 @@ std::optional<ContinuumStates> Run::solve_with_counterpart(FieldSampler& sampler
     t.take(f);
     if (implicit) own(f);
   };
-  fields_ = keeping_threads(
-      ctx(), [&] { return insitu::solve_insitu(mesh(), returning_code_pages(spec)); });
+  fields_ = solve_fields(spec);
   fields_.resize(tail->implicit_alphas);
   return std::move(tail->states);
 }
@@ -201,10 +204,8 @@ void Run::install_at_face_distance(FieldSampler& sampler) {
   std::vector<ImplicitSample> curve = samples_;
   if (curve.back().alpha > 0) {
     spec.alphas = {0.0};
-    std::vector<insitu::InsituField> open = keeping_threads(ctx(), [&] {
-      return insitu::solve_insitu(
-          mesh(), returning_code_pages(sampler.attach(spec, FieldSampler::Hold::kNone)));
-    });
+    std::vector<insitu::InsituField> open =
+        solve_fields(sampler.attach(spec, FieldSampler::Hold::kNone));
     curve.push_back(sampler.take(open)[0]);
   }
   const FaceDistanceFigures f = face_distance_installation(scene(), mesh(), curve);
@@ -216,10 +217,8 @@ void Run::install_at_face_distance(FieldSampler& sampler) {
                                 [&](const ImplicitSample& x) { return below(x.alpha); }),
                  samples_.end());
   spec.alphas = {f.alpha};
-  std::vector<insitu::InsituField> at = keeping_threads(ctx(), [&] {
-    return insitu::solve_insitu(
-        mesh(), returning_code_pages(sampler.attach(spec, FieldSampler::Hold::kAll)));
-  });
+  std::vector<insitu::InsituField> at =
+      solve_fields(sampler.attach(spec, FieldSampler::Hold::kAll));
   samples_.push_back(sampler.take(at)[0]);
   fields_.push_back(std::move(at[0]));
   outputs().record_face_distance(f, std::move(curve));

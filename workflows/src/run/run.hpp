@@ -31,6 +31,9 @@ class Run : StagedRun<RunOutputs> {
   int run();
 
  private:
+  /// The implicit solve of `spec` on the run's threads, each field's code
+  /// pages given back once it is out (returning_code_pages).
+  std::vector<insitu::InsituField> solve_fields(const insitu::InsituSpec& spec);
   // The phases, in the order run() calls them.
   void solve_insitu();
   std::optional<ContinuumStates> solve_with_counterpart(FieldSampler& sampler,
