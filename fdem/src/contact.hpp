@@ -59,14 +59,19 @@ struct ContactData {
   double penalty = 0, buffer = 0;
   std::vector<double> mu;  ///< per material: tan(residual friction angle)
   // Detection results.
-  std::vector<int> candidates;     ///< free-surface triangles, ascending
-  std::vector<double> boxes;       ///< 4 per candidate, grown by buffer / 2
-  std::vector<int> watch_nodes;    ///< nodes of the candidates (displacement check)
-  std::vector<double> detect_pos;  ///< per node: position at the last detection
-  std::vector<std::array<int, 2>> pairs, old_pairs;  ///< triangle ids, canonical order
-  std::vector<double> friction, old_friction;        ///< 6 per pair: role x contactor edge
-  std::vector<double> pair_force;                    ///< 12 per pair: A's corners, B's corners
-  std::vector<double> energy_partial;  ///< 2 per block of kPairBlock pairs: friction, damping
+  std::vector<int> candidates;            ///< free-surface triangles, ascending
+  std::vector<double> boxes;              ///< 4 per candidate, grown by buffer / 2
+  std::vector<int> watch_nodes;           ///< nodes of the candidates (displacement check)
+  std::vector<float> detect_shift;        ///< per node, interleaved: its position at the last
+                                          ///< detection less its mesh vertex's (a displacement:
+                                          ///< single precision rounds it by ~1e-7 of itself, where
+                                          ///< an absolute coordinate would lose ~1e-7 of the
+                                          ///< model's extent); EngineData::detected_position()
+  std::vector<std::array<int, 2>> pairs;  ///< triangle ids, canonical order
+  std::vector<double> friction;           ///< 6 per pair: role x contactor edge
+  std::vector<double> pair_force;         ///< 12 per pair: A's corners, B's corners; between
+                                          ///< contact passes a detection's scratch
+  std::vector<double> energy_partial;     ///< 2 per block of kPairBlock pairs: friction, damping
   std::vector<int> gather_tri, gather_start, gather_entry;  ///< CSR triangle -> 2 pair + side
   GridScratch grid;
   BreakScratch breaks;

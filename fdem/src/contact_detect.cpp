@@ -128,20 +128,24 @@ void build_candidates(EngineData& d) {
 /// whose boxes touch only diagonally (the alternating-diagonal mesh puts
 /// such free-surface triangles at every corner).
 bool separated(const EngineData& d, int a, int b, double gap) {
-  const double* p = d.contact.detect_pos.data();
-  const int* tri[2] = {&d.tris.nodes[3 * a], &d.tris.nodes[3 * b]};
-  for (int side = 0; side < 2; ++side) {
-    const int* own = tri[side];
-    const int* other = tri[1 - side];
+  double px[2][3], py[2][3];  // the corners at the detection
+  for (int side = 0; side < 2; ++side)
     for (int k = 0; k < 3; ++k) {
-      const int i = own[k], j = own[(k + 1) % 3];
+      const int node = d.tris.nodes[3 * (side == 0 ? a : b) + k];
+      px[side][k] = d.detected_position(node, 0);
+      py[side][k] = d.detected_position(node, 1);
+    }
+  for (int side = 0; side < 2; ++side) {
+    const int other = 1 - side;
+    for (int k = 0; k < 3; ++k) {
+      const int i = k, j = (k + 1) % 3;
       // Outward normal of edge i->j (counter-clockwise), unnormalised.
-      const double nx = p[2 * j + 1] - p[2 * i + 1], ny = p[2 * i] - p[2 * j];
+      const double nx = py[side][j] - py[side][i], ny = px[side][i] - px[side][j];
       const double len = std::sqrt(nx * nx + ny * ny);
-      const double base = nx * p[2 * i] + ny * p[2 * i + 1];
+      const double base = nx * px[side][i] + ny * py[side][i];
       double nearest = 1e300;
       for (int q = 0; q < 3; ++q)
-        nearest = std::min(nearest, nx * p[2 * other[q]] + ny * p[2 * other[q] + 1] - base);
+        nearest = std::min(nearest, nx * px[other][q] + ny * py[other][q] - base);
       if (nearest > gap * len) return true;
     }
   }
@@ -179,12 +183,16 @@ bool may_touch(const void* context, int i, int j) {
 /// Triangle t's box at the detection positions, grown by half the buffer.
 void triangle_box(const EngineData& d, int t, double* b) {
   const double grow = 0.5 * d.contact.buffer;
-  const double* p = d.contact.detect_pos.data();
   const int* nd = &d.tris.nodes[3 * t];
-  b[0] = std::min({p[2 * nd[0]], p[2 * nd[1]], p[2 * nd[2]]}) - grow;
-  b[1] = std::min({p[2 * nd[0] + 1], p[2 * nd[1] + 1], p[2 * nd[2] + 1]}) - grow;
-  b[2] = std::max({p[2 * nd[0]], p[2 * nd[1]], p[2 * nd[2]]}) + grow;
-  b[3] = std::max({p[2 * nd[0] + 1], p[2 * nd[1] + 1], p[2 * nd[2] + 1]}) + grow;
+  double x[3], y[3];
+  for (int k = 0; k < 3; ++k) {
+    x[k] = d.detected_position(nd[k], 0);
+    y[k] = d.detected_position(nd[k], 1);
+  }
+  b[0] = std::min({x[0], x[1], x[2]}) - grow;
+  b[1] = std::min({y[0], y[1], y[2]}) - grow;
+  b[2] = std::max({x[0], x[1], x[2]}) + grow;
+  b[3] = std::max({y[0], y[1], y[2]}) + grow;
 }
 
 void build_boxes(EngineData& d) {
@@ -198,32 +206,44 @@ inline bool boxes_overlap(const double* a, const double* b) {
   return a[0] <= b[2] && b[0] <= a[2] && a[1] <= b[3] && b[1] <= a[3];
 }
 
-/// Friction springs of pairs found again keep their state (both lists are
-/// sorted, so one merge walk). Returns the stored energy of the old pairs
-/// not found again minus that of the new pairs: what the detection itself
-/// changed. New pairs can start overlapping (the faces of a crack element
-/// broken in compression); dropped ones are mostly apart, but a re-joined
-/// crack's faces stop being a pair wherever they are.
+/// Replaces the pairs by those the grid found (c.grid.found, candidate
+/// indices, in canonical order). Friction springs of pairs found again keep
+/// their state (both lists are sorted, so one merge walk); the new springs
+/// are assembled in pair_force, scratch until the next contact pass writes
+/// it, so that the old lists need no second copy. Returns the stored energy
+/// of the old pairs not found again minus that of the new pairs: what the
+/// detection itself changed. New pairs can start overlapping (the faces of
+/// a crack element broken in compression); dropped ones are mostly apart,
+/// but a re-joined crack's faces stop being a pair wherever they are.
 double carry_friction(EngineData& d) {
+  static constexpr double kNoSprings[6] = {};
   ContactData& c = d.contact;
-  c.friction.assign(6 * c.pairs.size(), 0.0);
+  const auto& found = c.grid.found;
+  const std::size_t n = found.size();
+  c.pair_force.resize(12 * n);
+  double* spring = c.pair_force.data();
   const Placement at = half_step_placement(d);
   double change = 0.0;
+  auto dropped = [&](std::size_t o) {
+    return contact_pair_energy(d, c.pairs[o][0], c.pairs[o][1], &c.friction[6 * o], at);
+  };
   std::size_t o = 0;
-  for (std::size_t i = 0; i < c.pairs.size(); ++i) {
-    for (; o < c.old_pairs.size() && c.old_pairs[o] < c.pairs[i]; ++o)
-      change +=
-          contact_pair_energy(d, c.old_pairs[o][0], c.old_pairs[o][1], &c.old_friction[6 * o], at);
-    if (o < c.old_pairs.size() && c.old_pairs[o] == c.pairs[i]) {
-      std::copy_n(&c.old_friction[6 * o], 6, &c.friction[6 * i]);
+  for (std::size_t i = 0; i < n; ++i) {
+    const std::array<int, 2> p = {c.candidates[found[i][0]], c.candidates[found[i][1]]};
+    for (; o < c.pairs.size() && c.pairs[o] < p; ++o) change += dropped(o);
+    if (o < c.pairs.size() && c.pairs[o] == p) {
+      std::copy_n(&c.friction[6 * o], 6, &spring[6 * i]);
       ++o;
     } else {
-      change -= contact_pair_energy(d, i, at);
+      std::fill_n(&spring[6 * i], 6, 0.0);
+      change -= contact_pair_energy(d, p[0], p[1], kNoSprings, at);
     }
   }
-  for (; o < c.old_pairs.size(); ++o)
-    change +=
-        contact_pair_energy(d, c.old_pairs[o][0], c.old_pairs[o][1], &c.old_friction[6 * o], at);
+  for (; o < c.pairs.size(); ++o) change += dropped(o);
+  c.pairs.resize(n);
+  for (std::size_t i = 0; i < n; ++i)
+    c.pairs[i] = {c.candidates[found[i][0]], c.candidates[found[i][1]]};
+  c.friction.assign(spring, spring + 6 * n);
   return change;
 }
 
@@ -348,26 +368,25 @@ void trial_pairs(EngineData& d) {
   s.trial.erase(std::unique(s.trial.begin(), s.trial.end()), s.trial.end());
 }
 
-/// Merges the accepted new pairs s.found into the pairs: old pairs keep
-/// their friction springs, new ones start at zero. Returns minus the stored
-/// energy of the new pairs (the handover, as in carry_friction).
+/// Merges the accepted new pairs s.found into the pairs, in place from the
+/// back (every old pair moves up or stays): old pairs keep their friction
+/// springs, new ones start at zero. Returns minus the stored energy of the
+/// new pairs (the handover, as in carry_friction).
 double insert_pairs(EngineData& d) {
   ContactData& c = d.contact;
   const BreakScratch& s = c.breaks;
-  std::swap(c.old_pairs, c.pairs);
-  std::swap(c.old_friction, c.friction);
-  const std::size_t n = c.old_pairs.size() + s.found.size();
+  std::size_t i = c.pairs.size(), j = s.found.size();
+  const std::size_t n = i + j;
   c.pairs.resize(n);
   c.friction.resize(6 * n);
-  std::size_t i = 0, j = 0;
-  for (std::size_t k = 0; k < n; ++k) {
-    if (j == s.found.size() || (i < c.old_pairs.size() && c.old_pairs[i] < s.found[j])) {
-      c.pairs[k] = c.old_pairs[i];
-      std::copy_n(&c.old_friction[6 * i], 6, &c.friction[6 * k]);
-      ++i;
+  for (std::size_t k = n; j > 0; --k) {  // once the new ones are placed, the rest stays
+    if (i > 0 && s.found[j - 1] < c.pairs[i - 1]) {
+      --i;
+      c.pairs[k - 1] = c.pairs[i];
+      std::copy_n(&c.friction[6 * i], 6, &c.friction[6 * (k - 1)]);
     } else {
-      c.pairs[k] = s.found[j++];
-      std::fill_n(&c.friction[6 * k], 6, 0.0);
+      c.pairs[k - 1] = s.found[--j];
+      std::fill_n(&c.friction[6 * (k - 1)], 6, 0.0);
     }
   }
   const Placement at = half_step_placement(d);
@@ -445,19 +464,19 @@ void contact_detect(EngineData& d) {
   if (c.topology_dirty) build_candidates(d);
   c.topology_dirty = false;
   // Boxes, the separation test and the drift check all start from here.
-  c.detect_pos.assign(d.nodes.pos.begin(), d.nodes.pos.end());
+  c.detect_shift.resize(d.nodes.pos.size());
+  const long nn = static_cast<long>(d.nodes.size());
+#pragma omp parallel for schedule(static) num_threads(thread_count(d.threads)) if (nn > 65536)
+  for (long i = 0; i < nn; ++i)
+    for (int axis = 0; axis < 2; ++axis)
+      c.detect_shift[2 * i + axis] =
+          static_cast<float>(d.nodes.pos[2 * i + axis] - d.nodes.mesh_position(i, axis));
   build_boxes(d);
-  std::swap(c.old_pairs, c.pairs);
-  std::swap(c.old_friction, c.friction);
   grid_pairs(c.boxes, may_touch, &d, d.threads, c.grid, c.grid.found);
-  c.pairs.resize(c.grid.found.size());
-  for (std::size_t i = 0; i < c.pairs.size(); ++i)
-    c.pairs[i] = {c.candidates[c.grid.found[i][0]], c.candidates[c.grid.found[i][1]]};
   // The broken faces' handover to contact: booked with the fracture energy
   // that released the crack's compressive penalty (energy.hpp).
   const double handover = carry_friction(d);
   if (d.energy.started) d.energy.fracture += handover;
-  c.pair_force.resize(12 * c.pairs.size());
   c.energy_partial.resize(2 * ((c.pairs.size() + kPairBlock - 1) / kPairBlock));
   build_gather(d);
   c.dirty = false;
@@ -465,7 +484,7 @@ void contact_detect(EngineData& d) {
 }
 
 // Breakage without a full detection. The last detection (at positions x0,
-// kept in detect_pos) found every candidate pair whose boxes, grown by half
+// kept in detect_shift) found every candidate pair whose boxes, grown by half
 // the buffer, overlap; it is repeated before any watched node has moved
 // more than half the buffer from x0, so no other pair can touch before
 // then. A broken crack element only adds: its two triangles may become

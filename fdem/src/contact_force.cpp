@@ -207,8 +207,8 @@ double watched_drift2(const EngineData& d) {
               : worst) if (n > 16384)
   for (long i = 0; i < n; ++i) {
     const int node = c.watch_nodes[i];
-    const double dx = d.nodes.pos[2 * node] - c.detect_pos[2 * node];
-    const double dy = d.nodes.pos[2 * node + 1] - c.detect_pos[2 * node + 1];
+    const double dx = d.nodes.pos[2 * node] - d.detected_position(node, 0);
+    const double dy = d.nodes.pos[2 * node + 1] - d.detected_position(node, 1);
     worst = std::max(worst, dx * dx + dy * dy);
   }
   return worst;

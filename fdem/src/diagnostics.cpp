@@ -149,11 +149,10 @@ std::vector<MemoryPart> memory_parts(const detail::EngineData& d) {
             d.slots, d.block_partial, d.energy_partial, d.vertex_nodes, d.vertex_node_start);
   const auto& k = d.contact;
   add_parts(p, "contact",
-            "candidates boxes watch_nodes detect_pos pairs old_pairs friction "
-            "old_friction pair_force gather_tri gather_start gather_entry energy_partial",
-            k.candidates, k.boxes, k.watch_nodes, k.detect_pos, k.pairs, k.old_pairs, k.friction,
-            k.old_friction, k.pair_force, k.gather_tri, k.gather_start, k.gather_entry,
-            k.energy_partial);
+            "candidates boxes watch_nodes detect_shift pairs friction pair_force "
+            "gather_tri gather_start gather_entry energy_partial",
+            k.candidates, k.boxes, k.watch_nodes, k.detect_shift, k.pairs, k.friction, k.pair_force,
+            k.gather_tri, k.gather_start, k.gather_entry, k.energy_partial);
   const auto& g = k.grid;
   add_parts(p, "contact.grid", "cell cell_start items count offset found", g.cell, g.cell_start,
             g.items, g.count, g.offset, g.found);

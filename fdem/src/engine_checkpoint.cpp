@@ -139,7 +139,7 @@ void fields(Ar& ar, Cracks& c) {
 
 template <class Ar>
 void fields(Ar& ar, ContactData& c) {
-  ROCKFDEM_CHECKPOINT_MEMBERS(ContactData, 27);
+  ROCKFDEM_CHECKPOINT_MEMBERS(ContactData, 25);
   ar.tag("CONT");
   ar.state(c.settings);
   ar.state(c.penalty);  // set_contact may come after construction: all of it is state
@@ -148,11 +148,9 @@ void fields(Ar& ar, ContactData& c) {
   ar.state(c.candidates);
   ar.state(c.boxes);
   ar.state(c.watch_nodes);
-  ar.state(c.detect_pos);  // boxes of later candidates and the drift check start here
-  ar.state(c.pairs);       // in their canonical order, not detected again
-  ar.state(c.old_pairs);
-  ar.state(c.friction);  // the tangential springs
-  ar.state(c.old_friction);
+  ar.state(c.detect_shift);  // boxes of later candidates and the drift check start here
+  ar.state(c.pairs);         // in their canonical order, not detected again
+  ar.state(c.friction);      // the tangential springs
   ar.state(c.pair_force);
   ar.state(c.gather_tri);
   ar.state(c.gather_start);

@@ -185,6 +185,11 @@ struct EngineData {
   /// element takes the scalar loop (the reference the tests compare with).
   bool crack_batch = true;
   std::size_t crack_slot0() const { return 3 * tris.size(); }
+  /// Coordinate `axis` of node i at the last contact detection: the
+  /// reference of the boxes, the separation test and the drift check.
+  double detected_position(std::size_t i, int axis) const {
+    return nodes.mesh_position(i, axis) + double(contact.detect_shift[2 * i + axis]);
+  }
   /// Crack element e's triangle on `side` (0: its nodes 0, 1; 1: its nodes
   /// 3, 2), from the slots of the side's first node: the one triangle there
   /// that has the side's second node too. Not stored (8 B per element):
