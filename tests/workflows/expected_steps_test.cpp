@@ -144,5 +144,6 @@ TEST(ExpectedSteps, a_small_tunnels_run_takes_within_twice_the_steps_check_expec
     const double steps = read_json(out / "summary.json")["steps"].get<double>();
     EXPECT_GE(steps, 0.5 * expected) << sets << ": expected " << expected;
     EXPECT_LE(steps, 2.0 * expected) << sets << ": expected " << expected;
+    std::filesystem::remove_all(out);
   }
 }

@@ -151,6 +151,7 @@ TEST(OutputDir, force_leaves_a_folder_no_run_claimed_untouched) {
   const Result r = run("mesh " + kCircular + " -q --force -o " + out.string());
   ASSERT_EQ(r.code, 0) << r.output;
   for (const char* f : mine) EXPECT_TRUE(fs::exists(out / f)) << f;
+  fs::remove_all(out);
 }
 
 TEST(OutputDir, force_removes_an_earlier_runs_outputs_and_nothing_else) {
