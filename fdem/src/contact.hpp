@@ -15,7 +15,9 @@
 // free-surface nodes.
 #pragma once
 
+#include <algorithm>
 #include <array>
+#include <cmath>
 #include <vector>
 
 #include "contact_grid.hpp"
@@ -35,23 +37,81 @@ struct BreakScratch {
 };
 
 /// A contact triangle as the narrow phase reads it, packed once per step
-/// (contact_force.cpp): its corners, the target-side constants of the
-/// clipping and its bounding box, so that no pair gathers nodes or
-/// recomputes them.
-struct ContactTriangle {
+/// (contact_force.cpp): its corners and the target-side constants of the
+/// clipping, so that no pair gathers nodes or recomputes them. 32 doubles,
+/// aligned: a row is four whole cache lines.
+struct alignas(64) ContactTriangle {
   double x[3], y[3], vx[3], vy[3], m[3];
-  double two_a;                   ///< twice the area (corners counter-clockwise: > 0)
-  double gx[3], gy[3];            ///< gradients of the barycentric coordinates
-  double h;                       ///< smallest altitude (meaningful when two_a > 0)
-  double len[3], tx[3], ty[3];    ///< edge k (corners k -> k+1): length, unit tangent
-  double x_lo, x_hi, y_lo, y_hi;  ///< bounding box
+  double two_a;                 ///< twice the area (corners counter-clockwise: > 0)
+  double gx[3], gy[3];          ///< gradients of the barycentric coordinates
+  double h;                     ///< smallest altitude (meaningful when two_a > 0)
+  double len[3], tx[3], ty[3];  ///< edge k (corners k -> k+1): length, unit tangent
+};
+
+/// Fills c's twice-area, barycentric gradients, edge lengths and tangents
+/// and smallest altitude from its corners (c.x, c.y).
+inline void pack_geometry(ContactTriangle& c) {
+  c.two_a = (c.x[1] - c.x[0]) * (c.y[2] - c.y[0]) - (c.x[2] - c.x[0]) * (c.y[1] - c.y[0]);
+  const double inv2a = 1.0 / c.two_a;
+  for (int i = 0; i < 3; ++i) {
+    const int j = (i + 1) % 3, k = (i + 2) % 3;
+    c.gx[i] = (c.y[j] - c.y[k]) * inv2a;
+    c.gy[i] = (c.x[k] - c.x[j]) * inv2a;
+  }
+  double longest2 = 0;
+  for (int k = 0; k < 3; ++k) {
+    const double ex = c.x[(k + 1) % 3] - c.x[k], ey = c.y[(k + 1) % 3] - c.y[k];
+    const double len2 = ex * ex + ey * ey;
+    longest2 = std::max(longest2, len2);
+    c.len[k] = std::sqrt(len2);
+    c.tx[k] = ex / c.len[k];
+    c.ty[k] = ey / c.len[k];
+  }
+  // The smallest altitude from the longest edge (no hypot: the lengths are
+  // those of a mesh, far from overflow).
+  c.h = c.two_a / std::sqrt(longest2);
+}
+
+/// Whether an edge of s has all of o's corners outside it by more than a
+/// millionth of s's smallest altitude.
+inline bool edge_separates(const ContactTriangle& s, const ContactTriangle& o) {
+  constexpr double kApartGap = 1e-6;
+  const double gap = kApartGap * s.h;
+  for (int k = 0; k < 3; ++k) {
+    const double nx = s.ty[k], ny = -s.tx[k];  // outward (counter-clockwise corners)
+    double nearest = (o.x[0] - s.x[k]) * nx + (o.y[0] - s.y[k]) * ny;
+    nearest = std::min(nearest, (o.x[1] - s.x[k]) * nx + (o.y[1] - s.y[k]) * ny);
+    nearest = std::min(nearest, (o.x[2] - s.x[k]) * nx + (o.y[2] - s.y[k]) * ny);
+    if (nearest > gap) return true;
+  }
+  return false;
+}
+
+/// Whether two packed triangles of positive area are apart: an edge of
+/// either separates them. Most contact pairs whose boxes overlap are such
+/// neighbours (triangles around a vertex, apart across broken faces). The
+/// roles would find no edge inside the other triangle and give no force,
+/// reset springs and no dissipation; the gap (a millionth of the altitude,
+/// far above the rounding of the roles' barycentric coordinates) leaves
+/// every pair they could find touching to them, so the pair loop skips
+/// these without a change of any bit
+/// (`ContactRoles.pairs_called_apart_get_nothing_from_the_roles`).
+inline bool pair_apart(const ContactTriangle& a, const ContactTriangle& b) {
+  if (!(a.two_a > 0.0) || !(b.two_a > 0.0)) return false;  // a role keeps its springs there
+  return edge_separates(a, b) || edge_separates(b, a);
+}
+
+/// A contact triangle's bounding box, packed with it.
+struct ContactBox {
+  double x_lo, x_hi, y_lo, y_hi;
 };
 
 /// Per-step scratch of the narrow phase: rewritten at the start of every
-/// contact pass before it is read.
+/// contact pass before it is read. The pair loop tests the compact boxes
+/// first and reads the rows of the pairs whose boxes overlap only.
 struct NarrowScratch {
   std::vector<ContactTriangle> tris;  ///< per gather row (gather_tri)
-  std::vector<int> rows;              ///< per pair entry 2 q + side: its gather row
+  std::vector<ContactBox> boxes;      ///< per gather row
 };
 
 struct ContactData {
@@ -73,6 +133,8 @@ struct ContactData {
                                           ///< contact passes a detection's scratch
   std::vector<double> energy_partial;     ///< 2 per block of kPairBlock pairs: friction, damping
   std::vector<int> gather_tri, gather_start, gather_entry;  ///< CSR triangle -> 2 pair + side
+  std::vector<int> entry_row;  ///< per pair entry 2 pair + side: its gather row (the
+                               ///< inverse of gather_entry, built with it)
   GridScratch grid;
   BreakScratch breaks;
   NarrowScratch narrow;

@@ -283,6 +283,10 @@ void build_gather(EngineData& d) {
   for (std::size_t q = 0; q < np; ++q)
     for (int side = 0; side < 2; ++side)
       c.gather_entry[c.grid.offset[row[c.pairs[q][side]]]++] = static_cast<int>(2 * q + side);
+  c.entry_row.resize(2 * np);
+  for (std::size_t g = 0; g < c.gather_tri.size(); ++g)
+    for (int k = c.gather_start[g]; k < c.gather_start[g + 1]; ++k)
+      c.entry_row[c.gather_entry[k]] = static_cast<int>(g);
   for (int t : c.gather_tri) row[t] = -1;
 }
 

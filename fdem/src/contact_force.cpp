@@ -40,9 +40,9 @@ using Tri = ContactTriangle;
 
 /// Packs triangle t (its gather row): corners, 2A, the gradients of its
 /// barycentric coordinates, the smallest altitude, the edges' lengths and
-/// unit tangents and the bounding box, once per step instead of once per
+/// unit tangents, and its bounding box, once per step instead of once per
 /// pair and role.
-inline void pack(const EngineData& d, int t, Tri& c) {
+inline void pack(const EngineData& d, int t, Tri& c, ContactBox& box) {
   const int* nd = &d.tris.nodes[3 * t];
   for (int k = 0; k < 3; ++k) {
     c.x[k] = d.nodes.pos[2 * nd[k]];
@@ -51,29 +51,11 @@ inline void pack(const EngineData& d, int t, Tri& c) {
     c.vy[k] = d.nodes.vel[2 * nd[k] + 1];
     c.m[k] = d.nodes.mass[nd[k]];
   }
-  c.two_a = (c.x[1] - c.x[0]) * (c.y[2] - c.y[0]) - (c.x[2] - c.x[0]) * (c.y[1] - c.y[0]);
-  const double inv2a = 1.0 / c.two_a;
-  for (int i = 0; i < 3; ++i) {
-    const int j = (i + 1) % 3, k = (i + 2) % 3;
-    c.gx[i] = (c.y[j] - c.y[k]) * inv2a;
-    c.gy[i] = (c.x[k] - c.x[j]) * inv2a;
-  }
-  double longest2 = 0;
-  for (int k = 0; k < 3; ++k) {
-    const double ex = c.x[(k + 1) % 3] - c.x[k], ey = c.y[(k + 1) % 3] - c.y[k];
-    const double len2 = ex * ex + ey * ey;
-    longest2 = std::max(longest2, len2);
-    c.len[k] = std::sqrt(len2);
-    c.tx[k] = ex / c.len[k];
-    c.ty[k] = ey / c.len[k];
-  }
-  // The smallest altitude from the longest edge (no hypot: the lengths are
-  // those of a mesh, far from overflow).
-  c.h = c.two_a / std::sqrt(longest2);
-  c.x_lo = std::min({c.x[0], c.x[1], c.x[2]});
-  c.x_hi = std::max({c.x[0], c.x[1], c.x[2]});
-  c.y_lo = std::min({c.y[0], c.y[1], c.y[2]});
-  c.y_hi = std::max({c.y[0], c.y[1], c.y[2]});
+  pack_geometry(c);
+  box.x_lo = std::min({c.x[0], c.x[1], c.x[2]});
+  box.x_hi = std::max({c.x[0], c.x[1], c.x[2]});
+  box.y_lo = std::min({c.y[0], c.y[1], c.y[2]});
+  box.y_hi = std::max({c.y[0], c.y[1], c.y[2]});
 }
 
 /// Contact triangles are a thin sample of a large mesh: their nodes lie on
@@ -161,9 +143,17 @@ long flush_pairs(ContactData& c, const RoleParams& rp, BlockPairs& bp, PairDissi
   return n_touching;
 }
 
+/// Pair q apart: no force, springs reset (what the roles give it).
+inline void clear_pair(ContactData& c, long q) {
+  double* out = &c.pair_force[12 * q];
+  double* spring = &c.friction[6 * q];
+  for (int k = 0; k < 12; ++k) out[k] = 0.0;
+  for (int k = 0; k < 6; ++k) spring[k] = 0.0;
+}
+
 /// Block `blk` of the pairs: each pair's 12 corner forces go to its own
 /// buffer, its springs are updated; returns the number of touching pairs.
-long block_forces(EngineData& d, long blk, const Tri* tris, const int* rows, BlockPairs& bp,
+long block_forces(EngineData& d, long blk, const Tri* tris, const ContactBox* boxes, BlockPairs& bp,
                   PairDissipation& loss) {
   ContactData& c = d.contact;
   RoleParams rp;
@@ -174,21 +164,20 @@ long block_forces(EngineData& d, long blk, const Tri* tris, const int* rows, Blo
   const long start = blk * kPairBlock;
   const long end = std::min(static_cast<long>(c.pairs.size()), start + kPairBlock);
   long n_touching = 0;
+  const int* rows = c.entry_row.data();
   for (long q = start; q < end; ++q) {
-    const Tri& a = tris[rows[2 * q]];
-    const Tri& b = tris[rows[2 * q + 1]];
+    const int ra = rows[2 * q], rb = rows[2 * q + 1];
+    const ContactBox &a = boxes[ra], &b = boxes[rb];
     // Most pairs lie within the buffer without touching: their boxes are
     // disjoint, and the roles are skipped (no force, springs reset).
-    if (a.x_hi < b.x_lo || b.x_hi < a.x_lo || a.y_hi < b.y_lo || b.y_hi < a.y_lo) {
-      double* out = &c.pair_force[12 * q];
-      double* spring = &c.friction[6 * q];
-      for (int k = 0; k < 12; ++k) out[k] = 0.0;
-      for (int k = 0; k < 6; ++k) spring[k] = 0.0;
+    if (a.x_hi < b.x_lo || b.x_hi < a.x_lo || a.y_hi < b.y_lo || b.y_hi < a.y_lo ||
+        pair_apart(tris[ra], tris[rb])) {
+      clear_pair(c, q);
       continue;
     }
     const double mu =
         std::min(c.mu[d.tris.material[c.pairs[q][0]]], c.mu[d.tris.material[c.pairs[q][1]]]);
-    load_pair(a, b, mu, &c.friction[6 * q], q, bp);
+    load_pair(tris[ra], tris[rb], mu, &c.friction[6 * q], q, bp);
     if (bp.n == kPairBatch) n_touching += flush_pairs(c, rp, bp, loss);
   }
   if (bp.n > 0) n_touching += flush_pairs(c, rp, bp, loss);
@@ -251,27 +240,24 @@ void contact_forces(EngineData& d) {
   // Sized with the pairs (a no-op unless a detection or update changed
   // them, or a checkpoint was loaded); the capacity stays.
   c.narrow.tris.resize(ng);
-  c.narrow.rows.resize(2 * np);
+  c.narrow.boxes.resize(ng);
   Tri* tris = c.narrow.tris.data();
-  int* rows = c.narrow.rows.data();
+  ContactBox* boxes = c.narrow.boxes.data();
   // One parallel region for the three loops (the barriers between them are
   // the fors'), none at all for a handful of pairs.
 #pragma omp parallel num_threads(thread_count(d.threads)) if (np > 64)
   {
-    // Each contact triangle packed once, and its row written to the entries
-    // of its pairs.
+    // Each contact triangle packed once (the pairs find it by entry_row).
 #pragma omp for schedule(static)
     for (long g = 0; g < ng; ++g) {
       prefetch_ahead(d, c.gather_tri.data(), g, ng);
-      pack(d, c.gather_tri[g], tris[g]);
-      for (int k = c.gather_start[g]; k < c.gather_start[g + 1]; ++k)
-        rows[c.gather_entry[k]] = static_cast<int>(g);
+      pack(d, c.gather_tri[g], tris[g], boxes[g]);
     }
     BlockPairs batch{};  // per thread, on its stack (zeroed: padding lanes are read)
 #pragma omp for schedule(dynamic, 1) reduction(+ : touching)
     for (long b = 0; b < n_blocks; ++b) {
       PairDissipation loss;
-      touching += block_forces(d, b, tris, rows, batch, loss);
+      touching += block_forces(d, b, tris, boxes, batch, loss);
       partial[2 * b] = loss.friction;
       partial[2 * b + 1] = loss.damping;
     }

@@ -150,16 +150,16 @@ std::vector<MemoryPart> memory_parts(const detail::EngineData& d) {
   const auto& k = d.contact;
   add_parts(p, "contact",
             "candidates boxes watch_nodes detect_shift pairs friction pair_force "
-            "gather_tri gather_start gather_entry energy_partial",
+            "gather_tri gather_start gather_entry entry_row energy_partial",
             k.candidates, k.boxes, k.watch_nodes, k.detect_shift, k.pairs, k.friction, k.pair_force,
-            k.gather_tri, k.gather_start, k.gather_entry, k.energy_partial);
+            k.gather_tri, k.gather_start, k.gather_entry, k.entry_row, k.energy_partial);
   const auto& g = k.grid;
   add_parts(p, "contact.grid", "cell cell_start items count offset found", g.cell, g.cell_start,
             g.items, g.count, g.offset, g.found);
   const auto& b = k.breaks;
   add_parts(p, "contact.breaks", "cracks tris vertices ints merged trial found gather_index",
             b.cracks, b.tris, b.vertices, b.ints, b.merged, b.trial, b.found, b.gather_index);
-  add_parts(p, "contact.narrow", "tris rows", k.narrow.tris, k.narrow.rows);
+  add_parts(p, "contact.narrow", "tris boxes", k.narrow.tris, k.narrow.boxes);
   return p;
 }
 

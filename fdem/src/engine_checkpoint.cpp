@@ -139,7 +139,7 @@ void fields(Ar& ar, Cracks& c) {
 
 template <class Ar>
 void fields(Ar& ar, ContactData& c) {
-  ROCKFDEM_CHECKPOINT_MEMBERS(ContactData, 25);
+  ROCKFDEM_CHECKPOINT_MEMBERS(ContactData, 26);
   ar.tag("CONT");
   ar.state(c.settings);
   ar.state(c.penalty);  // set_contact may come after construction: all of it is state
@@ -155,9 +155,10 @@ void fields(Ar& ar, ContactData& c) {
   ar.state(c.gather_tri);
   ar.state(c.gather_start);
   ar.state(c.gather_entry);
-  ar.skip(c.grid);    // scratch: every detection rewrites it before reading it
-  ar.skip(c.breaks);  // scratch: every local update rewrites it before reading it
-  ar.skip(c.narrow);  // scratch: every contact pass rewrites it before reading it
+  ar.state(c.entry_row);  // derived from the gather CSR, which a restart does not rebuild
+  ar.skip(c.grid);        // scratch: every detection rewrites it before reading it
+  ar.skip(c.breaks);      // scratch: every local update rewrites it before reading it
+  ar.skip(c.narrow);      // scratch: every contact pass rewrites it before reading it
   ar.state(c.dirty);
   ar.state(c.topology_dirty);
   ar.state(c.detections);

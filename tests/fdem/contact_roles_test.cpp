@@ -10,6 +10,8 @@
 #include <cstring>
 #include <random>
 
+#include "contact.hpp"
+
 namespace {
 
 using rockfdem::fdem::detail::kPairBatch;
@@ -497,6 +499,61 @@ TEST(ContactRoles, matches_the_scalar_loop_bit_for_bit) {
   }
   EXPECT_GT(compared, 0);
   EXPECT_GT(touching, 1000);  // the draws must exercise contact
+}
+
+// The pair loop skips the pairs that pair_apart calls apart (an edge of
+// either separates them) as if the roles had run: for each such pair the
+// roles must give no force (positive zeros), reset springs, no dissipation
+// and no touch. Over tricky draws (pairs around a shared vertex moved by
+// 1e-3, across a shared edge moved by one ulp, on a grid with exact ties)
+// and random ones, with friction and damping; pairs whose boxes overlap
+// must be among those called apart, and touching pairs among those kept.
+TEST(ContactRoles, pairs_called_apart_get_nothing_from_the_roles) {
+  using rockfdem::fdem::detail::ContactTriangle;
+  const int n = kPairBatch - 1;
+  int apart = 0, apart_overlapping = 0, kept_touching = 0;
+  const double zero = 0.0;
+  for (unsigned seed = 1; seed <= 200; ++seed) {
+    RoleParams rp;
+    rp.p = 2.5;
+    rp.dt = 1e-2;
+    rp.friction = true;
+    rp.damping = 0.2;
+    Draw d = seed % 2 ? tricky_batch(seed, n) : random_batch(seed, n);
+    rockfdem::fdem::detail::run_roles(d.b, n, rp, SimdIsa::kBaseline);
+    for (int r = 0; r < n; ++r) {
+      ContactTriangle a{}, t{};
+      for (int k = 0; k < 3; ++k) {
+        a.x[k] = d.a[r].x[k], a.y[k] = d.a[r].y[k];
+        t.x[k] = d.t[r].x[k], t.y[k] = d.t[r].y[k];
+      }
+      rockfdem::fdem::detail::pack_geometry(a);
+      rockfdem::fdem::detail::pack_geometry(t);
+      if (!rockfdem::fdem::detail::pair_apart(a, t)) {
+        kept_touching += d.b.touching[r] != 0.0;
+        continue;
+      }
+      ++apart;
+      const auto [alo, ahi] = std::minmax({a.x[0], a.x[1], a.x[2]});
+      const auto [tlo, thi] = std::minmax({t.x[0], t.x[1], t.x[2]});
+      const auto [blo, bhi] = std::minmax({a.y[0], a.y[1], a.y[2]});
+      const auto [clo, chi] = std::minmax({t.y[0], t.y[1], t.y[2]});
+      apart_overlapping += !(ahi < tlo || thi < alo || bhi < clo || chi < blo);
+      EXPECT_EQ(d.b.touching[r], 0.0) << "seed " << seed << " lane " << r;
+      for (int i = 0; i < 12; ++i)
+        EXPECT_EQ(std::memcmp(&d.b.force[i][r], &zero, sizeof zero), 0)
+            << "seed " << seed << " lane " << r << " force " << i << ": " << d.b.force[i][r];
+      for (int j = 0; j < 6; ++j) {
+        EXPECT_EQ(std::memcmp(&d.b.spring[j][r], &zero, sizeof zero), 0)
+            << "seed " << seed << " lane " << r << " spring " << j;
+        EXPECT_EQ(d.b.loss_friction[j][r], 0.0);
+        EXPECT_EQ(d.b.loss_damping[j][r], 0.0);
+      }
+    }
+  }
+  EXPECT_GT(apart_overlapping, 200);  // the cases a box test leaves
+  EXPECT_GT(kept_touching, 1000);
+  EXPECT_GT(apart, apart_overlapping);
 }
 
 }  // namespace
