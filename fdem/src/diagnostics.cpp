@@ -67,23 +67,8 @@ double Engine::unbalanced_force_ratio() const {
 }
 
 BrokenCounts Engine::broken_counts() const {
-  const auto& c = impl_->d.cracks;
-  BrokenCounts b;
-  for (std::size_t e = 0; e < c.size(); ++e) {
-    if (c.state[e] != std::uint8_t(CrackState::kBroken)) continue;
-    switch (FailureMode(c.mode[e])) {
-      case FailureMode::kModeI:
-        ++b.mode_I;
-        break;
-      case FailureMode::kModeII:
-        ++b.mode_II;
-        break;
-      default:
-        ++b.mixed;
-        break;
-    }
-  }
-  return b;
+  const auto& b = impl_->d.broken_by_mode;
+  return {b[0], b[1], b[2]};
 }
 
 std::array<double, 2> Engine::boundary_force(int tag) const {

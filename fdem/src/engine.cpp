@@ -455,6 +455,8 @@ void Engine::rejoin_crack(std::size_t c, int material) {
     if (cr.offset.empty()) cr.offset.assign(6 * cr.size(), 0.0);
     detail::crack_point_openings(d, c, &cr.offset[6 * c]);
     for (int k = 0; k < 3; ++k) cr.damage[3 * c + k] = 0.0;
+    if (cr.state[c] == std::uint8_t(CrackState::kBroken))
+      --d.broken_by_mode[detail::broken_mode_entry(cr.mode[c])];
     cr.state[c] = std::uint8_t(CrackState::kIntact);
     cr.mode[c] = std::uint8_t(FailureMode::kNone);
     cr.broken_step[c] = -1;

@@ -171,7 +171,7 @@ void fields(Ar& ar, ContactData& c) {
 
 template <class Ar>
 void fields(Ar& ar, EngineData& d) {
-  ROCKFDEM_CHECKPOINT_MEMBERS(EngineData, 34);  // reversal and gravity count twice
+  ROCKFDEM_CHECKPOINT_MEMBERS(EngineData, 35);  // reversal and gravity count twice
   fields(ar, d.nodes);
   fields(ar, d.tris);
   fields(ar, d.cracks);
@@ -201,6 +201,7 @@ void fields(Ar& ar, EngineData& d) {
   fields(ar, d.contact);
   ar.state(d.dt);
   ar.state(d.step);
+  ar.state(d.broken_by_mode);
   ar.state(d.time);
   ar.state(d.dead_loads);
   ar.state(d.energy_partial);  // scratch, kept for its size

@@ -20,6 +20,7 @@
 #include "energy.hpp"
 #include "node_list.hpp"
 #include "rockfdem/fdem/crack_law.hpp"
+#include "rockfdem/fdem/engine.hpp"
 #include "rockfdem/fdem/model_input.hpp"
 
 namespace rockfdem::fdem::detail {
@@ -32,6 +33,13 @@ inline int entry_slot(int entry) { return entry >> 1; }
 inline double entry_sign(int entry) {
   static constexpr double kSign[2] = {1.0, -1.0};
   return kSign[entry & 1];
+}
+
+/// The entry of EngineData::broken_by_mode that a broken element of
+/// failure mode `mode` counts in.
+inline int broken_mode_entry(std::uint8_t mode) {
+  if (mode == std::uint8_t(FailureMode::kModeI)) return 0;
+  return mode == std::uint8_t(FailureMode::kModeII) ? 1 : 2;
 }
 
 /// Per-material constants the triangle kernel needs.
@@ -179,6 +187,10 @@ struct EngineData {
   EnergyLedger energy;  ///< accumulated energy terms (energy.hpp)
   double dt = 0;
   long step = 0;
+  /// Broken crack elements by mode (I, II, mixed or unclassified), kept
+  /// with the states by crack_forces and rejoin_crack, so that counting
+  /// them (a trigger asks after every step) does not scan the elements.
+  std::array<long, 3> broken_by_mode{};
   double time = 0;
   int threads = 0;
   /// crack_forces sends rock elements through the batch kernel; off, every

@@ -9,6 +9,7 @@
 
 #include <cmath>
 
+#include "rockfdem/fdem/structured_mesh.hpp"
 #include "test_models.hpp"
 
 namespace rockfdem::fdem {
@@ -86,6 +87,51 @@ TEST(BoltGrouting, regrouted_cracks_carry_tension_up_to_grout_strength) {
   const GroutingResult z = grout_broken_cracks(e, 1, cracks_touching(e, {0}));
   EXPECT_EQ(z.count, 1);
   EXPECT_EQ(e.broken_counts().total(), 1);
+}
+
+// broken_counts() is kept with the states rather than counted: after a
+// fracturing UCS (with contact, 2 threads), after grouting half of its
+// broken elements and after loading on, it equals a count of every
+// element's state and mode through the public accessors, mode by mode.
+TEST(BoltGrouting, broken_counts_follow_breakage_and_grouting) {
+  auto counted = [](const Engine& e) {
+    BrokenCounts b;
+    for (std::size_t c = 0; c < e.n_cracks(); ++c) {
+      if (e.crack_state(c) != CrackState::kBroken) continue;
+      const FailureMode m = e.crack_mode(c);
+      if (m == FailureMode::kModeI)
+        ++b.mode_I;
+      else if (m == FailureMode::kModeII)
+        ++b.mode_II;
+      else
+        ++b.mixed;
+    }
+    return b;
+  };
+  auto expect_same = [](const BrokenCounts& kept, const BrokenCounts& scan, const char* when) {
+    EXPECT_EQ(kept.mode_I, scan.mode_I) << when;
+    EXPECT_EQ(kept.mode_II, scan.mode_II) << when;
+    EXPECT_EQ(kept.mixed, scan.mixed) << when;
+  };
+  Material m = test::rock();
+  m.damping_ratio = 0.1;
+  ModelInput in = ucs_specimen(ucs_grid(0.02, 0.04, 800), m, 2.0);
+  in.materials.push_back(m);  // the grout: the rock's law again
+  in.threads = 2;
+  in.contact.enabled = true;
+  Engine e(in);
+  e.run(4000);
+  const BrokenCounts after_loading = e.broken_counts();
+  expect_same(after_loading, counted(e), "after loading");
+  ASSERT_GT(after_loading.total(), 20);
+  EXPECT_GT(after_loading.mode_I + after_loading.mode_II, 0);
+  const GroutingResult r = grout_broken_cracks(
+      e, 1, [](std::size_t c, const Point2&) { return c % 2 == 0; });  // about half
+  ASSERT_GT(r.count, 0);
+  EXPECT_EQ(e.broken_counts().total(), after_loading.total() - long(r.count));
+  expect_same(e.broken_counts(), counted(e), "after grouting");
+  e.run(1000);
+  expect_same(e.broken_counts(), counted(e), "after loading on");
 }
 
 }  // namespace
