@@ -1,6 +1,6 @@
 // bench_critical_dt: the cost of one stability-limit computation
 // (Engine::critical_dt after a stage change: the element bound and the
-// power iteration of stable_dt.cpp), which the tunnel pays at the start of
+// Lanczos iteration of stable_dt.cpp), which the tunnel pays at the start of
 // each explicit stage.
 //
 //   bench_critical_dt [--cells N] [--threads T] [--repeats R]

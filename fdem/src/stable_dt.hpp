@@ -6,9 +6,10 @@
 namespace rockfdem::fdem::detail {
 
 /// The stability limit used by the engine: 2 / omega_max of the linearised
-/// model by power iteration (at most 200 iterations, Rayleigh quotient
-/// settled to 1e-4), reduced for damping, capped at 1.5 times the element
-/// bound below and at that bound of the nodes with absorbing dashpots.
+/// model by Lanczos (at most 200 products, stopped when the largest Ritz
+/// value's residual bound is within 0.3% of it), reduced for damping,
+/// capped at 1.5 times the element bound below and at that bound of the
+/// nodes with absorbing dashpots.
 double critical_dt(const EngineData& d);
 
 /// 2 / omega reduced for viscous, mass-proportional and local damping.
@@ -19,9 +20,11 @@ double damped_limit(const EngineData& d, double omega, double xi_viscous);
 /// up to rounding, and exactly 1 without damping.
 double damping_stiffening(const EngineData& d, double omega, double xi_viscous);
 
-/// Power-iteration estimate alone, reduced for damping with xi_max, the
-/// active triangles' largest viscous ratio (node_frequencies hands it back).
-double power_critical_dt(const EngineData& d, int max_iterations, double xi_max);
+/// The linearised model's estimate alone: Lanczos in the mass inner product
+/// from a deterministic start, at most max_iterations products, reduced for
+/// damping with xi_max, the active triangles' largest viscous ratio
+/// (node_frequencies hands it back).
+double model_critical_dt(const EngineData& d, int max_iterations, double xi_max);
 
 /// Conservative element bound, per node: omega^2 = (largest exact linearised
 /// frequency^2 of its active triangles, lumped mass; with their contact term,

@@ -79,7 +79,7 @@ TEST(LocalityOrder, scrambled_and_ordered_meshes_give_the_same_elastic_answer) {
   const std::vector<int> order = scramble(ordered.n_triangles());
   const mesh::Mesh scrambled = mesh::with_triangle_order(ordered, order);
   fdem::Engine a = excavated(ordered, 1), b = excavated(scrambled, 2);
-  // The automatic dt comes from a power iteration whose start vector is in
+  // The automatic dt comes from a Lanczos iteration whose start vector is in
   // node order, so it differs in the last digits between the orders: both
   // run at one dt, for 3000 steps.
   const double dt = 0.95 * std::min(a.stable_dt(), b.stable_dt());

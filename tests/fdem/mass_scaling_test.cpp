@@ -128,7 +128,7 @@ TEST(MassScaling, cracked_plate_lands_on_the_true_mass_equilibrium) {
 
 // The factors: the target is the least constrained node's own limit (here
 // 5x the true-mass step), the model's step lands within [0.8, 1.5] of it
-// (power iteration against the node bound), the finest triangles carry
+// (Lanczos against the node bound), the finest triangles carry
 // factors above 20 (measured 43) and the node masses add up to the
 // factors' masses.
 TEST(MassScaling, every_node_is_brought_to_the_target_step) {
@@ -198,7 +198,7 @@ void shake(Engine& e, double amplitude) {
 }
 
 // Absorbing dashpots are explicit (-C v_old) and set a limit of their own
-// (c dt / m < 2) that the power iteration does not see; the node bound and
+// (c dt / m < 2) that the Lanczos iteration does not see; the node bound and
 // the factors include them. With absorbing right and top sides on the
 // plate's coarsest cells, a disturbed plate on scaled masses at the default
 // step stays stable and loses its energy through the dashpots (before they
