@@ -26,6 +26,16 @@
 
 namespace rockfdem::fdem::detail {
 
+/// v.resize(n), with the capacity grown to n + n / 8 where it must grow:
+/// libstdc++'s resize at least doubles it, and the pair and candidate
+/// arrays grow a little at each local update, so doubling left up to half
+/// of them unused at the end of a run.
+template <class T>
+void grow_to(std::vector<T>& v, std::size_t n) {
+  if (n > v.capacity()) v.reserve(n + n / 8);
+  v.resize(n);
+}
+
 struct EngineData;
 
 /// Scratch of contact_breaks and build_gather, reused so that a warmed-up

@@ -197,7 +197,7 @@ void triangle_box(const EngineData& d, int t, double* b) {
 
 void build_boxes(EngineData& d) {
   ContactData& c = d.contact;
-  c.boxes.resize(4 * c.candidates.size());
+  grow_to(c.boxes, 4 * c.candidates.size());
   for (std::size_t i = 0; i < c.candidates.size(); ++i)
     triangle_box(d, c.candidates[i], &c.boxes[4 * i]);
 }
@@ -220,7 +220,7 @@ double carry_friction(EngineData& d) {
   ContactData& c = d.contact;
   const auto& found = c.grid.found;
   const std::size_t n = found.size();
-  c.pair_force.resize(12 * n);
+  grow_to(c.pair_force, 12 * n);
   double* spring = c.pair_force.data();
   const Placement at = half_step_placement(d);
   double change = 0.0;
@@ -240,7 +240,7 @@ double carry_friction(EngineData& d) {
     }
   }
   for (; o < c.pairs.size(); ++o) change += dropped(o);
-  c.pairs.resize(n);
+  grow_to(c.pairs, n);
   for (std::size_t i = 0; i < n; ++i)
     c.pairs[i] = {c.candidates[found[i][0]], c.candidates[found[i][1]]};
   c.friction.assign(spring, spring + 6 * n);
@@ -278,12 +278,12 @@ void build_gather(EngineData& d) {
     ++c.gather_start[row[p[1]] + 1];
   }
   for (std::size_t g = 0; g < c.gather_tri.size(); ++g) c.gather_start[g + 1] += c.gather_start[g];
-  c.gather_entry.resize(2 * np);
+  grow_to(c.gather_entry, 2 * np);
   c.grid.offset.assign(c.gather_start.begin(), c.gather_start.end() - 1);
   for (std::size_t q = 0; q < np; ++q)
     for (int side = 0; side < 2; ++side)
       c.gather_entry[c.grid.offset[row[c.pairs[q][side]]]++] = static_cast<int>(2 * q + side);
-  c.entry_row.resize(2 * np);
+  grow_to(c.entry_row, 2 * np);
   for (std::size_t g = 0; g < c.gather_tri.size(); ++g)
     for (int k = c.gather_start[g]; k < c.gather_start[g + 1]; ++k)
       c.entry_row[c.gather_entry[k]] = static_cast<int>(g);
@@ -299,8 +299,8 @@ void insert_candidates(EngineData& d) {
   BreakScratch& s = c.breaks;
   std::size_t i = c.candidates.size(), j = s.tris.size();
   const std::size_t n = i + j;
-  c.candidates.resize(n);
-  c.boxes.resize(4 * n);
+  grow_to(c.candidates, n);
+  grow_to(c.boxes, 4 * n);
   for (std::size_t k = n; j > 0; --k) {  // once the new ones are placed, the rest stays
     if (i > 0 && c.candidates[i - 1] > s.tris[j - 1]) {
       --i;
@@ -381,8 +381,8 @@ double insert_pairs(EngineData& d) {
   const BreakScratch& s = c.breaks;
   std::size_t i = c.pairs.size(), j = s.found.size();
   const std::size_t n = i + j;
-  c.pairs.resize(n);
-  c.friction.resize(6 * n);
+  grow_to(c.pairs, n);
+  grow_to(c.friction, 6 * n);
   for (std::size_t k = n; j > 0; --k) {  // once the new ones are placed, the rest stays
     if (i > 0 && s.found[j - 1] < c.pairs[i - 1]) {
       --i;
@@ -537,7 +537,7 @@ void contact_breaks(EngineData& d) {
   if (s.found.empty()) return;
   const double handover = insert_pairs(d);
   if (d.energy.started) d.energy.fracture += handover;
-  c.pair_force.resize(12 * c.pairs.size());
+  grow_to(c.pair_force, 12 * c.pairs.size());
   c.energy_partial.resize(2 * ((c.pairs.size() + kPairBlock - 1) / kPairBlock));
   build_gather(d);
 }

@@ -239,8 +239,8 @@ void contact_forces(EngineData& d) {
   double* partial = c.energy_partial.data();
   // Sized with the pairs (a no-op unless a detection or update changed
   // them, or a checkpoint was loaded); the capacity stays.
-  c.narrow.tris.resize(ng);
-  c.narrow.boxes.resize(ng);
+  grow_to(c.narrow.tris, ng);
+  grow_to(c.narrow.boxes, ng);
   Tri* tris = c.narrow.tris.data();
   ContactBox* boxes = c.narrow.boxes.data();
   // One parallel region for the three loops (the barriers between them are
