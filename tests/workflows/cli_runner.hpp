@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <array>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <functional>
@@ -14,6 +15,7 @@
 #include <sstream>
 #include <stdexcept>
 #include <string>
+#include <system_error>
 #include <vector>
 
 #include "rockfdem/error.hpp"
@@ -52,11 +54,31 @@ inline Result run(const std::string& args, const std::string& prefix = "") {
   return r;
 }
 
-/// A fresh (absent) scratch path under the temp directory, unique per process.
+/// The scratch paths this process handed out, removed when it exits: a
+/// test that fails before its own remove_all leaves nothing behind in the
+/// temp directory. ROCKFDEM_KEEP_SCRATCH=1 keeps them to look at.
+struct ScratchPaths {
+  pid_t owner = getpid();  // a forked child leaves through _exit, but never removes
+  std::vector<std::filesystem::path> paths;
+  ~ScratchPaths() {
+    if (getpid() != owner || std::getenv("ROCKFDEM_KEEP_SCRATCH") != nullptr) return;
+    std::error_code ignored;
+    for (const auto& p : paths) std::filesystem::remove_all(p, ignored);
+  }
+};
+
+inline ScratchPaths& scratch_paths() {
+  static ScratchPaths paths;
+  return paths;
+}
+
+/// A fresh (absent) scratch path under the temp directory, unique per
+/// process, removed at the latest when the process exits.
 inline std::filesystem::path scratch(const std::string& name) {
   std::filesystem::path p = std::filesystem::temp_directory_path() /
                             ("rockfdem-cli-" + name + "-" + std::to_string(getpid()));
   std::filesystem::remove_all(p);
+  scratch_paths().paths.push_back(p);
   return p;
 }
 
