@@ -321,9 +321,8 @@ long crack_forces(EngineData& d) {
   const std::uint8_t* active = d.cracks.active.data();
   double* partial = d.energy_partial.data();
   const auto step = static_cast<std::int32_t>(d.step);
-  long n_mode_I = 0, n_mode_II = 0, n_other = 0;  // integers: any order, the same sums
-#pragma omp parallel num_threads(thread_count(d.threads)) \
-    reduction(+ : n_mode_I, n_mode_II, n_other)
+  long broke[3] = {0, 0, 0};  // by broken_mode_entry; integers: any order, the same sums
+#pragma omp parallel num_threads(thread_count(d.threads)) reduction(+ : broke[:3])
   {
     CrackBatch batch{};  // per thread (zeroed: padding lanes are read)
     int element[kCrackBatch];
@@ -349,10 +348,7 @@ long crack_forces(EngineData& d) {
           const auto mode = std::uint8_t(classify_failure(sum_a2, sum_b2));
           d.cracks.mode[c] = mode;
           d.cracks.broken_step[c] = step;
-          const int entry = broken_mode_entry(mode);
-          n_mode_I += entry == 0;
-          n_mode_II += entry == 1;
-          n_other += entry == 2;
+          ++broke[broken_mode_entry(mode)];
         } else if (state[c] == std::uint8_t(CrackState::kIntact) &&
                    (dmg[0] > 0.0 || dmg[1] > 0.0 || dmg[2] > 0.0)) {
           state[c] = std::uint8_t(CrackState::kYielding);
@@ -364,10 +360,8 @@ long crack_forces(EngineData& d) {
   double released = 0;
   for (long b = 0; b < n_blocks; ++b) released += partial[b];
   d.energy.fracture += released;
-  d.broken_by_mode[0] += n_mode_I;
-  d.broken_by_mode[1] += n_mode_II;
-  d.broken_by_mode[2] += n_other;
-  return n_mode_I + n_mode_II + n_other;
+  for (int k = 0; k < 3; ++k) d.broken_by_mode[k] += broke[k];
+  return broke[0] + broke[1] + broke[2];
 }
 
 }  // namespace rockfdem::fdem::detail
