@@ -31,7 +31,7 @@ namespace rockfdem::fdem::detail {
 
 /// Bump when a saved member is added, removed or reordered: older files are
 /// then refused with a clear message instead of being misread.
-constexpr std::uint32_t kCheckpointVersion = 20;  // 2: energy ledger; 3: contact updates;
+constexpr std::uint32_t kCheckpointVersion = 21;  // 2: energy ledger; 3: contact updates;
                                                   // 4: mass scaling; 5: strength factors,
                                                   // kinetic damping; 6: joint friction;
                                                   // 7: compact engine arrays; 8: joint
@@ -48,7 +48,8 @@ constexpr std::uint32_t kCheckpointVersion = 20;  // 2: energy ledger; 3: contac
                                                   // 17: no old pair lists in contact;
                                                   // 18: detection positions as shifts;
                                                   // 19: gather rows per pair entry;
-                                                  // 20: broken counts by mode
+                                                  // 20: broken counts by mode;
+                                                  // 21: gather rows rebuilt on load
 constexpr std::size_t kCheckpointHeaderBytes = 32;
 constexpr std::size_t kCheckpointChecksumBytes = 8;
 

@@ -172,6 +172,10 @@ void contact_detect(EngineData& d);
 /// when many triangles change at once or one is due anyway.
 void contact_breaks(EngineData& d);
 
+/// Each pair entry's gather row (entry_row) from the gather CSR: with the
+/// CSR, and after a checkpoint is loaded (the CSR is saved, its inverse not).
+void build_entry_rows(ContactData& c);
+
 /// One step of contact; see the header comment.
 void contact_forces(EngineData& d);
 

@@ -283,10 +283,7 @@ void build_gather(EngineData& d) {
   for (std::size_t q = 0; q < np; ++q)
     for (int side = 0; side < 2; ++side)
       c.gather_entry[c.grid.offset[row[c.pairs[q][side]]]++] = static_cast<int>(2 * q + side);
-  grow_to(c.entry_row, 2 * np);
-  for (std::size_t g = 0; g < c.gather_tri.size(); ++g)
-    for (int k = c.gather_start[g]; k < c.gather_start[g + 1]; ++k)
-      c.entry_row[c.gather_entry[k]] = static_cast<int>(g);
+  build_entry_rows(c);
   for (int t : c.gather_tri) row[t] = -1;
 }
 
@@ -437,6 +434,13 @@ void collect_breaks(EngineData& d) {
 }
 
 }  // namespace
+
+void build_entry_rows(ContactData& c) {
+  grow_to(c.entry_row, c.gather_entry.size());
+  for (std::size_t g = 0; g < c.gather_tri.size(); ++g)
+    for (int k = c.gather_start[g]; k < c.gather_start[g + 1]; ++k)
+      c.entry_row[c.gather_entry[k]] = static_cast<int>(g);
+}
 
 void contact_setup(EngineData& d) {
   ContactData& c = d.contact;

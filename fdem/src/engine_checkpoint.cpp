@@ -155,10 +155,10 @@ void fields(Ar& ar, ContactData& c) {
   ar.state(c.gather_tri);
   ar.state(c.gather_start);
   ar.state(c.gather_entry);
-  ar.state(c.entry_row);  // derived from the gather CSR, which a restart does not rebuild
-  ar.skip(c.grid);        // scratch: every detection rewrites it before reading it
-  ar.skip(c.breaks);      // scratch: every local update rewrites it before reading it
-  ar.skip(c.narrow);      // scratch: every contact pass rewrites it before reading it
+  ar.skip(c.entry_row);  // the gather CSR's inverse: rebuilt from it after loading
+  ar.skip(c.grid);       // scratch: every detection rewrites it before reading it
+  ar.skip(c.breaks);     // scratch: every local update rewrites it before reading it
+  ar.skip(c.narrow);     // scratch: every contact pass rewrites it before reading it
   ar.state(c.dirty);
   ar.state(c.topology_dirty);
   ar.state(c.detections);
@@ -264,6 +264,7 @@ void Engine::load_state(std::istream& in) {
   detail::CheckpointReader r(file, begin, end);
   detail::impl_fields(r, *impl_);
   r.finish();
+  detail::build_entry_rows(impl_->d.contact);
 }
 
 }  // namespace rockfdem::fdem
