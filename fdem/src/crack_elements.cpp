@@ -71,7 +71,7 @@ inline double element_potential(const CrackConstants& k, const double o[3], cons
 /// Evaluates one element; returns true when it broke this step. Adds to
 /// `released` the potential the law released: phi(D_old) - phi(D_new) when
 /// damage grew, the whole phi(D_old) when the element broke.
-[[gnu::always_inline]] inline bool crack_element(const EngineData& d, std::size_t c, double* damage,
+[[gnu::always_inline]] inline bool crack_element(const EngineData& d, std::size_t c, float* damage,
                                                  double* out, double& sum_a2, double& sum_b2,
                                                  double& released) {
   const int* nd = &d.cracks.nodes[4 * c];
@@ -91,10 +91,10 @@ inline double element_potential(const CrackConstants& k, const double o[3], cons
   const CrackConstants& k = d.crack_laws[d.cracks.material[c]];
   const StrengthTerms<double> st = d.cracks.strength.empty()
                                        ? material_terms(k)
-                                       : scaled_strength_terms(k, d.cracks.strength[c]);
+                                       : scaled_strength_terms(k, double(d.cracks.strength[c]));
   double o[3] = {o0, 0.5 * (o0 + o1), o1}, s[3] = {s0, 0.5 * (s0 + s1), s1};
   if (!d.cracks.offset.empty()) {  // re-joined or pre-stressed elements (per point)
-    const double* off = &d.cracks.offset[6 * c];
+    const float* off = &d.cracks.offset[6 * c];
     for (int i = 0; i < 3; ++i) {
       o[i] -= off[2 * i];
       s[i] -= off[2 * i + 1];
@@ -108,6 +108,9 @@ inline double element_potential(const CrackConstants& k, const double o[3], cons
   with_crack_law(k.law, [&](auto law) {  // one dispatch per element
     law_points<decltype(law)>(k, st, o, s, h, inv_h, d0, d1, d2, pt);
   });
+  d0 = round_up_to_float(d0);  // the history as it will be stored
+  d1 = round_up_to_float(d1);
+  d2 = round_up_to_float(d2);
   const CrackPoint &p0 = pt[0], &pm = pt[1], &p1 = pt[2];
   // Damage never decreases, so each difference is >= 0 and their sum is
   // > 0 exactly when some point's damage grew. Only then can the element
@@ -116,9 +119,9 @@ inline double element_potential(const CrackConstants& k, const double o[3], cons
     const double dn[3] = {d0, d1, d2};
     const bool broke = k.breaks && (d0 >= 1.0) + (d1 >= 1.0) + (d2 >= 1.0) >= 2;
     released += released_potential(d, c, before, broke ? nullptr : dn);
-    damage[0] = d0;
-    damage[1] = d1;
-    damage[2] = d2;
+    damage[0] = static_cast<float>(d0);  // exact: rounded above
+    damage[1] = static_cast<float>(d1);
+    damage[2] = static_cast<float>(d2);
     if (broke) {
       sum_a2 = p0.a * p0.a + pm.a * pm.a + p1.a * p1.a;
       sum_b2 = p0.b * p0.b + pm.b * pm.b + p1.b * p1.b;
@@ -184,7 +187,9 @@ double crack_element_energy(const EngineData& d, std::size_t c, const Placement&
   if (!d.cracks.offset.empty())
     for (int i = 0; i < 6; ++i) os[i] -= d.cracks.offset[6 * c + i];
   const double o[3] = {os[0], os[2], os[4]}, s[3] = {os[1], os[3], os[5]};
-  return element_potential(crack_constants(d, c), o, s, h, &d.cracks.damage[3 * c]);
+  const float* dmg = &d.cracks.damage[3 * c];
+  const double damage[3] = {dmg[0], dmg[1], dmg[2]};
+  return element_potential(crack_constants(d, c), o, s, h, damage);
 }
 
 double crack_element_energy(const EngineData& d, std::size_t c) {
@@ -201,7 +206,7 @@ void crack_point_stresses(const EngineData& d, std::size_t c, double out[6]) {
   const CrackConstants& k = d.crack_laws[d.cracks.material[c]];
   const StrengthTerms<double> st = d.cracks.strength.empty()
                                        ? material_terms(k)
-                                       : scaled_strength_terms(k, d.cracks.strength[c]);
+                                       : scaled_strength_terms(k, double(d.cracks.strength[c]));
   double damage[3] = {d.cracks.damage[3 * c], d.cracks.damage[3 * c + 1],
                       d.cracks.damage[3 * c + 2]};
   with_crack_law(k.law, [&](auto law) {
@@ -234,7 +239,7 @@ inline bool batchable(const EngineData& d, long c, int material) {
   if (!d.cracks.active[c] || state == std::uint8_t(CrackState::kBroken) ||
       d.cracks.material[c] != material)
     return false;
-  const double* dmg = &d.cracks.damage[3 * c];
+  const float* dmg = &d.cracks.damage[3 * c];
   return state != std::uint8_t(CrackState::kIntact) ||
          (dmg[0] == 0.0 && dmg[1] == 0.0 && dmg[2] == 0.0);
 }
@@ -316,7 +321,7 @@ long crack_forces(EngineData& d) {
   const long nc = static_cast<long>(d.cracks.size());
   const long n_blocks = (nc + kEnergyBlock - 1) / kEnergyBlock;
   double* slots = d.slots.data() + 2 * d.crack_slot0();
-  double* damage = d.cracks.damage.data();
+  float* damage = d.cracks.damage.data();
   std::uint8_t* state = d.cracks.state.data();
   const std::uint8_t* active = d.cracks.active.data();
   double* partial = d.energy_partial.data();
@@ -341,7 +346,7 @@ long crack_forces(EngineData& d) {
         if (!active[c] || state[c] == std::uint8_t(CrackState::kBroken)) continue;
         double sum_a2 = 0, sum_b2 = 0;
         double* out = slots + 4 * c;
-        double* dmg = damage + 3 * c;
+        float* dmg = damage + 3 * c;
         if (crack_element(d, c, dmg, out, sum_a2, sum_b2, released)) {
           zero_slots(out);
           state[c] = std::uint8_t(CrackState::kBroken);

@@ -34,9 +34,10 @@ namespace {
 
 /// Mean of the initial stresses of the element's two triangles, times n.
 void mean_traction(const EngineData& d, std::size_t c, const double n[2], double t[2]) {
-  const double* a = &d.tris.sigma0[3 * d.crack_triangle(c, 0)];
-  const double* b = &d.tris.sigma0[3 * d.crack_triangle(c, 1)];
-  const double sxx = 0.5 * (a[0] + b[0]), syy = 0.5 * (a[1] + b[1]), sxy = 0.5 * (a[2] + b[2]);
+  const float* a = &d.tris.sigma0[3 * d.crack_triangle(c, 0)];
+  const float* b = &d.tris.sigma0[3 * d.crack_triangle(c, 1)];
+  const double sxx = 0.5 * (double(a[0]) + b[0]), syy = 0.5 * (double(a[1]) + b[1]);
+  const double sxy = 0.5 * (double(a[2]) + b[2]);
   t[0] = sxx * n[0] + sxy * n[1];
   t[1] = sxy * n[0] + syy * n[1];
 }
@@ -95,8 +96,7 @@ long offsets_carrying(EngineData& d, std::size_t c, double h, const double st[6]
   for (int i = 0; i < 3; ++i) {
     double o, s;
     clipped += pre_peak_displacement(k, st[2 * i], st[2 * i + 1], h, o, s);
-    d.cracks.offset[6 * c + 2 * i] = cur[2 * i] - o;
-    d.cracks.offset[6 * c + 2 * i + 1] = cur[2 * i + 1] - s;
+    store_offsets(cur[2 * i], cur[2 * i + 1], o, s, &d.cracks.offset[6 * c + 2 * i]);
   }
   return clipped;
 }

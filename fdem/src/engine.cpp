@@ -453,7 +453,11 @@ void Engine::rejoin_crack(std::size_t c, int material) {
   book_crack_change(d, c, [&] {
     auto& cr = d.cracks;
     if (cr.offset.empty()) cr.offset.assign(6 * cr.size(), 0.0);
-    detail::crack_point_openings(d, c, &cr.offset[6 * c]);
+    double opening[6];
+    detail::crack_point_openings(d, c, opening);
+    for (int i = 0; i < 3; ++i)
+      detail::store_offsets(opening[2 * i], opening[2 * i + 1], 0.0, 0.0,
+                            &cr.offset[6 * c + 2 * i]);
     for (int k = 0; k < 3; ++k) cr.damage[3 * c + k] = 0.0;
     if (cr.state[c] == std::uint8_t(CrackState::kBroken))
       --d.broken_by_mode[detail::broken_mode_entry(cr.mode[c])];
@@ -536,7 +540,7 @@ int Engine::threads() const { return detail::thread_count(impl_->d.threads); }
 const std::vector<double>& Engine::positions() const { return impl_->d.nodes.pos; }
 const std::vector<double>& Engine::velocities() const { return impl_->d.nodes.vel; }
 
-const std::vector<double>& Engine::node_mass() const {
+const std::vector<float>& Engine::node_mass() const {
   if (impl_->d.masses_dirty) detail::refresh_nodes(impl_->d);
   return impl_->d.nodes.mass;
 }
@@ -582,7 +586,7 @@ double Engine::triangle_stress_zz(std::size_t t, double sigma0_zz) const {
 
 double Engine::crack_damage(std::size_t c) const {
   check_index(c, n_cracks(), "crack element");
-  const double* d = &impl_->d.cracks.damage[3 * c];
+  const float* d = &impl_->d.cracks.damage[3 * c];
   return std::max({d[0], d[1], d[2]});
 }
 

@@ -10,9 +10,20 @@
 // corners (triangles, then crack elements' nodes 0-3; CSR built once). No
 // two loop iterations write the same memory, so results do not depend on
 // the thread count.
+//
+// Single precision: what the step computes (positions, velocities, forces,
+// F0^-1) is double; constants of the model and the hand-off (masses,
+// areas, damping coefficients, stiffness and strength factors, initial
+// stresses, crack offsets) and the crack damage, a history maximum, are
+// float. Their rounding (about 6e-8 of each value) lies far below what
+// they are known to (a solver's tolerance, a lumped mass, a fitted
+// constant) and saves about 80 B per triangle. Damage is rounded up as it
+// is stored (round_up_to_float): the law never sees a stored history below
+// the one it reached, so a point does not grow again by its rounding.
 #pragma once
 
 #include <array>
+#include <cmath>
 #include <cstdint>
 #include <vector>
 
@@ -28,11 +39,29 @@ namespace rockfdem::fdem::detail {
 /// A node's slot entry (Nodes::slot_index): the slot, and the sign its
 /// force enters the node with.
 inline int entry_slot(int entry) { return entry >> 1; }
+
 /// A load, not a branch: a node's entries mix both signs in no pattern a
 /// branch predictor can follow.
 inline double entry_sign(int entry) {
   static constexpr double kSign[2] = {1.0, -1.0};
   return kSign[entry & 1];
+}
+
+/// The least float at or above v (v finite, in float's range).
+inline float round_up_to_float(double v) {
+  const float f = static_cast<float>(v);
+  return static_cast<double>(f) < v ? std::nextafter(f, INFINITY) : f;
+}
+
+/// A crack point's offsets (o0, s0) as stored for a point meant to see
+/// opening o and slip s at openings (cur_o, cur_s): rounded so that it
+/// sees no more tension (o) and no more slip (|s|) than meant. A point
+/// pre-stressed to its strength sits just below its peak (pre_peak_
+/// displacement); rounded to nearest, half of them would start past it,
+/// damaged (measured: the jointed tunnel's wall block then creeps).
+inline void store_offsets(double cur_o, double cur_s, double o, double s, float* out) {
+  out[0] = round_up_to_float(cur_o - o);  // cur_o - out[0] <= o
+  out[1] = s >= 0.0 ? round_up_to_float(cur_s - s) : -round_up_to_float(s - cur_s);
 }
 
 /// The entry of EngineData::broken_by_mode that a broken element of
@@ -71,7 +100,7 @@ struct Nodes {
   std::vector<double> pos, vel;    ///< interleaved x, y
   std::vector<double> vertex_pos;  ///< per mesh vertex, interleaved: the displacement origin
                                    ///< (nodes of one vertex share it: mesh_position())
-  std::vector<double> mass;        ///< lumped; 0: no active triangle (frozen)
+  std::vector<float> mass;         ///< lumped; 0: no active triangle (frozen)
   DeadLoads fext;                  ///< gravity + tractions (dead loads)
   std::vector<int> bc_node;        ///< nodes with a boundary record, ascending; the
                                    ///< k-th one's record is bc_records[k]
@@ -89,15 +118,15 @@ struct Nodes {
 struct Triangles {
   std::vector<int> nodes;             ///< 3 per triangle
   std::vector<double> ref_inv;        ///< F0^-1 row-major, 4 per triangle
-  std::vector<double> area0;          ///< reference area
-  std::vector<double> eta;            ///< viscous damping coefficient [Pa s]
-  std::vector<double> alpha;          ///< stiffness factor
-  std::vector<double> sigma0;         ///< initial stress (sxx, syy, sxy); empty if none
+  std::vector<float> area0;           ///< reference area
+  std::vector<float> eta;             ///< viscous damping coefficient [Pa s]
+  std::vector<float> alpha;           ///< stiffness factor
+  std::vector<float> sigma0;          ///< initial stress (sxx, syy, sxy); empty if none
   std::vector<float> viscous_stress;  ///< dt/2 A alpha eta D of the last step (3 per
                                       ///< triangle; empty without viscous damping): the energy
                                       ///< ledger books its work with the next velocities.
                                       ///< Single precision: only the ledger reads it
-  std::vector<double> mass_scale;     ///< density factor >= 1 (mass_scaling.cpp); empty when off
+  std::vector<float> mass_scale;      ///< density factor >= 1 (mass_scaling.cpp); empty when off
   std::vector<std::uint16_t> material;
   std::vector<std::uint8_t> active;
   std::size_t size() const { return area0.size(); }
@@ -105,17 +134,17 @@ struct Triangles {
 };
 
 struct Cracks {
-  std::vector<int> nodes;      ///< 4 per element: 0,1 first face; 3 faces 0, 2 faces 1
-  std::vector<double> damage;  ///< 3 per element (end 0, midpoint, end 1)
+  std::vector<int> nodes;     ///< 4 per element: 0,1 first face; 3 faces 0, 2 faces 1
+  std::vector<float> damage;  ///< 3 per element (end 0, midpoint, end 1), rounded up
   std::vector<std::uint16_t> material;
   std::vector<std::uint8_t> state;   ///< CrackState
   std::vector<std::uint8_t> mode;    ///< FailureMode
   std::vector<std::uint8_t> active;  ///< both triangles active
   std::vector<std::int32_t> broken_step;
-  std::vector<double> offset;       ///< (o, s) taken as zero at end 0, midpoint, end 1
+  std::vector<float> offset;        ///< (o, s) taken as zero at end 0, midpoint, end 1
                                     ///< (6 per element); empty until an element is
                                     ///< re-joined or pre-stressed (crack_prestress.cpp)
-  std::vector<double> strength;     ///< strength factor k (ft and c times k) per element;
+  std::vector<float> strength;      ///< strength factor k (ft and c times k) per element;
                                     ///< empty while every factor is 1
                                     ///< (strength_heterogeneity.hpp)
   std::vector<int> joints;          ///< the elements with the joint law, ascending

@@ -46,8 +46,9 @@ double corner_sum(const EngineData& d, long i, Factor f) {
 
 /// Mass of node i from its active triangles with density factors `scale`
 /// (one per triangle; empty: the true masses).
-double corner_mass(const EngineData& d, long i, const std::vector<double>& scale) {
-  return corner_sum(d, i, [&](int t) { return scale.empty() ? 1.0 : scale[t]; });
+float corner_mass(const EngineData& d, long i, const std::vector<float>& scale) {
+  return static_cast<float>(
+      corner_sum(d, i, [&](int t) { return scale.empty() ? 1.0 : double(scale[t]); }));
 }
 
 /// The mass gravity pulls on at node i: a softened triangle (stiffness
@@ -57,17 +58,17 @@ double corner_mass(const EngineData& d, long i, const std::vector<double>& scale
 /// body force too). A stiffened one (a bolt strip, alpha > 1) keeps its
 /// true weight. Mass scaling never changes it.
 double weight_mass(const EngineData& d, long i) {
-  return corner_sum(d, i, [&](int t) { return std::min(d.tris.alpha[t], 1.0); });
+  return corner_sum(d, i, [&](int t) { return std::min(double(d.tris.alpha[t]), 1.0); });
 }
 
 /// A change of density factors keeps each node's momentum, m_old v_old =
 /// m_new v_new (m_old: the old factors on the current activity), so that
 /// rescaling never adds kinetic energy; the energy it takes out is booked
 /// with the stage change (refresh_nodes).
-void keep_momentum(EngineData& d, const std::vector<double>& old_scale) {
+void keep_momentum(EngineData& d, const std::vector<float>& old_scale) {
   Nodes& n = d.nodes;
   for (std::size_t i = 0; i < n.size(); ++i) {
-    const double m_old = corner_mass(d, long(i), old_scale), m_new = n.mass[i];
+    const double m_old = corner_mass(d, long(i), old_scale), m_new = n.mass[i];  // as stored
     if (!(m_old > 0 && m_new > 0) || m_old == m_new) continue;
     n.vel[2 * i] *= m_old / m_new;
     n.vel[2 * i + 1] *= m_old / m_new;
@@ -134,7 +135,7 @@ void refresh_masses(EngineData& d) {
   Nodes& n = d.nodes;
 #pragma omp parallel for schedule(static) num_threads(thread_count(d.threads))
   for (long i = 0; i < nn; ++i) {
-    const double m = corner_mass(d, i, d.tris.mass_scale);
+    const float m = corner_mass(d, i, d.tris.mass_scale);
     n.mass[i] = m;
     if (m == 0) n.vel[2 * i] = n.vel[2 * i + 1] = 0.0;
   }
@@ -151,7 +152,7 @@ void refresh_nodes(EngineData& d) {
   book_change(d.energy, &EnergyLedger::removed, energy, [&] {
     // Crack activity first: the mass scaling's stability bound reads it.
     refresh_crack_activity(d);
-    const std::vector<double> old_scale = d.tris.mass_scale;  // empty unless scaled
+    const std::vector<float> old_scale = d.tris.mass_scale;  // empty unless scaled
     if (d.mass_scaling.enabled) {
       scale_masses(d);  // ends with refresh_masses
     } else {

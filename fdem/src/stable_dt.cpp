@@ -58,7 +58,7 @@ Eigen::Matrix3d elasticity_sqrt(double lambda, double mu) {
 /// normalised: node 0 couples to itself and its facing node 3 with weight
 /// 1/3 and to the other pair with 1/6 (Simpson's consistent weights).
 void add_crack_rows(const EngineData& d, std::vector<double>& row) {
-  const double* m = d.nodes.mass.data();
+  const float* m = d.nodes.mass.data();
   for (std::size_t c = 0; c < d.cracks.size(); ++c) {
     if (!d.cracks.active[c] || d.cracks.state[c] == std::uint8_t(CrackState::kBroken)) continue;
     const CrackConstants& k = d.crack_laws[d.cracks.material[c]];
@@ -314,7 +314,7 @@ double model_critical_dt(const EngineData& d, int max_iterations, double xi_max)
   std::vector<double> q(2 * nn), prev(2 * nn, 0.0), s(d.slots.size()), partial(n_blocks);
   std::vector<double> dir;
   crack_directions(d, dir);
-  const double* m = d.nodes.mass.data();
+  const float* m = d.nodes.mass.data();
   for (long i = 0; i < 2 * nn; ++i) q[i] = m[i / 2] > 0 ? start_value(i) : 0.0;
   const double start2 = block_sum(nn, d.threads, [&](long i) {
     return m[i] * (q[2 * i] * q[2 * i] + q[2 * i + 1] * q[2 * i + 1]);

@@ -100,7 +100,7 @@ inline double stress(const EngineData& d, std::size_t t, const TriangleState& s,
   sig[1] = mu_j * (F[2] * F[2] + F[3] * F[3] - 1.0) + vol;
   sig[2] = mu_j * (F[0] * F[2] + F[1] * F[3]);
   if (!d.tris.sigma0.empty()) {
-    const double* s0 = &d.tris.sigma0[3 * t];
+    const double s0[3] = {d.tris.sigma0[3 * t], d.tris.sigma0[3 * t + 1], d.tris.sigma0[3 * t + 2]};
     // P = F S0, then P F^T / J.
     const double p00 = F[0] * s0[0] + F[1] * s0[2], p01 = F[0] * s0[2] + F[1] * s0[1];
     const double p10 = F[2] * s0[0] + F[3] * s0[2], p11 = F[2] * s0[2] + F[3] * s0[1];
@@ -212,7 +212,7 @@ double triangle_stress_zz(const EngineData& d, std::size_t t, double sigma0_zz) 
   load_state(d, t, s);
   if (!m.plane_strain || !(s.J > 0.0) || !d.tris.active[t]) return 0.0;
   // B_zz = 1: only the volumetric term and the initial stress act along z.
-  const double* s0 = d.tris.sigma0.empty() ? nullptr : &d.tris.sigma0[3 * t];
+  const float* s0 = d.tris.sigma0.empty() ? nullptr : &d.tris.sigma0[3 * t];
   const bool reset = !s0 || (s0[0] == 0.0 && s0[1] == 0.0 && s0[2] == 0.0);
   const double initial = reset ? 0.0 : sigma0_zz / s.J;
   return d.tris.alpha[t] * (0.5 * m.lambda * (s.J - 1.0 / s.J) + initial);
@@ -245,7 +245,7 @@ double triangle_stored_energy(const EngineData& d, std::size_t t, const Placemen
   if (!(s.J > 0.0)) return 0.0;
   double w = hyperelastic_density(d.solids[d.tris.material[t]], s);
   if (!d.tris.sigma0.empty()) {  // S0 : E with E = (F^T F - I) / 2
-    const double* s0 = &d.tris.sigma0[3 * t];
+    const float* s0 = &d.tris.sigma0[3 * t];
     const double* F = s.F;
     const double exx = 0.5 * (F[0] * F[0] + F[2] * F[2] - 1.0);
     const double eyy = 0.5 * (F[1] * F[1] + F[3] * F[3] - 1.0);

@@ -128,17 +128,19 @@ TEST(BoltInstall, keeping_current_stress_changes_no_stress_and_no_force) {
   // triangles lose it all.
   const double kept_stress = largest_stress_change(*kept.engine, *none.engine);
   const double freed_stress = largest_stress_change(*freed.engine, *none.engine);
-  EXPECT_LE(kept_stress, 1e-9 * scale) << kept_stress << " Pa";
+  // The kept stress is stored as an initial stress over alpha: rounded to
+  // test::kStored of itself and times alpha as stored, nothing more.
+  EXPECT_LE(kept_stress, 2 * test::kStored * scale) << kept_stress << " Pa";
   EXPECT_GE(freed_stress, 0.5 * scale) << freed_stress << " Pa";
   // Nodal forces: a node's force scale is the stress times a cell edge.
   for (Installed* r : {&none, &kept, &freed}) evaluate_forces(*r->engine);
   const double force_scale = scale * kCell;
   const double kept_force = largest_force_change(*kept.engine, *none.engine);
   const double freed_force = largest_force_change(*freed.engine, *none.engine);
-  EXPECT_LE(kept_force, 1e-9 * force_scale) << kept_force << " N/m";
+  EXPECT_LE(kept_force, 4 * test::kStored * force_scale) << kept_force << " N/m";
   EXPECT_GE(freed_force, 0.1 * force_scale) << freed_force << " N/m";
   const double ratio = none.engine->unbalanced_force_ratio();
-  EXPECT_NEAR(kept.engine->unbalanced_force_ratio(), ratio, 1e-9 * ratio);
+  EXPECT_NEAR(kept.engine->unbalanced_force_ratio(), ratio, 4 * test::kStored * ratio);
   EXPECT_GT(freed.engine->unbalanced_force_ratio(), 2 * ratio);
   std::printf(
       "strip stress scale %.4g Pa; largest stress change kept %.3g, free %.3g Pa; "

@@ -9,6 +9,7 @@
 #include <cstring>
 #include <random>
 #include <utility>
+#include <vector>
 
 #include "crack_elements.hpp"
 #include "engine_data.hpp"
@@ -237,6 +238,30 @@ TEST(CrackBatch, crack_forces_equal_the_scalar_loop_over_a_fracturing_mesh) {
 
 TEST(CrackBatch, crack_forces_with_strength_factors_equal_the_scalar_loop) {
   expect_batch_equals_scalar_loop(true);
+}
+
+// Damage is stored in single precision, rounded up (engine_data.hpp): the
+// stored value is the least float at or above the law's, so the law never
+// finds a history below the one it reached. Random damages in (0, 1), the
+// floats themselves and values just below 1 (which round up to 1).
+TEST(StoredDamage, is_the_least_float_at_or_above_the_laws) {
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  std::vector<double> values = {0.0, 1.0, 0.5, 1.0 - 1e-12, 1e-30, 0.1};
+  for (int i = 0; i < 100000; ++i) values.push_back(u(rng));
+  for (int i = 0; i < 1000; ++i) values.push_back(double(float(u(rng))));
+  int exact = 0;
+  for (const double v : values) {
+    const float f = detail::round_up_to_float(v);
+    ASSERT_GE(double(f), v) << v;
+    if (double(f) == v) {
+      ++exact;
+      continue;
+    }
+    ASSERT_LT(double(std::nextafter(f, 0.0f)), v) << v;
+  }
+  EXPECT_GE(exact, 1003);  // 0, 1, 0.5 and the floats stay as they are
+  EXPECT_EQ(detail::round_up_to_float(1.0 - 1e-12), 1.0f);
 }
 
 }  // namespace

@@ -23,16 +23,17 @@ TEST(EngineMemory, fracturing_ucs_holds_its_arrays_and_at_most_500_B_per_triangl
   const double nt = double(e.n_triangles()), nc = double(e.n_cracks()), nn = double(e.n_nodes());
   const std::vector<int>& vertex = e.node_vertex();
   const double nv = double(*std::max_element(vertex.begin(), vertex.end()) + 1);
-  // Per node: position, velocity 16 each, mass 8, vertex, CSR start 4
-  // each; per element corner a 4-byte slot entry; per mesh vertex its
+  // Per node: position, velocity 16 each, mass (single precision), vertex,
+  // CSR start 4 each; per element corner a 4-byte slot entry; per mesh vertex its
   // position 16 and the vertex -> nodes CSR (4 per node, 4 per vertex).
-  const double nodes = nn * 48 + (3 * nt + 4 * nc) * 4 + nv * 20 + nn * 4;
-  // Per triangle: nodes 12, F0^-1 32, area, eta, alpha 8 each, the last
-  // viscous stress 12 (single precision), material 2, active 1.
-  const double tris = nt * 83;
-  // Per crack element: nodes 16, damages 24, material 2, state, mode,
-  // active 1 each, broken step 4 (its triangles come from the slots).
-  const double cracks = nc * 49;
+  const double nodes = nn * 44 + (3 * nt + 4 * nc) * 4 + nv * 20 + nn * 4;
+  // Per triangle: nodes 12, F0^-1 32, area, eta, alpha 4 each (single
+  // precision), the last viscous stress 12, material 2, active 1.
+  const double tris = nt * 71;
+  // Per crack element: nodes 16, damages 12 (single precision), material 2,
+  // state, mode, active 1 each, broken step 4 (its triangles come from the
+  // slots).
+  const double cracks = nc * 37;
   const double slots = (3 * nt + 2 * nc) * 16;  // two per crack element
   const double expected = nodes + tris + cracks + slots;
   const double bytes = double(e.memory_bytes());

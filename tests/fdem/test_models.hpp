@@ -10,6 +10,11 @@
 
 namespace rockfdem::fdem::test {
 
+/// The engine holds its model constants (masses, stiffness factors,
+/// initial stresses, crack offsets) in single precision: each is the given
+/// value to within this fraction of itself (half a float's spacing).
+constexpr double kStored = 0x1p-24;
+
 /// The benchmark rock (structured_mesh.hpp), no damping.
 inline Material rock() { return benchmark_rock(); }
 

@@ -379,14 +379,14 @@ Crown crown_of(const std::string& name) {
 }  // namespace
 
 // The shipped jointed seed tunnel in a hard basalt mass, unsupported and
-// bolted, each run to its own end (docs/benchmarks.md, "The jointed seed
-// tunnel"): the intact rock stays nearly whole (under 5% of its crack
-// elements broken, measured 1.9% and 2.8%); the unsupported crown wedge
-// loosens, its joints opening, and the run does not reach equilibrium;
-// the bolts hold it and the run completes. Measured: vault 11.6 against
-// 6.4 mm, the crown joints' largest opening 10.6 against 0.8 mm, slip
-// 12.2 against 7.4 mm; the bounds lie about half way from the measured
-// ratios to 1.
+// bolted (arch, walls and floor), each run to its own end
+// (docs/benchmarks.md, "The jointed seed tunnel"): the intact rock stays
+// nearly whole (under 5% of all crack elements broken, measured 2.0% and
+// 3.4%); the unsupported crown wedge loosens, its joints opening, and the
+// run does not reach equilibrium; the bolts hold it and the run
+// completes. Measured: vault 9.2 against 6.4 mm, the crown joints'
+// largest opening 7.2 against 3.0 mm, slip 9.8 against 8.1 mm; the
+// bounds lie between the measured ratios and 1.
 TEST(JointScene, bolts_hold_the_jointed_crown_the_unsupported_tunnel_releases) {
   const Crown open = crown_of("tunnel-jointed"), bolted = crown_of("tunnel-jointed-bolted");
   EXPECT_EQ(bolted.status, "completed");

@@ -271,7 +271,7 @@ class Engine {
   /// Node positions and velocities, interleaved (x0, y0, x1, y1, ...).
   const std::vector<double>& positions() const;
   const std::vector<double>& velocities() const;
-  const std::vector<double>& node_mass() const;
+  const std::vector<float>& node_mass() const;
   /// Overwrites one node's position and velocity (mapping a state in,
   /// quasi-static drivers, tests).
   void set_node_state(std::size_t node, double x, double y, double vx, double vy);
