@@ -17,6 +17,18 @@
 namespace rockfdem::fdem::detail {
 namespace {
 
+/// Element c's strength terms: its material's, times its factor in
+/// heterogeneous models.
+StrengthTerms<double> strength_terms(const EngineData& d, std::size_t c, const CrackConstants& k) {
+  return d.cracks.strength.empty() ? material_terms(k)
+                                   : scaled_strength_terms(k, double(d.cracks.strength[c]));
+}
+
+/// Element c's damage at its three points, widened from storage.
+void point_damage(const EngineData& d, std::size_t c, double out[3]) {
+  for (int i = 0; i < 3; ++i) out[i] = d.cracks.damage[3 * c + i];
+}
+
 void zero_slots(double* s) {
   for (int k = 0; k < 4; ++k) s[k] = 0.0;
 }
@@ -89,9 +101,7 @@ inline double element_potential(const CrackConstants& k, const double o[3], cons
   // The material's constants and strength terms, the latter scaled by the
   // element's factor in heterogeneous models.
   const CrackConstants& k = d.crack_laws[d.cracks.material[c]];
-  const StrengthTerms<double> st = d.cracks.strength.empty()
-                                       ? material_terms(k)
-                                       : scaled_strength_terms(k, double(d.cracks.strength[c]));
+  const StrengthTerms<double> st = strength_terms(d, c, k);
   double o[3] = {o0, 0.5 * (o0 + o1), o1}, s[3] = {s0, 0.5 * (s0 + s1), s1};
   if (!d.cracks.offset.empty()) {  // re-joined or pre-stressed elements (per point)
     const float* off = &d.cracks.offset[6 * c];
@@ -187,8 +197,8 @@ double crack_element_energy(const EngineData& d, std::size_t c, const Placement&
   if (!d.cracks.offset.empty())
     for (int i = 0; i < 6; ++i) os[i] -= d.cracks.offset[6 * c + i];
   const double o[3] = {os[0], os[2], os[4]}, s[3] = {os[1], os[3], os[5]};
-  const float* dmg = &d.cracks.damage[3 * c];
-  const double damage[3] = {dmg[0], dmg[1], dmg[2]};
+  double damage[3];
+  point_damage(d, c, damage);
   return element_potential(crack_constants(d, c), o, s, h, damage);
 }
 
@@ -204,11 +214,9 @@ void crack_point_stresses(const EngineData& d, std::size_t c, double out[6]) {
   if (!d.cracks.offset.empty())
     for (int i = 0; i < 6; ++i) os[i] -= d.cracks.offset[6 * c + i];
   const CrackConstants& k = d.crack_laws[d.cracks.material[c]];
-  const StrengthTerms<double> st = d.cracks.strength.empty()
-                                       ? material_terms(k)
-                                       : scaled_strength_terms(k, double(d.cracks.strength[c]));
-  double damage[3] = {d.cracks.damage[3 * c], d.cracks.damage[3 * c + 1],
-                      d.cracks.damage[3 * c + 2]};
+  const StrengthTerms<double> st = strength_terms(d, c, k);
+  double damage[3];
+  point_damage(d, c, damage);
   with_crack_law(k.law, [&](auto law) {
     for (int i = 0; i < 3; ++i) {
       const CrackPoint p =
