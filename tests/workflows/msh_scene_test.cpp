@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -37,6 +38,17 @@ TEST(MshScene, default_stages_install_the_lining_of_a_lined_mesh) {
   EXPECT_EQ(c["model"], "elastic") << j.dump();
   EXPECT_EQ(c["lining_alpha"], j["insitu"]["alpha"].back()) << c.dump();
   EXPECT_TRUE(fs::exists(dir / "out" / "continuum_profiles.csv"));
+  // check's h / l_ch is the run's, from the file's elements (restart_support
+  // meshes its fracture zone at 0.4 m), not from mesh.size_near's default
+  // 0.5 m, which a .msh model does not use.
+  const double h = j["resolution"]["h_m"].get<double>();
+  EXPECT_GT(h, 0.3);
+  EXPECT_LT(h, 0.45);
+  const Result checked = run("check " + scene.string());
+  ASSERT_EQ(checked.code, 0) << checked.output;
+  char said[64];
+  std::snprintf(said, sizeof said, "(h = %.3g m,", h);
+  EXPECT_NE(checked.output.find(said), std::string::npos) << said << "\n" << checked.output;
   fs::remove_all(dir);
 }
 

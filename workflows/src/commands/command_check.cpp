@@ -32,6 +32,7 @@ struct Estimate {
   double triangles = 0;
   double fracture_triangles = 0;
   double min_altitude = 0;  ///< [m]; 0: not known before meshing
+  double fracture_h = 0;    ///< fracture zone's mean edge [m]; 0: not known before meshing
   bool exact = false;       ///< counted from a .msh file
 };
 
@@ -89,6 +90,7 @@ Estimate read_msh_figures(const Scene& s) {
   e.triangles = double(m.n_triangles());
   e.fracture_triangles = double(std::count(m.fracture.begin(), m.fracture.end(), 1));
   e.min_altitude = report.min_altitude;
+  e.fracture_h = fracture_resolution(s, &m).h;  // mesh.size_near means nothing to a .msh
   e.exact = true;
   return e;
 }
@@ -478,7 +480,8 @@ int command_check(const Scene& scene, const RunContext& ctx) {
   // Crack elements: about 1.5 interior edges per triangle.
   std::printf("  crack elements (estimate):  %.0f\n", 1.5 * e.fracture_triangles);
   if (e.fracture_triangles > 0) {
-    const Resolution r = fracture_resolution(scene, nullptr);
+    const Resolution r =
+        e.fracture_h > 0 ? resolution_at(scene, e.fracture_h) : fracture_resolution(scene, nullptr);
     std::printf(
         "  fracture resolution:        h / l_ch = %.3g (h = %.3g m, l_ch = E GfI / "
         "ft^2 = %.3g m; limit %g)\n",

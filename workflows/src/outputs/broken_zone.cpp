@@ -100,11 +100,17 @@ std::vector<Segment> fracture_zone_edge(const mesh::Mesh& m) {
   return out;
 }
 
-Resolution fracture_resolution(const Scene& scene, const mesh::Mesh* m) {
+Resolution resolution_at(const Scene& scene, double h) {
   Resolution r;
   const MaterialSpec& rock = scene.materials.at(mesh::kRock);
   if (rock.tensile_strength > 0 && rock.fracture_energy_I > 0)
     r.l_ch = rock.young * rock.fracture_energy_I / (rock.tensile_strength * rock.tensile_strength);
+  r.h = h;
+  r.ratio = r.l_ch > 0 ? r.h / r.l_ch : 0.0;
+  return r;
+}
+
+Resolution fracture_resolution(const Scene& scene, const mesh::Mesh* m) {
   double sum = 0;
   long n = 0;
   if (m)
@@ -117,9 +123,7 @@ Resolution fracture_resolution(const Scene& scene, const mesh::Mesh* m) {
         ++n;
       }
     }
-  r.h = n > 0 ? sum / double(n) : scene.mesh.size.size_near;
-  r.ratio = r.l_ch > 0 ? r.h / r.l_ch : 0.0;
-  return r;
+  return resolution_at(scene, n > 0 ? sum / double(n) : scene.mesh.size.size_near);
 }
 
 BrokenZone broken_zone(const fdem::Engine& e, const mesh::Mesh& m, double h,

@@ -42,6 +42,9 @@ struct Resolution {
 /// when given, else from mesh.size_near (what `check` knows before meshing).
 Resolution fracture_resolution(const Scene& scene, const mesh::Mesh* m);
 
+/// The same for a known element size h [m].
+Resolution resolution_at(const Scene& scene, double h);
+
 struct BrokenZone {
   long broken = 0;        ///< broken crack elements between two rock triangles
   double depth = 0;       ///< farthest of them from the excavation boundary [m]
