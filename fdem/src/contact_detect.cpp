@@ -531,7 +531,10 @@ void contact_breaks(EngineData& d) {
   s.found.clear();
   std::size_t o = 0;
   for (const auto& p : s.trial) {
-    while (o < c.pairs.size() && c.pairs[o] < p) ++o;
+    // A few trial pairs among many pairs: searched, not walked.
+    o = static_cast<std::size_t>(
+        std::lower_bound(c.pairs.begin() + static_cast<long>(o), c.pairs.end(), p) -
+        c.pairs.begin());
     if (o < c.pairs.size() && c.pairs[o] == p) continue;
     const int i = candidate_index(c, p[0]), j = candidate_index(c, p[1]);
     if (i < 0 || j < 0 || !boxes_overlap(&c.boxes[4 * i], &c.boxes[4 * j])) continue;
