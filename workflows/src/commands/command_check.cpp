@@ -115,18 +115,19 @@ Estimate estimate(const Scene& s) {
   return {};
 }
 
-// Peak memory of a run: the libraries' baseline plus, per triangle, the
-// mesh and the implicit stage (measured 0.65 kB per triangle of peak RSS
-// growth between 107k and 390k triangles, `rockfdem insitu`) and the engine
-// (1100 B per triangle, below), with the implicit fields the outputs keep
-// (and a direct counterpart's factor, kDirectCounterpartBytesPerTriangle);
-// and each implicit field held whole (stress, activity, displacements: 37 B
-// per triangle measured, 1000 alphas all held on the default tunnel's 8,798
-// triangles peaking at 582 MB). A 2M-triangle .msh peaked at 2,520 B per
-// triangle above the baseline, 26% above this sum: the bound shown adds
+// Peak memory of a run without a probe: the libraries' baseline plus, per
+// triangle, the implicit stage's peak, which sets the run's, and each
+// implicit field held whole (stress, activity, displacements: 37 B per
+// triangle measured, 1000 alphas all held on the default tunnel's 8,798
+// triangles peaking at 582 MB). Measured on the one-shot seed tunnel at
+// 3,337,814 triangles (one explicit step per stage, 2 threads): 2,911 MiB,
+// 834 B per triangle above 256 MiB with one field held, the same mesh read
+// as a .msh 2,898 MiB; the engine holds 443 B per triangle after its
+// set-up (about 500 after 2,000 steps at 420k). 1000 B per triangle leaves
+// room for the engine's growth over a long run; the bound shown adds
 // kMemoryMargin.
 constexpr double kBaseBytes = 256.0 * 1048576;
-constexpr double kBytesPerTriangle = 650 + 1100 + 250;
+constexpr double kBytesPerTriangle = 1000;
 constexpr double kBytesPerAlphaTriangle = 40;
 constexpr double kMemoryMargin = 1.5;
 
