@@ -31,9 +31,16 @@
 //      triangle-steps/s, the bench's median at the same size, its lowest
 //      and highest, and the ratio to the median; a line under the table
 //      where the repeats lie more than 20% apart (the ratio not settled);
-//   2. per run: the peak resident memory by the end of each phase
+//   2. per run: each engine module's time per element-step in the tunnel
+//      (summary.json "fdem_modules" and "counts") and in the bench's median
+//      repeat (its "phases" line and counts), and the modules both run
+//      (triangles, crack elements, nodes) priced at the bench's rates over
+//      the tunnel's counts against the tunnel's own time: the like-for-like
+//      comparison, since the tunnel has crack elements in its fracture zone
+//      only and the bench's specimen no contact pair before it breaks;
+//   3. per run: the peak resident memory by the end of each phase
 //      (summary.json "peak_memory_mib"), which says which phase sets the peak;
-//   3. per size: whether every thread count gave the same state hash.
+//   4. per size: whether every thread count gave the same state hash.
 //
 // Exit code: 0 when every run exited 0, 1 when one did not, 2 for bad options.
 #include <algorithm>
@@ -159,6 +166,25 @@ Options parse_options(int argc, char** argv) {
   return o;
 }
 
+// Engine modules per element-step [ns]: triangles per triangle, crack
+// elements per crack element, nodes per node, contact per triangle. The
+// tunnel has crack elements in its fracture zone only, and nodes shared
+// outside it, where the bench's specimen has both everywhere: per element,
+// not per step, is like for like.
+using ModuleRates = std::map<std::string, double>;
+
+ModuleRates per_element_ns(const std::map<std::string, double>& seconds, double steps,
+                           double triangles, double cracks, double nodes) {
+  ModuleRates ns;
+  const std::map<std::string, double> count = {
+      {"triangles", triangles}, {"cracks", cracks}, {"nodes", nodes}, {"contact", triangles}};
+  for (const auto& [module, n] : count) {
+    const auto it = seconds.find(module);
+    if (it != seconds.end() && n > 0 && steps > 0) ns[module] = 1e9 * it->second / (n * steps);
+  }
+  return ns;
+}
+
 // One tunnel run and the bench beside it.
 struct Run {
   double size = 0;
@@ -167,9 +193,18 @@ struct Run {
   std::string status, state_hash;
   std::optional<double> triangles, steps, tunnel_rate, engine_bytes;
   std::map<std::string, double> seconds, peak_mib;  // by phase, from summary.json
+  ModuleRates modules;                              // per element-step [ns], summary.json
+  double crack_elements = 0, nodes = 0;             // summary.json "counts"
   std::optional<double> ucs_rate, ucs_bytes;        // the median of the repeats
   std::vector<double> ucs_rates;                    // each repeat's, ascending
+  ModuleRates ucs_modules;                          // the median repeat's
   int ucs_exit = 0;
+};
+
+// One bench repeat: its rate and its modules per element-step.
+struct UcsRepeat {
+  double rate = 0;
+  ModuleRates modules;
 };
 
 std::string run_name(const Run& r) {
@@ -210,6 +245,13 @@ void read_summary(const fs::path& path, Run& r) {
   r.engine_bytes = bench::number_at(j, {"memory_bytes_per_triangle"});
   r.seconds = number_map(j, "timings");
   r.peak_mib = number_map(j, "peak_memory_mib");
+  const auto cracks = bench::number_at(j, {"counts", "crack_elements"});
+  const auto nodes = bench::number_at(j, {"counts", "nodes"});
+  r.crack_elements = cracks.value_or(0);
+  r.nodes = nodes.value_or(0);
+  if (r.steps && r.triangles && cracks && nodes)
+    r.modules =
+        per_element_ns(number_map(j, "fdem_modules"), *r.steps, *r.triangles, *cracks, *nodes);
 }
 
 // The number after `label` on the first line of `text` that holds it.
@@ -218,6 +260,19 @@ std::optional<double> number_after(const std::string& text, const std::string& l
   std::smatch m;
   if (!std::regex_search(text, m, re)) return std::nullopt;
   return std::strtod(m[1].str().c_str(), nullptr);
+}
+
+// The bench's "phases:" line and its counts as per_element_ns.
+ModuleRates ucs_modules(const std::string& text) {
+  const auto steps = number_after(text, "\\nsteps");
+  const auto tri = number_after(text, "\\ntriangles");
+  const auto nodes = number_after(text, "\\ntriangles [0-9]+ nodes");
+  const auto cracks = number_after(text, "\\ntriangles [0-9]+ nodes [0-9]+ cracks");
+  if (!steps || !tri || !nodes || !cracks) return {};
+  std::map<std::string, double> seconds;
+  for (const char* m : {"triangles", "cracks", "contact", "nodes"})
+    if (const auto sec = number_after(text, std::string("phases:.*") + m)) seconds[m] = *sec;
+  return per_element_ns(seconds, *steps, *tri, *cracks, *nodes);
 }
 
 void run_ucs(const Options& o, Run& r) {
@@ -232,6 +287,7 @@ void run_ucs(const Options& o, Run& r) {
                                          std::to_string(r.threads),
                                          "--contact",
                                          "1"};
+  std::vector<UcsRepeat> repeats;
   for (long k = 1; k <= o.ucs_repeats; ++k) {
     const fs::path log =
         fs::path(o.out) / (run_name(r) + "_ucs" + (k > 1 ? std::to_string(k) : "") + ".log");
@@ -239,13 +295,20 @@ void run_ucs(const Options& o, Run& r) {
     const int exit_code = bench::run_logged(args, log.string()).exit_code;
     if (exit_code != 0) r.ucs_exit = exit_code;
     const std::string text = bench::read_text(log);
-    if (const auto rate = number_after(text, "triangle-steps/s")) r.ucs_rates.push_back(*rate);
+    if (const auto rate = number_after(text, "triangle-steps/s")) {
+      r.ucs_rates.push_back(*rate);
+      repeats.push_back({*rate, ucs_modules(text)});
+    }
     r.ucs_bytes = number_after(text, "memory");
   }
   std::sort(r.ucs_rates.begin(), r.ucs_rates.end());
   const std::size_t n = r.ucs_rates.size();
   if (n > 0)
     r.ucs_rate = n % 2 ? r.ucs_rates[n / 2] : 0.5 * (r.ucs_rates[n / 2 - 1] + r.ucs_rates[n / 2]);
+  // The modules of the repeat at the median (the upper one of an even count).
+  std::sort(repeats.begin(), repeats.end(),
+            [](const UcsRepeat& a, const UcsRepeat& b) { return a.rate < b.rate; });
+  if (!repeats.empty()) r.ucs_modules = repeats[repeats.size() / 2].modules;
 }
 
 Run run_one(const Options& o, double size, int threads) {
@@ -330,6 +393,48 @@ void print_runs(const std::vector<Run>& runs) {
   warn_unsettled(runs);
 }
 
+// Each engine module per element-step in the tunnel and in the bench's
+// median repeat, and the three modules both run priced at the bench's
+// rates over the tunnel's own counts against what the tunnel took.
+void print_modules(const std::vector<Run>& runs) {
+  std::cout << "\nEach engine module per element-step [ns], tunnel / bench's median repeat "
+               "(triangles per triangle, crack elements per crack element, nodes per node, "
+               "contact per triangle; the bench's specimen has no contact pair before it "
+               "breaks):\n\n"
+            << "| run | triangles | crack elements | nodes | contact | triangles + cracks + "
+               "nodes: tunnel at the bench's rates / as measured |\n|---|---|---|---|---|---|\n";
+  for (const Run& r : runs) {
+    if (r.modules.empty()) continue;
+    std::cout << "| " << run_name(r);
+    for (const char* m : {"triangles", "cracks", "nodes", "contact"}) {
+      const auto t = r.modules.find(m);
+      const auto b = r.ucs_modules.find(m);
+      std::cout << " | " << (t == r.modules.end() ? "-" : fixed(t->second, 1)) << " / "
+                << (b == r.ucs_modules.end() ? "-" : fixed(b->second, 1));
+    }
+    // Weighted by the tunnel's counts, the weights cancel: the ratio of
+    // sums of count x rate.
+    const double tri = r.triangles.value_or(0);
+    double at_bench = 0, measured = 0;
+    bool all = true;
+    for (const auto& [m, n] : {std::pair<const char*, double>{"triangles", tri},
+                               {"cracks", r.crack_elements},
+                               {"nodes", r.nodes}}) {
+      const auto t = r.modules.find(m);
+      const auto b = r.ucs_modules.find(m);
+      if (t == r.modules.end() || b == r.ucs_modules.end()) {
+        all = false;
+        continue;
+      }
+      at_bench += n * b->second;
+      measured += n * t->second;
+    }
+    std::cout << " | " << (all && measured > 0 ? fixed(at_bench / measured, 2) : "-") << " |\n";
+  }
+  std::cout << "\n(The last column above 1: the tunnel runs the modules both have faster per "
+               "element than the bench.)\n";
+}
+
 // The run's phases in the order a tunnel run passes them, then any others.
 std::vector<std::string> phase_order(const Run& r) {
   std::vector<std::string> order;
@@ -382,6 +487,7 @@ int main(int argc, char** argv) {
       for (int t : o.threads) runs.push_back(run_one(o, h, t));
     print_header(o);
     print_runs(runs);
+    print_modules(runs);
     print_phases(runs);
     print_bits(o, runs);
     for (const Run& r : runs)
