@@ -65,9 +65,7 @@ inline double element_potential(const CrackConstants& k, const double o[3], cons
                                             const double before[3], const double* after) {
   double os[6];
   const Placement at{d.nodes.pos.data(), d.nodes.vel.data(), 0.5 * d.energy.last_dt};
-  const double h = crack_point_openings(d, c, at, os);
-  if (!d.cracks.offset.empty())
-    for (int i = 0; i < 6; ++i) os[i] -= d.cracks.offset[6 * c + i];
+  const double h = law_openings(d, c, at, os);
   const CrackConstants k = crack_constants(d, c);
   const double weight[3] = {h / 6.0, 2.0 * h / 3.0, h / 6.0};
   double released = 0.0;
@@ -190,12 +188,25 @@ double crack_point_openings(const EngineData& d, std::size_t c, double out[6]) {
   return crack_point_openings(d, c, Placement{d.nodes.pos.data(), d.nodes.vel.data(), 0.0}, out);
 }
 
+void subtract_offsets(const EngineData& d, std::size_t c, double os[6]) {
+  if (d.cracks.offset.empty()) return;
+  for (int i = 0; i < 6; ++i) os[i] -= d.cracks.offset[6 * c + i];
+}
+
+double law_openings(const EngineData& d, std::size_t c, const Placement& at, double os[6]) {
+  const double h = crack_point_openings(d, c, at, os);
+  subtract_offsets(d, c, os);
+  return h;
+}
+
+double law_openings(const EngineData& d, std::size_t c, double os[6]) {
+  return law_openings(d, c, Placement{d.nodes.pos.data(), d.nodes.vel.data(), 0.0}, os);
+}
+
 double crack_element_energy(const EngineData& d, std::size_t c, const Placement& at) {
   if (!d.cracks.active[c] || d.cracks.state[c] == std::uint8_t(CrackState::kBroken)) return 0.0;
   double os[6];
-  const double h = crack_point_openings(d, c, at, os);
-  if (!d.cracks.offset.empty())
-    for (int i = 0; i < 6; ++i) os[i] -= d.cracks.offset[6 * c + i];
+  const double h = law_openings(d, c, at, os);
   const double o[3] = {os[0], os[2], os[4]}, s[3] = {os[1], os[3], os[5]};
   double damage[3];
   point_damage(d, c, damage);
@@ -210,9 +221,7 @@ void crack_point_stresses(const EngineData& d, std::size_t c, double out[6]) {
   for (int i = 0; i < 6; ++i) out[i] = 0.0;
   if (!d.cracks.active[c] || d.cracks.state[c] == std::uint8_t(CrackState::kBroken)) return;
   double os[6];
-  const double h = crack_point_openings(d, c, os);
-  if (!d.cracks.offset.empty())
-    for (int i = 0; i < 6; ++i) os[i] -= d.cracks.offset[6 * c + i];
+  const double h = law_openings(d, c, os);
   const CrackConstants& k = d.crack_laws[d.cracks.material[c]];
   const StrengthTerms<double> st = strength_terms(d, c, k);
   double damage[3];

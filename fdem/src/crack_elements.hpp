@@ -30,6 +30,15 @@ double crack_end_openings(const EngineData& d, std::size_t c, const Placement& a
 double crack_point_openings(const EngineData& d, std::size_t c, double out[6]);
 double crack_point_openings(const EngineData& d, std::size_t c, const Placement& at, double out[6]);
 
+/// Subtracts element c's stored offsets (re-joined or pre-stressed points)
+/// from its point openings `os` (crack_point_openings' layout): what its
+/// law sees.
+void subtract_offsets(const EngineData& d, std::size_t c, double os[6]);
+
+/// crack_point_openings less the offsets; returns h.
+double law_openings(const EngineData& d, std::size_t c, const Placement& at, double os[6]);
+double law_openings(const EngineData& d, std::size_t c, double os[6]);
+
 /// Normal and shear stress (sigma, tau) at end 0, the midpoint and end 1
 /// of element c that its law gives at the current positions and damage
 /// (the damage history is not raised); zeros for a broken or inactive element.

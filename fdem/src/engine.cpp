@@ -603,11 +603,13 @@ CrackDisplacement Engine::crack_displacement(std::size_t c) const {
   CrackDisplacement r;
   r.length = detail::crack_point_openings(d, c, os);
   for (int i = 0; i < 3; ++i) {
-    r.opening[i] = r.law_opening[i] = os[2 * i];
-    r.slip[i] = r.law_slip[i] = os[2 * i + 1];
-    if (d.cracks.offset.empty()) continue;
-    r.law_opening[i] -= d.cracks.offset[6 * c + 2 * i];
-    r.law_slip[i] -= d.cracks.offset[6 * c + 2 * i + 1];
+    r.opening[i] = os[2 * i];
+    r.slip[i] = os[2 * i + 1];
+  }
+  detail::subtract_offsets(d, c, os);
+  for (int i = 0; i < 3; ++i) {
+    r.law_opening[i] = os[2 * i];
+    r.law_slip[i] = os[2 * i + 1];
   }
   return r;
 }

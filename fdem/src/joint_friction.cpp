@@ -24,16 +24,9 @@ void residual_friction_force(const EngineData& d, std::size_t c, double f[4]) {
   for (int i = 0; i < 4; ++i) f[i] = 0.0;
   if (!d.cracks.active[c]) return;
   double os[6];
-  const double h = crack_point_openings(d, c, os);
+  const double h = law_openings(d, c, os);
   const double inv_h = 1.0 / h;
-  double o[3], s[3];
-  for (int i = 0; i < 3; ++i) {
-    o[i] = os[2 * i];
-    s[i] = os[2 * i + 1];
-    if (d.cracks.offset.empty()) continue;
-    o[i] -= d.cracks.offset[6 * c + 2 * i];
-    s[i] -= d.cracks.offset[6 * c + 2 * i + 1];
-  }
+  const double o[3] = {os[0], os[2], os[4]}, s[3] = {os[1], os[3], os[5]};
   // The element's direction e = ((x1 + x2) - (x0 + x3)) / 2h.
   const int* nd = &d.cracks.nodes[4 * c];
   const double* p = d.nodes.pos.data();
