@@ -31,7 +31,7 @@ namespace rockfdem::fdem::detail {
 
 /// Bump when a saved member is added, removed or reordered: older files are
 /// then refused with a clear message instead of being misread.
-constexpr std::uint32_t kCheckpointVersion = 22;  // 2: energy ledger; 3: contact updates;
+constexpr std::uint32_t kCheckpointVersion = 23;  // 2: energy ledger; 3: contact updates;
                                                   // 4: mass scaling; 5: strength factors,
                                                   // kinetic damping; 6: joint friction;
                                                   // 7: compact engine arrays; 8: joint
@@ -51,7 +51,9 @@ constexpr std::uint32_t kCheckpointVersion = 22;  // 2: energy ledger; 3: contac
                                                   // 20: broken counts by mode;
                                                   // 21: gather rows rebuilt on load;
                                                   // 22: model constants and damage
-                                                  // in single precision
+                                                  // in single precision; 23:
+                                                  // appended pairs, the gather
+                                                  // rebuilt on load
 constexpr std::size_t kCheckpointHeaderBytes = 32;
 constexpr std::size_t kCheckpointChecksumBytes = 8;
 

@@ -9,7 +9,7 @@
 //
 // Determinism: every pair writes its twelve corner forces into its own
 // buffer; each contact triangle then sums its pairs' entries in ascending
-// pair order (a CSR built at detection) and adds the sum to its own force
+// pair order (contact_gather.cpp) and adds the sum to its own force
 // slots, which the node loop gathers as usual. While no candidate pair
 // exists the step does nothing but a displacement check over the
 // free-surface nodes.
@@ -18,6 +18,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 #include <vector>
 
 #include "contact_grid.hpp"
@@ -137,17 +138,32 @@ struct ContactData {
                                           ///< single precision rounds it by ~1e-7 of itself, where
                                           ///< an absolute coordinate would lose ~1e-7 of the
                                           ///< model's extent); EngineData::detected_position()
-  std::vector<std::array<int, 2>> pairs;  ///< triangle ids, canonical order
-  std::vector<double> friction;           ///< 6 per pair: role x contactor edge
-  std::vector<double> pair_force;         ///< 12 per pair: A's corners, B's corners; between
-                                          ///< contact passes a detection's scratch
-  std::vector<double> energy_partial;     ///< 2 per block of kPairBlock pairs: friction, damping
-  std::vector<int> gather_tri, gather_start, gather_entry;  ///< CSR triangle -> 2 pair + side
+  std::vector<std::array<int, 2>> pairs;  ///< triangle ids: [0, sorted_pairs) in canonical
+                                          ///< order (the last detection's), then those local
+                                          ///< updates appended since (contact_gather.cpp)
+  std::size_t sorted_pairs = 0;
+  std::vector<int> appended_order;     ///< the appended pairs' indices, canonical order
+  std::vector<double> friction;        ///< 6 per pair: role x contactor edge
+  std::vector<double> pair_force;      ///< 12 per pair: A's corners, B's corners; between
+                                       ///< contact passes a detection's scratch
+  std::vector<double> energy_partial;  ///< 2 per block of kPairBlock pairs: friction, damping
+  // Gather (contact_gather.cpp): row g sums the entries 2 pair + side of
+  // triangle gather_tri[g] in canonical pair order, merging the sorted
+  // pairs' from a CSR over rows [0, gather_start.size() - 1) with the
+  // appended pairs' from the row's list: entry 2 sorted_pairs + x for each
+  // x from extra_head[g] along extra_next, kept in canonical order.
+  std::vector<int> gather_tri, gather_start, gather_entry;
+  std::vector<int> extra_head;                    ///< per row: first appended x or -1
+  std::vector<int> extra_next;                    ///< per appended entry x: next x or -1
+  std::vector<std::array<int, 2>> appended_rows;  ///< (triangle, row) past the CSR's rows
   std::vector<int> entry_row;  ///< per pair entry 2 pair + side: its gather row (the
-                               ///< inverse of gather_entry, built with it)
+                               ///< inverse of the gather, built with it)
   GridScratch grid;
   BreakScratch breaks;
   NarrowScratch narrow;
+  /// At least the largest drift of a watched node since the detection
+  /// (bound_drift); infinity: unknown.
+  double drift_bound = std::numeric_limits<double>::infinity();
   bool dirty = true;           ///< re-detect before the next contact pass
   bool topology_dirty = true;  ///< candidates must be rebuilt
   long detections = 0, steps_with_pairs = 0, steps_skipped = 0, touching = 0;
@@ -172,12 +188,44 @@ void contact_detect(EngineData& d);
 /// when many triangles change at once or one is due anyway.
 void contact_breaks(EngineData& d);
 
-/// Each pair entry's gather row (entry_row) from the gather CSR: with the
-/// CSR, and after a checkpoint is loaded (the CSR is saved, its inverse not).
-void build_entry_rows(ContactData& c);
+/// The gather and entry_row from the pairs and sorted_pairs: after a
+/// detection, and after a checkpoint is loaded (the gather is not saved).
+void build_gather(EngineData& d);
+
+/// Appends the entries of pair q, the last pair, to its triangles' rows.
+void append_pair_entries(ContactData& c, std::size_t q);
+
+/// Calls f(entry) for each entry of gather row g in canonical pair order:
+/// the order a full detection gives, so that the sums have its bits.
+template <class F>
+inline void each_gather_entry(const ContactData& c, long g, F f) {
+  int k = 0, end = 0;
+  if (g + 1 < static_cast<long>(c.gather_start.size())) {
+    k = c.gather_start[g];
+    end = c.gather_start[g + 1];
+  }
+  const int base = static_cast<int>(2 * c.sorted_pairs);
+  for (int x = c.extra_head[g]; x >= 0; x = c.extra_next[x]) {
+    const std::array<int, 2>& appended = c.pairs[(base + x) / 2];
+    for (; k < end && c.pairs[c.gather_entry[k] / 2] < appended; ++k) f(c.gather_entry[k]);
+    f(base + x);
+  }
+  for (; k < end; ++k) f(c.gather_entry[k]);
+}
 
 /// One step of contact; see the header comment.
 void contact_forces(EngineData& d);
+
+/// Largest squared displacement of nodes[0, n) since the last detection.
+double largest_drift2(const EngineData& d, const int* nodes, long n);
+
+/// A drift bound from a drift `moved` plus margins for rounding: a billionth
+/// of `buffer` (above a step's rounding of positions in a model up to 10^6
+/// buffers wide) and of `moved` itself.
+inline double bound_drift(double moved, double buffer) {
+  constexpr double kMargin = 1e-9;
+  return moved * (1.0 + kMargin) + kMargin * buffer;
+}
 
 /// Pairs per block of the pair loop (dynamic scheduling; the energy sums
 /// are partials per block, added in block order).

@@ -206,6 +206,21 @@ inline bool boxes_overlap(const double* a, const double* b) {
   return a[0] <= b[2] && b[0] <= a[2] && a[1] <= b[3] && b[1] <= a[3];
 }
 
+/// Indices of all pairs in canonical order (in the breaks' scratch): the
+/// sorted ones merged with the appended ones.
+const std::vector<int>& canonical_order(ContactData& c) {
+  std::vector<int>& order = c.breaks.merged;
+  order.resize(c.pairs.size());
+  const auto by_pair = [&](int a, int b) { return c.pairs[a] < c.pairs[b]; };
+  std::size_t i = 0, j = 0, k = 0;
+  const std::size_t ns = c.sorted_pairs, na = c.appended_order.size();
+  while (i < ns || j < na) {
+    const bool sorted = j == na || (i < ns && by_pair(int(i), c.appended_order[j]));
+    order[k++] = sorted ? static_cast<int>(i++) : c.appended_order[j++];
+  }
+  return order;
+}
+
 /// Replaces the pairs by those the grid found (c.grid.found, candidate
 /// indices, in canonical order). Friction springs of pairs found again keep
 /// their state (both lists are sorted, so one merge walk); the new springs
@@ -219,30 +234,33 @@ double carry_friction(EngineData& d) {
   static constexpr double kNoSprings[6] = {};
   ContactData& c = d.contact;
   const auto& found = c.grid.found;
-  const std::size_t n = found.size();
+  const std::size_t n = found.size(), n_old = c.pairs.size();
+  const std::vector<int>& old = canonical_order(c);  // the old pairs, one merge walk
   grow_to(c.pair_force, 12 * n);
   double* spring = c.pair_force.data();
   const Placement at = half_step_placement(d);
   double change = 0.0;
-  auto dropped = [&](std::size_t o) {
+  auto dropped = [&](std::size_t k) {
+    const int o = old[k];
     return contact_pair_energy(d, c.pairs[o][0], c.pairs[o][1], &c.friction[6 * o], at);
   };
-  std::size_t o = 0;
+  std::size_t k = 0;
   for (std::size_t i = 0; i < n; ++i) {
     const std::array<int, 2> p = {c.candidates[found[i][0]], c.candidates[found[i][1]]};
-    for (; o < c.pairs.size() && c.pairs[o] < p; ++o) change += dropped(o);
-    if (o < c.pairs.size() && c.pairs[o] == p) {
-      std::copy_n(&c.friction[6 * o], 6, &spring[6 * i]);
-      ++o;
+    for (; k < n_old && c.pairs[old[k]] < p; ++k) change += dropped(k);
+    if (k < n_old && c.pairs[old[k]] == p) {
+      std::copy_n(&c.friction[6 * old[k]], 6, &spring[6 * i]);
+      ++k;
     } else {
       std::fill_n(&spring[6 * i], 6, 0.0);
       change -= contact_pair_energy(d, p[0], p[1], kNoSprings, at);
     }
   }
-  for (; o < c.pairs.size(); ++o) change += dropped(o);
+  for (; k < n_old; ++k) change += dropped(k);
   grow_to(c.pairs, n);
   for (std::size_t i = 0; i < n; ++i)
     c.pairs[i] = {c.candidates[found[i][0]], c.candidates[found[i][1]]};
+  c.sorted_pairs = n;
   c.friction.assign(spring, spring + 6 * n);
   return change;
 }
@@ -251,40 +269,6 @@ double carry_friction(EngineData& d) {
 int candidate_index(const ContactData& c, int t) {
   const auto it = std::lower_bound(c.candidates.begin(), c.candidates.end(), t);
   return it != c.candidates.end() && *it == t ? static_cast<int>(it - c.candidates.begin()) : -1;
-}
-
-/// CSR contact triangle -> (2 pair + side), in ascending pair order. Linear
-/// in pairs and candidates (the pairs' triangles are candidates): it runs
-/// at every local update as well as at every detection, so it looks the
-/// pairs' triangles up in a per-triangle row array instead of searching the
-/// candidates (a search per pair cost more than the rest of the update).
-void build_gather(EngineData& d) {
-  ContactData& c = d.contact;
-  const std::size_t np = c.pairs.size();
-  // Gather row per triangle, -1 between calls; 0 first marks the triangles
-  // with pairs, which are numbered in ascending (candidate) order.
-  std::vector<int>& row = c.breaks.gather_index;
-  row.resize(d.tris.size(), -1);
-  for (const auto& p : c.pairs) row[p[0]] = row[p[1]] = 0;
-  c.gather_tri.clear();
-  for (int t : c.candidates)
-    if (row[t] == 0) {
-      row[t] = static_cast<int>(c.gather_tri.size());
-      c.gather_tri.push_back(t);
-    }
-  c.gather_start.assign(c.gather_tri.size() + 1, 0);
-  for (const auto& p : c.pairs) {
-    ++c.gather_start[row[p[0]] + 1];
-    ++c.gather_start[row[p[1]] + 1];
-  }
-  for (std::size_t g = 0; g < c.gather_tri.size(); ++g) c.gather_start[g + 1] += c.gather_start[g];
-  grow_to(c.gather_entry, 2 * np);
-  c.grid.offset.assign(c.gather_start.begin(), c.gather_start.end() - 1);
-  for (std::size_t q = 0; q < np; ++q)
-    for (int side = 0; side < 2; ++side)
-      c.gather_entry[c.grid.offset[row[c.pairs[q][side]]]++] = static_cast<int>(2 * q + side);
-  build_entry_rows(c);
-  for (int t : c.gather_tri) row[t] = -1;
 }
 
 /// Inserts the (ascending, new) triangles s.tris into the candidates with
@@ -317,6 +301,9 @@ void insert_candidates(EngineData& d) {
                               s.ints.end(), s.merged.begin());
   s.merged.erase(std::unique(s.merged.begin(), end), s.merged.end());
   std::swap(c.watch_nodes, s.merged);
+  // Watched from now on, from their positions at the detection.
+  const double moved = std::sqrt(largest_drift2(d, s.ints.data(), long(s.ints.size())));
+  c.drift_bound = std::max(c.drift_bound, bound_drift(moved, c.buffer));
 }
 
 /// Every pair the breakage may have allowed, as ascending triangle ids,
@@ -369,57 +356,76 @@ void trial_pairs(EngineData& d) {
   s.trial.erase(std::unique(s.trial.begin(), s.trial.end()), s.trial.end());
 }
 
-/// Merges the accepted new pairs s.found into the pairs, in place from the
-/// back (every old pair moves up or stays): old pairs keep their friction
-/// springs, new ones start at zero. Returns minus the stored energy of the
-/// new pairs (the handover, as in carry_friction).
-double insert_pairs(EngineData& d) {
+/// Appends the accepted new pairs s.found (canonical order) to the pairs
+/// with springs at zero and their entries to the gather; returns minus
+/// their stored energy (the handover, as in carry_friction).
+double append_pairs(EngineData& d) {
   ContactData& c = d.contact;
-  const BreakScratch& s = c.breaks;
-  std::size_t i = c.pairs.size(), j = s.found.size();
-  const std::size_t n = i + j;
-  grow_to(c.pairs, n);
-  grow_to(c.friction, 6 * n);
-  for (std::size_t k = n; j > 0; --k) {  // once the new ones are placed, the rest stays
-    if (i > 0 && s.found[j - 1] < c.pairs[i - 1]) {
-      --i;
-      c.pairs[k - 1] = c.pairs[i];
-      std::copy_n(&c.friction[6 * i], 6, &c.friction[6 * (k - 1)]);
-    } else {
-      c.pairs[k - 1] = s.found[--j];
-      std::fill_n(&c.friction[6 * (k - 1)], 6, 0.0);
-    }
-  }
+  BreakScratch& s = c.breaks;
+  const std::size_t n0 = c.pairs.size(), m = s.found.size();
+  grow_to(c.pairs, n0 + m);
+  grow_to(c.friction, 6 * (n0 + m));
+  std::copy(s.found.begin(), s.found.end(), c.pairs.begin() + static_cast<long>(n0));
+  std::fill(c.friction.begin() + static_cast<long>(6 * n0), c.friction.end(), 0.0);
   const Placement at = half_step_placement(d);
   double change = 0.0;
-  j = 0;
-  for (std::size_t k = 0; k < n && j < s.found.size(); ++k)
-    if (c.pairs[k] == s.found[j]) {
-      change -= contact_pair_energy(d, k, at);
-      ++j;
+  for (std::size_t q = n0; q < n0 + m; ++q) {
+    change -= contact_pair_energy(d, q, at);
+    append_pair_entries(c, q);
+  }
+  // The new indices (canonical among themselves) merged into the order, in
+  // place from the back.
+  std::size_t i = c.appended_order.size(), j = m, k = i + m;
+  grow_to(c.appended_order, k);
+  while (j > 0)
+    if (i > 0 && s.found[j - 1] < c.pairs[c.appended_order[i - 1]]) {
+      c.appended_order[--k] = c.appended_order[--i];
+    } else {
+      c.appended_order[--k] = static_cast<int>(n0 + --j);
     }
   return change;
 }
 
+/// Puts the pairs and their springs back in canonical order and rebuilds
+/// the gather: the appended pairs lie in the order they broke, so a pair
+/// loop and a gather over many of them would lose the locality the
+/// canonical order gives (the space-filling order of the triangles).
+void sort_pairs(EngineData& d) {
+  ContactData& c = d.contact;
+  const std::vector<int>& order = canonical_order(c);
+  const std::size_t n = c.pairs.size();
+  std::vector<std::array<int, 2>>& pairs = c.breaks.trial;  // scratch
+  grow_to(pairs, n);
+  grow_to(c.pair_force, 12 * n);  // scratch between contact passes
+  double* spring = c.pair_force.data();
+  for (std::size_t k = 0; k < n; ++k) {
+    pairs[k] = c.pairs[order[k]];
+    std::copy_n(&c.friction[6 * order[k]], 6, &spring[6 * k]);
+  }
+  std::copy(pairs.begin(), pairs.end(), c.pairs.begin());
+  std::copy_n(spring, 6 * n, c.friction.begin());
+  c.sorted_pairs = n;
+  build_gather(d);
+}
+
 /// The crack elements broken in this step, the triangles that become
 /// candidates and the vertices at their ends (unsorted). A few of many
-/// crack elements broke: blocks without one are passed over by a test that
-/// vectorises.
+/// crack elements broke: only the blocks the crack pass marked are looked
+/// at.
 void collect_breaks(EngineData& d) {
-  constexpr int kScanBlock = 256;
   const ContactData& c = d.contact;
   BreakScratch& s = d.contact.breaks;
   s.cracks.clear();
   s.tris.clear();
   s.vertices.clear();
-  const int n_cracks = static_cast<int>(d.cracks.size());
+  const long n_cracks = static_cast<long>(d.cracks.size());
   const std::int32_t* broken_step = d.cracks.broken_step.data();
   const auto step = static_cast<std::int32_t>(d.step);
-  for (int e0 = 0; e0 < n_cracks; e0 += kScanBlock) {
-    const int e1 = std::min(n_cracks, e0 + kScanBlock);
-    bool any = false;
-    for (int e = e0; e < e1; ++e) any |= broken_step[e] == step;
-    if (!any) continue;
+  const std::vector<std::uint8_t>& marked = d.cracks.broke_in_block;
+  for (std::size_t b = 0; b < marked.size(); ++b) {
+    if (!marked[b]) continue;
+    const int e0 = static_cast<int>(long(b) * kEnergyBlock);
+    const int e1 = static_cast<int>(std::min(n_cracks, long(b + 1) * kEnergyBlock));
     for (int e = e0; e < e1; ++e) {
       if (broken_step[e] != step || d.cracks.state[e] != std::uint8_t(CrackState::kBroken))
         continue;
@@ -434,13 +440,6 @@ void collect_breaks(EngineData& d) {
 }
 
 }  // namespace
-
-void build_entry_rows(ContactData& c) {
-  grow_to(c.entry_row, c.gather_entry.size());
-  for (std::size_t g = 0; g < c.gather_tri.size(); ++g)
-    for (int k = c.gather_start[g]; k < c.gather_start[g + 1]; ++k)
-      c.entry_row[c.gather_entry[k]] = static_cast<int>(g);
-}
 
 void contact_setup(EngineData& d) {
   ContactData& c = d.contact;
@@ -479,6 +478,9 @@ void contact_detect(EngineData& d) {
     for (int axis = 0; axis < 2; ++axis)
       c.detect_shift[2 * i + axis] =
           static_cast<float>(d.nodes.pos[2 * i + axis] - d.nodes.mesh_position(i, axis));
+  // Not quite 0: the shifts are rounded to single precision.
+  c.drift_bound = bound_drift(
+      std::sqrt(largest_drift2(d, c.watch_nodes.data(), long(c.watch_nodes.size()))), c.buffer);
   build_boxes(d);
   grid_pairs(c.boxes, may_touch, &d, d.threads, c.grid, c.grid.found);
   // The broken faces' handover to contact: booked with the fracture energy
@@ -506,7 +508,7 @@ void contact_detect(EngineData& d) {
 // candidates' nodes join the watched nodes with their x0 positions, so the
 // drift check covers them from x0 as if they had been watched since the
 // detection: the guarantee above holds for the grown set as it held for
-// the old one. Pairs are merged in their canonical order and existing
+// the old one. New pairs are appended (contact_gather.cpp) and existing
 // pairs keep their friction springs.
 void contact_breaks(EngineData& d) {
   ContactData& c = d.contact;
@@ -529,24 +531,29 @@ void contact_breaks(EngineData& d) {
   }
   trial_pairs(d);
   s.found.clear();
-  std::size_t o = 0;
+  const auto sorted_end = c.pairs.begin() + static_cast<long>(c.sorted_pairs);
+  auto o = c.pairs.begin();
+  auto a = c.appended_order.begin();
+  const auto before = [&](int q, const std::array<int, 2>& p) { return c.pairs[q] < p; };
   for (const auto& p : s.trial) {
     // A few trial pairs among many pairs: searched, not walked.
-    o = static_cast<std::size_t>(
-        std::lower_bound(c.pairs.begin() + static_cast<long>(o), c.pairs.end(), p) -
-        c.pairs.begin());
-    if (o < c.pairs.size() && c.pairs[o] == p) continue;
+    o = std::lower_bound(o, sorted_end, p);
+    if (o != sorted_end && *o == p) continue;
+    a = std::lower_bound(a, c.appended_order.end(), p, before);
+    if (a != c.appended_order.end() && c.pairs[*a] == p) continue;
     const int i = candidate_index(c, p[0]), j = candidate_index(c, p[1]);
     if (i < 0 || j < 0 || !boxes_overlap(&c.boxes[4 * i], &c.boxes[4 * j])) continue;
     if (may_touch(&d, i, j)) s.found.push_back(p);
   }
   ++c.updates;
   if (s.found.empty()) return;
-  const double handover = insert_pairs(d);
+  const double handover = append_pairs(d);
   if (d.energy.started) d.energy.fracture += handover;
+  // Sorted again once the appended pairs are a sixteenth of the sorted ones:
+  // a pass over all pairs every so many updates instead of at each.
+  if (c.pairs.size() - c.sorted_pairs > c.sorted_pairs / 16 + 64) sort_pairs(d);
   grow_to(c.pair_force, 12 * c.pairs.size());
   c.energy_partial.resize(2 * ((c.pairs.size() + kPairBlock - 1) / kPairBlock));
-  build_gather(d);
 }
 
 }  // namespace rockfdem::fdem::detail

@@ -184,10 +184,22 @@ long block_forces(EngineData& d, long blk, const Tri* tris, const ContactBox* bo
   return n_touching;
 }
 
-/// Largest squared displacement of a watched node since the detection.
-double watched_drift2(const EngineData& d) {
-  const ContactData& c = d.contact;
-  const long n = static_cast<long>(c.watch_nodes.size());
+/// Sum of contact triangle g's pair entries, in ascending pair order, added
+/// to its three force slots.
+inline void gather_triangle(const ContactData& c, long g, double* slots) {
+  double sum[6] = {0, 0, 0, 0, 0, 0};
+  each_gather_entry(c, g, [&](int entry) {
+    // entry = 2 q + side: its six values start at 12 q + 6 side = 6 entry.
+    const double* f = &c.pair_force[6 * static_cast<std::size_t>(entry)];
+    for (int i = 0; i < 6; ++i) sum[i] += f[i];
+  });
+  double* s = slots + 6 * c.gather_tri[g];
+  for (int i = 0; i < 6; ++i) s[i] += sum[i];
+}
+
+}  // namespace
+
+double largest_drift2(const EngineData& d, const int* nodes, long n) {
   double worst = 0.0;
   // Serial below a few thousand nodes (an intact body's outline): a
   // parallel region would cost more than the loop.
@@ -195,7 +207,7 @@ double watched_drift2(const EngineData& d) {
     reduction(max                                                              \
               : worst) if (n > 16384)
   for (long i = 0; i < n; ++i) {
-    const int node = c.watch_nodes[i];
+    const int node = nodes[i];
     const double dx = d.nodes.pos[2 * node] - d.detected_position(node, 0);
     const double dy = d.nodes.pos[2 * node + 1] - d.detected_position(node, 1);
     worst = std::max(worst, dx * dx + dy * dy);
@@ -203,27 +215,20 @@ double watched_drift2(const EngineData& d) {
   return worst;
 }
 
-/// Sum of contact triangle g's pair entries, in ascending pair order, added
-/// to its three force slots.
-inline void gather_triangle(const ContactData& c, long g, double* slots) {
-  double sum[6] = {0, 0, 0, 0, 0, 0};
-  for (int k = c.gather_start[g]; k < c.gather_start[g + 1]; ++k) {
-    // entry = 2 q + side: its six values start at 12 q + 6 side = 6 entry.
-    const double* f = &c.pair_force[6 * static_cast<std::size_t>(c.gather_entry[k])];
-    for (int i = 0; i < 6; ++i) sum[i] += f[i];
-  }
-  double* s = slots + 6 * c.gather_tri[g];
-  for (int i = 0; i < 6; ++i) s[i] += sum[i];
-}
-
-}  // namespace
-
 void contact_forces(EngineData& d) {
   ContactData& c = d.contact;
   // Two pieces approach by at most twice the largest drift: detect again
-  // once that could close the buffer.
-  if (!c.dirty && !c.watch_nodes.empty() && 4.0 * watched_drift2(d) > c.buffer * c.buffer)
-    c.dirty = true;
+  // once that could close the buffer. The nodes are measured only once the
+  // bound on their drift could be beyond that; below it the measure could
+  // not find it, so the detections come at the same steps.
+  if (!c.dirty && !c.watch_nodes.empty() && !(2.0 * c.drift_bound < c.buffer)) {
+    const double worst2 = largest_drift2(d, c.watch_nodes.data(), long(c.watch_nodes.size()));
+    if (4.0 * worst2 > c.buffer * c.buffer) {
+      c.dirty = true;
+    } else {
+      c.drift_bound = bound_drift(std::sqrt(worst2), c.buffer);
+    }
+  }
   if (c.dirty) contact_detect(d);
   const long np = static_cast<long>(c.pairs.size());
   if (np == 0) {

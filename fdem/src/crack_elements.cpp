@@ -352,6 +352,7 @@ long crack_forces(EngineData& d) {
 #pragma omp for schedule(static)
     for (long b = 0; b < n_blocks; ++b) {
       double released = 0;
+      std::uint8_t any_broke = 0;
       const long begin = b * kEnergyBlock, end = std::min(nc, (b + 1) * kEnergyBlock);
       if (d.crack_batch) {
         batch_pass(d, begin, end, batch, element, slots, scalar);
@@ -370,6 +371,7 @@ long crack_forces(EngineData& d) {
           const auto mode = std::uint8_t(classify_failure(sum_a2, sum_b2));
           d.cracks.mode[c] = mode;
           d.cracks.broken_step[c] = step;
+          any_broke = 1;
           ++broke[broken_mode_entry(mode)];
         } else if (state[c] == std::uint8_t(CrackState::kIntact) &&
                    (dmg[0] > 0.0 || dmg[1] > 0.0 || dmg[2] > 0.0)) {
@@ -377,6 +379,7 @@ long crack_forces(EngineData& d) {
         }
       }
       partial[b] = released;
+      d.cracks.broke_in_block[b] = any_broke;
     }
   }
   double released = 0;

@@ -126,18 +126,20 @@ std::vector<MemoryPart> memory_parts(const detail::EngineData& d) {
             t.material, t.active);
   const auto& c = d.cracks;
   add_parts(p, "cracks",
-            "nodes damage material state mode active broken_step offset strength joints "
-            "joint_force",
-            c.nodes, c.damage, c.material, c.state, c.mode, c.active, c.broken_step, c.offset,
-            c.strength, c.joints, c.joint_force);
+            "nodes damage material state mode active broken_step broke_in_block offset strength "
+            "joints joint_force",
+            c.nodes, c.damage, c.material, c.state, c.mode, c.active, c.broken_step,
+            c.broke_in_block, c.offset, c.strength, c.joints, c.joint_force);
   add_parts(p, "engine", "slots block_partial energy_partial vertex_nodes vertex_node_start",
             d.slots, d.block_partial, d.energy_partial, d.vertex_nodes, d.vertex_node_start);
   const auto& k = d.contact;
   add_parts(p, "contact",
-            "candidates boxes watch_nodes detect_shift pairs friction pair_force "
-            "gather_tri gather_start gather_entry entry_row energy_partial",
-            k.candidates, k.boxes, k.watch_nodes, k.detect_shift, k.pairs, k.friction, k.pair_force,
-            k.gather_tri, k.gather_start, k.gather_entry, k.entry_row, k.energy_partial);
+            "candidates boxes watch_nodes detect_shift pairs appended_order friction pair_force "
+            "gather_tri gather_start gather_entry extra_head extra_next appended_rows "
+            "entry_row energy_partial",
+            k.candidates, k.boxes, k.watch_nodes, k.detect_shift, k.pairs, k.appended_order,
+            k.friction, k.pair_force, k.gather_tri, k.gather_start, k.gather_entry, k.extra_head,
+            k.extra_next, k.appended_rows, k.entry_row, k.energy_partial);
   const auto& g = k.grid;
   add_parts(p, "contact.grid", "cell cell_start items count offset found", g.cell, g.cell_start,
             g.items, g.count, g.offset, g.found);

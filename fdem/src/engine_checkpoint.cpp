@@ -11,6 +11,7 @@
 // value records' each_member lists count themselves), and
 // kCheckpointVersion + 1 when the saved bytes change.
 #include <istream>
+#include <limits>
 #include <ostream>
 
 #include "checkpoint_format.hpp"
@@ -122,7 +123,7 @@ void fields(Ar& ar, Triangles& t) {
 
 template <class Ar>
 void fields(Ar& ar, Cracks& c) {
-  ROCKFDEM_CHECKPOINT_MEMBERS(Cracks, 11);
+  ROCKFDEM_CHECKPOINT_MEMBERS(Cracks, 12);
   ar.tag("CRAK");
   ar.model(c.nodes);
   ar.state(c.damage);
@@ -131,6 +132,7 @@ void fields(Ar& ar, Cracks& c) {
   ar.state(c.mode);
   ar.state(c.active);
   ar.state(c.broken_step);
+  ar.skip(c.broke_in_block);  // scratch: each crack pass rewrites it before contact reads it
   ar.state(c.offset);
   ar.state(c.strength);     // set_crack_material draws again with the new material
   ar.state(c.joints);       // follows set_crack_material
@@ -139,7 +141,7 @@ void fields(Ar& ar, Cracks& c) {
 
 template <class Ar>
 void fields(Ar& ar, ContactData& c) {
-  ROCKFDEM_CHECKPOINT_MEMBERS(ContactData, 26);
+  ROCKFDEM_CHECKPOINT_MEMBERS(ContactData, 32);
   ar.tag("CONT");
   ar.state(c.settings);
   ar.state(c.penalty);  // set_contact may come after construction: all of it is state
@@ -149,16 +151,23 @@ void fields(Ar& ar, ContactData& c) {
   ar.state(c.boxes);
   ar.state(c.watch_nodes);
   ar.state(c.detect_shift);  // boxes of later candidates and the drift check start here
-  ar.state(c.pairs);         // in their canonical order, not detected again
+  ar.state(c.pairs);         // in their order (sorted, then appended), not detected again
+  ar.state(c.sorted_pairs);  // where the appended ones start
   ar.state(c.friction);      // the tangential springs
   ar.state(c.pair_force);
-  ar.state(c.gather_tri);
-  ar.state(c.gather_start);
-  ar.state(c.gather_entry);
-  ar.skip(c.entry_row);  // the gather CSR's inverse: rebuilt from it after loading
-  ar.skip(c.grid);       // scratch: every detection rewrites it before reading it
-  ar.skip(c.breaks);     // scratch: every local update rewrites it before reading it
-  ar.skip(c.narrow);     // scratch: every contact pass rewrites it before reading it
+  // The gather follows from the pairs and the candidates: rebuilt after loading.
+  ar.skip(c.appended_order);
+  ar.skip(c.gather_tri);
+  ar.skip(c.gather_start);
+  ar.skip(c.gather_entry);
+  ar.skip(c.extra_head);
+  ar.skip(c.extra_next);
+  ar.skip(c.appended_rows);
+  ar.skip(c.entry_row);
+  ar.skip(c.grid);         // scratch: every detection rewrites it before reading it
+  ar.skip(c.breaks);       // scratch: every local update rewrites it before reading it
+  ar.skip(c.narrow);       // scratch: every contact pass rewrites it before reading it
+  ar.skip(c.drift_bound);  // set unknown after loading: the first drift check measures
   ar.state(c.dirty);
   ar.state(c.topology_dirty);
   ar.state(c.detections);
@@ -264,7 +273,8 @@ void Engine::load_state(std::istream& in) {
   detail::CheckpointReader r(file, begin, end);
   detail::impl_fields(r, *impl_);
   r.finish();
-  detail::build_entry_rows(impl_->d.contact);
+  detail::build_gather(impl_->d);
+  impl_->d.contact.drift_bound = std::numeric_limits<double>::infinity();
 }
 
 }  // namespace rockfdem::fdem

@@ -141,6 +141,9 @@ struct Cracks {
   std::vector<std::uint8_t> mode;    ///< FailureMode
   std::vector<std::uint8_t> active;  ///< both triangles active
   std::vector<std::int32_t> broken_step;
+  /// Per kEnergyBlock elements: 1 when one of them broke in the last crack
+  /// pass (contact_breaks looks there only).
+  std::vector<std::uint8_t> broke_in_block;
   std::vector<float> offset;        ///< (o, s) taken as zero at end 0, midpoint, end 1
                                     ///< (6 per element); empty until an element is
                                     ///< re-joined or pre-stressed (crack_prestress.cpp)

@@ -17,8 +17,9 @@ namespace rockfdem::fdem::detail {
 namespace {
 
 /// Partial sums per node block: reversal (2), external work, damping,
-/// absorbing dashpots, kinetic energy at the new velocities.
-constexpr int kNodeSums = 6;
+/// absorbing dashpots, kinetic energy at the new velocities; then the
+/// largest squared speed.
+constexpr int kNodeSums = 7;
 
 /// -1, 0 or +1 without a branch: a vibrating body's velocities change sign
 /// at random, which a branch predictor cannot follow (the compiler turned
@@ -172,7 +173,7 @@ namespace {
 
 /// Sums a block of the node loop hands back (reversal check and energy).
 struct NodeSums {
-  double dot = 0, kin = 0, external = 0, damping = 0, absorbing = 0, energy = 0;
+  double dot = 0, kin = 0, external = 0, damping = 0, absorbing = 0, energy = 0, speed2 = 0;
 };
 
 /// Energy bookings of a node with a boundary record (rare, so out of line):
@@ -277,6 +278,7 @@ long node_loop(EngineData& d) {
         if (kLoaded) sum.external += (gx * (vx0 + vx) + gy * (vy0 + vy)) * half_dt;
       }
       if (kinetic) sum.energy += kinetic_energy_term(n.mass[i], vx, vy);
+      sum.speed2 = std::max(sum.speed2, vx * vx + vy * vy);  // a NaN stops the run below
       n.vel[2 * i] = vx;
       n.vel[2 * i + 1] = vy;
       n.pos[2 * i] += vx * dt;
@@ -297,6 +299,7 @@ long node_loop(EngineData& d) {
     p[3] = sum.damping;
     p[4] = sum.absorbing;
     p[5] = sum.energy;
+    p[6] = sum.speed2;
   }
   return first_bad < nn ? first_bad : -1;
 }
@@ -315,15 +318,19 @@ long node_update(EngineData& d) {
                           : (d.dead_loads ? node_loop<false, true>(d) : node_loop<false, false>(d));
   const long n_blocks = (static_cast<long>(d.nodes.size()) + kNodeBlock - 1) / kNodeBlock;
   const double* partial = d.block_partial.data();
-  double sum[kNodeSums] = {0, 0, 0, 0, 0};
-  for (long blk = 0; blk < n_blocks; ++blk)
-    for (int k = 0; k < kNodeSums; ++k) sum[k] += partial[kNodeSums * blk + k];
+  double sum[kNodeSums] = {0, 0, 0, 0, 0, 0, 0};
+  for (long blk = 0; blk < n_blocks; ++blk) {
+    for (int k = 0; k < 6; ++k) sum[k] += partial[kNodeSums * blk + k];
+    sum[6] = std::max(sum[6], partial[kNodeSums * blk + 6]);
+  }
   d.reversal[0] = sum[0];
   d.reversal[1] = sum[1];
   d.energy.external += sum[2];
   d.energy.nodal_damping += sum[3];
   d.energy.absorbing += sum[4];
   d.kinetic_after_step = sum[5];
+  // No node moved farther than the fastest one did (contact's drift check).
+  d.contact.drift_bound += bound_drift(std::sqrt(sum[6]) * d.dt, d.contact.buffer);
   return bad;
 }
 

@@ -12,6 +12,7 @@
 #include <string>
 #include <utility>
 
+#include "energy.hpp"
 #include "rockfdem/error.hpp"
 
 namespace rockfdem::fdem::detail {
@@ -159,6 +160,7 @@ void build_cracks(const ModelInput& in, EngineData& d) {
   d.cracks.mode.assign(nc, 0);
   d.cracks.active.assign(nc, 1);
   d.cracks.broken_step.assign(nc, -1);
+  d.cracks.broke_in_block.assign((nc + kEnergyBlock - 1) / kEnergyBlock, 0);
 }
 
 /// CSR node -> slot entries, filled by walking the element corners
