@@ -394,7 +394,8 @@ void sort_pairs(EngineData& d) {
   ContactData& c = d.contact;
   const std::vector<int>& order = canonical_order(c);
   const std::size_t n = c.pairs.size();
-  std::vector<std::array<int, 2>>& pairs = c.breaks.trial;  // scratch
+  // The grid's result is scratch between detections, and about as long.
+  std::vector<std::array<int, 2>>& pairs = c.grid.found;
   grow_to(pairs, n);
   grow_to(c.pair_force, 12 * n);  // scratch between contact passes
   double* spring = c.pair_force.data();
