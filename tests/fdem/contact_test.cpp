@@ -1,5 +1,7 @@
 // Contact: Munjiza's potential-based penalty contact with Coulomb
 // friction, the free-surface broad phase, and determinism.
+#include "contact.hpp"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -9,6 +11,8 @@
 #include "boundary.hpp"
 #include "contact_grid.hpp"
 #include "engine_data.hpp"
+#include "node_update.hpp"
+#include "parallel.hpp"
 #include "rockfdem/fdem/constants.hpp"
 #include "test_models.hpp"
 #include "topology.hpp"
@@ -247,6 +251,25 @@ void break_crack(detail::EngineData& d, int e) {
   d.cracks.broke_in_block[std::size_t(e / detail::kEnergyBlock)] = 1;  // as the crack pass marks
 }
 
+/// A fracture mesh of 12 x 12 squares over 2 cm, contact on and set up,
+/// nothing detected: the broad phase's data without an engine (these tests
+/// call the phases themselves).
+detail::EngineData contact_square() {
+  RectangleSpec spec;
+  spec.width = spec.height = 0.02;
+  spec.nx = spec.ny = 12;
+  ModelInput in = structured_rectangle(spec, test::rock());
+  detail::EngineData d;
+  d.materials = in.materials;
+  detail::build_topology(in, d);
+  detail::resolve_edges(in, d);  // the vertex -> node lists
+  d.threads = 1;
+  d.contact.settings = contact_on();
+  d.contact_on = true;
+  detail::contact_setup(d);
+  return d;
+}
+
 /// A pair (its triangles) with its friction springs.
 using PairSprings = std::pair<std::array<int, 2>, std::array<double, 6>>;
 
@@ -283,26 +306,14 @@ std::map<int, std::vector<std::pair<std::array<int, 2>, int>>> gathered(
 // nodes, the pairs (in canonical order: a local update appends them) and
 // each triangle's gathered entries, in the order it sums them, equal those
 // of a full detection at the same positions (so the forces have the same
-// bits), and the pairs that were there keep their friction springs. The full detection after
-// the last round carries every spring over.
+// bits), and the pairs that were there keep their friction springs.
 // A fracture mesh with every node jiggled (faces open and overlap), a fifth
 // of the crack elements broken beforehand, full detections between rounds
 // after the nodes moved again.
 TEST(Contact, local_update_after_breakage_equals_a_full_detection) {
-  RectangleSpec spec;
-  spec.width = spec.height = 0.02;
-  spec.nx = spec.ny = 12;
-  ModelInput in = structured_rectangle(spec, test::rock());
-  detail::EngineData d;
-  d.materials = in.materials;
-  detail::build_topology(in, d);
-  detail::resolve_edges(in, d);  // the vertex -> node lists
-  d.threads = 1;
-  d.contact.settings = contact_on();
-  d.contact_on = true;
-  detail::contact_setup(d);
+  detail::EngineData d = contact_square();
   std::mt19937 rng(11);
-  const double h = spec.width / spec.nx;
+  const double h = 0.02 / 12;  // the squares' side
   std::uniform_real_distribution<double> jiggle(-0.04 * h, 0.04 * h), spring(-1, 1);
   const int nc = static_cast<int>(d.cracks.size());
   for (int e = 0; e < nc; ++e)
@@ -359,6 +370,68 @@ TEST(Contact, local_update_after_breakage_equals_a_full_detection) {
   EXPECT_GT(resorted, 0);
   EXPECT_LT(resorted, local);
   EXPECT_EQ(d.contact.updates, 40);
+}
+
+// The drift check measures the watched nodes only once a bound on their
+// drift could exceed half the buffer (contact_force.cpp): the node loop adds
+// the fastest node's speed times dt at each step, and a local update adds
+// the drift its new candidates' nodes have had since the detection. Here the
+// watched nodes creep and the others fly (so a new candidate's node has
+// drifted far more than any measure saw), the bound is measured anew as the
+// check does, crack elements break and detections come; at every step the
+// bound is at least the largest drift of a watched node. Leaving out either
+// term makes it fall below.
+TEST(Contact, drift_bound_never_falls_below_the_largest_drift) {
+  detail::EngineData d = contact_square();
+  std::mt19937 rng(5);
+  const int nc = static_cast<int>(d.cracks.size());
+  for (int e = 0; e < nc; ++e)
+    if (rng() % 4 == 0) break_crack(d, e);
+  detail::contact_detect(d);
+  // The node loop's needs: masses, its block sums, dt; no forces (the
+  // slots hold zero), so each node keeps its velocity.
+  d.nodes.mass.assign(d.nodes.size(), 1.0f);
+  d.block_partial.assign(7 * (d.nodes.size() / detail::kNodeBlock + 1), 0.0);
+  d.dt = 1e-6;
+  std::uniform_real_distribution<double> unit(-1, 1);
+  auto set_speeds = [&] {
+    const auto& watched = d.contact.watch_nodes;
+    for (std::size_t i = 0; i < d.nodes.size(); ++i) {
+      const bool w = std::binary_search(watched.begin(), watched.end(), int(i));
+      for (int k = 0; k < 2; ++k) d.nodes.vel[2 * i + k] = (w ? 1.0 : 50.0) * unit(rng);
+    }
+  };
+  set_speeds();
+  const double buffer = d.contact.buffer;
+  double worst_margin = 1e300;
+  for (int step = 1; step <= 200; ++step) {
+    detail::node_update(d);
+    ++d.step;
+    if (step % 7 == 0) {  // a measure, as the check makes once the bound is large
+      const auto& w = d.contact.watch_nodes;
+      d.contact.drift_bound = detail::bound_drift(
+          std::sqrt(detail::largest_drift2(d, w.data(), long(w.size()))), buffer);
+    }
+    if (step % 5 == 0) {  // breaks: new candidates, fast nodes among them
+      for (int k = 0; k < 3;) {
+        const int e = static_cast<int>(rng() % nc);
+        if (d.cracks.state[e] == std::uint8_t(CrackState::kBroken)) continue;
+        break_crack(d, e);
+        ++k;
+      }
+      detail::contact_breaks(d);
+    }
+    if (step % 50 == 0) {  // a detection: drift starts again (from rounding)
+      d.contact.dirty = true;
+      detail::contact_detect(d);
+      set_speeds();
+    }
+    const auto& w = d.contact.watch_nodes;
+    const double drift = std::sqrt(detail::largest_drift2(d, w.data(), long(w.size())));
+    ASSERT_GE(d.contact.drift_bound, drift) << "step " << step;
+    worst_margin = std::min(worst_margin, (d.contact.drift_bound - drift) / buffer);
+  }
+  std::printf("smallest margin of the bound over the drift: %.3g buffers\n", worst_margin);
 }
 
 // Contact on, intact fracture specimen: candidates on the outline, no pairs,
