@@ -170,6 +170,15 @@ struct ContactData {
   long updates = 0;  ///< local updates after breakage (contact_breaks)
 };
 
+/// Pair indices in the canonical order of their pairs (triangle ids), and
+/// a pair index against a pair: the order the sorted and appended pairs
+/// are merged and searched in.
+struct CanonicalOrder {
+  const ContactData& c;
+  bool operator()(int a, int b) const { return c.pairs[a] < c.pairs[b]; }
+  bool operator()(int a, const std::array<int, 2>& p) const { return c.pairs[a] < p; }
+};
+
 /// Edge neighbours and crack elements per triangle edge, penalty, buffer,
 /// friction coefficients.
 void contact_setup(EngineData& d);

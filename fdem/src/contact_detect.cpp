@@ -211,7 +211,7 @@ inline bool boxes_overlap(const double* a, const double* b) {
 const std::vector<int>& canonical_order(ContactData& c) {
   std::vector<int>& order = c.breaks.merged;
   order.resize(c.pairs.size());
-  const auto by_pair = [&](int a, int b) { return c.pairs[a] < c.pairs[b]; };
+  const CanonicalOrder by_pair{c};
   std::size_t i = 0, j = 0, k = 0;
   const std::size_t ns = c.sorted_pairs, na = c.appended_order.size();
   while (i < ns || j < na) {
@@ -535,12 +535,11 @@ void contact_breaks(EngineData& d) {
   const auto sorted_end = c.pairs.begin() + static_cast<long>(c.sorted_pairs);
   auto o = c.pairs.begin();
   auto a = c.appended_order.begin();
-  const auto before = [&](int q, const std::array<int, 2>& p) { return c.pairs[q] < p; };
   for (const auto& p : s.trial) {
     // A few trial pairs among many pairs: searched, not walked.
     o = std::lower_bound(o, sorted_end, p);
     if (o != sorted_end && *o == p) continue;
-    a = std::lower_bound(a, c.appended_order.end(), p, before);
+    a = std::lower_bound(a, c.appended_order.end(), p, CanonicalOrder{c});
     if (a != c.appended_order.end() && c.pairs[*a] == p) continue;
     const int i = candidate_index(c, p[0]), j = candidate_index(c, p[1]);
     if (i < 0 || j < 0 || !boxes_overlap(&c.boxes[4 * i], &c.boxes[4 * j])) continue;

@@ -101,8 +101,7 @@ void build_gather(EngineData& d) {
   c.appended_order.clear();
   for (std::size_t q = c.sorted_pairs; q < c.pairs.size(); ++q)
     c.appended_order.push_back(static_cast<int>(q));
-  std::sort(c.appended_order.begin(), c.appended_order.end(),
-            [&](int a, int b) { return c.pairs[a] < c.pairs[b]; });
+  std::sort(c.appended_order.begin(), c.appended_order.end(), CanonicalOrder{c});
 }
 
 }  // namespace rockfdem::fdem::detail
