@@ -236,6 +236,18 @@ inline double bound_drift(double moved, double buffer) {
   return moved * (1.0 + kMargin) + kMargin * buffer;
 }
 
+/// Every node moved at most `distance` in a step: the drift check's bound
+/// grows by it (no node moved farther than the fastest one did).
+inline void contact_nodes_moved(ContactData& c, double distance) {
+  c.drift_bound += bound_drift(distance, c.buffer);
+}
+
+/// Nodes moved by other than a step (kinetic damping's settle): the bound
+/// is unknown and the next drift check measures.
+inline void contact_nodes_moved_anyhow(ContactData& c) {
+  c.drift_bound = std::numeric_limits<double>::infinity();
+}
+
 /// Pairs per block of the pair loop (dynamic scheduling; the energy sums
 /// are partials per block, added in block order).
 constexpr long kPairBlock = 64;

@@ -180,7 +180,7 @@ void fields(Ar& ar, ContactData& c) {
 
 template <class Ar>
 void fields(Ar& ar, EngineData& d) {
-  ROCKFDEM_CHECKPOINT_MEMBERS(EngineData, 35);  // reversal and gravity count twice
+  ROCKFDEM_CHECKPOINT_MEMBERS(EngineData, 36);  // reversal and gravity count twice
   fields(ar, d.nodes);
   fields(ar, d.tris);
   fields(ar, d.cracks);
@@ -201,6 +201,7 @@ void fields(Ar& ar, EngineData& d) {
   ar.state(d.block_partial);
   ar.state(d.reversal);
   ar.skip(d.kinetic_after_step);  // the next node loop sums it before it is read
+  ar.skip(d.fastest_speed);       // likewise
   ar.state(d.damping);
   ar.state(d.kinetic_damping);  // the peak test continues across a restart
   ar.state(d.mass_scaling);     // set_mass_scaling may come after construction

@@ -208,6 +208,7 @@ struct EngineData {
   std::vector<double> energy_partial;  ///< triangle and crack loops: one per kEnergyBlock
   double reversal[2] = {0, 0};         ///< sum m v_old.v_new, sum m v_old^2 (free nodes)
   double kinetic_after_step = 0;       ///< kinetic_energy() after the node loop (kinetic damping)
+  double fastest_speed = 0;            ///< the node loop's largest node speed (contact's drift)
   DampingSettings damping;
   KineticDampingState kinetic_damping;
   MassScaling mass_scaling;

@@ -1,8 +1,6 @@
 // Kinetic damping (kinetic_damping.hpp).
 #include "kinetic_damping.hpp"
 
-#include <limits>
-
 #include "energy.hpp"
 #include "joint_friction.hpp"
 #include "parallel.hpp"
@@ -48,7 +46,6 @@ bool kinetic_damping(EngineData& d) {
                                   [&](long t) { return triangle_viscous_pending(d, t); });
   d.energy.joint_friction += joint_friction_pending(d);  // likewise
   settle_free_components(d);
-  d.contact.drift_bound = std::numeric_limits<double>::infinity();  // moved back: measure again
   const double left = kinetic_energy(d);  // of prescribed velocities, if any
   d.energy.kinetic_damping += ke - left;
   s.previous = left;
