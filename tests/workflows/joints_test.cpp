@@ -381,18 +381,20 @@ Crown crown_of(const std::string& name) {
 // The shipped jointed seed tunnel in a hard basalt mass, unsupported and
 // bolted (arch, walls and floor), each run to its own end
 // (docs/benchmarks.md, "The jointed seed tunnel"): the intact rock stays
-// nearly whole (under 5% of all crack elements broken, measured 2.0% and
-// 3.4%); the unsupported crown wedge loosens, its joints opening, and the
-// run does not reach equilibrium; the bolts hold it and the run
-// completes. Measured: vault 9.2 against 6.4 mm, the crown joints'
-// largest opening 7.2 against 3.0 mm, slip 9.8 against 8.1 mm; the
-// bounds lie between the measured ratios and 1.
-TEST(JointScene, bolts_hold_the_jointed_crown_the_unsupported_tunnel_releases) {
+// nearly whole (under 5% of all crack elements broken); the unsupported
+// crown wedge loosens, its joints opening, and the bolts hold it: the
+// bolted run completes. The unsupported wedge is at limit equilibrium:
+// over seven realisations (dt_safety 0.785-0.815) it came to rest twice,
+// crept to the step cap twice and flowed three times, so its status is
+// not asserted; the bounds hold over every pairing of those realisations.
+// Measured, bolted against unsupported: vault 6.39-6.41 against 7.48-14.14
+// mm (ratio 0.86 at worst, 0.70 in the shipped run), the crown joints'
+// largest opening 0.97-3.23 against 4.90-14.05 mm (0.66 at worst, 0.41).
+TEST(JointScene, bolts_hold_the_jointed_crown_the_unsupported_tunnel_loosens) {
   const Crown open = crown_of("tunnel-jointed"), bolted = crown_of("tunnel-jointed-bolted");
   EXPECT_EQ(bolted.status, "completed");
-  EXPECT_NE(open.status, "completed");
-  EXPECT_LT(bolted.vault, 0.75 * open.vault) << bolted.vault << " mm against " << open.vault;
-  EXPECT_LT(bolted.joint_opening, 0.5 * open.joint_opening)
+  EXPECT_LT(bolted.vault, 0.9 * open.vault) << bolted.vault << " mm against " << open.vault;
+  EXPECT_LT(bolted.joint_opening, 0.75 * open.joint_opening)
       << bolted.joint_opening << " mm against " << open.joint_opening;
   EXPECT_GT(open.joint_opening, 3.0);  // the wedge's joints open: a block loosening
   EXPECT_LT(open.broken_share, 0.05);
