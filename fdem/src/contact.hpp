@@ -242,9 +242,9 @@ inline void contact_nodes_moved(ContactData& c, double distance) {
   c.drift_bound += bound_drift(distance, c.buffer);
 }
 
-/// Nodes moved by other than a step (kinetic damping's settle): the bound
-/// is unknown and the next drift check measures.
-inline void contact_nodes_moved_anyhow(ContactData& c) {
+/// Nodes moved by other than a step (kinetic damping's settle), or a state
+/// was loaded: the bound is unknown and the next drift check measures.
+inline void contact_drift_unknown(ContactData& c) {
   c.drift_bound = std::numeric_limits<double>::infinity();
 }
 

@@ -95,12 +95,13 @@ void build_gather(EngineData& d) {
   c.extra_head.assign(c.gather_tri.size(), -1);
   c.extra_next.clear();
   c.appended_rows.clear();
-  for (std::size_t q = c.sorted_pairs; q < c.pairs.size(); ++q) append_pair_entries(c, q);
-  // The appended pairs in canonical order (after a checkpoint is loaded;
-  // local updates keep it themselves).
+  // The appended pairs in canonical order too (after a checkpoint is
+  // loaded; local updates keep it themselves).
   c.appended_order.clear();
-  for (std::size_t q = c.sorted_pairs; q < c.pairs.size(); ++q)
+  for (std::size_t q = c.sorted_pairs; q < c.pairs.size(); ++q) {
+    append_pair_entries(c, q);
     c.appended_order.push_back(static_cast<int>(q));
+  }
   std::sort(c.appended_order.begin(), c.appended_order.end(), CanonicalOrder{c});
 }
 

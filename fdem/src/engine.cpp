@@ -274,7 +274,7 @@ void Engine::step() {
   detail::contact_nodes_moved(d.contact, d.fastest_speed * d.dt);
   // After the step, at its velocities; a reset moves the nodes back.
   if (d.damping.kinetic && detail::kinetic_damping(d))
-    detail::contact_nodes_moved_anyhow(d.contact);
+    detail::contact_drift_unknown(d.contact);
   impl_->times.nodes += omp_get_wtime() - t2;
   check_reversal();
 }

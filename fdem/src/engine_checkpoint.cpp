@@ -11,7 +11,6 @@
 // value records' each_member lists count themselves), and
 // kCheckpointVersion + 1 when the saved bytes change.
 #include <istream>
-#include <limits>
 #include <ostream>
 
 #include "checkpoint_format.hpp"
@@ -275,7 +274,7 @@ void Engine::load_state(std::istream& in) {
   detail::impl_fields(r, *impl_);
   r.finish();
   detail::build_gather(impl_->d);
-  impl_->d.contact.drift_bound = std::numeric_limits<double>::infinity();
+  detail::contact_drift_unknown(impl_->d.contact);
 }
 
 }  // namespace rockfdem::fdem

@@ -320,8 +320,8 @@ long node_update(EngineData& d) {
   const double* partial = d.block_partial.data();
   double sum[kNodeSums] = {0, 0, 0, 0, 0, 0, 0};
   for (long blk = 0; blk < n_blocks; ++blk) {
-    for (int k = 0; k < 6; ++k) sum[k] += partial[kNodeSums * blk + k];
-    sum[6] = std::max(sum[6], partial[kNodeSums * blk + 6]);
+    for (int k = 0; k < kNodeSums - 1; ++k) sum[k] += partial[kNodeSums * blk + k];
+    sum[kNodeSums - 1] = std::max(sum[kNodeSums - 1], partial[kNodeSums * blk + kNodeSums - 1]);
   }
   d.reversal[0] = sum[0];
   d.reversal[1] = sum[1];
@@ -329,7 +329,7 @@ long node_update(EngineData& d) {
   d.energy.nodal_damping += sum[3];
   d.energy.absorbing += sum[4];
   d.kinetic_after_step = sum[5];
-  d.fastest_speed = std::sqrt(sum[6]);
+  d.fastest_speed = std::sqrt(sum[kNodeSums - 1]);
   return bad;
 }
 
