@@ -273,8 +273,7 @@ void Engine::step() {
   if (bad_node >= 0) raise_bad_node(d, bad_node);
   detail::contact_nodes_moved(d.contact, d.fastest_speed * d.dt);
   // After the step, at its velocities; a reset moves the nodes back.
-  if (d.damping.kinetic && detail::kinetic_damping(d))
-    detail::contact_drift_unknown(d.contact);
+  if (d.damping.kinetic && detail::kinetic_damping(d)) detail::contact_drift_unknown(d.contact);
   impl_->times.nodes += omp_get_wtime() - t2;
   check_reversal();
 }
