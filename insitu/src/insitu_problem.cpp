@@ -793,8 +793,13 @@ int InsituProblem::solve_amg_cg(const double target_residual, InsituField& field
   };
   if (start_residual() <= target_residual) return 0;
 
+  const auto build = [&] {
+    Timer timer;
+    build_amg();
+    field.preconditioner_seconds += timer.wall_time();
+  };
   field.preconditioner_reused = amg_ && !slowed;
-  if (!field.preconditioner_reused) build_amg();
+  if (!field.preconditioner_reused) build();
 
   const auto run_cg = [&] {
     SolverControl control(spec_.solver.max_iterations, target_residual, false, false);
@@ -812,7 +817,7 @@ int InsituProblem::solve_amg_cg(const double target_residual, InsituField& field
   } catch (const SolverControl::NoConvergence&) {
     if (!field.preconditioner_reused) throw;
     field.preconditioner_reused = false;
-    build_amg();
+    build();
     iterations = run_cg();
   }
   if (amg_reference_iterations_ == 0) amg_reference_iterations_ = iterations;

@@ -44,6 +44,7 @@ InsituSpec lined_spec(LinearSolver kind) {
   spec.lining.active = true;
   spec.lining.install_alpha = 0.5;
   spec.solver.kind = kind;
+  spec.solver.tolerance = 1e-10;  // the bounds below are this residual's
   return spec;
 }
 

@@ -56,7 +56,7 @@ std::vector<InsituSolveFigures> solves(const std::vector<insitu::InsituField>& f
   std::vector<InsituSolveFigures> out;
   for (const insitu::InsituField& f : fields)
     out.push_back({f.alpha, f.solver, long(f.n_dofs), f.assembly_seconds, f.solve_seconds,
-                   f.total_seconds, f.unbalanced_ratio});
+                   f.total_seconds, f.preconditioner_seconds, f.unbalanced_ratio});
   return out;
 }
 

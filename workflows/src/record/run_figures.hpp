@@ -112,6 +112,7 @@ struct InsituSolveFigures {
   std::string solver;
   long dofs = 0;
   double assembly_seconds = 0, solve_seconds = 0, total_seconds = 0;
+  double preconditioner_seconds = 0;  ///< of solve_seconds: GAMG's hierarchy built
   double unbalanced_ratio = 0;
 };
 

@@ -474,6 +474,7 @@ nlohmann::json insitu_json(const InsituRecord& r) {
                            {"assembly_seconds", s.assembly_seconds},
                            {"solve_seconds", s.solve_seconds},
                            {"total_seconds", s.total_seconds},
+                           {"preconditioner_seconds", s.preconditioner_seconds},
                            {"unbalanced_ratio", s.unbalanced_ratio}});
   return j;
 }
