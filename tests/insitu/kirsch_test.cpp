@@ -76,9 +76,30 @@ InsituSpec open_hole_spec() {
   return spec;
 }
 
-InsituField solve_by(const mesh::Mesh& m, InsituSpec spec, const LinearSolver kind) {
+std::vector<InsituField> solve_by(const mesh::Mesh& m, InsituSpec spec, const LinearSolver kind) {
   spec.solver.kind = kind;
-  return solve_insitu(m, spec).at(0);
+  return solve_insitu(m, spec);
+}
+
+// Largest difference of two fields over the largest value of the second,
+// in displacement and in stress.
+struct FieldDifference {
+  double u = 0, s = 0;
+};
+
+FieldDifference field_difference(const InsituField& f, const InsituField& ref) {
+  double du = 0, u_max = 0, ds = 0, s_max = 0;
+  for (std::size_t v = 0; v < ref.ux.size(); ++v) {
+    du = std::max(du, std::hypot(f.ux[v] - ref.ux[v], f.uy[v] - ref.uy[v]));
+    u_max = std::max(u_max, std::hypot(ref.ux[v], ref.uy[v]));
+  }
+  for (std::size_t t = 0; t < ref.stress.size(); ++t) {
+    const Stress& a = f.stress[t];
+    const Stress& b = ref.stress[t];
+    ds = std::max({ds, std::abs(a.sxx - b.sxx), std::abs(a.syy - b.syy), std::abs(a.sxy - b.sxy)});
+    s_max = std::max({s_max, std::abs(b.sxx), std::abs(b.syy), std::abs(b.sxy)});
+  }
+  return {du / u_max, ds / s_max};
 }
 
 // At a tight tolerance CG and UMFPACK give the same field (the bound is the
@@ -87,57 +108,51 @@ TEST(Kirsch, amg_cg_and_direct_agree_and_cg_reports_iterations) {
   const mesh::Mesh m = polar_box_mesh({1.0, 8.0, 96, true, 0.0});
   InsituSpec spec = open_hole_spec();
   spec.solver.tolerance = 1e-10;
-  const InsituField direct = solve_by(m, spec, LinearSolver::kDirect);
-  const InsituField cg = solve_by(m, spec, LinearSolver::kAmgCg);
+  const InsituField direct = solve_by(m, spec, LinearSolver::kDirect).at(0);
+  const InsituField cg = solve_by(m, spec, LinearSolver::kAmgCg).at(0);
   EXPECT_EQ(direct.solver, "direct");
   EXPECT_EQ(direct.iterations, 0);
   EXPECT_EQ(cg.solver, "amg-cg");
   EXPECT_GT(cg.iterations, 0);
   EXPECT_LT(cg.iterations, 200);
   EXPECT_LT(cg.unbalanced_ratio, 1e-9);
-  double diff = 0, scale = 0;
-  for (std::size_t v = 0; v < m.n_vertices(); ++v) {
-    diff = std::max(diff, std::hypot(cg.ux[v] - direct.ux[v], cg.uy[v] - direct.uy[v]));
-    scale = std::max(scale, std::hypot(direct.ux[v], direct.uy[v]));
-  }
-  EXPECT_LT(diff, 1e-7 * scale);
+  EXPECT_LT(field_difference(cg, direct).u, 1e-7);
 }
 
-// The default tolerance stops CG where its error is far below the mesh's:
-// on the finest Kirsch grid above (176 rays, about 24k triangles) the wall
-// displacement's own error against the closed form is 0.22%, the stresses'
-// 0.9%; what CG leaves, against UMFPACK's solution of the same equations,
-// must be under a hundredth of each (measured: 1e-6 of them).
+// The default tolerance holds what the documentation claims of it, along a
+// softening sequence where CG starts from the earlier alphas' solutions
+// with a kept hierarchy (its error is largest there): every field within
+// 4e-7 of UMFPACK's solution of the same equations in displacement and
+// 1.5e-7 in stress. Measured at 1e-8: 1.5e-7 and 3.2e-8 at worst; a
+// default of 1e-7 fails (4.6e-7 and 4.5e-7), 1e-10 gives 3.1e-9 and
+// 2.5e-10. At the open hole that is also far below the mesh's own error
+// against Kirsch (176 rays, 21,120 dofs: wall u_r 0.22%, stresses 0.9% in
+// L2): under a thousandth of it.
 TEST(Kirsch, the_default_tolerance_leaves_cg_error_far_below_the_mesh_error) {
   const mesh::Mesh m = polar_box_mesh({1.0, 8.0, 176, true, 0.0});
-  const InsituSpec spec = open_hole_spec();
-  EXPECT_EQ(spec.solver.tolerance, SolverSpec{}.tolerance);
-  const InsituField direct = solve_by(m, spec, LinearSolver::kDirect);
-  const InsituField cg = solve_by(m, spec, LinearSolver::kAmgCg);
-  ASSERT_EQ(cg.solver, "amg-cg");
+  InsituSpec spec = open_hole_spec();
+  spec.alphas = {1.0, 0.5, 0.2, 0.05, 0.01, 0.0};
+  const auto direct = solve_by(m, spec, LinearSolver::kDirect);
+  const auto cg = solve_by(m, spec, LinearSolver::kAmgCg);
+  ASSERT_EQ(cg.size(), direct.size());
+  for (std::size_t i = 1; i < cg.size(); ++i) {
+    ASSERT_EQ(cg[i].solver, "amg-cg");
+    const FieldDifference d = field_difference(cg[i], direct[i]);
+    std::printf(
+        "  tolerance %.0e, alpha %4.2f, %2d iterations: CG against UMFPACK du %.2e, ds %.2e\n",
+        spec.solver.tolerance, cg[i].alpha, cg[i].iterations, d.u, d.s);
+    EXPECT_LT(d.u, 4e-7) << "alpha " << cg[i].alpha;
+    EXPECT_LT(d.s, 1.5e-7) << "alpha " << cg[i].alpha;
+    // CG stops on its own recursive residual; the check assembles it anew.
+    EXPECT_LT(cg[i].unbalanced_ratio, 2 * spec.solver.tolerance) << "alpha " << cg[i].alpha;
+  }
   const KirschCase k = kirsch_case(spec, 1.0);
-  const KirschComparison mesh_error = compare_kirsch(m, direct, k);
-  const KirschComparison with_cg = compare_kirsch(m, cg, k);
-  double du = 0, u_max = 0, ds = 0, s_max = 0;
-  for (std::size_t v = 0; v < m.n_vertices(); ++v) {
-    du = std::max(du, std::hypot(cg.ux[v] - direct.ux[v], cg.uy[v] - direct.uy[v]));
-    u_max = std::max(u_max, std::hypot(direct.ux[v], direct.uy[v]));
-  }
-  for (std::size_t t = 0; t < direct.stress.size(); ++t) {
-    const Stress& a = cg.stress[t];
-    const Stress& b = direct.stress[t];
-    ds = std::max({ds, std::abs(a.sxx - b.sxx), std::abs(a.syy - b.syy), std::abs(a.sxy - b.sxy)});
-    s_max = std::max({s_max, std::abs(b.sxx), std::abs(b.syy), std::abs(b.sxy)});
-  }
-  std::printf(
-      "  tolerance %.0e, %d iterations: CG against UMFPACK max du/u %.2e, ds/s %.2e;"
-      " mesh error: wall u_r %.2e, stress L2 %.2e\n",
-      spec.solver.tolerance, cg.iterations, du / u_max, ds / s_max, mesh_error.wall_ur_rel_l2,
-      mesh_error.stress_rel_l2);
-  EXPECT_LT(cg.unbalanced_ratio, spec.solver.tolerance);
-  EXPECT_LT(du / u_max, 0.01 * mesh_error.wall_ur_rel_l2);
-  EXPECT_LT(ds / s_max, 0.01 * mesh_error.stress_rel_l2);
-  EXPECT_NEAR(with_cg.wall_ur_rel_l2, mesh_error.wall_ur_rel_l2, 0.01 * mesh_error.wall_ur_rel_l2);
+  const KirschComparison mesh_error = compare_kirsch(m, direct.back(), k);
+  const FieldDifference open_hole = field_difference(cg.back(), direct.back());
+  std::printf("  mesh error at the open hole: wall u_r %.2e, stress L2 %.2e\n",
+              mesh_error.wall_ur_rel_l2, mesh_error.stress_rel_l2);
+  EXPECT_LT(open_hole.u, 1e-3 * mesh_error.wall_ur_rel_l2);
+  EXPECT_LT(open_hole.s, 1e-3 * mesh_error.stress_rel_l2);
 }
 
 TEST(Kirsch, far_field_tractions_on_a_finite_box_leave_a_box_error) {

@@ -126,7 +126,7 @@ struct SolverSpec {
   /// CG stops when ||residual|| <= tolerance * ||in-situ nodal forces||.
   /// 1e-8 leaves the fields within 4e-7 of the largest displacement and
   /// 1e-7 of the largest stress of a converged solve at 420k triangles,
-  /// a thirtieth of the finest shipped mesh's own error, in about a quarter
+  /// a thirty-fifth of the finest shipped mesh's own error, in about a fifth
   /// less time than 1e-10 (docs/benchmarks.md, "The in-situ solver's
   /// tolerance: time against error").
   double tolerance = 1e-8;
