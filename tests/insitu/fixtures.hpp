@@ -1,6 +1,7 @@
 // Shared inputs of the in-situ tests: the seed's rock and far field.
 #pragma once
 
+#include <algorithm>
 #include <cmath>
 
 #include "polar_mesh.hpp"
@@ -44,6 +45,28 @@ inline double mean_wall_ur(const mesh::Mesh& m, const InsituField& f) {
       ++n;
     }
   return sum / n;
+}
+
+/// Largest difference of two fields over the largest value of the second
+/// (displacement: vector length; stress: any component, szz included).
+struct FieldDifference {
+  double u = 0, s = 0;
+};
+
+inline FieldDifference field_difference(const InsituField& f, const InsituField& ref) {
+  double du = 0, u_max = 0, ds = 0, s_max = 0;
+  for (std::size_t v = 0; v < ref.ux.size(); ++v) {
+    du = std::max(du, std::hypot(f.ux[v] - ref.ux[v], f.uy[v] - ref.uy[v]));
+    u_max = std::max(u_max, std::hypot(ref.ux[v], ref.uy[v]));
+  }
+  for (std::size_t t = 0; t < ref.stress.size(); ++t) {
+    const Stress& a = f.stress[t];
+    const Stress& b = ref.stress[t];
+    ds = std::max({ds, std::abs(a.sxx - b.sxx), std::abs(a.syy - b.syy), std::abs(a.sxy - b.sxy),
+                   std::abs(a.szz - b.szz)});
+    s_max = std::max({s_max, std::abs(b.sxx), std::abs(b.syy), std::abs(b.sxy), std::abs(b.szz)});
+  }
+  return {u_max > 0 ? du / u_max : du, ds / s_max};
 }
 
 }  // namespace rockfdem::insitu::test

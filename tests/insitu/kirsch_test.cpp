@@ -5,8 +5,6 @@
 // within 2% of the plane-strain closed form (reference section 5).
 #include <gtest/gtest.h>
 
-#include <algorithm>
-#include <cmath>
 #include <cstdio>
 #include <vector>
 
@@ -79,27 +77,6 @@ InsituSpec open_hole_spec() {
 std::vector<InsituField> solve_by(const mesh::Mesh& m, InsituSpec spec, const LinearSolver kind) {
   spec.solver.kind = kind;
   return solve_insitu(m, spec);
-}
-
-// Largest difference of two fields over the largest value of the second,
-// in displacement and in stress.
-struct FieldDifference {
-  double u = 0, s = 0;
-};
-
-FieldDifference field_difference(const InsituField& f, const InsituField& ref) {
-  double du = 0, u_max = 0, ds = 0, s_max = 0;
-  for (std::size_t v = 0; v < ref.ux.size(); ++v) {
-    du = std::max(du, std::hypot(f.ux[v] - ref.ux[v], f.uy[v] - ref.uy[v]));
-    u_max = std::max(u_max, std::hypot(ref.ux[v], ref.uy[v]));
-  }
-  for (std::size_t t = 0; t < ref.stress.size(); ++t) {
-    const Stress& a = f.stress[t];
-    const Stress& b = ref.stress[t];
-    ds = std::max({ds, std::abs(a.sxx - b.sxx), std::abs(a.syy - b.syy), std::abs(a.sxy - b.sxy)});
-    s_max = std::max({s_max, std::abs(b.sxx), std::abs(b.syy), std::abs(b.sxy)});
-  }
-  return {du / u_max, ds / s_max};
 }
 
 // At a tight tolerance CG and UMFPACK give the same field (the bound is the

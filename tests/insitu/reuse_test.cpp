@@ -18,27 +18,6 @@
 namespace rockfdem::insitu::test {
 namespace {
 
-struct Difference {
-  double stress = 0;        ///< max |s_seq - s_fresh| / max |s_fresh|
-  double displacement = 0;  ///< max |u_seq - u_fresh| / max |u_fresh|
-};
-
-Difference difference(const InsituField& seq, const InsituField& fresh) {
-  double ds = 0, s_max = 0, du = 0, u_max = 0;
-  for (std::size_t t = 0; t < fresh.stress.size(); ++t) {
-    const Stress& a = seq.stress[t];
-    const Stress& b = fresh.stress[t];
-    ds = std::max({ds, std::abs(a.sxx - b.sxx), std::abs(a.syy - b.syy), std::abs(a.sxy - b.sxy),
-                   std::abs(a.szz - b.szz)});
-    s_max = std::max({s_max, std::abs(b.sxx), std::abs(b.syy), std::abs(b.sxy), std::abs(b.szz)});
-  }
-  for (std::size_t v = 0; v < fresh.ux.size(); ++v) {
-    du = std::max(du, std::hypot(seq.ux[v] - fresh.ux[v], seq.uy[v] - fresh.uy[v]));
-    u_max = std::max(u_max, std::hypot(fresh.ux[v], fresh.uy[v]));
-  }
-  return {ds / s_max, u_max > 0 ? du / u_max : du};
-}
-
 InsituSpec lined_spec(LinearSolver kind) {
   InsituSpec spec = seed_spec();  // the seed's biaxial field
   spec.lining.active = true;
@@ -67,13 +46,13 @@ TEST(InsituReuse, every_alpha_of_a_sequence_equals_a_fresh_solve_of_that_alpha) 
       InsituSpec single = spec;
       single.alphas = {f.alpha};
       const InsituField fresh = solve_insitu(m, single).at(0);
-      const Difference d = difference(f, fresh);
+      const FieldDifference d = field_difference(f, fresh);
       std::printf("  %s alpha %4.2f: stress %.2e, displacement %.2e (iterations %d, fresh %d)\n",
-                  kind == LinearSolver::kDirect ? "direct" : "amg-cg", f.alpha, d.stress,
-                  d.displacement, f.iterations, fresh.iterations);
+                  kind == LinearSolver::kDirect ? "direct" : "amg-cg", f.alpha, d.s, d.u,
+                  f.iterations, fresh.iterations);
       EXPECT_TRUE(f.lining_installed);
-      EXPECT_LT(d.stress, 1e-7) << "alpha " << f.alpha;
-      EXPECT_LT(d.displacement, 1e-7) << "alpha " << f.alpha;
+      EXPECT_LT(d.s, 1e-7) << "alpha " << f.alpha;
+      EXPECT_LT(d.u, 1e-7) << "alpha " << f.alpha;
     }
   }
 }
